@@ -1,0 +1,213 @@
+"""Analyses without time integration: bearing data sheet and quasi-static
+load distribution with a lubrication map.
+
+These compose the physics functions and add none of their own (as pvlib's
+ModelChain): every relation used here lives in :mod:`exudyn_bearing.physics`.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .data import BallBearing, InputError, Lubricant, lubricants
+from .physics import damping, ehl, friction, hertz, kinematics
+from .physics.geometry import raceway_radii
+from .physics.load_distribution import (StaticSolution, race_stiffness, static_equilibrium,
+                                        stribeck_solution)
+
+__all__ = ["bearing_info", "lubrication_map", "static_analysis", "default_lubricant"]
+
+
+def default_lubricant() -> Lubricant:
+    """The DEM papers' lubricant (PHYSICS.md sec. 5)."""
+    return lubricants["guessasma2018"]
+
+
+def e_prime_of(bearing: BallBearing) -> float:
+    """E' [Pa] of the bearing's material against itself."""
+    m = bearing.material
+    return float(hertz.reduced_modulus(m.youngs_modulus, m.poisson_ratio))
+
+
+def _check_speed(name, value):
+    v = float(value)
+    if not math.isfinite(v):
+        raise InputError(f"{name}: must be finite, got {v}")
+    return v
+
+
+def bearing_info(bearing: BallBearing, omega=None, hertz_method="exact") -> dict:
+    """Geometry, derived values, Hertz constants and (at speed) kinematics.
+
+    Parameters
+    ----------
+    bearing : BallBearing
+    omega : float, optional
+        Inner-ring speed [rad/s], outer ring fixed.
+    hertz_method : str
+        Hertz fidelity level for ``K_inner``, ``K_outer``.
+
+    Returns
+    -------
+    dict
+        Geometry [m], ``K_inner``, ``K_outer``, ``K_n`` [N/m^1.5],
+        ``kappa_inner``, ``kappa_outer`` [-] at the free contact angle and,
+        with ``omega``, ``cage_speed``, ``ball_spin`` [rad/s] (absolute),
+        ``ball_spin_relative`` [rad/s], ``rolling_speed`` [m/s] and ``ftf``,
+        ``bpfo``, ``bpfi``, ``bsf`` [Hz].
+    """
+    b = bearing
+    alpha = b.free_contact_angle
+    ki, ko, kn = race_stiffness(b, alpha, hertz_method)
+    ca = math.cos(alpha)
+    rxi, ryi = raceway_radii(b.ball_radius, b.inner_groove_radius, b.pitch_radius - b.ball_radius * ca,
+                             alpha, True)
+    rxo, ryo = raceway_radii(b.ball_radius, b.outer_groove_radius, b.pitch_radius + b.ball_radius * ca,
+                             alpha, False)
+    kap_i = hertz.ellipticity(rxi, ryi, hertz_method)[0]
+    kap_o = hertz.ellipticity(rxo, ryo, hertz_method)[0]
+    info = {
+        "name": b.name,
+        "n_balls": b.n_balls,
+        "ball_radius": b.ball_radius,
+        "inner_race_radius": b.inner_race_radius,
+        "outer_race_radius": b.outer_race_radius,
+        "inner_groove_radius": b.inner_groove_radius,
+        "outer_groove_radius": b.outer_groove_radius,
+        "cage_ball_radius": b.cage_ball_radius,
+        "pitch_radius": b.pitch_radius,
+        "diametral_clearance": b.diametral_clearance,
+        "inner_conformity": b.inner_conformity,
+        "outer_conformity": b.outer_conformity,
+        "conformity_sum": b.conformity_sum,
+        "free_contact_angle_deg": math.degrees(alpha),
+        "cage_pocket_clearance": b.cage_pocket_clearance,
+        "ball_mass": b.ball_mass,
+        "e_prime": e_prime_of(b),
+        "hertz_method": hertz_method,
+        "R_x_inner": float(rxi), "R_y_inner": float(ryi),
+        "R_x_outer": float(rxo), "R_y_outer": float(ryo),
+        "K_inner": ki,
+        "K_outer": ko,
+        "K_n": kn,
+        "kappa_inner": float(kap_i),
+        "kappa_outer": float(kap_o),
+        "source": b.source,
+    }
+    if omega is not None:
+        w = _check_speed("omega", omega)
+        args = (w, 0.0, b.ball_radius, b.pitch_radius, alpha)
+        u_i, _u_o = kinematics.rolling_speeds(*args)
+        info.update({
+            "omega": w,
+            "cage_speed": float(kinematics.cage_speed(*args)),
+            "ball_spin": float(kinematics.ball_spin_absolute(*args)),
+            "ball_spin_relative": float(kinematics.ball_spin_relative(*args)),
+            "rolling_speed": float(u_i),
+        })
+        info.update(kinematics.defect_frequencies(w, 0.0, b.n_balls, b.ball_radius, b.pitch_radius, alpha))
+    return info
+
+
+def lubrication_map(solution: StaticSolution, omega_inner: float, omega_outer: float = 0.0,
+                    lubricant: Lubricant | None = None, film: str = "hd") -> dict:
+    """h_min, Lambda, regime, mu and the Hertz ellipse of every contact.
+
+    Pure-rolling speeds of :func:`~exudyn_bearing.physics.kinematics.rolling_speeds`
+    at each ball's contact angle, the ball loads of a quasi-static solution,
+    Hertz at the solution's fidelity level, film model ``film`` ('hd' or 'mk').
+    No time integration (PHYSICS.md sec. 4-5).
+
+    Returns
+    -------
+    dict of ndarray (one entry per ball) with keys ``{name}_inner`` and
+    ``{name}_outer`` for name in u_r [m/s], r_x [m], kappa [-], a, b [m],
+    p_max [Pa], h_min [m], lambda [-], regime (0 boundary, 1 mixed,
+    2 full film, -1 no contact), mu [-]. Unloaded contacts have NaN film
+    values.
+    """
+    lub = default_lubricant() if lubricant is None else lubricant
+    b = solution.bearing
+    wi = _check_speed("omega", omega_inner)
+    wo = _check_speed("omega_outer", omega_outer)
+    film_code = ehl.film_model_code(film)
+    em = e_prime_of(b)
+    alpha = solution.contact_angle
+    ca = np.cos(alpha)
+    u_in, u_out = kinematics.rolling_speeds(wi, wo, b.ball_radius, b.pitch_radius, alpha)
+    out = {}
+    for race, r_c, u, inner in (("inner", b.inner_groove_radius, u_in, True),
+                                ("outer", b.outer_groove_radius, u_out, False)):
+        r_contact = b.pitch_radius + (-1.0 if inner else 1.0) * b.ball_radius * ca
+        rx, ry = raceway_radii(b.ball_radius, r_c, r_contact, alpha, inner)
+        hc = hertz.hertz_contact(rx, ry, em, load=solution.q, method=solution.hertz_method)
+        loaded = solution.q > 0.0
+        h = ehl.film_thickness(u, solution.q, rx, hc.kappa, em, lub.viscosity,
+                               lub.pressure_viscosity, film_code)
+        lam = ehl.film_parameter(h, lub.composite_roughness)
+        regime = damping.lubrication_regime(lam, lub.lambda_mixed, lub.lambda_full_film)
+        mu = friction.friction_coefficient(lam, lub.mu_boundary, lub.mu_full_film,
+                                           lub.lambda_mixed, lub.lambda_full_film)
+        nan = np.full(loaded.shape, np.nan)
+        out.update({
+            f"u_r_{race}": np.broadcast_to(u, loaded.shape).astype(float),
+            f"r_x_{race}": np.asarray(rx, float),
+            f"kappa_{race}": np.asarray(hc.kappa, float),
+            f"a_{race}": np.asarray(hc.a, float),
+            f"b_{race}": np.asarray(hc.b, float),
+            f"p_max_{race}": np.asarray(hc.p_max, float),
+            f"h_min_{race}": np.where(loaded, h, nan),
+            f"lambda_{race}": np.where(loaded, lam, nan),
+            f"regime_{race}": np.where(loaded, regime, -1).astype(int),
+            f"mu_{race}": np.where(loaded, mu, nan),
+        })
+    return out
+
+
+def static_analysis(bearing: BallBearing, radial_load: float, axial_load: float = 0.0,
+                    omega: float | None = None, film: str = "hd",
+                    lubricant: Lubricant | None = None, hertz_method: str = "exact",
+                    phase: float = 0.0) -> dict:
+    """Quasi-static load distribution, and with ``omega`` the lubrication map.
+
+    Returns a dict with ``psi`` [rad], ``q`` [N], ``q_max`` [N],
+    ``overlap`` [m], ``contact_angle`` [rad] (per ball), ``delta_r``,
+    ``delta_a`` [m], ``eps`` [-], the continuous Stribeck ``q_max_stribeck``
+    and ``eps_stribeck``, and with ``omega`` the per-ball keys
+    ``h_min_inner``, ``h_min_outer`` [m], ``lambda_inner``, ``lambda_outer``
+    and the rest of :func:`lubrication_map`.
+    """
+    sol = static_equilibrium(bearing, radial_load, axial_load, phase=phase, hertz_method=hertz_method)
+    res = {
+        "bearing": bearing.name,
+        "Fr": sol.radial_load,
+        "Fa": sol.axial_load,
+        "Pd": bearing.diametral_clearance,
+        "hertz_method": sol.hertz_method,
+        "psi": sol.psi,
+        "q": sol.q,
+        "q_max": sol.q_max,
+        "overlap": sol.overlap,
+        "overlap_inner": sol.overlap_inner,
+        "overlap_outer": sol.overlap_outer,
+        "contact_angle": sol.contact_angle,
+        "displacement": sol.displacement,
+        "delta_r": sol.delta_r,
+        "delta_a": sol.delta_a,
+        "eps": sol.eps,
+    }
+    if sol.radial_load > 0.0 or sol.axial_load > 0.0:
+        try:
+            st = stribeck_solution(bearing.n_balls, sol.radial_load, sol.axial_load,
+                                   bearing.free_contact_angle,
+                                   eps=sol.eps if sol.axial_load == 0.0 and math.isfinite(sol.eps) else None)
+            res["q_max_stribeck"] = st.q_max
+            res["eps_stribeck"] = st.eps
+        except InputError:
+            pass
+    if omega is not None:
+        res["omega"] = float(omega)
+        res["film"] = film
+        res.update(lubrication_map(sol, omega, 0.0, lubricant, film))
+    return res

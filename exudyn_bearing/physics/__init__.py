@@ -1,0 +1,7 @@
+"""Physics relations of PHYSICS.md: one pure function per relation, SI units.
+
+Modules: :mod:`hertz` (elliptic and sphere contact), :mod:`geometry`
+(ball in a torus groove), :mod:`ehl` (film thickness, film parameter),
+:mod:`damping`, :mod:`friction`, :mod:`kinematics`,
+:mod:`load_distribution` (quasi-static Stribeck/Harris).
+"""

@@ -1,0 +1,105 @@
+"""Normal damping of a lubricated contact, switched by the film parameter.
+
+PHYSICS.md sec. 4. F_n = K delta^(3/2) + C_n(Lambda) v_n, with
+
+* hysteretic (asperity) damping C_hyst = (3/2) alpha_e K delta^(3/2)
+  (Hunt & Crossley [1]_; alpha_e = 0.08 s/m for steel);
+* squeeze-film damping C_fluid = (3 pi eta a / sqrt 2) (R_b / h_min)^(3/2)
+  (Guessasma & Machado [2]_, a the Hertz semi-major axis);
+* Lambda <= 1 boundary: C_hyst; 1 < Lambda <= 3 mixed: the series
+  combination C_hyst C_fluid / (C_hyst + C_fluid); Lambda > 3 full film:
+  C_fluid. The breakpoints are parameters (``Lubricant.lambda_mixed``,
+  ``Lubricant.lambda_full_film``).
+
+References
+----------
+.. [1] K. H. Hunt and F. R. E. Crossley, "Coefficient of restitution
+   interpreted as damping in vibroimpact," J. Appl. Mech. 42(2) (1975)
+   440-445. doi:10.1115/1.3423596
+.. [2] S. Guessasma and C. Machado, Lubricants 6 (2018) 46.
+   doi:10.3390/lubricants6020046
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit, vectorize
+
+__all__ = [
+    "BOUNDARY", "MIXED", "FULL_FILM", "REGIME_NAMES",
+    "lubrication_regime",
+    "damping_hysteretic",
+    "damping_fluid",
+    "damping_coefficient",
+    "damping_critical",
+]
+
+BOUNDARY, MIXED, FULL_FILM = 0, 1, 2
+REGIME_NAMES = ("boundary", "mixed", "full_film")
+
+
+@vectorize(["int64(float64, float64, float64)"], cache=True)
+def lubrication_regime(film_parameter, lambda_mixed, lambda_full_film):
+    """Regime code of a contact: 0 boundary (Lambda <= lambda_mixed),
+    1 mixed (<= lambda_full_film), 2 full film (PHYSICS.md sec. 4).
+
+    Examples
+    --------
+    >>> lubrication_regime(np.array([0.5, 1.0, 2.0, 3.0, 3.5]), 1.0, 3.0)
+    array([0, 0, 1, 1, 2])
+    """
+    if film_parameter <= lambda_mixed:
+        return BOUNDARY
+    if film_parameter <= lambda_full_film:
+        return MIXED
+    return FULL_FILM
+
+
+def damping_hysteretic(stiffness, overlap, alpha_e):
+    """C_hyst = (3/2) alpha_e K delta^(3/2) [N s/m] (Hunt-Crossley [1]_).
+
+    Parameters: K [N/m^1.5], delta [m] (clamped at 0), alpha_e [s/m].
+    """
+    d = np.maximum(overlap, 0.0)
+    return 1.5 * alpha_e * stiffness * d * np.sqrt(d)
+
+
+def damping_fluid(eta, a, r_ball, h_min):
+    """C_fluid = (3 pi eta a / sqrt 2) (R_b / h_min)^(3/2) [N s/m] [2]_.
+
+    Infinite for h_min = 0 (no film: the regime switch then uses C_hyst).
+    Parameters: eta [Pa s], a semi-major axis [m], R_b [m], h_min [m].
+    """
+    h = np.maximum(h_min, 1e-300)
+    return 3.0 * math.pi * eta * a / math.sqrt(2.0) * (r_ball / h) ** 1.5
+
+
+_damping_hysteretic = njit(cache=True)(damping_hysteretic)
+_damping_fluid = njit(cache=True)(damping_fluid)
+
+
+@vectorize(["float64(float64, float64, float64, float64, float64)"], cache=True)
+def damping_coefficient(film_parameter, c_hyst, c_fluid, lambda_mixed, lambda_full_film):
+    """Normal damping C_n(Lambda) [N s/m] of PHYSICS.md sec. 4 (table).
+
+    Examples
+    --------
+    >>> damping_coefficient(np.array([0.5, 2.0, 4.0]), 10.0, 30.0, 1.0, 3.0)
+    array([10. , 7.5, 30. ])
+    """
+    if film_parameter <= lambda_mixed:
+        return c_hyst
+    if film_parameter <= lambda_full_film:
+        s = c_hyst + c_fluid
+        return c_hyst * c_fluid / s if s > 0.0 else 0.0
+    return c_fluid
+
+
+def damping_critical(effective_mass, tangent_stiffness):
+    """Critical damping C = 2 sqrt(m_eff k_t) [N s/m] (PHYSICS.md sec. 4,
+    ball / cage-ball and cage-ball / guide contacts); k_t = dQ/d delta."""
+    return 2.0 * np.sqrt(effective_mass * np.maximum(tangent_stiffness, 0.0))
+
+
+_damping_critical = njit(cache=True)(damping_critical)

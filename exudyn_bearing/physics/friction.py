@@ -1,0 +1,48 @@
+"""Friction coefficient of a lubricated contact and regularised Coulomb friction.
+
+PHYSICS.md sec. 4 and 6. mu(Lambda) is the Stribeck-curve fit of the DEM
+papers [1]_: mu_boundary (0.1) for Lambda <= lambda_mixed (1), falling
+linearly to mu_full_film (0.01) at lambda_full_film (3), constant beyond.
+
+References
+----------
+.. [1] S. Guessasma and C. Machado, Lubricants 6 (2018) 46.
+   doi:10.3390/lubricants6020046
+"""
+from __future__ import annotations
+
+import numpy as np
+from numba import njit, vectorize
+
+__all__ = ["friction_coefficient", "regularized_coulomb"]
+
+
+@vectorize(["float64(float64, float64, float64, float64, float64)"], cache=True)
+def friction_coefficient(film_parameter, mu_boundary, mu_full_film,
+                         lambda_mixed, lambda_full_film):
+    """mu(Lambda) [-], linear between the breakpoints (PHYSICS.md sec. 4).
+
+    Examples
+    --------
+    >>> friction_coefficient(np.array([0.5, 2.0, 5.0]), 0.1, 0.01, 1.0, 3.0)
+    array([0.1  , 0.055, 0.01 ])
+    """
+    if film_parameter <= lambda_mixed:
+        return mu_boundary
+    if film_parameter >= lambda_full_film:
+        return mu_full_film
+    s = (film_parameter - lambda_mixed) / (lambda_full_film - lambda_mixed)
+    return mu_boundary + s * (mu_full_film - mu_boundary)
+
+
+def regularized_coulomb(slip_speed, normal_force, mu, regularizing_speed):
+    """History-free friction force magnitude [N]: mu F_n min(|v|/v_reg, 1).
+
+    A linear ramp below the regularising speed v_reg [m/s] (as Exudyn's
+    ``frictionProportionalZone``); PHYSICS.md sec. 6's cheaper alternative
+    to the Cundall-Strack spring. The force opposes the slip velocity.
+    """
+    return mu * np.maximum(normal_force, 0.0) * np.minimum(np.abs(slip_speed) / regularizing_speed, 1.0)
+
+
+_regularized_coulomb = njit(cache=True)(regularized_coulomb)

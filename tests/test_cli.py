@@ -1,0 +1,78 @@
+"""Command line: JSON keys of info and static, plots, and bad input."""
+import json
+import subprocess
+import sys
+
+import pytest
+
+from exudyn_bearing.cli import main
+
+
+def run_json(capsys, *argv):
+    assert main(list(argv)) == 0
+    return json.loads(capsys.readouterr().out)
+
+
+def test_info_6208_json(capsys):
+    d = run_json(capsys, "info", "6208", "--omega", "500", "--json")
+    for key in ("K_inner", "K_outer", "cage_speed", "ball_spin", "ftf", "bpfo", "bpfi", "bsf"):
+        assert key in d
+    assert d["ball_spin"] == pytest.approx(952.38, abs=0.01)
+    assert d["cage_speed"] == pytest.approx(198.0, abs=0.05)
+    # EXUDYN_NOTES.md: Hertz K about 3.3e10 N/m^1.5 per race for the 6208
+    assert 3.0e10 < d["K_inner"] < d["K_outer"] < 3.6e10
+
+
+def test_static_6208_json(capsys):
+    d = run_json(capsys, "static", "6208", "--Fr", "3000", "--Pd", "0", "--omega", "500", "--json")
+    for key in ("psi", "q", "q_max", "delta_r", "eps", "h_min_inner", "h_min_outer",
+                "lambda_inner", "lambda_outer"):
+        assert key in d
+    assert len(d["q"]) == 9 and d["psi"][0] == 0.0
+    assert d["q_max"] == pytest.approx(1462, abs=1)
+    assert d["eps"] == pytest.approx(0.5)
+    # unloaded contacts are null in JSON, never NaN
+    assert d["lambda_outer"][4] is None
+
+
+def test_static_plot_writes_png_and_csv(tmp_path, capsys):
+    png = tmp_path / "s.png"
+    d = run_json(capsys, "static", "7208", "--Fr", "3000", "--Fa", "3000", "--omega", "500",
+                 "--plot", str(png), "--json")
+    assert png.stat().st_size > 10_000
+    csv = (tmp_path / "s.csv").read_text().splitlines()
+    assert csv[0].startswith("psi_rad,q_N") and len(csv) == 14
+    assert d["plot"] == str(png)
+
+
+def test_human_readable_tables(capsys):
+    assert main(["info", "ACBB-120"]) == 0
+    out = capsys.readouterr().out
+    assert "K_inner" in out and "N/m^1.5" in out
+    assert main(["static", "6208", "--Fr", "3000", "--omega", "500"]) == 0
+    out = capsys.readouterr().out
+    assert "q_max = 1461.7 N" in out and "mixed" in out
+
+
+@pytest.mark.parametrize("argv, word", [
+    (["info", "6309"], "bearing"),
+    (["static", "6208", "--Fr", "-5"], "radial_load"),
+    (["static", "6208", "--Fr", "3000", "--Pd", "1e-3"], "outer_race_radius"),
+    (["static", "6208", "--Fr", "3000", "--omega", "nan"], "omega"),
+    (["static", "no/such/file.json", "--Fr", "3000"], "no such file"),
+])
+def test_bad_input_exits_nonzero_with_a_message(argv, word, capsys):
+    try:
+        rc = main(argv)
+    except SystemExit as exc:  # argparse rejects before main's handler
+        rc = exc.code
+    assert rc != 0
+    err = capsys.readouterr().err
+    assert word in err
+    assert len(err.strip().splitlines()) <= 2
+
+
+def test_module_entry_point_runs():
+    out = subprocess.run([sys.executable, "-m", "exudyn_bearing", "info", "6004", "--json"],
+                         capture_output=True, text=True, check=True).stdout
+    assert json.loads(out)["n_balls"] == 9
