@@ -86,7 +86,7 @@ def damping_coefficient(film_parameter, c_hyst, c_fluid, lambda_mixed, lambda_fu
     Examples
     --------
     >>> damping_coefficient(np.array([0.5, 2.0, 4.0]), 10.0, 30.0, 1.0, 3.0)
-    array([10. , 7.5, 30. ])
+    array([10. ,  7.5, 30. ])
     """
     if film_parameter <= lambda_mixed:
         return c_hyst

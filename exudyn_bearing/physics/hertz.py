@@ -88,7 +88,7 @@ def reduced_modulus(e1, nu1, e2=None, nu2=None):
 
     Examples
     --------
-    >>> round(reduced_modulus(210e9, 0.3) / 1e9, 2)
+    >>> round(float(reduced_modulus(210e9, 0.3)) / 1e9, 2)
     230.77
     """
     e2 = e1 if e2 is None else e2
