@@ -116,3 +116,11 @@ def test_simplified_f_typo_would_make_k_thirty_percent_too_stiff():
 def test_unknown_method_is_rejected():
     with pytest.raises(ValueError, match="method"):
         hertz.hertz_stiffness(5e-3, 150e-3, E_PRIME, method="fast")
+
+
+def test_tabulated_exact_level_matches_the_direct_solution():
+    table = hertz.exact_table()
+    for ratio in np.concatenate([[1.0, 1.0001], np.geomspace(1.001, 5000, 97)]):
+        direct = hertz._kfe_exact(ratio)
+        tab = hertz._kfe_tabulated(ratio, table)
+        np.testing.assert_allclose(tab, direct, rtol=1e-7)

@@ -24,7 +24,9 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit, vectorize
+from numba import vectorize
+
+from .._jit import kernel
 
 __all__ = [
     "BOUNDARY", "MIXED", "FULL_FILM", "REGIME_NAMES",
@@ -75,8 +77,8 @@ def damping_fluid(eta, a, r_ball, h_min):
     return 3.0 * math.pi * eta * a / math.sqrt(2.0) * (r_ball / h) ** 1.5
 
 
-_damping_hysteretic = njit(cache=True)(damping_hysteretic)
-_damping_fluid = njit(cache=True)(damping_fluid)
+_damping_hysteretic = kernel(damping_hysteretic)
+_damping_fluid = kernel(damping_fluid)
 
 
 @vectorize(["float64(float64, float64, float64, float64, float64)"], cache=True)
@@ -102,4 +104,4 @@ def damping_critical(effective_mass, tangent_stiffness):
     return 2.0 * np.sqrt(effective_mass * np.maximum(tangent_stiffness, 0.0))
 
 
-_damping_critical = njit(cache=True)(damping_critical)
+_damping_critical = kernel(damping_critical)

@@ -26,7 +26,8 @@ References
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
+
+from .._jit import kernel
 
 __all__ = [
     "FILM_MODELS",
@@ -90,15 +91,11 @@ def film_thickness_hamrock_dowson(u_r, load, r_x, kappa, e_prime, eta, xi):
     >>> round(float(h) * 1e6, 2)
     0.8
     """
-    u = np.abs(u_r)
-    q = np.maximum(load, 0.0)
-    uu = eta * u / (e_prime * r_x)
-    gg = xi * e_prime
-    ww = q / (e_prime * r_x * r_x)
-    wpos = np.maximum(ww, 1e-300)
-    return np.where((u > 0.0) & (q > 0.0),
-                    3.63 * uu ** 0.68 * gg ** 0.49 * wpos ** -0.073 * (1.0 - np.exp(-0.68 * kappa)) * r_x,
-                    0.0 * uu)
+    uu = eta * np.abs(u_r) / (e_prime * r_x)
+    ww = np.maximum(load, 1e-300) / (e_prime * r_x * r_x)
+    on = load > 0.0  # no load, no film; u_r = 0 gives 0 through U^0.68
+    return on * (3.63 * uu ** 0.68 * (xi * e_prime) ** 0.49 * ww ** -0.073
+                 * (1.0 - np.exp(-0.68 * kappa)) * r_x)
 
 
 def film_thickness_masjedi_khonsari(u_r, load, r_x, kappa, e_prime, eta, xi):
@@ -114,22 +111,18 @@ def film_thickness_masjedi_khonsari(u_r, load, r_x, kappa, e_prime, eta, xi):
 
     Parameters as :func:`film_thickness_hamrock_dowson`.
     """
-    u = np.abs(u_r)
-    q = np.maximum(load, 0.0)
-    uu = eta * u / (e_prime * r_x)
-    gg = xi * e_prime
-    ww = np.maximum(q / (e_prime * r_x * r_x), 1e-300)
-    uu_pos = np.maximum(uu, 1e-300)
-    h = (1.637 * uu_pos ** (0.711 * kappa ** -0.023) * gg ** (0.65 * kappa ** -0.045)
-         * ww ** (-0.09 * kappa ** 0.15) * (1.0 - 0.974 * np.exp(-0.676 * kappa)) * r_x)
-    return np.where((u > 0.0) & (q > 0.0), h, 0.0 * h)
+    uu = eta * np.abs(u_r) / (e_prime * r_x)
+    ww = np.maximum(load, 1e-300) / (e_prime * r_x * r_x)
+    on = load > 0.0
+    return on * (1.637 * uu ** (0.711 * kappa ** -0.023) * (xi * e_prime) ** (0.65 * kappa ** -0.045)
+                 * ww ** (-0.09 * kappa ** 0.15) * (1.0 - 0.974 * np.exp(-0.676 * kappa)) * r_x)
 
 
-_film_hd = njit(cache=True)(film_thickness_hamrock_dowson)
-_film_mk = njit(cache=True)(film_thickness_masjedi_khonsari)
+_film_hd = kernel(film_thickness_hamrock_dowson)
+_film_mk = kernel(film_thickness_masjedi_khonsari)
 
 
-@njit(cache=True)
+@kernel
 def _film_thickness(model, u_r, load, r_x, kappa, e_prime, eta, xi):
     """Kernel dispatch on the film model code (0 HD, 1 MK)."""
     if model == MASJEDI_KHONSARI:
@@ -158,4 +151,4 @@ def film_parameter(h_min, composite_roughness):
     return h_min / composite_roughness
 
 
-_film_parameter = njit(cache=True)(film_parameter)
+_film_parameter = kernel(film_parameter)

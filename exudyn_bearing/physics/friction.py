@@ -12,7 +12,9 @@ References
 from __future__ import annotations
 
 import numpy as np
-from numba import njit, vectorize
+from numba import vectorize
+
+from .._jit import kernel
 
 __all__ = ["friction_coefficient", "regularized_coulomb"]
 
@@ -45,4 +47,4 @@ def regularized_coulomb(slip_speed, normal_force, mu, regularizing_speed):
     return mu * np.maximum(normal_force, 0.0) * np.minimum(np.abs(slip_speed) / regularizing_speed, 1.0)
 
 
-_regularized_coulomb = njit(cache=True)(regularized_coulomb)
+_regularized_coulomb = kernel(regularized_coulomb)

@@ -24,13 +24,31 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
+
+from .._jit import kernel
 
 __all__ = ["raceway_radii", "groove_contact", "GROOVE_CONTACT_FIELDS"]
 
 
+def _radii_from_cos(r_ball, r_groove, r_contact, cos_alpha, inner):
+    r2x = r_contact / cos_alpha
+    if inner:
+        rx = r_ball * r2x / (r2x + r_ball)
+    else:
+        rx = r_ball * r2x / (r2x - r_ball)
+    ry = r_ball * r_groove / (r_groove - r_ball) + 0.0 * rx
+    return rx, ry
+
+
+#: Kernel of :func:`raceway_radii` taking cos(alpha) instead of alpha.
+_raceway_radii_cos = kernel(_radii_from_cos)
+
+
 def raceway_radii(r_ball, r_groove, r_contact, contact_angle, inner):
     """Effective radii R_x, R_y [m] of a ball on a raceway (PHYSICS.md sec. 3).
+
+    R_2x = r_c / cos(alpha); inner (convex): R_x = R_b R_2x/(R_2x + R_b);
+    outer (concave): R_x = R_b R_2x/(R_2x - R_b); R_y = R_b R_c/(R_c - R_b).
 
     Parameters
     ----------
@@ -53,29 +71,20 @@ def raceway_radii(r_ball, r_groove, r_contact, contact_angle, inner):
     >>> round(float(ry / rx), 1)
     32.8
     """
-    r2x = r_contact / np.cos(contact_angle)
-    if inner:
-        rx = r_ball * r2x / (r2x + r_ball)
-    else:
-        rx = r_ball * r2x / (r2x - r_ball)
-    ry = r_ball * r_groove / (r_groove - r_ball) + 0.0 * rx
-    return rx, ry
-
-
-_raceway_radii = njit(cache=True)(raceway_radii)
+    return _radii_from_cos(r_ball, r_groove, r_contact, np.cos(contact_angle), inner)
 
 
 #: Names of the values returned by :func:`groove_contact`, in order.
 GROOVE_CONTACT_FIELDS = ("overlap", "nx", "ny", "nz", "contact_angle", "r_contact", "r_x", "r_y")
 
 
-@njit(cache=True)
-def _groove_contact(cx, cy, cz, rho, z_g, r_groove, r_ball, inner):
-    """Ball (centre c in the ring frame) in a torus groove.
+@kernel
+def _groove_geometry(cx, cy, cz, rho, z_g, r_groove, r_ball, inner):
+    """Ball (centre c in the ring frame) in a torus groove: the cheap part.
 
-    Returns (delta, nx, ny, nz, alpha, r_contact, R_x, R_y); see the module
-    docstring. A ball centre on the bearing axis takes the x direction as
-    its radial direction.
+    Returns (delta, nx, ny, nz, cos_alpha, sin_alpha, r_contact); see the
+    module docstring. A ball centre on the bearing axis takes the x direction
+    as its radial direction.
     """
     r = math.sqrt(cx * cx + cy * cy)
     if r > 0.0:
@@ -95,10 +104,16 @@ def _groove_contact(cx, cy, cz, rho, z_g, r_groove, r_ball, inner):
         nz = 0.0
     delta = dist - (r_groove - r_ball)
     s = -1.0 if inner else 1.0
-    alpha = math.atan2(s * nz, s * nr)
-    r_contact = abs(rho + r_groove * nr)
-    rx, ry = _raceway_radii(r_ball, r_groove, r_contact, alpha, inner)
-    return delta, nr * ex, nr * ey, nz, alpha, r_contact, rx, ry
+    return delta, nr * ex, nr * ey, nz, s * nr, s * nz, abs(rho + r_groove * nr)
+
+
+@kernel
+def _groove_contact(cx, cy, cz, rho, z_g, r_groove, r_ball, inner):
+    """:func:`_groove_geometry` plus the contact angle and the radii:
+    (delta, nx, ny, nz, alpha, r_contact, R_x, R_y)."""
+    delta, nx, ny, nz, ca, sa, r_contact = _groove_geometry(cx, cy, cz, rho, z_g, r_groove, r_ball, inner)
+    rx, ry = _raceway_radii_cos(r_ball, r_groove, r_contact, ca, inner)
+    return delta, nx, ny, nz, math.atan2(sa, ca), r_contact, rx, ry
 
 
 def groove_contact(center, rho, z_g, r_groove, r_ball, inner):

@@ -47,7 +47,8 @@ import math
 from typing import NamedTuple
 
 import numpy as np
-from numba import njit
+
+from .._jit import kernel
 
 __all__ = [
     "METHODS",
@@ -61,6 +62,7 @@ __all__ = [
     "hertz_contact",
     "HertzContact",
     "sphere_sphere_stiffness",
+    "exact_table",
 ]
 
 #: Fidelity levels, in the order of their integer codes used by the kernels.
@@ -96,7 +98,7 @@ def reduced_modulus(e1, nu1, e2=None, nu2=None):
     return 2.0 / ((1.0 - np.square(nu1)) / e1 + (1.0 - np.square(nu2)) / e2)
 
 
-@njit(cache=True)
+@kernel
 def _ellipke(m):
     """Complete elliptic integrals K(m), E(m) of parameter m = e^2 in [0, 1).
 
@@ -133,7 +135,7 @@ def complete_elliptic_integrals(m):
     return out_k, out_e
 
 
-@njit(cache=True)
+@kernel
 def _aspect_from_kappa(kappa):
     """R_y/R_x as a function of k >= 1 (exact Hertz): returns (a_r, F, E).
 
@@ -146,7 +148,7 @@ def _aspect_from_kappa(kappa):
     return (kappa * kappa * ee - kk) / (kk - ee), kk, ee
 
 
-@njit(cache=True)
+@kernel
 def _kfe_exact(ratio):
     """Exact (k, F, E) for a_r = R_y/R_x >= 1: Newton on ln k from the
     Hamrock-Brewe start, on ln a_r(ln k), which is close to linear."""
@@ -174,14 +176,14 @@ def _kfe_exact(ratio):
     return kappa, kk, ee
 
 
-@njit(cache=True)
+@kernel
 def _kfe_hamrock_brewe(ratio):
     """Hamrock & Brewe [1]: k = 1.0339 a_r^0.636, E = 1.0003 + 0.5968/a_r,
     F = 1.5277 + 0.6023 ln a_r."""
     return 1.0339 * ratio ** 0.636, 1.5277 + 0.6023 * math.log(ratio), 1.0003 + 0.5968 / ratio
 
 
-@njit(cache=True)
+@kernel
 def _kfe_simplified(ratio):
     """DEM papers' fits [3], F corrected: k = a_r^(2/pi),
     E = 1 + (pi/2 - 1)/a_r, F = pi/2 + (pi/2 - 1) ln a_r."""
@@ -189,7 +191,60 @@ def _kfe_simplified(ratio):
             1.0 + (_HALF_PI - 1.0) / ratio)
 
 
-@njit(cache=True)
+#: Grid of the tabulated exact solution: ln(R_y/R_x) in [0, ln 1e4].
+_TABLE_N = 8001
+_TABLE_LNMAX = math.log(1e4)
+
+
+def exact_table():
+    """Tabulated exact (ln k, F, E) on a uniform grid of ln(R_y/R_x).
+
+    Used by the simulation kernels as the ``"exact"`` level: linear
+    interpolation on this grid reproduces the direct solution within 1e-7
+    (relative; asserted in tests/test_hertz.py) at a fraction of its cost.
+    Returns an array of shape (3, N).
+    """
+    global _EXACT_TABLE
+    if _EXACT_TABLE is None:
+        x = np.linspace(0.0, _TABLE_LNMAX, _TABLE_N)
+        t = np.empty((3, _TABLE_N))
+        for i, xi in enumerate(x):
+            k, f, e = _kfe_exact(math.exp(xi))
+            t[0, i], t[1, i], t[2, i] = math.log(k), f, e
+        _EXACT_TABLE = t
+    return _EXACT_TABLE
+
+
+_EXACT_TABLE = None
+
+
+@kernel
+def _kfe_tabulated(ratio, table):
+    """(k, F, E) for a_r = R_y/R_x >= 1 by linear interpolation of :func:`exact_table`."""
+    n = table.shape[1]
+    x = math.log(ratio) / _TABLE_LNMAX * (n - 1)
+    if x >= n - 1:
+        x = n - 1.000001
+    i = int(x)
+    w = x - i
+    lk = table[0, i] + w * (table[0, i + 1] - table[0, i])
+    f = table[1, i] + w * (table[1, i + 1] - table[1, i])
+    e = table[2, i] + w * (table[2, i + 1] - table[2, i])
+    return math.exp(lk), f, e
+
+
+@kernel
+def _kfe_fast(r_x, r_y, method, table):
+    """Kernel version of :func:`_kfe`: the exact level from the table."""
+    ratio = r_y / r_x if r_y >= r_x else r_x / r_y
+    if method == EXACT:
+        return _kfe_tabulated(ratio, table)
+    elif method == HAMROCK_BREWE:
+        return _kfe_hamrock_brewe(ratio)
+    return _kfe_simplified(ratio)
+
+
+@kernel
 def _kfe(r_x, r_y, method):
     """(k, F, E) with k = major/minor >= 1, for either orientation."""
     ratio = r_y / r_x if r_y >= r_x else r_x / r_y
@@ -200,19 +255,19 @@ def _kfe(r_x, r_y, method):
     return _kfe_simplified(ratio)
 
 
-@njit(cache=True)
+@kernel
 def _curvature_sum_radius(r_x, r_y):
     """R = R_x R_y / (R_x + R_y) [m]."""
     return r_x * r_y / (r_x + r_y)
 
 
-@njit(cache=True)
+@kernel
 def _stiffness(kappa, ell_f, ell_e, r, e_prime):
     """K = pi k E' sqrt(2 E R / (9 F^3)) [N/m^1.5] (PHYSICS.md sec. 3)."""
     return math.pi * kappa * e_prime * math.sqrt(2.0 * ell_e * r / (9.0 * ell_f ** 3))
 
 
-@njit(cache=True)
+@kernel
 def _semi_axes(kappa, ell_e, r, e_prime, load):
     """Semi-axes a (major) and b (minor) [m] for a load Q [N]:
     a = (6 k^2 E Q R / (pi E'))^(1/3), b = (6 E Q R / (pi k E'))^(1/3)."""
@@ -222,7 +277,7 @@ def _semi_axes(kappa, ell_e, r, e_prime, load):
     return (kappa * kappa * c) ** (1.0 / 3.0), (c / kappa) ** (1.0 / 3.0)
 
 
-@njit(cache=True)
+@kernel
 def _hertz(r_x, r_y, e_prime, overlap, method):
     """Full Hertz state at an overlap delta [m].
 
@@ -372,4 +427,4 @@ def sphere_sphere_stiffness(r1, r2, e_prime):
     return 2.0 / 3.0 * e_prime * np.sqrt(r1 * r2 / (r1 + r2))
 
 
-_sphere_sphere_stiffness = njit(cache=True)(sphere_sphere_stiffness)
+_sphere_sphere_stiffness = kernel(sphere_sphere_stiffness)

@@ -26,7 +26,8 @@ References
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
+
+from .._jit import kernel
 
 __all__ = [
     "cage_speed",
@@ -57,7 +58,7 @@ def cage_speed(omega_inner, omega_outer, ball_radius, pitch_radius, contact_angl
     return 0.5 * omega_inner * (1.0 - g) + 0.5 * omega_outer * (1.0 + g)
 
 
-_cage_speed = njit(cache=True)(cage_speed)
+_cage_speed = kernel(cage_speed)
 
 
 def ball_spin_relative(omega_inner, omega_outer, ball_radius, pitch_radius, contact_angle=0.0):

@@ -39,12 +39,13 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
-from numba import njit
+
+from .._jit import kernel
 from scipy import integrate, optimize
 
 from ..data import BallBearing, InputError
 from . import hertz as _hz
-from .geometry import _raceway_radii
+from .geometry import _raceway_radii_cos
 
 __all__ = [
     "load_zone_parameter",
@@ -134,11 +135,11 @@ def _e_prime(bearing):
     return float(_hz.reduced_modulus(m.youngs_modulus, m.poisson_ratio))
 
 
-@njit(cache=True)
+@kernel
 def _race_stiffness(r_p, r_b, r_ci, r_co, alpha, e_prime, method):
     ca = math.cos(alpha)
-    rxi, ryi = _raceway_radii(r_b, r_ci, r_p - r_b * ca, alpha, True)
-    rxo, ryo = _raceway_radii(r_b, r_co, r_p + r_b * ca, alpha, False)
+    rxi, ryi = _raceway_radii_cos(r_b, r_ci, r_p - r_b * ca, ca, True)
+    rxo, ryo = _raceway_radii_cos(r_b, r_co, r_p + r_b * ca, ca, False)
     ki = _hz._hertz(rxi, ryi, e_prime, 0.0, method)[1]
     ko = _hz._hertz(rxo, ryo, e_prime, 0.0, method)[1]
     kn = (ki ** (-2.0 / 3.0) + ko ** (-2.0 / 3.0)) ** -1.5
@@ -196,7 +197,7 @@ def stribeck_solution(n_balls, radial_load, axial_load=0.0, contact_angle=0.0,
     return StribeckSolution(eps, fa / (n_balls * ja * math.sin(contact_angle)), jr, ja, contact_angle)
 
 
-@njit(cache=True)
+@kernel
 def _ball_loads(dx, dy, dz, psi, rho_i, z_i, rho_o, z_o, r_b, r_ci, r_co, e_prime, method,
                 q, delta, alpha, nvec):
     """Per-ball total overlap, contact angle and load for an inner-ring
@@ -221,8 +222,8 @@ def _ball_loads(dx, dy, dz, psi, rho_i, z_i, rho_o, z_o, r_b, r_ci, r_co, e_prim
             # ball centre on the contact line, at its groove-centre distance
             r_ball_c = rho_o + (r_co - r_b) * nr
             ca = math.cos(al)
-            rxi, ryi = _raceway_radii(r_b, r_ci, r_ball_c - r_b * ca, al, True)
-            rxo, ryo = _raceway_radii(r_b, r_co, r_ball_c + r_b * ca, al, False)
+            rxi, ryi = _raceway_radii_cos(r_b, r_ci, r_ball_c - r_b * ca, ca, True)
+            rxo, ryo = _raceway_radii_cos(r_b, r_co, r_ball_c + r_b * ca, ca, False)
             ki = _hz._hertz(rxi, ryi, e_prime, 0.0, method)[1]
             ko = _hz._hertz(rxo, ryo, e_prime, 0.0, method)[1]
             kn = (ki ** (-2.0 / 3.0) + ko ** (-2.0 / 3.0)) ** -1.5

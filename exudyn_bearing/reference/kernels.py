@@ -1,0 +1,545 @@
+"""Compiled kernels of the DEM reference engine (numba, cache=True).
+
+One force evaluation for the whole bearing per call, over flat float64
+arrays; the physics relations come from :mod:`exudyn_bearing.physics`
+(the same kernels the Exudyn element uses). No allocation in the hot loop.
+
+State
+-----
+``xb, vb, wb`` (Z, 3): ball centre, velocity, angular velocity (world frame);
+``xc, vc`` (Z, 3): cage balls (cage ball k sits between balls k and k+1);
+``ring`` (6,): inner-ring position and velocity (it translates; its spin is
+prescribed); ``hist`` (Z, 2, 3): Cundall-Strack tangential displacement of
+the inner (0) and outer (1) contact of every ball.
+
+Contact diagnostics (``diag``, (Z, 2, NDIAG)) are written when requested, in
+the order of :data:`DIAG_FIELDS`.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .._jit import kernel
+
+from ..physics.damping import _damping_critical, _damping_fluid, damping_coefficient, lubrication_regime
+from ..physics.ehl import _film_thickness
+from ..physics.friction import friction_coefficient
+from ..physics.geometry import _groove_contact, _groove_geometry, _raceway_radii_cos
+from ..physics.hertz import _curvature_sum_radius, _kfe_fast, _semi_axes, _stiffness
+
+# -- parameter vector layout ----------------------------------------------
+(P_Z, P_RB, P_RCI, P_RCO, P_RHO_I, P_ZG_I, P_RHO_O, P_ZG_O, P_RZ, P_RP, P_RGUIDE,
+ P_EPRIME, P_MB, P_IB, P_MZ, P_MR, P_ALPHA_E, P_ETA, P_XI, P_SIGMA, P_L1, P_L3, P_MU_B, P_MU_F,
+ P_HERTZ, P_FILM, P_LUB, P_MU_DRY, P_FRIC, P_VREG, P_KT_RATIO, P_CAGE, P_FR, P_FA,
+ P_W_MAX, P_T_UP, P_T_STEADY, P_T_DOWN, P_K_BZ, P_K_BB, P_K_GUIDE, P_DT, P_AXIAL_FREE,
+ P_MAX_OVERLAP, N_PARAMS) = range(45)
+
+FRIC_HISTORY, FRIC_REGULARIZED, FRIC_NONE = 0, 1, 2
+
+#: Fields of the per-contact diagnostics, in order.
+DIAG_FIELDS = ("load", "overlap", "contact_angle", "a", "b", "p_max", "u_r", "h_min",
+               "lambda", "regime", "mu", "slip_speed", "srr", "friction_force")
+NDIAG = len(DIAG_FIELDS)
+#: Global diagnostics per sample, in order.
+GLOBAL_FIELDS = ("omega", "ring_fx", "ring_fy", "ring_fz", "ring_torque", "friction_power",
+                 "max_overlap_ratio")
+NGLOBAL = len(GLOBAL_FIELDS)
+
+
+@kernel
+def omega_profile(t, w_max, t_up, t_steady, t_down):
+    """Inner-ring speed of the protocol: ramp up, hold, ramp down, rest [rad/s]."""
+    if t < 0.0:
+        return 0.0
+    if t < t_up:
+        return w_max * t / t_up
+    t = t - t_up
+    if t < t_steady:
+        return w_max
+    t = t - t_steady
+    if t < t_down:
+        return w_max * (1.0 - t / t_down)
+    return 0.0
+
+
+@kernel(inline="always")
+def _cross(a0, a1, a2, b0, b1, b2):
+    return a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0
+
+
+@kernel(inline="always")
+def _race_contact(j, race, p, table, xb, vb, wb, ring, w_ring, hist, hz, fb, tb, acc, diag, want):
+    """Ball j against the inner (race 0, on the moving ring) or outer (race 1,
+    fixed at the origin) groove. Adds to fb, tb and the ring accumulator acc
+    (fx, fy, fz, torque_z, friction power, max overlap ratio)."""
+    inner = race == 0
+    if inner:
+        ox, oy, oz = ring[0], ring[1], ring[2]
+        uvx, uvy, uvz = ring[3], ring[4], ring[5]
+        rho, zg, rc = p[P_RHO_I], p[P_ZG_I], p[P_RCI]
+        wr = w_ring
+    else:
+        ox = oy = oz = 0.0
+        uvx = uvy = uvz = 0.0
+        rho, zg, rc = p[P_RHO_O], p[P_ZG_O], p[P_RCO]
+        wr = 0.0
+    rb = p[P_RB]
+    cx = xb[j, 0] - ox
+    cy = xb[j, 1] - oy
+    cz = xb[j, 2] - oz
+    delta, nx, ny, nz, ca, sa, r_contact = _groove_geometry(cx, cy, cz, rho, zg, rc, rb, inner)
+    if delta <= 0.0:
+        hist[j, race, 0] = 0.0
+        hist[j, race, 1] = 0.0
+        hist[j, race, 2] = 0.0
+        if want:
+            for k in range(diag.shape[2]):
+                diag[j, race, k] = 0.0
+            diag[j, race, 1] = delta
+            diag[j, race, 2] = math.atan2(sa, ca)
+            diag[j, race, 7] = np.nan
+            diag[j, race, 8] = np.nan
+            diag[j, race, 9] = -1.0
+            diag[j, race, 10] = np.nan
+        return
+    ratio = delta / rb
+    if ratio > acc[5]:
+        acc[5] = ratio
+    # Hertz (PHYSICS.md sec. 3) at the current contact angle; k, F, E are
+    # re-evaluated when R_y/R_x moved by more than 1e-6 (relative) since the
+    # last evaluation for this contact, K from them and the current radii
+    rx, ry = _raceway_radii_cos(rb, rc, r_contact, ca, inner)
+    e_prime = p[P_EPRIME]
+    aspect = ry / rx
+    if abs(aspect - hz[j, race, 0]) > 1e-6 * aspect:
+        kappa, ell_f, ell_e = _kfe_fast(rx, ry, int(p[P_HERTZ]), table)
+        hz[j, race, 0] = aspect
+        hz[j, race, 1] = kappa
+        hz[j, race, 2] = ell_f
+        hz[j, race, 3] = ell_e
+    else:
+        kappa = hz[j, race, 1]
+        ell_f = hz[j, race, 2]
+        ell_e = hz[j, race, 3]
+    rr = _curvature_sum_radius(rx, ry)
+    kst = _stiffness(kappa, ell_f, ell_e, rr, e_prime)
+    sq = math.sqrt(delta)
+    q_el = kst * delta * sq
+    k_n = 1.5 * kst * sq
+    need_axes = want or p[P_LUB] > 0.5
+    if need_axes:
+        major, minor = _semi_axes(kappa, ell_e, rr, e_prime, q_el)
+    else:
+        major = minor = 0.0
+    # contact point: middle of the overlap, lever from the ball centre
+    lev = rb - 0.5 * delta
+    # (n points from the groove centre to the ball centre; the groove surface
+    # p + R_c n lies beyond the ball centre along n, for both races)
+    lx, ly, lz = lev * nx, lev * ny, lev * nz
+    # surface velocities at the contact point
+    bx, by, bz = _cross(wb[j, 0], wb[j, 1], wb[j, 2], lx, ly, lz)
+    vbs_x = vb[j, 0] + bx
+    vbs_y = vb[j, 1] + by
+    vbs_z = vb[j, 2] + bz
+    px = cx + lx
+    py = cy + ly
+    vrs_x = uvx - wr * py
+    vrs_y = uvy + wr * px
+    vrs_z = uvz
+    # normal approach rate d(delta)/dt = (v_ball - v_ring) . n
+    ddot = (vb[j, 0] - uvx) * nx + (vb[j, 1] - uvy) * ny + (vb[j, 2] - uvz) * nz
+    # slip (tangential relative velocity) and rolling speed
+    sx = vbs_x - vrs_x
+    sy = vbs_y - vrs_y
+    sz = vbs_z - vrs_z
+    sn = sx * nx + sy * ny + sz * nz
+    sx -= sn * nx
+    sy -= sn * ny
+    sz -= sn * nz
+    slip = math.sqrt(sx * sx + sy * sy + sz * sz)
+    # rolling speed: mean surface velocity relative to the contact point,
+    # which is carried by the ball's orbital motion about the bearing axis
+    r2 = xb[j, 0] * xb[j, 0] + xb[j, 1] * xb[j, 1]
+    w_orb = (xb[j, 0] * vb[j, 1] - xb[j, 1] * vb[j, 0]) / r2 if r2 > 0.0 else 0.0
+    mx = 0.5 * (vbs_x + vrs_x) - (vb[j, 0] - w_orb * ly)
+    my = 0.5 * (vbs_y + vrs_y) - (vb[j, 1] + w_orb * lx)
+    mz = 0.5 * (vbs_z + vrs_z) - vb[j, 2]
+    mn = mx * nx + my * ny + mz * nz
+    mx -= mn * nx
+    my -= mn * ny
+    mz -= mn * nz
+    u_r = math.sqrt(mx * mx + my * my + mz * mz)
+    # lubrication (PHYSICS.md sec. 4-5)
+    c_hyst = 1.5 * p[P_ALPHA_E] * q_el
+    if p[P_LUB] > 0.5:
+        h = _film_thickness(int(p[P_FILM]), u_r, q_el, rx, kappa, e_prime, p[P_ETA], p[P_XI])
+        lam = h / p[P_SIGMA]
+        regime = lubrication_regime(lam, p[P_L1], p[P_L3])
+        if regime == 0:
+            c_n = c_hyst
+        else:
+            c_fl = _damping_fluid(p[P_ETA], major, rb, h)
+            c_n = damping_coefficient(lam, c_hyst, c_fl, p[P_L1], p[P_L3])
+        mu = friction_coefficient(lam, p[P_MU_B], p[P_MU_F], p[P_L1], p[P_L3])
+    else:
+        h = 0.0
+        lam = 0.0
+        regime = 0
+        c_n = c_hyst
+        mu = p[P_MU_DRY]
+    f_n = q_el + c_n * ddot
+    if f_n < 0.0:
+        f_n = 0.0
+    # tangential force (PHYSICS.md sec. 6)
+    ftx = fty = ftz = 0.0
+    fric = int(p[P_FRIC])
+    if fric == FRIC_HISTORY:
+        hx, hy, hz = hist[j, race, 0], hist[j, race, 1], hist[j, race, 2]
+        hmag = math.sqrt(hx * hx + hy * hy + hz * hz)
+        if hmag > 0.0:
+            hn = hx * nx + hy * ny + hz * nz
+            hx -= hn * nx
+            hy -= hn * ny
+            hz -= hn * nz
+            hm2 = math.sqrt(hx * hx + hy * hy + hz * hz)
+            if hm2 > 0.0:
+                s = hmag / hm2
+                hx *= s
+                hy *= s
+                hz *= s
+        dt = p[P_DT]
+        hx += sx * dt
+        hy += sy * dt
+        hz += sz * dt
+        k_t = p[P_KT_RATIO] * k_n
+        ftx = -k_t * hx
+        fty = -k_t * hy
+        ftz = -k_t * hz
+        fmag = math.sqrt(ftx * ftx + fty * fty + ftz * ftz)
+        cap = mu * f_n
+        if fmag > cap:
+            s = cap / fmag
+            ftx *= s
+            fty *= s
+            ftz *= s
+            hx = -ftx / k_t
+            hy = -fty / k_t
+            hz = -ftz / k_t
+        hist[j, race, 0] = hx
+        hist[j, race, 1] = hy
+        hist[j, race, 2] = hz
+    elif fric == FRIC_REGULARIZED and slip > 0.0:
+        fmag = mu * f_n * min(slip / p[P_VREG], 1.0)
+        ftx = -fmag * sx / slip
+        fty = -fmag * sy / slip
+        ftz = -fmag * sz / slip
+    # forces on the ball: normal pushes it back towards the groove centre
+    fb[j, 0] += -f_n * nx + ftx
+    fb[j, 1] += -f_n * ny + fty
+    fb[j, 2] += -f_n * nz + ftz
+    mx_, my_, mz_ = _cross(lx, ly, lz, ftx, fty, ftz)
+    tb[j, 0] += mx_
+    tb[j, 1] += my_
+    tb[j, 2] += mz_
+    power = -(ftx * sx + fty * sy + ftz * sz)
+    acc[4] += power
+    if inner:
+        acc[0] += f_n * nx - ftx
+        acc[1] += f_n * ny - fty
+        acc[2] += f_n * nz - ftz
+        # torque of the ball on the ring about its axis (at the contact point)
+        acc[3] += px * (-fty) - py * (-ftx)
+    if want:
+        ft = math.sqrt(ftx * ftx + fty * fty + ftz * ftz)
+        if ry >= rx:
+            a_ax, b_ax = major, minor
+        else:
+            a_ax, b_ax = minor, major
+        diag[j, race, 0] = f_n
+        diag[j, race, 1] = delta
+        diag[j, race, 2] = math.atan2(sa, ca)
+        diag[j, race, 3] = a_ax
+        diag[j, race, 4] = b_ax
+        diag[j, race, 5] = 1.5 * q_el / (math.pi * a_ax * b_ax) if a_ax * b_ax > 0.0 else 0.0
+        diag[j, race, 6] = u_r
+        diag[j, race, 7] = h
+        diag[j, race, 8] = lam if p[P_LUB] > 0.5 else np.nan
+        diag[j, race, 9] = regime
+        diag[j, race, 10] = mu
+        diag[j, race, 11] = slip
+        diag[j, race, 12] = slip / u_r if u_r > 0.0 else 0.0
+        diag[j, race, 13] = ft
+
+
+@kernel(inline="always")
+def _sphere_pair(xa, va, ia, xb_, vb_, ib, r_sum, kst, m_eff, fa, fb_):
+    """Frictionless Hertz sphere contact with critical damping (PHYSICS.md
+    sec. 4); returns the normal force."""
+    dx = xa[ia, 0] - xb_[ib, 0]
+    dy = xa[ia, 1] - xb_[ib, 1]
+    dz = xa[ia, 2] - xb_[ib, 2]
+    dist = math.sqrt(dx * dx + dy * dy + dz * dz)
+    delta = r_sum - dist
+    if delta <= 0.0 or dist == 0.0:
+        return 0.0
+    nx, ny, nz = dx / dist, dy / dist, dz / dist
+    sq = math.sqrt(delta)
+    q = kst * delta * sq
+    c = _damping_critical(m_eff, 1.5 * kst * sq)
+    ddot = -((va[ia, 0] - vb_[ib, 0]) * nx + (va[ia, 1] - vb_[ib, 1]) * ny + (va[ia, 2] - vb_[ib, 2]) * nz)
+    f = q + c * ddot
+    if f < 0.0:
+        f = 0.0
+    fa[ia, 0] += f * nx
+    fa[ia, 1] += f * ny
+    fa[ia, 2] += f * nz
+    fb_[ib, 0] -= f * nx
+    fb_[ib, 1] -= f * ny
+    fb_[ib, 2] -= f * nz
+    return f
+
+
+@kernel(inline="always")
+def _guide_contact(k, p, xc, vc, fc):
+    """Cage ball k in its guide torus (tube-centre circle r_p, z = 0, tube
+    radius R_z + clearance): frictionless Hertz with R_eq = R_z and critical
+    damping."""
+    rz = p[P_RZ]
+    delta, nx, ny, nz, _a, _rc, _rx, _ry = _groove_contact(xc[k, 0], xc[k, 1], xc[k, 2], p[P_RP], 0.0,
+                                                           p[P_RGUIDE], rz, False)
+    if delta <= 0.0:
+        return
+    sq = math.sqrt(delta)
+    kst = p[P_K_GUIDE]
+    c = _damping_critical(p[P_MZ], 1.5 * kst * sq)
+    ddot = vc[k, 0] * nx + vc[k, 1] * ny + vc[k, 2] * nz
+    f = kst * delta * sq + c * ddot
+    if f < 0.0:
+        f = 0.0
+    fc[k, 0] -= f * nx
+    fc[k, 1] -= f * ny
+    fc[k, 2] -= f * nz
+
+
+@kernel
+def forces(t, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring, glob, diag, cage_load, want):
+    """All contact forces at time t. Writes fb, tb (balls), fc (cage balls),
+    fring (3: force on the inner ring incl. the applied load); with ``want``
+    also glob (NGLOBAL), diag (Z, 2, NDIAG) and cage_load (Z, 2)."""
+    z = xb.shape[0]
+    fb[:, :] = 0.0
+    tb[:, :] = 0.0
+    fc[:, :] = 0.0
+    acc = np.zeros(6)
+    w_ring = omega_profile(t, p[P_W_MAX], p[P_T_UP], p[P_T_STEADY], p[P_T_DOWN])
+    for j in range(z):
+        _race_contact(j, 0, p, table, xb, vb, wb, ring, w_ring, hist, hz, fb, tb, acc, diag, want)
+        _race_contact(j, 1, p, table, xb, vb, wb, ring, w_ring, hist, hz, fb, tb, acc, diag, want)
+    if p[P_CAGE] > 0.5:
+        r_sum = p[P_RB] + p[P_RZ]
+        m_eff = p[P_MB] * p[P_MZ] / (p[P_MB] + p[P_MZ])
+        for k in range(z):
+            j2 = k + 1 if k + 1 < z else 0
+            f1 = _sphere_pair(xb, vb, k, xc, vc, k, r_sum, p[P_K_BZ], m_eff, fb, fc)
+            f2 = _sphere_pair(xb, vb, j2, xc, vc, k, r_sum, p[P_K_BZ], m_eff, fb, fc)
+            _guide_contact(k, p, xc, vc, fc)
+            if want:
+                cage_load[k, 0] = f1
+                cage_load[k, 1] = f2
+    else:
+        for k in range(z):
+            j2 = k + 1 if k + 1 < z else 0
+            f1 = _sphere_pair(xb, vb, k, xb, vb, j2, 2.0 * p[P_RB], p[P_K_BB], 0.5 * p[P_MB], fb, fb)
+            if want:
+                cage_load[k, 0] = f1
+                cage_load[k, 1] = 0.0
+    # force on the inner ring: applied load plus the forces of the balls on it
+    fring[0] = p[P_FR] + acc[0]
+    fring[1] = acc[1]
+    fring[2] = (p[P_FA] + acc[2]) if p[P_AXIAL_FREE] > 0.5 else 0.0
+    if want:
+        glob[0] = w_ring
+        glob[1] = acc[0]
+        glob[2] = acc[1]
+        glob[3] = acc[2]
+        glob[4] = acc[3]
+        glob[5] = acc[4]
+        glob[6] = acc[5]
+    return acc[5]
+
+
+@kernel
+def run_verlet(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring,
+               sample_every, step0, s_t, s_glob, s_diag, s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring):
+    """Velocity-Verlet (the DEM papers' scheme) for ``n_steps`` steps from t0.
+
+    Forces must hold the values at t0 on entry; damping and friction see the
+    half-step velocity. Every ``sample_every``-th step (counted from
+    ``step0``) the state and diagnostics go to the next row of the s_*
+    buffers. Returns (steps done, samples written, status): status 0 ok,
+    1 non-finite state, 2 runaway overlap (> P_MAX_OVERLAP R_b).
+    """
+    dt = p[P_DT]
+    h = 0.5 * dt
+    z = xb.shape[0]
+    inv_mb = 1.0 / p[P_MB]
+    inv_ib = 1.0 / p[P_IB]
+    inv_mz = 1.0 / p[P_MZ] if p[P_CAGE] > 0.5 else 0.0
+    inv_mr = 1.0 / p[P_MR]
+    glob = np.zeros(s_glob.shape[1])
+    diag = np.zeros((z, 2, s_diag.shape[3]))
+    cage_load = np.zeros((z, 2))
+    n_samp = 0
+    t = t0
+    for step in range(n_steps):
+        for j in range(z):
+            for d in range(3):
+                vb[j, d] += h * fb[j, d] * inv_mb
+                wb[j, d] += h * tb[j, d] * inv_ib
+                xb[j, d] += dt * vb[j, d]
+                vc[j, d] += h * fc[j, d] * inv_mz
+                xc[j, d] += dt * vc[j, d]
+        for d in range(3):
+            ring[3 + d] += h * fring[d] * inv_mr
+            ring[d] += dt * ring[3 + d]
+        t = t0 + (step + 1) * dt
+        want = (step0 + step + 1) % sample_every == 0 and n_samp < s_t.shape[0]
+        worst = forces(t, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring, glob, diag,
+                       cage_load, want)
+        for j in range(z):
+            for d in range(3):
+                vb[j, d] += h * fb[j, d] * inv_mb
+                wb[j, d] += h * tb[j, d] * inv_ib
+                vc[j, d] += h * fc[j, d] * inv_mz
+        for d in range(3):
+            ring[3 + d] += h * fring[d] * inv_mr
+        if want:
+            s_t[n_samp] = t
+            s_glob[n_samp] = glob
+            s_diag[n_samp] = diag
+            s_cage[n_samp] = cage_load
+            s_xb[n_samp] = xb
+            s_vb[n_samp] = vb
+            s_wb[n_samp] = wb
+            s_xc[n_samp] = xc
+            s_vc[n_samp] = vc
+            s_ring[n_samp] = ring
+            n_samp += 1
+            if not (np.all(np.isfinite(xb)) and np.all(np.isfinite(vb)) and np.all(np.isfinite(ring))):
+                return step + 1, n_samp, 1
+        if worst > p[P_MAX_OVERLAP] or not math.isfinite(worst):
+            return step + 1, n_samp, 2
+    if not (np.all(np.isfinite(xb)) and np.all(np.isfinite(vb)) and np.all(np.isfinite(wb))):
+        return n_steps, n_samp, 1
+    return n_steps, n_samp, 0
+
+
+@kernel
+def _rk_stage(t, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring, glob, diag, cage_load,
+              kx, kv, kw, kxc, kvc, kr, stage):
+    """Derivatives of the state at (t, state) into stage ``stage`` of the k
+    arrays; returns the largest overlap ratio."""
+    worst = forces(t, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring, glob, diag, cage_load, False)
+    inv_mz = 1.0 / p[P_MZ] if p[P_CAGE] > 0.5 else 0.0
+    for j in range(xb.shape[0]):
+        for d in range(3):
+            kx[stage, j, d] = vb[j, d]
+            kv[stage, j, d] = fb[j, d] / p[P_MB]
+            kw[stage, j, d] = tb[j, d] / p[P_IB]
+            kxc[stage, j, d] = vc[j, d]
+            kvc[stage, j, d] = fc[j, d] * inv_mz
+    for d in range(3):
+        kr[stage, d] = ring[3 + d]
+        kr[stage, 3 + d] = fring[d] / p[P_MR]
+    return worst
+
+
+@kernel
+def _rk_set(y0x, y0v, y0w, y0xc, y0vc, y0r, kx, kv, kw, kxc, kvc, kr, stage, f,
+            xb, vb, wb, xc, vc, ring):
+    """state = y0 + f k[stage]."""
+    for j in range(xb.shape[0]):
+        for d in range(3):
+            xb[j, d] = y0x[j, d] + f * kx[stage, j, d]
+            vb[j, d] = y0v[j, d] + f * kv[stage, j, d]
+            wb[j, d] = y0w[j, d] + f * kw[stage, j, d]
+            xc[j, d] = y0xc[j, d] + f * kxc[stage, j, d]
+            vc[j, d] = y0vc[j, d] + f * kvc[stage, j, d]
+    for d in range(6):
+        ring[d] = y0r[d] + f * kr[stage, d]
+
+
+@kernel
+def run_rk4(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring,
+            sample_every, step0, s_t, s_glob, s_diag, s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring):
+    """Classical fourth-order Runge-Kutta, for history-free scenes (same
+    interface and status codes as :func:`run_verlet`)."""
+    dt = p[P_DT]
+    z = xb.shape[0]
+    glob = np.zeros(s_glob.shape[1])
+    diag = np.zeros((z, 2, s_diag.shape[3]))
+    cage_load = np.zeros((z, 2))
+    kx = np.zeros((4, z, 3))
+    kv = np.zeros((4, z, 3))
+    kw = np.zeros((4, z, 3))
+    kxc = np.zeros((4, z, 3))
+    kvc = np.zeros((4, z, 3))
+    kr = np.zeros((4, 6))
+    y0x = xb.copy()
+    y0v = vb.copy()
+    y0w = wb.copy()
+    y0xc = xc.copy()
+    y0vc = vc.copy()
+    y0r = ring.copy()
+    n_samp = 0
+    for step in range(n_steps):
+        t = t0 + step * dt
+        y0x[:, :] = xb
+        y0v[:, :] = vb
+        y0w[:, :] = wb
+        y0xc[:, :] = xc
+        y0vc[:, :] = vc
+        y0r[:] = ring
+        worst = _rk_stage(t, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring, glob, diag,
+                          cage_load, kx, kv, kw, kxc, kvc, kr, 0)
+        if worst > p[P_MAX_OVERLAP] or not math.isfinite(worst):
+            return step, n_samp, 2
+        _rk_set(y0x, y0v, y0w, y0xc, y0vc, y0r, kx, kv, kw, kxc, kvc, kr, 0, 0.5 * dt, xb, vb, wb, xc, vc, ring)
+        _rk_stage(t + 0.5 * dt, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring, glob, diag,
+                  cage_load, kx, kv, kw, kxc, kvc, kr, 1)
+        _rk_set(y0x, y0v, y0w, y0xc, y0vc, y0r, kx, kv, kw, kxc, kvc, kr, 1, 0.5 * dt, xb, vb, wb, xc, vc, ring)
+        _rk_stage(t + 0.5 * dt, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring, glob, diag,
+                  cage_load, kx, kv, kw, kxc, kvc, kr, 2)
+        _rk_set(y0x, y0v, y0w, y0xc, y0vc, y0r, kx, kv, kw, kxc, kvc, kr, 2, dt, xb, vb, wb, xc, vc, ring)
+        _rk_stage(t + dt, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring, glob, diag,
+                  cage_load, kx, kv, kw, kxc, kvc, kr, 3)
+        c = dt / 6.0
+        for j in range(z):
+            for d in range(3):
+                xb[j, d] = y0x[j, d] + c * (kx[0, j, d] + 2 * kx[1, j, d] + 2 * kx[2, j, d] + kx[3, j, d])
+                vb[j, d] = y0v[j, d] + c * (kv[0, j, d] + 2 * kv[1, j, d] + 2 * kv[2, j, d] + kv[3, j, d])
+                wb[j, d] = y0w[j, d] + c * (kw[0, j, d] + 2 * kw[1, j, d] + 2 * kw[2, j, d] + kw[3, j, d])
+                xc[j, d] = y0xc[j, d] + c * (kxc[0, j, d] + 2 * kxc[1, j, d] + 2 * kxc[2, j, d] + kxc[3, j, d])
+                vc[j, d] = y0vc[j, d] + c * (kvc[0, j, d] + 2 * kvc[1, j, d] + 2 * kvc[2, j, d] + kvc[3, j, d])
+        for d in range(6):
+            ring[d] = y0r[d] + c * (kr[0, d] + 2 * kr[1, d] + 2 * kr[2, d] + kr[3, d])
+        want = (step0 + step + 1) % sample_every == 0 and n_samp < s_t.shape[0]
+        if want:
+            forces(t + dt, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring, glob, diag,
+                   cage_load, True)
+            s_t[n_samp] = t + dt
+            s_glob[n_samp] = glob
+            s_diag[n_samp] = diag
+            s_cage[n_samp] = cage_load
+            s_xb[n_samp] = xb
+            s_vb[n_samp] = vb
+            s_wb[n_samp] = wb
+            s_xc[n_samp] = xc
+            s_vc[n_samp] = vc
+            s_ring[n_samp] = ring
+            n_samp += 1
+        if not (np.all(np.isfinite(xb)) and np.all(np.isfinite(vb)) and np.all(np.isfinite(ring))):
+            return step + 1, n_samp, 1
+    return n_steps, n_samp, 0

@@ -1,0 +1,176 @@
+"""Sampled time series of a bearing simulation and the summary both engines report.
+
+Arrays (n = samples, Z balls, race 0 inner / 1 outer):
+
+* ``t`` (n,) [s]; ``glob`` (n, NGLOBAL): omega, force of the balls on the
+  inner ring (x, y, z), friction torque on the ring about its axis, total
+  frictional power, largest overlap / R_b;
+* ``diag`` (n, Z, 2, NDIAG): per contact load, overlap, contact angle, a,
+  b, p_max, u_r, h_min, Lambda, regime, mu, slip speed, slide-to-roll
+  ratio, friction force (``DIAG_FIELDS``);
+* ``cage_load`` (n, Z, 2): ball / cage-ball contact forces (or ball / ball);
+* ``xb, vb, wb, xc, vc`` (n, Z, 3): balls and cage balls; ``ring`` (n, 6).
+"""
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+
+from .physics import kinematics
+from .reference.kernels import DIAG_FIELDS, GLOBAL_FIELDS
+
+__all__ = ["Results", "SUMMARY_KEYS"]
+
+#: Keys every engine's summary has.
+SUMMARY_KEYS = ("q_max_inner", "q_max_outer", "cage_speed", "ball_spin", "lambda_outer_psi0",
+                "lambda_inner_psi0", "regime_fraction", "steps", "dt", "wall_s")
+
+
+class Results:
+    """Output of one run (reference or Exudyn engine)."""
+
+    def __init__(self, bearing, scenario, lubricant, data: dict, steps: int, wall_s: float,
+                 engine: str, stable_dt: float | None = None, static=None):
+        self.bearing = bearing
+        self.scenario = scenario
+        self.lubricant = lubricant
+        self.data = data
+        self.steps = int(steps)
+        self.wall_s = float(wall_s)
+        self.engine = engine
+        self.stable_dt = stable_dt
+        self.static = static
+
+    # -- accessors -------------------------------------------------------
+    @property
+    def t(self) -> np.ndarray:
+        return self.data["t"]
+
+    def contact(self, name: str, race: str | int) -> np.ndarray:
+        """Per-contact series (n, Z) of a ``DIAG_FIELDS`` entry; race 'inner'/'outer'."""
+        r = {"inner": 0, "outer": 1}.get(race, race)
+        return self.data["diag"][:, :, r, DIAG_FIELDS.index(name)]
+
+    def global_series(self, name: str) -> np.ndarray:
+        return self.data["glob"][:, GLOBAL_FIELDS.index(name)]
+
+    def azimuth(self) -> np.ndarray:
+        """Ball azimuth psi (n, Z) [rad] from the load direction, in (-pi, pi]."""
+        xb = self.data["xb"]
+        return np.arctan2(xb[..., 1], xb[..., 0])
+
+    def orbital_speed(self, which: str = "balls") -> np.ndarray:
+        """Angular speed about the bearing axis (n, Z) [rad/s] of balls or cage balls."""
+        x, v = (self.data["xb"], self.data["vb"]) if which == "balls" else (self.data["xc"], self.data["vc"])
+        r2 = x[..., 0] ** 2 + x[..., 1] ** 2
+        return (x[..., 0] * v[..., 1] - x[..., 1] * v[..., 0]) / r2
+
+    def cage_speed_series(self) -> np.ndarray:
+        """Cage speed (n,) [rad/s]: mean orbital speed of the cage balls (of the balls without cage)."""
+        cage = self.scenario.cage and self.bearing.has_cage
+        return self.orbital_speed("cage" if cage else "balls").mean(axis=1)
+
+    def ball_spin_series(self) -> np.ndarray:
+        """|omega| of every ball (n, Z) [rad/s]."""
+        return np.linalg.norm(self.data["wb"], axis=-1)
+
+    def window(self, fraction: float = 0.25) -> slice:
+        """Slice of the last ``fraction`` of the samples."""
+        n = len(self.t)
+        return slice(max(0, n - max(1, int(round(fraction * n)))), n)
+
+    def nearest_psi0(self) -> np.ndarray:
+        """Index of the ball nearest psi = 0 at every sample (n,)."""
+        return np.argmin(np.abs(self.azimuth()), axis=1)
+
+    # -- summary -------------------------------------------------------
+    def summary(self, fraction: float = 0.25) -> dict:
+        """Scalar results over the last quarter of the run (PHYSICS.md sec. 8 keys).
+
+        q_max_inner/outer: mean of the largest ball load [N]; cage_speed,
+        ball_spin: mean [rad/s]; lambda_{outer,inner}_psi0: mean Lambda of the
+        contact nearest psi = 0; regime_fraction: share of loaded contacts
+        (both races) in boundary / mixed / full film; steps, dt, wall_s.
+        """
+        w = self.window(fraction)
+        b = self.bearing
+        load_i = self.contact("load", "inner")[w]
+        load_o = self.contact("load", "outer")[w]
+        idx = self.nearest_psi0()[w]
+        rows = np.arange(len(idx))
+        lam_i = self.contact("lambda", "inner")[w][rows, idx]
+        lam_o = self.contact("lambda", "outer")[w][rows, idx]
+        reg = np.stack([self.contact("regime", "inner")[w], self.contact("regime", "outer")[w]])
+        loaded = reg >= 0
+        n_loaded = max(int(loaded.sum()), 1)
+        frac = {name: float(np.sum(reg == code)) / n_loaded
+                for code, name in enumerate(("boundary", "mixed", "full_film"))}
+        srr = np.stack([self.contact("srr", "inner")[w], self.contact("srr", "outer")[w]])
+        omega = float(np.mean(self.global_series("omega")[w]))
+        a0 = b.free_contact_angle
+
+        def nanmean(x):
+            x = np.asarray(x, float)
+            return float(np.nanmean(x)) if np.any(np.isfinite(x)) else None
+
+        out = {
+            "engine": self.engine,
+            "bearing": b.name,
+            "Fr": self.scenario.Fr,
+            "Fa": self.scenario.Fa,
+            "Pd": b.diametral_clearance,
+            "omega": omega,
+            "q_max_inner": float(np.mean(load_i.max(axis=1))),
+            "q_max_outer": float(np.mean(load_o.max(axis=1))),
+            "cage_speed": float(np.mean(self.cage_speed_series()[w])),
+            "ball_spin": float(np.mean(self.ball_spin_series()[w])),
+            "lambda_outer_psi0": nanmean(lam_o),
+            "lambda_inner_psi0": nanmean(lam_i),
+            "regime_fraction": frac,
+            "srr_mean": float(np.mean(srr[loaded])) if loaded.any() else None,
+            "ring_displacement": [float(x) for x in np.mean(self.data["ring"][w, :3], axis=0)],
+            "friction_torque": float(np.mean(self.global_series("ring_torque")[w])),
+            "friction_power": float(np.mean(self.global_series("friction_power")[w])),
+            "kinematic_cage_speed": float(kinematics.cage_speed(omega, 0.0, b.ball_radius, b.pitch_radius, a0)),
+            "kinematic_ball_spin": float(kinematics.ball_spin_absolute(omega, 0.0, b.ball_radius,
+                                                                       b.pitch_radius, a0)),
+            "steps": self.steps,
+            "dt": self.scenario.dt,
+            "t_end": float(self.t[-1]) if len(self.t) else 0.0,
+            "wall_s": self.wall_s,
+            "stable_dt": self.stable_dt,
+            "integrator": self.scenario.integrator,
+            "friction": self.scenario.friction,
+            "hertz": self.scenario.hertz,
+            "film": self.scenario.film,
+            "cage": bool(self.scenario.cage and b.has_cage),
+            "lubrication": self.scenario.lubrication,
+        }
+        return out
+
+    # -- persistence ---------------------------------------------------
+    def save(self, directory, stem: str = "run") -> tuple[Path, Path]:
+        """Write ``stem.npz`` (all arrays) and ``stem.json`` (summary) into directory."""
+        from .cli import to_jsonable
+
+        d = Path(directory)
+        d.mkdir(parents=True, exist_ok=True)
+        npz = d / f"{stem}.npz"
+        js = d / f"{stem}.json"
+        np.savez_compressed(npz, diag_fields=np.array(DIAG_FIELDS), global_fields=np.array(GLOBAL_FIELDS),
+                            **self.data)
+        js.write_text(json.dumps(to_jsonable(self.summary()), indent=2))
+        return npz, js
+
+    def plot(self, png):
+        """Overview figure (speeds, loads, Lambda) saved as PNG; returns the path."""
+        from .plotting import plot_run
+
+        return plot_run(self, png)
+
+    def __repr__(self):
+        return (f"Results(engine={self.engine!r}, bearing={self.bearing.name!r}, samples={len(self.t)}, "
+                f"steps={self.steps}, wall_s={self.wall_s:.3g})")

@@ -1,0 +1,167 @@
+"""Experiment definition: loads, speed protocol, model switches and solver settings.
+
+A :class:`Scenario` is data (as a PyBaMM Experiment): it names what is done to
+the bearing, not how the engine does it. Combine it with a bearing and a
+lubricant through :func:`exudyn_bearing.simulate`.
+"""
+from __future__ import annotations
+
+import dataclasses
+import math
+from dataclasses import dataclass
+
+from .data import InputError
+from .physics.ehl import film_model_code
+from .physics.hertz import method_code
+
+__all__ = ["Scenario", "FRICTION_MODELS", "INTEGRATORS"]
+
+#: Tangential force models: Cundall-Strack spring with Coulomb cap (contact
+#: history), regularised Coulomb on the slip velocity (history-free), none.
+FRICTION_MODELS = ("history", "regularized", "none")
+#: Time integrators of the reference engine.
+INTEGRATORS = ("verlet", "rk4")
+
+
+@dataclass(frozen=True)
+class Scenario:
+    """What happens to the bearing (PHYSICS.md sec. 7).
+
+    Parameters
+    ----------
+    Fr, Fa : float
+        Radial load on the inner ring along +x and axial load along +z [N].
+    omega : float
+        Inner-ring speed [rad/s] of the steady phase (outer ring fixed).
+    t_end : float
+        Simulated time [s].
+    t_ramp_up, t_steady, t_ramp_down : float
+        Speed protocol [s]: linear ramp 0 -> omega over ``t_ramp_up``, hold
+        for ``t_steady``, linear ramp to 0 over ``t_ramp_down``, then rest.
+        ``t_ramp_up = 0`` starts at omega; ``t_steady = inf`` (default) never
+        slows down.
+    Pd : float or None
+        Diametral clearance override [m] (None: the bearing's own).
+    cage : bool
+        Torus cage (cage balls between the balls) on or off; off keeps the
+        balls apart by ball / ball contact only.
+    lubrication : bool
+        Lambda-switched damping and friction (True) or constant mu and
+        hysteretic damping (False).
+    mu_dry : float
+        Friction coefficient when ``lubrication`` is False.
+    friction : {"history", "regularized", "none"}
+        Tangential force model (PHYSICS.md sec. 6).
+    regularizing_speed : float
+        Slip speed [m/s] below which regularised friction is linear.
+    tangential_stiffness_ratio : float
+        K_t / K_n of the Cundall-Strack spring, in [2/3, 1].
+    hertz : {"exact", "hamrock_brewe", "simplified"}
+        Hertz fidelity level (exact is tabulated in the kernels).
+    film : {"hd", "mk"}
+        Film-thickness model.
+    guide_clearance : float
+        Radial and axial clearance [m] of the cage balls in their guide torus.
+    ring_mass : float or None
+        Translating mass of the inner ring (and what it carries) [kg];
+        None: the ring's own mass estimated from the bearing geometry.
+    initial : {"analytic", "rest"}
+        Start from the quasi-static load distribution with balls and cage at
+        their kinematic speeds, or from rest.
+    integrator : {"verlet", "rk4"}
+    dt : float
+        Time step [s] (default 1 us, the DEM papers' step).
+    sample_dt : float
+        Output interval [s].
+    """
+
+    Fr: float = 3000.0
+    Fa: float = 0.0
+    omega: float = 500.0
+    t_end: float = 0.05
+    t_ramp_up: float = 0.0
+    t_steady: float = math.inf
+    t_ramp_down: float = 0.0
+    Pd: float | None = None
+    cage: bool = True
+    lubrication: bool = True
+    mu_dry: float = 0.1
+    friction: str = "history"
+    regularizing_speed: float = 0.1
+    tangential_stiffness_ratio: float = 2.0 / 3.0
+    hertz: str = "exact"
+    film: str = "hd"
+    guide_clearance: float = 50e-6
+    ring_mass: float | None = None
+    initial: str = "analytic"
+    integrator: str = "verlet"
+    dt: float = 1e-6
+    sample_dt: float = 1e-4
+
+    def __post_init__(self):
+        for name in ("Fr", "Fa", "omega", "t_end", "t_ramp_up", "t_ramp_down", "mu_dry",
+                     "regularizing_speed", "guide_clearance", "dt", "sample_dt"):
+            v = getattr(self, name)
+            if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
+                raise InputError(f"{name}: must be a finite number, got {v!r}")
+        ts = self.t_steady
+        if not isinstance(ts, (int, float)) or math.isnan(ts) or ts < 0:
+            raise InputError(f"t_steady: must be >= 0 (inf allowed), got {ts!r}")
+        for name in ("Fr", "Fa", "t_ramp_up", "t_ramp_down", "mu_dry"):
+            if getattr(self, name) < 0:
+                raise InputError(f"{name}: must be >= 0, got {getattr(self, name)}")
+        for name in ("t_end", "dt", "sample_dt", "regularizing_speed", "guide_clearance"):
+            if getattr(self, name) <= 0:
+                raise InputError(f"{name}: must be > 0, got {getattr(self, name)}")
+        if self.sample_dt < self.dt:
+            raise InputError(f"sample_dt: must be >= dt ({self.dt}), got {self.sample_dt}")
+        if self.dt > 1e-4:
+            raise InputError(f"dt: {self.dt} s is far above any stable step of a Hertz contact")
+        if not 2.0 / 3.0 - 1e-12 <= self.tangential_stiffness_ratio <= 1.0:
+            raise InputError("tangential_stiffness_ratio: must lie in [2/3, 1] (PHYSICS.md sec. 6), "
+                             f"got {self.tangential_stiffness_ratio}")
+        if self.friction not in FRICTION_MODELS:
+            raise InputError(f"friction: unknown model {self.friction!r} (valid: {', '.join(FRICTION_MODELS)})")
+        if self.integrator not in INTEGRATORS:
+            raise InputError(f"integrator: unknown {self.integrator!r} (valid: {', '.join(INTEGRATORS)})")
+        if self.integrator == "rk4" and self.friction == "history":
+            raise InputError("integrator: rk4 needs a history-free friction model "
+                             "(friction='regularized' or 'none'); the Cundall-Strack spring is "
+                             "updated once per step and runs with verlet")
+        if self.initial not in ("analytic", "rest"):
+            raise InputError(f"initial: must be 'analytic' or 'rest', got {self.initial!r}")
+        try:
+            method_code(self.hertz)
+        except ValueError as exc:
+            raise InputError(f"hertz: {exc}") from None
+        try:
+            film_model_code(self.film)
+        except ValueError as exc:
+            raise InputError(f"film: {exc}") from None
+        if self.ring_mass is not None and (not math.isfinite(self.ring_mass) or self.ring_mass <= 0):
+            raise InputError(f"ring_mass: must be > 0, got {self.ring_mass}")
+        if self.Pd is not None and not math.isfinite(self.Pd):
+            raise InputError(f"Pd: must be finite, got {self.Pd}")
+
+    def omega_at(self, t):
+        """Prescribed inner-ring speed omega(t) [rad/s] of the protocol."""
+        from .reference.kernels import omega_profile
+
+        return omega_profile(float(t), float(self.omega), float(self.t_ramp_up),
+                             float(self.t_steady), float(self.t_ramp_down))
+
+    def replace(self, **changes) -> "Scenario":
+        return dataclasses.replace(self, **changes)
+
+    @classmethod
+    def papers_protocol(cls, omega=500.0, t_ramp_up=0.02, t_steady=0.06, t_ramp_down=0.02, **kw):
+        """Start-up ramp, steady phase and slow-down (the DEM papers' protocol)."""
+        return cls(omega=omega, t_ramp_up=t_ramp_up, t_steady=t_steady, t_ramp_down=t_ramp_down,
+                   t_end=kw.pop("t_end", t_ramp_up + t_steady + t_ramp_down), initial="rest"
+                   if kw.pop("initial", "rest") == "rest" else "analytic", **kw)
+
+    @classmethod
+    def quasi_static(cls, Fr=3000.0, **kw):
+        """Quasi-static protocol of the DEM papers' Appendix A: omega = 1 rad/s."""
+        kw.setdefault("t_end", 0.01)
+        return cls(Fr=Fr, omega=1.0, **kw)
