@@ -5,6 +5,9 @@ Sub-commands (``--json`` for scripts, tables otherwise):
 * ``info BEARING [--omega W]``: geometry, Hertz constants, kinematics.
 * ``static BEARING --Fr N [--Fa N] [--Pd M] [--omega W] [--film hd|mk]
   [--plot FILE.png]``: quasi-static load distribution and lubrication map.
+* ``simulate --bearing B --Fr N --omega W --engine reference --t-end T
+  [--out DIR] [--json]``: dynamic simulation; summary keys of
+  :meth:`exudyn_bearing.results.Results.summary`.
 
 BEARING is a catalogue name (6208, 7208, 6004, ACBB-120) or a JSON file with
 the geometry (format of ``exudyn_bearing/data/catalog.json``). Bad input
@@ -22,6 +25,7 @@ import numpy as np
 
 from .data import InputError, catalog, load_bearing
 from .physics.hertz import METHODS
+from .reference.engine import SimulationError
 
 __all__ = ["main", "to_jsonable"]
 
@@ -83,7 +87,58 @@ def _parser() -> argparse.ArgumentParser:
     ps.add_argument("--phase", type=_finite_float, default=0.0, help="azimuth of ball 0 [rad]")
     ps.add_argument("--plot", metavar="FILE.png", help="save Q(psi) and Lambda(psi) plot (+ CSV beside)")
     ps.add_argument("--json", action="store_true", help="print JSON")
+    pr = sub.add_parser("simulate", help="dynamic simulation (numba DEM reference engine)")
+    pr.add_argument("--bearing", default="6208", help=bearing_help)
+    pr.add_argument("--engine", default="reference", choices=("reference",))
+    pr.add_argument("--Fr", type=_finite_float, default=3000.0, help="radial load [N]")
+    pr.add_argument("--Fa", type=_finite_float, default=0.0, help="axial load [N]")
+    pr.add_argument("--Pd", type=_finite_float, help="diametral clearance [m]")
+    pr.add_argument("--omega", type=_finite_float, default=500.0, help="inner-ring speed [rad/s]")
+    pr.add_argument("--t-end", type=_finite_float, default=0.02, help="simulated time [s]")
+    pr.add_argument("--ramp", type=_finite_float, nargs=3, metavar=("UP", "STEADY", "DOWN"),
+                    help="speed protocol [s]: ramp-up, steady and slow-down durations (start from rest)")
+    pr.add_argument("--dt", type=_finite_float, default=1e-6, help="time step [s]")
+    pr.add_argument("--sample-dt", type=_finite_float, default=1e-4, help="output interval [s]")
+    pr.add_argument("--integrator", choices=("verlet", "rk4"), default="verlet")
+    pr.add_argument("--friction", choices=("history", "regularized", "none"), default="history")
+    pr.add_argument("--tangential", choices=("explicit", "implicit"), default="explicit",
+                    help="update of the Cundall-Strack spring")
+    pr.add_argument("--hertz", choices=METHODS, default="exact")
+    pr.add_argument("--film", choices=("hd", "mk"), default="hd")
+    pr.add_argument("--cage", action=argparse.BooleanOptionalAction, default=True, help="torus cage on/off")
+    pr.add_argument("--lubrication", action=argparse.BooleanOptionalAction, default=True,
+                    help="Lambda-switched damping and friction on/off")
+    pr.add_argument("--initial", choices=("analytic", "rest"), default="analytic")
+    pr.add_argument("--out", metavar="DIR", help="write run.npz, run.json and run.png into DIR")
+    pr.add_argument("--progress", action=argparse.BooleanOptionalAction, default=None)
+    pr.add_argument("--json", action="store_true", help="print the summary as JSON")
     return p
+
+
+def _cmd_simulate(args):
+    from .scenario import Scenario
+    from .simulate import simulate
+
+    kw = dict(Fr=args.Fr, Fa=args.Fa, omega=args.omega, t_end=args.t_end, Pd=args.Pd, dt=args.dt,
+              sample_dt=args.sample_dt, integrator=args.integrator, friction=args.friction,
+              tangential=args.tangential, hertz=args.hertz, film=args.film, cage=args.cage,
+              lubrication=args.lubrication, initial=args.initial)
+    if args.ramp:
+        kw.update(t_ramp_up=args.ramp[0], t_steady=args.ramp[1], t_ramp_down=args.ramp[2])
+        if args.initial == "analytic" and args.ramp[0] > 0:
+            kw["initial"] = "rest"
+    run = simulate(args.bearing, Scenario(**kw), engine=args.engine, progress=args.progress)
+    summary = run.summary()
+    if args.out:
+        npz, js = run.save(args.out)
+        png = run.plot(Path(args.out) / "run.png")
+        summary.update(npz=str(npz), json=str(js), plot=str(png))
+    if args.json:
+        print(json.dumps(to_jsonable(summary), indent=2))
+        return
+    rows = [(k, v) for k, v in summary.items() if not isinstance(v, (dict, list))]
+    rows += [(f"regime_fraction.{k}", v) for k, v in summary["regime_fraction"].items()]
+    _print_table(rows)
 
 
 def _print_table(rows):
@@ -165,9 +220,14 @@ def main(argv=None) -> int:
             _cmd_info(args)
         elif args.command == "static":
             _cmd_static(args)
+        elif args.command == "simulate":
+            _cmd_simulate(args)
     except (InputError, ValueError) as exc:
         print(f"exudyn-bearing: error: {exc}", file=sys.stderr)
         return 2
+    except SimulationError as exc:
+        print(f"exudyn-bearing: error: {exc}", file=sys.stderr)
+        return 3
     except OSError as exc:
         print(f"exudyn-bearing: error: {exc}", file=sys.stderr)
         return 2

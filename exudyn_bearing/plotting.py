@@ -87,3 +87,64 @@ def plot_static(res: dict, png) -> tuple[Path, Path]:
     plt.close(fig)
     csv = save_csv(png.with_suffix(".csv"), cols)
     return png, csv
+
+
+def plot_run(run, png) -> Path:
+    """Overview of a simulation: speeds, largest ball loads, Lambda and h_min
+    against azimuth (coloured by time). Writes the PNG and a CSV of the time
+    series beside it; returns the PNG path."""
+    plt = _pyplot()
+    png = Path(png)
+    png.parent.mkdir(parents=True, exist_ok=True)
+    t = run.t
+    s = run.scenario
+    b = run.bearing
+    omega = run.global_series("omega")
+    cage = run.cage_speed_series()
+    spin = run.ball_spin_series().mean(axis=1)
+    q_in = run.contact("load", "inner").max(axis=1)
+    q_out = run.contact("load", "outer").max(axis=1)
+    fig, ax = plt.subplots(2, 2, figsize=(12, 8))
+    a = ax[0, 0]
+    a.plot(t, omega, label="inner ring omega")
+    a.plot(t, spin, label="ball |omega| (mean)")
+    a.plot(t, cage, label="cage speed")
+    if s.omega > 0:
+        from .physics import kinematics
+
+        a.axhline(float(kinematics.ball_spin_absolute(s.omega, 0.0, b.ball_radius, b.pitch_radius,
+                                                      b.free_contact_angle)),
+                  color="k", ls=":", lw=0.8, label="kinematic ball spin")
+    a.set_xlabel("t [s]")
+    a.set_ylabel("angular speed [rad/s]")
+    a.legend(fontsize=8)
+    a.grid(alpha=0.3)
+    a = ax[0, 1]
+    a.plot(t, q_in, label="max inner load")
+    a.plot(t, q_out, label="max outer load")
+    a.set_xlabel("t [s]")
+    a.set_ylabel("ball load [N]")
+    a.legend(fontsize=8)
+    a.grid(alpha=0.3)
+    psi = np.degrees(run.azimuth())
+    tt = np.broadcast_to(t[:, None], psi.shape)
+    for a, name, label in ((ax[1, 0], "lambda", "film parameter Lambda (outer)"),
+                           (ax[1, 1], "h_min", "h_min outer [um]")):
+        y = run.contact(name, "outer") * (1e6 if name == "h_min" else 1.0)
+        sc = a.scatter(psi.ravel(), y.ravel(), c=tt.ravel(), s=4, cmap="viridis")
+        a.set_xlabel("azimuth psi [deg]")
+        a.set_ylabel(label)
+        a.set_xlim(-180, 180)
+        a.grid(alpha=0.3)
+    if name == "h_min":
+        fig.colorbar(sc, ax=ax[1, :], label="t [s]")
+    ax[1, 0].axhline(1.0, color="k", lw=0.7, ls="--")
+    ax[1, 0].axhline(3.0, color="k", lw=0.7, ls="--")
+    fig.suptitle(f"{b.name}: Fr = {s.Fr:g} N, Fa = {s.Fa:g} N, omega = {s.omega:g} rad/s, "
+                 f"{run.engine} engine, {s.integrator}, dt = {s.dt:g} s")
+    fig.savefig(png, dpi=110)
+    plt.close(fig)
+    save_csv(png.with_suffix(".csv"), {"t_s": t, "omega_rad_s": omega, "cage_speed_rad_s": cage,
+                                       "ball_spin_mean_rad_s": spin, "q_max_inner_N": q_in,
+                                       "q_max_outer_N": q_out})
+    return png

@@ -56,6 +56,13 @@ class Scenario:
         Slip speed [m/s] below which regularised friction is linear.
     tangential_stiffness_ratio : float
         K_t / K_n of the Cundall-Strack spring, in [2/3, 1].
+    tangential : {"explicit", "implicit"}
+        Update of the Cundall-Strack spring: explicit (the DEM papers; its
+        stiffness limits the step) or implicit, where the spring acts with
+        K_t / (1 + K_t dt^2 / m_t), m_t = m_b / 3.5 the tangential mass of a
+        solid sphere at its surface: the backward-Euler response of the
+        contact to its own force over one step. Stable at any step and equal
+        to the explicit spring as dt -> 0; lifts the tangential step limit.
     hertz : {"exact", "hamrock_brewe", "simplified"}
         Hertz fidelity level (exact is tabulated in the kernels).
     film : {"hd", "mk"}
@@ -89,6 +96,7 @@ class Scenario:
     friction: str = "history"
     regularizing_speed: float = 0.1
     tangential_stiffness_ratio: float = 2.0 / 3.0
+    tangential: str = "explicit"
     hertz: str = "exact"
     film: str = "hd"
     guide_clearance: float = 50e-6
@@ -122,6 +130,8 @@ class Scenario:
                              f"got {self.tangential_stiffness_ratio}")
         if self.friction not in FRICTION_MODELS:
             raise InputError(f"friction: unknown model {self.friction!r} (valid: {', '.join(FRICTION_MODELS)})")
+        if self.tangential not in ("explicit", "implicit"):
+            raise InputError(f"tangential: must be 'explicit' or 'implicit', got {self.tangential!r}")
         if self.integrator not in INTEGRATORS:
             raise InputError(f"integrator: unknown {self.integrator!r} (valid: {', '.join(INTEGRATORS)})")
         if self.integrator == "rk4" and self.friction == "history":

@@ -76,3 +76,23 @@ def test_module_entry_point_runs():
     out = subprocess.run([sys.executable, "-m", "exudyn_bearing", "info", "6004", "--json"],
                          capture_output=True, text=True, check=True).stdout
     assert json.loads(out)["n_balls"] == 9
+
+
+def test_simulate_reference_json_and_files(tmp_path, capsys):
+    d = run_json(capsys, "simulate", "--bearing", "6208", "--Fr", "3000", "--omega", "500",
+                 "--engine", "reference", "--t-end", "0.004", "--dt", "4e-6", "--tangential", "implicit",
+                 "--json", "--out", str(tmp_path))
+    for key in ("q_max_inner", "q_max_outer", "cage_speed", "ball_spin", "lambda_outer_psi0",
+                "lambda_inner_psi0", "regime_fraction", "steps", "dt", "wall_s"):
+        assert key in d
+    assert d["steps"] == 1000 and d["dt"] == 4e-6
+    assert d["cage_speed"] == pytest.approx(198.0, rel=5e-3)
+    assert set(d["regime_fraction"]) == {"boundary", "mixed", "full_film"}
+    for name in ("run.npz", "run.json", "run.png", "run.csv"):
+        assert (tmp_path / name).stat().st_size > 0
+
+
+def test_simulate_unstable_step_is_a_clean_error(capsys):
+    rc = main(["simulate", "--t-end", "0.005", "--dt", "5e-5"])
+    assert rc != 0
+    assert "dt" in capsys.readouterr().err

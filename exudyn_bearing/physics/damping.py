@@ -73,8 +73,8 @@ def damping_fluid(eta, a, r_ball, h_min):
     Infinite for h_min = 0 (no film: the regime switch then uses C_hyst).
     Parameters: eta [Pa s], a semi-major axis [m], R_b [m], h_min [m].
     """
-    h = np.maximum(h_min, 1e-300)
-    return 3.0 * math.pi * eta * a / math.sqrt(2.0) * (r_ball / h) ** 1.5
+    x = r_ball / np.maximum(h_min, 1e-300)
+    return 3.0 * math.pi * eta * a / math.sqrt(2.0) * x * np.sqrt(x)
 
 
 _damping_hysteretic = kernel(damping_hysteretic)

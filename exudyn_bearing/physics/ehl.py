@@ -91,10 +91,11 @@ def film_thickness_hamrock_dowson(u_r, load, r_x, kappa, e_prime, eta, xi):
     >>> round(float(h) * 1e6, 2)
     0.8
     """
-    uu = eta * np.abs(u_r) / (e_prime * r_x)
-    ww = np.maximum(load, 1e-300) / (e_prime * r_x * r_x)
-    on = load > 0.0  # no load, no film; u_r = 0 gives 0 through U^0.68
-    return on * (3.63 * uu ** 0.68 * (xi * e_prime) ** 0.49 * ww ** -0.073
+    # evaluated as exp(sum of logs): the same formula with fewer transcendental calls
+    ln_u = np.log(np.maximum(eta * np.abs(u_r) / (e_prime * r_x), 1e-300))
+    ln_w = np.log(np.maximum(load, 1e-300) / (e_prime * r_x * r_x))
+    on = (load > 0.0) * (u_r != 0.0)  # no load or no rolling: no film
+    return on * (3.63 * np.exp(0.68 * ln_u + 0.49 * np.log(xi * e_prime) - 0.073 * ln_w)
                  * (1.0 - np.exp(-0.68 * kappa)) * r_x)
 
 
@@ -111,11 +112,14 @@ def film_thickness_masjedi_khonsari(u_r, load, r_x, kappa, e_prime, eta, xi):
 
     Parameters as :func:`film_thickness_hamrock_dowson`.
     """
-    uu = eta * np.abs(u_r) / (e_prime * r_x)
-    ww = np.maximum(load, 1e-300) / (e_prime * r_x * r_x)
-    on = load > 0.0
-    return on * (1.637 * uu ** (0.711 * kappa ** -0.023) * (xi * e_prime) ** (0.65 * kappa ** -0.045)
-                 * ww ** (-0.09 * kappa ** 0.15) * (1.0 - 0.974 * np.exp(-0.676 * kappa)) * r_x)
+    ln_u = np.log(np.maximum(eta * np.abs(u_r) / (e_prime * r_x), 1e-300))
+    ln_w = np.log(np.maximum(load, 1e-300) / (e_prime * r_x * r_x))
+    ln_k = np.log(kappa)
+    on = (load > 0.0) * (u_r != 0.0)
+    return on * (1.637 * np.exp(0.711 * np.exp(-0.023 * ln_k) * ln_u
+                                + 0.65 * np.exp(-0.045 * ln_k) * np.log(xi * e_prime)
+                                - 0.09 * np.exp(0.15 * ln_k) * ln_w)
+                 * (1.0 - 0.974 * np.exp(-0.676 * kappa)) * r_x)
 
 
 _film_hd = kernel(film_thickness_hamrock_dowson)

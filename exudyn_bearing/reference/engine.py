@@ -42,6 +42,13 @@ def ring_mass_estimate(bearing: BallBearing) -> float:
     return bearing.material.density * math.pi * (ri ** 2 - (ri - 0.65 * rb) ** 2) * 2.9 * rb
 
 
+#: Factor between the linearised single-ball limit and the reported stable
+#: step: the two races, the ring and load peaks couple the modes (the 6208 at
+#: 500 rad/s with the implicit tangential spring blows up at 0.93 of the
+#: linearised normal limit; validation/bench_reference.py measures it).
+STABILITY_SAFETY = 0.85
+
+
 @dataclass
 class StableStep:
     """Stable-step estimate of a scene [s] and what sets it."""
@@ -57,14 +64,15 @@ class StableStep:
 def stable_step(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant | None = None) -> StableStep:
     """Largest stable time step of the explicit integrator for a scene [s].
 
-    Linearised at the largest expected ball load (quasi-static Q_max plus the
+    ``STABILITY_SAFETY`` times the smallest of the limits below, linearised at
+    the largest expected ball load (quasi-static Q_max plus the
     centrifugal force m r_p omega_c^2 at the top speed); the limits are
     2/omega (Verlet) or 2.83/omega (RK4) for
     the normal Hertz springs of both races (omega^2 = (k_i + k_o)/m_b), the
     Cundall-Strack tangential springs (effective mass m_b/3.5 of a solid
     sphere at its surface), the regularised-friction damping
-    (dt < 2 m_eff / c, c = mu Q / v_reg) and the ball / cage-ball contact
-    (at a tenth of the ball load).
+    (dt < 2 m_eff / c resp. 2.83 m_eff / c, c = 2 mu Q / v_reg) and the ball / cage-ball contact
+    (at a tenth of the ball load). The implicit tangential spring sets no limit.
     """
     b = bearing if scenario.Pd is None else bearing.with_clearance(scenario.Pd)
     lub = default_lubricant() if lubricant is None else lubricant
@@ -82,10 +90,10 @@ def stable_step(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant |
     dt_t = math.inf
     dt_f = math.inf
     mu = lub.mu_boundary if scenario.lubrication else scenario.mu_dry
-    if scenario.friction == "history":
+    if scenario.friction == "history" and scenario.tangential == "explicit":
         dt_t = factor / math.sqrt(scenario.tangential_stiffness_ratio * (kt_i + kt_o) * 3.5 / mb)
     elif scenario.friction == "regularized" and mu > 0:
-        dt_f = 2.0 * (mb / 3.5) / (2.0 * mu * q / scenario.regularizing_speed)
+        dt_f = factor * (mb / 3.5) / (2.0 * mu * q / scenario.regularizing_speed)
     dt_c = math.inf
     if scenario.cage and b.has_cage:
         mz = b.cage_ball_mass
@@ -95,7 +103,7 @@ def stable_step(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant |
         dt_c = factor / math.sqrt(2.0 * kc * (mb + mz) / (mb * mz))
     parts = {"normal": dt_n, "tangential": dt_t, "friction": dt_f, "cage": dt_c}
     name = min(parts, key=parts.get)
-    return StableStep(parts[name], dt_n, dt_t, dt_f, dt_c, name)
+    return StableStep(STABILITY_SAFETY * parts[name], dt_n, dt_t, dt_f, dt_c, name)
 
 
 class ReferenceEngine:
@@ -177,6 +185,7 @@ class ReferenceEngine:
         p[K.P_DT] = s.dt
         p[K.P_AXIAL_FREE] = 1.0
         p[K.P_MAX_OVERLAP] = 0.05
+        p[K.P_KT_IMPLICIT] = 1.0 if s.tangential == "implicit" else 0.0
         return p
 
     def initial_state(self):

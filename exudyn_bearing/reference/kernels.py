@@ -34,7 +34,7 @@ from ..physics.hertz import _curvature_sum_radius, _kfe_fast, _semi_axes, _stiff
  P_EPRIME, P_MB, P_IB, P_MZ, P_MR, P_ALPHA_E, P_ETA, P_XI, P_SIGMA, P_L1, P_L3, P_MU_B, P_MU_F,
  P_HERTZ, P_FILM, P_LUB, P_MU_DRY, P_FRIC, P_VREG, P_KT_RATIO, P_CAGE, P_FR, P_FA,
  P_W_MAX, P_T_UP, P_T_STEADY, P_T_DOWN, P_K_BZ, P_K_BB, P_K_GUIDE, P_DT, P_AXIAL_FREE,
- P_MAX_OVERLAP, N_PARAMS) = range(45)
+ P_MAX_OVERLAP, P_KT_IMPLICIT, N_PARAMS) = range(46)
 
 FRIC_HISTORY, FRIC_REGULARIZED, FRIC_NONE = 0, 1, 2
 
@@ -214,6 +214,8 @@ def _race_contact(j, race, p, table, xb, vb, wb, ring, w_ring, hist, hz, fb, tb,
         hy += sy * dt
         hz += sz * dt
         k_t = p[P_KT_RATIO] * k_n
+        if p[P_KT_IMPLICIT] > 0.5:
+            k_t = k_t / (1.0 + k_t * dt * dt * 3.5 / p[P_MB])
         ftx = -k_t * hx
         fty = -k_t * hy
         ftz = -k_t * hz
