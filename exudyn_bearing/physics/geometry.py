@@ -31,11 +31,11 @@ __all__ = ["raceway_radii", "groove_contact", "GROOVE_CONTACT_FIELDS"]
 
 
 def _radii_from_cos(r_ball, r_groove, r_contact, cos_alpha, inner):
-    r2x = r_contact / cos_alpha
+    # R_b R_2x / (R_2x +- R_b) with R_2x = r_c / cos(alpha), one division
     if inner:
-        rx = r_ball * r2x / (r2x + r_ball)
+        rx = r_ball * r_contact / (r_contact + r_ball * cos_alpha)
     else:
-        rx = r_ball * r2x / (r2x - r_ball)
+        rx = r_ball * r_contact / (r_contact - r_ball * cos_alpha)
     ry = r_ball * r_groove / (r_groove - r_ball) + 0.0 * rx
     return rx, ry
 
@@ -88,8 +88,9 @@ def _groove_geometry(cx, cy, cz, rho, z_g, r_groove, r_ball, inner):
     """
     r = math.sqrt(cx * cx + cy * cy)
     if r > 0.0:
-        ex = cx / r
-        ey = cy / r
+        inv = 1.0 / r
+        ex = cx * inv
+        ey = cy * inv
     else:
         ex = 1.0
         ey = 0.0
@@ -97,8 +98,9 @@ def _groove_geometry(cx, cy, cz, rho, z_g, r_groove, r_ball, inner):
     dz = cz - z_g
     dist = math.sqrt(dr * dr + dz * dz)
     if dist > 0.0:
-        nr = dr / dist
-        nz = dz / dist
+        inv = 1.0 / dist
+        nr = dr * inv
+        nz = dz * inv
     else:
         nr = -1.0 if inner else 1.0
         nz = 0.0

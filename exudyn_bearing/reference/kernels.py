@@ -26,7 +26,7 @@ from .._jit import kernel
 from ..physics.damping import _damping_critical, _damping_fluid, damping_coefficient, lubrication_regime
 from ..physics.ehl import _film_thickness
 from ..physics.friction import friction_coefficient
-from ..physics.geometry import _groove_contact, _groove_geometry, _raceway_radii_cos
+from ..physics.geometry import _groove_geometry, _raceway_radii_cos
 from ..physics.hertz import _curvature_sum_radius, _kfe_fast, _semi_axes, _stiffness
 
 # -- parameter vector layout ----------------------------------------------
@@ -282,11 +282,13 @@ def _sphere_pair(xa, va, ia, xb_, vb_, ib, r_sum, kst, m_eff, fa, fb_):
     dx = xa[ia, 0] - xb_[ib, 0]
     dy = xa[ia, 1] - xb_[ib, 1]
     dz = xa[ia, 2] - xb_[ib, 2]
-    dist = math.sqrt(dx * dx + dy * dy + dz * dz)
-    delta = r_sum - dist
-    if delta <= 0.0 or dist == 0.0:
+    d2 = dx * dx + dy * dy + dz * dz
+    if d2 >= r_sum * r_sum or d2 == 0.0:
         return 0.0
-    nx, ny, nz = dx / dist, dy / dist, dz / dist
+    dist = math.sqrt(d2)
+    delta = r_sum - dist
+    inv = 1.0 / dist
+    nx, ny, nz = dx * inv, dy * inv, dz * inv
     sq = math.sqrt(delta)
     q = kst * delta * sq
     c = _damping_critical(m_eff, 1.5 * kst * sq)
@@ -309,8 +311,13 @@ def _guide_contact(k, p, xc, vc, fc):
     radius R_z + clearance): frictionless Hertz with R_eq = R_z and critical
     damping."""
     rz = p[P_RZ]
-    delta, nx, ny, nz, _a, _rc, _rx, _ry = _groove_contact(xc[k, 0], xc[k, 1], xc[k, 2], p[P_RP], 0.0,
-                                                           p[P_RGUIDE], rz, False)
+    # quick exit inside the guide: distance to the pitch circle below the free play
+    free = p[P_RGUIDE] - rz
+    dr = math.sqrt(xc[k, 0] * xc[k, 0] + xc[k, 1] * xc[k, 1]) - p[P_RP]
+    if dr * dr + xc[k, 2] * xc[k, 2] <= free * free:
+        return
+    delta, nx, ny, nz, _ca, _sa, _rc = _groove_geometry(xc[k, 0], xc[k, 1], xc[k, 2], p[P_RP], 0.0,
+                                                        p[P_RGUIDE], rz, False)
     if delta <= 0.0:
         return
     sq = math.sqrt(delta)
