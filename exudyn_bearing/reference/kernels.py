@@ -69,313 +69,303 @@ def _cross(a0, a1, a2, b0, b1, b2):
     return a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0
 
 
-@kernel(inline="always")
-def _race_contact(j, race, p, table, xb, vb, wb, ring, w_ring, hist, hz, fb, tb, acc, diag, want):
-    """Ball j against the inner (race 0, on the moving ring) or outer (race 1,
-    fixed at the origin) groove. Adds to fb, tb and the ring accumulator acc
-    (fx, fy, fz, torque_z, friction power, max overlap ratio)."""
-    inner = race == 0
-    if inner:
-        ox, oy, oz = ring[0], ring[1], ring[2]
-        uvx, uvy, uvz = ring[3], ring[4], ring[5]
-        rho, zg, rc = p[P_RHO_I], p[P_ZG_I], p[P_RCI]
-        wr = w_ring
-    else:
-        ox = oy = oz = 0.0
-        uvx = uvy = uvz = 0.0
-        rho, zg, rc = p[P_RHO_O], p[P_ZG_O], p[P_RCO]
-        wr = 0.0
-    rb = p[P_RB]
-    cx = xb[j, 0] - ox
-    cy = xb[j, 1] - oy
-    cz = xb[j, 2] - oz
-    delta, nx, ny, nz, ca, sa, r_contact = _groove_geometry(cx, cy, cz, rho, zg, rc, rb, inner)
-    if delta <= 0.0:
-        hist[j, race, 0] = 0.0
-        hist[j, race, 1] = 0.0
-        hist[j, race, 2] = 0.0
-        if want:
-            for k in range(diag.shape[2]):
-                diag[j, race, k] = 0.0
-            diag[j, race, 1] = delta
-            diag[j, race, 2] = math.atan2(sa, ca)
-            diag[j, race, 7] = np.nan
-            diag[j, race, 8] = np.nan
-            diag[j, race, 9] = -1.0
-            diag[j, race, 10] = np.nan
-        return
-    ratio = delta / rb
-    if ratio > acc[5]:
-        acc[5] = ratio
-    # Hertz (PHYSICS.md sec. 3) at the current contact angle; k, F, E are
-    # re-evaluated when R_y/R_x moved by more than 1e-6 (relative) since the
-    # last evaluation for this contact, K from them and the current radii
-    rx, ry = _raceway_radii_cos(rb, rc, r_contact, ca, inner)
-    e_prime = p[P_EPRIME]
-    aspect = ry / rx
-    if abs(aspect - hz[j, race, 0]) > 1e-6 * aspect:
-        kappa, ell_f, ell_e = _kfe_fast(rx, ry, int(p[P_HERTZ]), table)
-        hz[j, race, 0] = aspect
-        hz[j, race, 1] = kappa
-        hz[j, race, 2] = ell_f
-        hz[j, race, 3] = ell_e
-    else:
-        kappa = hz[j, race, 1]
-        ell_f = hz[j, race, 2]
-        ell_e = hz[j, race, 3]
-    rr = _curvature_sum_radius(rx, ry)
-    kst = _stiffness(kappa, ell_f, ell_e, rr, e_prime)
-    sq = math.sqrt(delta)
-    q_el = kst * delta * sq
-    k_n = 1.5 * kst * sq
-    need_axes = want or p[P_LUB] > 0.5
-    if need_axes:
-        major, minor = _semi_axes(kappa, ell_e, rr, e_prime, q_el)
-    else:
-        major = minor = 0.0
-    # contact point: middle of the overlap, lever from the ball centre
-    lev = rb - 0.5 * delta
-    # (n points from the groove centre to the ball centre; the groove surface
-    # p + R_c n lies beyond the ball centre along n, for both races)
-    lx, ly, lz = lev * nx, lev * ny, lev * nz
-    # surface velocities at the contact point
-    bx, by, bz = _cross(wb[j, 0], wb[j, 1], wb[j, 2], lx, ly, lz)
-    vbs_x = vb[j, 0] + bx
-    vbs_y = vb[j, 1] + by
-    vbs_z = vb[j, 2] + bz
-    px = cx + lx
-    py = cy + ly
-    vrs_x = uvx - wr * py
-    vrs_y = uvy + wr * px
-    vrs_z = uvz
-    # normal approach rate d(delta)/dt = (v_ball - v_ring) . n
-    ddot = (vb[j, 0] - uvx) * nx + (vb[j, 1] - uvy) * ny + (vb[j, 2] - uvz) * nz
-    # slip (tangential relative velocity) and rolling speed
-    sx = vbs_x - vrs_x
-    sy = vbs_y - vrs_y
-    sz = vbs_z - vrs_z
-    sn = sx * nx + sy * ny + sz * nz
-    sx -= sn * nx
-    sy -= sn * ny
-    sz -= sn * nz
-    slip = math.sqrt(sx * sx + sy * sy + sz * sz)
-    # rolling speed: mean surface velocity relative to the contact point,
-    # which is carried by the ball's orbital motion about the bearing axis
-    r2 = xb[j, 0] * xb[j, 0] + xb[j, 1] * xb[j, 1]
-    w_orb = (xb[j, 0] * vb[j, 1] - xb[j, 1] * vb[j, 0]) / r2 if r2 > 0.0 else 0.0
-    mx = 0.5 * (vbs_x + vrs_x) - (vb[j, 0] - w_orb * ly)
-    my = 0.5 * (vbs_y + vrs_y) - (vb[j, 1] + w_orb * lx)
-    mz = 0.5 * (vbs_z + vrs_z) - vb[j, 2]
-    mn = mx * nx + my * ny + mz * nz
-    mx -= mn * nx
-    my -= mn * ny
-    mz -= mn * nz
-    u_r = math.sqrt(mx * mx + my * my + mz * mz)
-    # lubrication (PHYSICS.md sec. 4-5)
-    c_hyst = 1.5 * p[P_ALPHA_E] * q_el
-    if p[P_LUB] > 0.5:
-        h = _film_thickness(int(p[P_FILM]), u_r, q_el, rx, kappa, e_prime, p[P_ETA], p[P_XI])
-        lam = h / p[P_SIGMA]
-        regime = lubrication_regime(lam, p[P_L1], p[P_L3])
-        if regime == 0:
-            c_n = c_hyst
-        else:
-            c_fl = _damping_fluid(p[P_ETA], major, rb, h)
-            c_n = damping_coefficient(lam, c_hyst, c_fl, p[P_L1], p[P_L3])
-        mu = friction_coefficient(lam, p[P_MU_B], p[P_MU_F], p[P_L1], p[P_L3])
-    else:
-        h = 0.0
-        lam = 0.0
-        regime = 0
-        c_n = c_hyst
-        mu = p[P_MU_DRY]
-    f_n = q_el + c_n * ddot
-    if f_n < 0.0:
-        f_n = 0.0
-    # tangential force (PHYSICS.md sec. 6)
-    ftx = fty = ftz = 0.0
-    fric = int(p[P_FRIC])
-    if fric == FRIC_HISTORY:
-        hx, hy, hz = hist[j, race, 0], hist[j, race, 1], hist[j, race, 2]
-        hmag = math.sqrt(hx * hx + hy * hy + hz * hz)
-        if hmag > 0.0:
-            hn = hx * nx + hy * ny + hz * nz
-            hx -= hn * nx
-            hy -= hn * ny
-            hz -= hn * nz
-            hm2 = math.sqrt(hx * hx + hy * hy + hz * hz)
-            if hm2 > 0.0:
-                s = hmag / hm2
-                hx *= s
-                hy *= s
-                hz *= s
-        dt = p[P_DT]
-        hx += sx * dt
-        hy += sy * dt
-        hz += sz * dt
-        k_t = p[P_KT_RATIO] * k_n
-        if p[P_KT_IMPLICIT] > 0.5:
-            k_t = k_t / (1.0 + k_t * dt * dt * 3.5 / p[P_MB])
-        ftx = -k_t * hx
-        fty = -k_t * hy
-        ftz = -k_t * hz
-        fmag = math.sqrt(ftx * ftx + fty * fty + ftz * ftz)
-        cap = mu * f_n
-        if fmag > cap:
-            s = cap / fmag
-            ftx *= s
-            fty *= s
-            ftz *= s
-            hx = -ftx / k_t
-            hy = -fty / k_t
-            hz = -ftz / k_t
-        hist[j, race, 0] = hx
-        hist[j, race, 1] = hy
-        hist[j, race, 2] = hz
-    elif fric == FRIC_REGULARIZED and slip > 0.0:
-        fmag = mu * f_n * min(slip / p[P_VREG], 1.0)
-        ftx = -fmag * sx / slip
-        fty = -fmag * sy / slip
-        ftz = -fmag * sz / slip
-    # forces on the ball: normal pushes it back towards the groove centre
-    fb[j, 0] += -f_n * nx + ftx
-    fb[j, 1] += -f_n * ny + fty
-    fb[j, 2] += -f_n * nz + ftz
-    mx_, my_, mz_ = _cross(lx, ly, lz, ftx, fty, ftz)
-    tb[j, 0] += mx_
-    tb[j, 1] += my_
-    tb[j, 2] += mz_
-    power = -(ftx * sx + fty * sy + ftz * sz)
-    acc[4] += power
-    if inner:
-        acc[0] += f_n * nx - ftx
-        acc[1] += f_n * ny - fty
-        acc[2] += f_n * nz - ftz
-        # torque of the ball on the ring about its axis (at the contact point)
-        acc[3] += px * (-fty) - py * (-ftx)
-    if want:
-        ft = math.sqrt(ftx * ftx + fty * fty + ftz * ftz)
-        if ry >= rx:
-            a_ax, b_ax = major, minor
-        else:
-            a_ax, b_ax = minor, major
-        diag[j, race, 0] = f_n
-        diag[j, race, 1] = delta
-        diag[j, race, 2] = math.atan2(sa, ca)
-        diag[j, race, 3] = a_ax
-        diag[j, race, 4] = b_ax
-        diag[j, race, 5] = 1.5 * q_el / (math.pi * a_ax * b_ax) if a_ax * b_ax > 0.0 else 0.0
-        diag[j, race, 6] = u_r
-        diag[j, race, 7] = h
-        diag[j, race, 8] = lam if p[P_LUB] > 0.5 else np.nan
-        diag[j, race, 9] = regime
-        diag[j, race, 10] = mu
-        diag[j, race, 11] = slip
-        diag[j, race, 12] = slip / u_r if u_r > 0.0 else 0.0
-        diag[j, race, 13] = ft
-
-
-@kernel(inline="always")
-def _sphere_pair(xa, va, ia, xb_, vb_, ib, r_sum, kst, m_eff, fa, fb_):
-    """Frictionless Hertz sphere contact with critical damping (PHYSICS.md
-    sec. 4); returns the normal force."""
-    dx = xa[ia, 0] - xb_[ib, 0]
-    dy = xa[ia, 1] - xb_[ib, 1]
-    dz = xa[ia, 2] - xb_[ib, 2]
-    d2 = dx * dx + dy * dy + dz * dz
-    if d2 >= r_sum * r_sum or d2 == 0.0:
-        return 0.0
-    dist = math.sqrt(d2)
-    delta = r_sum - dist
-    inv = 1.0 / dist
-    nx, ny, nz = dx * inv, dy * inv, dz * inv
-    sq = math.sqrt(delta)
-    q = kst * delta * sq
-    c = _damping_critical(m_eff, 1.5 * kst * sq)
-    ddot = -((va[ia, 0] - vb_[ib, 0]) * nx + (va[ia, 1] - vb_[ib, 1]) * ny + (va[ia, 2] - vb_[ib, 2]) * nz)
-    f = q + c * ddot
-    if f < 0.0:
-        f = 0.0
-    fa[ia, 0] += f * nx
-    fa[ia, 1] += f * ny
-    fa[ia, 2] += f * nz
-    fb_[ib, 0] -= f * nx
-    fb_[ib, 1] -= f * ny
-    fb_[ib, 2] -= f * nz
-    return f
-
-
-@kernel(inline="always")
-def _guide_contact(k, p, xc, vc, fc):
-    """Cage ball k in its guide torus (tube-centre circle r_p, z = 0, tube
-    radius R_z + clearance): frictionless Hertz with R_eq = R_z and critical
-    damping."""
-    rz = p[P_RZ]
-    # quick exit inside the guide: distance to the pitch circle below the free play
-    free = p[P_RGUIDE] - rz
-    dr = math.sqrt(xc[k, 0] * xc[k, 0] + xc[k, 1] * xc[k, 1]) - p[P_RP]
-    if dr * dr + xc[k, 2] * xc[k, 2] <= free * free:
-        return
-    delta, nx, ny, nz, _ca, _sa, _rc = _groove_geometry(xc[k, 0], xc[k, 1], xc[k, 2], p[P_RP], 0.0,
-                                                        p[P_RGUIDE], rz, False)
-    if delta <= 0.0:
-        return
-    sq = math.sqrt(delta)
-    kst = p[P_K_GUIDE]
-    c = _damping_critical(p[P_MZ], 1.5 * kst * sq)
-    ddot = vc[k, 0] * nx + vc[k, 1] * ny + vc[k, 2] * nz
-    f = kst * delta * sq + c * ddot
-    if f < 0.0:
-        f = 0.0
-    fc[k, 0] -= f * nx
-    fc[k, 1] -= f * ny
-    fc[k, 2] -= f * nz
-
-
 @kernel
 def forces(t, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring, glob, diag, cage_load, want):
-    """All contact forces at time t. Writes fb, tb (balls), fc (cage balls),
-    fring (3: force on the inner ring incl. the applied load); with ``want``
-    also glob (NGLOBAL), diag (Z, 2, NDIAG) and cage_load (Z, 2)."""
+    """All contact forces at time t (one call for the whole bearing).
+
+    Writes fb, tb (balls), fc (cage balls), fring (3: force on the inner ring
+    incl. the applied load); with ``want`` also glob (NGLOBAL), diag
+    (Z, 2, NDIAG) and cage_load (Z, 2). Returns the largest overlap / R_b.
+
+    The contact laws are written out in the loops, not in helper functions:
+    a numba call that passes arrays costs about 20-30 ns (reference counting),
+    more than a whole frictionless contact check.
+    """
     z = xb.shape[0]
     fb[:, :] = 0.0
     tb[:, :] = 0.0
     fc[:, :] = 0.0
+    # ring accumulator: force of the balls on the inner ring (x, y, z), torque
+    # about its axis, frictional power, largest overlap ratio
     acc = np.zeros(6)
     w_ring = omega_profile(t, p[P_W_MAX], p[P_T_UP], p[P_T_STEADY], p[P_T_DOWN])
+    # -- ball / raceway contacts: race 0 inner groove on the moving ring, race 1
+    # outer groove fixed at the origin (PHYSICS.md sec. 2-6)
     for j in range(z):
-        _race_contact(j, 0, p, table, xb, vb, wb, ring, w_ring, hist, hz, fb, tb, acc, diag, want)
-        _race_contact(j, 1, p, table, xb, vb, wb, ring, w_ring, hist, hz, fb, tb, acc, diag, want)
-    if p[P_CAGE] > 0.5:
+        for race in range(2):
+            inner = race == 0
+            if inner:
+                ox, oy, oz = ring[0], ring[1], ring[2]
+                uvx, uvy, uvz = ring[3], ring[4], ring[5]
+                rho, zg, rc = p[P_RHO_I], p[P_ZG_I], p[P_RCI]
+                wr = w_ring
+            else:
+                ox = oy = oz = 0.0
+                uvx = uvy = uvz = 0.0
+                rho, zg, rc = p[P_RHO_O], p[P_ZG_O], p[P_RCO]
+                wr = 0.0
+            rb = p[P_RB]
+            cx = xb[j, 0] - ox
+            cy = xb[j, 1] - oy
+            cz = xb[j, 2] - oz
+            delta, nx, ny, nz, ca, sa, r_contact = _groove_geometry(cx, cy, cz, rho, zg, rc, rb, inner)
+            if delta <= 0.0:
+                hist[j, race, 0] = 0.0
+                hist[j, race, 1] = 0.0
+                hist[j, race, 2] = 0.0
+                if want:
+                    for k in range(diag.shape[2]):
+                        diag[j, race, k] = 0.0
+                    diag[j, race, 1] = delta
+                    diag[j, race, 2] = math.atan2(sa, ca)
+                    diag[j, race, 7] = np.nan
+                    diag[j, race, 8] = np.nan
+                    diag[j, race, 9] = -1.0
+                    diag[j, race, 10] = np.nan
+                continue
+            ratio = delta / rb
+            if ratio > acc[5]:
+                acc[5] = ratio
+            # Hertz (PHYSICS.md sec. 3) at the current contact angle; k, F, E are
+            # re-evaluated when R_y/R_x moved by more than 1e-6 (relative) since the
+            # last evaluation for this contact, K from them and the current radii
+            rx, ry = _raceway_radii_cos(rb, rc, r_contact, ca, inner)
+            e_prime = p[P_EPRIME]
+            aspect = ry / rx
+            if abs(aspect - hz[j, race, 0]) > 1e-6 * aspect:
+                kappa, ell_f, ell_e = _kfe_fast(rx, ry, int(p[P_HERTZ]), table)
+                hz[j, race, 0] = aspect
+                hz[j, race, 1] = kappa
+                hz[j, race, 2] = ell_f
+                hz[j, race, 3] = ell_e
+            else:
+                kappa = hz[j, race, 1]
+                ell_f = hz[j, race, 2]
+                ell_e = hz[j, race, 3]
+            rr = _curvature_sum_radius(rx, ry)
+            kst = _stiffness(kappa, ell_f, ell_e, rr, e_prime)
+            sq = math.sqrt(delta)
+            q_el = kst * delta * sq
+            k_n = 1.5 * kst * sq
+            need_axes = want or p[P_LUB] > 0.5
+            if need_axes:
+                major, minor = _semi_axes(kappa, ell_e, rr, e_prime, q_el)
+            else:
+                major = minor = 0.0
+            # contact point: middle of the overlap, lever from the ball centre
+            lev = rb - 0.5 * delta
+            # (n points from the groove centre to the ball centre; the groove surface
+            # p + R_c n lies beyond the ball centre along n, for both races)
+            lx, ly, lz = lev * nx, lev * ny, lev * nz
+            # surface velocities at the contact point
+            bx, by, bz = _cross(wb[j, 0], wb[j, 1], wb[j, 2], lx, ly, lz)
+            vbs_x = vb[j, 0] + bx
+            vbs_y = vb[j, 1] + by
+            vbs_z = vb[j, 2] + bz
+            px = cx + lx
+            py = cy + ly
+            vrs_x = uvx - wr * py
+            vrs_y = uvy + wr * px
+            vrs_z = uvz
+            # normal approach rate d(delta)/dt = (v_ball - v_ring) . n
+            ddot = (vb[j, 0] - uvx) * nx + (vb[j, 1] - uvy) * ny + (vb[j, 2] - uvz) * nz
+            # slip (tangential relative velocity) and rolling speed
+            sx = vbs_x - vrs_x
+            sy = vbs_y - vrs_y
+            sz = vbs_z - vrs_z
+            sn = sx * nx + sy * ny + sz * nz
+            sx -= sn * nx
+            sy -= sn * ny
+            sz -= sn * nz
+            slip = math.sqrt(sx * sx + sy * sy + sz * sz)
+            # rolling speed: mean surface velocity relative to the contact point,
+            # which is carried by the ball's orbital motion about the bearing axis
+            r2 = xb[j, 0] * xb[j, 0] + xb[j, 1] * xb[j, 1]
+            w_orb = (xb[j, 0] * vb[j, 1] - xb[j, 1] * vb[j, 0]) / r2 if r2 > 0.0 else 0.0
+            mx = 0.5 * (vbs_x + vrs_x) - (vb[j, 0] - w_orb * ly)
+            my = 0.5 * (vbs_y + vrs_y) - (vb[j, 1] + w_orb * lx)
+            mz = 0.5 * (vbs_z + vrs_z) - vb[j, 2]
+            mn = mx * nx + my * ny + mz * nz
+            mx -= mn * nx
+            my -= mn * ny
+            mz -= mn * nz
+            u_r = math.sqrt(mx * mx + my * my + mz * mz)
+            # lubrication (PHYSICS.md sec. 4-5)
+            c_hyst = 1.5 * p[P_ALPHA_E] * q_el
+            if p[P_LUB] > 0.5:
+                h = _film_thickness(int(p[P_FILM]), u_r, q_el, rx, kappa, e_prime, p[P_ETA], p[P_XI])
+                lam = h / p[P_SIGMA]
+                regime = lubrication_regime(lam, p[P_L1], p[P_L3])
+                if regime == 0:
+                    c_n = c_hyst
+                else:
+                    c_fl = _damping_fluid(p[P_ETA], major, rb, h)
+                    c_n = damping_coefficient(lam, c_hyst, c_fl, p[P_L1], p[P_L3])
+                mu = friction_coefficient(lam, p[P_MU_B], p[P_MU_F], p[P_L1], p[P_L3])
+            else:
+                h = 0.0
+                lam = 0.0
+                regime = 0
+                c_n = c_hyst
+                mu = p[P_MU_DRY]
+            f_n = q_el + c_n * ddot
+            if f_n < 0.0:
+                f_n = 0.0
+            # tangential force (PHYSICS.md sec. 6)
+            ftx = fty = ftz = 0.0
+            fric = int(p[P_FRIC])
+            if fric == FRIC_HISTORY:
+                hx, hy, hzt = hist[j, race, 0], hist[j, race, 1], hist[j, race, 2]
+                hmag = math.sqrt(hx * hx + hy * hy + hzt * hzt)
+                if hmag > 0.0:
+                    hn = hx * nx + hy * ny + hzt * nz
+                    hx -= hn * nx
+                    hy -= hn * ny
+                    hzt -= hn * nz
+                    hm2 = math.sqrt(hx * hx + hy * hy + hzt * hzt)
+                    if hm2 > 0.0:
+                        s = hmag / hm2
+                        hx *= s
+                        hy *= s
+                        hzt *= s
+                dt = p[P_DT]
+                hx += sx * dt
+                hy += sy * dt
+                hzt += sz * dt
+                k_t = p[P_KT_RATIO] * k_n
+                if p[P_KT_IMPLICIT] > 0.5:
+                    k_t = k_t / (1.0 + k_t * dt * dt * 3.5 / p[P_MB])
+                ftx = -k_t * hx
+                fty = -k_t * hy
+                ftz = -k_t * hzt
+                fmag = math.sqrt(ftx * ftx + fty * fty + ftz * ftz)
+                cap = mu * f_n
+                if fmag > cap:
+                    s = cap / fmag
+                    ftx *= s
+                    fty *= s
+                    ftz *= s
+                    hx = -ftx / k_t
+                    hy = -fty / k_t
+                    hzt = -ftz / k_t
+                hist[j, race, 0] = hx
+                hist[j, race, 1] = hy
+                hist[j, race, 2] = hzt
+            elif fric == FRIC_REGULARIZED and slip > 0.0:
+                fmag = mu * f_n * min(slip / p[P_VREG], 1.0)
+                ftx = -fmag * sx / slip
+                fty = -fmag * sy / slip
+                ftz = -fmag * sz / slip
+            # forces on the ball: normal pushes it back towards the groove centre
+            fb[j, 0] += -f_n * nx + ftx
+            fb[j, 1] += -f_n * ny + fty
+            fb[j, 2] += -f_n * nz + ftz
+            mx_, my_, mz_ = _cross(lx, ly, lz, ftx, fty, ftz)
+            tb[j, 0] += mx_
+            tb[j, 1] += my_
+            tb[j, 2] += mz_
+            power = -(ftx * sx + fty * sy + ftz * sz)
+            acc[4] += power
+            if inner:
+                acc[0] += f_n * nx - ftx
+                acc[1] += f_n * ny - fty
+                acc[2] += f_n * nz - ftz
+                # torque of the ball on the ring about its axis (at the contact point)
+                acc[3] += px * (-fty) - py * (-ftx)
+            if want:
+                ft = math.sqrt(ftx * ftx + fty * fty + ftz * ftz)
+                if ry >= rx:
+                    a_ax, b_ax = major, minor
+                else:
+                    a_ax, b_ax = minor, major
+                diag[j, race, 0] = f_n
+                diag[j, race, 1] = delta
+                diag[j, race, 2] = math.atan2(sa, ca)
+                diag[j, race, 3] = a_ax
+                diag[j, race, 4] = b_ax
+                diag[j, race, 5] = 1.5 * q_el / (math.pi * a_ax * b_ax) if a_ax * b_ax > 0.0 else 0.0
+                diag[j, race, 6] = u_r
+                diag[j, race, 7] = h
+                diag[j, race, 8] = lam if p[P_LUB] > 0.5 else np.nan
+                diag[j, race, 9] = regime
+                diag[j, race, 10] = mu
+                diag[j, race, 11] = slip
+                diag[j, race, 12] = slip / u_r if u_r > 0.0 else 0.0
+                diag[j, race, 13] = ft
+    # -- ball / cage-ball (or, without cage, ball / ball) contacts: frictionless
+    # Hertz spheres with critical damping (PHYSICS.md sec. 4)
+    cage = p[P_CAGE] > 0.5
+    if cage:
+        px_, pv_, pf_ = xc, vc, fc
         r_sum = p[P_RB] + p[P_RZ]
-        m_eff = p[P_MB] * p[P_MZ] / (p[P_MB] + p[P_MZ])
-        for k in range(z):
-            j2 = k + 1 if k + 1 < z else 0
-            f1 = _sphere_pair(xb, vb, k, xc, vc, k, r_sum, p[P_K_BZ], m_eff, fb, fc)
-            f2 = _sphere_pair(xb, vb, j2, xc, vc, k, r_sum, p[P_K_BZ], m_eff, fb, fc)
-            _guide_contact(k, p, xc, vc, fc)
-            if want:
-                cage_load[k, 0] = f1
-                cage_load[k, 1] = f2
+        k_pair = p[P_K_BZ]
+        m_pair = p[P_MB] * p[P_MZ] / (p[P_MB] + p[P_MZ])
+        n_pair = 2
     else:
-        for k in range(z):
-            j2 = k + 1 if k + 1 < z else 0
-            f1 = _sphere_pair(xb, vb, k, xb, vb, j2, 2.0 * p[P_RB], p[P_K_BB], 0.5 * p[P_MB], fb, fb)
+        px_, pv_, pf_ = xb, vb, fb
+        r_sum = 2.0 * p[P_RB]
+        k_pair = p[P_K_BB]
+        m_pair = 0.5 * p[P_MB]
+        n_pair = 1
+    r_sum2 = r_sum * r_sum
+    for k in range(z):
+        k2 = k + 1 if k + 1 < z else 0
+        for m in range(n_pair):
+            ia = k if m == 0 else k2          # ball
+            ib = k if cage else k2            # cage ball k, or the next ball
+            dx = xb[ia, 0] - px_[ib, 0]
+            dy = xb[ia, 1] - px_[ib, 1]
+            dz = xb[ia, 2] - px_[ib, 2]
+            d2 = dx * dx + dy * dy + dz * dz
+            f = 0.0
+            if d2 < r_sum2 and d2 > 0.0:
+                dist = math.sqrt(d2)
+                delta = r_sum - dist
+                inv = 1.0 / dist
+                nx, ny, nz = dx * inv, dy * inv, dz * inv
+                sq = math.sqrt(delta)
+                c = _damping_critical(m_pair, 1.5 * k_pair * sq)
+                ddot = -((vb[ia, 0] - pv_[ib, 0]) * nx + (vb[ia, 1] - pv_[ib, 1]) * ny
+                         + (vb[ia, 2] - pv_[ib, 2]) * nz)
+                f = k_pair * delta * sq + c * ddot
+                if f < 0.0:
+                    f = 0.0
+                fb[ia, 0] += f * nx
+                fb[ia, 1] += f * ny
+                fb[ia, 2] += f * nz
+                pf_[ib, 0] -= f * nx
+                pf_[ib, 1] -= f * ny
+                pf_[ib, 2] -= f * nz
             if want:
-                cage_load[k, 0] = f1
-                cage_load[k, 1] = 0.0
+                cage_load[k, m] = f
+        if want and not cage:
+            cage_load[k, 1] = 0.0
+        if cage:
+            # cage ball k in its guide torus (tube-centre circle r_p, z = 0, tube
+            # radius R_z + clearance): frictionless Hertz, R_eq = R_z, critical damping
+            rz = p[P_RZ]
+            free = p[P_RGUIDE] - rz
+            dr = math.sqrt(xc[k, 0] * xc[k, 0] + xc[k, 1] * xc[k, 1]) - p[P_RP]
+            if dr * dr + xc[k, 2] * xc[k, 2] > free * free:
+                delta, nx, ny, nz, _ca, _sa, _rc = _groove_geometry(xc[k, 0], xc[k, 1], xc[k, 2], p[P_RP],
+                                                                    0.0, p[P_RGUIDE], rz, False)
+                if delta > 0.0:
+                    sq = math.sqrt(delta)
+                    kst = p[P_K_GUIDE]
+                    c = _damping_critical(p[P_MZ], 1.5 * kst * sq)
+                    f = kst * delta * sq + c * (vc[k, 0] * nx + vc[k, 1] * ny + vc[k, 2] * nz)
+                    if f > 0.0:
+                        fc[k, 0] -= f * nx
+                        fc[k, 1] -= f * ny
+                        fc[k, 2] -= f * nz
     # force on the inner ring: applied load plus the forces of the balls on it
     fring[0] = p[P_FR] + acc[0]
     fring[1] = acc[1]
     fring[2] = (p[P_FA] + acc[2]) if p[P_AXIAL_FREE] > 0.5 else 0.0
     if want:
         glob[0] = w_ring
-        glob[1] = acc[0]
-        glob[2] = acc[1]
-        glob[3] = acc[2]
-        glob[4] = acc[3]
-        glob[5] = acc[4]
-        glob[6] = acc[5]
+        for i in range(6):
+            glob[1 + i] = acc[i]
     return acc[5]
 
 
