@@ -6,7 +6,8 @@ from pathlib import Path
 
 import numpy as np
 
-__all__ = ["plot_static", "save_csv"]
+__all__ = ["plot_static", "plot_run", "plot_speeds", "plot_srr", "plot_film_by_phase",
+           "plot_quasi_static", "save_csv"]
 
 
 def _pyplot():
@@ -147,4 +148,143 @@ def plot_run(run, png) -> Path:
     save_csv(png.with_suffix(".csv"), {"t_s": t, "omega_rad_s": omega, "cage_speed_rad_s": cage,
                                        "ball_spin_mean_rad_s": spin, "q_max_inner_N": q_in,
                                        "q_max_outer_N": q_out})
+    return png
+
+
+def _phases(run):
+    """Protocol phase of every sample: 0 start-up, 1 steady, 2 slow-down, 3 rest."""
+    s = run.scenario
+    t = run.t
+    t1 = s.t_ramp_up
+    t2 = t1 + s.t_steady
+    t3 = t2 + s.t_ramp_down
+    return np.where(t < t1, 0, np.where(t < t2, 1, np.where(t < t3, 2, 3)))
+
+
+PHASE_NAMES = ("start-up", "steady", "slow-down", "rest")
+
+
+def plot_speeds(run, png, ball=0) -> Path:
+    """Shaft and ball angular speed against time with the kinematic ball-spin
+    line (PHYSICS.md sec. 8, 952.38 rad/s at 500 rad/s), and the cage speed."""
+    from .physics import kinematics
+
+    plt = _pyplot()
+    png = Path(png)
+    png.parent.mkdir(parents=True, exist_ok=True)
+    b, s = run.bearing, run.scenario
+    t = run.t
+    spin = run.ball_spin_series()
+    omega = run.global_series("omega")
+    cage = run.cage_speed_series()
+    w_kin = float(kinematics.ball_spin_absolute(s.omega, 0.0, b.ball_radius, b.pitch_radius, b.free_contact_angle))
+    fig, ax = plt.subplots(figsize=(7, 4.2))
+    ax.plot(t, omega, label="shaft (inner ring)")
+    ax.plot(t, spin[:, ball], label=f"ball {ball} |omega|")
+    ax.plot(t, spin.mean(axis=1), lw=0.8, label="ball |omega|, mean of all balls")
+    ax.plot(t, cage, label="cage")
+    ax.axhline(w_kin, color="k", ls=":", lw=0.8, label=f"kinematic ball spin {w_kin:.2f} rad/s")
+    ax.set_xlabel("t [s]")
+    ax.set_ylabel("angular speed [rad/s]")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    ax.set_title(f"{b.name}: Fr = {s.Fr:g} N, {run.engine} engine")
+    fig.tight_layout()
+    fig.savefig(png, dpi=120)
+    plt.close(fig)
+    save_csv(png.with_suffix(".csv"), {"t_s": t, "omega_rad_s": omega, f"ball{ball}_spin_rad_s": spin[:, ball],
+                                       "ball_spin_mean_rad_s": spin.mean(axis=1), "cage_rad_s": cage})
+    return png
+
+
+def plot_srr(run, png, ball=0) -> Path:
+    """Slide-to-roll ratio of one ball at its inner and outer contact against time."""
+    plt = _pyplot()
+    png = Path(png)
+    png.parent.mkdir(parents=True, exist_ok=True)
+    t = run.t
+    cols = {"t_s": t}
+    fig, ax = plt.subplots(figsize=(7, 4.2))
+    for race in ("inner", "outer"):
+        srr = run.contact("srr", race)[:, ball].copy()
+        srr[run.contact("load", race)[:, ball] <= 0.0] = np.nan
+        ax.semilogy(t, srr, ".", ms=2, label=f"{race} contact")
+        cols[f"srr_{race}"] = srr
+    ax.set_xlabel("t [s]")
+    ax.set_ylabel(f"slide-to-roll ratio of ball {ball} [-]")
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(png, dpi=120)
+    plt.close(fig)
+    save_csv(png.with_suffix(".csv"), cols)
+    return png
+
+
+def plot_film_by_phase(run, png, race="outer") -> Path:
+    """h_min and Lambda of one race against azimuth, coloured by protocol phase."""
+    plt = _pyplot()
+    png = Path(png)
+    png.parent.mkdir(parents=True, exist_ok=True)
+    phase = np.broadcast_to(_phases(run)[:, None], run.azimuth().shape)
+    psi = np.degrees(run.azimuth())
+    h = run.contact("h_min", race) * 1e6
+    lam = run.contact("lambda", race)
+    fig, ax = plt.subplots(1, 2, figsize=(11, 4.2))
+    for code, name in enumerate(PHASE_NAMES[:3]):
+        sel = phase == code
+        if sel.any():
+            ax[0].plot(psi[sel], h[sel], ".", ms=2, label=name)
+            ax[1].plot(psi[sel], lam[sel], ".", ms=2, label=name)
+    for y in (1.0, 3.0):
+        ax[1].axhline(y, color="k", lw=0.7, ls="--")
+    ax[0].set_ylabel(f"h_min {race} [um]")
+    ax[1].set_ylabel(f"Lambda {race} [-]")
+    for a in ax:
+        a.set_xlabel("azimuth psi [deg]")
+        a.set_xlim(-180, 180)
+        a.grid(alpha=0.3)
+        a.legend(fontsize=8, markerscale=4)
+    fig.tight_layout()
+    fig.savefig(png, dpi=120)
+    plt.close(fig)
+    save_csv(png.with_suffix(".csv"), {"psi_deg": psi.ravel(), "phase": phase.ravel(),
+                                       "h_min_um": h.ravel(), "lambda": lam.ravel()})
+    return png
+
+
+def plot_quasi_static(run, png) -> Path:
+    """Q(psi) and delta(psi) of the last sample against the discrete analytic solution."""
+    from .physics.load_distribution import static_equilibrium
+
+    plt = _pyplot()
+    png = Path(png)
+    png.parent.mkdir(parents=True, exist_ok=True)
+    psi = run.azimuth()[-1]
+    st = static_equilibrium(run.bearing, run.scenario.Fr, run.scenario.Fa, phase=float(psi[0]),
+                            hertz_method=run.scenario.hertz)
+    q_in = run.contact("load", "inner")[-1]
+    q_out = run.contact("load", "outer")[-1]
+    delta = run.contact("overlap", "inner")[-1] + run.contact("overlap", "outer")[-1]
+    order = np.argsort(psi)
+    fig, ax = plt.subplots(1, 2, figsize=(11, 4.2))
+    d = np.degrees(psi)
+    ax[0].plot(d[order], st.q[order], "k-", label="analytic (discrete)")
+    ax[0].plot(d[order], q_in[order], "o", mfc="none", label=f"{run.engine}: inner")
+    ax[0].plot(d[order], q_out[order], "x", label=f"{run.engine}: outer")
+    ax[1].plot(d[order], st.overlap[order] * 1e6, "k-", label="analytic")
+    ax[1].plot(d[order], delta[order] * 1e6, "o", mfc="none", label=run.engine)
+    ax[0].set_ylabel("ball load Q [N]")
+    ax[1].set_ylabel("total overlap delta [um]")
+    for a in ax:
+        a.set_xlabel("azimuth psi [deg]")
+        a.grid(alpha=0.3)
+        a.legend(fontsize=8)
+    fig.suptitle(f"{run.bearing.name}: Fr = {run.scenario.Fr:g} N, Pd = "
+                 f"{run.bearing.diametral_clearance * 1e6:.1f} um, omega = {run.scenario.omega:g} rad/s")
+    fig.tight_layout()
+    fig.savefig(png, dpi=120)
+    plt.close(fig)
+    save_csv(png.with_suffix(".csv"), {"psi_rad": psi, "q_analytic_N": st.q, "q_inner_N": q_in, "q_outer_N": q_out,
+                                       "delta_analytic_m": st.overlap, "delta_m": delta})
     return png

@@ -13,6 +13,7 @@ Arrays (n = samples, Z balls, race 0 inner / 1 outer):
 """
 from __future__ import annotations
 
+import dataclasses
 import json
 import math
 from pathlib import Path
@@ -77,9 +78,15 @@ class Results:
         """|omega| of every ball (n, Z) [rad/s]."""
         return np.linalg.norm(self.data["wb"], axis=-1)
 
-    def window(self, fraction: float = 0.25) -> slice:
-        """Slice of the last ``fraction`` of the samples."""
+    def window(self, fraction: float = 0.25, t_window=None) -> slice:
+        """Slice of the last ``fraction`` of the samples, or of the samples
+        with t in ``t_window = (t0, t1)`` when given."""
         n = len(self.t)
+        if t_window is not None:
+            idx = np.nonzero((self.t >= t_window[0]) & (self.t < t_window[1]))[0]
+            if idx.size == 0:
+                raise ValueError(f"t_window: no samples in {t_window}")
+            return slice(int(idx[0]), int(idx[-1]) + 1)
         return slice(max(0, n - max(1, int(round(fraction * n)))), n)
 
     def nearest_psi0(self) -> np.ndarray:
@@ -87,15 +94,16 @@ class Results:
         return np.argmin(np.abs(self.azimuth()), axis=1)
 
     # -- summary -------------------------------------------------------
-    def summary(self, fraction: float = 0.25) -> dict:
-        """Scalar results over the last quarter of the run (PHYSICS.md sec. 8 keys).
+    def summary(self, fraction: float = 0.25, t_window=None) -> dict:
+        """Scalar results over the last quarter of the run (PHYSICS.md sec. 8 keys),
+        or over ``t_window = (t0, t1)``.
 
         q_max_inner/outer: mean of the largest ball load [N]; cage_speed,
         ball_spin: mean [rad/s]; lambda_{outer,inner}_psi0: mean Lambda of the
         contact nearest psi = 0; regime_fraction: share of loaded contacts
         (both races) in boundary / mixed / full film; steps, dt, wall_s.
         """
-        w = self.window(fraction)
+        w = self.window(fraction, t_window)
         b = self.bearing
         load_i = self.contact("load", "inner")[w]
         load_o = self.contact("load", "outer")[w]
@@ -162,8 +170,29 @@ class Results:
         js = d / f"{stem}.json"
         np.savez_compressed(npz, diag_fields=np.array(DIAG_FIELDS), global_fields=np.array(GLOBAL_FIELDS),
                             **self.data)
-        js.write_text(json.dumps(to_jsonable(self.summary()), indent=2))
+        summary = self.summary()
+        summary["meta"] = {"bearing": self.bearing.to_dict(),
+                           "scenario": dataclasses.asdict(self.scenario),
+                           "lubricant": dataclasses.asdict(self.lubricant)}
+        js.write_text(json.dumps(to_jsonable(summary), indent=2))
         return npz, js
+
+    @classmethod
+    def load(cls, npz) -> "Results":
+        """A run saved by :meth:`save` (the NPZ, with its JSON beside it)."""
+        from .data import Lubricant, load_bearing
+        from .scenario import Scenario
+
+        npz = Path(npz)
+        meta = json.loads(npz.with_suffix(".json").read_text())
+        with np.load(npz) as f:
+            data = {k: f[k] for k in f.files if k not in ("diag_fields", "global_fields")}
+        bearing = load_bearing(meta["meta"]["bearing"])
+        scenario = Scenario(**{k: (math.inf if v is None and k == "t_steady" else v)
+                               for k, v in meta["meta"]["scenario"].items()})
+        lub = Lubricant(**meta["meta"]["lubricant"])
+        return cls(bearing, scenario, lub, data, steps=meta["steps"], wall_s=meta["wall_s"],
+                   engine=meta["engine"], stable_dt=meta.get("stable_dt"))
 
     def plot(self, png):
         """Overview figure (speeds, loads, Lambda) saved as PNG; returns the path."""

@@ -274,6 +274,7 @@ class ReferenceEngine:
         done = 0
         k_samp = 0
         wall0 = time.perf_counter()
+        last_print = wall0
         while done < n_steps:
             m = min(chunk, n_steps - done)
             sl = slice(k_samp, n_samples)
@@ -290,7 +291,8 @@ class ReferenceEngine:
                     f"dt: the state became {what} at t = {t_fail:.6g} s with dt = {s.dt:.3g} s; "
                     f"the stable-step estimate is {self.stable.dt:.3g} s (limited by the "
                     f"{self.stable.limited_by} contact): reduce dt")
-            if progress:
+            if progress and (time.perf_counter() - last_print > 0.5 or done >= n_steps):
+                last_print = time.perf_counter()
                 el = time.perf_counter() - wall0
                 frac = done / n_steps
                 eta = el / frac * (1 - frac) if frac > 0 else float("nan")
