@@ -93,6 +93,9 @@ def test_simulate_reference_json_and_files(tmp_path, capsys):
 
 
 def test_simulate_unstable_step_is_a_clean_error(capsys):
-    rc = main(["simulate", "--t-end", "0.005", "--dt", "5e-5"])
+    from exudyn_bearing.reference import StepSizeWarning
+
+    with pytest.warns(StepSizeWarning):
+        rc = main(["simulate", "--t-end", "0.005", "--dt", "5e-5"])
     assert rc != 0
     assert "dt" in capsys.readouterr().err
