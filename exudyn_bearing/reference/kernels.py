@@ -370,6 +370,22 @@ def forces(t, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring, g
 
 
 @kernel
+def _store(k, t, glob, diag, cage_load, xb, vb, wb, xc, vc, ring,
+           s_t, s_glob, s_diag, s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring):
+    """Copy the state and diagnostics into row k of the sample buffers."""
+    s_t[k] = t
+    s_glob[k] = glob
+    s_diag[k] = diag
+    s_cage[k] = cage_load
+    s_xb[k] = xb
+    s_vb[k] = vb
+    s_wb[k] = wb
+    s_xc[k] = xc
+    s_vc[k] = vc
+    s_ring[k] = ring
+
+
+@kernel
 def run_verlet(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring,
                sample_every, step0, s_t, s_glob, s_diag, s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring):
     """Velocity-Verlet (the DEM papers' scheme) for ``n_steps`` steps from t0.
@@ -415,16 +431,8 @@ def run_verlet(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb
         for d in range(3):
             ring[3 + d] += h * fring[d] * inv_mr
         if want:
-            s_t[n_samp] = t
-            s_glob[n_samp] = glob
-            s_diag[n_samp] = diag
-            s_cage[n_samp] = cage_load
-            s_xb[n_samp] = xb
-            s_vb[n_samp] = vb
-            s_wb[n_samp] = wb
-            s_xc[n_samp] = xc
-            s_vc[n_samp] = vc
-            s_ring[n_samp] = ring
+            _store(n_samp, t, glob, diag, cage_load, xb, vb, wb, xc, vc, ring,
+                   s_t, s_glob, s_diag, s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring)
             n_samp += 1
             if not (np.all(np.isfinite(xb)) and np.all(np.isfinite(vb)) and np.all(np.isfinite(ring))):
                 return step + 1, n_samp, 1
@@ -528,16 +536,8 @@ def run_rk4(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, f
         if want:
             forces(t + dt, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring, glob, diag,
                    cage_load, True)
-            s_t[n_samp] = t + dt
-            s_glob[n_samp] = glob
-            s_diag[n_samp] = diag
-            s_cage[n_samp] = cage_load
-            s_xb[n_samp] = xb
-            s_vb[n_samp] = vb
-            s_wb[n_samp] = wb
-            s_xc[n_samp] = xc
-            s_vc[n_samp] = vc
-            s_ring[n_samp] = ring
+            _store(n_samp, t + dt, glob, diag, cage_load, xb, vb, wb, xc, vc, ring,
+                   s_t, s_glob, s_diag, s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring)
             n_samp += 1
         if not (np.all(np.isfinite(xb)) and np.all(np.isfinite(vb)) and np.all(np.isfinite(ring))):
             return step + 1, n_samp, 1
