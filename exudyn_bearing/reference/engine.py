@@ -265,8 +265,9 @@ class ReferenceEngine:
             "vc": np.zeros((n_samples, z, 3)), "ring": np.zeros((n_samples, 6)),
         }
         # forces at t = 0 (Verlet needs them on entry)
-        K.forces(0.0, p, self.table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring,
-                 np.zeros(K.NGLOBAL), np.zeros((z, 2, K.NDIAG)), np.zeros((z, 2)), False)
+        K._evaluate(0.0, p, self.table, xb, vb, wb, xc, vc, ring, K.ring_poses(), hist, hz, fb, tb, fc,
+                    np.zeros((2, 6)), fring, np.zeros(K.NGLOBAL), np.zeros((z, 2, K.NDIAG)), np.zeros((z, 2)),
+                    False)
         integrate = K.run_verlet if s.integrator == "verlet" else K.run_rk4
         if progress is None:
             progress = n_steps > 2_000_000

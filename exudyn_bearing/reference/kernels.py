@@ -70,12 +70,15 @@ def _cross(a0, a1, a2, b0, b1, b2):
 
 
 @kernel
-def forces(t, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring, glob, diag, cage_load, want):
-    """All contact forces at time t (one call for the whole bearing).
+def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hz, fb, tb, fc, fr, glob, diag, cage_load, want):
+    """All contact forces (one call for the whole bearing).
 
-    Writes fb, tb (balls), fc (cage balls), fring (3: force on the inner ring
-    incl. the applied load); with ``want`` also glob (NGLOBAL), diag
-    (Z, 2, NDIAG) and cage_load (Z, 2). Returns the largest overlap / R_b.
+    ``rings`` (2, RING_N) holds the pose of the inner (0) and outer (1) ring:
+    centre, velocity, rotation matrix (row-major; the bearing axis is the
+    ring's local z) and angular velocity, all in the world frame. Writes fb,
+    tb (balls), fc (cage balls), fr (2, 6: force and torque about its centre
+    that the balls exert on each ring); with ``want`` also glob (NGLOBAL),
+    diag (Z, 2, NDIAG) and cage_load (Z, 2). Returns the largest overlap / R_b.
 
     The contact laws are written out in the loops, not in helper functions:
     a numba call that passes arrays costs about 20-30 ns (reference counting),
@@ -85,30 +88,33 @@ def forces(t, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring, g
     fb[:, :] = 0.0
     tb[:, :] = 0.0
     fc[:, :] = 0.0
-    # ring accumulator: force of the balls on the inner ring (x, y, z), torque
-    # about its axis, frictional power, largest overlap ratio
-    acc = np.zeros(6)
-    w_ring = omega_profile(t, p[P_W_MAX], p[P_T_UP], p[P_T_STEADY], p[P_T_DOWN])
-    # -- ball / raceway contacts: race 0 inner groove on the moving ring, race 1
-    # outer groove fixed at the origin (PHYSICS.md sec. 2-6)
+    fr[:, :] = 0.0
+    power_sum = 0.0
+    worst = 0.0
+    # -- ball / raceway contacts: race 0 the inner groove on ring 0, race 1 the
+    # outer groove on ring 1 (PHYSICS.md sec. 2-6)
     for j in range(z):
         for race in range(2):
             inner = race == 0
+            ox, oy, oz = rings[race, 0], rings[race, 1], rings[race, 2]
+            uvx, uvy, uvz = rings[race, 3], rings[race, 4], rings[race, 5]
+            a00, a01, a02 = rings[race, 6], rings[race, 7], rings[race, 8]
+            a10, a11, a12 = rings[race, 9], rings[race, 10], rings[race, 11]
+            a20, a21, a22 = rings[race, 12], rings[race, 13], rings[race, 14]
+            wrx, wry, wrz = rings[race, 15], rings[race, 16], rings[race, 17]
             if inner:
-                ox, oy, oz = ring[0], ring[1], ring[2]
-                uvx, uvy, uvz = ring[3], ring[4], ring[5]
                 rho, zg, rc = p[P_RHO_I], p[P_ZG_I], p[P_RCI]
-                wr = w_ring
             else:
-                ox = oy = oz = 0.0
-                uvx = uvy = uvz = 0.0
                 rho, zg, rc = p[P_RHO_O], p[P_ZG_O], p[P_RCO]
-                wr = 0.0
             rb = p[P_RB]
-            cx = xb[j, 0] - ox
-            cy = xb[j, 1] - oy
-            cz = xb[j, 2] - oz
-            delta, nx, ny, nz, ca, sa, r_contact = _groove_geometry(cx, cy, cz, rho, zg, rc, rb, inner)
+            # ball centre relative to the ring centre: world (d) and ring frame (c = A^T d)
+            dxw = xb[j, 0] - ox
+            dyw = xb[j, 1] - oy
+            dzw = xb[j, 2] - oz
+            cx = a00 * dxw + a10 * dyw + a20 * dzw
+            cy = a01 * dxw + a11 * dyw + a21 * dzw
+            cz = a02 * dxw + a12 * dyw + a22 * dzw
+            delta, nlx, nly, nlz, ca, sa, r_contact = _groove_geometry(cx, cy, cz, rho, zg, rc, rb, inner)
             if delta <= 0.0:
                 hist[j, race, 0] = 0.0
                 hist[j, race, 1] = 0.0
@@ -124,8 +130,12 @@ def forces(t, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring, g
                     diag[j, race, 10] = np.nan
                 continue
             ratio = delta / rb
-            if ratio > acc[5]:
-                acc[5] = ratio
+            if ratio > worst:
+                worst = ratio
+            # contact normal in the world frame, n = A n_local
+            nx = a00 * nlx + a01 * nly + a02 * nlz
+            ny = a10 * nlx + a11 * nly + a12 * nlz
+            nz = a20 * nlx + a21 * nly + a22 * nlz
             # Hertz (PHYSICS.md sec. 3) at the current contact angle; k, F, E are
             # re-evaluated when R_y/R_x moved by more than 1e-6 (relative) since the
             # last evaluation for this contact, K from them and the current radii
@@ -162,13 +172,20 @@ def forces(t, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring, g
             vbs_x = vb[j, 0] + bx
             vbs_y = vb[j, 1] + by
             vbs_z = vb[j, 2] + bz
-            px = cx + lx
-            py = cy + ly
-            vrs_x = uvx - wr * py
-            vrs_y = uvy + wr * px
-            vrs_z = uvz
-            # normal approach rate d(delta)/dt = (v_ball - v_ring) . n
-            ddot = (vb[j, 0] - uvx) * nx + (vb[j, 1] - uvy) * ny + (vb[j, 2] - uvz) * nz
+            # contact point relative to the ring centre, and the ring's surface velocity there
+            px = dxw + lx
+            py = dyw + ly
+            pz = dzw + lz
+            rwx, rwy, rwz = _cross(wrx, wry, wrz, px, py, pz)
+            vrs_x = uvx + rwx
+            vrs_y = uvy + rwy
+            vrs_z = uvz + rwz
+            # normal approach rate d(delta)/dt = n . (v_ball - v_ring - w_ring x d)
+            ex, ey, ez = _cross(wrx, wry, wrz, dxw, dyw, dzw)
+            vrx = vb[j, 0] - uvx
+            vry = vb[j, 1] - uvy
+            vrz = vb[j, 2] - uvz
+            ddot = (vrx - ex) * nx + (vry - ey) * ny + (vrz - ez) * nz
             # slip (tangential relative velocity) and rolling speed
             sx = vbs_x - vrs_x
             sy = vbs_y - vrs_y
@@ -179,12 +196,14 @@ def forces(t, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring, g
             sz -= sn * nz
             slip = math.sqrt(sx * sx + sy * sy + sz * sz)
             # rolling speed: mean surface velocity relative to the contact point,
-            # which is carried by the ball's orbital motion about the bearing axis
-            r2 = xb[j, 0] * xb[j, 0] + xb[j, 1] * xb[j, 1]
-            w_orb = (xb[j, 0] * vb[j, 1] - xb[j, 1] * vb[j, 0]) / r2 if r2 > 0.0 else 0.0
-            mx = 0.5 * (vbs_x + vrs_x) - (vb[j, 0] - w_orb * ly)
-            my = 0.5 * (vbs_y + vrs_y) - (vb[j, 1] + w_orb * lx)
-            mz = 0.5 * (vbs_z + vrs_z) - vb[j, 2]
+            # which is carried by the ball's orbital motion about the ring axis e
+            r2 = cx * cx + cy * cy
+            tx_, ty_, tz_ = _cross(dxw, dyw, dzw, vrx, vry, vrz)
+            w_orb = (a02 * tx_ + a12 * ty_ + a22 * tz_) / r2 if r2 > 0.0 else 0.0
+            ox_, oy_, oz_ = _cross(a02, a12, a22, lx, ly, lz)
+            mx = 0.5 * (vbs_x + vrs_x) - (vb[j, 0] + w_orb * ox_)
+            my = 0.5 * (vbs_y + vrs_y) - (vb[j, 1] + w_orb * oy_)
+            mz = 0.5 * (vbs_z + vrs_z) - (vb[j, 2] + w_orb * oz_)
             mn = mx * nx + my * ny + mz * nz
             mx -= mn * nx
             my -= mn * ny
@@ -264,14 +283,18 @@ def forces(t, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring, g
             tb[j, 0] += mx_
             tb[j, 1] += my_
             tb[j, 2] += mz_
-            power = -(ftx * sx + fty * sy + ftz * sz)
-            acc[4] += power
-            if inner:
-                acc[0] += f_n * nx - ftx
-                acc[1] += f_n * ny - fty
-                acc[2] += f_n * nz - ftz
-                # torque of the ball on the ring about its axis (at the contact point)
-                acc[3] += px * (-fty) - py * (-ftx)
+            power_sum -= ftx * sx + fty * sy + ftz * sz
+            # reaction on the ring, at the contact point
+            frx = f_n * nx - ftx
+            fry = f_n * ny - fty
+            frz = f_n * nz - ftz
+            fr[race, 0] += frx
+            fr[race, 1] += fry
+            fr[race, 2] += frz
+            mx_, my_, mz_ = _cross(px, py, pz, frx, fry, frz)
+            fr[race, 3] += mx_
+            fr[race, 4] += my_
+            fr[race, 5] += mz_
             if want:
                 ft = math.sqrt(ftx * ftx + fty * fty + ftz * ftz)
                 if ry >= rx:
@@ -358,15 +381,59 @@ def forces(t, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring, g
                         fc[k, 0] -= f * nx
                         fc[k, 1] -= f * ny
                         fc[k, 2] -= f * nz
-    # force on the inner ring: applied load plus the forces of the balls on it
-    fring[0] = p[P_FR] + acc[0]
-    fring[1] = acc[1]
-    fring[2] = (p[P_FA] + acc[2]) if p[P_AXIAL_FREE] > 0.5 else 0.0
     if want:
-        glob[0] = w_ring
-        for i in range(6):
-            glob[1 + i] = acc[i]
-    return acc[5]
+        # inner ring: spin about its axis, force of the balls, torque about its axis
+        ex, ey, ez = rings[0, 8], rings[0, 11], rings[0, 14]
+        glob[0] = ex * rings[0, 15] + ey * rings[0, 16] + ez * rings[0, 17]
+        glob[1] = fr[0, 0]
+        glob[2] = fr[0, 1]
+        glob[3] = fr[0, 2]
+        glob[4] = ex * fr[0, 3] + ey * fr[0, 4] + ez * fr[0, 5]
+        glob[5] = power_sum
+        glob[6] = worst
+    return worst
+
+
+#: Length of a ring pose row: centre (3), velocity (3), rotation matrix (9), angular velocity (3).
+RING_N = 18
+
+
+@kernel
+def ring_poses():
+    """Ring pose array (2, RING_N): both rings at the origin, at rest, unrotated."""
+    rings = np.zeros((2, RING_N))
+    for r in range(2):
+        rings[r, 6] = 1.0
+        rings[r, 10] = 1.0
+        rings[r, 14] = 1.0
+    return rings
+
+
+@kernel
+def _set_inner_ring(t, p, ring, rings):
+    """Reference engine: the inner ring translates (state ``ring``: position,
+    velocity) and spins at the protocol speed; the outer ring stays fixed."""
+    for d in range(6):
+        rings[0, d] = ring[d]
+    rings[0, 17] = omega_profile(t, p[P_W_MAX], p[P_T_UP], p[P_T_STEADY], p[P_T_DOWN])
+
+
+@kernel
+def _inner_ring_force(p, fr, fring):
+    """Force that accelerates the inner ring: applied load plus the ball reactions."""
+    fring[0] = p[P_FR] + fr[0, 0]
+    fring[1] = fr[0, 1]
+    fring[2] = (p[P_FA] + fr[0, 2]) if p[P_AXIAL_FREE] > 0.5 else 0.0
+
+
+@kernel
+def _evaluate(t, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc, fr, fring,
+              glob, diag, cage_load, want):
+    """Reference-engine force evaluation at time t (see :func:`_set_inner_ring`)."""
+    _set_inner_ring(t, p, ring, rings)
+    worst = forces(p, table, xb, vb, wb, xc, vc, rings, hist, hz, fb, tb, fc, fr, glob, diag, cage_load, want)
+    _inner_ring_force(p, fr, fring)
+    return worst
 
 
 @kernel
@@ -406,6 +473,8 @@ def run_verlet(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb
     glob = np.zeros(s_glob.shape[1])
     diag = np.zeros((z, 2, s_diag.shape[3]))
     cage_load = np.zeros((z, 2))
+    rings = ring_poses()
+    fr = np.zeros((2, 6))
     n_samp = 0
     t = t0
     for step in range(n_steps):
@@ -421,8 +490,10 @@ def run_verlet(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb
             ring[d] += dt * ring[3 + d]
         t = t0 + (step + 1) * dt
         want = (step0 + step + 1) % sample_every == 0 and n_samp < s_t.shape[0]
-        worst = forces(t, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring, glob, diag,
-                       cage_load, want)
+        # (written out rather than through _evaluate: each array-passing call costs)
+        _set_inner_ring(t, p, ring, rings)
+        worst = forces(p, table, xb, vb, wb, xc, vc, rings, hist, hz, fb, tb, fc, fr, glob, diag, cage_load, want)
+        _inner_ring_force(p, fr, fring)
         for j in range(z):
             for d in range(3):
                 vb[j, d] += h * fb[j, d] * inv_mb
@@ -444,11 +515,12 @@ def run_verlet(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb
 
 
 @kernel
-def _rk_stage(t, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring, glob, diag, cage_load,
+def _rk_stage(t, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc, fr, fring, glob, diag, cage_load,
               kx, kv, kw, kxc, kvc, kr, stage):
     """Derivatives of the state at (t, state) into stage ``stage`` of the k
     arrays; returns the largest overlap ratio."""
-    worst = forces(t, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring, glob, diag, cage_load, False)
+    worst = _evaluate(t, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc, fr, fring, glob, diag,
+                      cage_load, False)
     inv_mz = 1.0 / p[P_MZ] if p[P_CAGE] > 0.5 else 0.0
     for j in range(xb.shape[0]):
         for d in range(3):
@@ -488,6 +560,8 @@ def run_rk4(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, f
     glob = np.zeros(s_glob.shape[1])
     diag = np.zeros((z, 2, s_diag.shape[3]))
     cage_load = np.zeros((z, 2))
+    rings = ring_poses()
+    fr = np.zeros((2, 6))
     kx = np.zeros((4, z, 3))
     kv = np.zeros((4, z, 3))
     kw = np.zeros((4, z, 3))
@@ -509,18 +583,18 @@ def run_rk4(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, f
         y0xc[:, :] = xc
         y0vc[:, :] = vc
         y0r[:] = ring
-        worst = _rk_stage(t, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring, glob, diag,
+        worst = _rk_stage(t, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc, fr, fring, glob, diag,
                           cage_load, kx, kv, kw, kxc, kvc, kr, 0)
         if worst > p[P_MAX_OVERLAP] or not math.isfinite(worst):
             return step, n_samp, 2
         _rk_set(y0x, y0v, y0w, y0xc, y0vc, y0r, kx, kv, kw, kxc, kvc, kr, 0, 0.5 * dt, xb, vb, wb, xc, vc, ring)
-        _rk_stage(t + 0.5 * dt, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring, glob, diag,
+        _rk_stage(t + 0.5 * dt, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc, fr, fring, glob, diag,
                   cage_load, kx, kv, kw, kxc, kvc, kr, 1)
         _rk_set(y0x, y0v, y0w, y0xc, y0vc, y0r, kx, kv, kw, kxc, kvc, kr, 1, 0.5 * dt, xb, vb, wb, xc, vc, ring)
-        _rk_stage(t + 0.5 * dt, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring, glob, diag,
+        _rk_stage(t + 0.5 * dt, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc, fr, fring, glob, diag,
                   cage_load, kx, kv, kw, kxc, kvc, kr, 2)
         _rk_set(y0x, y0v, y0w, y0xc, y0vc, y0r, kx, kv, kw, kxc, kvc, kr, 2, dt, xb, vb, wb, xc, vc, ring)
-        _rk_stage(t + dt, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring, glob, diag,
+        _rk_stage(t + dt, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc, fr, fring, glob, diag,
                   cage_load, kx, kv, kw, kxc, kvc, kr, 3)
         c = dt / 6.0
         for j in range(z):
@@ -534,7 +608,7 @@ def run_rk4(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, f
             ring[d] = y0r[d] + c * (kr[0, d] + 2 * kr[1, d] + 2 * kr[2, d] + kr[3, d])
         want = (step0 + step + 1) % sample_every == 0 and n_samp < s_t.shape[0]
         if want:
-            forces(t + dt, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring, glob, diag,
+            _evaluate(t + dt, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc, fr, fring, glob, diag,
                    cage_load, True)
             _store(n_samp, t + dt, glob, diag, cage_load, xb, vb, wb, xc, vc, ring,
                    s_t, s_glob, s_diag, s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring)
