@@ -24,7 +24,8 @@ from ..physics.load_distribution import race_stiffness, static_equilibrium
 from ..scenario import FRICTION_MODELS, Scenario
 from . import kernels as K
 
-__all__ = ["ReferenceEngine", "SimulationError", "StepSizeWarning", "stable_step", "ring_mass_estimate"]
+__all__ = ["ReferenceEngine", "SimulationError", "StepSizeWarning", "stable_step", "ring_mass_estimate",
+           "scene_parameters"]
 
 
 class SimulationError(RuntimeError):
@@ -109,6 +110,63 @@ def stable_step(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant |
     return StableStep(STABILITY_SAFETY * parts[name], dt_n, dt_t, dt_f, dt_c, name)
 
 
+def scene_parameters(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant) -> np.ndarray:
+    """Kernel parameter vector (layout ``kernels.P_*``) of a bearing, a
+    scenario's model switches and loads, and a lubricant; shared by the
+    reference engine and the Exudyn element."""
+    b, s, lub = bearing, scenario, lubricant
+    p = np.zeros(K.N_PARAMS)
+    em = e_prime_of(b)
+    rho_i, z_i = b.inner_groove_center
+    rho_o, z_o = b.outer_groove_center
+    cage = bool(s.cage and b.has_cage)
+    rz = b.cage_ball_radius if cage else b.ball_radius
+    p[K.P_Z] = b.n_balls
+    p[K.P_RB] = b.ball_radius
+    p[K.P_RCI] = b.inner_groove_radius
+    p[K.P_RCO] = b.outer_groove_radius
+    p[K.P_RHO_I], p[K.P_ZG_I] = rho_i, z_i
+    p[K.P_RHO_O], p[K.P_ZG_O] = rho_o, z_o
+    p[K.P_RZ] = rz
+    p[K.P_RP] = b.pitch_radius
+    p[K.P_RGUIDE] = rz + s.guide_clearance
+    p[K.P_EPRIME] = em
+    p[K.P_MB] = b.ball_mass
+    p[K.P_IB] = 0.4 * b.ball_mass * b.ball_radius ** 2
+    p[K.P_MZ] = b.cage_ball_mass if cage else 1.0
+    p[K.P_MR] = s.ring_mass if s.ring_mass is not None else ring_mass_estimate(b)
+    p[K.P_ALPHA_E] = b.material.hysteretic_damping
+    p[K.P_ETA] = lub.viscosity
+    p[K.P_XI] = lub.pressure_viscosity
+    p[K.P_SIGMA] = lub.composite_roughness
+    p[K.P_L1] = lub.lambda_mixed
+    p[K.P_L3] = lub.lambda_full_film
+    p[K.P_MU_B] = lub.mu_boundary
+    p[K.P_MU_F] = lub.mu_full_film
+    p[K.P_HERTZ] = hertz.method_code(s.hertz)
+    p[K.P_FILM] = film_model_code(s.film)
+    p[K.P_LUB] = 1.0 if s.lubrication else 0.0
+    p[K.P_MU_DRY] = s.mu_dry
+    p[K.P_FRIC] = FRICTION_MODELS.index(s.friction)
+    p[K.P_VREG] = s.regularizing_speed
+    p[K.P_KT_RATIO] = s.tangential_stiffness_ratio
+    p[K.P_CAGE] = 1.0 if cage else 0.0
+    p[K.P_FR] = s.Fr
+    p[K.P_FA] = s.Fa
+    p[K.P_W_MAX] = s.omega
+    p[K.P_T_UP] = s.t_ramp_up
+    p[K.P_T_STEADY] = s.t_steady if math.isfinite(s.t_steady) else 1e300
+    p[K.P_T_DOWN] = s.t_ramp_down
+    p[K.P_K_BZ] = float(hertz.sphere_sphere_stiffness(b.ball_radius, rz, em))
+    p[K.P_K_BB] = float(hertz.sphere_sphere_stiffness(b.ball_radius, b.ball_radius, em))
+    p[K.P_K_GUIDE] = 2.0 / 3.0 * em * math.sqrt(rz)
+    p[K.P_DT] = s.dt
+    p[K.P_AXIAL_FREE] = 1.0
+    p[K.P_MAX_OVERLAP] = 0.05
+    p[K.P_KT_IMPLICIT] = 1.0 if s.tangential == "implicit" else 0.0
+    return p
+
+
 class ReferenceEngine:
     """The numba DEM engine for one bearing, lubricant and scenario.
 
@@ -133,64 +191,11 @@ class ReferenceEngine:
         if scenario.cage and not b.has_cage:
             raise InputError(f"cage: bearing {b.name} has no cage balls (cage_ball_radius is None); "
                              "use cage=False")
-        self.params = self._params()
+        self.params = scene_parameters(b, scenario, self.lubricant)
         self.table = hertz.exact_table()
         self.stable = stable_step(b, scenario, self.lubricant)
 
     # -- set-up --------------------------------------------------------
-    def _params(self) -> np.ndarray:
-        b, s, lub = self.bearing, self.scenario, self.lubricant
-        p = np.zeros(K.N_PARAMS)
-        em = e_prime_of(b)
-        rho_i, z_i = b.inner_groove_center
-        rho_o, z_o = b.outer_groove_center
-        cage = bool(s.cage and b.has_cage)
-        rz = b.cage_ball_radius if cage else b.ball_radius
-        p[K.P_Z] = b.n_balls
-        p[K.P_RB] = b.ball_radius
-        p[K.P_RCI] = b.inner_groove_radius
-        p[K.P_RCO] = b.outer_groove_radius
-        p[K.P_RHO_I], p[K.P_ZG_I] = rho_i, z_i
-        p[K.P_RHO_O], p[K.P_ZG_O] = rho_o, z_o
-        p[K.P_RZ] = rz
-        p[K.P_RP] = b.pitch_radius
-        p[K.P_RGUIDE] = rz + s.guide_clearance
-        p[K.P_EPRIME] = em
-        p[K.P_MB] = b.ball_mass
-        p[K.P_IB] = 0.4 * b.ball_mass * b.ball_radius ** 2
-        p[K.P_MZ] = b.cage_ball_mass if cage else 1.0
-        p[K.P_MR] = s.ring_mass if s.ring_mass is not None else ring_mass_estimate(b)
-        p[K.P_ALPHA_E] = b.material.hysteretic_damping
-        p[K.P_ETA] = lub.viscosity
-        p[K.P_XI] = lub.pressure_viscosity
-        p[K.P_SIGMA] = lub.composite_roughness
-        p[K.P_L1] = lub.lambda_mixed
-        p[K.P_L3] = lub.lambda_full_film
-        p[K.P_MU_B] = lub.mu_boundary
-        p[K.P_MU_F] = lub.mu_full_film
-        p[K.P_HERTZ] = hertz.method_code(s.hertz)
-        p[K.P_FILM] = film_model_code(s.film)
-        p[K.P_LUB] = 1.0 if s.lubrication else 0.0
-        p[K.P_MU_DRY] = s.mu_dry
-        p[K.P_FRIC] = FRICTION_MODELS.index(s.friction)
-        p[K.P_VREG] = s.regularizing_speed
-        p[K.P_KT_RATIO] = s.tangential_stiffness_ratio
-        p[K.P_CAGE] = 1.0 if cage else 0.0
-        p[K.P_FR] = s.Fr
-        p[K.P_FA] = s.Fa
-        p[K.P_W_MAX] = s.omega
-        p[K.P_T_UP] = s.t_ramp_up
-        p[K.P_T_STEADY] = s.t_steady if math.isfinite(s.t_steady) else 1e300
-        p[K.P_T_DOWN] = s.t_ramp_down
-        p[K.P_K_BZ] = float(hertz.sphere_sphere_stiffness(b.ball_radius, rz, em))
-        p[K.P_K_BB] = float(hertz.sphere_sphere_stiffness(b.ball_radius, b.ball_radius, em))
-        p[K.P_K_GUIDE] = 2.0 / 3.0 * em * math.sqrt(rz)
-        p[K.P_DT] = s.dt
-        p[K.P_AXIAL_FREE] = 1.0
-        p[K.P_MAX_OVERLAP] = 0.05
-        p[K.P_KT_IMPLICIT] = 1.0 if s.tangential == "implicit" else 0.0
-        return p
-
     def initial_state(self):
         """Balls at the quasi-static loaded positions (the analytic solution),
         ring at its static displacement; with ``initial='analytic'`` balls and

@@ -70,10 +70,14 @@ def _cross(a0, a1, a2, b0, b1, b2):
 
 
 @kernel
-def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hz, fb, tb, fc, fr, glob, diag, cage_load, want):
+def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb, tb, fc, fr, glob, diag,
+           cage_load, want):
     """All contact forces (one call for the whole bearing).
 
-    ``rings`` (2, RING_N) holds the pose of the inner (0) and outer (1) ring:
+    ``hist`` is the Cundall-Strack state at the last committed time and
+    ``dt_hist`` the time since then; the updated state goes to ``hist_out``
+    (the same array when every evaluation is a committed step, as in the
+    reference engine). ``rings`` (2, RING_N) holds the pose of the inner (0) and outer (1) ring:
     centre, velocity, rotation matrix (row-major; the bearing axis is the
     ring's local z) and angular velocity, all in the world frame. Writes fb,
     tb (balls), fc (cage balls), fr (2, 6: force and torque about its centre
@@ -116,9 +120,9 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hz, fb, tb, fc, fr, glob, 
             cz = a02 * dxw + a12 * dyw + a22 * dzw
             delta, nlx, nly, nlz, ca, sa, r_contact = _groove_geometry(cx, cy, cz, rho, zg, rc, rb, inner)
             if delta <= 0.0:
-                hist[j, race, 0] = 0.0
-                hist[j, race, 1] = 0.0
-                hist[j, race, 2] = 0.0
+                hist_out[j, race, 0] = 0.0
+                hist_out[j, race, 1] = 0.0
+                hist_out[j, race, 2] = 0.0
                 if want:
                     for k in range(diag.shape[2]):
                         diag[j, race, k] = 0.0
@@ -247,10 +251,10 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hz, fb, tb, fc, fr, glob, 
                         hx *= s
                         hy *= s
                         hzt *= s
+                hx += sx * dt_hist
+                hy += sy * dt_hist
+                hzt += sz * dt_hist
                 dt = p[P_DT]
-                hx += sx * dt
-                hy += sy * dt
-                hzt += sz * dt
                 k_t = p[P_KT_RATIO] * k_n
                 if p[P_KT_IMPLICIT] > 0.5:
                     k_t = k_t / (1.0 + k_t * dt * dt * 3.5 / p[P_MB])
@@ -267,9 +271,9 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hz, fb, tb, fc, fr, glob, 
                     hx = -ftx / k_t
                     hy = -fty / k_t
                     hzt = -ftz / k_t
-                hist[j, race, 0] = hx
-                hist[j, race, 1] = hy
-                hist[j, race, 2] = hzt
+                hist_out[j, race, 0] = hx
+                hist_out[j, race, 1] = hy
+                hist_out[j, race, 2] = hzt
             elif fric == FRIC_REGULARIZED and slip > 0.0:
                 fmag = mu * f_n * min(slip / p[P_VREG], 1.0)
                 ftx = -fmag * sx / slip
@@ -431,7 +435,8 @@ def _evaluate(t, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc
               glob, diag, cage_load, want):
     """Reference-engine force evaluation at time t (see :func:`_set_inner_ring`)."""
     _set_inner_ring(t, p, ring, rings)
-    worst = forces(p, table, xb, vb, wb, xc, vc, rings, hist, hz, fb, tb, fc, fr, glob, diag, cage_load, want)
+    worst = forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist, p[P_DT], hz, fb, tb, fc, fr, glob, diag,
+                   cage_load, want)
     _inner_ring_force(p, fr, fring)
     return worst
 
@@ -492,7 +497,8 @@ def run_verlet(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb
         want = (step0 + step + 1) % sample_every == 0 and n_samp < s_t.shape[0]
         # (written out rather than through _evaluate: each array-passing call costs)
         _set_inner_ring(t, p, ring, rings)
-        worst = forces(p, table, xb, vb, wb, xc, vc, rings, hist, hz, fb, tb, fc, fr, glob, diag, cage_load, want)
+        worst = forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist, dt, hz, fb, tb, fc, fr, glob, diag,
+                       cage_load, want)
         _inner_ring_force(p, fr, fring)
         for j in range(z):
             for d in range(3):

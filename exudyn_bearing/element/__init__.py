@@ -1,0 +1,4 @@
+"""Exudyn ball-bearing element (imports exudyn)."""
+from .builder import BallBearingElement, CreateBallBearing
+
+__all__ = ["BallBearingElement", "CreateBallBearing"]

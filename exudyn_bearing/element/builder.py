@@ -1,0 +1,384 @@
+"""Exudyn ball-bearing element: a lubricated DEM ball bearing between two ring markers.
+
+::
+
+    import exudyn_bearing as eb
+    bearing = eb.CreateBallBearing(mbs, eb.catalog["6208"], markerInnerRing=mShaft,
+                                   markerOuterRing=mHousing)
+    mbs.Assemble(); mbs.SolveDynamic(bearing.SimulationSettings(endTime=0.1), solverType=...)
+    bearing.results().summary()
+
+The balls and cage balls are Exudyn nodes of one ObjectGenericODE2 (6
+coordinates each: position and an integrated global rotation vector whose
+rate is the angular velocity, with the constant mass matrix of a sphere:
+exact Newton-Euler for a homogeneous sphere, whose orientation never enters
+the forces, and free of rotation-parameter singularities at 1000 rad/s). The
+nodes of the ring bodies belong to the same object (with zero mass there:
+their mass is in their own bodies), so its ``forceUserFunction`` sees the
+ring motion in its coordinates and returns the ring reactions as generalized
+forces of the ring nodes, consistently within every evaluation. It makes one
+compiled call per force evaluation into the same contact kernel as the
+reference engine (elliptic Hertz, Lambda-switched damping and friction,
+Cundall-Strack history, torus cage).
+
+Rings: a marker on ground (fixed ring), a MarkerBodyRigid / MarkerNodeRigid on
+a body with a NodeRigidBodyRxyz node (the bearing axis is the body's local
+z), or a position marker on a mass point (axes parallel to the world, spin
+prescribed by ``innerRingSpeed`` / ``outerRingSpeed``).
+
+Solvers: explicit ones with one force evaluation per step (VelocityVerlet,
+ExplicitEuler) give the Cundall-Strack history exactly as the reference
+engine; multi-stage solvers (RK44, ...) are supported with
+``friction="regularized"`` (history-free). Implicit solvers work with the
+numerical Jacobian but are not recommended (EXUDYN_NOTES: an order of
+magnitude slower for Hertz contact).
+"""
+from __future__ import annotations
+
+import math
+import time
+
+import numpy as np
+
+from ..analysis import default_lubricant
+from ..data import BallBearing, InputError, Lubricant, load_bearing
+from ..physics import hertz
+from ..reference import kernels as K
+from ..reference.engine import ReferenceEngine, scene_parameters, stable_step
+from ..results import Results
+from ..scenario import Scenario
+from . import kernels as EK
+
+__all__ = ["CreateBallBearing", "BallBearingElement"]
+
+
+def _marker_ring(mbs, marker, which):
+    """(kind, node, local position, fixed (12,)) of a ring marker, or InputError."""
+    name = f"marker{which}Ring"
+    try:
+        m = mbs.GetMarker(int(marker))
+    except Exception:
+        raise InputError(f"{name}: {marker!r} is not a marker of this mbs") from None
+    mtype = m["markerType"]
+    ht = np.asarray(m.get("localHT", np.eye(4)), float)
+    if not np.allclose(ht[:3, :3], np.eye(3)):
+        raise InputError(f"{name}: the marker has a rotation offset; the bearing axis is the local z "
+                         "axis of the ring body, use a marker without rotation")
+    local = np.asarray(m.get("localPosition", np.zeros(3)), float)
+    fixed = np.zeros(12)
+    fixed[3:] = np.eye(3).ravel()
+    if mtype in ("BodyRigid", "BodyPosition"):
+        obj = mbs.GetObject(m["bodyNumber"])
+        otype = obj["objectType"]
+        if otype == "Ground":
+            fixed[:3] = np.asarray(obj["referencePosition"], float) + np.asarray(
+                obj.get("referenceRotation", np.eye(3)), float) @ local
+            fixed[3:] = np.asarray(obj.get("referenceRotation", np.eye(3)), float).ravel()
+            return EK.RING_FIXED, -1, np.zeros(3), fixed
+        if "nodeNumber" not in obj:
+            raise InputError(f"{name}: body type {otype} is not supported (use a RigidBody with a "
+                             "NodeRigidBodyRxyz node, a MassPoint, or ground)")
+        node = obj["nodeNumber"]
+    elif mtype in ("NodeRigid", "NodePosition"):
+        node = m["nodeNumber"]
+    else:
+        raise InputError(f"{name}: marker type {mtype} is not a rigid-body or position marker")
+    ntype = mbs.GetNode(node)["nodeType"]
+    if ntype == "RigidBodyRxyz":
+        return EK.RING_RXYZ, int(node), local, fixed
+    if ntype == "Point":
+        fixed[:3] = local
+        return EK.RING_POINT, int(node), np.zeros(3), fixed
+    raise InputError(f"{name}: node type {ntype} is not supported (NodeRigidBodyRxyz, NodePoint or ground)")
+
+
+def _initial_node_pose(mbs, kind, node, local, fixed):
+    """Ring centre, rotation matrix, velocity and angular velocity at t = 0."""
+    if kind == EK.RING_FIXED:
+        return fixed[:3].copy(), fixed[3:].reshape(3, 3), np.zeros(3), np.zeros(3)
+    n = mbs.GetNode(node)
+    q = np.asarray(n["referenceCoordinates"], float) + np.asarray(n["initialCoordinates"], float)
+    v = np.asarray(n.get("initialVelocities", n.get("initialCoordinates_t", np.zeros(q.size))), float)
+    if kind == EK.RING_POINT:
+        return q[:3] + fixed[:3], fixed[3:].reshape(3, 3), v[:3], np.zeros(3)
+    a = np.array(EK._rot_xyz(q[3], q[4], q[5])).reshape(3, 3)
+    g = np.array(EK._g_xyz(q[3], q[4])).reshape(3, 3)
+    w = g @ v[3:6]
+    o = a @ local
+    return q[:3] + o, a, v[:3] + np.cross(w, o), w
+
+
+class BallBearingElement:
+    """A DEM ball bearing inside an Exudyn model (see the module docstring).
+
+    Attributes
+    ----------
+    items : dict
+        Created Exudyn items: ``ballNodes``, ``cageNodes``, ``object``,
+        ``ringNodes`` (ring nodes that joined the object), ``sensors``.
+    sensors : dict
+        Sensor numbers (``cageSpeed``, ``qMaxInner``, ``qMaxOuter``,
+        ``lambdaOuterPsi0``, ``innerRingForce``), stored internally: use
+        ``mbs.PlotSensor`` or ``mbs.GetSensorStoredData``.
+    initialRingDisplacement : ndarray
+        Displacement of the inner ring (outer-ring frame) in the analytic
+        initial state; place the inner ring there to start in equilibrium.
+    """
+
+    def __init__(self, mbs, bearing, markerInnerRing, markerOuterRing, lubricant: Lubricant | None = None,
+                 cage=True, lubrication=True, friction="history", tangential="explicit", hertzModel="exact",
+                 film="hd", guideClearance=50e-6, muDry=0.1, regularizingSpeed=0.1,
+                 tangentialStiffnessRatio=2.0 / 3.0, stepSize=1e-6, innerRingSpeed=None, outerRingSpeed=None,
+                 initialOmega=0.0, initialLoad=(0.0, 0.0), initial="analytic", sampleInterval=1e-4,
+                 show=False):
+        self.mbs = mbs
+        self.bearing = b = load_bearing(bearing)
+        self.lubricant = default_lubricant() if lubricant is None else lubricant
+        for name, f in (("innerRingSpeed", innerRingSpeed), ("outerRingSpeed", outerRingSpeed)):
+            if f is not None and not callable(f):
+                raise InputError(f"{name}: must be a function of time t [s] returning rad/s")
+        self.speed = (innerRingSpeed, outerRingSpeed)
+        # model switches go through Scenario (validated there); loads come from the model
+        self.scenario = Scenario(Fr=float(initialLoad[0]), Fa=float(initialLoad[1]), omega=float(initialOmega),
+                                 cage=cage, lubrication=lubrication, friction=friction, tangential=tangential,
+                                 hertz=hertzModel, film=film, guide_clearance=guideClearance, mu_dry=muDry,
+                                 regularizing_speed=regularizingSpeed,
+                                 tangential_stiffness_ratio=tangentialStiffnessRatio, dt=stepSize,
+                                 sample_dt=max(sampleInterval, stepSize), initial=initial)
+        if cage and not b.has_cage:
+            raise InputError(f"cage: bearing {b.name} has no cage balls; use cage=False")
+        self.params = scene_parameters(b, self.scenario, self.lubricant)
+        self.table = hertz.exact_table()
+        self.stable = stable_step(b, self.scenario, self.lubricant)
+        self.sampleInterval = float(sampleInterval)
+        # rings
+        self.rings_spec = [_marker_ring(mbs, markerInnerRing, "Inner"), _marker_ring(mbs, markerOuterRing, "Outer")]
+        self.markers = (markerInnerRing, markerOuterRing)
+        poses = [_initial_node_pose(mbs, *spec) for spec in self.rings_spec]
+        axis_i, axis_o = poses[0][1][:, 2], poses[1][1][:, 2]
+        if abs(float(axis_i @ axis_o)) < 1.0 - 1e-9:
+            raise InputError("markerInnerRing: the ring axes (local z of both ring bodies) are not parallel "
+                             f"(angle {math.degrees(math.acos(min(1.0, abs(float(axis_i @ axis_o))))):.3g} deg)")
+        # initial ball state in the outer-ring frame, then in the world
+        ref_engine = ReferenceEngine(b, self.scenario, self.lubricant)
+        st = ref_engine.initial_state()
+        self.initialRingDisplacement = np.asarray(st["ring"][:3], float)
+        x_o, a_o, v_o, w_o = poses[1]
+        rel = poses[0][0] - x_o
+        rel_local = a_o.T @ rel
+        expected = self.initialRingDisplacement
+        gap = np.linalg.norm(rel_local - expected)
+        if gap > 0.5 * b.groove_distance:
+            raise InputError(f"markerInnerRing: the inner ring centre is {np.linalg.norm(rel_local):.3e} m from "
+                             f"the outer ring centre; the rings must be concentric within the ball play "
+                             f"(expected {np.linalg.norm(expected):.3e} m)")
+        z = b.n_balls
+        n_cage = z if (cage and b.has_cage) else 0
+        xb = st["xb"] @ a_o.T + x_o
+        vb = st["vb"] @ a_o.T + v_o + np.cross(w_o, xb - x_o)
+        wb = st["wb"] @ a_o.T + w_o
+        xc = st["xc"] @ a_o.T + x_o
+        vc = st["vc"] @ a_o.T + v_o + np.cross(w_o, xc - x_o)
+        allowed = max(0.0, -0.5 * b.diametral_clearance) + 2.0 * max(
+            float(np.max(st["static"].overlap_outer)), 0.0) + 1e-7
+        self._check_overlap(xb, poses, allowed)
+        import exudyn as exu
+        from exudyn.itemInterface import NodeGenericODE2, ObjectGenericODE2, SensorUserFunction, VObjectGenericODE2
+
+        nodes = []
+        mass = []
+        mb, ib = b.ball_mass, 0.4 * b.ball_mass * b.ball_radius ** 2
+        for j in range(z):
+            nodes.append(mbs.AddNode(NodeGenericODE2(
+                referenceCoordinates=[*xb[j], 0.0, 0.0, 0.0], initialCoordinates=[0.0] * 6,
+                initialCoordinates_t=[*vb[j], *wb[j]], numberOfODE2Coordinates=6)))
+            mass += [mb] * 3 + [ib] * 3
+        cage_nodes = []
+        if n_cage:
+            mz = b.cage_ball_mass
+            iz = 0.4 * mz * b.cage_ball_radius ** 2
+            for k in range(n_cage):
+                cage_nodes.append(mbs.AddNode(NodeGenericODE2(
+                    referenceCoordinates=[*xc[k], 0.0, 0.0, 0.0], initialCoordinates=[0.0] * 6,
+                    initialCoordinates_t=[*vc[k], 0.0, 0.0, 0.0], numberOfODE2Coordinates=6)))
+                mass += [mz] * 3 + [iz] * 3
+        self.z, self.n_cage = z, n_cage
+        # ring nodes join the object after the balls (once, if both rings share a node)
+        self._ring_kind = np.array([sp[0] for sp in self.rings_spec], np.int64)
+        ring_nodes = []
+        self._ring_data = np.zeros((2, EK.RD_N))
+        n = 6 * (z + n_cage)
+        ref = [np.zeros(n)]
+        for j in range(z):
+            ref[0][6 * j:6 * j + 3] = xb[j]
+        for k in range(n_cage):
+            ref[0][6 * (z + k):6 * (z + k) + 3] = xc[k]
+        offsets = {}
+        for r, (kind, node, local, fixed) in enumerate(self.rings_spec):
+            self._ring_data[r, EK.RD_OFF] = -1
+            if kind != EK.RING_FIXED:
+                if node not in offsets:
+                    rc = np.asarray(mbs.GetNode(node)["referenceCoordinates"], float)
+                    offsets[node] = n
+                    ring_nodes.append(node)
+                    ref.append(rc)
+                    mass += [0.0] * rc.size
+                    n += rc.size
+                self._ring_data[r, EK.RD_OFF] = offsets[node]
+            self._ring_data[r, EK.RD_LOCAL:EK.RD_LOCAL + 3] = local
+            self._ring_data[r, EK.RD_FIXED:EK.RD_FIXED + 12] = fixed
+        self.ref = np.concatenate(ref)
+        self._hist = np.zeros((z, 2, 3))
+        self._hist_trial = np.zeros((z, 2, 3))
+        self._t_commit = 0.0
+        self._t_trial = -1.0
+        self._hz = np.zeros((z, 2, 4))
+        self._work = np.zeros((8, z, 3))  # xb, vb, wb, xc, vc, fb, tb, fc
+        self._rings = K.ring_poses()
+        self._fr = np.zeros((2, 6))
+        self._glob = np.zeros(K.NGLOBAL)
+        self._diag = np.zeros((z, 2, K.NDIAG))
+        self._cage_load = np.zeros((z, 2))
+        self._out = np.zeros(n)
+        self._samples = {k: [] for k in ("t", "glob", "diag", "cage_load", "xb", "vb", "wb", "xc", "vc", "ring")}
+        self._next_sample = self.sampleInterval
+        self._evaluations = 0
+        self._wall = 0.0
+        self._status = 0.0
+        obj = mbs.AddObject(ObjectGenericODE2(nodeNumbers=nodes + cage_nodes + ring_nodes, massMatrix=np.diag(mass),
+                                              forceUserFunction=self._force_uf,
+                                              visualization=VObjectGenericODE2(show=bool(show))))
+        self.sensors = {}
+        sensor_defs = {
+            "cageSpeed": lambda: [float(np.mean(self._orbital(self._work[3, :n_cage], self._work[4, :n_cage])))
+                                  if n_cage else float(np.mean(self._orbital(self._work[0], self._work[1])))],
+            "qMaxInner": lambda: [float(self._diag[:, 0, 0].max())],
+            "qMaxOuter": lambda: [float(self._diag[:, 1, 0].max())],
+            "lambdaOuterPsi0": lambda: [float(self._diag[self._psi0(), 1, 8])],
+            "innerRingForce": lambda: list(self._fr[0, :3]),
+        }
+        for key, fn in sensor_defs.items():
+            self.sensors[key] = mbs.AddSensor(SensorUserFunction(
+                sensorNumbers=[], factors=[], storeInternal=True, writeToFile=False,
+                sensorUserFunction=(lambda f: (lambda mbs_, t, sn, fac, conf: f()))(fn)))
+        self.items = {"ballNodes": nodes, "cageNodes": cage_nodes, "ringNodes": ring_nodes, "object": obj,
+                      "sensors": dict(self.sensors)}
+        self._exu = exu
+
+    # -- checks --------------------------------------------------------
+    def _check_overlap(self, xb, poses, allowed):
+        """Initial overlaps must not exceed what the analytic state (preload) gives."""
+        rings = K.ring_poses()
+        for r in range(2):
+            x, a, v, w = poses[r]
+            rings[r, :3] = x
+            rings[r, 6:15] = a.ravel()
+        z = self.bearing.n_balls
+        diag = np.zeros((z, 2, K.NDIAG))
+        K.forces(self.params, self.table, xb, np.zeros((z, 3)), np.zeros((z, 3)), np.zeros((z, 3)),
+                 np.zeros((z, 3)), rings, np.zeros((z, 2, 3)), np.zeros((z, 2, 3)), 0.0, np.zeros((z, 2, 4)),
+                 np.zeros((z, 3)), np.zeros((z, 3)), np.zeros((z, 3)), np.zeros((2, 6)), np.zeros(K.NGLOBAL),
+                 diag, np.zeros((z, 2)), True)
+        worst = float(np.max(diag[:, :, 1]))
+        if worst > allowed:
+            raise InputError(f"markerInnerRing: the initial ring placement overlaps balls by {worst:.3e} m, beyond "
+                             f"the preload and load overlap {allowed:.3e} m; check the ring positions")
+
+    # -- user functions --------------------------------------------------
+    def _force_uf(self, mbs, t, itemNumber, q, q_t):
+        t0 = time.perf_counter()
+        for r in (0, 1):
+            if self.speed[r] is not None:
+                self._ring_data[r, EK.RD_SPIN] = self.speed[r](t)
+        # Cundall-Strack history: commit the last trial state when time advances
+        if t > self._t_trial:
+            if self._t_trial >= 0.0:
+                self._hist[:] = self._hist_trial
+                self._t_commit = self._t_trial
+            self._t_trial = t
+        want = t >= self._next_sample - 1e-12
+        worst = EK.element_rhs(np.asarray(q, float), np.asarray(q_t, float), self.ref, self.params, self.table, self.z, self.n_cage, self._ring_kind,
+                               self._ring_data, self._hist, self._hist_trial, t - self._t_commit, self._hz,
+                               self._work, self._rings, self._fr, self._glob, self._diag, self._cage_load, want,
+                               self._out)
+        if not math.isfinite(worst) or worst > self.params[K.P_MAX_OVERLAP]:
+            raise RuntimeError(
+                f"stepSize: the bearing state became non-finite or runaway at t = {t:.6g} s; the stable-step "
+                f"estimate is {self.stable.dt:.3g} s (limited by the {self.stable.limited_by} contact): reduce "
+                "the solver step")
+        if want:
+            self._store(t)
+            self._next_sample += self.sampleInterval * max(1.0, math.floor((t - self._next_sample)
+                                                                           / self.sampleInterval) + 1.0)
+        self._evaluations += 1
+        self._wall += time.perf_counter() - t0
+        return self._out
+
+    def _store(self, t):
+        s = self._samples
+        s["t"].append(t)
+        s["glob"].append(self._glob.copy())
+        s["diag"].append(self._diag.copy())
+        s["cage_load"].append(self._cage_load.copy())
+        for k, i in (("xb", 0), ("vb", 1), ("wb", 2), ("xc", 3), ("vc", 4)):
+            s[k].append(self._work[i].copy())
+        s["ring"].append(np.concatenate([self._rings[0, :3], self._rings[0, 3:6]]))
+
+    @staticmethod
+    def _orbital(x, v):
+        return (x[:, 0] * v[:, 1] - x[:, 1] * v[:, 0]) / (x[:, 0] ** 2 + x[:, 1] ** 2)
+
+    def _psi0(self):
+        return int(np.argmin(np.abs(np.arctan2(self._work[0, :, 1], self._work[0, :, 0]))))
+
+    # -- user-facing ------------------------------------------------------
+    def SimulationSettings(self, endTime, stepSize=None, solverType="VelocityVerlet"):
+        """Recommended explicit settings: fixed step ``stepSize`` (default the
+        element's), no solution file, sensors written every sample interval,
+        mass-matrix inverse per body."""
+        exu = self._exu
+        ss = exu.SimulationSettings()
+        h = float(stepSize or self.scenario.dt)
+        ss.timeIntegration.numberOfSteps = int(round(endTime / h))
+        ss.timeIntegration.endTime = float(endTime)
+        ss.timeIntegration.verboseMode = 0
+        ss.timeIntegration.explicit.computeMassMatrixInversePerBody = False  # not available for ObjectGenericODE2
+        ss.linearSolverType = exu.LinearSolverType.EigenSparse
+        ss.timeIntegration.explicit.computeEndOfStepAccelerations = False
+        ss.timeIntegration.solverType = getattr(exu.DynamicSolverType, solverType)
+        ss.solution.file.write = False
+        ss.solution.sensors.writePeriod = self.sampleInterval
+        return ss
+
+    def results(self, wall_s=None) -> Results:
+        """Sampled series of the run (the same Results as the reference engine)."""
+        data = {k: np.array(v) for k, v in self._samples.items()}
+        if len(data["t"]) == 0:
+            raise RuntimeError("results: no samples yet; run mbs.SolveDynamic first")
+        steps = self._evaluations
+        return Results(self.bearing, self.scenario, self.lubricant, data, steps=steps,
+                       wall_s=self._wall if wall_s is None else wall_s, engine="exudyn", stable_dt=self.stable.dt)
+
+
+def CreateBallBearing(mbs, bearing: BallBearing | str, markerInnerRing, markerOuterRing, **options):
+    """Add a lubricated DEM ball bearing between two ring markers of ``mbs``.
+
+    Parameters
+    ----------
+    mbs : exudyn.MainSystem
+    bearing : BallBearing or str
+        Geometry (catalogue name or JSON file).
+    markerInnerRing, markerOuterRing : int
+        Ring markers (see the module docstring for the supported kinds).
+    **options
+        Keyword options of :class:`BallBearingElement` (``lubricant``, ``cage``,
+        ``lubrication``, ``friction``, ``tangential``, ``hertzModel``, ``film``,
+        ``stepSize``, ``innerRingSpeed``, ``initialOmega``, ``initialLoad``,
+        ``sampleInterval``, ``show``, ...).
+
+    Returns
+    -------
+    BallBearingElement
+        Holds ``items`` and ``sensors``; ``results()`` after the solve.
+    """
+    return BallBearingElement(mbs, bearing, markerInnerRing, markerOuterRing, **options)

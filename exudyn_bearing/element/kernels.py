@@ -1,0 +1,173 @@
+"""Compiled part of the Exudyn bearing element: one call per force evaluation.
+
+It turns the coordinates of the bearing's ObjectGenericODE2 (balls, cage
+balls and the ring nodes) into ring poses, calls the shared contact kernel
+:func:`exudyn_bearing.reference.kernels.forces`, and returns the generalized
+forces of all these coordinates.
+
+Coordinate layout of the object: ball j owns coordinates 6j..6j+5 (position
+and an integrated global rotation vector whose rate is the angular velocity:
+exact Newton-Euler for a homogeneous sphere, whose orientation never enters
+the forces), cage ball k owns 6(Z+k)..6(Z+k)+5.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .._jit import kernel
+from ..reference.kernels import RING_N, forces
+
+#: Ring couplings: fixed in space (ground), node with position coordinates
+#: only (mass point: axes parallel to the world, prescribed spin), rigid-body
+#: node with Tait-Bryan xyz rotation parameters (Exudyn's NodeRigidBodyRxyz).
+RING_FIXED, RING_POINT, RING_RXYZ = 0, 1, 2
+
+
+@kernel
+def _rot_xyz(a0, a1, a2):
+    """Rotation matrix A = Ax Ay Az of Tait-Bryan xyz angles (Exudyn's Rxyz), row-major."""
+    c0, s0 = math.cos(a0), math.sin(a0)
+    c1, s1 = math.cos(a1), math.sin(a1)
+    c2, s2 = math.cos(a2), math.sin(a2)
+    return (c1 * c2, -c1 * s2, s1,
+            s0 * s1 * c2 + c0 * s2, -s0 * s1 * s2 + c0 * c2, -s0 * c1,
+            -c0 * s1 * c2 + s0 * s2, c0 * s1 * s2 + s0 * c2, c0 * c1)
+
+
+@kernel
+def _g_xyz(a0, a1):
+    """G of Tait-Bryan xyz angles (global angular velocity = G d(angles)/dt), row-major."""
+    c0, s0 = math.cos(a0), math.sin(a0)
+    c1, s1 = math.cos(a1), math.sin(a1)
+    return (1.0, 0.0, s1,
+            0.0, c0, -c1 * s0,
+            0.0, s0, c0 * c1)
+
+
+@kernel
+def ring_pose(kind, rq, rqt, local, fixed, spin, rings, r):
+    """Row r of ``rings`` (centre, velocity, rotation matrix, angular velocity).
+
+    ``rq``, ``rqt`` (6,): total coordinates and velocities of the ring node
+    (position, Tait-Bryan angles; point nodes use the first three);
+    ``local`` (3,): ring centre in the body frame (rigid nodes); ``fixed``
+    (12,): position (fixed ring) or offset (point ring) and rotation matrix
+    of fixed and point rings; ``spin``: their prescribed spin about the ring
+    axis [rad/s].
+    """
+    for k in range(RING_N):
+        rings[r, k] = 0.0
+    if kind == RING_FIXED or kind == RING_POINT:
+        for d in range(3):
+            rings[r, d] = fixed[d]
+        for k in range(9):
+            rings[r, 6 + k] = fixed[3 + k]
+        if kind == RING_POINT:
+            for d in range(3):
+                rings[r, d] += rq[d]
+                rings[r, 3 + d] = rqt[d]
+        # spin about the ring axis: the third column of its rotation matrix
+        rings[r, 15] = spin * fixed[5]
+        rings[r, 16] = spin * fixed[8]
+        rings[r, 17] = spin * fixed[11]
+        return
+    a = _rot_xyz(rq[3], rq[4], rq[5])
+    g = _g_xyz(rq[3], rq[4])
+    w0 = g[0] * rqt[3] + g[1] * rqt[4] + g[2] * rqt[5]
+    w1 = g[3] * rqt[3] + g[4] * rqt[4] + g[5] * rqt[5]
+    w2 = g[6] * rqt[3] + g[7] * rqt[4] + g[8] * rqt[5]
+    o0 = a[0] * local[0] + a[1] * local[1] + a[2] * local[2]
+    o1 = a[3] * local[0] + a[4] * local[1] + a[5] * local[2]
+    o2 = a[6] * local[0] + a[7] * local[1] + a[8] * local[2]
+    rings[r, 0] = rq[0] + o0
+    rings[r, 1] = rq[1] + o1
+    rings[r, 2] = rq[2] + o2
+    rings[r, 3] = rqt[0] + w1 * o2 - w2 * o1
+    rings[r, 4] = rqt[1] + w2 * o0 - w0 * o2
+    rings[r, 5] = rqt[2] + w0 * o1 - w1 * o0
+    for k in range(9):
+        rings[r, 6 + k] = a[k]
+    rings[r, 15] = w0
+    rings[r, 16] = w1
+    rings[r, 17] = w2
+
+
+#: Columns of the per-ring data row: node coordinate offset in the object
+#: (-1: none), local position (3), fixed/offset position and rotation (12),
+#: prescribed spin.
+RD_OFF, RD_LOCAL, RD_FIXED, RD_SPIN, RD_N = 0, 1, 4, 16, 17
+
+
+@kernel
+def element_rhs(q, q_t, ref, p, table, z, n_cage, ring_kind, ring_data, hist, hist_out, dt_hist, hz, work,
+                rings, fr, glob, diag, cage_load, want, out):
+    """Generalized forces ``out`` of the bearing object for q, q_t.
+
+    The object's coordinates are those of the balls, the cage balls and then
+    the ring nodes (offsets in ``ring_data``); ``ref`` holds their reference
+    values. The ring reactions enter ``out`` at the ring coordinates: force on
+    the position coordinates, G^T times the torque about the node point on
+    Tait-Bryan rotation coordinates. ``work`` (8, >= Z, 3) is scratch space
+    for ball and cage states and forces. Returns the largest overlap / R_b.
+    """
+    xb = work[0, :z]
+    vb = work[1, :z]
+    wb = work[2, :z]
+    xc = work[3]
+    vc = work[4]
+    fb = work[5, :z]
+    tb = work[6, :z]
+    fc = work[7]
+    for j in range(z):
+        b = 6 * j
+        for d in range(3):
+            xb[j, d] = ref[b + d] + q[b + d]
+            vb[j, d] = q_t[b + d]
+            wb[j, d] = q_t[b + 3 + d]
+    for k in range(n_cage):
+        b = 6 * (z + k)
+        for d in range(3):
+            xc[k, d] = ref[b + d] + q[b + d]
+            vc[k, d] = q_t[b + d]
+    rq = np.zeros(6)
+    rqt = np.zeros(6)
+    for r in range(2):
+        off = int(ring_data[r, RD_OFF])
+        n_r = 6 if ring_kind[r] == RING_RXYZ else 3
+        if off >= 0:
+            for d in range(n_r):
+                rq[d] = ref[off + d] + q[off + d]
+                rqt[d] = q_t[off + d]
+        ring_pose(ring_kind[r], rq, rqt, ring_data[r, RD_LOCAL:RD_LOCAL + 3],
+                  ring_data[r, RD_FIXED:RD_FIXED + 12], ring_data[r, RD_SPIN], rings, r)
+    worst = forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb, tb, fc, fr, glob,
+                   diag, cage_load, want)
+    out[:] = 0.0
+    for j in range(z):
+        for d in range(3):
+            out[6 * j + d] = fb[j, d]
+            out[6 * j + 3 + d] = tb[j, d]
+    for k in range(n_cage):
+        for d in range(3):
+            out[6 * (z + k) + d] = fc[k, d]
+    for r in range(2):
+        off = int(ring_data[r, RD_OFF])
+        if off < 0 or ring_kind[r] == RING_FIXED:
+            continue
+        for d in range(3):
+            out[off + d] = fr[r, d]
+        if ring_kind[r] == RING_RXYZ:
+            # torque about the node point: about the ring centre plus (centre - node) x F
+            o0 = rings[r, 0] - (ref[off] + q[off])
+            o1 = rings[r, 1] - (ref[off + 1] + q[off + 1])
+            o2 = rings[r, 2] - (ref[off + 2] + q[off + 2])
+            t0 = fr[r, 3] + o1 * fr[r, 2] - o2 * fr[r, 1]
+            t1 = fr[r, 4] + o2 * fr[r, 0] - o0 * fr[r, 2]
+            t2 = fr[r, 5] + o0 * fr[r, 1] - o1 * fr[r, 0]
+            g = _g_xyz(ref[off + 3] + q[off + 3], ref[off + 4] + q[off + 4])
+            out[off + 3] = g[0] * t0 + g[3] * t1 + g[6] * t2
+            out[off + 4] = g[1] * t0 + g[4] * t1 + g[7] * t2
+            out[off + 5] = g[2] * t0 + g[5] * t1 + g[8] * t2
+    return worst
