@@ -7,7 +7,7 @@ from .scenario import Scenario
 __all__ = ["simulate", "ENGINES"]
 
 #: Engines that :func:`simulate` knows.
-ENGINES = ("reference",)
+ENGINES = ("reference", "exudyn")
 
 
 def simulate(bearing, scenario: Scenario | None = None, engine: str = "reference",
@@ -19,8 +19,9 @@ def simulate(bearing, scenario: Scenario | None = None, engine: str = "reference
     bearing : BallBearing or str
         Bearing or catalogue name / JSON file.
     scenario : Scenario
-    engine : {"reference"}
-        The numba DEM reference core.
+    engine : {"reference", "exudyn"}
+        The numba DEM reference core, or the same scene built in Exudyn with
+        the bearing element (:mod:`exudyn_bearing.element`).
     lubricant : Lubricant, optional
     progress : bool or None
         Progress on stderr (None: for long runs).
@@ -42,4 +43,8 @@ def simulate(bearing, scenario: Scenario | None = None, engine: str = "reference
         from .reference import ReferenceEngine
 
         return ReferenceEngine(bearing, scenario, lubricant).run(progress=progress)
+    if engine == "exudyn":
+        from .element.engine import ExudynEngine
+
+        return ExudynEngine(bearing, scenario, lubricant).run(progress=progress)
     raise InputError(f"engine: unknown engine {engine!r} (valid: {', '.join(ENGINES)})")

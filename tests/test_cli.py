@@ -99,3 +99,11 @@ def test_simulate_unstable_step_is_a_clean_error(capsys):
         rc = main(["simulate", "--t-end", "0.005", "--dt", "5e-5"])
     assert rc != 0
     assert "dt" in capsys.readouterr().err
+
+
+def test_simulate_exudyn_engine_gives_the_same_keys(capsys):
+    ref = run_json(capsys, "simulate", "--t-end", "0.004", "--dt", "5e-6", "--json")
+    exd = run_json(capsys, "simulate", "--engine", "exudyn", "--t-end", "0.004", "--dt", "5e-6", "--json")
+    assert set(ref) == set(exd)
+    assert exd["engine"] == "exudyn" and exd["steps"] == ref["steps"] == 800
+    assert exd["cage_speed"] == pytest.approx(ref["cage_speed"], rel=1e-3)

@@ -44,7 +44,7 @@ from ..analysis import default_lubricant
 from ..data import BallBearing, InputError, Lubricant, load_bearing
 from ..physics import hertz
 from ..reference import kernels as K
-from ..reference.engine import ReferenceEngine, scene_parameters, stable_step
+from ..reference.engine import ReferenceEngine, StepSizeWarning, scene_parameters, stable_step
 from ..results import Results
 from ..scenario import Scenario
 from . import kernels as EK
@@ -326,7 +326,8 @@ class BallBearingElement:
 
     @staticmethod
     def _orbital(x, v):
-        return (x[:, 0] * v[:, 1] - x[:, 1] * v[:, 0]) / (x[:, 0] ** 2 + x[:, 1] ** 2)
+        r2 = x[:, 0] ** 2 + x[:, 1] ** 2
+        return (x[:, 0] * v[:, 1] - x[:, 1] * v[:, 0]) / np.where(r2 > 0.0, r2, np.inf)
 
     def _psi0(self):
         return int(np.argmin(np.abs(np.arctan2(self._work[0, :, 1], self._work[0, :, 0]))))
@@ -339,23 +340,29 @@ class BallBearingElement:
         exu = self._exu
         ss = exu.SimulationSettings()
         h = float(stepSize or self.scenario.dt)
+        if h > self.stable.dt:
+            import warnings
+
+            warnings.warn(f"stepSize: {h:.3g} s exceeds the stable-step estimate {self.stable.dt:.3g} s "
+                          f"(limited by the {self.stable.limited_by} contact); the run may blow up",
+                          StepSizeWarning, stacklevel=2)
         ss.timeIntegration.numberOfSteps = int(round(endTime / h))
         ss.timeIntegration.endTime = float(endTime)
         ss.timeIntegration.verboseMode = 0
         ss.timeIntegration.explicit.computeMassMatrixInversePerBody = False  # not available for ObjectGenericODE2
-        ss.linearSolverType = exu.LinearSolverType.EigenSparse
+        ss.linearSolver.solverType = exu.LinearSolverType.EigenSparse
         ss.timeIntegration.explicit.computeEndOfStepAccelerations = False
         ss.timeIntegration.solverType = getattr(exu.DynamicSolverType, solverType)
         ss.solution.file.write = False
         ss.solution.sensors.writePeriod = self.sampleInterval
         return ss
 
-    def results(self, wall_s=None) -> Results:
+    def results(self, wall_s=None, steps=None) -> Results:
         """Sampled series of the run (the same Results as the reference engine)."""
         data = {k: np.array(v) for k, v in self._samples.items()}
         if len(data["t"]) == 0:
             raise RuntimeError("results: no samples yet; run mbs.SolveDynamic first")
-        steps = self._evaluations
+        steps = self._evaluations if steps is None else steps
         return Results(self.bearing, self.scenario, self.lubricant, data, steps=steps,
                        wall_s=self._wall if wall_s is None else wall_s, engine="exudyn", stable_dt=self.stable.dt)
 

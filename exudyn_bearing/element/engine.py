@@ -1,0 +1,75 @@
+"""The reference engine's standard scene built in Exudyn with the bearing element.
+
+Outer ring on ground, inner ring a mass point (the translating ring mass of
+the scenario) carrying the applied loads and spun at the protocol speed
+omega(t): the same scene as :class:`exudyn_bearing.reference.ReferenceEngine`,
+so both engines can be compared on identical input.
+"""
+from __future__ import annotations
+
+import time
+
+from ..data import Lubricant, load_bearing
+from ..reference.engine import ReferenceEngine, ring_mass_estimate
+from ..scenario import Scenario
+from .builder import CreateBallBearing
+
+__all__ = ["ExudynEngine", "SOLVERS"]
+
+#: Scenario integrator -> Exudyn explicit solver.
+SOLVERS = {"verlet": "VelocityVerlet", "rk4": "RK44"}
+
+
+class ExudynEngine:
+    """Run a :class:`~exudyn_bearing.scenario.Scenario` with the Exudyn element."""
+
+    name = "exudyn"
+
+    def __init__(self, bearing, scenario: Scenario, lubricant: Lubricant | None = None):
+        import exudyn as exu
+        from exudyn.itemInterface import (LoadForceVector, MarkerBodyRigid, MarkerNodePosition, NodePoint,
+                                          ObjectGround, ObjectMassPoint)
+
+        self.exu = exu
+        b = load_bearing(bearing)
+        if scenario.Pd is not None:
+            b = b.with_clearance(scenario.Pd)
+        self.bearing, self.scenario = b, scenario
+        s = scenario
+        ref = ReferenceEngine(b, s, lubricant)
+        d0 = ref.initial_state()["ring"][:3]
+        self.SC = exu.SystemContainer()
+        mbs = self.mbs = self.SC.AddSystem()
+        ground = mbs.AddObject(ObjectGround())
+        m_outer = mbs.AddMarker(MarkerBodyRigid(bodyNumber=ground, localPosition=[0.0, 0.0, 0.0]))
+        node = mbs.AddNode(NodePoint(referenceCoordinates=[0.0, 0.0, 0.0], initialCoordinates=list(d0)))
+        mass = s.ring_mass if s.ring_mass is not None else ring_mass_estimate(b)
+        mbs.AddObject(ObjectMassPoint(mass=mass, nodeNumber=node))
+        m_inner = mbs.AddMarker(MarkerNodePosition(nodeNumber=node))
+        mbs.AddLoad(LoadForceVector(markerNumber=m_inner, loadVector=[s.Fr, 0.0, s.Fa]))
+        self.element = CreateBallBearing(
+            mbs, b, m_inner, m_outer, lubricant=lubricant, cage=s.cage, lubrication=s.lubrication,
+            friction=s.friction, tangential=s.tangential, hertzModel=s.hertz, film=s.film,
+            guideClearance=s.guide_clearance, muDry=s.mu_dry, regularizingSpeed=s.regularizing_speed,
+            tangentialStiffnessRatio=s.tangential_stiffness_ratio, stepSize=s.dt, innerRingSpeed=s.omega_at,
+            initialOmega=s.omega, initialLoad=(s.Fr, s.Fa), initial=s.initial, sampleInterval=s.sample_dt)
+        # the reference engine's initial spin follows omega(0); the element took initialOmega
+        mbs.Assemble()
+        self.stable = self.element.stable
+
+    def run(self, progress=None):
+        s = self.scenario
+        settings = self.element.SimulationSettings(s.t_end, s.dt, SOLVERS[s.integrator])
+        if progress:
+            settings.timeIntegration.verboseMode = 1
+        wall0 = time.perf_counter()
+        quiet = not progress
+        printing = self.exu.config.printToConsole
+        if quiet:  # Exudyn prints solver notes to stdout, which must stay clean for --json
+            self.exu.config.printToConsole = False
+        try:
+            self.mbs.SolveDynamic(settings, solverType=settings.timeIntegration.solverType)
+        finally:
+            self.exu.config.printToConsole = printing
+        return self.element.results(wall_s=time.perf_counter() - wall0,
+                                    steps=settings.timeIntegration.numberOfSteps)
