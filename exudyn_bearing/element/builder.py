@@ -130,7 +130,7 @@ class BallBearingElement:
                  film="hd", guideClearance=50e-6, muDry=0.1, regularizingSpeed=0.1,
                  tangentialStiffnessRatio=2.0 / 3.0, stepSize=1e-6, innerRingSpeed=None, outerRingSpeed=None,
                  initialOmega=0.0, initialLoad=(0.0, 0.0), initial="analytic", sampleInterval=1e-4,
-                 show=False):
+                 mode="bodies", subSteps=4, show=False):
         self.mbs = mbs
         self.bearing = b = load_bearing(bearing)
         self.lubricant = default_lubricant() if lubricant is None else lubricant
@@ -185,16 +185,25 @@ class BallBearingElement:
         import exudyn as exu
         from exudyn.itemInterface import NodeGenericODE2, ObjectGenericODE2, SensorUserFunction, VObjectGenericODE2
 
+        if mode not in ("bodies", "fast"):
+            raise InputError(f"mode: must be 'bodies' or 'fast', got {mode!r}")
+        self.mode = mode
+        fast = mode == "fast"
+        if fast and all(spec[0] == EK.RING_FIXED for spec in self.rings_spec):
+            raise InputError("mode: the fast mode couples through ring nodes, but both rings are fixed")
+        if int(subSteps) < 1:
+            raise InputError(f"subSteps: must be >= 1, got {subSteps}")
+        self.subSteps = int(subSteps)
         nodes = []
         mass = []
         mb, ib = b.ball_mass, 0.4 * b.ball_mass * b.ball_radius ** 2
-        for j in range(z):
+        for j in range(0 if fast else z):
             nodes.append(mbs.AddNode(NodeGenericODE2(
                 referenceCoordinates=[*xb[j], 0.0, 0.0, 0.0], initialCoordinates=[0.0] * 6,
                 initialCoordinates_t=[*vb[j], *wb[j]], numberOfODE2Coordinates=6)))
             mass += [mb] * 3 + [ib] * 3
         cage_nodes = []
-        if n_cage:
+        if n_cage and not fast:
             mz = b.cage_ball_mass
             iz = 0.4 * mz * b.cage_ball_radius ** 2
             for k in range(n_cage):
@@ -207,12 +216,13 @@ class BallBearingElement:
         self._ring_kind = np.array([sp[0] for sp in self.rings_spec], np.int64)
         ring_nodes = []
         self._ring_data = np.zeros((2, EK.RD_N))
-        n = 6 * (z + n_cage)
+        n = 0 if fast else 6 * (z + n_cage)
         ref = [np.zeros(n)]
-        for j in range(z):
-            ref[0][6 * j:6 * j + 3] = xb[j]
-        for k in range(n_cage):
-            ref[0][6 * (z + k):6 * (z + k) + 3] = xc[k]
+        if not fast:
+            for j in range(z):
+                ref[0][6 * j:6 * j + 3] = xb[j]
+            for k in range(n_cage):
+                ref[0][6 * (z + k):6 * (z + k) + 3] = xc[k]
         offsets = {}
         for r, (kind, node, local, fixed) in enumerate(self.rings_spec):
             self._ring_data[r, EK.RD_OFF] = -1
@@ -234,6 +244,12 @@ class BallBearingElement:
         self._t_trial = -1.0
         self._hz = np.zeros((z, 2, 4))
         self._work = np.zeros((8, z, 3))  # xb, vb, wb, xc, vc, fb, tb, fc
+        if fast:  # the balls live here, not in Exudyn
+            self._work[0], self._work[1], self._work[2] = xb, vb, wb
+            self._work[3, :n_cage], self._work[4, :n_cage] = xc[:n_cage], vc[:n_cage]
+            self._rings0 = K.ring_poses()
+            self._fr_mean = np.zeros((2, 6))
+            self._t_int = None
         self._rings = K.ring_poses()
         self._fr = np.zeros((2, 6))
         self._glob = np.zeros(K.NGLOBAL)
@@ -246,7 +262,7 @@ class BallBearingElement:
         self._wall = 0.0
         self._status = 0.0
         obj = mbs.AddObject(ObjectGenericODE2(nodeNumbers=nodes + cage_nodes + ring_nodes, massMatrix=np.diag(mass),
-                                              forceUserFunction=self._force_uf,
+                                              forceUserFunction=self._force_uf_fast if fast else self._force_uf,
                                               visualization=VObjectGenericODE2(show=bool(show))))
         self.sensors = {}
         sensor_defs = {
@@ -301,18 +317,63 @@ class BallBearingElement:
                                self._ring_data, self._hist, self._hist_trial, t - self._t_commit, self._hz,
                                self._work, self._rings, self._fr, self._glob, self._diag, self._cage_load, want,
                                self._out)
+        self._check_worst(worst, t)
+        if want:
+            self._sample(t)
+        self._evaluations += 1
+        self._wall += time.perf_counter() - t0
+        return self._out
+
+    def _force_uf_fast(self, mbs, t, itemNumber, q, q_t):
+        """Fast mode: advance the balls in compiled sub-steps up to t, return the
+        ring reactions at t (the force at the new configuration that the
+        velocity-Verlet step needs) as generalized ring forces."""
+        t0 = time.perf_counter()
+        q = np.asarray(q, float)
+        q_t = np.asarray(q_t, float)
+        for r in (0, 1):
+            if self.speed[r] is not None:
+                self._ring_data[r, EK.RD_SPIN] = self.speed[r](t)
+        EK.ring_poses_from(q, q_t, self.ref, self._ring_kind, self._ring_data, self._rings)
+        w = self._work
+        if self._t_int is None:
+            K.forces(self.params, self.table, w[0], w[1], w[2], w[3], w[4], self._rings, self._hist, self._hist,
+                     self.scenario.dt, self._hz, w[5], w[6], w[7], self._fr, self._glob, self._diag, self._cage_load,
+                     False)
+            self._rings0[:] = self._rings
+            self._t_int = t
+        elif t > self._t_int + 1e-15:
+            n_sub = max(1, int(round((t - self._t_int) / self.scenario.dt)))
+            want = t >= self._next_sample - 1e-12
+            worst = EK.advance_balls(n_sub, (t - self._t_int) / n_sub, self.params, self.table, w, self._rings0,
+                                     self._rings, self._rings0, self._hist, self._hz, self._fr, self._fr_mean,
+                                     self._glob, self._diag, self._cage_load, want)
+            self._rings0[:] = self._rings
+            self._t_int = t
+            self._check_worst(worst, t)
+            if want:
+                self._sample(t)
+        elif t < self._t_int - 1e-15:
+            raise RuntimeError("mode: the fast mode integrates the balls forward in time and needs a solver with "
+                               "one force evaluation per step (VelocityVerlet or ExplicitEuler)")
+        out = self._out
+        out[:] = 0.0
+        EK.ring_generalized_forces(q, self.ref, self._ring_kind, self._ring_data, self._rings, self._fr, out)
+        self._evaluations += 1
+        self._wall += time.perf_counter() - t0
+        return out
+
+    def _check_worst(self, worst, t):
         if not math.isfinite(worst) or worst > self.params[K.P_MAX_OVERLAP]:
             raise RuntimeError(
                 f"stepSize: the bearing state became non-finite or runaway at t = {t:.6g} s; the stable-step "
                 f"estimate is {self.stable.dt:.3g} s (limited by the {self.stable.limited_by} contact): reduce "
                 "the solver step")
-        if want:
-            self._store(t)
-            self._next_sample += self.sampleInterval * max(1.0, math.floor((t - self._next_sample)
-                                                                           / self.sampleInterval) + 1.0)
-        self._evaluations += 1
-        self._wall += time.perf_counter() - t0
-        return self._out
+
+    def _sample(self, t):
+        self._store(t)
+        self._next_sample += self.sampleInterval * max(1.0, math.floor((t - self._next_sample)
+                                                                       / self.sampleInterval) + 1.0)
 
     def _store(self, t):
         s = self._samples
@@ -334,13 +395,13 @@ class BallBearingElement:
 
     # -- user-facing ------------------------------------------------------
     def SimulationSettings(self, endTime, stepSize=None, solverType="VelocityVerlet"):
-        """Recommended explicit settings: fixed step ``stepSize`` (default the
-        element's), no solution file, sensors written every sample interval,
-        mass-matrix inverse per body."""
+        """Recommended explicit settings: fixed step ``stepSize`` (default: the
+        element's step, times ``subSteps`` in the fast mode), no solution file,
+        sensors written every sample interval, sparse linear solver."""
         exu = self._exu
         ss = exu.SimulationSettings()
-        h = float(stepSize or self.scenario.dt)
-        if h > self.stable.dt:
+        h = float(stepSize or self.scenario.dt * (self.subSteps if self.mode == "fast" else 1))
+        if h > self.stable.dt and self.mode == "bodies":
             import warnings
 
             warnings.warn(f"stepSize: {h:.3g} s exceeds the stable-step estimate {self.stable.dt:.3g} s "

@@ -17,7 +17,7 @@ import math
 import numpy as np
 
 from .._jit import kernel
-from ..reference.kernels import RING_N, forces
+from ..reference.kernels import P_CAGE, P_IB, P_MB, P_MZ, RING_N, forces, kick_drift
 
 #: Ring couplings: fixed in space (ground), node with position coordinates
 #: only (mass point: axes parallel to the world, prescribed spin), rigid-body
@@ -131,6 +131,49 @@ def element_rhs(q, q_t, ref, p, table, z, n_cage, ring_kind, ring_data, hist, hi
         for d in range(3):
             xc[k, d] = ref[b + d] + q[b + d]
             vc[k, d] = q_t[b + d]
+    ring_poses_from(q, q_t, ref, ring_kind, ring_data, rings)
+    worst = forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb, tb, fc, fr, glob,
+                   diag, cage_load, want)
+    out[:] = 0.0
+    for j in range(z):
+        for d in range(3):
+            out[6 * j + d] = fb[j, d]
+            out[6 * j + 3 + d] = tb[j, d]
+    for k in range(n_cage):
+        for d in range(3):
+            out[6 * (z + k) + d] = fc[k, d]
+    ring_generalized_forces(q, ref, ring_kind, ring_data, rings, fr, out)
+    return worst
+
+
+@kernel
+def ring_generalized_forces(q, ref, ring_kind, ring_data, rings, fr, out):
+    """Ring reactions ``fr`` (force, torque about the ring centre) as generalized
+    forces of the ring-node coordinates in ``out``: the force on the position
+    coordinates, G^T times the torque about the node point on Tait-Bryan
+    rotation coordinates."""
+    for r in range(2):
+        off = int(ring_data[r, RD_OFF])
+        if off < 0 or ring_kind[r] == RING_FIXED:
+            continue
+        for d in range(3):
+            out[off + d] += fr[r, d]
+        if ring_kind[r] == RING_RXYZ:
+            o0 = rings[r, 0] - (ref[off] + q[off])
+            o1 = rings[r, 1] - (ref[off + 1] + q[off + 1])
+            o2 = rings[r, 2] - (ref[off + 2] + q[off + 2])
+            t0 = fr[r, 3] + o1 * fr[r, 2] - o2 * fr[r, 1]
+            t1 = fr[r, 4] + o2 * fr[r, 0] - o0 * fr[r, 2]
+            t2 = fr[r, 5] + o0 * fr[r, 1] - o1 * fr[r, 0]
+            g = _g_xyz(ref[off + 3] + q[off + 3], ref[off + 4] + q[off + 4])
+            out[off + 3] += g[0] * t0 + g[3] * t1 + g[6] * t2
+            out[off + 4] += g[1] * t0 + g[4] * t1 + g[7] * t2
+            out[off + 5] += g[2] * t0 + g[5] * t1 + g[8] * t2
+
+
+@kernel
+def ring_poses_from(q, q_t, ref, ring_kind, ring_data, rings):
+    """Both ring poses from the object coordinates (see :func:`ring_pose`)."""
     rq = np.zeros(6)
     rqt = np.zeros(6)
     for r in range(2):
@@ -142,32 +185,48 @@ def element_rhs(q, q_t, ref, p, table, z, n_cage, ring_kind, ring_data, hist, hi
                 rqt[d] = q_t[off + d]
         ring_pose(ring_kind[r], rq, rqt, ring_data[r, RD_LOCAL:RD_LOCAL + 3],
                   ring_data[r, RD_FIXED:RD_FIXED + 12], ring_data[r, RD_SPIN], rings, r)
-    worst = forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb, tb, fc, fr, glob,
-                   diag, cage_load, want)
-    out[:] = 0.0
-    for j in range(z):
-        for d in range(3):
-            out[6 * j + d] = fb[j, d]
-            out[6 * j + 3 + d] = tb[j, d]
-    for k in range(n_cage):
-        for d in range(3):
-            out[6 * (z + k) + d] = fc[k, d]
-    for r in range(2):
-        off = int(ring_data[r, RD_OFF])
-        if off < 0 or ring_kind[r] == RING_FIXED:
-            continue
-        for d in range(3):
-            out[off + d] = fr[r, d]
-        if ring_kind[r] == RING_RXYZ:
-            # torque about the node point: about the ring centre plus (centre - node) x F
-            o0 = rings[r, 0] - (ref[off] + q[off])
-            o1 = rings[r, 1] - (ref[off + 1] + q[off + 1])
-            o2 = rings[r, 2] - (ref[off + 2] + q[off + 2])
-            t0 = fr[r, 3] + o1 * fr[r, 2] - o2 * fr[r, 1]
-            t1 = fr[r, 4] + o2 * fr[r, 0] - o0 * fr[r, 2]
-            t2 = fr[r, 5] + o0 * fr[r, 1] - o1 * fr[r, 0]
-            g = _g_xyz(ref[off + 3] + q[off + 3], ref[off + 4] + q[off + 4])
-            out[off + 3] = g[0] * t0 + g[3] * t1 + g[6] * t2
-            out[off + 4] = g[1] * t0 + g[4] * t1 + g[7] * t2
-            out[off + 5] = g[2] * t0 + g[5] * t1 + g[8] * t2
+
+
+@kernel
+def advance_balls(n_sub, dt, p, table, work, rings0, rings1, rings, hist, hz, fr, fr_mean, glob, diag, cage_load,
+                  want):
+    """Fast mode: integrate balls and cage balls over ``n_sub`` velocity-Verlet
+    sub-steps of ``dt`` while the ring poses move linearly from ``rings0`` to
+    ``rings1`` (positions and velocities; rotation and angular velocity of
+    ``rings1``). ``work`` holds the ball state and the forces of the last
+    sub-step on entry and exit; ``fr_mean`` gets the ring reactions averaged
+    over the sub-steps (the impulse the rings receive over the interval).
+    Diagnostics of the last sub-step when ``want``. Returns the largest
+    overlap / R_b."""
+    z = work.shape[1]
+    xb = work[0]
+    vb = work[1]
+    wb = work[2]
+    xc = work[3]
+    vc = work[4]
+    fb = work[5]
+    tb = work[6]
+    fc = work[7]
+    inv_mb = 1.0 / p[P_MB]
+    inv_ib = 1.0 / p[P_IB]
+    inv_mz = 1.0 / p[P_MZ] if p[P_CAGE] > 0.5 else 0.0
+    h = 0.5 * dt
+    fr_mean[:, :] = 0.0
+    worst = 0.0
+    for i in range(n_sub):
+        kick_drift(h, dt, xb, vb, wb, xc, vc, fb, tb, fc, inv_mb, inv_ib, inv_mz)
+        s = (i + 1.0) / n_sub
+        for r in range(2):
+            for k in range(6):
+                rings[r, k] = rings0[r, k] + s * (rings1[r, k] - rings0[r, k])
+            for k in range(6, RING_N):
+                rings[r, k] = rings1[r, k]
+        w = forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist, dt, hz, fb, tb, fc, fr, glob, diag,
+                   cage_load, want and i == n_sub - 1)
+        if w > worst:
+            worst = w
+        kick_drift(h, 0.0, xb, vb, wb, xc, vc, fb, tb, fc, inv_mb, inv_ib, inv_mz)
+        for r in range(2):
+            for k in range(6):
+                fr_mean[r, k] += fr[r, k] / n_sub
     return worst

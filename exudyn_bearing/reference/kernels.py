@@ -458,6 +458,18 @@ def _store(k, t, glob, diag, cage_load, xb, vb, wb, xc, vc, ring,
 
 
 @kernel
+def kick_drift(h, dt, xb, vb, wb, xc, vc, fb, tb, fc, inv_mb, inv_ib, inv_mz):
+    """Velocity-Verlet half kick of balls and cage balls by h, then a drift by dt."""
+    for j in range(xb.shape[0]):
+        for d in range(3):
+            vb[j, d] += h * fb[j, d] * inv_mb
+            wb[j, d] += h * tb[j, d] * inv_ib
+            xb[j, d] += dt * vb[j, d]
+            vc[j, d] += h * fc[j, d] * inv_mz
+            xc[j, d] += dt * vc[j, d]
+
+
+@kernel
 def run_verlet(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring,
                sample_every, step0, s_t, s_glob, s_diag, s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring):
     """Velocity-Verlet (the DEM papers' scheme) for ``n_steps`` steps from t0.
@@ -483,13 +495,7 @@ def run_verlet(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb
     n_samp = 0
     t = t0
     for step in range(n_steps):
-        for j in range(z):
-            for d in range(3):
-                vb[j, d] += h * fb[j, d] * inv_mb
-                wb[j, d] += h * tb[j, d] * inv_ib
-                xb[j, d] += dt * vb[j, d]
-                vc[j, d] += h * fc[j, d] * inv_mz
-                xc[j, d] += dt * vc[j, d]
+        kick_drift(h, dt, xb, vb, wb, xc, vc, fb, tb, fc, inv_mb, inv_ib, inv_mz)
         for d in range(3):
             ring[3 + d] += h * fring[d] * inv_mr
             ring[d] += dt * ring[3 + d]
@@ -500,11 +506,7 @@ def run_verlet(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb
         worst = forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist, dt, hz, fb, tb, fc, fr, glob, diag,
                        cage_load, want)
         _inner_ring_force(p, fr, fring)
-        for j in range(z):
-            for d in range(3):
-                vb[j, d] += h * fb[j, d] * inv_mb
-                wb[j, d] += h * tb[j, d] * inv_ib
-                vc[j, d] += h * fc[j, d] * inv_mz
+        kick_drift(h, 0.0, xb, vb, wb, xc, vc, fb, tb, fc, inv_mb, inv_ib, inv_mz)
         for d in range(3):
             ring[3 + d] += h * fring[d] * inv_mr
         if want:
