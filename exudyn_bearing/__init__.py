@@ -9,7 +9,15 @@ from .data import (BallBearing, InputError, Lubricant, Material, catalog, get_be
 from .scenario import Scenario
 from .simulate import simulate
 
+
+def CreateBallBearing(mbs, bearing, markerInnerRing, markerOuterRing, **options):
+    """Add a lubricated DEM ball bearing between two ring markers of an Exudyn
+    ``mbs`` (see :func:`exudyn_bearing.element.CreateBallBearing`)."""
+    from .element import CreateBallBearing as create
+
+    return create(mbs, bearing, markerInnerRing, markerOuterRing, **options)
+
 __version__ = "0.1.0"
 
-__all__ = ["BallBearing", "InputError", "Lubricant", "Material", "Scenario", "catalog", "get_bearing",
+__all__ = ["CreateBallBearing", "BallBearing", "InputError", "Lubricant", "Material", "Scenario", "catalog", "get_bearing",
            "load_bearing", "lubricants", "materials", "simulate"]

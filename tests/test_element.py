@@ -138,3 +138,28 @@ def test_rk44_with_regularized_friction_matches_verlet():
     b = eb.simulate("6208", eb.Scenario(dt=1e-6, integrator="verlet", **kw), engine="reference").summary()
     for k in ("q_max_inner", "cage_speed"):
         assert a[k] == pytest.approx(b[k], rel=5e-3), k
+
+
+def test_fast_mode_matches_the_reference_engine():
+    # balls integrated in compiled sub-steps (3 per Exudyn step), only ring reactions cross
+    from exudyn_bearing.element.engine import ExudynEngine
+
+    sc = eb.Scenario(Fr=3000.0, omega=500.0, t_end=0.02, dt=5e-6, tangential="implicit", sample_dt=1e-4)
+    fast = ExudynEngine("6208", sc, mode="fast", sub_steps=3).run().summary()
+    ref = eb.simulate("6208", sc).summary()
+    for k in KEYS:
+        assert fast[k] == pytest.approx(ref[k], rel=0.01), k
+    assert fast["steps"] == 1333  # Exudyn steps of 15 us
+
+
+def test_fast_mode_time_must_advance():
+    # the fast mode integrates the balls forward; an evaluation back in time is refused
+    from exudyn_bearing.element.engine import ExudynEngine
+
+    eng = ExudynEngine("6208", eb.Scenario(t_end=0.001, dt=5e-6), mode="fast")
+    el = eng.element
+    q = np.zeros(3)
+    el._force_uf_fast(eng.mbs, 1e-4, 0, q, q)
+    el._force_uf_fast(eng.mbs, 2e-4, 0, q, q)
+    with pytest.raises(RuntimeError, match="^mode"):
+        el._force_uf_fast(eng.mbs, 1e-4, 0, q, q)

@@ -248,6 +248,7 @@ class BallBearingElement:
             self._work[0], self._work[1], self._work[2] = xb, vb, wb
             self._work[3, :n_cage], self._work[4, :n_cage] = xc[:n_cage], vc[:n_cage]
             self._rings0 = K.ring_poses()
+            self._rings_sub = K.ring_poses()
             self._fr_mean = np.zeros((2, 6))
             self._t_int = None
         self._rings = K.ring_poses()
@@ -346,7 +347,7 @@ class BallBearingElement:
             n_sub = max(1, int(round((t - self._t_int) / self.scenario.dt)))
             want = t >= self._next_sample - 1e-12
             worst = EK.advance_balls(n_sub, (t - self._t_int) / n_sub, self.params, self.table, w, self._rings0,
-                                     self._rings, self._rings0, self._hist, self._hz, self._fr, self._fr_mean,
+                                     self._rings, self._rings_sub, self._hist, self._hz, self._fr, self._fr_mean,
                                      self._glob, self._diag, self._cage_load, want)
             self._rings0[:] = self._rings
             self._t_int = t
@@ -381,9 +382,17 @@ class BallBearingElement:
         s["glob"].append(self._glob.copy())
         s["diag"].append(self._diag.copy())
         s["cage_load"].append(self._cage_load.copy())
-        for k, i in (("xb", 0), ("vb", 1), ("wb", 2), ("xc", 3), ("vc", 4)):
-            s[k].append(self._work[i].copy())
-        s["ring"].append(np.concatenate([self._rings[0, :3], self._rings[0, 3:6]]))
+        # positions and velocities in the outer-ring frame (as the reference engine reports them)
+        x1, v1 = self._rings[1, :3], self._rings[1, 3:6]
+        a1 = self._rings[1, 6:15].reshape(3, 3)
+        w1 = self._rings[1, 15:18]
+        w = self._work
+        for kx, kv, ix in (("xb", "vb", 0), ("xc", "vc", 3)):
+            d = w[ix] - x1
+            s[kx].append(d @ a1)
+            s[kv].append((w[ix + 1] - v1 - np.cross(w1, d)) @ a1)
+        s["wb"].append((w[2] - w1) @ a1)
+        s["ring"].append(np.concatenate([(self._rings[0, :3] - x1) @ a1, (self._rings[0, 3:6] - v1) @ a1]))
 
     @staticmethod
     def _orbital(x, v):
@@ -419,7 +428,9 @@ class BallBearingElement:
         return ss
 
     def results(self, wall_s=None, steps=None) -> Results:
-        """Sampled series of the run (the same Results as the reference engine)."""
+        """Sampled series of the run (the same Results as the reference engine;
+        positions, velocities and ring displacement in the outer-ring frame,
+        ball angular velocity relative to the outer ring)."""
         data = {k: np.array(v) for k, v in self._samples.items()}
         if len(data["t"]) == 0:
             raise RuntimeError("results: no samples yet; run mbs.SolveDynamic first")

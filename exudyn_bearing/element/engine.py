@@ -25,7 +25,8 @@ class ExudynEngine:
 
     name = "exudyn"
 
-    def __init__(self, bearing, scenario: Scenario, lubricant: Lubricant | None = None):
+    def __init__(self, bearing, scenario: Scenario, lubricant: Lubricant | None = None, mode: str = "bodies",
+                 sub_steps: int = 3):
         import exudyn as exu
         from exudyn.itemInterface import (LoadForceVector, MarkerBodyRigid, MarkerNodePosition, NodePoint,
                                           ObjectGround, ObjectMassPoint)
@@ -52,14 +53,15 @@ class ExudynEngine:
             friction=s.friction, tangential=s.tangential, hertzModel=s.hertz, film=s.film,
             guideClearance=s.guide_clearance, muDry=s.mu_dry, regularizingSpeed=s.regularizing_speed,
             tangentialStiffnessRatio=s.tangential_stiffness_ratio, stepSize=s.dt, innerRingSpeed=s.omega_at,
-            initialOmega=s.omega, initialLoad=(s.Fr, s.Fa), initial=s.initial, sampleInterval=s.sample_dt)
+            initialOmega=s.omega, initialLoad=(s.Fr, s.Fa), initial=s.initial, sampleInterval=s.sample_dt,
+            mode=mode, subSteps=sub_steps)
         # the reference engine's initial spin follows omega(0); the element took initialOmega
         mbs.Assemble()
         self.stable = self.element.stable
 
     def run(self, progress=None):
         s = self.scenario
-        settings = self.element.SimulationSettings(s.t_end, s.dt, SOLVERS[s.integrator])
+        settings = self.element.SimulationSettings(s.t_end, solverType=SOLVERS[s.integrator])
         if progress:
             settings.timeIntegration.verboseMode = 1
         wall0 = time.perf_counter()

@@ -368,23 +368,46 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb,
         if want and not cage:
             cage_load[k, 1] = 0.0
         if cage:
-            # cage ball k in its guide torus (tube-centre circle r_p, z = 0, tube
-            # radius R_z + clearance): frictionless Hertz, R_eq = R_z, critical damping
+            # cage ball k in its guide torus, fixed to the outer ring (ring 1): tube-
+            # centre circle r_p in the ring's radial plane, tube radius R_z + clearance;
+            # frictionless Hertz, R_eq = R_z, critical damping
             rz = p[P_RZ]
             free = p[P_RGUIDE] - rz
-            dr = math.sqrt(xc[k, 0] * xc[k, 0] + xc[k, 1] * xc[k, 1]) - p[P_RP]
-            if dr * dr + xc[k, 2] * xc[k, 2] > free * free:
-                delta, nx, ny, nz, _ca, _sa, _rc = _groove_geometry(xc[k, 0], xc[k, 1], xc[k, 2], p[P_RP],
-                                                                    0.0, p[P_RGUIDE], rz, False)
+            dxw = xc[k, 0] - rings[1, 0]
+            dyw = xc[k, 1] - rings[1, 1]
+            dzw = xc[k, 2] - rings[1, 2]
+            a00, a01, a02 = rings[1, 6], rings[1, 7], rings[1, 8]
+            a10, a11, a12 = rings[1, 9], rings[1, 10], rings[1, 11]
+            a20, a21, a22 = rings[1, 12], rings[1, 13], rings[1, 14]
+            cx = a00 * dxw + a10 * dyw + a20 * dzw
+            cy = a01 * dxw + a11 * dyw + a21 * dzw
+            cz = a02 * dxw + a12 * dyw + a22 * dzw
+            dr = math.sqrt(cx * cx + cy * cy) - p[P_RP]
+            if dr * dr + cz * cz > free * free:
+                delta, nlx, nly, nlz, _ca, _sa, _rc = _groove_geometry(cx, cy, cz, p[P_RP], 0.0, p[P_RGUIDE],
+                                                                       rz, False)
                 if delta > 0.0:
+                    nx = a00 * nlx + a01 * nly + a02 * nlz
+                    ny = a10 * nlx + a11 * nly + a12 * nlz
+                    nz = a20 * nlx + a21 * nly + a22 * nlz
+                    ex, ey, ez = _cross(rings[1, 15], rings[1, 16], rings[1, 17], dxw, dyw, dzw)
+                    vn = ((vc[k, 0] - rings[1, 3] - ex) * nx + (vc[k, 1] - rings[1, 4] - ey) * ny
+                          + (vc[k, 2] - rings[1, 5] - ez) * nz)
                     sq = math.sqrt(delta)
                     kst = p[P_K_GUIDE]
                     c = _damping_critical(p[P_MZ], 1.5 * kst * sq)
-                    f = kst * delta * sq + c * (vc[k, 0] * nx + vc[k, 1] * ny + vc[k, 2] * nz)
+                    f = kst * delta * sq + c * vn
                     if f > 0.0:
                         fc[k, 0] -= f * nx
                         fc[k, 1] -= f * ny
                         fc[k, 2] -= f * nz
+                        fr[1, 0] += f * nx
+                        fr[1, 1] += f * ny
+                        fr[1, 2] += f * nz
+                        mx_, my_, mz_ = _cross(dxw, dyw, dzw, f * nx, f * ny, f * nz)
+                        fr[1, 3] += mx_
+                        fr[1, 4] += my_
+                        fr[1, 5] += mz_
     if want:
         # inner ring: spin about its axis, force of the balls, torque about its axis
         ex, ey, ez = rings[0, 8], rings[0, 11], rings[0, 14]
