@@ -4,10 +4,49 @@
 without recompiling) and the fast-math flags that keep IEEE NaN and inf
 semantics (no ``nnan``/``ninf``: the kernels rely on NaN checks and on
 infinite squeeze-film damping at zero film).
+
+Numba invalidates a cached function only when its own source file changes,
+not when a kernel it calls (in another file) changes. So that a stale
+compiled copy of the shared contact kernel can never survive an edit or an
+upgrade, :func:`_drop_stale_caches` hashes all kernel sources at import and
+clears the package's numba cache files when the hash differs from the one
+stored beside them.
 """
+from __future__ import annotations
+
+import hashlib
+from pathlib import Path
+
 from numba import njit
 
 FASTMATH = {"contract", "arcp", "reassoc", "afn"}
+
+_PACKAGE = Path(__file__).resolve().parent
+
+
+def _drop_stale_caches() -> None:
+    sources = sorted(_PACKAGE.rglob("*.py"))
+    digest = hashlib.sha256()
+    for path in sources:
+        try:
+            digest.update(path.read_bytes())
+        except OSError:
+            return
+    stamp = _PACKAGE / "__pycache__" / "kernels.sha256"
+    value = digest.hexdigest()
+    try:
+        if stamp.exists() and stamp.read_text() == value:
+            return
+        for pattern in ("*.nbi", "*.nbc"):
+            for f in _PACKAGE.rglob(pattern):
+                f.unlink(missing_ok=True)
+        stamp.parent.mkdir(exist_ok=True)
+        stamp.write_text(value)
+    except OSError:  # read-only install: numba falls back to its own cache checks
+        pass
+
+
+_drop_stale_caches()
 
 
 def kernel(fn=None, **kw):
