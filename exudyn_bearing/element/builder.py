@@ -335,34 +335,35 @@ class BallBearingElement:
         for r in (0, 1):
             if self.speed[r] is not None:
                 self._ring_data[r, EK.RD_SPIN] = self.speed[r](t)
-        EK.ring_poses_from(q, q_t, self.ref, self._ring_kind, self._ring_data, self._rings)
         w = self._work
         if self._t_int is None:
+            # first evaluation: forces at the initial state, nothing to integrate yet
+            EK.ring_poses_from(q, q_t, self.ref, self._ring_kind, self._ring_data, self._rings)
             K.forces(self.params, self.table, w[0], w[1], w[2], w[3], w[4], self._rings, self._hist, self._hist,
                      self.scenario.dt, self._hz, w[5], w[6], w[7], self._fr, self._glob, self._diag, self._cage_load,
                      False)
-            self._rings0[:] = self._rings
             self._t_int = t
+            n_sub, dt, want = 0, 0.0, False
         elif t > self._t_int + 1e-15:
             n_sub = max(1, int(round((t - self._t_int) / self.scenario.dt)))
+            dt = (t - self._t_int) / n_sub
             want = t >= self._next_sample - 1e-12
-            worst = EK.advance_balls(n_sub, (t - self._t_int) / n_sub, self.params, self.table, w, self._rings0,
-                                     self._rings, self._rings_sub, self._hist, self._hz, self._fr, self._fr_mean,
-                                     self._glob, self._diag, self._cage_load, want)
-            self._rings0[:] = self._rings
+        elif t < self._t_int - 1e-15:
+            raise RuntimeError("mode: the fast mode integrates the balls forward in time and needs a solver with "
+                               "one force evaluation per step (VelocityVerlet or ExplicitEuler)")
+        else:
+            n_sub, dt, want = 0, 0.0, False
+        worst = EK.fast_step(q, q_t, self.ref, self.params, self.table, self._ring_kind, self._ring_data, n_sub, dt,
+                             w, self._rings0, self._rings, self._rings_sub, self._hist, self._hz, self._fr,
+                             self._fr_mean, self._glob, self._diag, self._cage_load, want, self._out)
+        if n_sub:
             self._t_int = t
             self._check_worst(worst, t)
             if want:
                 self._sample(t)
-        elif t < self._t_int - 1e-15:
-            raise RuntimeError("mode: the fast mode integrates the balls forward in time and needs a solver with "
-                               "one force evaluation per step (VelocityVerlet or ExplicitEuler)")
-        out = self._out
-        out[:] = 0.0
-        EK.ring_generalized_forces(q, self.ref, self._ring_kind, self._ring_data, self._rings, self._fr, out)
         self._evaluations += 1
         self._wall += time.perf_counter() - t0
-        return out
+        return self._out
 
     def _check_worst(self, worst, t):
         if not math.isfinite(worst) or worst > self.params[K.P_MAX_OVERLAP]:

@@ -230,3 +230,23 @@ def advance_balls(n_sub, dt, p, table, work, rings0, rings1, rings, hist, hz, fr
             for k in range(6):
                 fr_mean[r, k] += fr[r, k] / n_sub
     return worst
+
+
+@kernel
+def fast_step(q, q_t, ref, p, table, ring_kind, ring_data, n_sub, dt, work, rings0, rings, rings_sub, hist, hz,
+              fr, fr_mean, glob, diag, cage_load, want, out):
+    """Fast mode, one Exudyn evaluation in one compiled call: ring poses from
+    the object coordinates, ``n_sub`` ball sub-steps from ``rings0`` to the
+    new poses (none when ``n_sub`` is 0), ring reactions at the new poses
+    as generalized forces ``out``. Returns the largest overlap / R_b."""
+    ring_poses_from(q, q_t, ref, ring_kind, ring_data, rings)
+    worst = 0.0
+    if n_sub > 0:
+        worst = advance_balls(n_sub, dt, p, table, work, rings0, rings, rings_sub, hist, hz, fr, fr_mean, glob,
+                              diag, cage_load, want)
+    for r in range(2):
+        for k in range(RING_N):
+            rings0[r, k] = rings[r, k]
+    out[:] = 0.0
+    ring_generalized_forces(q, ref, ring_kind, ring_data, rings, fr, out)
+    return worst

@@ -1,0 +1,159 @@
+"""Speed of the Exudyn bearing element against the reference core and Exudyn's built-in bearing.
+
+All measured in one run on one core (medians of ``--repeat``):
+
+* reference: the numba DEM core on the 6208 scene (F_r = 3000 N, 500 rad/s,
+  cage, lubrication, Cundall-Strack history, analytic start), dt = 5 us;
+* element, body mode: the same scene built in Exudyn (balls as Exudyn
+  nodes), VelocityVerlet at 5 us;
+* element, fast mode: balls integrated in compiled sub-steps (3 x 5 us per
+  Exudyn step);
+* Exudyn's ``exudyn.machines.CreateBallBearing`` on a 6208-sized bearing
+  (GetBallBearingData: 80 x 40 x 18 mm, 9 balls of 6.3 mm, grooves 6.552 mm)
+  with the same Hertz stiffness (k = mean of our exact K_inner and K_outer,
+  exponent 1.5), damping 200 N s/m, mu = 0.1, cage springs, inner ring a free
+  rigid body spun at 500 rad/s, the load ramped over 5 ms (a sudden load
+  stops its solver), GeneralizedAlpha: the largest of the tried steps whose
+  cage speed is within 0.5 % of the finest step.
+
+Errors of our engines: q_max_inner and cage_speed against the reference
+engine at a quarter of the step.
+
+    python validation/bench_element.py [--t-end 0.05] [--repeat 3]
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import time
+import warnings
+from pathlib import Path
+
+import numpy as np
+
+import exudyn as exu
+import exudyn_bearing as eb
+from exudyn_bearing.element.engine import ExudynEngine
+from exudyn_bearing.physics.load_distribution import race_stiffness
+from exudyn_bearing.reference import ReferenceEngine
+
+SCENE = dict(Fr=3000.0, omega=500.0, sample_dt=1e-3)
+
+
+def timed(fn, repeat):
+    walls, out = [], None
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        out = fn()
+        walls.append(time.perf_counter() - t0)
+    return float(np.median(walls)), out
+
+
+def builtin_run(t_end, h, k):
+    """Exudyn's built-in ball bearing; returns (wall, cage speed at the end, ok)."""
+    import exudyn.machines as mach
+    from exudyn.itemInterface import LoadForceVector, MarkerBodyRigid, ObjectGround
+    from exudyn.rigidBodyUtilities import InertiaCylinder
+
+    bd = mach.GetBallBearingData(axis=[0, 0, 1], outsideDiameter=0.08, boreDiameter=0.04, width=0.018, nBalls=9,
+                                 radiusBalls=6.3e-3, innerGrooveRadius=6.552e-3, outerGrooveRadius=6.552e-3)
+    SC = exu.SystemContainer()
+    mbs = SC.AddSystem()
+    ground = mbs.AddObject(ObjectGround())
+    m_out = mbs.AddMarker(MarkerBodyRigid(bodyNumber=ground, localPosition=[0, 0, 0]))
+    inner = mbs.CreateRigidBody(referencePosition=[0, 0, 0], initialAngularVelocity=[0, 0, 500.0],
+                                inertia=InertiaCylinder(density=7850.0, length=0.018, outerRadius=0.024,
+                                                        innerRadius=0.02, axis=2))
+    m_in = mbs.AddMarker(MarkerBodyRigid(bodyNumber=inner, localPosition=[0, 0, 0]))
+    mbs.AddLoad(LoadForceVector(markerNumber=m_in, loadVector=[3000.0, 0, 0],
+                                loadVectorUserFunction=lambda mbs_, t, load: [3000.0 * min(t / 0.005, 1.0), 0, 0]))
+    items = mach.CreateBallBearing(mbs, bd, m_in, m_out, densityBalls=7850.0, densityCage=2000.0,
+                                   cageInitialAngularVelocity=[0, 0, 500.0 * (1 - 6.3 / 30.0) / 2],
+                                   springStiffnessCage=1e6, springDampingCage=100.0,
+                                   contactParametersRingBalls={"contactStiffness": k, "contactDamping": 200.0,
+                                                               "dynamicFriction": 0.1,
+                                                               "contactStiffnessExponent": 1.5})
+    mbs.Assemble()
+    ss = exu.SimulationSettings()
+    ss.timeIntegration.numberOfSteps = int(round(t_end / h))
+    ss.timeIntegration.endTime = t_end
+    ss.timeIntegration.verboseMode = 0
+    ss.solution.file.write = False
+    ss.timeIntegration.newton.useModifiedNewton = True
+    ss.timeIntegration.discontinuous.maxIterations = 1
+    ss.timeIntegration.generalizedAlpha.spectralRadius = 0.8
+    printing = exu.config.printToConsole
+    exu.config.printToConsole = False
+    t0 = time.perf_counter()
+    try:
+        mbs.SolveDynamic(ss, solverType=exu.DynamicSolverType.GeneralizedAlpha)
+        ok = True
+    except Exception:
+        ok = False
+    finally:
+        exu.config.printToConsole = printing
+    wall = time.perf_counter() - t0
+    cage = mbs.GetObjectOutputBody(items["objectCage"], exu.OutputVariableType.AngularVelocity, [0, 0, 0])[2]
+    return wall, float(cage), ok
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--t-end", type=float, default=0.05)
+    ap.add_argument("--repeat", type=int, default=3)
+    ap.add_argument("--out", default=str(Path(__file__).parent / "out"))
+    args = ap.parse_args(argv)
+    T = args.t_end
+    warnings.simplefilter("ignore")
+    sc = eb.Scenario(t_end=T, dt=5e-6, **SCENE)
+    fine = ReferenceEngine("6208", sc.replace(dt=1.25e-6)).run().summary()
+    # warm-up (compilation)
+    ReferenceEngine("6208", sc.replace(t_end=1e-3)).run()
+    ExudynEngine("6208", sc.replace(t_end=1e-3)).run()
+    ExudynEngine("6208", sc.replace(t_end=1e-3), mode="fast").run()
+    rows = {}
+    runs = {
+        "reference, dt 5 us": lambda: ReferenceEngine("6208", sc).run(),
+        "element body mode, VelocityVerlet 5 us": lambda: ExudynEngine("6208", sc).run(),
+        "element fast mode, 3 x 5 us sub-steps": lambda: ExudynEngine("6208", sc, mode="fast", sub_steps=3).run(),
+    }
+    print(f"6208, Fr = 3000 N, 500 rad/s, cage + lubrication + history, T = {T} s, median of {args.repeat}")
+    print(f"{'engine':42s} {'wall/sim s':>10s} {'err q_in %':>10s} {'err cage %':>10s}")
+    for name, fn in runs.items():
+        wall, res = timed(fn, args.repeat)
+        s = res.summary()
+        rows[name] = dict(wall_per_sim_s=wall / T, err_q_max_inner=abs(s["q_max_inner"] / fine["q_max_inner"] - 1),
+                          err_cage_speed=abs(s["cage_speed"] / fine["cage_speed"] - 1))
+        print(f"{name:42s} {wall / T:10.3f} {100 * rows[name]['err_q_max_inner']:10.3f} "
+              f"{100 * rows[name]['err_cage_speed']:10.3f}")
+    ki, ko, _ = race_stiffness(eb.catalog["6208"])
+    k = 0.5 * (ki + ko)
+    t_b = 0.02
+    finest = builtin_run(t_b, 5e-6, k)
+    best = None
+    for h in (4e-5, 2e-5, 1e-5):
+        wall, cage, ok = builtin_run(t_b, h, k)
+        err = abs(cage / finest[1] - 1) if ok else float("nan")
+        print(f"built-in CreateBallBearing, GeneralizedAlpha h = {h:g}: ok = {ok}, wall/sim {wall / t_b:.2f} s, "
+              f"cage error against h = 5e-6: {100 * err:.3f} %")
+        if ok and err <= 5e-3 and (best is None or wall < best[0]):
+            best = (wall, h, err)
+    if best is None:
+        print("built-in bearing: no tried step met 0.5 %")
+        ratio = float("nan")
+    else:
+        rows["built-in CreateBallBearing"] = dict(wall_per_sim_s=best[0] / t_b, h=best[1], err_cage_speed=best[2])
+        ratio = rows["element body mode, VelocityVerlet 5 us"]["wall_per_sim_s"] / (best[0] / t_b)
+    fast_ratio = (rows["element fast mode, 3 x 5 us sub-steps"]["wall_per_sim_s"]
+                  / rows["reference, dt 5 us"]["wall_per_sim_s"])
+    print(f"ratio body mode / built-in bearing (best step): {ratio:.3f} (target <= 0.5)")
+    print(f"ratio fast mode / reference core: {fast_ratio:.2f} (target <= 2)")
+    out = Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    (out / "bench_element.json").write_text(json.dumps(dict(rows=rows, ratio_body_builtin=ratio,
+                                                            ratio_fast_reference=fast_ratio, t_end=T,
+                                                            k_builtin=k), indent=2))
+
+
+if __name__ == "__main__":
+    main()
