@@ -6,7 +6,7 @@ JSON summary) and the figures of PHYSICS.md sec. 8, each PNG with a CSV:
 speeds against time, slide-to-roll ratio of one ball, h_min and Lambda of the
 outer contact against azimuth by phase, and the overview.
 
-    python scenarios/papers_6208.py [--up 0.05 --steady 0.2 --down 0.05] [--dt 5e-6]
+    python scenarios/papers_6208.py [--up 0.05 --steady 0.2 --down 0.05] [--dt 5e-6] [--engine exudyn]
 
 Tangential force: Cundall-Strack spring with contact history (explicit,
 the papers' model).
@@ -24,18 +24,20 @@ def main(argv=None):
     ap.add_argument("--steady", type=float, default=0.2, help="steady phase [s]")
     ap.add_argument("--down", type=float, default=0.05, help="slow-down ramp [s]")
     ap.add_argument("--dt", type=float, default=5e-6, help="time step [s]")
+    ap.add_argument("--engine", choices=("reference", "exudyn"), default="reference")
     ap.add_argument("--out", default=str(Path(__file__).parent / "out" / "papers_6208"))
     args = ap.parse_args(argv)
     sc = eb.Scenario.papers_protocol(omega=500.0, t_ramp_up=args.up, t_steady=args.steady,
                                      t_ramp_down=args.down, Fr=3000.0, dt=args.dt, sample_dt=1e-4)
-    run = eb.simulate("6208", sc, progress=True)
+    run = eb.simulate("6208", sc, engine=args.engine, progress=args.engine == "reference")
     out = Path(args.out)
     run.save(out, stem="run")
     figs = [run.plot(out / "overview.png"), plotting.plot_speeds(run, out / "speeds.png"),
             plotting.plot_srr(run, out / "srr_ball0.png"), plotting.plot_film_by_phase(run, out / "film_outer.png")]
     # summary over the second half of the steady phase
     s = run.summary(t_window=(args.up + 0.5 * args.steady, args.up + args.steady))
-    print(f"6208, Fr = 3000 N, 500 rad/s protocol {args.up}/{args.steady}/{args.down} s, dt = {args.dt} s: "
+    print(f"6208, Fr = 3000 N, 500 rad/s protocol {args.up}/{args.steady}/{args.down} s, dt = {args.dt} s, "
+          f"{args.engine} engine: "
           f"{run.steps} steps in {run.wall_s:.1f} s")
     print(f"steady phase: cage {s['cage_speed']:.2f} rad/s (kinematic {s['kinematic_cage_speed']:.2f}), "
           f"ball spin {s['ball_spin']:.2f} rad/s (kinematic {s['kinematic_ball_spin']:.2f}), "

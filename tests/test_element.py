@@ -163,3 +163,11 @@ def test_fast_mode_time_must_advance():
     el._force_uf_fast(eng.mbs, 2e-4, 0, q, q)
     with pytest.raises(RuntimeError, match="^mode"):
         el._force_uf_fast(eng.mbs, 1e-4, 0, q, q)
+
+
+def test_graphics_for_the_renderer():
+    SC, mbs, m_in, m_out, b = _rotor_scene()
+    el = CreateBallBearing(mbs, b, m_in, m_out, initialLoad=(3000.0, 0.0), show=True)
+    mbs.Assemble()
+    g = el._graphics(mbs, el.items["object"])
+    assert len(g) == 4 and all(isinstance(x, dict) for x in g)  # balls, cage balls, two grooves

@@ -19,7 +19,7 @@ All measured in one run on one core (medians of ``--repeat``):
 Errors of our engines: q_max_inner and cage_speed against the reference
 engine at a quarter of the step.
 
-    python validation/bench_element.py [--t-end 0.05] [--repeat 3]
+    python validation/bench_element.py [--t-end 0.05] [--repeat 3] [--ga]
 """
 from __future__ import annotations
 
@@ -102,6 +102,7 @@ def main(argv=None):
     ap.add_argument("--t-end", type=float, default=0.05)
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--out", default=str(Path(__file__).parent / "out"))
+    ap.add_argument("--ga", action="store_true", help="also time the element under GeneralizedAlpha (slow)")
     args = ap.parse_args(argv)
     T = args.t_end
     warnings.simplefilter("ignore")
@@ -148,6 +149,21 @@ def main(argv=None):
                   / rows["reference, dt 5 us"]["wall_per_sim_s"])
     print(f"ratio body mode / built-in bearing (best step): {ratio:.3f} (target <= 0.5)")
     print(f"ratio fast mode / reference core: {fast_ratio:.2f} (target <= 2)")
+    if args.ga:
+        # implicit: Exudyn's numerical Jacobian of the whole bearing object, modified Newton
+        eng = ExudynEngine("6208", eb.Scenario(t_end=2e-3, dt=1e-5, friction="regularized", sample_dt=1e-4, **SCENE))
+        ss = eng.element.SimulationSettings(2e-3, 1e-5)
+        ss.timeIntegration.newton.useModifiedNewton = True
+        printing = exu.config.printToConsole
+        exu.config.printToConsole = False
+        t0 = time.perf_counter()
+        eng.mbs.SolveDynamic(ss, solverType=exu.DynamicSolverType.GeneralizedAlpha)
+        exu.config.printToConsole = printing
+        wall = time.perf_counter() - t0
+        rows["element body mode, GeneralizedAlpha 10 us"] = dict(wall_per_sim_s=wall / 2e-3,
+                                                                  evaluations=eng.element._evaluations)
+        print(f"element body mode, GeneralizedAlpha h = 1e-5 (regularized friction): wall/sim {wall / 2e-3:.0f} s, "
+              f"{eng.element._evaluations} force evaluations for 200 steps")
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     (out / "bench_element.json").write_text(json.dumps(dict(rows=rows, ratio_body_builtin=ratio,

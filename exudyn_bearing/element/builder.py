@@ -264,7 +264,9 @@ class BallBearingElement:
         self._status = 0.0
         obj = mbs.AddObject(ObjectGenericODE2(nodeNumbers=nodes + cage_nodes + ring_nodes, massMatrix=np.diag(mass),
                                               forceUserFunction=self._force_uf_fast if fast else self._force_uf,
-                                              visualization=VObjectGenericODE2(show=bool(show))))
+                                              visualization=VObjectGenericODE2(
+                                                  show=bool(show),
+                                                  graphicsDataUserFunction=self._graphics if show else 0)))
         self.sensors = {}
         sensor_defs = {
             "cageSpeed": lambda: [float(np.mean(self._orbital(self._work[3, :n_cage], self._work[4, :n_cage])))
@@ -376,6 +378,25 @@ class BallBearingElement:
         self._store(t)
         self._next_sample += self.sampleInterval * max(1.0, math.floor((t - self._next_sample)
                                                                        / self.sampleInterval) + 1.0)
+
+    def _graphics(self, mbs, itemNumber):
+        """Graphics for Exudyn's renderer: balls, cage balls and the two groove
+        tori at the last evaluated state (world frame)."""
+        import exudyn.graphics as gr
+
+        b = self.bearing
+        w = self._work
+        data = [gr.Spheres(points=list(w[0]), radii=b.ball_radius, colors=[0.6, 0.6, 0.65, 1.0], nTiles=16)]
+        if self.n_cage:
+            data.append(gr.Spheres(points=list(w[3, :self.n_cage]), radii=b.cage_ball_radius,
+                                   colors=[0.8, 0.6, 0.2, 1.0], nTiles=12))
+        for r, ((rho, zg), rc) in enumerate(((b.inner_groove_center, b.inner_groove_radius),
+                                             (b.outer_groove_center, b.outer_groove_radius))):
+            a = self._rings[r, 6:15].reshape(3, 3)
+            centre = self._rings[r, :3] + a[:, 2] * zg
+            data.append(gr.Torus(point=list(centre), axis=list(a[:, 2]), radiusMajor=rho, radiusMinor=rc,
+                                 color=[0.5, 0.5, 0.55, 0.3], nTilesMajor=48, nTilesMinor=12))
+        return data
 
     def _store(self, t):
         s = self._samples
