@@ -65,6 +65,11 @@ class Scenario:
         to the explicit spring as dt -> 0; lifts the tangential step limit.
     hertz : {"exact", "hamrock_brewe", "simplified"}
         Hertz fidelity level (exact is tabulated in the kernels).
+    contact_law : {"hertz", "power"}
+        Ball / raceway law: elliptic Hertz with lubrication (default), or the
+        power law of Exudyn's ObjectContactSphereTorus, F = k delta^n + d
+        d(delta)/dt with constant ``mu_dry`` (``power_law = (k, n, d)``; no
+        lubrication), for peer checks against exudyn.machines.
     film : {"hd", "mk"}
         Film-thickness model.
     guide_clearance : float
@@ -98,6 +103,8 @@ class Scenario:
     tangential_stiffness_ratio: float = 2.0 / 3.0
     tangential: str = "explicit"
     hertz: str = "exact"
+    contact_law: str = "hertz"
+    power_law: tuple = (0.0, 1.5, 0.0)
     film: str = "hd"
     guide_clearance: float = 50e-6
     ring_mass: float | None = None
@@ -138,6 +145,12 @@ class Scenario:
             raise InputError("integrator: rk4 needs a history-free friction model "
                              "(friction='regularized' or 'none'); the Cundall-Strack spring is "
                              "updated once per step and runs with verlet")
+        if self.contact_law not in ("hertz", "power"):
+            raise InputError(f"contact_law: must be 'hertz' or 'power', got {self.contact_law!r}")
+        if self.contact_law == "power":
+            k, n, d = self.power_law
+            if not (k > 0 and n >= 1 and d >= 0):
+                raise InputError(f"power_law: need k > 0, n >= 1, d >= 0, got {self.power_law}")
         if self.initial not in ("analytic", "rest"):
             raise InputError(f"initial: must be 'analytic' or 'rest', got {self.initial!r}")
         try:

@@ -130,7 +130,7 @@ class BallBearingElement:
                  film="hd", guideClearance=50e-6, muDry=0.1, regularizingSpeed=0.1,
                  tangentialStiffnessRatio=2.0 / 3.0, stepSize=1e-6, innerRingSpeed=None, outerRingSpeed=None,
                  initialOmega=0.0, initialLoad=(0.0, 0.0), initial="analytic", sampleInterval=1e-4,
-                 mode="bodies", subSteps=4, show=False):
+                 mode="bodies", subSteps=4, contactLaw="hertz", powerLaw=(0.0, 1.5, 0.0), show=False):
         self.mbs = mbs
         self.bearing = b = load_bearing(bearing)
         self.lubricant = default_lubricant() if lubricant is None else lubricant
@@ -144,7 +144,8 @@ class BallBearingElement:
                                  hertz=hertzModel, film=film, guide_clearance=guideClearance, mu_dry=muDry,
                                  regularizing_speed=regularizingSpeed,
                                  tangential_stiffness_ratio=tangentialStiffnessRatio, dt=stepSize,
-                                 sample_dt=max(sampleInterval, stepSize), initial=initial)
+                                 sample_dt=max(sampleInterval, stepSize), initial=initial, contact_law=contactLaw,
+                                 power_law=tuple(powerLaw))
         if cage and not b.has_cage:
             raise InputError(f"cage: bearing {b.name} has no cage balls; use cage=False")
         self.params = scene_parameters(b, self.scenario, self.lubricant)

@@ -164,6 +164,8 @@ def scene_parameters(bearing: BallBearing, scenario: Scenario, lubricant: Lubric
     p[K.P_AXIAL_FREE] = 1.0
     p[K.P_MAX_OVERLAP] = 0.05
     p[K.P_KT_IMPLICIT] = 1.0 if s.tangential == "implicit" else 0.0
+    p[K.P_LAW] = K.LAW_POWER if s.contact_law == "power" else K.LAW_HERTZ
+    p[K.P_LAW_K], p[K.P_LAW_N], p[K.P_LAW_D] = (float(x) for x in s.power_law)
     return p
 
 

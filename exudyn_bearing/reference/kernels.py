@@ -34,9 +34,14 @@ from ..physics.hertz import _curvature_sum_radius, _kfe_fast, _semi_axes, _stiff
  P_EPRIME, P_MB, P_IB, P_MZ, P_MR, P_ALPHA_E, P_ETA, P_XI, P_SIGMA, P_L1, P_L3, P_MU_B, P_MU_F,
  P_HERTZ, P_FILM, P_LUB, P_MU_DRY, P_FRIC, P_VREG, P_KT_RATIO, P_CAGE, P_FR, P_FA,
  P_W_MAX, P_T_UP, P_T_STEADY, P_T_DOWN, P_K_BZ, P_K_BB, P_K_GUIDE, P_DT, P_AXIAL_FREE,
- P_MAX_OVERLAP, P_KT_IMPLICIT, N_PARAMS) = range(46)
+ P_MAX_OVERLAP, P_KT_IMPLICIT, P_LAW, P_LAW_K, P_LAW_N, P_LAW_D, N_PARAMS) = range(50)
 
 FRIC_HISTORY, FRIC_REGULARIZED, FRIC_NONE = 0, 1, 2
+#: Ball / raceway contact laws: elliptic Hertz with the Lambda-switched
+#: lubrication of PHYSICS.md (default), or the power law k delta^n + d
+#: d(delta)/dt with constant mu of Exudyn's ObjectContactSphereTorus (for
+#: the peer check against exudyn.machines.CreateBallBearing).
+LAW_HERTZ, LAW_POWER = 0, 1
 
 #: Fields of the per-contact diagnostics, in order.
 DIAG_FIELDS = ("load", "overlap", "contact_angle", "a", "b", "p_max", "u_r", "h_min",
@@ -157,10 +162,15 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb,
                 ell_f = hz[j, race, 2]
                 ell_e = hz[j, race, 3]
             rr = _curvature_sum_radius(rx, ry)
-            kst = _stiffness(kappa, ell_f, ell_e, rr, e_prime)
-            sq = math.sqrt(delta)
-            q_el = kst * delta * sq
-            k_n = 1.5 * kst * sq
+            power_law = p[P_LAW] > 0.5
+            if power_law:
+                q_el = p[P_LAW_K] * delta ** p[P_LAW_N]
+                k_n = p[P_LAW_N] * q_el / delta
+            else:
+                kst = _stiffness(kappa, ell_f, ell_e, rr, e_prime)
+                sq = math.sqrt(delta)
+                q_el = kst * delta * sq
+                k_n = 1.5 * kst * sq
             need_axes = want or p[P_LUB] > 0.5
             if need_axes:
                 major, minor = _semi_axes(kappa, ell_e, rr, e_prime, q_el)
@@ -215,7 +225,13 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb,
             u_r = math.sqrt(mx * mx + my * my + mz * mz)
             # lubrication (PHYSICS.md sec. 4-5)
             c_hyst = 1.5 * p[P_ALPHA_E] * q_el
-            if p[P_LUB] > 0.5:
+            if power_law:
+                h = 0.0
+                lam = 0.0
+                regime = 0
+                c_n = p[P_LAW_D]
+                mu = p[P_MU_DRY]
+            elif p[P_LUB] > 0.5:
                 h = _film_thickness(int(p[P_FILM]), u_r, q_el, rx, kappa, e_prime, p[P_ETA], p[P_XI])
                 lam = h / p[P_SIGMA]
                 regime = lubrication_regime(lam, p[P_L1], p[P_L3])
