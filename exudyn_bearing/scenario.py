@@ -167,11 +167,20 @@ class Scenario:
             raise InputError(f"Pd: must be finite, got {self.Pd}")
 
     def omega_at(self, t):
-        """Prescribed inner-ring speed omega(t) [rad/s] of the protocol."""
-        from .reference.kernels import omega_profile
-
-        return omega_profile(float(t), float(self.omega), float(self.t_ramp_up),
-                             float(self.t_steady), float(self.t_ramp_down))
+        """Prescribed inner-ring speed omega(t) [rad/s] of the protocol
+        (the same piecewise-linear profile as the kernels' ``omega_profile``)."""
+        t = float(t)
+        if t < 0.0:
+            return 0.0
+        if t < self.t_ramp_up:
+            return self.omega * t / self.t_ramp_up
+        t -= self.t_ramp_up
+        if t < self.t_steady:
+            return float(self.omega)
+        t -= self.t_steady
+        if t < self.t_ramp_down:
+            return self.omega * (1.0 - t / self.t_ramp_down)
+        return 0.0
 
     def replace(self, **changes) -> "Scenario":
         return dataclasses.replace(self, **changes)

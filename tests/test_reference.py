@@ -233,3 +233,11 @@ def test_bad_scenarios_rejected():
         ReferenceEngine("6004", eb.Scenario(cage=True))
     with pytest.raises(eb.InputError, match="^Fr"):
         eb.Scenario(Fr=float("nan"))
+
+
+def test_protocol_speed_matches_the_kernel_profile():
+    from exudyn_bearing.reference.kernels import omega_profile
+
+    sc = eb.Scenario(omega=500.0, t_ramp_up=0.01, t_steady=0.02, t_ramp_down=0.01)
+    for t in np.linspace(-0.001, 0.05, 53):
+        assert sc.omega_at(t) == pytest.approx(omega_profile(t, 500.0, 0.01, 0.02, 0.01), abs=1e-12)

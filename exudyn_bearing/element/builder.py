@@ -262,6 +262,9 @@ class BallBearingElement:
         self._next_sample = self.sampleInterval
         self._evaluations = 0
         self._wall = 0.0
+        self._speeds = [(r, f) for r, f in enumerate(self.speed) if f is not None]
+        self._dt_sub = float(self.scenario.dt)
+        self._max_overlap = float(self.params[K.P_MAX_OVERLAP])
         self._status = 0.0
         obj = mbs.AddObject(ObjectGenericODE2(nodeNumbers=nodes + cage_nodes + ring_nodes, massMatrix=np.diag(mass),
                                               forceUserFunction=self._force_uf_fast if fast else self._force_uf,
@@ -307,9 +310,8 @@ class BallBearingElement:
     # -- user functions --------------------------------------------------
     def _force_uf(self, mbs, t, itemNumber, q, q_t):
         t0 = time.perf_counter()
-        for r in (0, 1):
-            if self.speed[r] is not None:
-                self._ring_data[r, EK.RD_SPIN] = self.speed[r](t)
+        for r, f in self._speeds:
+            self._ring_data[r, EK.RD_SPIN] = f(t)
         # Cundall-Strack history: commit the last trial state when time advances
         if t > self._t_trial:
             if self._t_trial >= 0.0:
@@ -335,9 +337,8 @@ class BallBearingElement:
         t0 = time.perf_counter()
         q = np.asarray(q, float)
         q_t = np.asarray(q_t, float)
-        for r in (0, 1):
-            if self.speed[r] is not None:
-                self._ring_data[r, EK.RD_SPIN] = self.speed[r](t)
+        for r, f in self._speeds:
+            self._ring_data[r, EK.RD_SPIN] = f(t)
         w = self._work
         if self._t_int is None:
             # first evaluation: forces at the initial state, nothing to integrate yet
@@ -348,7 +349,7 @@ class BallBearingElement:
             self._t_int = t
             n_sub, dt, want = 0, 0.0, False
         elif t > self._t_int + 1e-15:
-            n_sub = max(1, int(round((t - self._t_int) / self.scenario.dt)))
+            n_sub = max(1, int((t - self._t_int) / self._dt_sub + 0.5))
             dt = (t - self._t_int) / n_sub
             want = t >= self._next_sample - 1e-12
         elif t < self._t_int - 1e-15:
@@ -361,7 +362,8 @@ class BallBearingElement:
                              self._fr_mean, self._glob, self._diag, self._cage_load, want, self._out)
         if n_sub:
             self._t_int = t
-            self._check_worst(worst, t)
+            if not worst <= self._max_overlap:  # also catches NaN
+                self._check_worst(worst, t)
             if want:
                 self._sample(t)
         self._evaluations += 1
