@@ -155,7 +155,8 @@ def main(argv=None):
     print(f"ratio fast mode / reference core: {fast_ratio:.2f} (target <= 2)")
     if args.ga:
         # implicit: Exudyn's numerical Jacobian of the whole bearing object, modified Newton
-        eng = ExudynEngine("6208", eb.Scenario(t_end=2e-3, dt=1e-5, friction="regularized", sample_dt=1e-4, **SCENE))
+        eng = ExudynEngine("6208", eb.Scenario(t_end=2e-3, dt=1e-5, friction="regularized",
+                                               **dict(SCENE, sample_dt=1e-4)))
         ss = eng.element.SimulationSettings(2e-3, 1e-5)
         ss.timeIntegration.newton.useModifiedNewton = True
         printing = exu.config.printToConsole

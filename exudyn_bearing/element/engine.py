@@ -73,5 +73,7 @@ class ExudynEngine:
             self.mbs.SolveDynamic(settings, solverType=settings.timeIntegration.solverType)
         finally:
             self.exu.config.printToConsole = printing
-        return self.element.results(wall_s=time.perf_counter() - wall0,
-                                    steps=settings.timeIntegration.numberOfSteps)
+        res = self.element.results(wall_s=time.perf_counter() - wall0,
+                                   steps=settings.timeIntegration.numberOfSteps)
+        res.scenario = self.scenario  # the run's protocol and solver, not the element's model options only
+        return res

@@ -1,0 +1,309 @@
+"""Regenerate validation/REPORT.md: run every validation script, then write the report from their outputs.
+
+    python validation/make_report.py            # run everything (a few minutes), then write
+    python validation/make_report.py --no-run   # write from the JSON files already in validation/out
+
+Each section names the command that produced it, the engine, the step and the
+wall time. The machines are shared and noisy: wall times are medians where a
+script repeats runs, and ratios matter more than absolute values.
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import platform
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+OUT = HERE / "out"
+SCRIPTS = [
+    ("bench_reference.py", []),
+    ("bench_element.py", ["--ga"]),
+    ("cross_engine.py", []),
+    ("peer_builtin.py", []),
+    ("figures.py", []),
+    ("work_precision.py", []),
+    ("bench_sweep.py", []),
+]
+
+
+def load(name):
+    return json.loads((OUT / name).read_text())
+
+
+def pct(x, digits=3):
+    return "n/a" if x is None else f"{100 * x:.{digits}f} %"
+
+
+def run_all(skip=()):
+    walls = {}
+    for script, args in SCRIPTS:
+        if script in skip:
+            continue
+        t0 = time.perf_counter()
+        print(f"running {script} {' '.join(args)}", flush=True)
+        subprocess.run([sys.executable, str(HERE / script), *args], check=True)
+        walls[script] = time.perf_counter() - t0
+    (OUT / "make_report_walls.json").write_text(json.dumps(walls, indent=2))
+
+
+def section_reference():
+    d = load("bench_reference.json")
+    lines = ["## Reference core: speed against error", "",
+             "Command: `python validation/bench_reference.py` (engine: reference core; T = "
+             f"{d['t_end']} s per run, median of {d['repeat']}). Scene: 6208, F_r = 3000 N, 500 rad/s, cage, "
+             "lubrication and Cundall-Strack history on, analytic start. Errors: the summary over the last "
+             "quarter against the same setting at a quarter of the step.", "",
+             "| setting | wall s per simulated s | steps/s | err q_max_inner | err q_max_outer | err cage_speed | "
+             "mean frictional power [W] |", "|---|---|---|---|---|---|---|"]
+    for name, r in d["settings"].items():
+        lines.append(f"| {name} | {r['wall_per_sim_s']:.3f} | {r['steps_per_s']:.3g} | {pct(r['err_q_max_inner'])} | "
+                     f"{pct(r['err_q_max_outer'])} | {pct(r['err_cage_speed'])} | "
+                     f"{r['summary']['friction_power']:.2g} |")
+    est, meas = d["stable_step_estimate"], d["stable_step_measured"]
+    lines += ["",
+              f"- Stable step: estimate {est['explicit'] * 1e6:.2f} us (explicit spring) and "
+              f"{est['implicit'] * 1e6:.2f} us (implicit); the largest step that did not blow up (bisection on "
+              f"10 ms runs) was {meas['explicit'] * 1e6:.2f} and {meas['implicit'] * 1e6:.2f} us. The normal Hertz "
+              "mode of a ball between its races limits the step; the explicit Cundall-Strack spring does not blow "
+              "up above its rocking-mode limit because its force is capped at mu F_n, but it chatters at the cap "
+              "(the large frictional power of the explicit 8 us row, against about 1e-4 W when resolved); the "
+              "implicit spring (K_t / (1 + K_t dt^2 / m_t)) removes that limit.",
+              "- Cost: one kernel call per force evaluation, the contact laws written out inside the force loop "
+              "(a numba call that passes arrays costs 20-30 ns), the exact Hertz level tabulated (relative error "
+              "<= 1e-7) and re-evaluated per contact only when R_y/R_x moves by more than 1e-6.",
+              "- RK4 (history-free friction only) costs four evaluations per step; it is the most accurate per "
+              "step, not the fast choice.",
+              f"- Numba cache: a second process starts and runs 1 ms in {d['second_start_s']:.2f} s.",
+              f"- Memory does not grow with the number of steps: peak traced memory for 50 samples "
+              f"{d['memory_bytes']['T=0.05'] / 1e6:.2f} MB for T = 0.05 s and "
+              f"{d['memory_bytes']['T=0.2'] / 1e6:.2f} MB for T = 0.2 s.", ""]
+    return lines
+
+
+def section_element():
+    d = load("bench_element.json")
+    rows = d["rows"]
+    lines = ["## Exudyn element against the reference core and Exudyn's built-in bearing", "",
+             f"Command: `python validation/bench_element.py --ga` (T = {d['t_end']} s, median of 3; the built-in "
+             "bearing 0.02 s). Same scene, dt = 5 us, explicit spring; wall times are the solves alone. Errors of "
+             "our engines against the reference core at 1.25 us; of the built-in bearing, of its cage speed "
+             "against its own run at 5e-6 s.", "",
+             "| engine | wall s per simulated s | err q_max_inner | err cage_speed |", "|---|---|---|---|"]
+    for name, r in rows.items():
+        lines.append(f"| {name} | {r['wall_per_sim_s']:.3g} | {pct(r.get('err_q_max_inner'))} | "
+                     f"{pct(r.get('err_cage_speed'))} |")
+    b = rows.get("built-in CreateBallBearing", {})
+    lines += ["",
+              f"- Body mode / built-in bearing: **{d['ratio_body_builtin']:.3f}** (target <= 0.5). The built-in "
+              f"bearing (GeneralizedAlpha, best step {b.get('h', float('nan')):g} s, same Hertz stiffness "
+              f"k = {d['k_builtin']:.3g} N/m^1.5, exponent 1.5) runs only with the load ramped in over 5 ms; with "
+              "the load applied at once its solver stops at the minimum step size.",
+              f"- Fast mode / reference core: **{d['ratio_fast_reference']:.2f}** (target <= 2). Per Exudyn step the "
+              "user function spends about 7 us outside the three compiled sub-steps (6.6 us): the Python call and "
+              "numba's argument dispatch. The 78 g inner ring of this scene limits the Exudyn step to about 17 us "
+              "(4 sub-steps blow up), so that overhead cannot be spread over more sub-steps here.",
+              "- The fast mode has an open defect: on a free-spinning rigid rotor held by two bearings, two or more "
+              "sub-steps per Exudyn step drive the balls too weakly (one sub-step equals the body mode); the "
+              "rotor scenario therefore uses the body mode.",
+              "- GeneralizedAlpha (h = 10 us, regularized friction) works with the element (numerical Jacobian of "
+              "the whole bearing object, modified Newton): "
+              f"{rows.get('element body mode, GeneralizedAlpha 10 us', {}).get('wall_per_sim_s', float('nan')):.0f} "
+              "s per simulated second, "
+              f"{rows.get('element body mode, GeneralizedAlpha 10 us', {}).get('evaluations', 0)} force evaluations "
+              "for 200 steps: usable for short checks, not recommended.",
+              "- The body mode cannot use `computeMassMatrixInversePerBody` (not implemented for ObjectGenericODE2 "
+              "in Exudyn 1.13.6); `BallBearingElement.SimulationSettings` sets the sparse linear solver.", ""]
+    return lines
+
+
+def section_cross():
+    d = load("cross_engine.json")
+    lines = ["## Cross-engine check", "",
+             "Command: `python validation/cross_engine.py` (T = 0.05 s, dt = 5 us, both engines on each scene; "
+             "figures `out/cross_engine_<scene>.png`). Largest relative difference of q_max_inner, q_max_outer, "
+             "cage_speed, ball_spin and lambda_outer_psi0:", "", "| scene | largest relative difference |",
+             "|---|---|"]
+    for scene, rows in d.items():
+        lines.append(f"| {scene} | {max(r['rel_diff'] for r in rows.values()):.1e} |")
+    lines += ["", "The engines share the contact kernel; the remaining differences come from Exudyn's "
+              "VelocityVerlet and the element's ring coupling.", ""]
+    return lines
+
+
+def section_peer():
+    d = load("peer_builtin.json")
+    lines = ["## Peer check against Exudyn's built-in bearing", "",
+             "Command: `python validation/peer_builtin.py` (T = 0.04 s). The element with Exudyn's "
+             "ObjectContactSphereTorus law (`contact_law=\"power\"`: k delta^1.5 + d d(delta)/dt, k = 3.35e10, "
+             "d = 200 N s/m, mu = 0.1 linear below 0.1 m/s) against `exudyn.machines.CreateBallBearing` on the "
+             "same geometry (r_p = 30 mm), 500 rad/s, F_r = 3000 N; means over the last quarter:", "",
+             "| quantity | built-in | element | difference |", "|---|---|---|---|"]
+    for k, r in d.items():
+        lines.append(f"| {k} | {r['builtin']:.2f} | {r['element']:.2f} | {pct(r['rel_diff'], 2)} |")
+    lines += ["", "The ball loads agree within 1 %. The cage speeds do not: ours is the kinematic "
+              "500 (1 - 6.3/30)/2 = 197.5 rad/s, while the built-in balls roll on the outer race and slip about 8 % "
+              "at the inner race (its friction evaluates a different relative velocity there); the cages also "
+              "differ by design (rigid cylinder on springs against our torus cage).", ""]
+    return lines
+
+
+def section_figures():
+    d = load("figures/figures.json")
+    lines = ["## The papers' figures (PHYSICS.md sec. 8)", "",
+             "Command: `python validation/figures.py` (figures and their CSV in `out/figures/`; sweeps through "
+             "the sweep runner). Step 5 us, implicit tangential spring, unless said.", ""]
+    if "item1" in d:
+        lines += ["### 1. Quasi-static loads (omega = 1 rad/s)", "",
+                  "Largest relative error of Q and delta at the loaded balls (Q > 5 % Q_max) against the discrete "
+                  "analytic solution at the same ball phase (issue target 2 %):", "",
+                  "| case | engine | err Q | err delta | Q_max | analytic Q_max | analytic eps | wall s |",
+                  "|---|---|---|---|---|---|---|---|"]
+        for k, v in d["item1"].items():
+            if isinstance(v, dict):
+                lines.append(f"| {k.split(' ', 1)[1]} | {v['engine']} | {pct(v['max_rel_err_Q'], 2)} | "
+                             f"{pct(v['max_rel_err_delta'], 2)} | {v['q_max']:.1f} | {v['q_max_analytic']:.1f} | "
+                             f"{v['eps_analytic']:.3f} | {v['wall_s']:.2f} |")
+        lines.append("")
+    if "item2" in d:
+        lines += ["### 2. 500 rad/s protocol (start-up 0.05 s, steady 0.2 s, slow-down 0.05 s, from rest)", "",
+                  "| engine | ball spin | kinematic | cage | kinematic | Lambda_out psi=0 | median SRR ball 0 "
+                  "start-up / steady / slow-down | wall s |", "|---|---|---|---|---|---|---|---|"]
+        for e, v in d["item2"].items():
+            if isinstance(v, dict):
+                srr = v["srr_ball0_median"]
+                srr_s = " / ".join("n/a" if srr[k] is None else f"{srr[k]:.1e}"
+                                   for k in ("start-up", "steady", "slow-down"))
+                lines.append(f"| {e} | {v['ball_spin']:.2f} | {v['kinematic_ball_spin']:.2f} | "
+                             f"{v['cage_speed']:.2f} | {v['kinematic_cage']:.2f} | {v['lambda_outer_psi0']:.3f} | "
+                             f"{srr_s} | {v['wall_s']:.2f} |")
+        lines += ["", "Steady values over 0.15-0.25 s. The slide-to-roll ratio of ball 0 is near zero in the "
+                  "steady phase and not during start-up and slow-down (figure item2_srr_ball0.png).", ""]
+    if "item3" in d:
+        v = d["item3"]
+        lines += ["### 3. Load sweep 750 ... 7500 N (six loads, 500 rad/s)", "",
+                  f"- slope of ln Lambda_out(psi = 0) against ln Q_max: **{v['slope_lambda_vs_qmax']:.4f} +- "
+                  f"{v['se_slope_lambda']:.4f}** (standard error; PHYSICS.md: near -0.073)",
+                  f"- slope of ln F_r against ln Q_max: **{v['slope_fr_vs_qmax']:.4f} +- {v['se_slope_fr']:.4f}** "
+                  "(near 1; the centrifugal force on the outer race pulls it above 1)",
+                  f"- engine {v['engine']}, dt {v['dt'] * 1e6:g} us, total wall {v['wall_s']:.2f} s", ""]
+    if "item4" in d:
+        v = d["item4"]
+        lines += ["### 4. Clearance sweep (3000 N, 500 rad/s)", "",
+                  "| P_d [um] | loaded-zone half angle [deg] | Q_max inner [N] | eps (analytic) |",
+                  "|---|---|---|---|"]
+        for pd, z, q, e in zip(v["Pd_um"], v["loaded_zone_deg"], v["q_max_inner"], v["eps"]):
+            lines.append(f"| {pd:+.1f} | {z:.1f} | {q:.1f} | {e:.3f} |")
+        lines += ["", f"The loaded zone shrinks and Q_max grows from preload to clearance (monotonic: "
+                  f"{v['zone_monotonic'] and v['q_max_monotonic']}); reference engine, total wall "
+                  f"{v['wall_s']:.2f} s.", ""]
+    if "item5" in d:
+        v = d["item5"]
+        lines += ["### 5. Speed sweep 100 ... 1700 rad/s (step 200, 3000 N)", "",
+                  "| film / engine | slope Lambda_out | slope Lambda_in | Lambda_in < Lambda_out | wall s |",
+                  "|---|---|---|---|---|"]
+        for f in ("hd", "mk", "exudyn"):
+            r = v[f]
+            lines.append(f"| {f} / {r['engine']} | {r['slope_lambda_outer']:.4f} +- {r['se_outer']:.4f} | "
+                         f"{r['slope_lambda_inner']:.4f} +- {r['se_inner']:.4f} | {r['lambda_in_below_out']} | "
+                         f"{r['wall_s']:.2f} |")
+        lines += ["", "PHYSICS.md expects the U exponent of the film model: 0.68 for Hamrock-Dowson (the source "
+                  "fits 0.6797) and 0.711 k^-0.023 for the Masjedi-Khonsari reading, which is 0.679 at the outer "
+                  "contact's k = 7.25; the source reports 0.7105 for MK, which our reading of the garbled formula "
+                  "does not reproduce.", "",
+                  "Hamrock-Dowson, reference engine:", "",
+                  "| omega [rad/s] | Q_max outer [N] | Q_max inner [N] | m r_p omega_c^2 [N] | outer regimes "
+                  "(boundary/mixed/full) | inner regimes |", "|---|---|---|---|---|---|"]
+        hd = v["hd"]
+        for i, w in enumerate(sorted(hd["regimes"], key=float)):
+            ro, ri = hd["regimes"][w]["outer"], hd["regimes"][w]["inner"]
+            lines.append(f"| {w} | {hd['q_max_outer'][i]:.0f} | {hd['q_max_inner'][i]:.0f} | "
+                         f"{v['centrifugal_force'][i]:.1f} | {ro['boundary']:.2f}/{ro['mixed']:.2f}/"
+                         f"{ro['full_film']:.2f} | {ri['boundary']:.2f}/{ri['mixed']:.2f}/{ri['full_film']:.2f} |")
+        lines += ["", "The outer Q_max rises with speed (centrifugal load) while the inner stays near the static "
+                  "value. At 100 rad/s the 20 ms averaging window is shorter than one ball passage, which biases "
+                  "its Q_max upward.", ""]
+    if "item6" in d:
+        lines += ["### 6. 7208, F_r = F_a = 3000 N, 500 rad/s, three conformity sums (no cage, dt = 2 us)", "",
+                  "| B | largest abs(Q - law) / Q_max | Q_max | analytic Q_max | contact angle [deg] | cage | "
+                  "kinematic cage at that angle |", "|---|---|---|---|---|---|---|"]
+        for k, r in d["item6"].items():
+            if isinstance(r, dict):
+                lines.append(f"| {k[2:]} | {pct(r['max_err_Q_over_qmax'], 1)} | {r['q_max']:.0f} | "
+                             f"{r['q_max_analytic']:.0f} | {r['contact_angle_deg']:.2f} | {r['cage_speed']:.2f} | "
+                             f"{r['kinematic_cage_at_alpha']:.2f} |")
+        lines += ["", "Without the cage the balls do not stay equally spaced, so each ball is compared with the "
+                  "Stribeck law at its own azimuth (eps from the discrete quasi-static solution). Q_max agrees "
+                  "within 1 %; single balls near the edge of the loaded zone deviate by up to the tabulated "
+                  "share of Q_max, and the cage runs 1.5-2 % above the kinematic speed at the loaded contact "
+                  "angle. With the catalogue's 1 mm torus-cage balls the cage jams (open item, "
+                  "scenarios/bearing_7208.py).", ""]
+    if "item7" in d:
+        v = d["item7"]
+        lines += ["### 7. Defect frequencies (500 rad/s, 0.2 s, samples every 20 us)", "",
+                  "| frequency | simulated [Hz] | kinematic [Hz] | error | from |", "|---|---|---|---|---|"]
+        for k, r in v.items():
+            if isinstance(r, dict):
+                lines.append(f"| {k} | {r['simulated']:.3f} | {r['kinematic']:.3f} | {r['error_pct']:+.3f} % | "
+                             f"{r['how']} |")
+        lines += ["", f"Engine {v['engine']}, dt {v['dt'] * 1e6:g} us, wall {v['wall_s']:.2f} s. The source "
+                  "reports >= 99 % agreement; all five are within 0.03 %.", ""]
+    return lines
+
+
+def section_work_precision():
+    d = load("work_precision.json")
+    lines = ["## Speed against error (work-precision)", "",
+             "Command: `python validation/work_precision.py` (figure `out/work_precision.png`). Every setting "
+             "against the reference core with the full model at dt = 0.5 us (T = 0.1 s).", "",
+             "| family | dt [us] | wall s per simulated s | err q_max | err cage | err Q_max(t) (RMS) |",
+             "|---|---|---|---|---|---|"]
+    for r in d["rows"]:
+        lines.append(f"| {r['family']} | {r['dt'] * 1e6:g} | {r['wall_per_sim_s']:.3f} | {pct(r['err_q_max'], 4)} | "
+                     f"{pct(r['err_cage'], 4)} | {pct(r['err_trajectory'], 3)} |")
+    lines += ["", "Every setting stays within 0.02 % of the converged run for q_max and cage speed, so speed "
+              "decides. Recommended: the reference core with `tangential=\"implicit\"` at dt = 8 us "
+              "(fastest resolved setting, 0.35 s per simulated second); the papers' explicit spring at 5-6 us; "
+              "the Exudyn element (body mode) at 5 us (8 us with the implicit spring). The fitted Hertz levels "
+              "change q_max by less than 0.01 % here (the load sharing is set by equilibrium); switching off "
+              "lubrication or the cage is a model change, not an accuracy setting.", ""]
+    return lines
+
+
+def section_sweep():
+    d = load("bench_sweep.json")
+    return ["## Sweep runner", "",
+            f"Command: `python validation/bench_sweep.py`: {d['cases']} cases (T = 0.1 s each) took "
+            f"{d['walls']['1']:.2f} s with one worker and {d['walls']['2']:.2f} s with two: speed-up "
+            f"**{d['speedup']:.2f}** on the 2-core machine. Cases are written atomically, so an interrupted "
+            "sweep resumes (tests/test_sweep.py); `scheduler=` sends them to a Dask cluster.", ""]
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--no-run", action="store_true", help="only write the report from existing outputs")
+    args = ap.parse_args(argv)
+    if not args.no_run:
+        run_all()
+    walls = json.loads((OUT / "make_report_walls.json").read_text()) if (OUT / "make_report_walls.json").exists() \
+        else {}
+    head = ["# Validation report", "",
+            "Generated by `python validation/make_report.py` on "
+            f"{time.strftime('%Y-%m-%d %H:%M')} ({platform.processor() or platform.machine()}, "
+            f"Python {platform.python_version()}); every number below was printed by the command named in its "
+            "section. The machines are shared and noisy: wall times are medians where repeated, ratios matter "
+            "more than absolute values.", ""]
+    if walls:
+        head += ["Wall time of each script in this regeneration: " +
+                 ", ".join(f"{k} {v:.0f} s" for k, v in walls.items()) + ".", ""]
+    body = (section_reference() + section_element() + section_cross() + section_peer() + section_figures()
+            + section_work_precision() + section_sweep())
+    (HERE / "REPORT.md").write_text("\n".join(head + body))
+    print(f"written {HERE / 'REPORT.md'}")
+
+
+if __name__ == "__main__":
+    main()
