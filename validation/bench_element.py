@@ -55,37 +55,11 @@ def timed(fn, repeat):
 
 def builtin_run(t_end, h, k):
     """Exudyn's built-in ball bearing; returns (wall, cage speed at the end, ok)."""
-    import exudyn.machines as mach
-    from exudyn.itemInterface import LoadForceVector, MarkerBodyRigid, ObjectGround
-    from exudyn.rigidBodyUtilities import InertiaCylinder
+    from peer_builtin import build_builtin, gen_alpha_settings
 
-    bd = mach.GetBallBearingData(axis=[0, 0, 1], outsideDiameter=0.08, boreDiameter=0.04, width=0.018, nBalls=9,
-                                 radiusBalls=6.3e-3, innerGrooveRadius=6.552e-3, outerGrooveRadius=6.552e-3)
-    SC = exu.SystemContainer()
-    mbs = SC.AddSystem()
-    ground = mbs.AddObject(ObjectGround())
-    m_out = mbs.AddMarker(MarkerBodyRigid(bodyNumber=ground, localPosition=[0, 0, 0]))
-    inner = mbs.CreateRigidBody(referencePosition=[0, 0, 0], initialAngularVelocity=[0, 0, 500.0],
-                                inertia=InertiaCylinder(density=7850.0, length=0.018, outerRadius=0.024,
-                                                        innerRadius=0.02, axis=2))
-    m_in = mbs.AddMarker(MarkerBodyRigid(bodyNumber=inner, localPosition=[0, 0, 0]))
-    mbs.AddLoad(LoadForceVector(markerNumber=m_in, loadVector=[3000.0, 0, 0],
-                                loadVectorUserFunction=lambda mbs_, t, load: [3000.0 * min(t / 0.005, 1.0), 0, 0]))
-    items = mach.CreateBallBearing(mbs, bd, m_in, m_out, densityBalls=7850.0, densityCage=2000.0,
-                                   cageInitialAngularVelocity=[0, 0, 500.0 * (1 - 6.3 / 30.0) / 2],
-                                   springStiffnessCage=1e6, springDampingCage=100.0,
-                                   contactParametersRingBalls={"contactStiffness": k, "contactDamping": 200.0,
-                                                               "dynamicFriction": 0.1,
-                                                               "contactStiffnessExponent": 1.5})
+    SC, mbs, items = build_builtin(k=k, damping=200.0, mu=0.1, v_reg=None)
     mbs.Assemble()
-    ss = exu.SimulationSettings()
-    ss.timeIntegration.numberOfSteps = int(round(t_end / h))
-    ss.timeIntegration.endTime = t_end
-    ss.timeIntegration.verboseMode = 0
-    ss.solution.file.write = False
-    ss.timeIntegration.newton.useModifiedNewton = True
-    ss.timeIntegration.discontinuous.maxIterations = 1
-    ss.timeIntegration.generalizedAlpha.spectralRadius = 0.8
+    ss = gen_alpha_settings(t_end, h)
     printing = exu.config.printToConsole
     exu.config.printToConsole = False
     t0 = time.perf_counter()

@@ -31,9 +31,14 @@ from exudyn_bearing.element.engine import ExudynEngine
 K_CONTACT, N_EXP, D_CONTACT, MU, V_REG = 3.35e10, 1.5, 200.0, 0.1, 0.1
 
 
-def builtin(t_end, h=1e-5, n_samples=200):
+def build_builtin(k=K_CONTACT, damping=D_CONTACT, mu=MU, v_reg=V_REG):
+    """Exudyn's built-in ball bearing on the 6208-sized geometry; returns (SC, mbs, items).
+
+    Inner ring: a free rigid body spun at 500 rad/s with F_r = 3000 N ramped
+    in over 5 ms; outer ring on ground; contact k delta^1.5 + d ddelta, mu,
+    friction linear below ``v_reg`` (None: Exudyn's default)."""
     import exudyn.machines as mach
-    from exudyn.itemInterface import LoadForceVector, MarkerBodyRigid, ObjectGround, SensorBody, SensorObject
+    from exudyn.itemInterface import LoadForceVector, MarkerBodyRigid, ObjectGround
     from exudyn.rigidBodyUtilities import InertiaCylinder
 
     bd = mach.GetBallBearingData(axis=[0, 0, 1], outsideDiameter=0.08, boreDiameter=0.04, width=0.018, nBalls=9,
@@ -51,12 +56,32 @@ def builtin(t_end, h=1e-5, n_samples=200):
     items = mach.CreateBallBearing(mbs, bd, m_in, m_out, densityBalls=7850.0, densityCage=2000.0,
                                    cageInitialAngularVelocity=[0, 0, 500.0 * (1 - 6.3 / 30.0) / 2],
                                    springStiffnessCage=1e6, springDampingCage=100.0,
-                                   contactParametersRingBalls={"contactStiffness": K_CONTACT,
-                                                               "contactDamping": D_CONTACT,
-                                                               "dynamicFriction": MU,
+                                   contactParametersRingBalls={"contactStiffness": k, "contactDamping": damping,
+                                                               "dynamicFriction": mu,
                                                                "contactStiffnessExponent": N_EXP})
-    for c in items["innerRingBallContacts"] + items["outerRingBallContacts"]:
-        mbs.SetObjectParameter(c, "frictionProportionalZone", V_REG)
+    if v_reg is not None:
+        for c in items["innerRingBallContacts"] + items["outerRingBallContacts"]:
+            mbs.SetObjectParameter(c, "frictionProportionalZone", v_reg)
+    return SC, mbs, items
+
+
+def gen_alpha_settings(t_end, h):
+    """GeneralizedAlpha settings that run the built-in bearing (modified Newton, one discontinuous iteration)."""
+    ss = exu.SimulationSettings()
+    ss.timeIntegration.numberOfSteps = int(round(t_end / h))
+    ss.timeIntegration.endTime = t_end
+    ss.timeIntegration.verboseMode = 0
+    ss.solution.file.write = False
+    ss.timeIntegration.newton.useModifiedNewton = True
+    ss.timeIntegration.discontinuous.maxIterations = 1
+    ss.timeIntegration.generalizedAlpha.spectralRadius = 0.8
+    return ss
+
+
+def builtin(t_end, h=1e-5, n_samples=200):
+    from exudyn.itemInterface import SensorBody, SensorObject
+
+    SC, mbs, items = build_builtin()
     period = t_end / n_samples
     sens = {race: [mbs.AddSensor(SensorObject(objectNumber=c, outputVariableType=exu.OutputVariableType.Force,
                                               storeInternal=True, writeToFile=False))
@@ -64,15 +89,8 @@ def builtin(t_end, h=1e-5, n_samples=200):
     cage = mbs.AddSensor(SensorBody(bodyNumber=items["objectCage"], storeInternal=True, writeToFile=False,
                                     outputVariableType=exu.OutputVariableType.AngularVelocity))
     mbs.Assemble()
-    ss = exu.SimulationSettings()
-    ss.timeIntegration.numberOfSteps = int(round(t_end / h))
-    ss.timeIntegration.endTime = t_end
-    ss.timeIntegration.verboseMode = 0
-    ss.solution.file.write = False
+    ss = gen_alpha_settings(t_end, h)
     ss.solution.sensors.writePeriod = period
-    ss.timeIntegration.newton.useModifiedNewton = True
-    ss.timeIntegration.discontinuous.maxIterations = 1
-    ss.timeIntegration.generalizedAlpha.spectralRadius = 0.8
     printing = exu.config.printToConsole
     exu.config.printToConsole = False
     t0 = time.perf_counter()

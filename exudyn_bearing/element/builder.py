@@ -319,8 +319,8 @@ class BallBearingElement:
                 self._t_commit = self._t_trial
             self._t_trial = t
         want = t >= self._next_sample - 1e-12
-        worst = EK.element_rhs(np.asarray(q, float), np.asarray(q_t, float), self.ref, self.params, self.table, self.z, self.n_cage, self._ring_kind,
-                               self._ring_data, self._hist, self._hist_trial, t - self._t_commit, self._hz,
+        worst = EK.element_rhs(np.asarray(q, float), np.asarray(q_t, float), self.ref, self.params, self.table,
+                               self.z, self.n_cage, self._ring_kind, self._ring_data, self._hist, self._hist_trial, t - self._t_commit, self._hz,
                                self._work, self._rings, self._fr, self._glob, self._diag, self._cage_load, want,
                                self._out)
         self._check_worst(worst, t)
