@@ -6,12 +6,12 @@ to ground. Gravity acts along -y, an unbalance m e = 1e-4 kg m rotates with
 the shaft, and a motor torque with a speed limiter drives the shaft from
 rest to 1000 rad/s. The bearings are exudyn_bearing elements in the body
 mode (balls and cage balls are Exudyn nodes), tangential history with the
-implicit spring. (The fast mode agrees with the body mode on this rotor
-with one sub-step per Exudyn step, but with two or more sub-steps it drives
-the balls too weakly - cage 18 instead of 30 rad/s after 20 ms - and with
-eight the loads grow while the speed is constant: an open defect of the
-fast mode with free-spinning rigid-body rings, so this scenario keeps the
-body mode.)
+implicit spring. (The bearings carry only 12 N of weight each plus the
+unbalance; at such light load the fast mode with two or more sub-steps per
+Exudyn step drives the balls too weakly - cage 18 instead of 30 rad/s
+after 20 ms - and with eight the loads grow while the speed is constant,
+so this scenario keeps the body mode; with 600 N or more per rotor the fast
+mode agrees with one sub-step.)
 
 Writes into ``--out`` (default scenarios/out/rotor_two_6208): rotor.png
 (speed, orbit of the shaft centre, largest ball loads and Lambda_out at

@@ -106,9 +106,10 @@ def section_element():
               "user function spends about 7 us outside the three compiled sub-steps (6.6 us): the Python call and "
               "numba's argument dispatch. The 78 g inner ring of this scene limits the Exudyn step to about 17 us "
               "(4 sub-steps blow up), so that overhead cannot be spread over more sub-steps here.",
-              "- The fast mode has an open defect: on a free-spinning rigid rotor held by two bearings, two or more "
-              "sub-steps per Exudyn step drive the balls too weakly (one sub-step equals the body mode); the "
-              "rotor scenario therefore uses the body mode.",
+              "- The fast mode is inaccurate at very light load: on a rotor held by two bearings with 12 N each, "
+              "two or more sub-steps per Exudyn step drive the balls too weakly (cage 20 instead of 27 rad/s after "
+              "20 ms; one sub-step equals the body mode), while with 600 or 3000 N the cage speed of 2 and 4 "
+              "sub-steps is within 2 % of one sub-step. The rotor scenario therefore uses the body mode.",
               "- GeneralizedAlpha (h = 10 us, regularized friction) works with the element (numerical Jacobian of "
               "the whole bearing object, modified Newton): "
               f"{rows.get('element body mode, GeneralizedAlpha 10 us', {}).get('wall_per_sim_s', float('nan')):.0f} "

@@ -26,6 +26,14 @@ a body with a NodeRigidBodyRxyz node (the bearing axis is the body's local
 z), or a position marker on a mass point (axes parallel to the world, spin
 prescribed by ``innerRingSpeed`` / ``outerRingSpeed``).
 
+Fast mode (``mode="fast"``): the balls are integrated inside the element in
+compiled velocity-Verlet sub-steps between Exudyn steps (``subSteps`` of
+``stepSize`` each), the ring poses interpolated over the Exudyn step, and
+only the ring reactions at the new ring poses cross into Exudyn. Accurate
+when the ring motion is smooth over an Exudyn step; at very light loads,
+where contacts open and close within one Exudyn step, it under-drives the
+balls (validation/REPORT.md): use the body mode there.
+
 Solvers: explicit ones with one force evaluation per step (VelocityVerlet,
 ExplicitEuler) give the Cundall-Strack history exactly as the reference
 engine; multi-stage solvers (RK44, ...) are supported with
