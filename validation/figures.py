@@ -112,6 +112,27 @@ def item2(out, workers):
     runs = {e: eb.simulate("6208", sc, engine=e) for e in ("reference", "exudyn")}
     plotting.plot_speeds(runs["reference"], out / "item2_speeds_reference.png")
     plotting.plot_speeds(runs["exudyn"], out / "item2_speeds_exudyn.png")
+    # both engines overlaid: shaft, mean ball spin and cage speed
+    plt = _pyplot()
+    fig, ax = plt.subplots(figsize=(7, 4.2))
+    cols = {}
+    for e, ls in (("reference", "-"), ("exudyn", "--")):
+        r = runs[e]
+        ax.plot(r.t, r.global_series("omega"), ls, color="C0", label=f"shaft, {e}")
+        ax.plot(r.t, r.ball_spin_series().mean(axis=1), ls, color="C1", label=f"ball |omega| mean, {e}")
+        ax.plot(r.t, r.cage_speed_series(), ls, color="C2", label=f"cage, {e}")
+        cols.update({f"t_{e}": r.t, f"ball_spin_{e}": r.ball_spin_series().mean(axis=1),
+                     f"cage_{e}": r.cage_speed_series()})
+    ax.axhline(952.38, color="k", ls=":", lw=0.8, label="952.38 rad/s")
+    ax.set_xlabel("t [s]")
+    ax.set_ylabel("angular speed [rad/s]")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(out / "item2_speeds_both_engines.png", dpi=110)
+    plt.close(fig)
+    n = min(len(v) for v in cols.values())
+    save_csv(out / "item2_speeds_both_engines.csv", {k: v[:n] for k, v in cols.items()})
     plotting.plot_srr(runs["reference"], out / "item2_srr_ball0.png")
     plotting.plot_film_by_phase(runs["reference"], out / "item2_film_outer_by_phase.png")
     metrics = {}

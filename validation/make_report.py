@@ -1,6 +1,7 @@
 """Regenerate validation/REPORT.md: run every validation script, then write the report from their outputs.
 
-    python validation/make_report.py            # run everything (a few minutes), then write
+    python validation/make_report.py --fresh    # run everything from scratch (a few minutes), then write
+    python validation/make_report.py            # the same, but sweeps resume from validation/out
     python validation/make_report.py --no-run   # write from the JSON files already in validation/out
 
 Each section names the command that produced it, the engine, the step and the
@@ -286,8 +287,14 @@ def section_sweep():
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--no-run", action="store_true", help="only write the report from existing outputs")
+    ap.add_argument("--fresh", action="store_true", help="delete validation/out first (sweeps otherwise resume)")
     args = ap.parse_args(argv)
+    if args.fresh and OUT.exists():
+        import shutil
+
+        shutil.rmtree(OUT)
     if not args.no_run:
+        OUT.mkdir(exist_ok=True)
         run_all()
     walls = json.loads((OUT / "make_report_walls.json").read_text()) if (OUT / "make_report_walls.json").exists() \
         else {}
