@@ -317,8 +317,7 @@ def item6(out, workers):
         bearings[bval] = bb
         d = bb.to_dict()
         cases[f"b7208_B{bval:.2f}"] = dict(bearing=d, scenario=dict(Fr=3000.0, Fa=3000.0, omega=500.0, t_end=0.02,
-                                                                   sample_dt=1e-4, cage=False, dt=2e-6,
-                                                                   tangential="implicit"))
+                                                                   sample_dt=1e-4, dt=0.5e-6))
     res = run_sweep(cases, out / "sweep_item6", workers=workers)
     plt = _pyplot()
     fig, ax = plt.subplots(1, 2, figsize=(11, 4.2))
@@ -327,9 +326,8 @@ def item6(out, workers):
         rec = res[f"b7208_B{bval:.2f}"]
         a = rec["arrays"]
         psi = a["psi"][-1]
-        # without cage the balls do not stay equally spaced: compare each ball with the
-        # Stribeck law Q(psi) = Q_max [1 - (1 - cos psi)/(2 eps)]^1.5 of the discrete
-        # quasi-static solution (PHYSICS.md sec. 8, 7208 eps law) at its own azimuth
+        # compare each ball with the Stribeck law Q(psi) = Q_max [1 - (1 - cos psi)/(2 eps)]^1.5
+        # of the discrete quasi-static solution (PHYSICS.md sec. 8, 7208 eps law) at its own azimuth
         st = static_equilibrium(bearings[bval], 3000.0, 3000.0)
         law = stribeck_load(psi, st.q_max, st.eps)
         q = a["load_inner"][-1]
@@ -355,7 +353,7 @@ def item6(out, workers):
         a_.set_xlabel("azimuth psi [deg]")
         a_.grid(alpha=0.3)
     ax[0].legend(fontsize=6)
-    fig.suptitle("7208, Fr = Fa = 3000 N, 500 rad/s (no cage), three conformity sums")
+    fig.suptitle("7208, Fr = Fa = 3000 N, 500 rad/s, torus cage, three conformity sums")
     fig.tight_layout()
     fig.savefig(out / "item6_7208.png", dpi=110)
     plt.close(fig)
