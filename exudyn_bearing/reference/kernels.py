@@ -120,9 +120,13 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb,
             dxw = xb[j, 0] - ox
             dyw = xb[j, 1] - oy
             dzw = xb[j, 2] - oz
-            cx = a00 * dxw + a10 * dyw + a20 * dzw
-            cy = a01 * dxw + a11 * dyw + a21 * dzw
-            cz = a02 * dxw + a12 * dyw + a22 * dzw
+            rotated = not (a00 == 1.0 and a11 == 1.0 and a22 == 1.0)
+            if rotated:
+                cx = a00 * dxw + a10 * dyw + a20 * dzw
+                cy = a01 * dxw + a11 * dyw + a21 * dzw
+                cz = a02 * dxw + a12 * dyw + a22 * dzw
+            else:  # unrotated ring (the reference engine): skip the transformation
+                cx, cy, cz = dxw, dyw, dzw
             delta, nlx, nly, nlz, ca, sa, r_contact = _groove_geometry(cx, cy, cz, rho, zg, rc, rb, inner)
             if delta <= 0.0:
                 hist_out[j, race, 0] = 0.0
@@ -142,9 +146,12 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb,
             if ratio > worst:
                 worst = ratio
             # contact normal in the world frame, n = A n_local
-            nx = a00 * nlx + a01 * nly + a02 * nlz
-            ny = a10 * nlx + a11 * nly + a12 * nlz
-            nz = a20 * nlx + a21 * nly + a22 * nlz
+            if rotated:
+                nx = a00 * nlx + a01 * nly + a02 * nlz
+                ny = a10 * nlx + a11 * nly + a12 * nlz
+                nz = a20 * nlx + a21 * nly + a22 * nlz
+            else:
+                nx, ny, nz = nlx, nly, nlz
             # Hertz (PHYSICS.md sec. 3) at the current contact angle; k, F, E are
             # re-evaluated when R_y/R_x moved by more than 1e-6 (relative) since the
             # last evaluation for this contact, K from them and the current radii
@@ -395,9 +402,12 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb,
             a00, a01, a02 = rings[1, 6], rings[1, 7], rings[1, 8]
             a10, a11, a12 = rings[1, 9], rings[1, 10], rings[1, 11]
             a20, a21, a22 = rings[1, 12], rings[1, 13], rings[1, 14]
-            cx = a00 * dxw + a10 * dyw + a20 * dzw
-            cy = a01 * dxw + a11 * dyw + a21 * dzw
-            cz = a02 * dxw + a12 * dyw + a22 * dzw
+            if a00 == 1.0 and a11 == 1.0 and a22 == 1.0:
+                cx, cy, cz = dxw, dyw, dzw
+            else:
+                cx = a00 * dxw + a10 * dyw + a20 * dzw
+                cy = a01 * dxw + a11 * dyw + a21 * dzw
+                cz = a02 * dxw + a12 * dyw + a22 * dzw
             dr = math.sqrt(cx * cx + cy * cy) - p[P_RP]
             if dr * dr + cz * cz > free * free:
                 delta, nlx, nly, nlz, _ca, _sa, _rc = _groove_geometry(cx, cy, cz, p[P_RP], 0.0, p[P_RGUIDE],
