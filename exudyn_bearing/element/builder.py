@@ -328,15 +328,10 @@ class BallBearingElement:
             self._t_trial = t
         want = t >= self._next_sample - 1e-12
         worst = EK.element_rhs(np.asarray(q, float), np.asarray(q_t, float), self.ref, self.params, self.table,
-                               self.z, self.n_cage, self._ring_kind, self._ring_data, self._hist, self._hist_trial, t - self._t_commit, self._hz,
-                               self._work, self._rings, self._fr, self._glob, self._diag, self._cage_load, want,
-                               self._out)
-        self._check_worst(worst, t)
-        if want:
-            self._sample(t)
-        self._evaluations += 1
-        self._wall += time.perf_counter() - t0
-        return self._out
+                               self.z, self.n_cage, self._ring_kind, self._ring_data, self._hist, self._hist_trial,
+                               t - self._t_commit, self._hz, self._work, self._rings, self._fr, self._glob,
+                               self._diag, self._cage_load, want, self._out)
+        return self._after_step(t, t0, worst, want, True)
 
     def _force_uf_fast(self, mbs, t, itemNumber, q, q_t):
         """Fast mode: advance the balls in compiled sub-steps up to t, return the
@@ -370,6 +365,11 @@ class BallBearingElement:
                              self._fr_mean, self._glob, self._diag, self._cage_load, want, self._out)
         if n_sub:
             self._t_int = t
+        return self._after_step(t, t0, worst, want, bool(n_sub))
+
+    def _after_step(self, t, t0, worst, want, advanced):
+        """Runaway check, sampling and bookkeeping after a force evaluation."""
+        if advanced:
             if not worst <= self._max_overlap:  # also catches NaN
                 self._check_worst(worst, t)
             if want:
