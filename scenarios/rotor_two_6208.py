@@ -4,14 +4,14 @@ The rotor (steel shaft, 40 mm x 250 mm, 2.5 kg) is an Exudyn rigid body with
 a NodeRigidBodyRxyz node; each end sits in a 6208 whose outer ring is fixed
 to ground. Gravity acts along -y, an unbalance m e = 1e-4 kg m rotates with
 the shaft, and a motor torque with a speed limiter drives the shaft from
-rest to 1000 rad/s. The bearings are exudyn_bearing elements in the body
-mode (balls and cage balls are Exudyn nodes), tangential history with the
-implicit spring. (The bearings carry only 12 N of weight each plus the
-unbalance; at such light load the fast mode with two or more sub-steps per
-Exudyn step drives the balls too weakly - cage 18 instead of 30 rad/s
-after 20 ms - and with eight the loads grow while the speed is constant,
-so this scenario keeps the body mode; with 600 N or more per rotor the fast
-mode agrees with one sub-step.)
+rest to 1000 rad/s. The bearings are exudyn_bearing elements in the fast
+mode with one sub-step per Exudyn step (balls integrated in compiled code,
+only the ring reactions cross into Exudyn; statistically the same as the
+body mode, about half the cost), tangential history with the implicit
+spring. (The bearings carry only 12 N of weight each plus the unbalance; at
+such light load more sub-steps per Exudyn step drive the balls too weakly -
+cage 18 instead of 30 rad/s after 20 ms; ``--mode bodies`` runs the body
+mode.)
 
 Writes into ``--out`` (default scenarios/out/rotor_two_6208): rotor.png
 (speed, orbit of the shaft centre, largest ball loads and Lambda_out at
@@ -35,7 +35,7 @@ import exudyn_bearing as eb
 from exudyn_bearing.plotting import _pyplot, save_csv
 
 
-def build(omega_target=1000.0, torque_max=5.0, unbalance=1e-4, dt=5e-6, mode="bodies", sub_steps=1):
+def build(omega_target=1000.0, torque_max=5.0, unbalance=1e-4, dt=5e-6, mode="fast", sub_steps=1):
     rho, r, length, half_span = 7850.0, 0.02, 0.25, 0.1
     mass = rho * np.pi * r ** 2 * length
     jz = 0.5 * mass * r ** 2
@@ -79,9 +79,10 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--t-end", type=float, default=0.3)
     ap.add_argument("--omega", type=float, default=1000.0, help="target speed [rad/s]")
+    ap.add_argument("--mode", choices=("fast", "bodies"), default="fast", help="bearing element mode")
     ap.add_argument("--out", default=str(Path(__file__).parent / "out" / "rotor_two_6208"))
     args = ap.parse_args(argv)
-    SC, mbs, bearings, sensor, speed = build(omega_target=args.omega)
+    SC, mbs, bearings, sensor, speed = build(omega_target=args.omega, mode=args.mode)
     ss = bearings["A"].SimulationSettings(args.t_end)
     ss.solution.sensors.writePeriod = 2e-4
     ss.timeIntegration.verboseMode = 1

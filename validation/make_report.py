@@ -115,7 +115,8 @@ def section_element():
               "- The fast mode is inaccurate at very light load: on a rotor held by two bearings with 12 N each, "
               "two or more sub-steps per Exudyn step drive the balls too weakly (cage 20 instead of 27 rad/s after "
               "20 ms; one sub-step equals the body mode), while with 600 or 3000 N the cage speed of 2 and 4 "
-              "sub-steps is within 2 % of one sub-step. The rotor scenario therefore uses the body mode.",
+              "sub-steps is within 2 % of one sub-step. One sub-step (the default) equals the body mode "
+              "statistically at about half its cost; the rotor scenario uses it.",
               "- GeneralizedAlpha (h = 10 us, regularized friction) works with the element (numerical Jacobian of "
               "the whole bearing object, modified Newton): "
               f"{rows.get('element body mode, GeneralizedAlpha 10 us', {}).get('wall_per_sim_s', float('nan')):.0f} "

@@ -29,10 +29,12 @@ prescribed by ``innerRingSpeed`` / ``outerRingSpeed``).
 Fast mode (``mode="fast"``): the balls are integrated inside the element in
 compiled velocity-Verlet sub-steps between Exudyn steps (``subSteps`` of
 ``stepSize`` each), the ring poses interpolated over the Exudyn step, and
-only the ring reactions at the new ring poses cross into Exudyn. Accurate
-when the ring motion is smooth over an Exudyn step; at very light loads,
-where contacts open and close within one Exudyn step, it under-drives the
-balls (validation/REPORT.md): use the body mode there.
+only the ring reactions at the new ring poses cross into Exudyn. With
+``subSteps=1`` (default) it reproduces the body mode at about half its
+cost; more sub-steps spread the per-step overhead further and stay accurate
+while the ring motion is smooth over an Exudyn step (loaded bearings), but at
+very light loads, where contacts open and close within one Exudyn step, they
+under-drive the balls (validation/REPORT.md).
 
 Solvers: explicit ones with one force evaluation per step (VelocityVerlet,
 ExplicitEuler) give the Cundall-Strack history exactly as the reference
@@ -138,7 +140,7 @@ class BallBearingElement:
                  film="hd", guideClearance=50e-6, muDry=0.1, regularizingSpeed=0.1,
                  tangentialStiffnessRatio=2.0 / 3.0, stepSize=1e-6, innerRingSpeed=None, outerRingSpeed=None,
                  initialOmega=0.0, initialLoad=(0.0, 0.0), initial="analytic", sampleInterval=1e-4,
-                 mode="bodies", subSteps=4, contactLaw="hertz", powerLaw=(0.0, 1.5, 0.0), show=False):
+                 mode="bodies", subSteps=1, contactLaw="hertz", powerLaw=(0.0, 1.5, 0.0), show=False):
         self.mbs = mbs
         self.bearing = b = load_bearing(bearing)
         self.lubricant = default_lubricant() if lubricant is None else lubricant

@@ -26,7 +26,7 @@ class ExudynEngine:
     name = "exudyn"
 
     def __init__(self, bearing, scenario: Scenario, lubricant: Lubricant | None = None, mode: str = "bodies",
-                 sub_steps: int = 3):
+                 sub_steps: int = 1):
         import exudyn as exu
         from exudyn.itemInterface import (LoadForceVector, MarkerBodyRigid, MarkerNodePosition, NodePoint,
                                           ObjectGround, ObjectMassPoint)
