@@ -145,6 +145,13 @@ class Scenario:
             raise InputError("integrator: rk4 needs a history-free friction model "
                              "(friction='regularized' or 'none'); the Cundall-Strack spring is "
                              "updated once per step and runs with verlet")
+        try:
+            law = tuple(float(x) for x in self.power_law)
+        except (TypeError, ValueError):
+            raise InputError(f"power_law: expected (k, n, d), got {self.power_law!r}") from None
+        if len(law) != 3:
+            raise InputError(f"power_law: expected (k, n, d), got {self.power_law!r}")
+        object.__setattr__(self, "power_law", law)
         if self.contact_law not in ("hertz", "power"):
             raise InputError(f"contact_law: must be 'hertz' or 'power', got {self.contact_law!r}")
         if self.contact_law == "power":
