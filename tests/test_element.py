@@ -190,3 +190,40 @@ def test_peer_check_against_exudyn_builtin_bearing():
     # our cage runs at the kinematic speed of this geometry, 500 (1 - 6.3/30)/2 = 197.5 rad/s;
     # the built-in bearing's balls slip about 8 % at the inner race (validation/REPORT.md)
     assert e["cage_speed"] == pytest.approx(197.5, rel=5e-3)
+
+
+def test_outer_ring_on_a_flexible_housing():
+    # rotor (rigid body) in a bearing whose outer ring sits in a housing body held by a
+    # stiff Cartesian spring to ground: the housing feels the bearing force
+    from exudyn.itemInterface import ObjectConnectorCartesianSpringDamper
+
+    b = eb.catalog["6208"]
+    SC = exu.SystemContainer()
+    mbs = SC.AddSystem()
+    ground = mbs.AddObject(ObjectGround())
+    m_ground = mbs.AddMarker(MarkerBodyRigid(bodyNumber=ground, localPosition=[0.0, 0.0, 0.0]))
+    d0 = ReferenceEngine(b, eb.Scenario(Fr=3000.0, omega=500.0)).initial_state()["ring"][:3]
+    n_rot = mbs.AddNode(NodeRigidBodyRxyz(referenceCoordinates=[*d0, 0, 0, 0],
+                                          initialVelocities=[0, 0, 0, 0, 0, 500.0]))
+    rotor = mbs.AddObject(ObjectRigidBody(nodeNumber=n_rot, mass=ring_mass_estimate(b), inertia=[0.5, 0.5, 1.0, 0, 0, 0]))
+    m_rot = mbs.AddMarker(MarkerBodyRigid(bodyNumber=rotor, localPosition=[0.0, 0.0, 0.0]))
+    mbs.AddLoad(LoadForceVector(markerNumber=m_rot, loadVector=[3000.0, 0.0, 0.0]))
+    n_h = mbs.AddNode(NodeRigidBodyRxyz(referenceCoordinates=[0.0] * 6))
+    housing = mbs.AddObject(ObjectRigidBody(nodeNumber=n_h, mass=2.0, inertia=[0.01, 0.01, 0.01, 0, 0, 0]))
+    m_h = mbs.AddMarker(MarkerBodyRigid(bodyNumber=housing, localPosition=[0.0, 0.0, 0.0]))
+    k_h = 5e8
+    mbs.AddObject(ObjectConnectorCartesianSpringDamper(markerNumbers=[m_ground, m_h], stiffness=[k_h] * 3,
+                                                       damping=[2e4] * 3))
+    el = CreateBallBearing(mbs, b, m_rot, m_h, initialOmega=500.0, initialLoad=(3000.0, 0.0), stepSize=5e-6,
+                           tangential="implicit")
+    assert len(el.items["ringNodes"]) == 2
+    mbs.Assemble()
+    exu.config.printToConsole = False
+    mbs.SolveDynamic(el.SimulationSettings(0.02), solverType=exu.DynamicSolverType.VelocityVerlet)
+    exu.config.printToConsole = True
+    x_h = mbs.GetNodeOutput(n_h, exu.OutputVariableType.Position)
+    # the housing carries F_r through its spring: displacement F_r / k (within the ringing)
+    assert x_h[0] == pytest.approx(3000.0 / k_h, rel=0.15)
+    s = el.results().summary()
+    assert s["cage_speed"] == pytest.approx(198.0, rel=0.01)
+    assert s["q_max_inner"] == pytest.approx(1420, rel=0.05)
