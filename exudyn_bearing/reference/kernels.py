@@ -544,7 +544,15 @@ def run_verlet(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb
     n_samp = 0
     t = t0
     for step in range(n_steps):
-        kick_drift(h, dt, xb, vb, wb, xc, vc, fb, tb, fc, inv_mb, inv_ib, inv_mz)
+        # kick and drift written out (as kick_drift does): calling a kernel that
+        # passes arrays costs 12 % of a step here
+        for j in range(z):
+            for d in range(3):
+                vb[j, d] += h * fb[j, d] * inv_mb
+                wb[j, d] += h * tb[j, d] * inv_ib
+                xb[j, d] += dt * vb[j, d]
+                vc[j, d] += h * fc[j, d] * inv_mz
+                xc[j, d] += dt * vc[j, d]
         for d in range(3):
             ring[3 + d] += h * fring[d] * inv_mr
             ring[d] += dt * ring[3 + d]
@@ -555,7 +563,11 @@ def run_verlet(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb
         worst = forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist, dt, hz, fb, tb, fc, fr, glob, diag,
                        cage_load, want)
         _inner_ring_force(p, fr, fring)
-        kick_drift(h, 0.0, xb, vb, wb, xc, vc, fb, tb, fc, inv_mb, inv_ib, inv_mz)
+        for j in range(z):
+            for d in range(3):
+                vb[j, d] += h * fb[j, d] * inv_mb
+                wb[j, d] += h * tb[j, d] * inv_ib
+                vc[j, d] += h * fc[j, d] * inv_mz
         for d in range(3):
             ring[3 + d] += h * fring[d] * inv_mr
         if want:
