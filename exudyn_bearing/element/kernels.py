@@ -191,9 +191,8 @@ def ring_poses_from(q, q_t, ref, ring_kind, ring_data, rings):
 def advance_balls(n_sub, dt, p, table, work, rings0, rings1, rings, hist, hz, fr, fr_mean, glob, diag, cage_load,
                   want):
     """Fast mode: integrate balls and cage balls over ``n_sub`` velocity-Verlet
-    sub-steps of ``dt`` while the ring poses move linearly from ``rings0`` to
-    ``rings1`` (positions and velocities; rotation and angular velocity of
-    ``rings1``). ``work`` holds the ball state and the forces of the last
+    sub-steps of ``dt`` while the ring centres move linearly from ``rings0`` to
+    ``rings1`` (velocities, rotation and angular velocity those of ``rings1``). ``work`` holds the ball state and the forces of the last
     sub-step on entry and exit; ``fr_mean`` gets the ring reactions averaged
     over the sub-steps (the impulse the rings receive over the interval).
     Diagnostics of the last sub-step when ``want``. Returns the largest
@@ -217,9 +216,12 @@ def advance_balls(n_sub, dt, p, table, work, rings0, rings1, rings, hist, hz, fr
         kick_drift(h, dt, xb, vb, wb, xc, vc, fb, tb, fc, inv_mb, inv_ib, inv_mz)
         s = (i + 1.0) / n_sub
         for r in range(2):
-            for k in range(6):
+            # positions move linearly from the previous to the new configuration, at
+            # the new velocity: Exudyn's velocity-Verlet drift moves the ring with the
+            # half-step velocity it passes here, constant over the step
+            for k in range(3):
                 rings[r, k] = rings0[r, k] + s * (rings1[r, k] - rings0[r, k])
-            for k in range(6, RING_N):
+            for k in range(3, RING_N):
                 rings[r, k] = rings1[r, k]
         w = forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist, dt, hz, fb, tb, fc, fr, glob, diag,
                    cage_load, want and i == n_sub - 1)
