@@ -23,9 +23,10 @@ import numpy as np
 
 from .._jit import kernel
 
-from ..physics.damping import _damping_critical, _damping_fluid, damping_coefficient, lubrication_regime
+from ..physics.damping import (_damping_critical, _damping_fluid, _damping_hysteretic, damping_coefficient,
+                               lubrication_regime)
 from ..physics.ehl import _film_thickness
-from ..physics.friction import friction_coefficient
+from ..physics.friction import _regularized_coulomb, friction_coefficient
 from ..physics.geometry import _groove_geometry, _raceway_radii_cos
 from ..physics.hertz import _curvature_sum_radius, _kfe_fast, _semi_axes, _stiffness
 
@@ -173,11 +174,13 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb,
             if power_law:
                 q_el = p[P_LAW_K] * delta ** p[P_LAW_N]
                 k_n = p[P_LAW_N] * q_el / delta
+                c_hyst = 0.0  # the power law has its own linear damping
             else:
                 kst = _stiffness(kappa, ell_f, ell_e, rr, e_prime)
                 sq = math.sqrt(delta)
                 q_el = kst * delta * sq
                 k_n = 1.5 * kst * sq
+                c_hyst = _damping_hysteretic(kst, delta, p[P_ALPHA_E])
             need_axes = want or p[P_LUB] > 0.5
             if need_axes:
                 major, minor = _semi_axes(kappa, ell_e, rr, e_prime, q_el)
@@ -231,7 +234,6 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb,
             mz -= mn * nz
             u_r = math.sqrt(mx * mx + my * my + mz * mz)
             # lubrication (PHYSICS.md sec. 4-5)
-            c_hyst = 1.5 * p[P_ALPHA_E] * q_el
             if power_law:
                 h = 0.0
                 lam = 0.0
@@ -298,7 +300,7 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb,
                 hist_out[j, race, 1] = hy
                 hist_out[j, race, 2] = hzt
             elif fric == FRIC_REGULARIZED and slip > 0.0:
-                fmag = mu * f_n * min(slip / p[P_VREG], 1.0)
+                fmag = _regularized_coulomb(slip, f_n, mu, p[P_VREG])
                 ftx = -fmag * sx / slip
                 fty = -fmag * sy / slip
                 ftz = -fmag * sz / slip
