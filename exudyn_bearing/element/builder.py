@@ -260,7 +260,6 @@ class BallBearingElement:
             self._work[3, :n_cage], self._work[4, :n_cage] = xc[:n_cage], vc[:n_cage]
             self._rings0 = K.ring_poses()
             self._rings_sub = K.ring_poses()
-            self._fr_mean = np.zeros((2, 6))
             self._t_int = None
         self._rings = K.ring_poses()
         self._fr = np.zeros((2, 6))
@@ -353,7 +352,7 @@ class BallBearingElement:
             want = t >= self._next_sample - 1e-12
             worst = EK.fast_step(q, q_t, self.ref, self.params, self.table, self._ring_kind, self._ring_data, n_sub,
                                  (t - t_int) / n_sub, self._work, self._rings0, self._rings, self._rings_sub,
-                                 self._hist, self._hz, self._fr, self._fr_mean, self._glob, self._diag,
+                                 self._hist, self._hz, self._fr, self._glob, self._diag,
                                  self._cage_load, want, self._out)
             self._t_int = t
             if not worst <= self._max_overlap:  # also catches NaN
@@ -375,7 +374,7 @@ class BallBearingElement:
                                "one force evaluation per step (VelocityVerlet or ExplicitEuler)")
         # no time advance: the reactions at the current ring poses
         EK.fast_step(q, q_t, self.ref, self.params, self.table, self._ring_kind, self._ring_data, 0, 0.0, self._work,
-                     self._rings0, self._rings, self._rings_sub, self._hist, self._hz, self._fr, self._fr_mean,
+                     self._rings0, self._rings, self._rings_sub, self._hist, self._hz, self._fr,
                      self._glob, self._diag, self._cage_load, False, self._out)
         self._evaluations += 1
         return self._out

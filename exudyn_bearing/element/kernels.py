@@ -188,15 +188,15 @@ def ring_poses_from(q, q_t, ref, ring_kind, ring_data, rings):
 
 
 @kernel
-def advance_balls(n_sub, dt, p, table, work, rings0, rings1, rings, hist, hz, fr, fr_mean, glob, diag, cage_load,
+def advance_balls(n_sub, dt, p, table, work, rings0, rings1, rings, hist, hz, fr, glob, diag, cage_load,
                   want):
     """Fast mode: integrate balls and cage balls over ``n_sub`` velocity-Verlet
-    sub-steps of ``dt`` while the ring centres move linearly from ``rings0`` to
-    ``rings1`` (velocities, rotation and angular velocity those of ``rings1``). ``work`` holds the ball state and the forces of the last
-    sub-step on entry and exit; ``fr_mean`` gets the ring reactions averaged
-    over the sub-steps (the impulse the rings receive over the interval).
-    Diagnostics of the last sub-step when ``want``. Returns the largest
-    overlap / R_b."""
+    sub-steps of ``dt`` while the ring centres move linearly from ``rings0``
+    to ``rings1`` (velocities, rotation and angular velocity those of
+    ``rings1``). ``work`` holds the ball state and the forces of the last
+    sub-step on entry and exit; ``fr`` the ring reactions of the last
+    sub-step (what the fast mode returns to Exudyn). Diagnostics of the last
+    sub-step when ``want``. Returns the largest overlap / R_b."""
     z = work.shape[1]
     xb = work[0]
     vb = work[1]
@@ -210,7 +210,6 @@ def advance_balls(n_sub, dt, p, table, work, rings0, rings1, rings, hist, hz, fr
     inv_ib = 1.0 / p[P_IB]
     inv_mz = 1.0 / p[P_MZ] if p[P_CAGE] > 0.5 else 0.0
     h = 0.5 * dt
-    fr_mean[:, :] = 0.0
     worst = 0.0
     for i in range(n_sub):
         kick_drift(h, dt, xb, vb, wb, xc, vc, fb, tb, fc, inv_mb, inv_ib, inv_mz)
@@ -228,15 +227,12 @@ def advance_balls(n_sub, dt, p, table, work, rings0, rings1, rings, hist, hz, fr
         if w > worst:
             worst = w
         kick_drift(h, 0.0, xb, vb, wb, xc, vc, fb, tb, fc, inv_mb, inv_ib, inv_mz)
-        for r in range(2):
-            for k in range(6):
-                fr_mean[r, k] += fr[r, k] / n_sub
     return worst
 
 
 @kernel
 def fast_step(q, q_t, ref, p, table, ring_kind, ring_data, n_sub, dt, work, rings0, rings, rings_sub, hist, hz,
-              fr, fr_mean, glob, diag, cage_load, want, out):
+              fr, glob, diag, cage_load, want, out):
     """Fast mode, one Exudyn evaluation in one compiled call: ring poses from
     the object coordinates, ``n_sub`` ball sub-steps from ``rings0`` to the
     new poses (none when ``n_sub`` is 0), ring reactions at the new poses
@@ -244,7 +240,7 @@ def fast_step(q, q_t, ref, p, table, ring_kind, ring_data, n_sub, dt, work, ring
     ring_poses_from(q, q_t, ref, ring_kind, ring_data, rings)
     worst = 0.0
     if n_sub > 0:
-        worst = advance_balls(n_sub, dt, p, table, work, rings0, rings, rings_sub, hist, hz, fr, fr_mean, glob,
+        worst = advance_balls(n_sub, dt, p, table, work, rings0, rings, rings_sub, hist, hz, fr, glob,
                               diag, cage_load, want)
     for r in range(2):
         for k in range(RING_N):
