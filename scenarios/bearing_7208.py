@@ -10,9 +10,11 @@ CSV beside it and prints both summaries.
 
 The 1 mm cage balls of the catalogue (33 mg, 4.7 um pocket clearance) set
 the step: under the combined load the balls orbit at slightly different
-speeds and press the cage balls with 100-200 N, so the run needs
-dt <= 0.5 us (at 1 us it blows up after 16 ms; the stable-step estimate,
-which assumes cage loads of a tenth of the ball load, is optimistic here).
+speeds and press the cage balls with a few hundred newtons, so the run
+needs dt <= 0.5 us (at 1 us it stops with a dt error after about 15 ms;
+``python validation/fast_mode_checks.py`` measures both; the stable-step
+estimate, which assumes cage loads of a tenth of the ball load, is
+optimistic here).
 ``--no-cage`` runs without the cage (ball / ball contact) at 2 us.
 
     python scenarios/bearing_7208.py [--t-end 0.02]

@@ -9,9 +9,9 @@ mode with one sub-step per Exudyn step (balls integrated in compiled code,
 only the ring reactions cross into Exudyn; statistically the same as the
 body mode, about half the cost), tangential history with the implicit
 spring. (The bearings carry only 12 N of weight each plus the unbalance; at
-such light load more sub-steps per Exudyn step drive the balls too weakly -
-cage 18 instead of 30 rad/s after 20 ms; ``--mode bodies`` runs the body
-mode.)
+such light load more sub-steps per Exudyn step drive the balls too weakly,
+see ``python validation/fast_mode_checks.py``; ``--mode bodies`` runs the
+body mode.)
 
 Writes into ``--out`` (default scenarios/out/rotor_two_6208): rotor.png
 (speed, orbit of the shaft centre, largest ball loads and Lambda_out at

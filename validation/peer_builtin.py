@@ -32,7 +32,7 @@ from exudyn_bearing.element.engine import ExudynEngine
 K_CONTACT, N_EXP, D_CONTACT, MU, V_REG = 3.35e10, 1.5, 200.0, 0.1, 0.1
 
 
-def build_builtin(k=K_CONTACT, damping=D_CONTACT, mu=MU, v_reg=V_REG):
+def build_builtin(k=K_CONTACT, damping=D_CONTACT, mu=MU, v_reg=V_REG, ring_polar_inertia=1e3):
     """Exudyn's built-in ball bearing on the 6208-sized geometry; returns (SC, mbs, items).
 
     Inner ring: a free rigid body spun at 500 rad/s with F_r = 3000 N ramped
@@ -53,7 +53,8 @@ def build_builtin(k=K_CONTACT, damping=D_CONTACT, mu=MU, v_reg=V_REG):
     ring = InertiaCylinder(density=7850.0, length=0.018, outerRadius=0.024, innerRadius=0.02, axis=2)
     jxx = ring.Inertia()[0, 0]
     inner = mbs.CreateRigidBody(referencePosition=[0, 0, 0], initialAngularVelocity=[0, 0, 500.0],
-                                inertia=RigidBodyInertia(mass=ring.Mass(), inertiaTensor=np.diag([jxx, jxx, 1e3])))
+                                inertia=RigidBodyInertia(mass=ring.Mass(),
+                                                         inertiaTensor=np.diag([jxx, jxx, ring_polar_inertia])))
     m_in = mbs.AddMarker(MarkerBodyRigid(bodyNumber=inner, localPosition=[0, 0, 0]))
     mbs.AddLoad(LoadForceVector(markerNumber=m_in, loadVector=[3000.0, 0, 0],
                                 loadVectorUserFunction=lambda mbs_, t, load: [3000.0 * min(t / 0.005, 1.0), 0, 0]))
@@ -82,10 +83,10 @@ def gen_alpha_settings(t_end, h):
     return ss
 
 
-def builtin(t_end, h=1e-5, n_samples=200):
+def builtin(t_end, h=1e-5, n_samples=200, ring_polar_inertia=1e3):
     from exudyn.itemInterface import SensorBody, SensorObject
 
-    SC, mbs, items = build_builtin()
+    SC, mbs, items = build_builtin(ring_polar_inertia=ring_polar_inertia)
     period = t_end / n_samples
     sens = {race: [mbs.AddSensor(SensorObject(objectNumber=c, outputVariableType=exu.OutputVariableType.Force,
                                               storeInternal=True, writeToFile=False))
