@@ -128,8 +128,9 @@ def section_element():
               "- The fast mode is inaccurate at very light load (same script: rotor on two 6208 bearings, cage "
               "speed after 20 ms by sub-steps per Exudyn step): " + "; ".join(
                   f"{load} N: " + ", ".join(f"{k} -> {v:.1f} rad/s" for k, v in r.items())
-                  for load, r in light.items()) + ". With one sub-step (the default) the fast mode reproduces the "
-              "body mode; more sub-steps are for loaded bearings.",
+                  for load, r in light.items()) + ". With one sub-step (the default) the fast mode stays within "
+              f"{pct(max(abs(r['1'] / r['bodies'] - 1) for r in light.values()), 1)} of the body mode at "
+              f"{d['ratio_fast1_body']:.2f} of its cost (bench_element.py); more sub-steps are for loaded bearings.",
               "- GeneralizedAlpha (h = 10 us, regularized friction) works with the element (numerical Jacobian of "
               "the whole bearing object, modified Newton): "
               f"{rows.get('element body mode, GeneralizedAlpha 10 us', {}).get('wall_per_sim_s', float('nan')):.0f} "
