@@ -7,7 +7,7 @@ from pathlib import Path
 import numpy as np
 
 __all__ = ["plot_static", "plot_run", "plot_speeds", "plot_srr", "plot_film_by_phase",
-           "plot_quasi_static", "save_csv"]
+           "plot_quasi_static", "save_csv", "save_figure"]
 
 
 def _pyplot():
@@ -26,6 +26,23 @@ def save_csv(path, columns: dict) -> Path:
     data = np.column_stack([np.asarray(columns[n], float) for n in names])
     np.savetxt(path, data, delimiter=",", header=",".join(names), comments="", fmt="%.10g")
     return path
+
+
+def save_figure(fig, png, columns: dict | None = None, dpi=110, layout=True, trim=False) -> Path:
+    """Save ``fig`` as ``png`` (tight layout unless ``layout`` is False), close
+    it, and write ``columns`` (if given) to the CSV beside it; ``trim`` cuts
+    the columns to the shortest one first."""
+    png = Path(png)
+    if layout:
+        fig.tight_layout()
+    fig.savefig(png, dpi=dpi)
+    _pyplot().close(fig)
+    if columns is not None:
+        if trim:
+            n = min(len(v) for v in columns.values())
+            columns = {k: v[:n] for k, v in columns.items()}
+        save_csv(png.with_suffix(".csv"), columns)
+    return png
 
 
 def plot_static(res: dict, png) -> tuple[Path, Path]:
@@ -83,11 +100,7 @@ def plot_static(res: dict, png) -> tuple[Path, Path]:
         ax2.set_xlim(-180, 180)
         ax2.grid(True, alpha=0.3)
         ax2.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(png, dpi=120)
-    plt.close(fig)
-    csv = save_csv(png.with_suffix(".csv"), cols)
-    return png, csv
+    return png, save_figure(fig, png, cols, dpi=120).with_suffix(".csv")
 
 
 def plot_run(run, png) -> Path:
@@ -143,11 +156,8 @@ def plot_run(run, png) -> Path:
     ax[1, 0].axhline(3.0, color="k", lw=0.7, ls="--")
     fig.suptitle(f"{b.name}: Fr = {s.Fr:g} N, Fa = {s.Fa:g} N, omega = {s.omega:g} rad/s, "
                  f"{run.engine} engine, {s.integrator}, dt = {s.dt:g} s")
-    fig.savefig(png, dpi=110)
-    plt.close(fig)
-    save_csv(png.with_suffix(".csv"), {"t_s": t, "omega_rad_s": omega, "cage_speed_rad_s": cage,
-                                       "ball_spin_mean_rad_s": spin, "q_max_inner_N": q_in,
-                                       "q_max_outer_N": q_out})
+    save_figure(fig, png, {"t_s": t, "omega_rad_s": omega, "cage_speed_rad_s": cage, "ball_spin_mean_rad_s": spin,
+                           "q_max_inner_N": q_in, "q_max_outer_N": q_out}, layout=False)
     return png
 
 
@@ -189,11 +199,8 @@ def plot_speeds(run, png, ball=0) -> Path:
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)
     ax.set_title(f"{b.name}: Fr = {s.Fr:g} N, {run.engine} engine")
-    fig.tight_layout()
-    fig.savefig(png, dpi=120)
-    plt.close(fig)
-    save_csv(png.with_suffix(".csv"), {"t_s": t, "omega_rad_s": omega, f"ball{ball}_spin_rad_s": spin[:, ball],
-                                       "ball_spin_mean_rad_s": spin.mean(axis=1), "cage_rad_s": cage})
+    save_figure(fig, png, {"t_s": t, "omega_rad_s": omega, f"ball{ball}_spin_rad_s": spin[:, ball],
+                           "ball_spin_mean_rad_s": spin.mean(axis=1), "cage_rad_s": cage}, dpi=120)
     return png
 
 
@@ -214,10 +221,7 @@ def plot_srr(run, png, ball=0) -> Path:
     ax.set_ylabel(f"slide-to-roll ratio of ball {ball} [-]")
     ax.grid(alpha=0.3, which="both")
     ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(png, dpi=120)
-    plt.close(fig)
-    save_csv(png.with_suffix(".csv"), cols)
+    save_figure(fig, png, cols, dpi=120)
     return png
 
 
@@ -245,11 +249,8 @@ def plot_film_by_phase(run, png, race="outer") -> Path:
         a.set_xlim(-180, 180)
         a.grid(alpha=0.3)
         a.legend(fontsize=8, markerscale=4)
-    fig.tight_layout()
-    fig.savefig(png, dpi=120)
-    plt.close(fig)
-    save_csv(png.with_suffix(".csv"), {"psi_deg": psi.ravel(), "phase": phase.ravel(),
-                                       "h_min_um": h.ravel(), "lambda": lam.ravel()})
+    save_figure(fig, png, {"psi_deg": psi.ravel(), "phase": phase.ravel(),
+                           "h_min_um": h.ravel(), "lambda": lam.ravel()}, dpi=120)
     return png
 
 
@@ -282,9 +283,6 @@ def plot_quasi_static(run, png) -> Path:
         a.legend(fontsize=8)
     fig.suptitle(f"{run.bearing.name}: Fr = {run.scenario.Fr:g} N, Pd = "
                  f"{run.bearing.diametral_clearance * 1e6:.1f} um, omega = {run.scenario.omega:g} rad/s")
-    fig.tight_layout()
-    fig.savefig(png, dpi=120)
-    plt.close(fig)
-    save_csv(png.with_suffix(".csv"), {"psi_rad": psi, "q_analytic_N": st.q, "q_inner_N": q_in, "q_outer_N": q_out,
-                                       "delta_analytic_m": st.overlap, "delta_m": delta})
+    save_figure(fig, png, {"psi_rad": psi, "q_analytic_N": st.q, "q_inner_N": q_in, "q_outer_N": q_out,
+                           "delta_analytic_m": st.overlap, "delta_m": delta}, dpi=120)
     return png

@@ -26,7 +26,7 @@ import numpy as np
 
 import exudyn_bearing as eb
 from exudyn_bearing.physics.load_distribution import static_equilibrium
-from exudyn_bearing.plotting import _pyplot, save_csv
+from exudyn_bearing.plotting import _pyplot, save_figure
 
 
 def main(argv=None):
@@ -73,11 +73,7 @@ def main(argv=None):
         a.grid(alpha=0.3)
         a.legend(fontsize=8)
     fig.suptitle("7208, Fr = Fa = 3000 N, 500 rad/s")
-    fig.tight_layout()
-    fig.savefig(out / "bearing_7208.png", dpi=110)
-    plt.close(fig)
-    n = min(len(v) for v in cols.values())
-    save_csv(out / "bearing_7208.csv", {k: v[:n] for k, v in cols.items()})
+    save_figure(fig, out / "bearing_7208.png", cols, trim=True)
     print("figure:", out / "bearing_7208.png")
 
 

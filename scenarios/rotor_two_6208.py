@@ -32,7 +32,7 @@ from exudyn.itemInterface import (LoadForceVector, LoadMassProportional, LoadTor
                                   SensorNode)
 
 import exudyn_bearing as eb
-from exudyn_bearing.plotting import _pyplot, save_csv
+from exudyn_bearing.plotting import _pyplot, save_figure
 
 
 def build(omega_target=1000.0, torque_max=5.0, unbalance=1e-4, dt=5e-6, mode="fast", sub_steps=1):
@@ -119,11 +119,8 @@ def main(argv=None):
     for a in ax.ravel():
         a.grid(alpha=0.3)
     fig.suptitle("rigid rotor on two 6208 bearings: gravity, unbalance 1e-4 kg m, motor run-up")
-    fig.tight_layout()
-    fig.savefig(out / "rotor.png", dpi=110)
-    plt.close(fig)
-    n = min(len(pos), len(w))
-    save_csv(out / "rotor.csv", {"t_s": pos[:n, 0], "x_m": pos[:n, 1], "y_m": pos[:n, 2], "omega_rad_s": w[:n, 3]})
+    save_figure(fig, out / "rotor.png", {"t_s": pos[:, 0], "x_m": pos[:, 1], "y_m": pos[:, 2], "omega_rad_s": w[:, 3]},
+                trim=True)
     s = {k: r.summary() for k, r in runs.items()}
     print(f"{args.t_end} s simulated in {wall:.1f} s wall; final speed {w[-1, 3]:.0f} rad/s")
     for k in runs:

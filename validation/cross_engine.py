@@ -14,7 +14,7 @@ from pathlib import Path
 import numpy as np
 
 import exudyn_bearing as eb
-from exudyn_bearing.plotting import _pyplot, save_csv
+from exudyn_bearing.plotting import _pyplot, save_figure
 
 SCENES = {
     "500rad_s": dict(Fr=3000.0, omega=500.0),
@@ -62,11 +62,7 @@ def main(argv=None):
         ax.set_title(f"6208 {name}: {kw}")
         ax.grid(alpha=0.3)
         ax.legend(fontsize=8)
-        fig.tight_layout()
-        fig.savefig(out / f"cross_engine_{name}.png", dpi=110)
-        plt.close(fig)
-        n = min(len(v) for v in cols.values())
-        save_csv(out / f"cross_engine_{name}.csv", {k: v[:n] for k, v in cols.items()})
+        save_figure(fig, out / f"cross_engine_{name}.png", cols, trim=True)
     (out / "cross_engine.json").write_text(json.dumps(report, indent=2))
 
 

@@ -36,7 +36,7 @@ from exudyn_bearing import plotting
 from exudyn_bearing.cli import to_jsonable
 from exudyn_bearing.physics import kinematics
 from exudyn_bearing.physics.load_distribution import static_equilibrium, stribeck_load
-from exudyn_bearing.plotting import _pyplot, save_csv
+from exudyn_bearing.plotting import _pyplot, save_csv, save_figure
 from exudyn_bearing.sweep import run_sweep
 
 DT = 5e-6
@@ -98,10 +98,7 @@ def item1(out, workers):
             a_.grid(alpha=0.3)
         ax[0].legend(fontsize=6)
         fig.suptitle(f"6208 quasi-static (omega = 1 rad/s): {gname} cases; lines analytic, o reference, x Exudyn")
-        fig.tight_layout()
-        fig.savefig(out / f"item1_quasi_static_{gname}.png", dpi=110)
-        plt.close(fig)
-        save_csv(out / f"item1_quasi_static_{gname}.csv", cols)
+        save_figure(fig, out / f"item1_quasi_static_{gname}.png", cols)
     return metrics
 
 
@@ -128,11 +125,7 @@ def item2(out, workers):
     ax.set_ylabel("angular speed [rad/s]")
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(out / "item2_speeds_both_engines.png", dpi=110)
-    plt.close(fig)
-    n = min(len(v) for v in cols.values())
-    save_csv(out / "item2_speeds_both_engines.csv", {k: v[:n] for k, v in cols.items()})
+    save_figure(fig, out / "item2_speeds_both_engines.png", cols, trim=True)
     plotting.plot_srr(runs["reference"], out / "item2_srr_ball0.png")
     plotting.plot_film_by_phase(runs["reference"], out / "item2_film_outer_by_phase.png")
     metrics = {}
@@ -167,11 +160,7 @@ def _azimuth_plot(res, names, labels, field, title, png, ylabel):
     ax.set_title(title)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7, markerscale=4)
-    fig.tight_layout()
-    fig.savefig(png, dpi=110)
-    plt.close(fig)
-    n = min(len(v) for v in cols.values())
-    save_csv(Path(png).with_suffix(".csv"), {k: v[:n] for k, v in cols.items()})
+    save_figure(fig, png, cols, trim=True)
 
 
 def item3(out, workers):
@@ -200,9 +189,7 @@ def item3(out, workers):
     ax[1].set_title(f"slope {s_fr:.4f} +- {se_fr:.4f}")
     for a in ax:
         a.grid(alpha=0.3, which="both")
-    fig.tight_layout()
-    fig.savefig(out / "item3_fits.png", dpi=110)
-    plt.close(fig)
+    save_figure(fig, out / "item3_fits.png")
     return dict(slope_lambda_vs_qmax=s_lam, se_slope_lambda=se_lam, slope_fr_vs_qmax=s_fr, se_slope_fr=se_fr,
                 engine="reference", dt=DT, wall_s=sum(r["wall_case_s"] for r in res.values()))
 
@@ -238,9 +225,7 @@ def item4(out, workers):
     for a in ax:
         a.set_xlabel("P_d [um]")
         a.grid(alpha=0.3)
-    fig.tight_layout()
-    fig.savefig(out / "item4_zone_qmax_eps.png", dpi=110)
-    plt.close(fig)
+    save_figure(fig, out / "item4_zone_qmax_eps.png")
     return dict(Pd_um=list(pds * 1e6), loaded_zone_deg=zone, q_max_inner=qmax, eps=eps, engine="reference", dt=DT,
                 wall_s=sum(r["wall_case_s"] for r in res.values()),
                 q_max_monotonic=bool(np.all(np.diff(qmax) > 0)), zone_monotonic=bool(np.all(np.diff(zone) <= 1e-9)))
@@ -300,10 +285,7 @@ def item5(out, workers):
     ax[1].legend(fontsize=6)
     for a in ax:
         a.grid(alpha=0.3, which="both")
-    fig.tight_layout()
-    fig.savefig(out / "item5_speed_sweep.png", dpi=110)
-    plt.close(fig)
-    save_csv(out / "item5_speed_sweep.csv", cols)
+    save_figure(fig, out / "item5_speed_sweep.png", cols)
     return metrics
 
 
@@ -354,10 +336,7 @@ def item6(out, workers):
         a_.grid(alpha=0.3)
     ax[0].legend(fontsize=6)
     fig.suptitle("7208, Fr = Fa = 3000 N, 500 rad/s, torus cage, three conformity sums")
-    fig.tight_layout()
-    fig.savefig(out / "item6_7208.png", dpi=110)
-    plt.close(fig)
-    save_csv(out / "item6_7208.csv", cols)
+    save_figure(fig, out / "item6_7208.png", cols)
     return metrics
 
 
@@ -405,10 +384,8 @@ def item7(out, workers):
     ax.set_ylabel("|FFT| of the radial ring reaction")
     ax.legend(fontsize=8)
     ax.grid(alpha=0.3)
-    fig.tight_layout()
-    fig.savefig(out / "item7_ring_force_spectrum.png", dpi=110)
-    plt.close(fig)
-    save_csv(out / "item7_ring_force_spectrum.csv", {"f_Hz": freqs[freqs < 2000], "abs_fft": spec[freqs < 2000]})
+    low = freqs < 2000
+    save_figure(fig, out / "item7_ring_force_spectrum.png", {"f_Hz": freqs[low], "abs_fft": spec[low]})
     return {k: dict(simulated=float(v[0]), kinematic=float(v[1]), error_pct=100 * (v[0] / v[1] - 1), how=v[2])
             for k, v in rows.items()} | {"wall_s": r.wall_s, "dt": DT, "engine": "reference"}
 

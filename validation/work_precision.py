@@ -24,7 +24,7 @@ import numpy as np
 
 import exudyn_bearing as eb
 from exudyn_bearing.cli import to_jsonable
-from exudyn_bearing.plotting import _pyplot, save_csv
+from exudyn_bearing.plotting import _pyplot, save_figure
 
 FAMILIES = {
     "reference, verlet, explicit spring": [dict(dt=d) for d in (1e-6, 2e-6, 4e-6, 6e-6)],
@@ -97,13 +97,10 @@ def main(argv=None):
         a.grid(alpha=0.3, which="both")
     ax[0].legend(fontsize=6)
     fig.suptitle("6208, 3000 N, 500 rad/s: speed against error (lower left is better)")
-    fig.tight_layout()
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
-    fig.savefig(out / "work_precision.png", dpi=110)
-    plt.close(fig)
-    save_csv(out / "work_precision.csv", {k: [r[k] for r in rows] for k in
-                                          ("dt", "wall_per_sim_s", "err_q_max", "err_cage", "err_trajectory")})
+    save_figure(fig, out / "work_precision.png", {k: [r[k] for r in rows] for k in
+                                                  ("dt", "wall_per_sim_s", "err_q_max", "err_cage", "err_trajectory")})
     (out / "work_precision.json").write_text(json.dumps(to_jsonable(dict(rows=rows, reference=s_ref, t_end=T)),
                                                         indent=2))
 
