@@ -56,6 +56,15 @@ def test_sphere_sphere_closed_form():
         4 * g * math.sqrt(req) / (3 * (1 - nu)), rel=1e-12)
 
 
+def test_tangent_stiffness_is_the_slope_of_the_load_deflection_curve():
+    # dQ/d delta of Q = K delta^1.5, by central differences of hertz_contact
+    rx, ry, d, h = 5e-3, 160e-3, 20e-6, 1e-9
+    qp, qm = hertz.hertz_contact(rx, ry, E_PRIME, overlap=np.array([d + h, d - h])).load
+    c = hertz.hertz_contact(rx, ry, E_PRIME, overlap=d)
+    assert hertz.tangent_stiffness(c.stiffness, c.load) == pytest.approx((qp - qm) / (2 * h), rel=1e-6)
+    assert hertz.tangent_stiffness(c.stiffness, -1.0) == 0.0
+
+
 def test_load_and_overlap_are_inverse_and_ellipse_consistent():
     rx, ry = 5e-3, 160e-3
     c = hertz.hertz_contact(rx, ry, E_PRIME, load=np.array([10.0, 1457.0, 5000.0]))

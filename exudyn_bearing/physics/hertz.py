@@ -62,6 +62,7 @@ __all__ = [
     "hertz_contact",
     "HertzContact",
     "sphere_sphere_stiffness",
+    "tangent_stiffness",
     "exact_table",
 ]
 
@@ -428,3 +429,15 @@ def sphere_sphere_stiffness(r1, r2, e_prime):
 
 
 _sphere_sphere_stiffness = kernel(sphere_sphere_stiffness)
+
+
+def tangent_stiffness(stiffness, load):
+    """Tangent (linearised) stiffness dQ/d delta of a Hertz point contact at
+    the load Q [N/m].
+
+    From Q = K delta^(3/2): dQ/d delta = 1.5 K delta^(1/2) = 1.5 K^(2/3) Q^(1/3)
+    (Harris & Kotzalas [2]_, load-deflection relation; PHYSICS.md sec. 3).
+    Used for the stable-step estimate. Scalars or numpy arrays; loads below
+    zero count as zero.
+    """
+    return 1.5 * np.cbrt(np.asarray(stiffness, float) ** 2 * np.maximum(load, 0.0))

@@ -87,8 +87,8 @@ def stable_step(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant |
         scenario.Fr > 0 or scenario.Fa > 0 or b.diametral_clearance < 0) else 0.0
     q = max(q0 + q_cf, 10.0)
     ki, ko, _kn = race_stiffness(b, b.free_contact_angle, scenario.hertz)
-    kt_i = 1.5 * ki ** (2.0 / 3.0) * q ** (1.0 / 3.0)
-    kt_o = 1.5 * ko ** (2.0 / 3.0) * q ** (1.0 / 3.0)
+    kt_i = float(hertz.tangent_stiffness(ki, q))
+    kt_o = float(hertz.tangent_stiffness(ko, q))
     factor = 2.0 if scenario.integrator == "verlet" else 2.83
     dt_n = factor / math.sqrt((kt_i + kt_o) / mb)
     dt_t = math.inf
@@ -103,7 +103,7 @@ def stable_step(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant |
         mz = b.cage_ball_mass
         em = e_prime_of(b)
         kbz = float(hertz.sphere_sphere_stiffness(b.ball_radius, b.cage_ball_radius, em))
-        kc = 1.5 * kbz ** (2.0 / 3.0) * (0.1 * q) ** (1.0 / 3.0)
+        kc = float(hertz.tangent_stiffness(kbz, 0.1 * q))
         dt_c = factor / math.sqrt(2.0 * kc * (mb + mz) / (mb * mz))
     parts = {"normal": dt_n, "tangential": dt_t, "friction": dt_f, "cage": dt_c}
     name = min(parts, key=parts.get)
