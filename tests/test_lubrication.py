@@ -111,3 +111,19 @@ def test_hysteretic_and_fluid_damping_formulas():
 def test_regularized_coulomb_ramp():
     f = friction.regularized_coulomb(np.array([0.0, 0.05, 0.1, -2.0]), 100.0, 0.1, 0.1)
     np.testing.assert_allclose(f, [0.0, 5.0, 10.0, 10.0])
+
+
+def test_sphere_tangential_mass_from_rigid_body_dynamics():
+    # a unit tangential force at the surface of a sphere (I = 2/5 m R^2) accelerates
+    # the contact point by F/m + F R^2/I = 3.5 F/m
+    m, r = 0.0334, 6.35e-3
+    inertia = 0.4 * m * r ** 2
+    assert friction.sphere_tangential_mass(m) == pytest.approx(1.0 / (1.0 / m + r ** 2 / inertia), rel=1e-12)
+
+
+def test_implicit_tangential_spring_limits():
+    k, m = 1e8, 0.01
+    assert friction.implicit_tangential_stiffness(k, 1e-12, m) == pytest.approx(k, rel=1e-6)  # dt -> 0
+    # bounded by m / dt^2: the spring cannot raise the contact point's frequency above 1/dt
+    for dt in (1e-6, 1e-5, 1e-4):
+        assert friction.implicit_tangential_stiffness(k, dt, m) < m / dt ** 2

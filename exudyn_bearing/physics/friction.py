@@ -16,7 +16,7 @@ from numba import vectorize
 
 from .._jit import kernel
 
-__all__ = ["friction_coefficient", "regularized_coulomb"]
+__all__ = ["friction_coefficient", "regularized_coulomb", "sphere_tangential_mass", "implicit_tangential_stiffness"]
 
 
 @vectorize(["float64(float64, float64, float64, float64, float64)"], cache=True)
@@ -48,3 +48,28 @@ def regularized_coulomb(slip_speed, normal_force, mu, regularizing_speed):
 
 
 _regularized_coulomb = kernel(regularized_coulomb)
+
+
+def sphere_tangential_mass(mass):
+    """Effective mass [kg] of a free solid sphere for a tangential force at
+    its surface: 1/m_t = 1/m + R^2/I with I = 2/5 m R^2, so m_t = m / 3.5
+    (rigid-body dynamics of the sphere; the inertia the Cundall-Strack spring
+    of PHYSICS.md sec. 6 acts on)."""
+    return mass / 3.5
+
+
+_sphere_tangential_mass = kernel(sphere_tangential_mass)
+
+
+def implicit_tangential_stiffness(stiffness, dt, tangential_mass):
+    """Step-consistent tangential spring K_t / (1 + K_t dt^2 / m_t) [N/m].
+
+    The Cundall-Strack spring (PHYSICS.md sec. 6) evaluated with the spring
+    displacement of the end of the step (backward Euler on the contact-point
+    mass m_t): bounded by m_t / dt^2, so the spring sets no step limit, and
+    equal to K_t as dt -> 0 (``Scenario(tangential="implicit")``).
+    """
+    return stiffness / (1.0 + stiffness * dt * dt / tangential_mass)
+
+
+_implicit_tangential_stiffness = kernel(implicit_tangential_stiffness)

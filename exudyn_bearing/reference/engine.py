@@ -20,6 +20,7 @@ from ..analysis import default_lubricant, e_prime_of
 from ..data import BallBearing, InputError, Lubricant, load_bearing
 from ..physics import hertz, kinematics
 from ..physics.ehl import film_model_code
+from ..physics.friction import sphere_tangential_mass
 from ..physics.load_distribution import race_stiffness, static_equilibrium
 from ..scenario import FRICTION_MODELS, Scenario
 from . import kernels as K
@@ -97,7 +98,7 @@ def stable_step(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant |
     if scenario.friction == "history" and scenario.tangential == "explicit":
         dt_t = factor / math.sqrt(scenario.tangential_stiffness_ratio * (kt_i + kt_o) * 2.5 / mb)
     elif scenario.friction == "regularized" and mu > 0:
-        dt_f = factor * (mb / 3.5) / (2.0 * mu * q / scenario.regularizing_speed)
+        dt_f = factor * sphere_tangential_mass(mb) / (2.0 * mu * q / scenario.regularizing_speed)
     dt_c = math.inf
     if scenario.cage and b.has_cage:
         mz = b.cage_ball_mass

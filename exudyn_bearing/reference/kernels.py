@@ -26,7 +26,8 @@ from .._jit import kernel
 from ..physics.damping import (_damping_critical, _damping_fluid, _damping_hysteretic, damping_coefficient,
                                lubrication_regime)
 from ..physics.ehl import _film_thickness
-from ..physics.friction import _regularized_coulomb, friction_coefficient
+from ..physics.friction import (_implicit_tangential_stiffness, _regularized_coulomb, _sphere_tangential_mass,
+                                friction_coefficient)
 from ..physics.geometry import _groove_geometry, _raceway_radii_cos
 from ..physics.hertz import _curvature_sum_radius, _kfe_fast, _semi_axes, _stiffness
 
@@ -283,7 +284,7 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb,
                 dt = p[P_DT]
                 k_t = p[P_KT_RATIO] * k_n
                 if p[P_KT_IMPLICIT] > 0.5:
-                    k_t = k_t / (1.0 + k_t * dt * dt * 3.5 / p[P_MB])
+                    k_t = _implicit_tangential_stiffness(k_t, dt, _sphere_tangential_mass(p[P_MB]))
                 ftx = -k_t * hx
                 fty = -k_t * hy
                 ftz = -k_t * hzt
