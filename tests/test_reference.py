@@ -106,7 +106,7 @@ def test_centrifugal_load_at_1700_rad_s():
     s = r.summary()
     b = r.bearing
     wc = kinematics.cage_speed(1700.0, 0.0, b.ball_radius, b.pitch_radius)
-    f_c = b.ball_mass * b.pitch_radius * wc ** 2
+    f_c = kinematics.centrifugal_force(b.ball_mass, b.pitch_radius, wc)
     assert s["q_max_outer"] > 1462.0
     assert s["q_max_outer"] - s["q_max_inner"] == pytest.approx(f_c, rel=0.15)
     assert s["cage_speed"] == pytest.approx(wc, rel=5e-3)

@@ -35,6 +35,7 @@ __all__ = [
     "ball_spin_absolute",
     "rolling_speeds",
     "defect_frequencies",
+    "centrifugal_force",
 ]
 
 
@@ -139,3 +140,18 @@ def defect_frequencies(omega_inner, omega_outer, n_balls, ball_radius, pitch_rad
         "bpfi": float(n_balls * np.abs(fi - fc)),
         "bsf": float(bsf),
     }
+
+
+def centrifugal_force(ball_mass, pitch_radius, cage_speed):
+    """Centrifugal force of a ball orbiting with the cage, F_c = m r_p omega_c^2 [N].
+
+    It presses the ball on the outer race, so at speed the outer contact
+    carries about F_c more than the inner (Harris & Kotzalas [1]_, high-speed
+    operation; PHYSICS.md sec. 8, the 1700 rad/s case).
+
+    Examples
+    --------
+    >>> round(float(centrifugal_force(0.0105, 30.3e-3, 200.0)), 2)
+    12.73
+    """
+    return ball_mass * pitch_radius * np.square(cage_speed)

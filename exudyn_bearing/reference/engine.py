@@ -83,7 +83,7 @@ def stable_step(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant |
     lub = default_lubricant() if lubricant is None else lubricant
     mb = b.ball_mass
     wc = float(kinematics.cage_speed(scenario.omega, 0.0, b.ball_radius, b.pitch_radius, b.free_contact_angle))
-    q_cf = mb * b.pitch_radius * wc ** 2
+    q_cf = float(kinematics.centrifugal_force(mb, b.pitch_radius, wc))
     q0 = static_equilibrium(b, scenario.Fr, scenario.Fa, hertz_method=scenario.hertz).q_max if (
         scenario.Fr > 0 or scenario.Fa > 0 or b.diametral_clearance < 0) else 0.0
     q = max(q0 + q_cf, 10.0)
