@@ -339,8 +339,9 @@ class BallBearingElement:
         ring reactions at t (the force at the new configuration that the
         velocity-Verlet step needs) as generalized ring forces.
 
-        This runs once per Exudyn step and its Python overhead is a third of
-        the step's cost, hence the lean code."""
+        This runs once per Exudyn step and its Python overhead is a large
+        share of the step's cost (validation/bench_element.py), hence the
+        lean code."""
         for r, f in self._speeds:
             self._ring_data[r, EK.RD_SPIN] = f(t)
         # Exudyn's vectors become contiguous float64 arrays (one compiled signature)
