@@ -140,16 +140,75 @@ def test_rk44_with_regularized_friction_matches_verlet():
         assert a[k] == pytest.approx(b[k], rel=5e-3), k
 
 
-def test_fast_mode_matches_the_reference_engine():
-    # balls integrated in compiled sub-steps (3 per Exudyn step), only ring reactions cross
+@pytest.mark.parametrize("sub, steps", [(3, 1333), (4, 1000)])
+def test_fast_mode_matches_the_reference_engine(sub, steps):
+    # balls integrated in compiled sub-steps (3 or 4 per Exudyn step), only ring
+    # reactions cross; with 4 sub-steps (20 us Exudyn steps on the 81 g ring) the
+    # ring reaction sampled at the step end instead of the sub-step mean put
+    # q_max_inner 12 % high
     from exudyn_bearing.element.engine import ExudynEngine
 
     sc = eb.Scenario(Fr=3000.0, omega=500.0, t_end=0.02, dt=5e-6, tangential="implicit", sample_dt=1e-4)
-    fast = ExudynEngine("6208", sc, mode="fast", sub_steps=3).run().summary()
+    fast = ExudynEngine("6208", sc, mode="fast", sub_steps=sub).run().summary()
     ref = eb.simulate("6208", sc).summary()
     for k in KEYS:
         assert fast[k] == pytest.approx(ref[k], rel=0.01), k
-    assert fast["steps"] == 1333  # Exudyn steps of 15 us
+    assert fast["steps"] == steps  # Exudyn steps of 15 / 20 us
+
+
+def test_fast_mode_ring_and_balls_exchange_equal_impulses():
+    # rattling balls between a held inner ring and the fixed outer ring, 4 sub-steps
+    # per Exudyn step: the impulse the rings receive from Exudyn's velocity-Verlet
+    # steps (H times the returned reactions) must equal minus the balls' momentum
+    # change, up to the half kicks pending at both ends, (dt/2)(F_first - F_last).
+    # Returning the reaction of the last sub-step instead misses it by ~1e-3 N s.
+    from exudyn_bearing.element.engine import ExudynEngine
+
+    dt, m = 5e-6, 4
+    sc = eb.Scenario(Fr=3000.0, omega=500.0, t_end=0.001, dt=dt, sample_dt=1e-3)
+    el = ExudynEngine("6208", sc, mode="fast", sub_steps=m).element
+    b, w = el.bearing, el._work
+    rng = np.random.default_rng(1)
+    w[1] += rng.normal(0.0, 0.05, w[1].shape)  # ball velocities [m/s]
+    q = np.asarray(el.initialRingDisplacement, float)
+    q_t = np.zeros(3)
+
+    def momentum():
+        return b.ball_mass * w[1].sum(axis=0) + b.cage_ball_mass * w[4, :el.n_cage].sum(axis=0)
+
+    def ball_force():  # net force on balls and cage balls at their last evaluation
+        return w[5].sum(axis=0) + w[7, :el.n_cage].sum(axis=0)
+
+    h = m * dt
+    el._force_uf_fast(el.mbs, 0.0, 0, q, q_t)
+    el._force_uf_fast(el.mbs, h, 0, q, q_t)  # start-up call (integrates 1.5 H)
+    p1, f1, impulse, swing = momentum(), ball_force(), np.zeros(3), 0.0
+    for n in range(2, 152):
+        el._force_uf_fast(el.mbs, n * h, 0, q, q_t)
+        ring = el._fr[0, :3] + el._fr[1, :3]
+        impulse += h * ring
+        swing += h * float(np.linalg.norm(ring))
+    residual = momentum() - p1 + impulse - 0.5 * dt * (f1 - ball_force())
+    assert swing > 0.1  # N s: the exchange is not negligible
+    assert np.linalg.norm(residual) <= 1e-9 * swing
+
+
+def test_ring_stable_step_brackets_the_fast_mode_limit():
+    # the 81 g ring of the test scene runs at 20 us Exudyn steps (4 sub-steps, test
+    # above) and blows up at 30 us (6 sub-steps): the estimate must lie between,
+    # and the 30 us run must be warned about before it starts
+    from exudyn_bearing.element.engine import ExudynEngine
+    from exudyn_bearing.reference.engine import StepSizeWarning, ring_stable_step
+
+    sc = eb.Scenario(Fr=3000.0, omega=500.0, t_end=0.005, dt=5e-6, tangential="implicit", sample_dt=1e-4)
+    b = eb.catalog["6208"]
+    assert 20e-6 < ring_stable_step(b, sc, ring_mass_estimate(b)) < 30e-6
+    eng = ExudynEngine("6208", sc, mode="fast", sub_steps=6)
+    assert eng.element.ringStableStep == ring_stable_step(b, sc, ring_mass_estimate(b))
+    with pytest.warns(StepSizeWarning, match="^subSteps"), pytest.raises(Exception, match="stepSize"):
+        eng.run()
+    with pytest.raises(InputError, match="^ring_mass"):
+        ring_stable_step(b, sc, 0.0)
 
 
 def test_fast_mode_time_must_advance():
@@ -160,7 +219,10 @@ def test_fast_mode_time_must_advance():
     el = eng.element
     q = np.zeros(3)
     el._force_uf_fast(eng.mbs, 1e-4, 0, q, q)
-    el._force_uf_fast(eng.mbs, 2e-4, 0, q, q)
+    from exudyn_bearing.reference.engine import StepSizeWarning
+
+    with pytest.warns(StepSizeWarning, match="^subSteps"):  # a 100 us step for the 81 g ring, checked at run time
+        el._force_uf_fast(eng.mbs, 2e-4, 0, q, q)
     with pytest.raises(RuntimeError, match="^mode"):
         el._force_uf_fast(eng.mbs, 1e-4, 0, q, q)
 

@@ -28,13 +28,18 @@ prescribed by ``innerRingSpeed`` / ``outerRingSpeed``).
 
 Fast mode (``mode="fast"``): the balls are integrated inside the element in
 compiled velocity-Verlet sub-steps between Exudyn steps (``subSteps`` of
-``stepSize`` each), the ring poses interpolated over the Exudyn step, and
-only the ring reactions at the new ring poses cross into Exudyn. With
-``subSteps=1`` (default) it reproduces the body mode at about half its
-cost; more sub-steps spread the per-step overhead further and stay accurate
-while the ring motion is smooth over an Exudyn step (loaded bearings), but at
-very light loads, where contacts open and close within one Exudyn step, they
-under-drive the balls (validation/REPORT.md).
+``stepSize`` each) and only the ring reactions cross into Exudyn. The
+sub-steps of one call are centred on the Exudyn time t (they run from
+t - H/2 to t + H/2, the ring poses interpolated from the previous step and
+extrapolated with the ring velocity beyond t), and the ring receives their
+mean reaction: the impulse Exudyn's velocity-Verlet step gives the ring then
+equals the sum of the impulses the balls received, without lag. With
+``subSteps=1`` (default) it reproduces the body mode at about half its cost.
+More sub-steps spread the per-step overhead further; the Exudyn step H =
+subSteps * stepSize then also has to integrate the ring bodies against the
+contact stiffness: keep it below ``ringStableStep`` (estimated from the ring
+body's mass and the inner contacts' stiffness at ``initialLoad``; a larger
+step warns). See validation/REPORT.md for the measured limits.
 
 Solvers: explicit ones with one force evaluation per step (VelocityVerlet,
 ExplicitEuler) give the Cundall-Strack history exactly as the reference
@@ -47,6 +52,7 @@ from __future__ import annotations
 
 import math
 import time
+import warnings
 
 import numpy as np
 
@@ -54,7 +60,7 @@ from ..analysis import default_lubricant
 from ..data import BallBearing, InputError, Lubricant, load_bearing
 from ..physics import hertz
 from ..reference import kernels as K
-from ..reference.engine import ReferenceEngine, StepSizeWarning, scene_parameters, stable_step
+from ..reference.engine import ReferenceEngine, StepSizeWarning, ring_stable_step, scene_parameters, stable_step
 from ..results import Results
 from ..scenario import Scenario
 from . import kernels as EK
@@ -102,6 +108,21 @@ def _marker_ring(mbs, marker, which):
     raise InputError(f"{name}: node type {ntype} is not supported (NodeRigidBodyRxyz, NodePoint or ground)")
 
 
+def _ring_body_mass(mbs, marker):
+    """Mass [kg] of the body a ring marker sits on, found through the marker's
+    body or its node (None: ground or unknown)."""
+    m = mbs.GetMarker(int(marker))
+    if "bodyNumber" in m:
+        mass = mbs.GetObject(m["bodyNumber"]).get("mass")
+        return float(mass) if mass else None
+    node = int(m["nodeNumber"])
+    for i in range(mbs.systemData.NumberOfObjects()):
+        obj = mbs.GetObject(i)
+        if "nodeNumber" in obj and int(obj["nodeNumber"]) == node and obj.get("mass"):
+            return float(obj["mass"])
+    return None
+
+
 def _initial_node_pose(mbs, kind, node, local, fixed):
     """Ring centre, rotation matrix, velocity and angular velocity at t = 0."""
     if kind == EK.RING_FIXED:
@@ -133,6 +154,13 @@ class BallBearingElement:
     initialRingDisplacement : ndarray
         Displacement of the inner ring (outer-ring frame) in the analytic
         initial state; place the inner ring there to start in equilibrium.
+    stable : StableStep
+        Stable-step estimate of the ball contacts (``stable.dt``).
+    ringStableStep : float
+        Fast mode: the largest Exudyn step [s] for the ring bodies on the
+        ball contacts (:func:`~exudyn_bearing.reference.engine.ring_stable_step`
+        with the ring body's mass; inf for rings on ground or of unknown
+        mass). A body carrying several bearings needs a smaller step.
     """
 
     def __init__(self, mbs, bearing, markerInnerRing, markerOuterRing, lubricant: Lubricant | None = None,
@@ -205,6 +233,10 @@ class BallBearingElement:
         if int(subSteps) < 1:
             raise InputError(f"subSteps: must be >= 1, got {subSteps}")
         self.subSteps = int(subSteps)
+        # the fast mode's Exudyn step also integrates the ring bodies against the ball contacts
+        masses = [_ring_body_mass(mbs, mk) for mk, sp in zip(self.markers, self.rings_spec) if sp[0] != EK.RING_FIXED]
+        self.ringStableStep = min((ring_stable_step(b, self.scenario, mr) for mr in masses if mr), default=math.inf)
+        self._step_checked = not fast
         nodes = []
         mass = []
         mb, ib = b.ball_mass, 0.4 * b.ball_mass * b.ball_radius ** 2
@@ -261,6 +293,7 @@ class BallBearingElement:
             self._rings0 = K.ring_poses()
             self._rings_sub = K.ring_poses()
             self._t_int = None
+            self._tau = 0.0
         self._rings = K.ring_poses()
         self._fr = np.zeros((2, 6))
         self._glob = np.zeros(K.NGLOBAL)
@@ -335,9 +368,10 @@ class BallBearingElement:
         return self._after_step(t, t0, worst, want, True)
 
     def _force_uf_fast(self, mbs, t, itemNumber, q, q_t):
-        """Fast mode: advance the balls in compiled sub-steps up to t, return the
-        ring reactions at t (the force at the new configuration that the
-        velocity-Verlet step needs) as generalized ring forces.
+        """Fast mode: advance the balls in compiled sub-steps to t + (H - dt)/2,
+        return the mean ring reactions of those sub-steps as generalized ring
+        forces (the sub-step windows are centred on the Exudyn times, so the
+        ring's and the balls' impulses match: :func:`~.kernels.advance_balls`).
 
         This runs once per Exudyn step and its Python overhead is a large
         share of the step's cost (validation/bench_element.py), hence the
@@ -349,17 +383,23 @@ class BallBearingElement:
         q_t = np.asarray(q_t, float)
         t_int = self._t_int
         if t_int is not None and t > t_int + 1e-15:
-            n_sub = int((t - t_int) / self._dt_sub + 0.5) or 1
+            big = t - t_int
+            if not self._step_checked:
+                self._check_fast_step(big)
+            m = int(big / self._dt_sub + 0.5) or 1
+            t_end = t + 0.5 * (big - big / m)
+            n_sub = int((t_end - self._tau) * m / big + 0.5) or 1
             want = t >= self._next_sample - 1e-12
             worst = EK.fast_step(q, q_t, self.ref, self.params, self.table, self._ring_kind, self._ring_data, n_sub,
-                                 (t - t_int) / n_sub, self._work, self._rings0, self._rings, self._rings_sub,
+                                 self._tau, t, t_end, self._work, self._rings0, self._rings, self._rings_sub,
                                  self._hist, self._hz, self._fr, self._glob, self._diag,
                                  self._cage_load, want, self._out)
             self._t_int = t
+            self._tau = t_end
             if not worst <= self._max_overlap:  # also catches NaN
                 self._check_worst(worst, t)
             if want:
-                self._sample(t)
+                self._sample(t_end, self._rings_sub)
             self._evaluations += 1
             return self._out
         if t_int is None:
@@ -369,13 +409,14 @@ class BallBearingElement:
             K.forces(self.params, self.table, w[0], w[1], w[2], w[3], w[4], self._rings, self._hist, self._hist,
                      self.scenario.dt, self._hz, w[5], w[6], w[7], self._fr, self._glob, self._diag, self._cage_load,
                      False)
-            self._t_int = t
+            self._rings0[:] = self._rings
+            self._t_int = self._tau = t
         elif t < t_int - 1e-15:
             raise RuntimeError("mode: the fast mode integrates the balls forward in time and needs a solver with "
                                "one force evaluation per step (VelocityVerlet or ExplicitEuler)")
-        # no time advance: the reactions at the current ring poses
-        EK.fast_step(q, q_t, self.ref, self.params, self.table, self._ring_kind, self._ring_data, 0, 0.0, self._work,
-                     self._rings0, self._rings, self._rings_sub, self._hist, self._hz, self._fr,
+        # no time advance: the last reactions at the current ring poses
+        EK.fast_step(q, q_t, self.ref, self.params, self.table, self._ring_kind, self._ring_data, 0, self._tau, t, t,
+                     self._work, self._rings0, self._rings, self._rings_sub, self._hist, self._hz, self._fr,
                      self._glob, self._diag, self._cage_load, False, self._out)
         self._evaluations += 1
         return self._out
@@ -386,20 +427,37 @@ class BallBearingElement:
             if not worst <= self._max_overlap:  # also catches NaN
                 self._check_worst(worst, t)
             if want:
-                self._sample(t)
+                self._sample(t, self._rings)
         self._evaluations += 1
         self._wall += time.perf_counter() - t0
         return self._out
 
+    def _check_fast_step(self, h, stacklevel=4):
+        """Warn (once) when the fast mode's Exudyn step ``h`` exceeds the ring
+        bodies' stable step or its ball sub-step the balls' stable step."""
+        self._step_checked = True
+        dt = h / max(1, int(h / self._dt_sub + 0.5))
+        if h > self.ringStableStep:
+            warnings.warn(f"subSteps: the Exudyn step {h:.3g} s exceeds the ring bodies' stable-step estimate "
+                          f"{self.ringStableStep:.3g} s (ring mass against the inner contacts' stiffness at the "
+                          "initial load); the ring motion will be wrong or blow up: use fewer sub-steps",
+                          StepSizeWarning, stacklevel=stacklevel)
+        if dt > self.stable.dt:
+            warnings.warn(f"stepSize: the ball sub-step {dt:.3g} s exceeds the stable-step estimate "
+                          f"{self.stable.dt:.3g} s (limited by the {self.stable.limited_by} contact); the run may "
+                          "blow up", StepSizeWarning, stacklevel=stacklevel)
+
     def _check_worst(self, worst, t):
         if not math.isfinite(worst) or worst > self.params[K.P_MAX_OVERLAP]:
+            ring = (f" and the ring bodies' {self.ringStableStep:.3g} s for the fast mode's Exudyn step (subSteps * "
+                    "stepSize)" if self.mode == "fast" and math.isfinite(self.ringStableStep) else "")
             raise RuntimeError(
                 f"stepSize: the bearing state became non-finite or runaway at t = {t:.6g} s; the stable-step "
-                f"estimate is {self.stable.dt:.3g} s (limited by the {self.stable.limited_by} contact): reduce "
-                "the solver step")
+                f"estimate is {self.stable.dt:.3g} s (limited by the {self.stable.limited_by} contact){ring}: "
+                "reduce the solver step")
 
-    def _sample(self, t):
-        self._store(t)
+    def _sample(self, t, rings):
+        self._store(t, rings)
         self._next_sample += self.sampleInterval * max(1.0, math.floor((t - self._next_sample)
                                                                        / self.sampleInterval) + 1.0)
 
@@ -422,23 +480,24 @@ class BallBearingElement:
                                  color=[0.5, 0.5, 0.55, 0.3], nTilesMajor=48, nTilesMinor=12))
         return data
 
-    def _store(self, t):
+    def _store(self, t, rings):
+        """Sample at t; ``rings``: the ring poses the balls saw there."""
         s = self._samples
         s["t"].append(t)
         s["glob"].append(self._glob.copy())
         s["diag"].append(self._diag.copy())
         s["cage_load"].append(self._cage_load.copy())
         # positions and velocities in the outer-ring frame (as the reference engine reports them)
-        x1, v1 = self._rings[1, :3], self._rings[1, 3:6]
-        a1 = self._rings[1, 6:15].reshape(3, 3)
-        w1 = self._rings[1, 15:18]
+        x1, v1 = rings[1, :3], rings[1, 3:6]
+        a1 = rings[1, 6:15].reshape(3, 3)
+        w1 = rings[1, 15:18]
         w = self._work
         for kx, kv, ix in (("xb", "vb", 0), ("xc", "vc", 3)):
             d = w[ix] - x1
             s[kx].append(d @ a1)
             s[kv].append((w[ix + 1] - v1 - np.cross(w1, d)) @ a1)
         s["wb"].append((w[2] - w1) @ a1)
-        s["ring"].append(np.concatenate([(self._rings[0, :3] - x1) @ a1, (self._rings[0, 3:6] - v1) @ a1]))
+        s["ring"].append(np.concatenate([(rings[0, :3] - x1) @ a1, (rings[0, 3:6] - v1) @ a1]))
 
     @staticmethod
     def _orbital(x, v):
@@ -456,9 +515,9 @@ class BallBearingElement:
         exu = self._exu
         ss = exu.SimulationSettings()
         h = float(stepSize or self.scenario.dt * (self.subSteps if self.mode == "fast" else 1))
-        if h > self.stable.dt and self.mode == "bodies":
-            import warnings
-
+        if self.mode == "fast":
+            self._check_fast_step(h, stacklevel=3)
+        elif h > self.stable.dt:
             warnings.warn(f"stepSize: {h:.3g} s exceeds the stable-step estimate {self.stable.dt:.3g} s "
                           f"(limited by the {self.stable.limited_by} contact); the run may blow up",
                           StepSizeWarning, stacklevel=2)

@@ -188,16 +188,24 @@ def ring_poses_from(q, q_t, ref, ring_kind, ring_data, rings):
 
 
 @kernel
-def advance_balls(n_sub, dt, p, table, work, rings0, rings1, rings, hist, hz, fr, glob, diag, cage_load,
+def advance_balls(n_sub, tau, t, t_end, p, table, work, rings0, rings1, rings, hist, hz, fr, glob, diag, cage_load,
                   want):
-    """Fast mode: integrate balls and cage balls over ``n_sub`` velocity-Verlet
-    sub-steps of ``dt`` while the ring centres move linearly from ``rings0``
-    to ``rings1`` (velocities, rotation and angular velocity those of
-    ``rings1``). ``work`` holds the ball state and the forces of the last
-    sub-step on entry and exit; ``fr`` the ring reactions of the last
-    sub-step (what the fast mode returns to Exudyn). Diagnostics of the last
-    sub-step when ``want``. Returns the largest overlap / R_b."""
-    z = work.shape[1]
+    """Fast mode: integrate balls and cage balls in ``n_sub`` velocity-Verlet
+    sub-steps from their last force evaluation at ``tau`` to ``t_end``.
+
+    The ring poses the balls see: ``rings0`` at ``tau`` (what the balls saw
+    last), ``rings1`` at the Exudyn time ``t``; centres linear in between and
+    extrapolated with the velocity of ``rings1`` beyond ``t`` (velocities,
+    rotation and angular velocity those of ``rings1``). ``work`` holds the
+    ball state and the forces of the last evaluation on entry and exit.
+
+    ``fr`` returns the mean ring reaction over the sub-step evaluations: with
+    the windows centred on the Exudyn times (``t_end = t + (H - dt) / 2``),
+    the impulse Exudyn's velocity-Verlet step gives the ring, ``H fr``, is
+    the sum of the sub-step impulses the balls received (momentum exchange
+    consistent between the two integrators, no lag). ``rings0`` is left at
+    the pose of the last evaluation. Diagnostics of the last sub-step when
+    ``want``. Returns the largest overlap / R_b."""
     xb = work[0]
     vb = work[1]
     wb = work[2]
@@ -209,42 +217,57 @@ def advance_balls(n_sub, dt, p, table, work, rings0, rings1, rings, hist, hz, fr
     inv_mb = 1.0 / p[P_MB]
     inv_ib = 1.0 / p[P_IB]
     inv_mz = 1.0 / p[P_MZ] if p[P_CAGE] > 0.5 else 0.0
+    dt = (t_end - tau) / n_sub
     h = 0.5 * dt
     worst = 0.0
+    fsum = np.zeros((2, 6))
+    span = t - tau
     for i in range(n_sub):
         kick_drift(h, dt, xb, vb, wb, xc, vc, fb, tb, fc, inv_mb, inv_ib, inv_mz)
-        s = (i + 1.0) / n_sub
+        s = t_end if i == n_sub - 1 else tau + (i + 1) * dt
         for r in range(2):
-            # positions move linearly from the previous to the new configuration, at
-            # the new velocity: Exudyn's velocity-Verlet drift moves the ring with the
-            # half-step velocity it passes here, constant over the step
-            for k in range(3):
-                rings[r, k] = rings0[r, k] + s * (rings1[r, k] - rings0[r, k])
+            # Exudyn's velocity-Verlet drift moves the ring linearly from its pose
+            # at the previous step to the new one; beyond t, extrapolate at the
+            # velocity Exudyn passes (the half-step velocity)
+            if s < t and span > 0.0:
+                a = (s - tau) / span
+                for k in range(3):
+                    rings[r, k] = rings0[r, k] + a * (rings1[r, k] - rings0[r, k])
+            else:
+                for k in range(3):
+                    rings[r, k] = rings1[r, k] + (s - t) * rings1[r, 3 + k]
             for k in range(3, RING_N):
                 rings[r, k] = rings1[r, k]
         w = forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist, dt, hz, fb, tb, fc, fr, glob, diag,
                    cage_load, want and i == n_sub - 1)
         if w > worst:
             worst = w
+        for r in range(2):
+            for k in range(6):
+                fsum[r, k] += fr[r, k]
         kick_drift(h, 0.0, xb, vb, wb, xc, vc, fb, tb, fc, inv_mb, inv_ib, inv_mz)
+    for r in range(2):
+        for k in range(6):
+            fr[r, k] = fsum[r, k] / n_sub
+        for k in range(RING_N):
+            rings0[r, k] = rings[r, k]
     return worst
 
 
 @kernel
-def fast_step(q, q_t, ref, p, table, ring_kind, ring_data, n_sub, dt, work, rings0, rings, rings_sub, hist, hz,
-              fr, glob, diag, cage_load, want, out):
+def fast_step(q, q_t, ref, p, table, ring_kind, ring_data, n_sub, tau, t, t_end, work, rings0, rings, rings_sub,
+              hist, hz, fr, glob, diag, cage_load, want, out):
     """Fast mode, one Exudyn evaluation in one compiled call: ring poses from
-    the object coordinates, ``n_sub`` ball sub-steps from ``rings0`` to the
-    new poses (none when ``n_sub`` is 0), ring reactions at the new poses
-    as generalized forces ``out``. Returns the largest overlap / R_b."""
+    the object coordinates, ``n_sub`` ball sub-steps from ``tau`` to ``t_end``
+    (:func:`advance_balls`; none when ``n_sub`` is 0), the mean ring
+    reactions ``fr`` as generalized forces ``out``. Returns the largest
+    overlap / R_b."""
     ring_poses_from(q, q_t, ref, ring_kind, ring_data, rings)
     worst = 0.0
     if n_sub > 0:
-        worst = advance_balls(n_sub, dt, p, table, work, rings0, rings, rings_sub, hist, hz, fr, glob,
+        worst = advance_balls(n_sub, tau, t, t_end, p, table, work, rings0, rings, rings_sub, hist, hz, fr, glob,
                               diag, cage_load, want)
-    for r in range(2):
-        for k in range(RING_N):
-            rings0[r, k] = rings[r, k]
     out[:] = 0.0
     ring_generalized_forces(q, ref, ring_kind, ring_data, rings, fr, out)
     return worst
+
