@@ -204,11 +204,42 @@ def test_ring_stable_step_brackets_the_fast_mode_limit():
     b = eb.catalog["6208"]
     assert 20e-6 < ring_stable_step(b, sc, ring_mass_estimate(b)) < 30e-6
     eng = ExudynEngine("6208", sc, mode="fast", sub_steps=6)
-    assert eng.element.ringStableStep == ring_stable_step(b, sc, ring_mass_estimate(b))
+    assert eng.element.ringStableStep == pytest.approx(ring_stable_step(b, sc, ring_mass_estimate(b)), rel=1e-12)
     with pytest.warns(StepSizeWarning, match="^subSteps"), pytest.raises(Exception, match="stepSize"):
         eng.run()
     with pytest.raises(InputError, match="^ring_mass"):
         ring_stable_step(b, sc, 0.0)
+
+
+def test_ring_stable_step_of_a_rotor_adds_its_bearings():
+    # a 2.5 kg shaft (Jx = Jy = 0.013, centre of mass 5 mm off the node) on two
+    # bearings at z = -0.1 and 0.1 m: each ring centre's mobility is
+    # lambda_max(B M^-1 B^T), here worked out by hand through the centre of mass,
+    # and the stable Exudyn step is 2 / sqrt(sum of k_b lambda_b)
+    from exudyn_bearing.reference.engine import ring_contact_stiffness
+
+    m, jc, c = 2.5, 1.3e-2, 0.005
+    SC = exu.SystemContainer()
+    mbs = SC.AddSystem()
+    ground = mbs.AddObject(ObjectGround())
+    node = mbs.AddNode(NodeRigidBodyRxyz(referenceCoordinates=[0.0] * 6))
+    jn = jc + m * c * c  # about the node (parallel axis), as Exudyn takes it
+    body = mbs.AddObject(ObjectRigidBody(nodeNumber=node, mass=m, inertia=[jn, jn, 5e-4, 0, 0, 0],
+                                         centerOfMass=[0.0, 0.0, c]))
+    els = []
+    for z in (-0.1, 0.1):
+        mi = mbs.AddMarker(MarkerBodyRigid(bodyNumber=body, localPosition=[0, 0, z]))
+        mo = mbs.AddMarker(MarkerBodyRigid(bodyNumber=ground, localPosition=[0, 0, z]))
+        els.append(CreateBallBearing(mbs, "6208", mi, mo, mode="fast", subSteps=4, stepSize=5e-6,
+                                     initialLoad=(600.0, 0.0)))
+    k = ring_contact_stiffness(eb.catalog["6208"], eb.Scenario(Fr=600.0), "inner")
+    # a point at distance d from the centre of mass, moved sideways: 1/m + d^2/J_c
+    lam = [1.0 / m + (z - c) ** 2 / jc for z in (-0.1, 0.1)]
+    expected = 2.0 / math.sqrt(k * sum(lam))
+    for el in els:
+        assert el.ringStableStep == pytest.approx(expected, rel=1e-9)
+    # one bearing alone on the same shaft allows a longer step
+    assert expected < 2.0 / math.sqrt(k * max(lam))
 
 
 def test_fast_mode_time_must_advance():

@@ -38,15 +38,20 @@ equals the sum of the impulses the balls received, without lag. With
 More sub-steps spread the per-step overhead further; the Exudyn step H =
 subSteps * stepSize then also has to integrate the ring bodies against the
 contact stiffness: keep it below ``ringStableStep`` (estimated from the ring
-body's mass and the inner contacts' stiffness at ``initialLoad``; a larger
-step warns). See validation/REPORT.md for the measured limits.
+bodies' mass matrices and the contact stiffness of all bearings on them at
+their ``initialLoad``; a larger step warns). See validation/REPORT.md for
+the measured limits.
 
-Solvers: explicit ones with one force evaluation per step (VelocityVerlet,
-ExplicitEuler) give the Cundall-Strack history exactly as the reference
-engine; multi-stage solvers (RK44, ...) are supported with
-``friction="regularized"`` (history-free). Implicit solvers work with the
-numerical Jacobian but are not recommended (EXUDYN_NOTES: an order of
-magnitude slower for Hertz contact).
+Solvers, both modes: VelocityVerlet (recommended; one force evaluation per
+step, so the Cundall-Strack history is exactly the reference engine's) and
+RK44 with ``friction="regularized"`` (history-free; the fast mode advances
+the balls at RK44's increasing stage times). ExplicitEuler is not usable:
+not symplectic, it drives the stiff contacts unstable (validation/REPORT.md).
+Implicit solvers work in the body mode with the numerical Jacobian but are
+not recommended (EXUDYN_NOTES: an order of magnitude slower for Hertz
+contact); the fast mode needs an explicit solver (its balls advance at the
+first evaluation of a new time and ignore Newton iterations there; an
+evaluation back in time raises).
 """
 from __future__ import annotations
 
@@ -60,7 +65,8 @@ from ..analysis import default_lubricant
 from ..data import BallBearing, InputError, Lubricant, load_bearing
 from ..physics import hertz
 from ..reference import kernels as K
-from ..reference.engine import ReferenceEngine, StepSizeWarning, ring_stable_step, scene_parameters, stable_step
+from ..reference.engine import (ReferenceEngine, StepSizeWarning, ring_contact_stiffness, scene_parameters,
+                                stable_step)
 from ..results import Results
 from ..scenario import Scenario
 from . import kernels as EK
@@ -108,19 +114,46 @@ def _marker_ring(mbs, marker, which):
     raise InputError(f"{name}: node type {ntype} is not supported (NodeRigidBodyRxyz, NodePoint or ground)")
 
 
-def _ring_body_mass(mbs, marker):
-    """Mass [kg] of the body a ring marker sits on, found through the marker's
-    body or its node (None: ground or unknown)."""
+def _skew(v):
+    return np.array([[0.0, -v[2], v[1]], [v[2], 0.0, -v[0]], [-v[1], v[0], 0.0]])
+
+
+def _ring_mobility(mbs, marker, kind, local):
+    """Largest eigenvalue of B M^-1 B^T [1/kg] for the ring centre of a ring
+    marker: M the mass matrix of the body it sits on (found through the
+    marker's body or its node; Exudyn's rigid-body inertia is taken about the
+    node, with the centre of mass at ``centerOfMass``), B the map from the
+    body's velocity and angular velocity to the ring centre's velocity.
+    None for ground or an unknown body."""
+    if kind == EK.RING_FIXED:
+        return None
     m = mbs.GetMarker(int(marker))
+    obj = None
     if "bodyNumber" in m:
-        mass = mbs.GetObject(m["bodyNumber"]).get("mass")
-        return float(mass) if mass else None
-    node = int(m["nodeNumber"])
-    for i in range(mbs.systemData.NumberOfObjects()):
-        obj = mbs.GetObject(i)
-        if "nodeNumber" in obj and int(obj["nodeNumber"]) == node and obj.get("mass"):
-            return float(obj["mass"])
-    return None
+        obj = mbs.GetObject(m["bodyNumber"])
+    else:
+        node = int(m["nodeNumber"])
+        for i in range(mbs.systemData.NumberOfObjects()):
+            o = mbs.GetObject(i)
+            if "nodeNumber" in o and int(o["nodeNumber"]) == node and o.get("mass"):
+                obj = o
+                break
+    if obj is None or not obj.get("mass"):
+        return None
+    mass = float(obj["mass"])
+    if kind == EK.RING_POINT or "inertia" not in obj:
+        return 1.0 / mass
+    jv = np.asarray(obj["inertia"], float)  # Jxx, Jyy, Jzz, Jyz, Jxz, Jxy about the node
+    j = np.array([[jv[0], jv[5], jv[4]], [jv[5], jv[1], jv[3]], [jv[4], jv[3], jv[2]]])
+    mc = mass * _skew(np.asarray(obj.get("centerOfMass", np.zeros(3)), float))
+    mm = np.block([[mass * np.eye(3), mc.T], [mc, j]])
+    bb = np.hstack([np.eye(3), _skew(np.asarray(local, float)).T])  # v + w x o
+    return float(np.linalg.eigvalsh(bb @ np.linalg.solve(mm, bb.T)).max())
+
+
+#: Key in ``mbs.variables``: ring node -> [(element, ring index)] of every
+#: bearing element on it (the fast mode's stable Exudyn step adds them up).
+RING_REGISTRY = "exudyn_bearing.ringNodes"
 
 
 def _initial_node_pose(mbs, kind, node, local, fixed):
@@ -158,9 +191,7 @@ class BallBearingElement:
         Stable-step estimate of the ball contacts (``stable.dt``).
     ringStableStep : float
         Fast mode: the largest Exudyn step [s] for the ring bodies on the
-        ball contacts (:func:`~exudyn_bearing.reference.engine.ring_stable_step`
-        with the ring body's mass; inf for rings on ground or of unknown
-        mass). A body carrying several bearings needs a smaller step.
+        ball contacts of all bearings on them (property, see its docstring).
     """
 
     def __init__(self, mbs, bearing, markerInnerRing, markerOuterRing, lubricant: Lubricant | None = None,
@@ -234,8 +265,12 @@ class BallBearingElement:
             raise InputError(f"subSteps: must be >= 1, got {subSteps}")
         self.subSteps = int(subSteps)
         # the fast mode's Exudyn step also integrates the ring bodies against the ball contacts
-        masses = [_ring_body_mass(mbs, mk) for mk, sp in zip(self.markers, self.rings_spec) if sp[0] != EK.RING_FIXED]
-        self.ringStableStep = min((ring_stable_step(b, self.scenario, mr) for mr in masses if mr), default=math.inf)
+        self._ring_mobility = [_ring_mobility(mbs, mk, sp[0], sp[2]) for mk, sp in zip(self.markers, self.rings_spec)]
+        self._ring_stiffness = [ring_contact_stiffness(b, self.scenario, race) for race in ("inner", "outer")]
+        registry = mbs.variables.setdefault(RING_REGISTRY, {})
+        for r, sp in enumerate(self.rings_spec):
+            if sp[0] != EK.RING_FIXED:
+                registry.setdefault(int(sp[1]), []).append((self, r))
         self._step_checked = not fast
         nodes = []
         mass = []
@@ -330,6 +365,25 @@ class BallBearingElement:
                       "sensors": dict(self.sensors)}
         self._exu = exu
 
+    @property
+    def ringStableStep(self):
+        """Largest stable Exudyn step [s] of the fast mode for the ring bodies:
+        2/omega with omega^2 <= sum over the bearings on the ring's body of
+        k_b * lambda_max(B_b M^-1 B_b^T) (k_b: ring_contact_stiffness of that
+        bearing's race at its initialLoad; B_b, M: see _ring_mobility), a
+        bound of the body's highest frequency on its bearings. inf for rings
+        on ground or on bodies of unknown mass. No safety factor (see
+        reference.engine.ring_stable_step)."""
+        registry = self.mbs.variables.get(RING_REGISTRY, {})
+        best = math.inf
+        for r, sp in enumerate(self.rings_spec):
+            if sp[0] == EK.RING_FIXED or self._ring_mobility[r] is None:
+                continue
+            w2 = sum(el._ring_stiffness[rr] * el._ring_mobility[rr] for el, rr in registry.get(int(sp[1]), [])
+                     if el._ring_mobility[rr] is not None)
+            best = min(best, 2.0 / math.sqrt(w2))
+        return best
+
     # -- checks --------------------------------------------------------
     def _check_overlap(self, xb, poses, allowed):
         """Initial overlaps must not exceed what the analytic state (preload) gives."""
@@ -412,8 +466,8 @@ class BallBearingElement:
             self._rings0[:] = self._rings
             self._t_int = self._tau = t
         elif t < t_int - 1e-15:
-            raise RuntimeError("mode: the fast mode integrates the balls forward in time and needs a solver with "
-                               "one force evaluation per step (VelocityVerlet or ExplicitEuler)")
+            raise RuntimeError("mode: the fast mode integrates the balls forward in time and needs an explicit "
+                               "fixed-step solver (VelocityVerlet, or RK44 with friction='regularized')")
         # no time advance: the last reactions at the current ring poses
         EK.fast_step(q, q_t, self.ref, self.params, self.table, self._ring_kind, self._ring_data, 0, self._tau, t, t,
                      self._work, self._rings0, self._rings, self._rings_sub, self._hist, self._hz, self._fr,
@@ -439,8 +493,8 @@ class BallBearingElement:
         dt = h / max(1, int(h / self._dt_sub + 0.5))
         if h > self.ringStableStep:
             warnings.warn(f"subSteps: the Exudyn step {h:.3g} s exceeds the ring bodies' stable-step estimate "
-                          f"{self.ringStableStep:.3g} s (ring mass against the inner contacts' stiffness at the "
-                          "initial load); the ring motion will be wrong or blow up: use fewer sub-steps",
+                          f"{self.ringStableStep:.3g} s (ring bodies' inertia against their bearings' contact "
+                          "stiffness at initialLoad); the ring motion will be wrong or blow up: use fewer sub-steps",
                           StepSizeWarning, stacklevel=stacklevel)
         if dt > self.stable.dt:
             warnings.warn(f"stepSize: the ball sub-step {dt:.3g} s exceeds the stable-step estimate "

@@ -26,7 +26,7 @@ from ..scenario import FRICTION_MODELS, Scenario
 from . import kernels as K
 
 __all__ = ["ReferenceEngine", "SimulationError", "StepSizeWarning", "stable_step", "ring_stable_step",
-           "ring_mass_estimate", "scene_parameters"]
+           "ring_contact_stiffness", "ring_mass_estimate", "scene_parameters"]
 
 
 class SimulationError(RuntimeError):
@@ -116,21 +116,17 @@ def stable_step(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant |
     return StableStep(STABILITY_SAFETY * parts[name], dt_n, dt_t, dt_f, dt_c, name)
 
 
-def ring_stable_step(bearing: BallBearing, scenario: Scenario, ring_mass: float) -> float:
-    """Largest stable velocity-Verlet step for a ring body of mass ``ring_mass``
-    on the bearing's inner-race contacts [s] (the Exudyn step of the fast mode).
+def ring_contact_stiffness(bearing: BallBearing, scenario: Scenario, race: str = "inner") -> float:
+    """Sum of the tangent stiffnesses dQ/d delta of one race's ball contacts [N/m].
 
-    2/omega with omega^2 = sum_j k_t,i(Q_j) / m_ring: the tangent stiffness of
-    every inner contact at its quasi-static load under the scenario's F_r, F_a
-    (10 N on every ball when no ball carries more), summed as if all acted along one direction, an
-    upper bound of the ring's stiffness in any direction. No safety factor:
-    the 81 g ring of the 6208 test scene at F_r = 3000 N gets 22.8 us; the
-    fast mode runs at 20 us and blows up at 30 us
-    (validation/fast_mode_checks.py). A ring body that carries several
-    bearings sees their stiffness added: divide its mass among them.
+    Each contact at its quasi-static load under the scenario's F_r, F_a
+    (10 N on every ball when no ball carries more; outer contacts plus the
+    centrifugal force at the scenario's speed), summed as if all acted along
+    one direction: an upper bound of the stiffness the ring body feels in
+    any direction (Harris & Kotzalas tangent stiffness, :func:`hertz.tangent_stiffness`).
     """
-    if not ring_mass > 0.0 or not math.isfinite(ring_mass):
-        raise InputError(f"ring_mass: must be a positive finite mass [kg], got {ring_mass}")
+    if race not in ("inner", "outer"):
+        raise InputError(f"race: must be 'inner' or 'outer', got {race!r}")
     b = bearing if scenario.Pd is None else bearing.with_clearance(scenario.Pd)
     if scenario.Fr > 0 or scenario.Fa > 0 or b.diametral_clearance < 0:
         q = static_equilibrium(b, scenario.Fr, scenario.Fa, hertz_method=scenario.hertz).q
@@ -138,9 +134,27 @@ def ring_stable_step(bearing: BallBearing, scenario: Scenario, ring_mass: float)
         q = np.zeros(b.n_balls)
     if q.max() < 10.0:
         q = np.full(b.n_balls, 10.0)
-    ki, _ko, _kn = race_stiffness(b, b.free_contact_angle, scenario.hertz)
-    k = float(np.sum(hertz.tangent_stiffness(ki, q)))
-    return 2.0 / math.sqrt(k / ring_mass)
+    ki, ko, _kn = race_stiffness(b, b.free_contact_angle, scenario.hertz)
+    if race == "outer":
+        wc = float(kinematics.cage_speed(scenario.omega, 0.0, b.ball_radius, b.pitch_radius, b.free_contact_angle))
+        q = q + float(kinematics.centrifugal_force(b.ball_mass, b.pitch_radius, wc))
+    return float(np.sum(hertz.tangent_stiffness(ki if race == "inner" else ko, q)))
+
+
+def ring_stable_step(bearing: BallBearing, scenario: Scenario, ring_mass: float, race: str = "inner") -> float:
+    """Largest stable velocity-Verlet step [s] for a ring of mass ``ring_mass``
+    on the ball contacts of its race (the Exudyn step of the fast mode).
+
+    2/omega with omega^2 = :func:`ring_contact_stiffness` / m_ring. No safety
+    factor: the 81 g ring of the 6208 test scene at F_r = 3000 N gets
+    22.8 us; the fast mode runs at 20 us, is 59 % off at 25 us and blows up
+    at 30 us (validation/fast_mode_checks.py). For a ring on a rigid body
+    with several bearings the element uses the body's mass matrix and all
+    its bearings (``BallBearingElement.ringStableStep``).
+    """
+    if not ring_mass > 0.0 or not math.isfinite(ring_mass):
+        raise InputError(f"ring_mass: must be a positive finite mass [kg], got {ring_mass}")
+    return 2.0 / math.sqrt(ring_contact_stiffness(bearing, scenario, race) / ring_mass)
 
 
 def scene_parameters(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant) -> np.ndarray:
