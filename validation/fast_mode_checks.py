@@ -14,9 +14,14 @@
    over 50 ms: whether the shaft whirls at the full clearance (orbit radius
    and largest outer ball load over 40-50 ms) in the body mode at four steps
    and in the fast mode with 1-4 sub-steps of 5 us.
-4. The 7208 with its torus cage under F_r = F_a = 3000 N at 500 rad/s: the
+4. Explicit solvers on the 6208 test scene (10 ms, 2 us steps): body mode
+   and fast mode (1 and 3 sub-steps) under VelocityVerlet and ExplicitEuler
+   (Cundall-Strack history, implicit spring) and RK44 (regularised
+   friction), errors of q_max_inner and cage speed against the reference
+   core with the same friction model.
+5. The 7208 with its torus cage under F_r = F_a = 3000 N at 500 rad/s: the
    largest cage-ball load at dt = 0.5 us, and what happens at dt = 1 us.
-5. Exudyn's built-in bearing with the inner ring's own polar inertia: the
+6. Exudyn's built-in bearing with the inner ring's own polar inertia: the
    ring speed and cage speed after 40 ms (the peer check gives the ring a
    large inertia instead).
 
@@ -133,6 +138,31 @@ def rotor_scenario_whirl():
     return rows
 
 
+def solvers_6208():
+    rows = {}
+    for solver, friction in (("VelocityVerlet", "history"), ("RK44", "regularized"), ("ExplicitEuler", "history")):
+        sc = eb.Scenario(Fr=3000.0, omega=500.0, t_end=0.01, dt=2e-6, tangential="implicit", friction=friction,
+                         sample_dt=1e-4)
+        ref = eb.simulate("6208", sc).summary()
+        for mode, sub in (("bodies", 1), ("fast", 1), ("fast", 3)):
+            label = f"{solver}, {mode}" + (f" {sub}" if mode == "fast" else "")
+            eng = ExudynEngine("6208", sc, mode=mode, sub_steps=sub)
+            ss = eng.element.SimulationSettings(sc.t_end, solverType=solver)
+            printing = exu.config.printToConsole
+            exu.config.printToConsole = False
+            try:
+                eng.mbs.SolveDynamic(ss, solverType=ss.timeIntegration.solverType)
+                s = eng.element.results().summary()
+                rows[label] = {k: abs(s[k] / ref[k] - 1) for k in ("q_max_inner", "cage_speed")}
+            except Exception as exc:  # a blow-up is a result here
+                lines = [ln for ln in str(exc).splitlines() if "stepSize" in ln] or ["failed"]
+                rows[label] = {"error": lines[0].replace("RuntimeError: ", "").split(";")[0].strip()}
+            finally:
+                exu.config.printToConsole = printing
+            print(f"6208 scene, {label}: {rows[label]}", flush=True)
+    return rows
+
+
 def cage_7208():
     out = {}
     sc = eb.Scenario(Fr=3000.0, Fa=3000.0, omega=500.0, t_end=0.05, dt=0.5e-6, sample_dt=1e-4)
@@ -178,7 +208,8 @@ def builtin_own_inertia():
 def main():
     warnings.simplefilter("ignore")
     report = {"substeps_6208": substeps_6208(), "rotor_sub_steps": rotor_sub_steps(),
-              "rotor_scenario_whirl": rotor_scenario_whirl(), "cage_7208": cage_7208(),
+              "rotor_scenario_whirl": rotor_scenario_whirl(), "solvers_6208": solvers_6208(),
+              "cage_7208": cage_7208(),
               "builtin_own_inertia": builtin_own_inertia()}
     out = HERE / "out"
     out.mkdir(exist_ok=True)
