@@ -11,9 +11,10 @@ import pytest
 import exudyn_bearing as eb
 from exudyn_bearing.physics import kinematics
 from exudyn_bearing.physics.load_distribution import static_equilibrium
+from exudyn_bearing import InputError
 from exudyn_bearing.reference import ReferenceEngine, SimulationError, StepSizeWarning
 
-FAST = dict(dt=4e-6, tangential="implicit")  # well inside the stable step (8.2 us)
+FAST = dict(dt=4e-6, tangential="implicit")  # within the normal-contact limit (8.2 us; steady, cage loads ~1 N)
 
 
 def run(bearing="6208", **kw):
@@ -241,3 +242,51 @@ def test_protocol_speed_matches_the_kernel_profile():
     sc = eb.Scenario(omega=500.0, t_ramp_up=0.01, t_steady=0.02, t_ramp_down=0.01)
     for t in np.linspace(-0.001, 0.05, 53):
         assert sc.omega_at(t) == pytest.approx(omega_profile(t, 500.0, 0.01, 0.02, 0.01), abs=1e-12)
+
+
+@pytest.mark.parametrize("zeta", [0.0, 0.5, 1.0])
+def test_verlet_step_factor_is_where_the_amplification_matrix_turns_unstable(zeta):
+    # velocity Verlet as the kernels do it (damping at the half-step velocity) on
+    # x'' = -x - 2 zeta x': the spectral radius of one step's amplification matrix
+    # must stay <= 1 just below the factor and exceed 1 just above it
+    from exudyn_bearing.reference.engine import explicit_step_factor
+
+    def radius(h):
+        m = np.zeros((3, 3))
+        for i, (x, v, f) in enumerate(np.eye(3)):  # state (x, v, force)
+            vh = v + 0.5 * h * f
+            x1 = x + h * vh
+            f1 = -x1 - 2.0 * zeta * vh
+            m[:, i] = (x1, vh + 0.5 * h * f1, f1)
+        return max(abs(np.linalg.eigvals(m)))
+
+    f = explicit_step_factor(zeta, "verlet")
+    assert radius(0.999 * f) <= 1.0 + 1e-9 < radius(1.01 * f)
+
+
+def test_rk4_step_factor_against_its_stability_polynomial():
+    from exudyn_bearing.reference.engine import explicit_step_factor
+
+    def amp(z):
+        return abs(1 + z + z * z / 2 + z ** 3 / 6 + z ** 4 / 24)
+
+    f0, f1 = explicit_step_factor(0.0, "rk4"), explicit_step_factor(1.0, "rk4")
+    assert amp(0.999j * f0) <= 1.0 < amp(1.01j * f0)  # undamped: eigenvalues +-i omega
+    assert amp(-0.999 * f1) <= 1.0 < amp(-1.01 * f1)  # critical damping: double eigenvalue -omega
+    with pytest.raises(InputError, match="^zeta"):
+        explicit_step_factor(0.5, "rk4")
+
+
+def test_cage_loads_above_their_stable_step_are_flagged():
+    # start-up from rest of the 6208: at 5 us the critically damped ball / cage-ball
+    # contacts are above their stable step once the cage loads reach ~100 N, the
+    # loads chatter at about twice the 3 us values and the run says so; at 3 us
+    # it stays silent (validation/cage_step_checks.py measures the loads)
+    sc = eb.Scenario(Fr=3000.0, omega=500.0, t_ramp_up=0.05, t_end=0.05, initial="rest", sample_dt=1e-4)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        fine = eb.simulate("6208", sc.replace(dt=3e-6))
+    assert not [w for w in caught if "contacts reached" in str(w.message)]
+    with pytest.warns(StepSizeWarning, match="cage-ball contacts reached"):
+        coarse = eb.simulate("6208", sc.replace(dt=5e-6))
+    assert coarse.data["cage_load"].max() > 1.5 * fine.data["cage_load"].max()

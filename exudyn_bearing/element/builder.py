@@ -65,8 +65,8 @@ from ..analysis import default_lubricant
 from ..data import BallBearing, InputError, Lubricant, load_bearing
 from ..physics import hertz
 from ..reference import kernels as K
-from ..reference.engine import (ReferenceEngine, StepSizeWarning, ring_contact_stiffness, scene_parameters,
-                                stable_step)
+from ..reference.engine import (ReferenceEngine, StepSizeWarning, cage_load_check, ring_contact_stiffness,
+                                scene_parameters, stable_step, step_warning)
 from ..results import Results
 from ..scenario import Scenario
 from . import kernels as EK
@@ -496,10 +496,9 @@ class BallBearingElement:
                           f"{self.ringStableStep:.3g} s (ring bodies' inertia against their bearings' contact "
                           "stiffness at initialLoad); the ring motion will be wrong or blow up: use fewer sub-steps",
                           StepSizeWarning, stacklevel=stacklevel)
-        if dt > self.stable.dt:
-            warnings.warn(f"stepSize: the ball sub-step {dt:.3g} s exceeds the stable-step estimate "
-                          f"{self.stable.dt:.3g} s (limited by the {self.stable.limited_by} contact); the run may "
-                          "blow up", StepSizeWarning, stacklevel=stacklevel)
+        msg = step_warning(f"stepSize: the ball sub-step {dt:.3g} s", dt, self.stable)
+        if msg:
+            warnings.warn(msg, StepSizeWarning, stacklevel=stacklevel)
 
     def _check_worst(self, worst, t):
         if not math.isfinite(worst) or worst > self.params[K.P_MAX_OVERLAP]:
@@ -571,10 +570,10 @@ class BallBearingElement:
         h = float(stepSize or self.scenario.dt * (self.subSteps if self.mode == "fast" else 1))
         if self.mode == "fast":
             self._check_fast_step(h, stacklevel=3)
-        elif h > self.stable.dt:
-            warnings.warn(f"stepSize: {h:.3g} s exceeds the stable-step estimate {self.stable.dt:.3g} s "
-                          f"(limited by the {self.stable.limited_by} contact); the run may blow up",
-                          StepSizeWarning, stacklevel=2)
+        else:
+            msg = step_warning(f"stepSize: {h:.3g} s", h, self.stable)
+            if msg:
+                warnings.warn(msg, StepSizeWarning, stacklevel=2)
         ss.timeIntegration.numberOfSteps = int(round(endTime / h))
         ss.timeIntegration.endTime = float(endTime)
         ss.timeIntegration.verboseMode = 0
@@ -594,6 +593,10 @@ class BallBearingElement:
         if len(data["t"]) == 0:
             raise RuntimeError("results: no samples yet; run mbs.SolveDynamic first")
         steps = self._evaluations if steps is None else steps
+        msg = cage_load_check(self.bearing, self.scenario, self.lubricant,
+                              float(data["cage_load"].max(initial=0.0)), self.scenario.dt)
+        if msg:
+            warnings.warn(msg, StepSizeWarning, stacklevel=2)
         return Results(self.bearing, self.scenario, self.lubricant, data, steps=steps,
                        wall_s=self._wall if wall_s is None else wall_s, engine="exudyn", stable_dt=self.stable.dt)
 

@@ -26,7 +26,8 @@ from ..scenario import FRICTION_MODELS, Scenario
 from . import kernels as K
 
 __all__ = ["ReferenceEngine", "SimulationError", "StepSizeWarning", "stable_step", "ring_stable_step",
-           "ring_contact_stiffness", "ring_mass_estimate", "scene_parameters"]
+           "ring_contact_stiffness", "ring_mass_estimate", "scene_parameters", "explicit_step_factor",
+           "cage_load_check", "step_warning"]
 
 
 class SimulationError(RuntimeError):
@@ -56,6 +57,34 @@ def ring_mass_estimate(bearing: BallBearing) -> float:
 STABILITY_SAFETY = 0.85
 
 
+def explicit_step_factor(zeta=0.0, integrator="verlet"):
+    """Stable step of a linear oscillator x'' + 2 zeta omega x' + omega^2 x = 0
+    under the engines' explicit integrators, in units of 1/omega.
+
+    Velocity Verlet with the damping force evaluated at the half-step
+    velocity (as the kernels do): 2 (sqrt(1 + zeta^2) - zeta), where the
+    spectral radius of the step's amplification matrix reaches 1 (2 without
+    damping, 0.83 at critical damping; tests/test_reference.py checks it
+    against that matrix). Classical RK4: 2.83 (2 sqrt 2) on the imaginary
+    axis without damping; for zeta >= 1 the real eigenvalue
+    -omega (zeta + sqrt(zeta^2 - 1)) must stay within the real-axis limit
+    2.785 of RK4's stability polynomial (Hairer & Wanner, Solving ODEs II,
+    sec. IV.2).
+    """
+    zeta = float(zeta)
+    if not zeta >= 0.0:
+        raise InputError(f"zeta: the damping ratio must be >= 0, got {zeta}")
+    if integrator == "verlet":
+        return 2.0 * (math.sqrt(1.0 + zeta * zeta) - zeta)
+    if integrator != "rk4":
+        raise InputError(f"integrator: must be 'verlet' or 'rk4', got {integrator!r}")
+    if zeta == 0.0:
+        return 2.0 * math.sqrt(2.0)
+    if zeta < 1.0:
+        raise InputError(f"zeta: the RK4 bound is given for zeta = 0 or zeta >= 1, got {zeta}")
+    return 2.785 / (zeta + math.sqrt(zeta * zeta - 1.0))
+
+
 @dataclass
 class StableStep:
     """Stable-step estimate of a scene [s] and what sets it."""
@@ -68,21 +97,29 @@ class StableStep:
     limited_by: str
 
 
-def stable_step(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant | None = None) -> StableStep:
+def stable_step(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant | None = None,
+                cage_load: float | None = None) -> StableStep:
     """Largest stable time step of the explicit integrator for a scene [s].
 
     ``STABILITY_SAFETY`` times the smallest of the limits below, linearised at
     the largest expected ball load (quasi-static Q_max plus the
     centrifugal force m r_p omega_c^2 at the top speed); the limits are
-    2/omega (Verlet) or 2.83/omega (RK4) for
+    f/omega with f = :func:`explicit_step_factor` (2 for Verlet, 2.83 for RK4
+    without damping) for
     the normal Hertz springs of both races (omega^2 = (k_i + k_o)/m_b), the
     Cundall-Strack tangential springs (the ball's rocking mode, omega^2 =
     (k_ti + k_to) R_b^2 / I_b = 2.5 (k_ti + k_to)/m_b; an explicit spring
     above this step does not blow up, its force saturates at mu F_n and
     chatters, which validation/bench_reference.py shows in the slip), the
     regularised-friction damping
-    (dt < 2 m_eff / c resp. 2.83 m_eff / c, c = 2 mu Q / v_reg) and the ball / cage-ball contact
-    (at a tenth of the ball load). The implicit tangential spring sets no limit.
+    (dt < 2 m_eff / c resp. 2.83 m_eff / c, c = 2 mu Q / v_reg) and the
+    critically damped ball / cage-ball contacts (two per cage ball, f at
+    zeta = 1: 0.83 for Verlet) at ``cage_load`` [N] (default a tenth of the
+    ball load, the order of the start-up and slow-down loads of the 6208;
+    the engines check the loads a run reaches, :func:`cage_load_check`).
+    Above the cage limit a run need not blow up: the cage loads grow about
+    twofold and chatter (validation/REPORT.md). The implicit tangential
+    spring sets no limit.
     """
     b = bearing if scenario.Pd is None else bearing.with_clearance(scenario.Pd)
     lub = default_lubricant() if lubricant is None else lubricant
@@ -95,7 +132,7 @@ def stable_step(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant |
     ki, ko, _kn = race_stiffness(b, b.free_contact_angle, scenario.hertz)
     kt_i = float(hertz.tangent_stiffness(ki, q))
     kt_o = float(hertz.tangent_stiffness(ko, q))
-    factor = 2.0 if scenario.integrator == "verlet" else 2.83
+    factor = explicit_step_factor(0.0, scenario.integrator)
     dt_n = factor / math.sqrt((kt_i + kt_o) / mb)
     dt_t = math.inf
     dt_f = math.inf
@@ -109,11 +146,37 @@ def stable_step(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant |
         mz = b.cage_ball_mass
         em = e_prime_of(b)
         kbz = float(hertz.sphere_sphere_stiffness(b.ball_radius, b.cage_ball_radius, em))
-        kc = float(hertz.tangent_stiffness(kbz, 0.1 * q))
-        dt_c = factor / math.sqrt(2.0 * kc * (mb + mz) / (mb * mz))
+        kc = float(hertz.tangent_stiffness(kbz, 0.1 * q if cage_load is None else max(float(cage_load), 1e-3)))
+        dt_c = explicit_step_factor(1.0, scenario.integrator) / math.sqrt(2.0 * kc * (mb + mz) / (mb * mz))
     parts = {"normal": dt_n, "tangential": dt_t, "friction": dt_f, "cage": dt_c}
     name = min(parts, key=parts.get)
     return StableStep(STABILITY_SAFETY * parts[name], dt_n, dt_t, dt_f, dt_c, name)
+
+
+def step_warning(label: str, dt: float, stable: StableStep) -> str | None:
+    """The warning text for a step ``dt`` above the estimate ``stable.dt``
+    (``label`` names the step, e.g. "dt = 5e-06 s"), else None."""
+    if dt <= stable.dt:
+        return None
+    what = ("the cage loads may be unreliable in start-up and slow-down (the loads a run reaches are checked at "
+            "its end)" if stable.limited_by == "cage" else "the run may blow up")
+    return (f"{label} exceeds the stable-step estimate {stable.dt:.3g} s (limited by the {stable.limited_by} "
+            f"contact stiffness); {what}")
+
+
+def cage_load_check(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant | None, max_cage_load: float,
+                    dt: float) -> str | None:
+    """A warning text when the largest ball / cage-ball load a run reached
+    puts those contacts' stable step (:func:`stable_step` at that load, with
+    ``STABILITY_SAFETY``) below its step ``dt``, else None."""
+    if not max_cage_load > 0.0 or not (scenario.cage and bearing.has_cage):
+        return None
+    limit = STABILITY_SAFETY * stable_step(bearing, scenario, lubricant, cage_load=max_cage_load).cage
+    if dt <= limit:
+        return None
+    return (f"dt: the ball / cage-ball contacts reached {max_cage_load:.3g} N, where their stable step is "
+            f"{limit:.3g} s < dt = {dt:.3g} s; the cage loads of this run are unreliable (they chatter at about "
+            "twice their value), ball loads and speeds usually are not affected: reduce dt")
 
 
 def ring_contact_stiffness(bearing: BallBearing, scenario: Scenario, race: str = "inner") -> float:
@@ -296,11 +359,9 @@ class ReferenceEngine:
 
         s = self.scenario
         p = self.params
-        if s.dt > self.stable.dt:
-            warnings.warn(
-                f"dt = {s.dt:.3g} s exceeds the stable-step estimate {self.stable.dt:.3g} s "
-                f"(limited by the {self.stable.limited_by} contact stiffness); the run may blow up",
-                StepSizeWarning, stacklevel=2)
+        msg = step_warning(f"dt = {s.dt:.3g} s", s.dt, self.stable)
+        if msg:
+            warnings.warn(msg, StepSizeWarning, stacklevel=2)
         n_steps = int(round(s.t_end / s.dt))
         every = max(1, int(round(s.sample_dt / s.dt)))
         n_samples = n_steps // every
@@ -362,5 +423,8 @@ class ReferenceEngine:
             print(file=sys.stderr)
         for k in buf:
             buf[k] = buf[k][:k_samp]
+        msg = cage_load_check(self.bearing, s, self.lubricant, float(buf["cage_load"].max(initial=0.0)), s.dt)
+        if msg:
+            warnings.warn(msg, StepSizeWarning, stacklevel=2)
         return Results(self.bearing, s, self.lubricant, buf, steps=done, wall_s=wall,
                        engine=self.name, stable_dt=self.stable.dt, static=st["static"])
