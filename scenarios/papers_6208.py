@@ -6,7 +6,7 @@ JSON summary) and the figures of PHYSICS.md sec. 8, each PNG with a CSV:
 speeds against time, slide-to-roll ratio of one ball, h_min and Lambda of the
 outer contact against azimuth by phase, and the overview.
 
-    python scenarios/papers_6208.py [--up 0.05 --steady 0.2 --down 0.05] [--dt 5e-6] [--engine exudyn]
+    python scenarios/papers_6208.py [--up 0.05 --steady 0.2 --down 0.05] [--dt 3e-6] [--engine exudyn]
 
 Tangential force: Cundall-Strack spring with contact history (explicit,
 the papers' model).
@@ -23,7 +23,7 @@ def main(argv=None):
     ap.add_argument("--up", type=float, default=0.05, help="start-up ramp [s]")
     ap.add_argument("--steady", type=float, default=0.2, help="steady phase [s]")
     ap.add_argument("--down", type=float, default=0.05, help="slow-down ramp [s]")
-    ap.add_argument("--dt", type=float, default=5e-6, help="time step [s]")
+    ap.add_argument("--dt", type=float, default=3e-6, help="time step [s] (cage-contact limit 3.9 us)")
     ap.add_argument("--engine", choices=("reference", "exudyn"), default="reference")
     ap.add_argument("--out", default=str(Path(__file__).parent / "out" / "papers_6208"))
     args = ap.parse_args(argv)
