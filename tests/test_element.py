@@ -7,8 +7,8 @@ import pytest
 
 exu = pytest.importorskip("exudyn")
 from exudyn.itemInterface import (LoadForceVector, MarkerBodyRigid, MarkerNodeCoordinate,  # noqa: E402
-                                  MarkerNodePosition, NodePoint, NodeRigidBodyRxyz, ObjectGround, ObjectMassPoint,
-                                  ObjectRigidBody)
+                                  MarkerNodePosition, NodePoint, NodeRigidBodyRotVecLG, NodeRigidBodyRxyz,
+                                  ObjectGround, ObjectMassPoint, ObjectRigidBody)
 
 import exudyn_bearing as eb  # noqa: E402
 from exudyn_bearing import InputError  # noqa: E402
@@ -44,21 +44,38 @@ def test_cross_engine_load_curves_overlay(both_engines):
                                    rtol=0.01, atol=5.0)
 
 
-def _rotor_scene(omega=500.0, fr=3000.0, tilt_deg=0.0, offset=(0.0, 0.0, 0.0), inertia_z=1.0):
-    """Inner ring as a rigid body (Rxyz node) spinning freely with a large polar inertia."""
+def _rotor_scene(omega=500.0, fr=3000.0, tilt_deg=0.0, offset=(0.0, 0.0, 0.0), inertia_z=1.0, node_type=None,
+                 angle_z=0.0):
+    """Inner ring as a rigid body (Rxyz node, or ``node_type``) spinning freely with a large polar inertia."""
     b = eb.catalog["6208"]
     SC = exu.SystemContainer()
     mbs = SC.AddSystem()
     ground = mbs.AddObject(ObjectGround())
     m_out = mbs.AddMarker(MarkerBodyRigid(bodyNumber=ground, localPosition=[0.0, 0.0, 0.0]))
     d0 = ReferenceEngine(b, eb.Scenario(Fr=fr, omega=omega)).initial_state()["ring"][:3]
-    node = mbs.AddNode(NodeRigidBodyRxyz(referenceCoordinates=[*(d0 + np.array(offset)), math.radians(tilt_deg), 0, 0],
-                                         initialVelocities=[0, 0, 0, 0, 0, omega]))
+    # tilt about x, or a turn about z, and spin about the body's z axis: the same state for
+    # Tait-Bryan angles (angle rates) and a rotation vector (local angular velocity)
+    node = mbs.AddNode((node_type or NodeRigidBodyRxyz)(
+        referenceCoordinates=[*(d0 + np.array(offset)), math.radians(tilt_deg), 0, angle_z],
+        initialVelocities=[0, 0, 0, 0, 0, omega]))
     body = mbs.AddObject(ObjectRigidBody(nodeNumber=node, mass=ring_mass_estimate(b),
                                          inertia=[inertia_z / 2, inertia_z / 2, inertia_z, 0, 0, 0]))
     m_in = mbs.AddMarker(MarkerBodyRigid(bodyNumber=body, localPosition=[0.0, 0.0, 0.0]))
     mbs.AddLoad(LoadForceVector(markerNumber=m_in, loadVector=[fr, 0.0, 0.0]))
     return SC, mbs, m_in, m_out, b
+
+
+def _loaded_bearing_run(mbs, m_in, m_out, b, t_end):
+    """A bearing at 3000 N / 500 rad/s between the markers, solved quietly for t_end (VelocityVerlet, 5 us)."""
+    el = CreateBallBearing(mbs, b, m_in, m_out, initialOmega=500.0, initialLoad=(3000.0, 0.0), stepSize=5e-6,
+                           tangential="implicit", sampleInterval=5e-4)
+    mbs.Assemble()
+    exu.config.printToConsole = False
+    try:
+        mbs.SolveDynamic(el.SimulationSettings(t_end), solverType=exu.DynamicSolverType.VelocityVerlet)
+    finally:
+        exu.config.printToConsole = True
+    return el
 
 
 def test_rigid_body_ring_feels_the_bearing():
@@ -85,14 +102,30 @@ def test_rigid_body_ring_feels_the_bearing():
     assert w[2] == pytest.approx(500.0, rel=1e-3)
 
 
+def test_lie_group_ring_node_matches_tait_bryan():
+    # the same turned, offset, spinning ring on a NodeRigidBodyRotVecLG (rotation
+    # vector, local angular velocity; Exudyn's node for explicit Lie-group
+    # integration) and on a NodeRigidBodyRxyz: pose, reactions and the torque on
+    # the ring agree, so loads, cage speed and the ring's own motion do
+    out = []
+    for node_type in (NodeRigidBodyRxyz, NodeRigidBodyRotVecLG):
+        SC, mbs, m_in, m_out, b = _rotor_scene(angle_z=0.7, offset=(2e-6, 1e-6, 0.0), inertia_z=1e-5,
+                                               node_type=node_type)
+        el = _loaded_bearing_run(mbs, m_in, m_out, b, 0.005)
+        node = el.items["ringNodes"][0]
+        out.append((el.results().summary(), mbs.GetNodeOutput(node, exu.OutputVariableType.Position),
+                    mbs.GetNodeOutput(node, exu.OutputVariableType.AngularVelocity)))
+    (s1, x1, w1), (s2, x2, w2) = out
+    for k in ("q_max_inner", "q_max_outer", "cage_speed"):
+        assert s2[k] == pytest.approx(s1[k], rel=1e-4), k
+    assert np.allclose(x2, x1, rtol=0.0, atol=1e-8)
+    assert w1[2] < 500.0 - 5e-3  # the bearing's friction torque brakes the light ring (by 0.01 rad/s) ...
+    assert np.allclose(w2, w1, rtol=0.0, atol=1e-6)  # ... alike on both nodes
+
+
 def test_sensors_store_like_any_exudyn_sensor():
     SC, mbs, m_in, m_out, b = _rotor_scene()
-    el = CreateBallBearing(mbs, b, m_in, m_out, initialOmega=500.0, initialLoad=(3000.0, 0.0), stepSize=5e-6,
-                           tangential="implicit", sampleInterval=5e-4)
-    mbs.Assemble()
-    exu.config.printToConsole = False
-    mbs.SolveDynamic(el.SimulationSettings(0.005), solverType=exu.DynamicSolverType.VelocityVerlet)
-    exu.config.printToConsole = True
+    el = _loaded_bearing_run(mbs, m_in, m_out, b, 0.005)
     data = mbs.GetSensorStoredData(el.sensors["cageSpeed"])
     assert data.shape[1] == 2 and len(data) >= 5
     assert data[-1, 1] == pytest.approx(198.0, rel=0.01)
@@ -116,6 +149,13 @@ def test_bad_markers_and_placement_are_rejected():
     SC, mbs, m_in, m_out, b = _rotor_scene(offset=(80e-6, 0.0, 0.0))
     with pytest.raises(InputError, match="^markerInnerRing"):
         CreateBallBearing(mbs, b, m_in, m_out, initialLoad=(3000.0, 0.0))
+    # an Euler-parameter rotor (CreateRigidBody's default node): named, with the way out
+    from exudyn.rigidBodyUtilities import InertiaCylinder
+
+    ep = mbs.CreateRigidBody(referencePosition=[0.0, 0.0, 0.0], inertia=InertiaCylinder(7850.0, 0.018, 0.024, axis=2))
+    m_ep = mbs.AddMarker(MarkerBodyRigid(bodyNumber=ep, localPosition=[0.0, 0.0, 0.0]))
+    with pytest.raises(InputError, match="^markerInnerRing: node type RigidBodyEP .*RotationRotationVector"):
+        CreateBallBearing(mbs, b, m_ep, m_out)
 
 
 def test_step_above_the_stable_estimate_warns_and_stops_cleanly():

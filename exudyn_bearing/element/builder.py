@@ -22,9 +22,12 @@ reference engine (elliptic Hertz, Lambda-switched damping and friction,
 Cundall-Strack history, torus cage).
 
 Rings: a marker on ground (fixed ring), a MarkerBodyRigid / MarkerNodeRigid on
-a body with a NodeRigidBodyRxyz node (the bearing axis is the body's local
-z), or a position marker on a mass point (axes parallel to the world, spin
-prescribed by ``innerRingSpeed`` / ``outerRingSpeed``).
+a body with a NodeRigidBodyRxyz or NodeRigidBodyRotVecLG node (``nodeType=
+exu.NodeType.RotationRxyz`` or ``RotationRotationVector`` in
+``mbs.CreateRigidBody``; the bearing axis is the body's local z; Euler
+parameters are not usable with explicit solvers), or a position marker on a
+mass point (axes parallel to the world, spin prescribed by
+``innerRingSpeed`` / ``outerRingSpeed``).
 
 Fast mode (``mode="fast"``): the balls are integrated inside the element in
 compiled velocity-Verlet sub-steps between Exudyn steps (``subSteps`` of
@@ -99,7 +102,7 @@ def _marker_ring(mbs, marker, which):
             return EK.RING_FIXED, -1, np.zeros(3), fixed
         if "nodeNumber" not in obj:
             raise InputError(f"{name}: body type {otype} is not supported (use a RigidBody with a "
-                             "NodeRigidBodyRxyz node, a MassPoint, or ground)")
+                             "NodeRigidBodyRxyz or NodeRigidBodyRotVecLG node, a MassPoint, or ground)")
         node = obj["nodeNumber"]
     elif mtype in ("NodeRigid", "NodePosition"):
         node = m["nodeNumber"]
@@ -108,10 +111,15 @@ def _marker_ring(mbs, marker, which):
     ntype = mbs.GetNode(node)["nodeType"]
     if ntype == "RigidBodyRxyz":
         return EK.RING_RXYZ, int(node), local, fixed
+    if ntype == "RigidBodyRotVecLG":
+        return EK.RING_ROTVEC, int(node), local, fixed
     if ntype == "Point":
         fixed[:3] = local
         return EK.RING_POINT, int(node), np.zeros(3), fixed
-    raise InputError(f"{name}: node type {ntype} is not supported (NodeRigidBodyRxyz, NodePoint or ground)")
+    hint = (" (Euler-parameter nodes carry an algebraic constraint, which Exudyn's explicit solvers refuse; "
+            "use nodeType=exu.NodeType.RotationRxyz or RotationRotationVector)" if ntype == "RigidBodyEP" else "")
+    raise InputError(f"{name}: node type {ntype} is not supported (NodeRigidBodyRxyz, NodeRigidBodyRotVecLG, "
+                     f"NodePoint or ground){hint}")
 
 
 def _skew(v):
@@ -165,8 +173,8 @@ def _initial_node_pose(mbs, kind, node, local, fixed):
     v = np.asarray(n.get("initialVelocities", n.get("initialCoordinates_t", np.zeros(q.size))), float)
     if kind == EK.RING_POINT:
         return q[:3] + fixed[:3], fixed[3:].reshape(3, 3), v[:3], np.zeros(3)
-    a = np.array(EK._rot_xyz(q[3], q[4], q[5])).reshape(3, 3)
-    g = np.array(EK._g_xyz(q[3], q[4])).reshape(3, 3)
+    a = np.array(EK.node_rotation(kind, q)).reshape(3, 3)
+    g = np.array(EK._g_xyz(q[3], q[4])).reshape(3, 3) if kind == EK.RING_RXYZ else a  # Lie group: local omega
     w = g @ v[3:6]
     o = a @ local
     return q[:3] + o, a, v[:3] + np.cross(w, o), w

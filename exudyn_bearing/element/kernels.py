@@ -21,8 +21,10 @@ from ..reference.kernels import P_CAGE, P_IB, P_MB, P_MZ, RING_N, forces, kick_d
 
 #: Ring couplings: fixed in space (ground), node with position coordinates
 #: only (mass point: axes parallel to the world, prescribed spin), rigid-body
-#: node with Tait-Bryan xyz rotation parameters (Exudyn's NodeRigidBodyRxyz).
-RING_FIXED, RING_POINT, RING_RXYZ = 0, 1, 2
+#: node with Tait-Bryan xyz rotation parameters (Exudyn's NodeRigidBodyRxyz),
+#: rigid-body node with a rotation vector and the local angular velocity as
+#: velocity coordinates (Exudyn's Lie-group node NodeRigidBodyRotVecLG).
+RING_FIXED, RING_POINT, RING_RXYZ, RING_ROTVEC = 0, 1, 2, 3
 
 
 @kernel
@@ -34,6 +36,28 @@ def _rot_xyz(a0, a1, a2):
     return (c1 * c2, -c1 * s2, s1,
             s0 * s1 * c2 + c0 * s2, -s0 * s1 * s2 + c0 * c2, -s0 * c1,
             -c0 * s1 * c2 + s0 * s2, c0 * s1 * s2 + s0 * c2, c0 * c1)
+
+
+@kernel
+def _rot_vec(v0, v1, v2):
+    """Rotation matrix of a rotation vector (Rodrigues: I + sin(p)/p [v] + (1 - cos(p))/p^2 [v]^2), row-major."""
+    p2 = v0 * v0 + v1 * v1 + v2 * v2
+    if p2 < 1e-16:  # series to second order
+        s, c = 1.0 - p2 / 6.0, 0.5 - p2 / 24.0
+    else:
+        ph = math.sqrt(p2)
+        s, c = math.sin(ph) / ph, (1.0 - math.cos(ph)) / p2
+    return (1.0 - c * (v1 * v1 + v2 * v2), -s * v2 + c * v0 * v1, s * v1 + c * v0 * v2,
+            s * v2 + c * v0 * v1, 1.0 - c * (v0 * v0 + v2 * v2), -s * v0 + c * v1 * v2,
+            -s * v1 + c * v0 * v2, s * v0 + c * v1 * v2, 1.0 - c * (v0 * v0 + v1 * v1))
+
+
+@kernel
+def node_rotation(kind, rq):
+    """Rotation matrix (row-major 9-tuple) of a rigid ring node's total coordinates ``rq``."""
+    if kind == RING_ROTVEC:
+        return _rot_vec(rq[3], rq[4], rq[5])
+    return _rot_xyz(rq[3], rq[4], rq[5])
 
 
 @kernel
@@ -73,8 +97,9 @@ def ring_pose(kind, rq, rqt, local, fixed, spin, rings, r):
         rings[r, 16] = spin * fixed[8]
         rings[r, 17] = spin * fixed[11]
         return
-    a = _rot_xyz(rq[3], rq[4], rq[5])
-    g = _g_xyz(rq[3], rq[4])
+    a = node_rotation(kind, rq)
+    # global angular velocity: G times the angle rates (Rxyz), A times the local one (Lie group)
+    g = _g_xyz(rq[3], rq[4]) if kind == RING_RXYZ else a
     w0 = g[0] * rqt[3] + g[1] * rqt[4] + g[2] * rqt[5]
     w1 = g[3] * rqt[3] + g[4] * rqt[4] + g[5] * rqt[5]
     w2 = g[6] * rqt[3] + g[7] * rqt[4] + g[8] * rqt[5]
@@ -151,21 +176,26 @@ def ring_generalized_forces(q, ref, ring_kind, ring_data, rings, fr, out):
     """Ring reactions ``fr`` (force, torque about the ring centre) as generalized
     forces of the ring-node coordinates in ``out``: the force on the position
     coordinates, G^T times the torque about the node point on Tait-Bryan
-    rotation coordinates."""
+    rotation coordinates, the torque in the body frame (A^T times it) on a
+    Lie-group node's rotation coordinates."""
     for r in range(2):
         off = int(ring_data[r, RD_OFF])
         if off < 0 or ring_kind[r] == RING_FIXED:
             continue
         for d in range(3):
             out[off + d] += fr[r, d]
-        if ring_kind[r] == RING_RXYZ:
+        if ring_kind[r] == RING_RXYZ or ring_kind[r] == RING_ROTVEC:
             o0 = rings[r, 0] - (ref[off] + q[off])
             o1 = rings[r, 1] - (ref[off + 1] + q[off + 1])
             o2 = rings[r, 2] - (ref[off + 2] + q[off + 2])
             t0 = fr[r, 3] + o1 * fr[r, 2] - o2 * fr[r, 1]
             t1 = fr[r, 4] + o2 * fr[r, 0] - o0 * fr[r, 2]
             t2 = fr[r, 5] + o0 * fr[r, 1] - o1 * fr[r, 0]
-            g = _g_xyz(ref[off + 3] + q[off + 3], ref[off + 4] + q[off + 4])
+            # G^T torque on Tait-Bryan angles, A^T torque (local torque) on a Lie-group node
+            if ring_kind[r] == RING_RXYZ:
+                g = _g_xyz(ref[off + 3] + q[off + 3], ref[off + 4] + q[off + 4])
+            else:
+                g = _rot_vec(ref[off + 3] + q[off + 3], ref[off + 4] + q[off + 4], ref[off + 5] + q[off + 5])
             out[off + 3] += g[0] * t0 + g[3] * t1 + g[6] * t2
             out[off + 4] += g[1] * t0 + g[4] * t1 + g[7] * t2
             out[off + 5] += g[2] * t0 + g[5] * t1 + g[8] * t2
@@ -178,7 +208,7 @@ def ring_poses_from(q, q_t, ref, ring_kind, ring_data, rings):
     rqt = np.zeros(6)
     for r in range(2):
         off = int(ring_data[r, RD_OFF])
-        n_r = 6 if ring_kind[r] == RING_RXYZ else 3
+        n_r = 3 if ring_kind[r] == RING_POINT else 6
         if off >= 0:
             for d in range(n_r):
                 rq[d] = ref[off + d] + q[off + d]
