@@ -4,7 +4,9 @@ Arrays (n = samples, Z balls, race 0 inner / 1 outer):
 
 * ``t`` (n,) [s]; ``glob`` (n, NGLOBAL): omega, force of the balls on the
   inner ring (x, y, z), friction torque on the ring about its axis, total
-  frictional power, largest overlap / R_b;
+  frictional power, largest overlap / R_b, force of the balls and cage
+  balls on the outer ring (x, y, z) and torque about its axis
+  (``GLOBAL_FIELDS``; the ring reactions, ``global_series("outer_fx")``);
 * ``diag`` (n, Z, 2, NDIAG): per contact load, overlap, contact angle, a,
   b, p_max, u_r, h_min, Lambda, regime, mu, slip speed, slide-to-roll
   ratio, friction force (``DIAG_FIELDS``);

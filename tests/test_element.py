@@ -131,6 +131,10 @@ def test_sensors_store_like_any_exudyn_sensor():
     assert data[-1, 1] == pytest.approx(198.0, rel=0.01)
     q_out = mbs.GetSensorStoredData(el.sensors["qMaxOuter"])[-1, 1]
     assert 1300 < q_out < 1600
+    # ring reactions: the balls push the inner ring back and the outer ring along the load
+    f_in = mbs.GetSensorStoredData(el.sensors["innerRingForce"])[-1, 1:]
+    f_out = mbs.GetSensorStoredData(el.sensors["outerRingForce"])[-1, 1:]
+    assert f_in[0] == pytest.approx(-3000.0, rel=0.05) and f_out[0] == pytest.approx(3000.0, rel=0.05)
 
 
 def test_bad_markers_and_placement_are_rejected():

@@ -190,7 +190,8 @@ class BallBearingElement:
         ``ringNodes`` (ring nodes that joined the object), ``sensors``.
     sensors : dict
         Sensor numbers (``cageSpeed``, ``qMaxInner``, ``qMaxOuter``,
-        ``lambdaOuterPsi0``, ``innerRingForce``), stored internally: use
+        ``lambdaOuterPsi0``, ``innerRingForce``, ``outerRingForce``: force of
+        the balls on the ring [N]), stored internally: use
         ``mbs.PlotSensor`` or ``mbs.GetSensorStoredData``.
     initialRingDisplacement : ndarray
         Displacement of the inner ring (outer-ring frame) in the analytic
@@ -364,6 +365,7 @@ class BallBearingElement:
             "qMaxOuter": lambda: [float(self._diag[:, 1, 0].max())],
             "lambdaOuterPsi0": lambda: [float(self._diag[self._psi0(), 1, 8])],
             "innerRingForce": lambda: list(self._fr[0, :3]),
+            "outerRingForce": lambda: list(self._fr[1, :3]),
         }
         for key, fn in sensor_defs.items():
             self.sensors[key] = mbs.AddSensor(SensorUserFunction(

@@ -51,7 +51,7 @@ DIAG_FIELDS = ("load", "overlap", "contact_angle", "a", "b", "p_max", "u_r", "h_
 NDIAG = len(DIAG_FIELDS)
 #: Global diagnostics per sample, in order.
 GLOBAL_FIELDS = ("omega", "ring_fx", "ring_fy", "ring_fz", "ring_torque", "friction_power",
-                 "max_overlap_ratio")
+                 "max_overlap_ratio", "outer_fx", "outer_fy", "outer_fz", "outer_torque")
 NGLOBAL = len(GLOBAL_FIELDS)
 
 
@@ -448,6 +448,12 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb,
         glob[4] = ex * fr[0, 3] + ey * fr[0, 4] + ez * fr[0, 5]
         glob[5] = power_sum
         glob[6] = worst
+        # outer ring: force of the balls and cage balls, torque about its axis
+        ex, ey, ez = rings[1, 8], rings[1, 11], rings[1, 14]
+        glob[7] = fr[1, 0]
+        glob[8] = fr[1, 1]
+        glob[9] = fr[1, 2]
+        glob[10] = ex * fr[1, 3] + ey * fr[1, 4] + ez * fr[1, 5]
     return worst
 
 
