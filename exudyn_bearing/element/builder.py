@@ -159,6 +159,21 @@ def _ring_mobility(mbs, marker, kind, local):
     return float(np.linalg.eigvalsh(bb @ np.linalg.solve(mm, bb.T)).max())
 
 
+def _entry_point(dispatcher, args):
+    """numba's compiled entry point of ``dispatcher`` for the types of
+    ``args`` (compiled or loaded from the cache now): calling it skips
+    numba's per-call type dispatch. The dispatcher itself where numba does not
+    offer it (JIT disabled, another numba version)."""
+    try:
+        import numba
+
+        sig = tuple(numba.typeof(a) for a in args)
+        dispatcher.compile(sig)
+        return dispatcher.overloads[sig].entry_point
+    except Exception:  # noqa: BLE001 - any failure falls back to the dispatcher
+        return dispatcher
+
+
 #: Key in ``mbs.variables``: ring node -> [(element, ring index)] of every
 #: bearing element on it (the fast mode's stable Exudyn step adds them up).
 RING_REGISTRY = "exudyn_bearing.ringNodes"
@@ -280,7 +295,6 @@ class BallBearingElement:
         for r, sp in enumerate(self.rings_spec):
             if sp[0] != EK.RING_FIXED:
                 registry.setdefault(int(sp[1]), []).append((self, r))
-        self._step_checked = not fast
         nodes = []
         mass = []
         mb, ib = b.ball_mass, 0.4 * b.ball_mass * b.ball_radius ** 2
@@ -336,15 +350,16 @@ class BallBearingElement:
             self._work[3, :n_cage], self._work[4, :n_cage] = xc[:n_cage], vc[:n_cage]
             self._rings0 = K.ring_poses()
             self._rings_sub = K.ring_poses()
-            self._t_int = None
-            self._tau = 0.0
+            self._clock = [math.nan, 0.0, self.sampleInterval, False]
         self._rings = K.ring_poses()
         self._fr = np.zeros((2, 6))
         self._glob = np.zeros(K.NGLOBAL)
         self._diag = np.zeros((z, 2, K.NDIAG))
         self._cage_load = np.zeros((z, 2))
         self._out = np.zeros(n)
-        self._samples = {k: [] for k in ("t", "glob", "diag", "cage_load", "xb", "vb", "wb", "xc", "vc", "ring")}
+        # samples: times and flat rows filled by compiled code (kernels.sample_row)
+        self._sample_t, self._sample_rows = [], []
+        self._row = np.zeros(sum(int(np.prod(shape)) for _name, shape in EK.sample_layout(z)))
         self._next_sample = self.sampleInterval
         self._evaluations = 0
         self._wall = 0.0
@@ -352,6 +367,8 @@ class BallBearingElement:
         self._dt_sub = float(self.scenario.dt)
         self._max_overlap = float(self.params[K.P_MAX_OVERLAP])
         self._status = 0.0
+        if fast:
+            self._force_uf_fast = self._make_fast_uf()
         obj = mbs.AddObject(ObjectGenericODE2(nodeNumbers=nodes + cage_nodes + ring_nodes, massMatrix=np.diag(mass),
                                               forceUserFunction=self._force_uf_fast if fast else self._force_uf,
                                               visualization=VObjectGenericODE2(
@@ -431,59 +448,72 @@ class BallBearingElement:
                                self._diag, self._cage_load, want, self._out)
         return self._after_step(t, t0, worst, want, True)
 
-    def _force_uf_fast(self, mbs, t, itemNumber, q, q_t):
-        """Fast mode: advance the balls in compiled sub-steps to t + (H - dt)/2,
-        return the mean ring reactions of those sub-steps as generalized ring
-        forces (the sub-step windows are centred on the Exudyn times, so the
-        ring's and the balls' impulses match: :func:`~.kernels.advance_balls`).
+    def _make_fast_uf(self):
+        """The fast mode's force user function, a closure over the element's
+        arrays and the compiled step's entry point.
 
-        This runs once per Exudyn step and its Python overhead is a large
-        share of the step's cost (validation/bench_element.py), hence the
-        lean code."""
-        for r, f in self._speeds:
-            self._ring_data[r, EK.RD_SPIN] = f(t)
-        # Exudyn's vectors become contiguous float64 arrays (one compiled signature)
-        q = np.asarray(q, float)
-        q_t = np.asarray(q_t, float)
-        t_int = self._t_int
-        if t_int is not None and t > t_int + 1e-15:
-            big = t - t_int
-            if not self._step_checked:
-                self._check_fast_step(big)
-            m = int(big / self._dt_sub + 0.5) or 1
-            t_end = t + 0.5 * (big - big / m)
-            n_sub = int((t_end - self._tau) * m / big + 0.5) or 1
-            want = t >= self._next_sample - 1e-12
-            worst = EK.fast_step(q, q_t, self.ref, self.params, self.table, self._ring_kind, self._ring_data, n_sub,
-                                 self._tau, t, t_end, self._work, self._rings0, self._rings, self._rings_sub,
-                                 self._hist, self._hz, self._fr, self._glob, self._diag,
-                                 self._cage_load, want, self._out)
-            self._t_int = t
-            self._tau = t_end
-            if not worst <= self._max_overlap:  # also catches NaN
-                self._check_worst(worst, t)
-            if want:
-                self._sample(t_end, self._rings_sub)
-            self._evaluations += 1
-            return self._out
-        if t_int is None:
-            # first evaluation: forces at the initial state, nothing to integrate yet
-            w = self._work
-            EK.ring_poses_from(q, q_t, self.ref, self._ring_kind, self._ring_data, self._rings)
-            K.forces(self.params, self.table, w[0], w[1], w[2], w[3], w[4], self._rings, self._hist, self._hist,
-                     self.scenario.dt, self._hz, w[5], w[6], w[7], self._fr, self._glob, self._diag, self._cage_load,
-                     False)
-            self._rings0[:] = self._rings
-            self._t_int = self._tau = t
-        elif t < t_int - 1e-15:
-            raise RuntimeError("mode: the fast mode integrates the balls forward in time and needs an explicit "
-                               "fixed-step solver (VelocityVerlet, or RK44 with friction='regularized')")
-        # no time advance: the last reactions at the current ring poses
-        EK.fast_step(q, q_t, self.ref, self.params, self.table, self._ring_kind, self._ring_data, 0, self._tau, t, t,
-                     self._work, self._rings0, self._rings, self._rings_sub, self._hist, self._hz, self._fr,
-                     self._glob, self._diag, self._cage_load, False, self._out)
-        self._evaluations += 1
-        return self._out
+        Per Exudyn evaluation it advances the balls in compiled sub-steps to
+        t + (H - dt)/2 and returns the mean ring reactions of those sub-steps
+        as generalized ring forces (the sub-step windows are centred on the
+        Exudyn times, so the ring's and the balls' impulses match:
+        :func:`~.kernels.advance_balls`). It runs once per Exudyn step, and its
+        Python cost is a large share of the step: bound locals instead of
+        attribute look-ups and the compiled entry point instead of numba's
+        type dispatch take about a tenth off the step
+        (validation/bench_element.py times the result)."""
+        ref, params, table, kind, rdata = self.ref, self.params, self.table, self._ring_kind, self._ring_data
+        work, rings0, rings, rings_sub = self._work, self._rings0, self._rings, self._rings_sub
+        hist, hz, fr, glob, diag, cload, out = (self._hist, self._hz, self._fr, self._glob, self._diag,
+                                                self._cage_load, self._out)
+        speeds, dt_sub, max_overlap, spin = self._speeds, self._dt_sub, self._max_overlap, EK.RD_SPIN
+        clock = self._clock  # [t of the last Exudyn evaluation (nan: none yet), tau, next sample, step checked]
+        asarray = np.asarray
+        step = _entry_point(EK.fast_step, (asarray(np.zeros(1)), asarray(np.zeros(1)), ref, params, table, kind,
+                                           rdata, 1, 0.0, 0.0, 0.0, work, rings0, rings, rings_sub, hist, hz, fr,
+                                           glob, diag, cload, False, out))
+
+        def force_uf_fast(mbs, t, itemNumber, q, q_t):
+            for r, f in speeds:
+                rdata[r, spin] = f(t)
+            # Exudyn's vectors become contiguous float64 arrays (one compiled signature)
+            q = asarray(q, float)
+            q_t = asarray(q_t, float)
+            t_int = clock[0]
+            if t > t_int + 1e-15:  # False before the first evaluation (nan)
+                big = t - t_int
+                if not clock[3]:
+                    self._check_fast_step(big)
+                m = int(big / dt_sub + 0.5) or 1
+                t_end = t + 0.5 * (big - big / m)
+                tau = clock[1]
+                n_sub = int((t_end - tau) * m / big + 0.5) or 1
+                want = t >= clock[2] - 1e-12
+                worst = step(q, q_t, ref, params, table, kind, rdata, n_sub, tau, t, t_end, work, rings0, rings,
+                             rings_sub, hist, hz, fr, glob, diag, cload, want, out)
+                clock[0] = t
+                clock[1] = t_end
+                if not worst <= max_overlap:  # also catches NaN
+                    self._check_worst(worst, t)
+                if want:
+                    self._sample(t_end, rings_sub)
+                    clock[2] = self._next_sample
+                return out
+            if t_int != t_int:
+                # first evaluation: forces at the initial state, nothing to integrate yet
+                EK.ring_poses_from(q, q_t, ref, kind, rdata, rings)
+                K.forces(params, table, work[0], work[1], work[2], work[3], work[4], rings, hist, hist, dt_sub, hz,
+                         work[5], work[6], work[7], fr, glob, diag, cload, False)
+                rings0[:] = rings
+                clock[0] = clock[1] = t
+            elif t < t_int - 1e-15:
+                raise RuntimeError("mode: the fast mode integrates the balls forward in time and needs an explicit "
+                                   "fixed-step solver (VelocityVerlet, or RK44 with friction='regularized')")
+            # no time advance: the last reactions at the current ring poses
+            step(q, q_t, ref, params, table, kind, rdata, 0, clock[1], t, t, work, rings0, rings, rings_sub, hist,
+                 hz, fr, glob, diag, cload, False, out)
+            return out
+
+        return force_uf_fast
 
     def _after_step(self, t, t0, worst, want, advanced):
         """Runaway check, sampling and bookkeeping after a force evaluation."""
@@ -499,7 +529,7 @@ class BallBearingElement:
     def _check_fast_step(self, h, stacklevel=4):
         """Warn (once) when the fast mode's Exudyn step ``h`` exceeds the ring
         bodies' stable step or its ball sub-step the balls' stable step."""
-        self._step_checked = True
+        self._clock[3] = True
         dt = h / max(1, int(h / self._dt_sub + 0.5))
         if h > self.ringStableStep:
             warnings.warn(f"subSteps: the Exudyn step {h:.3g} s exceeds the ring bodies' stable-step estimate "
@@ -545,22 +575,9 @@ class BallBearingElement:
 
     def _store(self, t, rings):
         """Sample at t; ``rings``: the ring poses the balls saw there."""
-        s = self._samples
-        s["t"].append(t)
-        s["glob"].append(self._glob.copy())
-        s["diag"].append(self._diag.copy())
-        s["cage_load"].append(self._cage_load.copy())
-        # positions and velocities in the outer-ring frame (as the reference engine reports them)
-        x1, v1 = rings[1, :3], rings[1, 3:6]
-        a1 = rings[1, 6:15].reshape(3, 3)
-        w1 = rings[1, 15:18]
-        w = self._work
-        for kx, kv, ix in (("xb", "vb", 0), ("xc", "vc", 3)):
-            d = w[ix] - x1
-            s[kx].append(d @ a1)
-            s[kv].append((w[ix + 1] - v1 - np.cross(w1, d)) @ a1)
-        s["wb"].append((w[2] - w1) @ a1)
-        s["ring"].append(np.concatenate([(rings[0, :3] - x1) @ a1, (rings[0, 3:6] - v1) @ a1]))
+        EK.sample_row(rings, self._work, self._glob, self._diag, self._cage_load, self._row)
+        self._sample_t.append(t)
+        self._sample_rows.append(self._row.copy())
 
     @staticmethod
     def _orbital(x, v):
@@ -599,9 +616,14 @@ class BallBearingElement:
         """Sampled series of the run (the same Results as the reference engine;
         positions, velocities and ring displacement in the outer-ring frame,
         ball angular velocity relative to the outer ring)."""
-        data = {k: np.array(v) for k, v in self._samples.items()}
-        if len(data["t"]) == 0:
+        if not self._sample_t:
             raise RuntimeError("results: no samples yet; run mbs.SolveDynamic first")
+        rows = np.array(self._sample_rows)
+        data, k = {"t": np.array(self._sample_t)}, 0
+        for name, shape in EK.sample_layout(self.z):
+            size = int(np.prod(shape))
+            data[name] = rows[:, k:k + size].reshape((len(rows), *shape))
+            k += size
         steps = self._evaluations if steps is None else steps
         msg = cage_load_check(self.bearing, self.scenario, self.lubricant,
                               float(data["cage_load"].max(initial=0.0)), self.scenario.dt)

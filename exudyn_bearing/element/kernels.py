@@ -17,7 +17,7 @@ import math
 import numpy as np
 
 from .._jit import kernel
-from ..reference.kernels import P_CAGE, P_IB, P_MB, P_MZ, RING_N, forces, kick_drift
+from ..reference.kernels import NDIAG, NGLOBAL, P_CAGE, P_IB, P_MB, P_MZ, RING_N, forces, kick_drift
 
 #: Ring couplings: fixed in space (ground), node with position coordinates
 #: only (mass point: axes parallel to the world, prescribed spin), rigid-body
@@ -301,3 +301,68 @@ def fast_step(q, q_t, ref, p, table, ring_kind, ring_data, n_sub, tau, t, t_end,
     ring_generalized_forces(q, ref, ring_kind, ring_data, rings, fr, out)
     return worst
 
+
+
+def sample_layout(z):
+    """(name, shape) of the parts of a sample row (:func:`sample_row`), in order."""
+    return (("glob", (NGLOBAL,)), ("diag", (z, 2, NDIAG)), ("cage_load", (z, 2)), ("xb", (z, 3)), ("vb", (z, 3)),
+            ("wb", (z, 3)), ("xc", (z, 3)), ("vc", (z, 3)), ("ring", (6,)))
+
+
+@kernel
+def sample_row(rings, work, glob, diag, cage_load, row):
+    """One sample of the element into the flat ``row`` (layout
+    :func:`sample_layout`): the diagnostics as they are, and the way the
+    reference engine reports its state, in the outer-ring frame (``rings[1]``):
+    positions and velocities of balls and cage balls relative to the outer
+    ring, ball angular velocities relative to it, the inner ring's
+    displacement and velocity."""
+    z = work.shape[1]
+    k = 0
+    for i in range(glob.shape[0]):
+        row[k] = glob[i]
+        k += 1
+    for j in range(z):
+        for r in range(2):
+            for i in range(diag.shape[2]):
+                row[k] = diag[j, r, i]
+                k += 1
+    for j in range(z):
+        for r in range(2):
+            row[k] = cage_load[j, r]
+            k += 1
+    x1 = rings[1, 0:3]
+    v1 = rings[1, 3:6]
+    w1 = rings[1, 15:18]
+    # xb, vb, wb, xc, vc: rows of work 0, 1, 2, 3, 4
+    for ix in range(5):
+        for j in range(z):
+            for c in range(3):
+                acc = 0.0
+                for m in range(3):
+                    if ix == 0 or ix == 3:  # position relative to the outer-ring centre
+                        u = work[ix, j, m] - x1[m]
+                    elif ix == 2:  # angular velocity relative to the ring's
+                        u = work[2, j, m] - w1[m]
+                    else:  # velocity relative to the ring point there: v - v1 - w1 x d
+                        d0 = work[ix - 1, j, 0] - x1[0]
+                        d1 = work[ix - 1, j, 1] - x1[1]
+                        d2 = work[ix - 1, j, 2] - x1[2]
+                        if m == 0:
+                            wxd = w1[1] * d2 - w1[2] * d1
+                        elif m == 1:
+                            wxd = w1[2] * d0 - w1[0] * d2
+                        else:
+                            wxd = w1[0] * d1 - w1[1] * d0
+                        u = work[ix, j, m] - v1[m] - wxd
+                    acc += u * rings[1, 6 + 3 * m + c]
+                row[k] = acc
+                k += 1
+    for c in range(3):
+        acc_x = 0.0
+        acc_v = 0.0
+        for m in range(3):
+            acc_x += (rings[0, m] - x1[m]) * rings[1, 6 + 3 * m + c]
+            acc_v += (rings[0, 3 + m] - v1[m]) * rings[1, 6 + 3 * m + c]
+        row[k + c] = acc_x
+        row[k + 3 + c] = acc_v
