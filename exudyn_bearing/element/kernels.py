@@ -252,6 +252,9 @@ def advance_balls(n_sub, tau, t, t_end, p, table, work, rings0, rings1, rings, h
     worst = 0.0
     fsum = np.zeros((2, 6))
     span = t - tau
+    for r in range(2):  # velocities, rotation and angular velocity: those at t throughout
+        for k in range(3, RING_N):
+            rings[r, k] = rings1[r, k]
     for i in range(n_sub):
         kick_drift(h, dt, xb, vb, wb, xc, vc, fb, tb, fc, inv_mb, inv_ib, inv_mz)
         s = t_end if i == n_sub - 1 else tau + (i + 1) * dt
@@ -266,8 +269,6 @@ def advance_balls(n_sub, tau, t, t_end, p, table, work, rings0, rings1, rings, h
             else:
                 for k in range(3):
                     rings[r, k] = rings1[r, k] + (s - t) * rings1[r, 3 + k]
-            for k in range(3, RING_N):
-                rings[r, k] = rings1[r, k]
         w = forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist, dt, hz, fb, tb, fc, fr, glob, diag,
                    cage_load, want and i == n_sub - 1)
         if w > worst:
