@@ -48,3 +48,21 @@ def test_7208_scenario_script(tmp_path, capsys):
     mod.main(["--t-end", "0.002", "--out", str(tmp_path)])
     out = capsys.readouterr().out
     assert "reference:" in out and "exudyn" in out and (tmp_path / "bearing_7208.png").exists()
+
+
+def test_readme_element_example_runs_without_step_warnings(capsys):
+    # the README's Exudyn example, shortened to 5 ms: it must run as printed, on a
+    # CreateRigidBody shaft, inside the stable-step estimates, and carry the load
+    import warnings
+
+    text = (ROOT / "README.md").read_text()
+    start = text.index("```python\nimport exudyn as exu, exudyn_bearing as eb")
+    code = text[start + len("```python\n"):text.index("```\n", start + 10)]
+    assert "endTime=0.1" in code
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", eb.reference.StepSizeWarning)
+        scope = {}
+        exec(compile(code.replace("endTime=0.1", "endTime=0.005"), "README.md", "exec"), scope)
+    s = scope["bearing"].results().summary()
+    assert s["q_max_inner"] == pytest.approx(eb.simulate("6208", eb.Scenario(
+        Fr=3000.0, omega=500.0, t_end=0.005, dt=3.5e-6, tangential="implicit")).summary()["q_max_inner"], rel=0.02)
