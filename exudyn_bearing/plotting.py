@@ -45,6 +45,17 @@ def save_figure(fig, png, columns: dict | None = None, dpi=110, layout=True, tri
     return png
 
 
+def label_azimuth_axes(ax, ylabels, legend_fontsize=8, legend_axes=None):
+    """A row of plots against the azimuth: x label, grid, the ``ylabels``,
+    legends on ``legend_axes`` (default all)."""
+    for a, label in zip(ax, ylabels):
+        a.set_xlabel("azimuth psi [deg]")
+        a.set_ylabel(label)
+        a.grid(alpha=0.3)
+    for a in (ax if legend_axes is None else legend_axes):
+        a.legend(fontsize=legend_fontsize)
+
+
 def plot_static(res: dict, png) -> tuple[Path, Path]:
     """Q(psi) (and with a speed, Lambda(psi) of both races) of a static analysis.
 
@@ -275,12 +286,7 @@ def plot_quasi_static(run, png) -> Path:
     ax[0].plot(d[order], q_out[order], "x", label=f"{run.engine}: outer")
     ax[1].plot(d[order], st.overlap[order] * 1e6, "k-", label="analytic")
     ax[1].plot(d[order], delta[order] * 1e6, "o", mfc="none", label=run.engine)
-    ax[0].set_ylabel("ball load Q [N]")
-    ax[1].set_ylabel("total overlap delta [um]")
-    for a in ax:
-        a.set_xlabel("azimuth psi [deg]")
-        a.grid(alpha=0.3)
-        a.legend(fontsize=8)
+    label_azimuth_axes(ax, ("ball load Q [N]", "total overlap delta [um]"))
     fig.suptitle(f"{run.bearing.name}: Fr = {run.scenario.Fr:g} N, Pd = "
                  f"{run.bearing.diametral_clearance * 1e6:.1f} um, omega = {run.scenario.omega:g} rad/s")
     save_figure(fig, png, {"psi_rad": psi, "q_analytic_N": st.q, "q_inner_N": q_in, "q_outer_N": q_out,

@@ -65,6 +65,13 @@ class Results:
         xb = self.data["xb"]
         return np.arctan2(xb[..., 1], xb[..., 0])
 
+    def azimuth_scatter(self, name: str = "load", race: str | int = "outer", fraction: float = 0.5):
+        """(psi [deg], values) of a ``DIAG_FIELDS`` entry at every ball and
+        sample of the last ``fraction`` of the run, flattened (for Q(psi)
+        scatter plots)."""
+        w = self.window(fraction)
+        return np.degrees(self.azimuth()[w]).ravel(), self.contact(name, race)[w].ravel()
+
     def orbital_speed(self, which: str = "balls") -> np.ndarray:
         """Angular speed about the bearing axis (n, Z) [rad/s] of balls or cage balls."""
         x, v = (self.data["xb"], self.data["vb"]) if which == "balls" else (self.data["xc"], self.data["vc"])

@@ -26,7 +26,7 @@ import numpy as np
 
 import exudyn_bearing as eb
 from exudyn_bearing.physics.load_distribution import static_equilibrium
-from exudyn_bearing.plotting import _pyplot, save_figure
+from exudyn_bearing.plotting import _pyplot, label_azimuth_axes, save_figure
 
 
 def main(argv=None):
@@ -51,10 +51,8 @@ def main(argv=None):
     cols = {}
     for e, m in (("reference", "o"), ("exudyn", "x")):
         r = runs[e]
-        w = r.window(0.5)
-        psi = np.degrees(r.azimuth()[w]).ravel()
-        q = r.contact("load", "outer")[w].ravel()
-        al = np.degrees(r.contact("contact_angle", "outer")[w]).ravel()
+        psi, q = r.azimuth_scatter("load", "outer")
+        al = np.degrees(r.azimuth_scatter("contact_angle", "outer")[1])
         ax[0].plot(psi, q, m, ms=3, mfc="none", label=f"{e} engine")
         loaded = q > 0
         ax[1].plot(psi[loaded], al[loaded], m, ms=3, mfc="none", label=f"{e} engine")
@@ -66,12 +64,7 @@ def main(argv=None):
               f"wall {s['wall_s']:.1f} s")
     print(f"quasi-static: q_max {st.q_max:.0f} N, eps {st.eps:.3f}, contact angles "
           f"{np.degrees(st.contact_angle[st.q > 0]).min():.1f}..{np.degrees(st.contact_angle[st.q > 0]).max():.1f} deg")
-    ax[0].set_ylabel("outer ball load Q [N]")
-    ax[1].set_ylabel("outer contact angle [deg]")
-    for a in ax:
-        a.set_xlabel("azimuth psi [deg]")
-        a.grid(alpha=0.3)
-        a.legend(fontsize=8)
+    label_azimuth_axes(ax, ("outer ball load Q [N]", "outer contact angle [deg]"))
     fig.suptitle("7208, Fr = Fa = 3000 N, 500 rad/s")
     save_figure(fig, out / "bearing_7208.png", cols, trim=True)
     print("figure:", out / "bearing_7208.png")

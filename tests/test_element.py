@@ -13,6 +13,7 @@ from exudyn.itemInterface import (LoadForceVector, MarkerBodyRigid, MarkerNodeCo
 import exudyn_bearing as eb  # noqa: E402
 from exudyn_bearing import InputError  # noqa: E402
 from exudyn_bearing.element import CreateBallBearing  # noqa: E402
+from exudyn_bearing.element.engine import solve_dynamic  # noqa: E402
 from exudyn_bearing.reference import ReferenceEngine  # noqa: E402
 from exudyn_bearing.reference.engine import ring_mass_estimate  # noqa: E402
 
@@ -70,11 +71,7 @@ def _loaded_bearing_run(mbs, m_in, m_out, b, t_end):
     el = CreateBallBearing(mbs, b, m_in, m_out, initialOmega=500.0, initialLoad=(3000.0, 0.0), stepSize=5e-6,
                            tangential="implicit", sampleInterval=5e-4)
     mbs.Assemble()
-    exu.config.printToConsole = False
-    try:
-        mbs.SolveDynamic(el.SimulationSettings(t_end), solverType=exu.DynamicSolverType.VelocityVerlet)
-    finally:
-        exu.config.printToConsole = True
+    solve_dynamic(mbs, el.SimulationSettings(t_end))
     return el
 
 
@@ -85,10 +82,7 @@ def test_rigid_body_ring_feels_the_bearing():
     el = CreateBallBearing(mbs, b, m_in, m_out, initialOmega=500.0, initialLoad=(3000.0, 0.0), stepSize=5e-6,
                            tangential="implicit")
     mbs.Assemble()
-    ss = el.SimulationSettings(0.01)
-    exu.config.printToConsole = False
-    mbs.SolveDynamic(ss, solverType=exu.DynamicSolverType.VelocityVerlet)
-    exu.config.printToConsole = True
+    solve_dynamic(mbs, el.SimulationSettings(0.01))
     s = el.results().summary()
     ref = eb.simulate("6208", eb.Scenario(Fr=3000.0, omega=500.0, t_end=0.01, dt=5e-6, tangential="implicit"))
     r = ref.summary()
@@ -168,12 +162,8 @@ def test_step_above_the_stable_estimate_warns_and_stops_cleanly():
     mbs.Assemble()
     with pytest.warns(UserWarning, match="stepSize"):
         ss = el.SimulationSettings(0.01)
-    exu.config.printToConsole = False
-    try:
-        with pytest.raises(Exception, match="stepSize"):
-            mbs.SolveDynamic(ss, solverType=exu.DynamicSolverType.VelocityVerlet)
-    finally:
-        exu.config.printToConsole = True
+    with pytest.raises(Exception, match="stepSize"):
+        solve_dynamic(mbs, ss)
 
 
 def test_rk44_with_regularized_friction_matches_verlet():
@@ -354,9 +344,7 @@ def test_outer_ring_on_a_flexible_housing():
                            tangential="implicit")
     assert len(el.items["ringNodes"]) == 2
     mbs.Assemble()
-    exu.config.printToConsole = False
-    mbs.SolveDynamic(el.SimulationSettings(0.02), solverType=exu.DynamicSolverType.VelocityVerlet)
-    exu.config.printToConsole = True
+    solve_dynamic(mbs, el.SimulationSettings(0.02))
     x_h = mbs.GetNodeOutput(n_h, exu.OutputVariableType.Position)
     # the housing carries F_r through its spring: displacement F_r / k (within the ringing)
     assert x_h[0] == pytest.approx(3000.0 / k_h, rel=0.15)

@@ -37,7 +37,7 @@ import numpy as np
 
 import exudyn as exu
 import exudyn_bearing as eb
-from exudyn_bearing.element.engine import ExudynEngine
+from exudyn_bearing.element.engine import ExudynEngine, solve_dynamic
 from exudyn_bearing.physics.load_distribution import race_stiffness
 from exudyn_bearing.reference import ReferenceEngine
 from exudyn_bearing.reference.engine import ring_mass_estimate, ring_stable_step
@@ -62,16 +62,12 @@ def builtin_run(t_end, h, k):
     SC, mbs, items = build_builtin(k=k, damping=200.0, mu=0.1, v_reg=None)
     mbs.Assemble()
     ss = gen_alpha_settings(t_end, h)
-    printing = exu.config.printToConsole
-    exu.config.printToConsole = False
     t0 = time.perf_counter()
     try:
-        mbs.SolveDynamic(ss, solverType=exu.DynamicSolverType.GeneralizedAlpha)
+        solve_dynamic(mbs, ss, exu.DynamicSolverType.GeneralizedAlpha)
         ok = True
     except Exception:
         ok = False
-    finally:
-        exu.config.printToConsole = printing
     wall = time.perf_counter() - t0
     cage = mbs.GetObjectOutputBody(items["objectCage"], exu.OutputVariableType.AngularVelocity, [0, 0, 0])[2]
     return wall, float(cage), ok
@@ -142,11 +138,8 @@ def main(argv=None):
                                                **dict(SCENE, sample_dt=1e-4)))
         ss = eng.element.SimulationSettings(2e-3, 1e-5)
         ss.timeIntegration.newton.useModifiedNewton = True
-        printing = exu.config.printToConsole
-        exu.config.printToConsole = False
         t0 = time.perf_counter()
-        eng.mbs.SolveDynamic(ss, solverType=exu.DynamicSolverType.GeneralizedAlpha)
-        exu.config.printToConsole = printing
+        solve_dynamic(eng.mbs, ss, exu.DynamicSolverType.GeneralizedAlpha)
         wall = time.perf_counter() - t0
         rows["element body mode, GeneralizedAlpha 10 us"] = dict(wall_per_sim_s=wall / 2e-3,
                                                                   evaluations=eng.element._evaluations)

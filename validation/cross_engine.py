@@ -50,10 +50,7 @@ def main(argv=None):
         fig, ax = plt.subplots(figsize=(7, 4.2))
         cols = {}
         for e, marker in (("reference", "o"), ("exudyn", "x")):
-            r = runs[e]
-            w = r.window(0.5)
-            psi = np.degrees(r.azimuth()[w]).ravel()
-            q = r.contact("load", "outer")[w].ravel()
+            psi, q = runs[e].azimuth_scatter("load", "outer")
             ax.plot(psi, q, marker, ms=3, mfc="none", label=f"{e} engine, outer contacts")
             cols[f"psi_deg_{e}"] = psi
             cols[f"q_outer_N_{e}"] = q

@@ -39,11 +39,17 @@ from exudyn.itemInterface import (LoadForceVector, LoadTorqueVector, MarkerBodyR
                                   ObjectRigidBody)
 
 import exudyn_bearing as eb
-from exudyn_bearing.element.engine import ExudynEngine
+from exudyn_bearing.element.engine import ExudynEngine, solve_dynamic
 from exudyn_bearing.reference import SimulationError
 from exudyn_bearing.reference.engine import ring_mass_estimate, ring_stable_step
 
 HERE = Path(__file__).resolve().parent
+
+
+def _first_error_line(exc):
+    """The element's own message (the line naming stepSize) out of Exudyn's wrapped error."""
+    lines = [ln for ln in str(exc).splitlines() if "stepSize" in ln] or str(exc).splitlines() or ["failed"]
+    return lines[0].replace("RuntimeError: ", "").strip()[:200]
 
 
 def substeps_6208():
@@ -58,8 +64,7 @@ def substeps_6208():
             s = ExudynEngine("6208", sc, mode="fast", sub_steps=sub).run().summary()
             rows[f"fast {sub}"] = {k: s[k] for k in ("q_max_inner", "cage_speed")}
         except Exception as exc:  # a blow-up is a result here
-            lines = [ln for ln in str(exc).splitlines() if "stepSize" in ln] or str(exc).splitlines()
-            rows[f"fast {sub}"] = {"error": lines[0].replace("RuntimeError: ", "").strip()[:200]}
+            rows[f"fast {sub}"] = {"error": _first_error_line(exc)}
         print(f"6208 scene, fast mode {sub} sub-step(s): {rows[f'fast {sub}']}")
     return rows
 
@@ -83,13 +88,7 @@ def rotor(load, sub, dt=5e-6):
         bearings.append(eb.CreateBallBearing(mbs, "6208", mi, mo, stepSize=dt, tangential="implicit",
                                              sampleInterval=2e-5, **mode))
     mbs.Assemble()
-    ss = bearings[0].SimulationSettings(0.02)
-    printing = exu.config.printToConsole
-    exu.config.printToConsole = False
-    try:
-        mbs.SolveDynamic(ss, solverType=ss.timeIntegration.solverType)
-    finally:
-        exu.config.printToConsole = printing
+    solve_dynamic(mbs, bearings[0].SimulationSettings(0.02))
     r = bearings[0].results()
     cage = r.cage_speed_series()
     return {"mean_10_20ms": float(cage[r.t >= 0.01].mean()), "at_20ms": float(cage[-1])}
@@ -122,12 +121,7 @@ def rotor_scenario_whirl():
                                                                 sub_steps=max(sub, 1))
         ss = bearings["A"].SimulationSettings(0.05)
         ss.solution.sensors.writePeriod = 2e-4
-        printing = exu.config.printToConsole
-        exu.config.printToConsole = False
-        try:
-            mbs.SolveDynamic(ss, solverType=ss.timeIntegration.solverType)
-        finally:
-            exu.config.printToConsole = printing
+        solve_dynamic(mbs, ss)
         pos = mbs.GetSensorStoredData(sensor)
         r = bearings["A"].results()
         late = pos[:, 0] >= 0.04
@@ -147,18 +141,12 @@ def solvers_6208():
         for mode, sub in (("bodies", 1), ("fast", 1), ("fast", 3)):
             label = f"{solver}, {mode}" + (f" {sub}" if mode == "fast" else "")
             eng = ExudynEngine("6208", sc, mode=mode, sub_steps=sub)
-            ss = eng.element.SimulationSettings(sc.t_end, solverType=solver)
-            printing = exu.config.printToConsole
-            exu.config.printToConsole = False
             try:
-                eng.mbs.SolveDynamic(ss, solverType=ss.timeIntegration.solverType)
+                solve_dynamic(eng.mbs, eng.element.SimulationSettings(sc.t_end, solverType=solver))
                 s = eng.element.results().summary()
                 rows[label] = {k: abs(s[k] / ref[k] - 1) for k in ("q_max_inner", "cage_speed")}
             except Exception as exc:  # a blow-up is a result here
-                lines = [ln for ln in str(exc).splitlines() if "stepSize" in ln] or ["failed"]
-                rows[label] = {"error": lines[0].replace("RuntimeError: ", "").split(";")[0].strip()}
-            finally:
-                exu.config.printToConsole = printing
+                rows[label] = {"error": _first_error_line(exc)}
             print(f"6208 scene, {label}: {rows[label]}", flush=True)
     return rows
 

@@ -36,7 +36,7 @@ from exudyn_bearing import plotting
 from exudyn_bearing.cli import to_jsonable
 from exudyn_bearing.physics import kinematics
 from exudyn_bearing.physics.load_distribution import static_equilibrium, stribeck_load
-from exudyn_bearing.plotting import _pyplot, save_csv, save_figure
+from exudyn_bearing.plotting import _pyplot, label_azimuth_axes, save_csv, save_figure
 from exudyn_bearing.sweep import run_sweep
 
 DT = 5e-6
@@ -91,12 +91,7 @@ def item1(out, workers):
                 ax[1].plot(np.degrees(psi), d * 1e6, marker, color=f"C{ci}", mfc="none")
                 cols.update({f"psi_{engine}_{ci}": psi, f"q_{engine}_{ci}": q, f"q_analytic_{engine}_{ci}": st.q,
                              f"delta_{engine}_{ci}": d, f"delta_analytic_{engine}_{ci}": st.overlap})
-        ax[0].set_ylabel("ball load Q [N]")
-        ax[1].set_ylabel("total overlap delta [um]")
-        for a_ in ax:
-            a_.set_xlabel("azimuth psi [deg]")
-            a_.grid(alpha=0.3)
-        ax[0].legend(fontsize=6)
+        label_azimuth_axes(ax, ("ball load Q [N]", "total overlap delta [um]"), 6, ax[:1])
         fig.suptitle(f"6208 quasi-static (omega = 1 rad/s): {gname} cases; lines analytic, o reference, x Exudyn")
         save_figure(fig, out / f"item1_quasi_static_{gname}.png", cols)
     return metrics
@@ -329,12 +324,7 @@ def item6(out, workers):
                                         contact_angle_deg=math.degrees(alpha), wall_s=rec["wall_case_s"], dt=2e-6,
                                         engine="reference")
         cols.update({f"psi_{i}": psi, f"q_{i}": q, f"q_law_{i}": law, f"delta_{i}": d})
-    ax[0].set_ylabel("ball load Q [N]")
-    ax[1].set_ylabel("total overlap [um]")
-    for a_ in ax:
-        a_.set_xlabel("azimuth psi [deg]")
-        a_.grid(alpha=0.3)
-    ax[0].legend(fontsize=6)
+    label_azimuth_axes(ax, ("ball load Q [N]", "total overlap [um]"), 6, ax[:1])
     fig.suptitle("7208, Fr = Fa = 3000 N, 500 rad/s, torus cage, three conformity sums")
     save_figure(fig, out / "item6_7208.png", cols)
     return metrics

@@ -154,7 +154,7 @@ def section_element():
                   f"{k} {v['orbit_radius_um']:.1f} um / {v['q_max_outer_N']:.0f} N" for k, v in whirl.items()) + ".",
               "- Explicit solvers (same script, 6208 test scene, 10 ms at 2 us, errors of q_max_inner / cage speed "
               "against the reference core with the same friction model): " + "; ".join(
-                  f"{k}: " + (v["error"] if "error" in v else
+                  f"{k}: " + (v["error"].split(";")[0] if "error" in v else
                               f"{pct(v['q_max_inner'], 4)} / {pct(v['cage_speed'], 4)}")
                   for k, v in c["solvers_6208"].items())
               + ". VelocityVerlet (history friction) and RK44 (regularized friction) are the supported explicit "

@@ -27,7 +27,7 @@ import numpy as np
 
 import exudyn as exu
 import exudyn_bearing as eb
-from exudyn_bearing.element.engine import ExudynEngine
+from exudyn_bearing.element.engine import ExudynEngine, solve_dynamic
 
 K_CONTACT, N_EXP, D_CONTACT, MU, V_REG = 3.35e10, 1.5, 200.0, 0.1, 0.1
 
@@ -96,13 +96,8 @@ def builtin(t_end, h=1e-5, n_samples=200, ring_polar_inertia=1e3):
     mbs.Assemble()
     ss = gen_alpha_settings(t_end, h)
     ss.solution.sensors.writePeriod = period
-    printing = exu.config.printToConsole
-    exu.config.printToConsole = False
     t0 = time.perf_counter()
-    try:
-        mbs.SolveDynamic(ss, solverType=exu.DynamicSolverType.GeneralizedAlpha)
-    finally:
-        exu.config.printToConsole = printing
+    solve_dynamic(mbs, ss, exu.DynamicSolverType.GeneralizedAlpha)
     wall = time.perf_counter() - t0
     out = {}
     for race, ss_ in sens.items():

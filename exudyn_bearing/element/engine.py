@@ -14,10 +14,25 @@ from ..reference.engine import ReferenceEngine, ring_mass_estimate
 from ..scenario import Scenario
 from .builder import CreateBallBearing
 
-__all__ = ["ExudynEngine", "SOLVERS"]
+__all__ = ["ExudynEngine", "SOLVERS", "solve_dynamic"]
 
 #: Scenario integrator -> Exudyn explicit solver.
 SOLVERS = {"verlet": "VelocityVerlet", "rk4": "RK44"}
+
+
+def solve_dynamic(mbs, settings, solverType=None, quiet=True):
+    """``mbs.SolveDynamic`` with ``settings`` (solver: ``solverType``, default
+    the one in the settings); ``quiet`` keeps Exudyn's solver notes off stdout
+    (which must stay clean for --json) and restores the setting afterwards."""
+    import exudyn as exu
+
+    printing = exu.config.printToConsole
+    if quiet:
+        exu.config.printToConsole = False
+    try:
+        return mbs.SolveDynamic(settings, solverType=solverType or settings.timeIntegration.solverType)
+    finally:
+        exu.config.printToConsole = printing
 
 
 class ExudynEngine:
@@ -65,14 +80,7 @@ class ExudynEngine:
         if progress:
             settings.timeIntegration.verboseMode = 1
         wall0 = time.perf_counter()
-        quiet = not progress
-        printing = self.exu.config.printToConsole
-        if quiet:  # Exudyn prints solver notes to stdout, which must stay clean for --json
-            self.exu.config.printToConsole = False
-        try:
-            self.mbs.SolveDynamic(settings, solverType=settings.timeIntegration.solverType)
-        finally:
-            self.exu.config.printToConsole = printing
+        solve_dynamic(self.mbs, settings, quiet=not progress)
         res = self.element.results(wall_s=time.perf_counter() - wall0,
                                    steps=settings.timeIntegration.numberOfSteps)
         res.scenario = self.scenario  # the run's protocol and solver, not the element's model options only

@@ -191,11 +191,13 @@ def ring_generalized_forces(q, ref, ring_kind, ring_data, rings, fr, out):
             t0 = fr[r, 3] + o1 * fr[r, 2] - o2 * fr[r, 1]
             t1 = fr[r, 4] + o2 * fr[r, 0] - o0 * fr[r, 2]
             t2 = fr[r, 5] + o0 * fr[r, 1] - o1 * fr[r, 0]
-            # G^T torque on Tait-Bryan angles, A^T torque (local torque) on a Lie-group node
+            # G^T torque on Tait-Bryan angles, A^T torque (local torque) on a Lie-group
+            # node, A being the ring's rotation matrix already in ``rings``
             if ring_kind[r] == RING_RXYZ:
                 g = _g_xyz(ref[off + 3] + q[off + 3], ref[off + 4] + q[off + 4])
             else:
-                g = _rot_vec(ref[off + 3] + q[off + 3], ref[off + 4] + q[off + 4], ref[off + 5] + q[off + 5])
+                g = (rings[r, 6], rings[r, 7], rings[r, 8], rings[r, 9], rings[r, 10], rings[r, 11],
+                     rings[r, 12], rings[r, 13], rings[r, 14])
             out[off + 3] += g[0] * t0 + g[3] * t1 + g[6] * t2
             out[off + 4] += g[1] * t0 + g[4] * t1 + g[7] * t2
             out[off + 5] += g[2] * t0 + g[5] * t1 + g[8] * t2

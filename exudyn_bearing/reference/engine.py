@@ -97,6 +97,14 @@ class StableStep:
     limited_by: str
 
 
+def _static_ball_loads(b: BallBearing, scenario: Scenario) -> np.ndarray:
+    """Quasi-static ball loads [N] under the scenario's F_r, F_a (zeros for an
+    unloaded bearing with clearance, which has no equilibrium to solve)."""
+    if scenario.Fr > 0 or scenario.Fa > 0 or b.diametral_clearance < 0:
+        return static_equilibrium(b, scenario.Fr, scenario.Fa, hertz_method=scenario.hertz).q
+    return np.zeros(b.n_balls)
+
+
 def stable_step(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant | None = None,
                 cage_load: float | None = None) -> StableStep:
     """Largest stable time step of the explicit integrator for a scene [s].
@@ -126,9 +134,7 @@ def stable_step(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant |
     mb = b.ball_mass
     wc = float(kinematics.cage_speed(scenario.omega, 0.0, b.ball_radius, b.pitch_radius, b.free_contact_angle))
     q_cf = float(kinematics.centrifugal_force(mb, b.pitch_radius, wc))
-    q0 = static_equilibrium(b, scenario.Fr, scenario.Fa, hertz_method=scenario.hertz).q_max if (
-        scenario.Fr > 0 or scenario.Fa > 0 or b.diametral_clearance < 0) else 0.0
-    q = max(q0 + q_cf, 10.0)
+    q = max(float(_static_ball_loads(b, scenario).max()) + q_cf, 10.0)
     ki, ko, _kn = race_stiffness(b, b.free_contact_angle, scenario.hertz)
     kt_i = float(hertz.tangent_stiffness(ki, q))
     kt_o = float(hertz.tangent_stiffness(ko, q))
@@ -191,10 +197,7 @@ def ring_contact_stiffness(bearing: BallBearing, scenario: Scenario, race: str =
     if race not in ("inner", "outer"):
         raise InputError(f"race: must be 'inner' or 'outer', got {race!r}")
     b = bearing if scenario.Pd is None else bearing.with_clearance(scenario.Pd)
-    if scenario.Fr > 0 or scenario.Fa > 0 or b.diametral_clearance < 0:
-        q = static_equilibrium(b, scenario.Fr, scenario.Fa, hertz_method=scenario.hertz).q
-    else:
-        q = np.zeros(b.n_balls)
+    q = _static_ball_loads(b, scenario)
     if q.max() < 10.0:
         q = np.full(b.n_balls, 10.0)
     ki, ko, _kn = race_stiffness(b, b.free_contact_angle, scenario.hertz)
