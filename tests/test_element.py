@@ -190,6 +190,34 @@ def test_fast_mode_matches_the_reference_engine(sub, steps):
     assert fast["steps"] == steps  # Exudyn steps of 15 / 20 us
 
 
+def test_exudyn_velocity_verlet_passes_the_half_step_velocity():
+    # the fast mode extrapolates the ring beyond t with the velocity Exudyn passes to the
+    # force user function; for VelocityVerlet that is v(n-1/2) = (x(n) - x(n-1)) / h,
+    # not the end-of-step velocity: a spring x'' = -100 x from x = 1 at rest
+    from exudyn.itemInterface import NodeGenericODE2, ObjectGenericODE2
+
+    SC = exu.SystemContainer()
+    mbs = SC.AddSystem()
+    node = mbs.AddNode(NodeGenericODE2(referenceCoordinates=[0.0, 0.0], initialCoordinates=[1.0, 0.0],
+                                       initialCoordinates_t=[0.0, 0.0], numberOfODE2Coordinates=2))
+    seen = []
+
+    def force(mbs_, t, i, q, q_t):
+        seen.append((t, q[0], q_t[0]))
+        return np.array([-100.0 * q[0], 0.0])
+
+    mbs.AddObject(ObjectGenericODE2(nodeNumbers=[node], massMatrix=np.eye(2), forceUserFunction=force))
+    mbs.Assemble()
+    ss = exu.SimulationSettings()
+    h = 0.01
+    ss.timeIntegration.numberOfSteps, ss.timeIntegration.endTime = 3, 3 * h
+    ss.timeIntegration.verboseMode = 0
+    ss.timeIntegration.explicit.computeEndOfStepAccelerations = False
+    solve_dynamic(mbs, ss, exu.DynamicSolverType.VelocityVerlet)
+    (_, x0, _), (_, x1, v1), (_, x2, v2) = seen[-3:]
+    assert v1 == pytest.approx((x1 - x0) / h, rel=1e-12) and v2 == pytest.approx((x2 - x1) / h, rel=1e-12)
+
+
 def test_fast_mode_ring_and_balls_exchange_equal_impulses():
     # rattling balls between a held inner ring and the fixed outer ring, 4 sub-steps
     # per Exudyn step: the impulse the rings receive from Exudyn's velocity-Verlet

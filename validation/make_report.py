@@ -30,6 +30,7 @@ SCRIPTS = [
     ("bench_sweep.py", []),
     ("fast_mode_checks.py", []),
     ("cage_step_checks.py", []),
+    ("bench_overhead.py", []),
 ]
 
 
@@ -106,6 +107,7 @@ def section_element():
         r = sub[f"fast {k}"]
         return (f"{k}: {r['error'].split(';')[0]}" if "error" in r else
                 f"{k}: q_max_inner {r['q_max_inner']:.1f} N ({pct(abs(r['q_max_inner'] / ref_q - 1), 2)})")
+    ov = load("bench_overhead.json")
     rotor = c["rotor_sub_steps"]
     whirl = c["rotor_scenario_whirl"]
 
@@ -159,6 +161,11 @@ def section_element():
                   for k, v in c["solvers_6208"].items())
               + ". VelocityVerlet (history friction) and RK44 (regularized friction) are the supported explicit "
               "solvers in both modes; ExplicitEuler is not symplectic and unusable for stiff contact.",
+              "- Where an Exudyn step goes (`python validation/bench_overhead.py`, medians, us per Exudyn step): "
+              + "; ".join(f"{k} {v * 1e6:.2f}" for k, v in ov.items() if k.endswith(("alone", "element")))
+              + ". Converting Exudyn's coordinate lists to arrays: "
+              f"{ov['list to array, body-mode coordinates'] * 1e6:.2f} us for the body mode's {ov['coordinates']} coordinates (twice per evaluation); one sample of the "
+              f"element's state (compiled): {ov['one sample'] * 1e6:.2f} us.",
               "- GeneralizedAlpha (h = 10 us, regularized friction) works with the element (numerical Jacobian of "
               "the whole bearing object, modified Newton): "
               f"{rows.get('element body mode, GeneralizedAlpha 10 us', {}).get('wall_per_sim_s', float('nan')):.0f} "
@@ -388,7 +395,8 @@ def main(argv=None):
     if walls:
         head += ["Wall time of each script in this regeneration: " +
                  ", ".join(f"{k} {v:.0f} s" for k, v in walls.items()) + ".", ""]
-    body = (section_reference() + section_cage_step() + section_element() + section_cross() + section_peer() + section_figures()
+    body = (section_reference() + section_cage_step() + section_element() + section_cross() + section_peer()
+            + section_figures()
             + section_work_precision() + section_sweep())
     (HERE / "REPORT.md").write_text("\n".join(head + body))
     print(f"written {HERE / 'REPORT.md'}")
