@@ -7,7 +7,7 @@ Sub-commands (``--json`` for scripts, tables otherwise):
   [--plot FILE.png]``: quasi-static load distribution and lubrication map.
 * ``simulate --bearing B --Fr N --omega W --engine reference --t-end T
   [--out DIR] [--json]``: dynamic simulation; summary keys of
-  :meth:`exudyn_bearing.results.Results.summary`.
+  :meth:`exudyn_bearing.outputs.results.Results.summary`.
 
 BEARING is a catalogue name (6208, 7208, 6004, ACBB-120) or a JSON file with
 the geometry (format of ``exudyn_bearing/data/catalog.json``). Bad input
@@ -21,29 +21,13 @@ import math
 import sys
 from pathlib import Path
 
-import numpy as np
 
 from .data import InputError, catalog, load_bearing
+from .model.stability import SimulationError
+from .outputs.jsonio import to_jsonable
 from .physics.hertz import METHODS
-from .reference.engine import SimulationError
 
 __all__ = ["main", "to_jsonable"]
-
-
-def to_jsonable(obj):
-    """numpy arrays and scalars to lists and floats; NaN and inf to None."""
-    if isinstance(obj, dict):
-        return {str(k): to_jsonable(v) for k, v in obj.items()}
-    if isinstance(obj, (list, tuple)):
-        return [to_jsonable(v) for v in obj]
-    if isinstance(obj, np.ndarray):
-        return to_jsonable(obj.tolist())
-    if isinstance(obj, (np.integer,)):
-        return int(obj)
-    if isinstance(obj, (float, np.floating)):
-        v = float(obj)
-        return v if math.isfinite(v) else None
-    return obj
 
 
 def _finite_float(text):
@@ -116,7 +100,7 @@ def _parser() -> argparse.ArgumentParser:
 
 
 def _cmd_simulate(args):
-    from .scenario import Scenario
+    from .model.scenario import Scenario
     from .simulate import simulate
 
     kw = dict(Fr=args.Fr, Fa=args.Fa, omega=args.omega, t_end=args.t_end, Pd=args.Pd, dt=args.dt,
@@ -159,7 +143,7 @@ _INFO_UNITS = dict({k: "m" for k in _LENGTHS}, K_inner="N/m^1.5", K_outer="N/m^1
 
 
 def _cmd_info(args):
-    from .analysis import bearing_info
+    from .solvers.analytic import bearing_info
 
     b = load_bearing(args.bearing)
     info = bearing_info(b, args.omega, args.hertz)
@@ -173,7 +157,7 @@ def _cmd_info(args):
 
 
 def _cmd_static(args):
-    from .analysis import static_analysis
+    from .solvers.analytic import static_analysis
 
     b = load_bearing(args.bearing)
     if args.Pd is not None:
@@ -181,7 +165,7 @@ def _cmd_static(args):
     res = static_analysis(b, args.Fr, args.Fa, omega=args.omega, film=args.film,
                           hertz_method=args.hertz, phase=args.phase)
     if args.plot:
-        from .plotting import plot_static
+        from .outputs.plotting import plot_static
 
         png, csv = plot_static(res, args.plot)
         res["plot"] = str(png)

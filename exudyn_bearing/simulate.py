@@ -1,17 +1,22 @@
-"""One call to run a scenario on a bearing with a chosen engine (as PyBaMM's Simulation)."""
+"""The user-facing entry points that combine data, model, solver and outputs
+(as PyBaMM's Simulation): :func:`simulate` runs a scenario on a bearing with a
+chosen engine and returns :class:`~exudyn_bearing.outputs.results.Results`;
+:func:`CreateBallBearing` adds the bearing element to an Exudyn model."""
 from __future__ import annotations
 
-from .data import InputError, Lubricant
-from .scenario import Scenario
+from .data import BallBearing, InputError, Lubricant
+from .model.scenario import Scenario
+from .outputs.results import Results
+from .solvers.element import BallBearingElement as _ElementBase
 
-__all__ = ["simulate", "ENGINES"]
+__all__ = ["simulate", "ENGINES", "CreateBallBearing", "BallBearingElement"]
 
 #: Engines that :func:`simulate` knows.
 ENGINES = ("reference", "exudyn")
 
 
 def simulate(bearing, scenario: Scenario | None = None, engine: str = "reference",
-             lubricant: Lubricant | None = None, progress=None):
+             lubricant: Lubricant | None = None, progress=None) -> Results:
     """Simulate ``scenario`` (default: ``Scenario()``) on ``bearing``.
 
     Parameters
@@ -21,7 +26,7 @@ def simulate(bearing, scenario: Scenario | None = None, engine: str = "reference
     scenario : Scenario
     engine : {"reference", "exudyn"}
         The numba DEM reference core, or the same scene built in Exudyn with
-        the bearing element (:mod:`exudyn_bearing.element`).
+        the bearing element (:mod:`exudyn_bearing.solvers.element`).
     lubricant : Lubricant, optional
     progress : bool or None
         Progress on stderr (None: for long runs).
@@ -40,11 +45,45 @@ def simulate(bearing, scenario: Scenario | None = None, engine: str = "reference
     """
     scenario = Scenario() if scenario is None else scenario
     if engine == "reference":
-        from .reference import ReferenceEngine
+        from .solvers.reference import ReferenceEngine
 
-        return ReferenceEngine(bearing, scenario, lubricant).run(progress=progress)
+        return Results(ReferenceEngine(bearing, scenario, lubricant).run(progress=progress))
     if engine == "exudyn":
-        from .element.engine import ExudynEngine
+        from .solvers.element.engine import ExudynEngine
 
-        return ExudynEngine(bearing, scenario, lubricant).run(progress=progress)
+        return Results(ExudynEngine(bearing, scenario, lubricant).run(progress=progress))
     raise InputError(f"engine: unknown engine {engine!r} (valid: {', '.join(ENGINES)})")
+
+
+class BallBearingElement(_ElementBase):
+    """The Exudyn bearing element of :mod:`exudyn_bearing.solvers.element` with
+    ``results()``: the run's :class:`~exudyn_bearing.outputs.results.Results`."""
+
+    def results(self, wall_s=None, steps=None) -> Results:
+        """The sampled series of the run (``record()`` wrapped in Results)."""
+        return Results(self.record(wall_s=wall_s, steps=steps))
+
+
+def CreateBallBearing(mbs, bearing: BallBearing | str, markerInnerRing, markerOuterRing, **options):
+    """Add a lubricated DEM ball bearing between two ring markers of ``mbs``.
+
+    Parameters
+    ----------
+    mbs : exudyn.MainSystem
+    bearing : BallBearing or str
+        Geometry (catalogue name or JSON file).
+    markerInnerRing, markerOuterRing : int
+        Ring markers (see :mod:`exudyn_bearing.solvers.element.element` for the
+        supported kinds).
+    **options
+        Keyword options of :class:`~exudyn_bearing.solvers.element.BallBearingElement`
+        (``lubricant``, ``cage``, ``lubrication``, ``friction``, ``tangential``,
+        ``hertzModel``, ``film``, ``stepSize``, ``innerRingSpeed``,
+        ``initialOmega``, ``initialLoad``, ``sampleInterval``, ``show``, ...).
+
+    Returns
+    -------
+    BallBearingElement
+        Holds ``items`` and ``sensors``; ``results()`` after the solve.
+    """
+    return BallBearingElement(mbs, bearing, markerInnerRing, markerOuterRing, **options)

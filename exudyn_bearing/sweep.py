@@ -56,7 +56,7 @@ def run_case(name: str, spec: dict, out_dir: str) -> str:
     import io
 
     import exudyn_bearing as eb
-    from exudyn_bearing.cli import to_jsonable
+    from exudyn_bearing.outputs.jsonio import to_jsonable
 
     out = Path(out_dir)
     lub = eb.Lubricant(**spec["lubricant"]) if spec.get("lubricant") else None

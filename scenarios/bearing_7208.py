@@ -26,7 +26,7 @@ import numpy as np
 
 import exudyn_bearing as eb
 from exudyn_bearing.physics.load_distribution import static_equilibrium
-from exudyn_bearing.plotting import _pyplot, label_azimuth_axes, save_figure
+from exudyn_bearing.outputs.plotting import _pyplot, label_azimuth_axes, save_figure
 
 
 def main(argv=None):

@@ -15,7 +15,7 @@ import argparse
 from pathlib import Path
 
 import exudyn_bearing as eb
-from exudyn_bearing import plotting
+from exudyn_bearing.outputs import plotting
 
 
 def main(argv=None):

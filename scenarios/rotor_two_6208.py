@@ -38,7 +38,7 @@ from exudyn.itemInterface import (LoadForceVector, LoadMassProportional, LoadTor
                                   SensorNode)
 
 import exudyn_bearing as eb
-from exudyn_bearing.plotting import _pyplot, save_figure
+from exudyn_bearing.outputs.plotting import _pyplot, save_figure
 
 
 def build(omega_target=1000.0, torque_max=5.0, unbalance=1e-4, dt=5e-6, mode="fast", sub_steps=1):

@@ -93,7 +93,7 @@ def test_simulate_reference_json_and_files(tmp_path, capsys):
 
 
 def test_simulate_unstable_step_is_a_clean_error(capsys):
-    from exudyn_bearing.reference import StepSizeWarning
+    from exudyn_bearing.model.stability import StepSizeWarning
 
     with pytest.warns(StepSizeWarning):
         rc = main(["simulate", "--t-end", "0.005", "--dt", "5e-5"])

@@ -12,10 +12,10 @@ from exudyn.itemInterface import (LoadForceVector, MarkerBodyRigid, MarkerNodeCo
 
 import exudyn_bearing as eb  # noqa: E402
 from exudyn_bearing import InputError  # noqa: E402
-from exudyn_bearing.element import CreateBallBearing  # noqa: E402
-from exudyn_bearing.element.engine import solve_dynamic  # noqa: E402
-from exudyn_bearing.reference import ReferenceEngine  # noqa: E402
-from exudyn_bearing.reference.engine import ring_mass_estimate  # noqa: E402
+from exudyn_bearing import CreateBallBearing  # noqa: E402
+from exudyn_bearing.solvers.element.engine import solve_dynamic  # noqa: E402
+from exudyn_bearing.solvers.reference import ReferenceEngine  # noqa: E402
+from exudyn_bearing.model.initial_state import ring_mass_estimate  # noqa: E402
 
 SCENE = dict(Fr=3000.0, omega=500.0, t_end=0.02, dt=5e-6, sample_dt=1e-4)
 KEYS = ("q_max_inner", "q_max_outer", "cage_speed", "ball_spin", "lambda_outer_psi0")
@@ -180,10 +180,10 @@ def test_fast_mode_matches_the_reference_engine(sub, steps):
     # reactions cross; with 4 sub-steps (20 us Exudyn steps on the 81 g ring) the
     # ring reaction sampled at the step end instead of the sub-step mean put
     # q_max_inner 12 % high
-    from exudyn_bearing.element.engine import ExudynEngine
+    from exudyn_bearing.solvers.element.engine import ExudynEngine
 
     sc = eb.Scenario(Fr=3000.0, omega=500.0, t_end=0.02, dt=5e-6, tangential="implicit", sample_dt=1e-4)
-    fast = ExudynEngine("6208", sc, mode="fast", sub_steps=sub).run().summary()
+    fast = eb.Results(ExudynEngine("6208", sc, mode="fast", sub_steps=sub).run()).summary()
     ref = eb.simulate("6208", sc).summary()
     for k in KEYS:
         assert fast[k] == pytest.approx(ref[k], rel=0.01), k
@@ -224,7 +224,7 @@ def test_fast_mode_ring_and_balls_exchange_equal_impulses():
     # steps (H times the returned reactions) must equal minus the balls' momentum
     # change, up to the half kicks pending at both ends, (dt/2)(F_first - F_last).
     # Returning the reaction of the last sub-step instead misses it by ~1e-3 N s.
-    from exudyn_bearing.element.engine import ExudynEngine
+    from exudyn_bearing.solvers.element.engine import ExudynEngine
 
     dt, m = 5e-6, 4
     sc = eb.Scenario(Fr=3000.0, omega=500.0, t_end=0.001, dt=dt, sample_dt=1e-3)
@@ -259,8 +259,8 @@ def test_ring_stable_step_brackets_the_fast_mode_limit():
     # the 81 g ring of the test scene runs at 20 us Exudyn steps (4 sub-steps, test
     # above) and blows up at 30 us (6 sub-steps): the estimate must lie between,
     # and the 30 us run must be warned about before it starts
-    from exudyn_bearing.element.engine import ExudynEngine
-    from exudyn_bearing.reference.engine import StepSizeWarning, ring_stable_step
+    from exudyn_bearing.solvers.element.engine import ExudynEngine
+    from exudyn_bearing.model.stability import StepSizeWarning, ring_stable_step
 
     sc = eb.Scenario(Fr=3000.0, omega=500.0, t_end=0.005, dt=5e-6, tangential="implicit", sample_dt=1e-4)
     b = eb.catalog["6208"]
@@ -278,7 +278,7 @@ def test_ring_stable_step_of_a_rotor_adds_its_bearings():
     # bearings at z = -0.1 and 0.1 m: each ring centre's mobility is
     # lambda_max(B M^-1 B^T), here worked out by hand through the centre of mass,
     # and the stable Exudyn step is 2 / sqrt(sum of k_b lambda_b)
-    from exudyn_bearing.reference.engine import ring_contact_stiffness
+    from exudyn_bearing.model.stability import ring_contact_stiffness
 
     m, jc, c = 2.5, 1.3e-2, 0.005
     SC = exu.SystemContainer()
@@ -306,13 +306,13 @@ def test_ring_stable_step_of_a_rotor_adds_its_bearings():
 
 def test_fast_mode_time_must_advance():
     # the fast mode integrates the balls forward; an evaluation back in time is refused
-    from exudyn_bearing.element.engine import ExudynEngine
+    from exudyn_bearing.solvers.element.engine import ExudynEngine
 
     eng = ExudynEngine("6208", eb.Scenario(t_end=0.001, dt=5e-6), mode="fast")
     el = eng.element
     q = np.zeros(3)
     el._force_uf_fast(eng.mbs, 1e-4, 0, q, q)
-    from exudyn_bearing.reference.engine import StepSizeWarning
+    from exudyn_bearing.model.stability import StepSizeWarning
 
     with pytest.warns(StepSizeWarning, match="^subSteps"):  # a 100 us step for the 81 g ring, checked at run time
         el._force_uf_fast(eng.mbs, 2e-4, 0, q, q)

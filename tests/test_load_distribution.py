@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 from exudyn_bearing import InputError, catalog
-from exudyn_bearing.analysis import static_analysis
+from exudyn_bearing.solvers.analytic import static_analysis
 from exudyn_bearing.physics import load_distribution as ld
 
 

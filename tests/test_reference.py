@@ -12,7 +12,8 @@ import exudyn_bearing as eb
 from exudyn_bearing.physics import kinematics
 from exudyn_bearing.physics.load_distribution import static_equilibrium
 from exudyn_bearing import InputError
-from exudyn_bearing.reference import ReferenceEngine, SimulationError, StepSizeWarning
+from exudyn_bearing.model.stability import SimulationError, StepSizeWarning
+from exudyn_bearing.solvers.reference import ReferenceEngine
 
 FAST = dict(dt=4e-6, tangential="implicit")  # within the normal-contact limit (8.2 us; steady, cage loads ~1 N)
 
@@ -241,7 +242,7 @@ def test_bad_scenarios_rejected():
 
 
 def test_protocol_speed_matches_the_kernel_profile():
-    from exudyn_bearing.reference.kernels import omega_profile
+    from exudyn_bearing.model.motion import omega_profile
 
     sc = eb.Scenario(omega=500.0, t_ramp_up=0.01, t_steady=0.02, t_ramp_down=0.01)
     for t in np.linspace(-0.001, 0.05, 53):
@@ -253,7 +254,7 @@ def test_verlet_step_factor_is_where_the_amplification_matrix_turns_unstable(zet
     # velocity Verlet as the kernels do it (damping at the half-step velocity) on
     # x'' = -x - 2 zeta x': the spectral radius of one step's amplification matrix
     # must stay <= 1 just below the factor and exceed 1 just above it
-    from exudyn_bearing.reference.engine import explicit_step_factor
+    from exudyn_bearing.model.stability import explicit_step_factor
 
     def radius(h):
         m = np.zeros((3, 3))
@@ -269,7 +270,7 @@ def test_verlet_step_factor_is_where_the_amplification_matrix_turns_unstable(zet
 
 
 def test_rk4_step_factor_against_its_stability_polynomial():
-    from exudyn_bearing.reference.engine import explicit_step_factor
+    from exudyn_bearing.model.stability import explicit_step_factor
 
     def amp(z):
         return abs(1 + z + z * z / 2 + z ** 3 / 6 + z ** 4 / 24)

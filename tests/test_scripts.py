@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 import exudyn_bearing as eb
-from exudyn_bearing.results import Results
+from exudyn_bearing.outputs.results import Results
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -60,7 +60,7 @@ def test_readme_element_example_runs_without_step_warnings(capsys):
     code = text[start + len("```python\n"):text.index("```\n", start + 10)]
     assert "endTime=0.1" in code
     with warnings.catch_warnings():
-        warnings.simplefilter("error", eb.reference.StepSizeWarning)
+        warnings.simplefilter("error", eb.StepSizeWarning)
         scope = {}
         exec(compile(code.replace("endTime=0.1", "endTime=0.005"), "README.md", "exec"), scope)
     s = scope["bearing"].results().summary()

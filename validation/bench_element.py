@@ -37,10 +37,11 @@ import numpy as np
 
 import exudyn as exu
 import exudyn_bearing as eb
-from exudyn_bearing.element.engine import ExudynEngine, solve_dynamic
+from exudyn_bearing.solvers.element.engine import ExudynEngine, solve_dynamic
 from exudyn_bearing.physics.load_distribution import race_stiffness
-from exudyn_bearing.reference import ReferenceEngine
-from exudyn_bearing.reference.engine import ring_mass_estimate, ring_stable_step
+from exudyn_bearing.solvers.reference import ReferenceEngine
+from exudyn_bearing.model.initial_state import ring_mass_estimate
+from exudyn_bearing.model.stability import ring_stable_step
 
 SCENE = dict(Fr=3000.0, omega=500.0, sample_dt=1e-3)
 
@@ -83,7 +84,7 @@ def main(argv=None):
     T = args.t_end
     warnings.simplefilter("ignore")
     sc = eb.Scenario(t_end=T, dt=5e-6, **SCENE)
-    fine = ReferenceEngine("6208", sc.replace(dt=1.25e-6)).run().summary()
+    fine = eb.simulate("6208", sc.replace(dt=1.25e-6)).summary()
     # warm-up (compilation)
     ReferenceEngine("6208", sc.replace(t_end=1e-3)).run()
     ExudynEngine("6208", sc.replace(t_end=1e-3)).run()
@@ -93,10 +94,10 @@ def main(argv=None):
     fast_name = f"element fast mode, {n_fast} x 5 us sub-steps"
     rows = {}
     runs = {
-        "reference, dt 5 us": lambda: ReferenceEngine("6208", sc).run(),
-        "element body mode, VelocityVerlet 5 us": lambda: ExudynEngine("6208", sc).run(),
-        "element fast mode, 1 x 5 us sub-step": lambda: ExudynEngine("6208", sc, mode="fast", sub_steps=1).run(),
-        fast_name: lambda: ExudynEngine("6208", sc, mode="fast", sub_steps=n_fast).run(),
+        "reference, dt 5 us": lambda: eb.Results(ReferenceEngine("6208", sc).run()),
+        "element body mode, VelocityVerlet 5 us": lambda: eb.Results(ExudynEngine("6208", sc).run()),
+        "element fast mode, 1 x 5 us sub-step": lambda: eb.Results(ExudynEngine("6208", sc, mode="fast", sub_steps=1).run()),
+        fast_name: lambda: eb.Results(ExudynEngine("6208", sc, mode="fast", sub_steps=n_fast).run()),
     }
     print(f"6208, Fr = 3000 N, 500 rad/s, cage + lubrication + history, T = {T} s, median of {args.repeat}")
     print(f"{'engine':42s} {'wall/sim s':>10s} {'err q_in %':>10s} {'err cage %':>10s}")

@@ -20,7 +20,7 @@ from pathlib import Path
 import numpy as np
 
 import exudyn_bearing as eb
-from exudyn_bearing.element.engine import ExudynEngine, solve_dynamic
+from exudyn_bearing.solvers.element.engine import ExudynEngine, solve_dynamic
 
 HERE = Path(__file__).resolve().parent
 

@@ -37,7 +37,8 @@ from pathlib import Path
 import numpy as np
 
 import exudyn_bearing as eb
-from exudyn_bearing.reference import ReferenceEngine, SimulationError
+from exudyn_bearing.model.stability import SimulationError
+from exudyn_bearing.solvers.reference import ReferenceEngine
 
 SCENE = dict(Fr=3000.0, omega=500.0, cage=True, lubrication=True, friction="history", initial="analytic")
 
@@ -55,7 +56,7 @@ KEYS = ("q_max_inner", "q_max_outer", "cage_speed")
 
 def run(t_end, sample_dt, **kw):
     sc = eb.Scenario(t_end=t_end, sample_dt=sample_dt, **dict(SCENE, **kw))
-    return ReferenceEngine("6208", sc).run(progress=False)
+    return eb.Results(ReferenceEngine("6208", sc).run(progress=False))
 
 
 def largest_stable_step(tangential, lo=1e-6, hi=3e-5, t_end=0.01):
@@ -140,7 +141,7 @@ def main(argv=None):
                   second_start_s=start, memory_bytes={"T=0.05": m1, "T=0.2": m4},
                   machine=dict(cpu_count=os.cpu_count(), python=sys.version.split()[0]),
                   date=time.strftime("%Y-%m-%d %H:%M"))
-    from exudyn_bearing.cli import to_jsonable
+    from exudyn_bearing.outputs.jsonio import to_jsonable
 
     (out / "bench_reference.json").write_text(json.dumps(to_jsonable(report), indent=2))
     print(f"written {out / 'bench_reference.json'}")

@@ -23,7 +23,7 @@ from pathlib import Path
 import numpy as np
 
 import exudyn_bearing as eb
-from exudyn_bearing.reference.engine import StepSizeWarning, stable_step
+from exudyn_bearing.model.stability import StepSizeWarning, stable_step
 
 HERE = Path(__file__).resolve().parent
 

@@ -14,7 +14,7 @@ from pathlib import Path
 import numpy as np
 
 import exudyn_bearing as eb
-from exudyn_bearing.plotting import _pyplot, save_figure
+from exudyn_bearing.outputs.plotting import _pyplot, save_figure
 
 SCENES = {
     "500rad_s": dict(Fr=3000.0, omega=500.0),

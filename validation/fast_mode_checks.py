@@ -39,9 +39,10 @@ from exudyn.itemInterface import (LoadForceVector, LoadTorqueVector, MarkerBodyR
                                   ObjectRigidBody)
 
 import exudyn_bearing as eb
-from exudyn_bearing.element.engine import ExudynEngine, solve_dynamic
-from exudyn_bearing.reference import SimulationError
-from exudyn_bearing.reference.engine import ring_mass_estimate, ring_stable_step
+from exudyn_bearing.solvers.element.engine import ExudynEngine, solve_dynamic
+from exudyn_bearing.model.stability import SimulationError
+from exudyn_bearing.model.initial_state import ring_mass_estimate
+from exudyn_bearing.model.stability import ring_stable_step
 
 HERE = Path(__file__).resolve().parent
 
@@ -61,7 +62,7 @@ def substeps_6208():
     print(f"6208 scene: ring stable-step estimate {rows['ring_stable_step']:.3g} s")
     for sub in range(1, 7):
         try:
-            s = ExudynEngine("6208", sc, mode="fast", sub_steps=sub).run().summary()
+            s = eb.Results(ExudynEngine("6208", sc, mode="fast", sub_steps=sub).run()).summary()
             rows[f"fast {sub}"] = {k: s[k] for k in ("q_max_inner", "cage_speed")}
         except Exception as exc:  # a blow-up is a result here
             rows[f"fast {sub}"] = {"error": _first_error_line(exc)}
@@ -143,7 +144,7 @@ def solvers_6208():
             eng = ExudynEngine("6208", sc, mode=mode, sub_steps=sub)
             try:
                 solve_dynamic(eng.mbs, eng.element.SimulationSettings(sc.t_end, solverType=solver))
-                s = eng.element.results().summary()
+                s = eb.Results(eng.element.record()).summary()
                 rows[label] = {k: abs(s[k] / ref[k] - 1) for k in ("q_max_inner", "cage_speed")}
             except Exception as exc:  # a blow-up is a result here
                 rows[label] = {"error": _first_error_line(exc)}

@@ -32,11 +32,11 @@ from pathlib import Path
 import numpy as np
 
 import exudyn_bearing as eb
-from exudyn_bearing import plotting
-from exudyn_bearing.cli import to_jsonable
+from exudyn_bearing.outputs import plotting
+from exudyn_bearing.outputs.jsonio import to_jsonable
 from exudyn_bearing.physics import kinematics
 from exudyn_bearing.physics.load_distribution import static_equilibrium, stribeck_load
-from exudyn_bearing.plotting import _pyplot, label_azimuth_axes, save_csv, save_figure
+from exudyn_bearing.outputs.plotting import _pyplot, label_azimuth_axes, save_csv, save_figure
 from exudyn_bearing.sweep import run_sweep
 
 DT = 5e-6

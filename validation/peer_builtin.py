@@ -27,7 +27,7 @@ import numpy as np
 
 import exudyn as exu
 import exudyn_bearing as eb
-from exudyn_bearing.element.engine import ExudynEngine, solve_dynamic
+from exudyn_bearing.solvers.element.engine import ExudynEngine, solve_dynamic
 
 K_CONTACT, N_EXP, D_CONTACT, MU, V_REG = 3.35e10, 1.5, 200.0, 0.1, 0.1
 
@@ -117,7 +117,7 @@ def element(t_end):
     sc = eb.Scenario(Fr=3000.0, omega=500.0, t_end=t_end, dt=1e-6, sample_dt=t_end / 200, contact_law="power",
                      power_law=(K_CONTACT, N_EXP, D_CONTACT), friction="regularized", regularizing_speed=V_REG,
                      lubrication=False, mu_dry=MU)
-    return ExudynEngine(b, sc).run().summary()
+    return eb.Results(ExudynEngine(b, sc).run()).summary()
 
 
 def main(argv=None):

@@ -23,8 +23,8 @@ from pathlib import Path
 import numpy as np
 
 import exudyn_bearing as eb
-from exudyn_bearing.cli import to_jsonable
-from exudyn_bearing.plotting import _pyplot, save_figure
+from exudyn_bearing.outputs.jsonio import to_jsonable
+from exudyn_bearing.outputs.plotting import _pyplot, save_figure
 
 FAMILIES = {
     "reference, verlet, explicit spring": [dict(dt=d) for d in (1e-6, 2e-6, 4e-6, 6e-6)],

@@ -54,6 +54,7 @@ __all__ = [
     "METHODS",
     "method_code",
     "reduced_modulus",
+    "material_reduced_modulus",
     "complete_elliptic_integrals",
     "ellipticity",
     "curvature_sum_radius",
@@ -97,6 +98,20 @@ def reduced_modulus(e1, nu1, e2=None, nu2=None):
     e2 = e1 if e2 is None else e2
     nu2 = nu1 if nu2 is None else nu2
     return 2.0 / ((1.0 - np.square(nu1)) / e1 + (1.0 - np.square(nu2)) / e2)
+
+
+def material_reduced_modulus(material) -> float:
+    """E' [Pa] of a material against itself, E / (1 - nu^2)
+    (:func:`reduced_modulus` of ``material.youngs_modulus`` and
+    ``material.poisson_ratio``; ball and rings of one material).
+
+    Examples
+    --------
+    >>> from exudyn_bearing import catalog
+    >>> round(material_reduced_modulus(catalog["6208"].material) / 1e9, 2)
+    230.77
+    """
+    return float(reduced_modulus(material.youngs_modulus, material.poisson_ratio))
 
 
 @kernel

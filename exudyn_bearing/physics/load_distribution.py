@@ -127,12 +127,7 @@ def race_stiffness(bearing: BallBearing, contact_angle=None, method="exact"):
     alpha = bearing.free_contact_angle if contact_angle is None else contact_angle
     return tuple(float(x) for x in _race_stiffness(
         bearing.pitch_radius, bearing.ball_radius, bearing.inner_groove_radius,
-        bearing.outer_groove_radius, float(alpha), _e_prime(bearing), _hz.method_code(method)))
-
-
-def _e_prime(bearing):
-    m = bearing.material
-    return float(_hz.reduced_modulus(m.youngs_modulus, m.poisson_ratio))
+        bearing.outer_groove_radius, float(alpha), _hz.material_reduced_modulus(bearing.material), _hz.method_code(method)))
 
 
 @kernel
@@ -302,7 +297,7 @@ def static_equilibrium(bearing: BallBearing, radial_load: float, axial_load: flo
     psi = phase + 2.0 * math.pi * np.arange(z) / z
     rho_i, z_i = b.inner_groove_center
     rho_o, z_o = b.outer_groove_center
-    e_prime = _e_prime(b)
+    e_prime = _hz.material_reduced_modulus(b.material)
     q = np.zeros(z)
     delta = np.zeros(z)
     alpha = np.zeros(z)

@@ -22,8 +22,12 @@ from pathlib import Path
 
 import numpy as np
 
-from .physics import kinematics
-from .reference.kernels import DIAG_FIELDS, GLOBAL_FIELDS
+from ..data import Lubricant, load_bearing
+from ..model.layout import DIAG_FIELDS, GLOBAL_FIELDS
+from ..model.record import RunRecord
+from ..model.scenario import Scenario
+from ..physics import kinematics
+from .jsonio import to_jsonable
 
 __all__ = ["Results", "SUMMARY_KEYS"]
 
@@ -33,19 +37,20 @@ SUMMARY_KEYS = ("q_max_inner", "q_max_outer", "cage_speed", "ball_spin", "lambda
 
 
 class Results:
-    """Output of one run (reference or Exudyn engine)."""
+    """Output of one run (reference or Exudyn engine): the series of a
+    :class:`~exudyn_bearing.model.record.RunRecord`, their summary, files and plots."""
 
-    def __init__(self, bearing, scenario, lubricant, data: dict, steps: int, wall_s: float,
-                 engine: str, stable_dt: float | None = None, static=None):
-        self.bearing = bearing
-        self.scenario = scenario
-        self.lubricant = lubricant
-        self.data = data
-        self.steps = int(steps)
-        self.wall_s = float(wall_s)
-        self.engine = engine
-        self.stable_dt = stable_dt
-        self.static = static
+    def __init__(self, record: RunRecord):
+        self.record = record
+        self.bearing = record.bearing
+        self.scenario = record.scenario
+        self.lubricant = record.lubricant
+        self.data = record.data
+        self.steps = int(record.steps)
+        self.wall_s = float(record.wall_s)
+        self.engine = record.engine
+        self.stable_dt = record.stable_dt
+        self.static = record.static
 
     # -- accessors -------------------------------------------------------
     @property
@@ -171,8 +176,6 @@ class Results:
     # -- persistence ---------------------------------------------------
     def save(self, directory, stem: str = "run") -> tuple[Path, Path]:
         """Write ``stem.npz`` (all arrays) and ``stem.json`` (summary) into directory."""
-        from .cli import to_jsonable
-
         d = Path(directory)
         d.mkdir(parents=True, exist_ok=True)
         npz = d / f"{stem}.npz"
@@ -189,9 +192,6 @@ class Results:
     @classmethod
     def load(cls, npz) -> "Results":
         """A run saved by :meth:`save` (the NPZ, with its JSON beside it)."""
-        from .data import Lubricant, load_bearing
-        from .scenario import Scenario
-
         npz = Path(npz)
         meta = json.loads(npz.with_suffix(".json").read_text())
         with np.load(npz) as f:
@@ -200,8 +200,8 @@ class Results:
         scenario = Scenario(**{k: (math.inf if v is None and k == "t_steady" else v)
                                for k, v in meta["meta"]["scenario"].items()})
         lub = Lubricant(**meta["meta"]["lubricant"])
-        return cls(bearing, scenario, lub, data, steps=meta["steps"], wall_s=meta["wall_s"],
-                   engine=meta["engine"], stable_dt=meta.get("stable_dt"))
+        return cls(RunRecord(bearing, scenario, lub, data, steps=meta["steps"], wall_s=meta["wall_s"],
+                             engine=meta["engine"], stable_dt=meta.get("stable_dt")))
 
     def plot(self, png):
         """Overview figure (speeds, loads, Lambda) saved as PNG; returns the path."""

@@ -10,9 +10,9 @@ import dataclasses
 import math
 from dataclasses import dataclass
 
-from .data import InputError
-from .physics.ehl import film_model_code
-from .physics.hertz import method_code
+from ..data import InputError
+from ..physics.ehl import film_model_code
+from ..physics.hertz import method_code
 
 __all__ = ["Scenario", "FRICTION_MODELS", "INTEGRATORS"]
 

@@ -2,7 +2,7 @@
 
 It turns the coordinates of the bearing's ObjectGenericODE2 (balls, cage
 balls and the ring nodes) into ring poses, calls the shared contact kernel
-:func:`exudyn_bearing.reference.kernels.forces`, and returns the generalized
+:func:`exudyn_bearing.model.contact.forces`, and returns the generalized
 forces of all these coordinates.
 
 Coordinate layout of the object: ball j owns coordinates 6j..6j+5 (position
@@ -16,8 +16,10 @@ import math
 
 import numpy as np
 
-from .._jit import kernel
-from ..reference.kernels import NDIAG, NGLOBAL, P_CAGE, P_IB, P_MB, P_MZ, RING_N, forces, kick_drift
+from ..._jit import kernel
+from ...model.contact import forces
+from ...model.layout import NDIAG, NGLOBAL, P_CAGE, P_IB, P_MB, P_MZ, RING_N
+from ...model.motion import kick_drift
 
 #: Ring couplings: fixed in space (ground), node with position coordinates
 #: only (mass point: axes parallel to the world, prescribed spin), rigid-body

@@ -70,7 +70,7 @@ def plot_static(res: dict, png) -> tuple[Path, Path]:
     -------
     (png_path, csv_path)
     """
-    from .physics.load_distribution import stribeck_load
+    from ..physics.load_distribution import stribeck_load
 
     plt = _pyplot()
     png = Path(png)
@@ -135,7 +135,7 @@ def plot_run(run, png) -> Path:
     a.plot(t, spin, label="ball |omega| (mean)")
     a.plot(t, cage, label="cage speed")
     if s.omega > 0:
-        from .physics import kinematics
+        from ..physics import kinematics
 
         a.axhline(float(kinematics.ball_spin_absolute(s.omega, 0.0, b.ball_radius, b.pitch_radius,
                                                       b.free_contact_angle)),
@@ -188,7 +188,7 @@ PHASE_NAMES = ("start-up", "steady", "slow-down", "rest")
 def plot_speeds(run, png, ball=0) -> Path:
     """Shaft and ball angular speed against time with the kinematic ball-spin
     line (PHYSICS.md sec. 8, 952.38 rad/s at 500 rad/s), and the cage speed."""
-    from .physics import kinematics
+    from ..physics import kinematics
 
     plt = _pyplot()
     png = Path(png)
@@ -267,7 +267,7 @@ def plot_film_by_phase(run, png, race="outer") -> Path:
 
 def plot_quasi_static(run, png) -> Path:
     """Q(psi) and delta(psi) of the last sample against the discrete analytic solution."""
-    from .physics.load_distribution import static_equilibrium
+    from ..physics.load_distribution import static_equilibrium
 
     plt = _pyplot()
     png = Path(png)

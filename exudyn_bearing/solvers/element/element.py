@@ -64,17 +64,19 @@ import warnings
 
 import numpy as np
 
-from ..analysis import default_lubricant
-from ..data import BallBearing, InputError, Lubricant, load_bearing
-from ..physics import hertz
-from ..reference import kernels as K
-from ..reference.engine import (ReferenceEngine, StepSizeWarning, cage_load_check, ring_contact_stiffness,
-                                scene_parameters, stable_step, step_warning)
-from ..results import Results
-from ..scenario import Scenario
+from ...data import InputError, Lubricant, default_lubricant, load_bearing
+from ...model import layout as L
+from ...model.contact import forces
+from ...model.initial_state import initial_state
+from ...model.motion import ring_poses
+from ...model.parameters import scene_parameters
+from ...model.record import RunRecord
+from ...model.scenario import Scenario
+from ...model.stability import StepSizeWarning, cage_load_check, ring_contact_stiffness, stable_step, step_warning
+from ...physics import hertz
 from . import kernels as EK
 
-__all__ = ["CreateBallBearing", "BallBearingElement"]
+__all__ = ["BallBearingElement", "RING_REGISTRY"]
 
 
 def _marker_ring(mbs, marker, which):
@@ -254,8 +256,7 @@ class BallBearingElement:
             raise InputError("markerInnerRing: the ring axes (local z of both ring bodies) are not parallel "
                              f"(angle {math.degrees(math.acos(min(1.0, abs(float(axis_i @ axis_o))))):.3g} deg)")
         # initial ball state in the outer-ring frame, then in the world
-        ref_engine = ReferenceEngine(b, self.scenario, self.lubricant)
-        st = ref_engine.initial_state()
+        st = initial_state(b, self.scenario)
         self.initialRingDisplacement = np.asarray(st["ring"][:3], float)
         x_o, a_o, v_o, w_o = poses[1]
         rel = poses[0][0] - x_o
@@ -348,13 +349,13 @@ class BallBearingElement:
         if fast:  # the balls live here, not in Exudyn
             self._work[0], self._work[1], self._work[2] = xb, vb, wb
             self._work[3, :n_cage], self._work[4, :n_cage] = xc[:n_cage], vc[:n_cage]
-            self._rings0 = K.ring_poses()
-            self._rings_sub = K.ring_poses()
+            self._rings0 = ring_poses()
+            self._rings_sub = ring_poses()
             self._clock = [math.nan, 0.0, self.sampleInterval, False]
-        self._rings = K.ring_poses()
+        self._rings = ring_poses()
         self._fr = np.zeros((2, 6))
-        self._glob = np.zeros(K.NGLOBAL)
-        self._diag = np.zeros((z, 2, K.NDIAG))
+        self._glob = np.zeros(L.NGLOBAL)
+        self._diag = np.zeros((z, 2, L.NDIAG))
         self._cage_load = np.zeros((z, 2))
         self._out = np.zeros(n)
         # samples: times and flat rows filled by compiled code (kernels.sample_row)
@@ -365,7 +366,7 @@ class BallBearingElement:
         self._wall = 0.0
         self._speeds = [(r, f) for r, f in enumerate(self.speed) if f is not None]
         self._dt_sub = float(self.scenario.dt)
-        self._max_overlap = float(self.params[K.P_MAX_OVERLAP])
+        self._max_overlap = float(self.params[L.P_MAX_OVERLAP])
         self._status = 0.0
         if fast:
             self._force_uf_fast = self._make_fast_uf()
@@ -414,16 +415,16 @@ class BallBearingElement:
     # -- checks --------------------------------------------------------
     def _check_overlap(self, xb, poses, allowed):
         """Initial overlaps must not exceed what the analytic state (preload) gives."""
-        rings = K.ring_poses()
+        rings = ring_poses()
         for r in range(2):
             x, a, v, w = poses[r]
             rings[r, :3] = x
             rings[r, 6:15] = a.ravel()
         z = self.bearing.n_balls
-        diag = np.zeros((z, 2, K.NDIAG))
-        K.forces(self.params, self.table, xb, np.zeros((z, 3)), np.zeros((z, 3)), np.zeros((z, 3)),
+        diag = np.zeros((z, 2, L.NDIAG))
+        forces(self.params, self.table, xb, np.zeros((z, 3)), np.zeros((z, 3)), np.zeros((z, 3)),
                  np.zeros((z, 3)), rings, np.zeros((z, 2, 3)), np.zeros((z, 2, 3)), 0.0, np.zeros((z, 2, 4)),
-                 np.zeros((z, 3)), np.zeros((z, 3)), np.zeros((z, 3)), np.zeros((2, 6)), np.zeros(K.NGLOBAL),
+                 np.zeros((z, 3)), np.zeros((z, 3)), np.zeros((z, 3)), np.zeros((2, 6)), np.zeros(L.NGLOBAL),
                  diag, np.zeros((z, 2)), True)
         worst = float(np.max(diag[:, :, 1]))
         if worst > allowed:
@@ -501,7 +502,7 @@ class BallBearingElement:
             if t_int != t_int:
                 # first evaluation: forces at the initial state, nothing to integrate yet
                 EK.ring_poses_from(q, q_t, ref, kind, rdata, rings)
-                K.forces(params, table, work[0], work[1], work[2], work[3], work[4], rings, hist, hist, dt_sub, hz,
+                forces(params, table, work[0], work[1], work[2], work[3], work[4], rings, hist, hist, dt_sub, hz,
                          work[5], work[6], work[7], fr, glob, diag, cload, False)
                 rings0[:] = rings
                 clock[0] = clock[1] = t
@@ -541,7 +542,7 @@ class BallBearingElement:
             warnings.warn(msg, StepSizeWarning, stacklevel=stacklevel)
 
     def _check_worst(self, worst, t):
-        if not math.isfinite(worst) or worst > self.params[K.P_MAX_OVERLAP]:
+        if not math.isfinite(worst) or worst > self.params[L.P_MAX_OVERLAP]:
             ring = (f" and the ring bodies' {self.ringStableStep:.3g} s for the fast mode's Exudyn step (subSteps * "
                     "stepSize)" if self.mode == "fast" and math.isfinite(self.ringStableStep) else "")
             raise RuntimeError(
@@ -612,10 +613,13 @@ class BallBearingElement:
         ss.solution.sensors.writePeriod = self.sampleInterval
         return ss
 
-    def results(self, wall_s=None, steps=None) -> Results:
-        """Sampled series of the run (the same Results as the reference engine;
-        positions, velocities and ring displacement in the outer-ring frame,
-        ball angular velocity relative to the outer ring)."""
+    def record(self, wall_s=None, steps=None) -> RunRecord:
+        """The sampled series of the run as a :class:`~exudyn_bearing.model.record.RunRecord`
+        (the same layout as the reference engine's: positions, velocities and
+        ring displacement in the outer-ring frame, ball angular velocity
+        relative to the outer ring). ``exudyn_bearing.CreateBallBearing``'s
+        element also has ``results()``, the same wrapped in
+        :class:`~exudyn_bearing.outputs.results.Results`."""
         if not self._sample_t:
             raise RuntimeError("results: no samples yet; run mbs.SolveDynamic first")
         rows = np.array(self._sample_rows)
@@ -628,30 +632,6 @@ class BallBearingElement:
         msg = cage_load_check(self.bearing, self.scenario, self.lubricant,
                               float(data["cage_load"].max(initial=0.0)), self.scenario.dt)
         if msg:
-            warnings.warn(msg, StepSizeWarning, stacklevel=2)
-        return Results(self.bearing, self.scenario, self.lubricant, data, steps=steps,
-                       wall_s=self._wall if wall_s is None else wall_s, engine="exudyn", stable_dt=self.stable.dt)
-
-
-def CreateBallBearing(mbs, bearing: BallBearing | str, markerInnerRing, markerOuterRing, **options):
-    """Add a lubricated DEM ball bearing between two ring markers of ``mbs``.
-
-    Parameters
-    ----------
-    mbs : exudyn.MainSystem
-    bearing : BallBearing or str
-        Geometry (catalogue name or JSON file).
-    markerInnerRing, markerOuterRing : int
-        Ring markers (see the module docstring for the supported kinds).
-    **options
-        Keyword options of :class:`BallBearingElement` (``lubricant``, ``cage``,
-        ``lubrication``, ``friction``, ``tangential``, ``hertzModel``, ``film``,
-        ``stepSize``, ``innerRingSpeed``, ``initialOmega``, ``initialLoad``,
-        ``sampleInterval``, ``show``, ...).
-
-    Returns
-    -------
-    BallBearingElement
-        Holds ``items`` and ``sensors``; ``results()`` after the solve.
-    """
-    return BallBearingElement(mbs, bearing, markerInnerRing, markerOuterRing, **options)
+            warnings.warn(msg, StepSizeWarning, stacklevel=3)
+        return RunRecord(self.bearing, self.scenario, self.lubricant, data, steps=steps,
+                         wall_s=self._wall if wall_s is None else wall_s, engine="exudyn", stable_dt=self.stable.dt)

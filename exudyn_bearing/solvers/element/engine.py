@@ -2,17 +2,17 @@
 
 Outer ring on ground, inner ring a mass point (the translating ring mass of
 the scenario) carrying the applied loads and spun at the protocol speed
-omega(t): the same scene as :class:`exudyn_bearing.reference.ReferenceEngine`,
+omega(t): the same scene as :class:`exudyn_bearing.solvers.reference.ReferenceEngine`,
 so both engines can be compared on identical input.
 """
 from __future__ import annotations
 
 import time
 
-from ..data import Lubricant, load_bearing
-from ..reference.engine import ReferenceEngine, ring_mass_estimate
-from ..scenario import Scenario
-from .builder import CreateBallBearing
+from ...data import Lubricant, load_bearing
+from ...model.initial_state import initial_state, ring_mass_estimate
+from ...model.scenario import Scenario
+from .element import BallBearingElement
 
 __all__ = ["ExudynEngine", "SOLVERS", "solve_dynamic"]
 
@@ -36,7 +36,8 @@ def solve_dynamic(mbs, settings, solverType=None, quiet=True):
 
 
 class ExudynEngine:
-    """Run a :class:`~exudyn_bearing.scenario.Scenario` with the Exudyn element."""
+    """Run a :class:`~exudyn_bearing.model.scenario.Scenario` with the Exudyn element; ``run()`` returns the
+    :class:`~exudyn_bearing.model.record.RunRecord`."""
 
     name = "exudyn"
 
@@ -52,8 +53,7 @@ class ExudynEngine:
             b = b.with_clearance(scenario.Pd)
         self.bearing, self.scenario = b, scenario
         s = scenario
-        ref = ReferenceEngine(b, s, lubricant)
-        d0 = ref.initial_state()["ring"][:3]
+        d0 = initial_state(b, s)["ring"][:3]
         self.SC = exu.SystemContainer()
         mbs = self.mbs = self.SC.AddSystem()
         ground = mbs.AddObject(ObjectGround())
@@ -63,7 +63,7 @@ class ExudynEngine:
         mbs.AddObject(ObjectMassPoint(mass=mass, nodeNumber=node))
         m_inner = mbs.AddMarker(MarkerNodePosition(nodeNumber=node))
         mbs.AddLoad(LoadForceVector(markerNumber=m_inner, loadVector=[s.Fr, 0.0, s.Fa]))
-        self.element = CreateBallBearing(
+        self.element = BallBearingElement(
             mbs, b, m_inner, m_outer, lubricant=lubricant, cage=s.cage, lubrication=s.lubrication,
             friction=s.friction, tangential=s.tangential, hertzModel=s.hertz, film=s.film,
             guideClearance=s.guide_clearance, muDry=s.mu_dry, regularizingSpeed=s.regularizing_speed,
@@ -81,7 +81,7 @@ class ExudynEngine:
             settings.timeIntegration.verboseMode = 1
         wall0 = time.perf_counter()
         solve_dynamic(self.mbs, settings, quiet=not progress)
-        res = self.element.results(wall_s=time.perf_counter() - wall0,
-                                   steps=settings.timeIntegration.numberOfSteps)
-        res.scenario = self.scenario  # the run's protocol and solver, not the element's model options only
-        return res
+        rec = self.element.record(wall_s=time.perf_counter() - wall0,
+                                  steps=settings.timeIntegration.numberOfSteps)
+        rec.scenario = self.scenario  # the run's protocol and solver, not the element's model options only
+        return rec

@@ -10,24 +10,13 @@ import math
 
 import numpy as np
 
-from .data import BallBearing, InputError, Lubricant, lubricants
-from .physics import damping, ehl, friction, hertz, kinematics
-from .physics.geometry import raceway_radii
-from .physics.load_distribution import (StaticSolution, race_stiffness, static_equilibrium,
+from ..data import BallBearing, InputError, Lubricant, default_lubricant
+from ..physics import damping, ehl, friction, hertz, kinematics
+from ..physics.geometry import raceway_radii
+from ..physics.load_distribution import (StaticSolution, race_stiffness, static_equilibrium,
                                         stribeck_solution)
 
-__all__ = ["bearing_info", "lubrication_map", "static_analysis", "default_lubricant"]
-
-
-def default_lubricant() -> Lubricant:
-    """The DEM papers' lubricant (PHYSICS.md sec. 5)."""
-    return lubricants["guessasma2018"]
-
-
-def e_prime_of(bearing: BallBearing) -> float:
-    """E' [Pa] of the bearing's material against itself."""
-    m = bearing.material
-    return float(hertz.reduced_modulus(m.youngs_modulus, m.poisson_ratio))
+__all__ = ["bearing_info", "lubrication_map", "static_analysis"]
 
 
 def _check_speed(name, value):
@@ -84,7 +73,7 @@ def bearing_info(bearing: BallBearing, omega=None, hertz_method="exact") -> dict
         "free_contact_angle_deg": math.degrees(alpha),
         "cage_pocket_clearance": b.cage_pocket_clearance,
         "ball_mass": b.ball_mass,
-        "e_prime": e_prime_of(b),
+        "e_prime": hertz.material_reduced_modulus(b.material),
         "hertz_method": hertz_method,
         "R_x_inner": float(rxi), "R_y_inner": float(ryi),
         "R_x_outer": float(rxo), "R_y_outer": float(ryo),
@@ -132,7 +121,7 @@ def lubrication_map(solution: StaticSolution, omega_inner: float, omega_outer: f
     wi = _check_speed("omega", omega_inner)
     wo = _check_speed("omega_outer", omega_outer)
     film_code = ehl.film_model_code(film)
-    em = e_prime_of(b)
+    em = hertz.material_reduced_modulus(b.material)
     alpha = solution.contact_angle
     ca = np.cos(alpha)
     u_in, u_out = kinematics.rolling_speeds(wi, wo, b.ball_radius, b.pitch_radius, alpha)

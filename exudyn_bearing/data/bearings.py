@@ -1,0 +1,262 @@
+"""Ball-bearing geometry (data, not a model).
+
+Every quantity is SI (m, Pa, kg, s, rad). Definitions are frozen dataclasses,
+validated on construction: an impossible value raises :class:`InputError`
+whose message starts with the name of the offending parameter.
+
+Catalogue entries (``catalog["6208"]`` ...) are read from ``catalog.json``
+beside this file; each carries its ``source``. See PHYSICS.md sec. 2.
+
+Groove construction
+-------------------
+Each raceway is a torus whose tube is the groove; the ball sits inside the
+tube. In the (radial r, axial z) half-plane of one ball the two tube-centre
+points ("groove centres") lie on a line through the ball centre at the pitch
+radius, inclined at the free contact angle ``alpha_0`` to the radial plane,
+separated by ``A - P_d/2`` where ``A = R_ci + R_co - 2 R_b`` is the distance at
+which a ball touches both grooves and ``P_d = 2 (R_o - R_i - 2 R_b)`` the
+diametral clearance (measured along the contact line)::
+
+    n   = (cos alpha_0, sin alpha_0)
+    p_o = (r_p, 0) - (R_co - R_b - P_d/4) n        outer groove centre
+    p_i = (r_p, 0) + (R_ci - R_b - P_d/4) n        inner groove centre
+
+For ``alpha_0 = 0`` this gives the deep-groove values of PHYSICS.md sec. 2,
+``rho_i = R_i + R_ci`` and ``rho_o = R_o - R_co``. For ``alpha_0 > 0``
+(angular contact, PHYSICS.md's 7208 construction) ``R_i`` and ``R_o`` are
+the race radii of the equivalent radial construction. The inner groove
+centre lies at ``+z`` and the outer one at ``-z``, so the bearing carries an
+axial force on the inner ring along ``+z`` (inner ring displaced along ``+z``).
+"""
+from __future__ import annotations
+
+import dataclasses
+import math
+from dataclasses import dataclass, field
+
+from .errors import InputError, check_finite, check_positive
+from .materials import Material
+
+__all__ = ["BallBearing", "MAX_FREE_CONTACT_ANGLE", "MAX_PRELOAD_INTERFERENCE"]
+
+#: Largest free contact angle accepted [rad]. A ball whose free contact angle
+#: (rings shifted axially until the ball touches both grooves) exceeds it is
+#: taken to ride over the shoulder and leave the grooves. 60 deg is about the
+#: half-angle of a groove of conformity 0.52 whose shoulders are 0.25 D deep
+#: (acos(0.27/0.52) = 58.7 deg), a deep-groove design value.
+MAX_FREE_CONTACT_ANGLE = math.radians(60.0)
+
+#: Largest preload interference -P_d/2 accepted, as a fraction of the ball
+#: radius. Hertz theory needs overlaps small against the radii.
+MAX_PRELOAD_INTERFERENCE = 0.01
+
+
+@dataclass(frozen=True)
+class BallBearing:
+    """Geometry of a ball bearing [PHYSICS.md sec. 2].
+
+    Parameters
+    ----------
+    n_balls : int
+        Number of balls Z (>= 3).
+    ball_radius : float
+        R_b [m].
+    inner_race_radius, outer_race_radius : float
+        Race bottom radii R_i, R_o [m] (of the radial construction, see the
+        module docstring for angular-contact bearings).
+    inner_groove_radius, outer_groove_radius : float
+        Groove cross-section radii R_ci, R_co [m], larger than R_b.
+    cage_ball_radius : float or None
+        R_z [m] of the torus-cage balls between neighbouring balls; None for
+        a cageless bearing.
+    free_contact_angle : float
+        alpha_0 [rad] at which the groove centres are placed (0 for deep groove).
+    material : Material
+        Material of balls and rings.
+    """
+
+    n_balls: int
+    ball_radius: float
+    inner_race_radius: float
+    outer_race_radius: float
+    inner_groove_radius: float
+    outer_groove_radius: float
+    cage_ball_radius: float | None = None
+    free_contact_angle: float = 0.0
+    material: Material = field(default_factory=Material)
+    name: str = "custom"
+    source: str = ""
+    bore: float | None = None
+    outer_diameter: float | None = None
+
+    def __post_init__(self):
+        z = self.n_balls
+        if isinstance(z, bool) or not isinstance(z, (int,)) and not (isinstance(z, float) and float(z).is_integer()):
+            raise InputError(f"n_balls: must be an integer, got {z!r}")
+        if int(z) < 3:
+            raise InputError(f"n_balls: at least 3 balls are needed, got {z}")
+        object.__setattr__(self, "n_balls", int(z))
+        rb = check_positive("ball_radius", self.ball_radius)
+        ri = check_positive("inner_race_radius", self.inner_race_radius)
+        ro = check_positive("outer_race_radius", self.outer_race_radius)
+        rci = check_positive("inner_groove_radius", self.inner_groove_radius)
+        rco = check_positive("outer_groove_radius", self.outer_groove_radius)
+        a0 = check_finite("free_contact_angle", self.free_contact_angle)
+        if not 0.0 <= a0 < 0.5 * math.pi:
+            raise InputError(f"free_contact_angle: must lie in [0, pi/2) rad, got {a0}")
+        if not isinstance(self.material, Material):
+            raise InputError(f"material: expected a Material, got {type(self.material).__name__}")
+        if ro <= ri:
+            raise InputError(f"outer_race_radius: must exceed inner_race_radius ({ri}), got {ro}")
+        if rci <= rb:
+            raise InputError(
+                f"inner_groove_radius: the ball (R_b = {rb}) must be smaller than the groove, got {rci}")
+        if rco <= rb:
+            raise InputError(
+                f"outer_groove_radius: the ball (R_b = {rb}) must be smaller than the groove, got {rco}")
+        pd = self.diametral_clearance
+        if pd < 0.0 and -0.5 * pd > MAX_PRELOAD_INTERFERENCE * rb:
+            raise InputError(
+                f"outer_race_radius: preload interference -P_d/2 = {-0.5 * pd:.3e} m exceeds "
+                f"{MAX_PRELOAD_INTERFERENCE:g} R_b; the ball does not fit between the races")
+        if 0.5 * pd >= self.groove_distance:
+            raise InputError(
+                f"outer_race_radius: clearance P_d = {pd:.3e} m leaves the groove centres crossed "
+                f"(P_d/2 >= A = {self.groove_distance:.3e} m): balls can leave the grooves")
+        if self.free_contact_angle_max > MAX_FREE_CONTACT_ANGLE:
+            raise InputError(
+                f"outer_race_radius: clearance P_d = {pd:.3e} m gives a free contact angle of "
+                f"{math.degrees(self.free_contact_angle_max):.1f} deg > "
+                f"{math.degrees(MAX_FREE_CONTACT_ANGLE):.0f} deg: balls can leave the grooves")
+        if self.inner_groove_center[0] - rci <= 0.0:
+            raise InputError("inner_groove_radius: the inner groove reaches the bearing axis")
+        # neighbouring balls must not overlap on the pitch circle
+        if 2.0 * self.pitch_radius * math.sin(math.pi / self.n_balls) <= 2.0 * rb:
+            raise InputError(
+                f"n_balls: {self.n_balls} balls of radius {rb} do not fit on the pitch circle "
+                f"(radius {self.pitch_radius})")
+        if self.cage_ball_radius is not None:
+            rz = check_positive("cage_ball_radius", self.cage_ball_radius)
+            if self.cage_pocket_clearance <= 0.0:
+                raise InputError(
+                    f"cage_ball_radius: cage balls of radius {rz} overlap the rolling balls "
+                    f"(pocket clearance {self.cage_pocket_clearance:.3e} m)")
+            if rz >= 0.5 * (ro - ri):
+                raise InputError(
+                    f"cage_ball_radius: {rz} does not fit between the races (gap {ro - ri})")
+        for name in ("bore", "outer_diameter"):
+            if getattr(self, name) is not None:
+                check_positive(name, getattr(self, name))
+
+    # -- derived quantities -------------------------------------------------
+    @property
+    def pitch_radius(self) -> float:
+        """r_p = (R_i + R_o) / 2 [m]."""
+        return 0.5 * (self.inner_race_radius + self.outer_race_radius)
+
+    @property
+    def pitch_diameter(self) -> float:
+        """d_m = 2 r_p [m]."""
+        return 2.0 * self.pitch_radius
+
+    @property
+    def ball_diameter(self) -> float:
+        """D = 2 R_b [m]."""
+        return 2.0 * self.ball_radius
+
+    @property
+    def diametral_clearance(self) -> float:
+        """P_d = 2 (R_o - R_i - 2 R_b) [m]; negative is preload."""
+        return 2.0 * (self.outer_race_radius - self.inner_race_radius - 2.0 * self.ball_radius)
+
+    @property
+    def inner_conformity(self) -> float:
+        """f_i = R_ci / (2 R_b) [-]."""
+        return self.inner_groove_radius / (2.0 * self.ball_radius)
+
+    @property
+    def outer_conformity(self) -> float:
+        """f_o = R_co / (2 R_b) [-]."""
+        return self.outer_groove_radius / (2.0 * self.ball_radius)
+
+    @property
+    def conformity_sum(self) -> float:
+        """B = (R_ci + R_co) / (2 R_b) - 1 [-]."""
+        return (self.inner_groove_radius + self.outer_groove_radius) / (2.0 * self.ball_radius) - 1.0
+
+    @property
+    def groove_distance(self) -> float:
+        """A = R_ci + R_co - 2 R_b [m], groove-centre distance at touching."""
+        return self.inner_groove_radius + self.outer_groove_radius - 2.0 * self.ball_radius
+
+    @property
+    def _line(self):
+        return math.cos(self.free_contact_angle), math.sin(self.free_contact_angle)
+
+    @property
+    def inner_groove_center(self) -> tuple[float, float]:
+        """(rho_i, z_i) [m]: radius and axial position of the inner tube-centre circle."""
+        c, s = self._line
+        d = self.inner_groove_radius - self.ball_radius - 0.25 * self.diametral_clearance
+        return self.pitch_radius + d * c, d * s
+
+    @property
+    def outer_groove_center(self) -> tuple[float, float]:
+        """(rho_o, z_o) [m]: radius and axial position of the outer tube-centre circle."""
+        c, s = self._line
+        d = self.outer_groove_radius - self.ball_radius - 0.25 * self.diametral_clearance
+        return self.pitch_radius - d * c, -d * s
+
+    @property
+    def free_contact_angle_max(self) -> float:
+        """Free contact angle after the rings are shifted axially until the
+        ball touches both grooves [rad]: cos = (1 - P_d/(2A)) cos alpha_0
+        (Harris & Kotzalas, eq. 2.8, extended to the inclined construction).
+        For preload (P_d < 0) it is alpha_0."""
+        pd = self.diametral_clearance
+        if pd <= 0.0:
+            return self.free_contact_angle
+        c = (1.0 - pd / (2.0 * self.groove_distance)) * math.cos(self.free_contact_angle)
+        return math.acos(max(-1.0, min(1.0, c)))
+
+    @property
+    def cage_pocket_clearance(self) -> float:
+        """2 r_p sin(pi/(2Z)) - (R_b + R_z) [m]: gap between a ball and a cage
+        ball when both sit on the pitch circle at equal spacing. None if cageless."""
+        if self.cage_ball_radius is None:
+            return None
+        return 2.0 * self.pitch_radius * math.sin(math.pi / (2 * self.n_balls)) - (
+            self.ball_radius + self.cage_ball_radius)
+
+    @property
+    def ball_mass(self) -> float:
+        """m_b = 4/3 pi R_b^3 rho [kg]."""
+        return 4.0 / 3.0 * math.pi * self.ball_radius ** 3 * self.material.density
+
+    @property
+    def cage_ball_mass(self) -> float | None:
+        """m_z = 4/3 pi R_z^3 rho [kg], None if cageless."""
+        if self.cage_ball_radius is None:
+            return None
+        return 4.0 / 3.0 * math.pi * self.cage_ball_radius ** 3 * self.material.density
+
+    @property
+    def has_cage(self) -> bool:
+        return self.cage_ball_radius is not None
+
+    def replace(self, **changes) -> "BallBearing":
+        """A copy with some fields changed (validated again)."""
+        return dataclasses.replace(self, **changes)
+
+    def with_clearance(self, diametral_clearance: float) -> "BallBearing":
+        """A copy with the outer race radius changed to give P_d [m]."""
+        pd = check_finite("diametral_clearance", diametral_clearance)
+        ro = self.inner_race_radius + 2.0 * self.ball_radius + 0.5 * pd
+        return self.replace(outer_race_radius=ro)
+
+    def to_dict(self) -> dict:
+        """Plain JSON-able dict (the format of ``catalog.json``; angles in deg)."""
+        d = {f.name: getattr(self, f.name) for f in dataclasses.fields(self)}
+        d["free_contact_angle"] = math.degrees(self.free_contact_angle)
+        d["material"] = dataclasses.asdict(self.material)
+        return d

@@ -1,0 +1,65 @@
+"""Lubricant, surface roughness and the lubrication-regime breakpoints (data, SI units)."""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from .errors import InputError, check_finite, check_nonnegative, check_positive
+
+__all__ = ["Lubricant"]
+
+
+@dataclass(frozen=True)
+class Lubricant:
+    """Lubricant, surface roughness and the regime switch [PHYSICS.md sec. 4-5].
+
+    Parameters
+    ----------
+    viscosity : float
+        Dynamic viscosity eta at operating temperature [Pa s]. Default 0.04.
+    pressure_viscosity : float
+        Barus pressure-viscosity coefficient xi [m^2/N]. Default 2.3e-8.
+    roughness_race, roughness_ball : float
+        RMS roughness sigma_1, sigma_2 [m]. Defaults 3e-7 and 0.
+    roughness_factor : float
+        Factor c in Lambda = h_min / (c sqrt(sigma_1^2 + sigma_2^2)).
+        Default 1.25 (the DEM papers' definition, PHYSICS.md sec. 5).
+    lambda_mixed, lambda_full_film : float
+        Film-parameter breakpoints: boundary for Lambda <= lambda_mixed,
+        full film for Lambda > lambda_full_film. Defaults 1 and 3.
+    mu_boundary, mu_full_film : float
+        Friction coefficient in boundary and full-film lubrication; linear in
+        Lambda between the breakpoints. Defaults 0.1 and 0.01.
+    """
+
+    viscosity: float = 0.04
+    pressure_viscosity: float = 2.3e-8
+    roughness_race: float = 3.0e-7
+    roughness_ball: float = 0.0
+    roughness_factor: float = 1.25
+    lambda_mixed: float = 1.0
+    lambda_full_film: float = 3.0
+    mu_boundary: float = 0.1
+    mu_full_film: float = 0.01
+    name: str = "guessasma2018"
+    source: str = "PHYSICS.md sec. 4-5"
+
+    def __post_init__(self):
+        check_positive("viscosity", self.viscosity)
+        check_nonnegative("pressure_viscosity", self.pressure_viscosity)
+        check_nonnegative("roughness_race", self.roughness_race)
+        check_nonnegative("roughness_ball", self.roughness_ball)
+        check_positive("roughness_factor", self.roughness_factor)
+        if self.composite_roughness <= 0.0:
+            raise InputError("roughness_race: race and ball roughness are both zero; Lambda is undefined")
+        l1 = check_nonnegative("lambda_mixed", self.lambda_mixed)
+        l3 = check_finite("lambda_full_film", self.lambda_full_film)
+        if l3 <= l1:
+            raise InputError(f"lambda_full_film: must exceed lambda_mixed ({l1}), got {l3}")
+        check_nonnegative("mu_boundary", self.mu_boundary)
+        check_nonnegative("mu_full_film", self.mu_full_film)
+
+    @property
+    def composite_roughness(self) -> float:
+        """c sqrt(sigma_1^2 + sigma_2^2) [m], the denominator of Lambda."""
+        return self.roughness_factor * math.hypot(self.roughness_race, self.roughness_ball)

@@ -1,0 +1,46 @@
+"""Elastic solids of balls and rings (data, SI units)."""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from .errors import InputError, check_finite, check_nonnegative, check_positive
+
+__all__ = ["Material"]
+
+
+@dataclass(frozen=True)
+class Material:
+    """Elastic solid [PHYSICS.md sec. 2].
+
+    Parameters
+    ----------
+    youngs_modulus : float
+        E [Pa]. Default 210 GPa (bearing steel).
+    poisson_ratio : float
+        nu [-], in (-1, 0.5). Default 0.3.
+    density : float
+        rho [kg/m^3]. Default 7850.
+    hysteretic_damping : float
+        Hunt-Crossley coefficient alpha_e [s/m] of PHYSICS.md sec. 4.
+        Default 0.08 (steel).
+    """
+
+    youngs_modulus: float = 210e9
+    poisson_ratio: float = 0.3
+    density: float = 7850.0
+    hysteretic_damping: float = 0.08
+    name: str = "steel"
+    source: str = "PHYSICS.md sec. 2"
+
+    def __post_init__(self):
+        check_positive("youngs_modulus", self.youngs_modulus)
+        nu = check_finite("poisson_ratio", self.poisson_ratio)
+        if not -1.0 < nu < 0.5:
+            raise InputError(f"poisson_ratio: must lie in (-1, 0.5), got {nu}")
+        check_positive("density", self.density)
+        check_nonnegative("hysteretic_damping", self.hysteretic_damping)
+
+    @property
+    def shear_modulus(self) -> float:
+        """G = E / (2 (1 + nu)) [Pa]."""
+        return self.youngs_modulus / (2.0 * (1.0 + self.poisson_ratio))

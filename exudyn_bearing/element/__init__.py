@@ -1,4 +1,0 @@
-"""Exudyn ball-bearing element (imports exudyn)."""
-from .builder import BallBearingElement, CreateBallBearing
-
-__all__ = ["BallBearingElement", "CreateBallBearing"]

@@ -1,0 +1,67 @@
+"""Initial state of a bearing scene, shared by the reference engine and the
+Exudyn element: balls at the quasi-static loaded positions, the inner ring at
+its static displacement, and the ring mass the reference engine translates."""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..data import BallBearing
+from ..physics import kinematics
+from ..physics.load_distribution import static_equilibrium
+
+__all__ = ["initial_state", "ring_mass_estimate"]
+
+
+def ring_mass_estimate(bearing: BallBearing) -> float:
+    """Approximate inner-ring mass [kg]: an annulus from R_i - 0.65 R_b to R_i,
+    2.9 R_b wide (proportions of a 62xx ring).
+
+    >>> from exudyn_bearing import catalog
+    >>> round(1e3 * ring_mass_estimate(catalog["6208"]))  # g
+    81
+    """
+    ri, rb = bearing.inner_race_radius, bearing.ball_radius
+    return bearing.material.density * math.pi * (ri ** 2 - (ri - 0.65 * rb) ** 2) * 2.9 * rb
+
+
+def initial_state(bearing: BallBearing, scenario) -> dict:
+    """Balls at the quasi-static loaded positions (the analytic solution),
+    ring at its static displacement; with ``initial='analytic'`` balls and
+    cage balls at their kinematic (pure-rolling) speeds, else at rest."""
+    b, s = bearing, scenario
+    z = b.n_balls
+    sol = static_equilibrium(b, s.Fr, s.Fa, hertz_method=s.hertz)
+    rho_o, z_o = b.outer_groove_center
+    a0 = b.free_contact_angle
+    xb = np.zeros((z, 3))
+    for j in range(z):
+        if sol.q[j] > 0.0:
+            al = sol.contact_angle[j]
+            d = b.outer_groove_radius - b.ball_radius + sol.overlap_outer[j]
+        else:
+            al = a0
+            d = b.outer_groove_radius - b.ball_radius
+        r = rho_o + d * math.cos(al)
+        xb[j] = (r * math.cos(sol.psi[j]), r * math.sin(sol.psi[j]), z_o + d * math.sin(al))
+    psi_c = sol.psi + math.pi / z
+    xc = np.stack([b.pitch_radius * np.cos(psi_c), b.pitch_radius * np.sin(psi_c), np.zeros(z)], axis=1)
+    vb = np.zeros((z, 3))
+    wb = np.zeros((z, 3))
+    vc = np.zeros((z, 3))
+    ring = np.zeros(6)
+    ring[:3] = sol.displacement
+    w0 = s.omega_at(0.0)
+    if s.initial == "analytic" and w0 != 0.0:
+        wc = float(kinematics.cage_speed(w0, 0.0, b.ball_radius, b.pitch_radius, a0))
+        wr = float(kinematics.ball_spin_relative(w0, 0.0, b.ball_radius, b.pitch_radius, a0))
+        for j in range(z):
+            vb[j] = (-wc * xb[j, 1], wc * xb[j, 0], 0.0)
+            c, sn = math.cos(sol.psi[j]), math.sin(sol.psi[j])
+            # rolling axis perpendicular to the contact line: (-sin a) e_r + cos a e_z
+            wb[j] = (-wr * math.sin(a0) * c, -wr * math.sin(a0) * sn, wr * math.cos(a0) + wc)
+        vc[:, 0] = -wc * xc[:, 1]
+        vc[:, 1] = wc * xc[:, 0]
+    return {"xb": xb, "vb": vb, "wb": wb, "xc": xc, "vc": vc, "ring": ring,
+            "hist": np.zeros((z, 2, 3)), "hz": np.zeros((z, 2, 4)), "static": sol}

@@ -1,0 +1,155 @@
+"""Array layouts of the compiled bearing model, each defined once.
+
+The kernels take flat float64 arrays; this module names their entries:
+
+* the **parameter vector** ``p`` (:data:`PARAMETERS`, indices ``P_*``): the
+  bearing, the lubricant, the model switches and the loads of one scene,
+  filled by :func:`exudyn_bearing.model.parameters.scene_parameters`;
+* the **ring pose rows** ``rings`` (2, :data:`RING_N`): inner (0) and outer
+  (1) ring, columns ``R_*``;
+* the **contact diagnostics** ``diag`` (Z, 2, :data:`NDIAG`), race 0 inner /
+  1 outer, columns ``D_*`` named in :data:`DIAG_FIELDS`, and the **global
+  diagnostics** ``glob`` (:data:`NGLOBAL`), named in :data:`GLOBAL_FIELDS`;
+  their units are in :data:`DIAG_UNITS` and :data:`GLOBAL_UNITS`.
+
+Codes stored in the parameter vector (integers as floats): friction models
+``FRIC_*``, ball / raceway contact laws ``LAW_*``, Hertz levels
+(:data:`exudyn_bearing.physics.hertz.METHODS`) and film models
+(:data:`exudyn_bearing.physics.ehl.FILM_MODELS`) by their index.
+
+The indices are plain module-level integers, so numba compiles them into the
+kernels as constants.
+"""
+from __future__ import annotations
+
+from typing import NamedTuple
+
+__all__ = ["ParameterEntry", "PARAMETERS", "N_PARAMS", "RING_N", "DIAG_FIELDS", "DIAG_UNITS", "NDIAG",
+           "GLOBAL_FIELDS", "GLOBAL_UNITS", "NGLOBAL", "FRIC_HISTORY", "FRIC_REGULARIZED", "FRIC_NONE",
+           "LAW_HERTZ", "LAW_POWER", "describe_parameters"]
+
+
+class ParameterEntry(NamedTuple):
+    """One entry of the parameter vector."""
+
+    name: str     #: identifier (also the key of ``describe_parameters``)
+    unit: str     #: SI unit; "-" dimensionless, "code" an integer code, "switch" 0 or 1
+    meaning: str  #: what it is
+
+
+_ENTRIES: list[ParameterEntry] = []
+
+
+def _entry(name: str, unit: str, meaning: str) -> int:
+    _ENTRIES.append(ParameterEntry(name, unit, meaning))
+    return len(_ENTRIES) - 1
+
+
+# -- geometry ------------------------------------------------------------
+P_Z = _entry("n_balls", "-", "number of balls Z")
+P_RB = _entry("ball_radius", "m", "ball radius R_b")
+P_RCI = _entry("inner_groove_radius", "m", "inner groove (tube) radius R_ci")
+P_RCO = _entry("outer_groove_radius", "m", "outer groove (tube) radius R_co")
+P_RHO_I = _entry("inner_groove_center_radius", "m", "radius rho_i of the inner tube-centre circle")
+P_ZG_I = _entry("inner_groove_center_z", "m", "axial position z_i of the inner tube-centre circle")
+P_RHO_O = _entry("outer_groove_center_radius", "m", "radius rho_o of the outer tube-centre circle")
+P_ZG_O = _entry("outer_groove_center_z", "m", "axial position z_o of the outer tube-centre circle")
+P_RZ = _entry("cage_ball_radius", "m", "cage-ball radius R_z (R_b when the scene has no cage)")
+P_RP = _entry("pitch_radius", "m", "pitch radius r_p (centre circle of the cage guide)")
+P_RGUIDE = _entry("guide_radius", "m", "tube radius of the cage-ball guide torus, R_z + guide clearance")
+# -- material and masses ------------------------------------------------
+P_EPRIME = _entry("e_prime", "Pa", "effective modulus E' of ball and race")
+P_MB = _entry("ball_mass", "kg", "ball mass m_b")
+P_IB = _entry("ball_inertia", "kg m^2", "ball moment of inertia 2/5 m_b R_b^2")
+P_MZ = _entry("cage_ball_mass", "kg", "cage-ball mass m_z (1 when the scene has no cage)")
+P_MR = _entry("ring_mass", "kg", "translating mass of the inner ring (reference engine)")
+P_ALPHA_E = _entry("hysteretic_damping", "s/m", "Hunt-Crossley coefficient alpha_e")
+# -- lubricant -----------------------------------------------------------
+P_ETA = _entry("viscosity", "Pa s", "dynamic viscosity eta")
+P_XI = _entry("pressure_viscosity", "m^2/N", "pressure-viscosity coefficient xi")
+P_SIGMA = _entry("composite_roughness", "m", "denominator of Lambda, c sqrt(sigma_1^2 + sigma_2^2)")
+P_L1 = _entry("lambda_mixed", "-", "Lambda breakpoint boundary | mixed")
+P_L3 = _entry("lambda_full_film", "-", "Lambda breakpoint mixed | full film")
+P_MU_B = _entry("mu_boundary", "-", "friction coefficient in boundary lubrication")
+P_MU_F = _entry("mu_full_film", "-", "friction coefficient in full-film lubrication")
+# -- model switches ------------------------------------------------------
+P_HERTZ = _entry("hertz_method", "code", "Hertz fidelity level, index into physics.hertz.METHODS")
+P_FILM = _entry("film_model", "code", "film-thickness model, index into physics.ehl.FILM_MODELS")
+P_LUB = _entry("lubrication", "switch", "Lambda-switched damping and friction (1) or dry contact (0)")
+P_MU_DRY = _entry("mu_dry", "-", "friction coefficient without lubrication")
+P_FRIC = _entry("friction_model", "code", "tangential force model FRIC_*")
+P_VREG = _entry("regularizing_speed", "m/s", "slip speed below which regularised friction is linear")
+P_KT_RATIO = _entry("tangential_stiffness_ratio", "-", "K_t / K_n of the Cundall-Strack spring")
+P_CAGE = _entry("cage", "switch", "torus cage (1) or ball / ball contacts (0)")
+# -- loads and speed protocol (reference engine) -------------------------
+P_FR = _entry("radial_load", "N", "radial load on the inner ring along +x")
+P_FA = _entry("axial_load", "N", "axial load on the inner ring along +z")
+P_W_MAX = _entry("omega", "rad/s", "inner-ring speed of the steady phase")
+P_T_UP = _entry("t_ramp_up", "s", "duration of the start-up ramp")
+P_T_STEADY = _entry("t_steady", "s", "duration of the steady phase (1e300: never ends)")
+P_T_DOWN = _entry("t_ramp_down", "s", "duration of the slow-down ramp")
+# -- secondary contacts ----------------------------------------------------
+P_K_BZ = _entry("k_ball_cage", "N/m^1.5", "Hertz constant of a ball / cage-ball contact")
+P_K_BB = _entry("k_ball_ball", "N/m^1.5", "Hertz constant of a ball / ball contact (no cage)")
+P_K_GUIDE = _entry("k_guide", "N/m^1.5", "Hertz constant of a cage-ball / guide contact")
+# -- solver ----------------------------------------------------------------
+P_DT = _entry("dt", "s", "time step (implicit tangential spring, Cundall-Strack increment)")
+P_AXIAL_FREE = _entry("axial_free", "switch", "the inner ring moves axially (1) or not (0)")
+P_MAX_OVERLAP = _entry("max_overlap", "-", "overlap / R_b above which a run stops as runaway")
+P_KT_IMPLICIT = _entry("tangential_implicit", "switch", "implicit (1) or explicit (0) Cundall-Strack spring")
+# -- peer contact law ------------------------------------------------------
+P_LAW = _entry("contact_law", "code", "ball / raceway contact law LAW_*")
+P_LAW_K = _entry("power_law_k", "N/m^n", "power-law stiffness k of F = k delta^n + d d(delta)/dt")
+P_LAW_N = _entry("power_law_n", "-", "power-law exponent n")
+P_LAW_D = _entry("power_law_d", "N s/m", "power-law damping d")
+
+#: All entries of the parameter vector, in index order.
+PARAMETERS: tuple[ParameterEntry, ...] = tuple(_ENTRIES)
+#: Length of the parameter vector.
+N_PARAMS = len(PARAMETERS)
+
+#: Tangential force models: Cundall-Strack spring with Coulomb cap (contact
+#: history), regularised Coulomb on the slip velocity (history-free), none.
+FRIC_HISTORY, FRIC_REGULARIZED, FRIC_NONE = 0, 1, 2
+#: Ball / raceway contact laws: elliptic Hertz with the Lambda-switched
+#: lubrication of PHYSICS.md (default), or the power law k delta^n + d
+#: d(delta)/dt with constant mu of Exudyn's ObjectContactSphereTorus (for
+#: the peer check against exudyn.machines.CreateBallBearing).
+LAW_HERTZ, LAW_POWER = 0, 1
+
+# -- ring pose rows ----------------------------------------------------------
+#: Columns of a ring pose row (world frame): centre (3) [m], velocity (3)
+#: [m/s], rotation matrix row-major (9; the bearing axis is the ring's local
+#: z, the third column), angular velocity (3) [rad/s].
+R_POS, R_VEL, R_ROT, R_OMEGA = 0, 3, 6, 15
+#: Length of a ring pose row.
+RING_N = 18
+
+# -- diagnostics ---------------------------------------------------------------
+#: Fields of the per-contact diagnostics, in order.
+DIAG_FIELDS = ("load", "overlap", "contact_angle", "a", "b", "p_max", "u_r", "h_min",
+               "lambda", "regime", "mu", "slip_speed", "srr", "friction_force")
+(D_LOAD, D_OVERLAP, D_ANGLE, D_A, D_B, D_PMAX, D_UR, D_HMIN, D_LAMBDA, D_REGIME, D_MU, D_SLIP, D_SRR,
+ D_FRICTION) = range(len(DIAG_FIELDS))
+#: Units of the per-contact diagnostics (regime: 0 boundary, 1 mixed, 2 full film, -1 no contact).
+DIAG_UNITS = {"load": "N", "overlap": "m", "contact_angle": "rad", "a": "m", "b": "m", "p_max": "Pa",
+              "u_r": "m/s", "h_min": "m", "lambda": "-", "regime": "code", "mu": "-", "slip_speed": "m/s",
+              "srr": "-", "friction_force": "N"}
+NDIAG = len(DIAG_FIELDS)
+#: Global diagnostics per sample, in order: inner-ring speed, force of the
+#: balls on the inner ring and torque about its axis, total frictional power,
+#: largest overlap / R_b, force of balls and cage balls on the outer ring and
+#: torque about its axis.
+GLOBAL_FIELDS = ("omega", "ring_fx", "ring_fy", "ring_fz", "ring_torque", "friction_power",
+                 "max_overlap_ratio", "outer_fx", "outer_fy", "outer_fz", "outer_torque")
+(G_OMEGA, G_RING_FX, G_RING_FY, G_RING_FZ, G_RING_TORQUE, G_POWER, G_WORST, G_OUTER_FX, G_OUTER_FY,
+ G_OUTER_FZ, G_OUTER_TORQUE) = range(len(GLOBAL_FIELDS))
+GLOBAL_UNITS = {"omega": "rad/s", "ring_fx": "N", "ring_fy": "N", "ring_fz": "N", "ring_torque": "N m",
+                "friction_power": "W", "max_overlap_ratio": "-", "outer_fx": "N", "outer_fy": "N", "outer_fz": "N",
+                "outer_torque": "N m"}
+NGLOBAL = len(GLOBAL_FIELDS)
+
+
+def describe_parameters(p) -> dict:
+    """``{name: (value, unit)}`` of a parameter vector, for reading and debugging."""
+    return {e.name: (float(p[i]), e.unit) for i, e in enumerate(PARAMETERS)}

@@ -1,0 +1,77 @@
+"""The compiled bearing model's inputs: a bearing, a lubricant and a
+scenario's model switches and loads turned into the parameter vector of
+:mod:`exudyn_bearing.model.layout`."""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..data import BallBearing, Lubricant
+from ..physics import hertz
+from ..physics.ehl import film_model_code
+from ..physics.hertz import material_reduced_modulus
+from . import layout as L
+from .initial_state import ring_mass_estimate
+from .scenario import FRICTION_MODELS, Scenario
+
+__all__ = ["scene_parameters"]
+
+
+def scene_parameters(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant) -> np.ndarray:
+    """Kernel parameter vector (layout ``kernels.P_*``) of a bearing, a
+    scenario's model switches and loads, and a lubricant; shared by the
+    reference engine and the Exudyn element."""
+    b, s, lub = bearing, scenario, lubricant
+    p = np.zeros(L.N_PARAMS)
+    em = material_reduced_modulus(b.material)
+    rho_i, z_i = b.inner_groove_center
+    rho_o, z_o = b.outer_groove_center
+    cage = bool(s.cage and b.has_cage)
+    rz = b.cage_ball_radius if cage else b.ball_radius
+    p[L.P_Z] = b.n_balls
+    p[L.P_RB] = b.ball_radius
+    p[L.P_RCI] = b.inner_groove_radius
+    p[L.P_RCO] = b.outer_groove_radius
+    p[L.P_RHO_I], p[L.P_ZG_I] = rho_i, z_i
+    p[L.P_RHO_O], p[L.P_ZG_O] = rho_o, z_o
+    p[L.P_RZ] = rz
+    p[L.P_RP] = b.pitch_radius
+    p[L.P_RGUIDE] = rz + s.guide_clearance
+    p[L.P_EPRIME] = em
+    p[L.P_MB] = b.ball_mass
+    p[L.P_IB] = 0.4 * b.ball_mass * b.ball_radius ** 2
+    p[L.P_MZ] = b.cage_ball_mass if cage else 1.0
+    p[L.P_MR] = s.ring_mass if s.ring_mass is not None else ring_mass_estimate(b)
+    p[L.P_ALPHA_E] = b.material.hysteretic_damping
+    p[L.P_ETA] = lub.viscosity
+    p[L.P_XI] = lub.pressure_viscosity
+    p[L.P_SIGMA] = lub.composite_roughness
+    p[L.P_L1] = lub.lambda_mixed
+    p[L.P_L3] = lub.lambda_full_film
+    p[L.P_MU_B] = lub.mu_boundary
+    p[L.P_MU_F] = lub.mu_full_film
+    p[L.P_HERTZ] = hertz.method_code(s.hertz)
+    p[L.P_FILM] = film_model_code(s.film)
+    p[L.P_LUB] = 1.0 if s.lubrication else 0.0
+    p[L.P_MU_DRY] = s.mu_dry
+    p[L.P_FRIC] = FRICTION_MODELS.index(s.friction)
+    p[L.P_VREG] = s.regularizing_speed
+    p[L.P_KT_RATIO] = s.tangential_stiffness_ratio
+    p[L.P_CAGE] = 1.0 if cage else 0.0
+    p[L.P_FR] = s.Fr
+    p[L.P_FA] = s.Fa
+    p[L.P_W_MAX] = s.omega
+    p[L.P_T_UP] = s.t_ramp_up
+    p[L.P_T_STEADY] = s.t_steady if math.isfinite(s.t_steady) else 1e300
+    p[L.P_T_DOWN] = s.t_ramp_down
+    p[L.P_K_BZ] = float(hertz.sphere_sphere_stiffness(b.ball_radius, rz, em))
+    p[L.P_K_BB] = float(hertz.sphere_sphere_stiffness(b.ball_radius, b.ball_radius, em))
+    p[L.P_K_GUIDE] = 2.0 / 3.0 * em * math.sqrt(rz)
+    p[L.P_DT] = s.dt
+    p[L.P_AXIAL_FREE] = 1.0
+    p[L.P_MAX_OVERLAP] = 0.05
+    p[L.P_KT_IMPLICIT] = 1.0 if s.tangential == "implicit" else 0.0
+    p[L.P_LAW] = L.LAW_POWER if s.contact_law == "power" else L.LAW_HERTZ
+    p[L.P_LAW_K], p[L.P_LAW_N], p[L.P_LAW_D] = (float(x) for x in s.power_law)
+    return p

@@ -1,0 +1,205 @@
+"""Stable time steps of the explicit integrators and the checks that go with
+them: the ball contacts (normal, tangential, friction, cage), the ring bodies
+of the Exudyn element's fast mode, and the cage loads a run reached.
+
+Every estimate linearises the contacts at their quasi-static loads
+(:func:`exudyn_bearing.physics.load_distribution.static_equilibrium`) with the
+Hertz tangent stiffness (:func:`exudyn_bearing.physics.hertz.tangent_stiffness`).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..data import BallBearing, InputError, Lubricant, default_lubricant
+from ..physics import hertz, kinematics
+from ..physics.friction import sphere_tangential_mass
+from ..physics.hertz import material_reduced_modulus
+from ..physics.load_distribution import race_stiffness, static_equilibrium
+from .scenario import Scenario
+
+__all__ = ["SimulationError", "StepSizeWarning", "StableStep", "STABILITY_SAFETY", "explicit_step_factor",
+           "stable_step", "step_warning", "cage_load_check", "ring_contact_stiffness", "ring_stable_step"]
+
+
+class SimulationError(RuntimeError):
+    """The integration produced a non-finite or runaway state."""
+
+
+class StepSizeWarning(UserWarning):
+    """The time step exceeds the stable-step estimate of the scene."""
+
+
+#: Factor between the linearised single-ball limit and the reported stable
+#: step: the two races, the ring and load peaks couple the modes (the 6208 at
+#: 500 rad/s with the implicit tangential spring blows up at 0.93 of the
+#: linearised normal limit; validation/bench_reference.py measures it).
+STABILITY_SAFETY = 0.85
+
+
+def explicit_step_factor(zeta=0.0, integrator="verlet"):
+    """Stable step of a linear oscillator x'' + 2 zeta omega x' + omega^2 x = 0
+    under the engines' explicit integrators, in units of 1/omega.
+
+    Velocity Verlet with the damping force evaluated at the half-step
+    velocity (as the kernels do): 2 (sqrt(1 + zeta^2) - zeta), where the
+    spectral radius of the step's amplification matrix reaches 1 (2 without
+    damping, 0.83 at critical damping; tests/test_reference.py checks it
+    against that matrix). Classical RK4: 2.83 (2 sqrt 2) on the imaginary
+    axis without damping; for zeta >= 1 the real eigenvalue
+    -omega (zeta + sqrt(zeta^2 - 1)) must stay within the real-axis limit
+    2.785 of RK4's stability polynomial (Hairer & Wanner, Solving ODEs II,
+    sec. IV.2).
+    """
+    zeta = float(zeta)
+    if not zeta >= 0.0:
+        raise InputError(f"zeta: the damping ratio must be >= 0, got {zeta}")
+    if integrator == "verlet":
+        return 2.0 * (math.sqrt(1.0 + zeta * zeta) - zeta)
+    if integrator != "rk4":
+        raise InputError(f"integrator: must be 'verlet' or 'rk4', got {integrator!r}")
+    if zeta == 0.0:
+        return 2.0 * math.sqrt(2.0)
+    if zeta < 1.0:
+        raise InputError(f"zeta: the RK4 bound is given for zeta = 0 or zeta >= 1, got {zeta}")
+    return 2.785 / (zeta + math.sqrt(zeta * zeta - 1.0))
+
+
+@dataclass
+class StableStep:
+    """Stable-step estimate of a scene [s] and what sets it."""
+
+    dt: float
+    normal: float
+    tangential: float
+    friction: float
+    cage: float
+    limited_by: str
+
+
+def _static_ball_loads(b: BallBearing, scenario: Scenario) -> np.ndarray:
+    """Quasi-static ball loads [N] under the scenario's F_r, F_a (zeros for an
+    unloaded bearing with clearance, which has no equilibrium to solve)."""
+    if scenario.Fr > 0 or scenario.Fa > 0 or b.diametral_clearance < 0:
+        return static_equilibrium(b, scenario.Fr, scenario.Fa, hertz_method=scenario.hertz).q
+    return np.zeros(b.n_balls)
+
+
+def stable_step(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant | None = None,
+                cage_load: float | None = None) -> StableStep:
+    """Largest stable time step of the explicit integrator for a scene [s].
+
+    ``STABILITY_SAFETY`` times the smallest of the limits below, linearised at
+    the largest expected ball load (quasi-static Q_max plus the
+    centrifugal force m r_p omega_c^2 at the top speed); the limits are
+    f/omega with f = :func:`explicit_step_factor` (2 for Verlet, 2.83 for RK4
+    without damping) for
+    the normal Hertz springs of both races (omega^2 = (k_i + k_o)/m_b), the
+    Cundall-Strack tangential springs (the ball's rocking mode, omega^2 =
+    (k_ti + k_to) R_b^2 / I_b = 2.5 (k_ti + k_to)/m_b; an explicit spring
+    above this step does not blow up, its force saturates at mu F_n and
+    chatters, which validation/bench_reference.py shows in the slip), the
+    regularised-friction damping
+    (dt < 2 m_eff / c resp. 2.83 m_eff / c, c = 2 mu Q / v_reg) and the
+    critically damped ball / cage-ball contacts (two per cage ball, f at
+    zeta = 1: 0.83 for Verlet) at ``cage_load`` [N] (default a tenth of the
+    ball load, the order of the start-up and slow-down loads of the 6208;
+    the engines check the loads a run reaches, :func:`cage_load_check`).
+    Above the cage limit a run need not blow up: the cage loads grow about
+    twofold and chatter (validation/REPORT.md). The implicit tangential
+    spring sets no limit.
+    """
+    b = bearing if scenario.Pd is None else bearing.with_clearance(scenario.Pd)
+    lub = default_lubricant() if lubricant is None else lubricant
+    mb = b.ball_mass
+    wc = float(kinematics.cage_speed(scenario.omega, 0.0, b.ball_radius, b.pitch_radius, b.free_contact_angle))
+    q_cf = float(kinematics.centrifugal_force(mb, b.pitch_radius, wc))
+    q = max(float(_static_ball_loads(b, scenario).max()) + q_cf, 10.0)
+    ki, ko, _kn = race_stiffness(b, b.free_contact_angle, scenario.hertz)
+    kt_i = float(hertz.tangent_stiffness(ki, q))
+    kt_o = float(hertz.tangent_stiffness(ko, q))
+    factor = explicit_step_factor(0.0, scenario.integrator)
+    dt_n = factor / math.sqrt((kt_i + kt_o) / mb)
+    dt_t = math.inf
+    dt_f = math.inf
+    mu = lub.mu_boundary if scenario.lubrication else scenario.mu_dry
+    if scenario.friction == "history" and scenario.tangential == "explicit":
+        dt_t = factor / math.sqrt(scenario.tangential_stiffness_ratio * (kt_i + kt_o) * 2.5 / mb)
+    elif scenario.friction == "regularized" and mu > 0:
+        dt_f = factor * sphere_tangential_mass(mb) / (2.0 * mu * q / scenario.regularizing_speed)
+    dt_c = math.inf
+    if scenario.cage and b.has_cage:
+        mz = b.cage_ball_mass
+        em = material_reduced_modulus(b.material)
+        kbz = float(hertz.sphere_sphere_stiffness(b.ball_radius, b.cage_ball_radius, em))
+        kc = float(hertz.tangent_stiffness(kbz, 0.1 * q if cage_load is None else max(float(cage_load), 1e-3)))
+        dt_c = explicit_step_factor(1.0, scenario.integrator) / math.sqrt(2.0 * kc * (mb + mz) / (mb * mz))
+    parts = {"normal": dt_n, "tangential": dt_t, "friction": dt_f, "cage": dt_c}
+    name = min(parts, key=parts.get)
+    return StableStep(STABILITY_SAFETY * parts[name], dt_n, dt_t, dt_f, dt_c, name)
+
+
+def step_warning(label: str, dt: float, stable: StableStep) -> str | None:
+    """The warning text for a step ``dt`` above the estimate ``stable.dt``
+    (``label`` names the step, e.g. "dt = 5e-06 s"), else None."""
+    if dt <= stable.dt:
+        return None
+    what = ("the cage loads may be unreliable in start-up and slow-down (the loads a run reaches are checked at "
+            "its end)" if stable.limited_by == "cage" else "the run may blow up")
+    return (f"{label} exceeds the stable-step estimate {stable.dt:.3g} s (limited by the {stable.limited_by} "
+            f"contact stiffness); {what}")
+
+
+def cage_load_check(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant | None, max_cage_load: float,
+                    dt: float) -> str | None:
+    """A warning text when the largest ball / cage-ball load a run reached
+    puts those contacts' stable step (:func:`stable_step` at that load, with
+    ``STABILITY_SAFETY``) below its step ``dt``, else None."""
+    if not max_cage_load > 0.0 or not (scenario.cage and bearing.has_cage):
+        return None
+    limit = STABILITY_SAFETY * stable_step(bearing, scenario, lubricant, cage_load=max_cage_load).cage
+    if dt <= limit:
+        return None
+    return (f"dt: the ball / cage-ball contacts reached {max_cage_load:.3g} N, where their stable step is "
+            f"{limit:.3g} s < dt = {dt:.3g} s; the cage loads of this run are unreliable (they chatter at about "
+            "twice their value), ball loads and speeds usually are not affected: reduce dt")
+
+
+def ring_contact_stiffness(bearing: BallBearing, scenario: Scenario, race: str = "inner") -> float:
+    """Sum of the tangent stiffnesses dQ/d delta of one race's ball contacts [N/m].
+
+    Each contact at its quasi-static load under the scenario's F_r, F_a
+    (10 N on every ball when no ball carries more; outer contacts plus the
+    centrifugal force at the scenario's speed), summed as if all acted along
+    one direction: an upper bound of the stiffness the ring body feels in
+    any direction (Harris & Kotzalas tangent stiffness, :func:`hertz.tangent_stiffness`).
+    """
+    if race not in ("inner", "outer"):
+        raise InputError(f"race: must be 'inner' or 'outer', got {race!r}")
+    b = bearing if scenario.Pd is None else bearing.with_clearance(scenario.Pd)
+    q = _static_ball_loads(b, scenario)
+    if q.max() < 10.0:
+        q = np.full(b.n_balls, 10.0)
+    ki, ko, _kn = race_stiffness(b, b.free_contact_angle, scenario.hertz)
+    if race == "outer":
+        wc = float(kinematics.cage_speed(scenario.omega, 0.0, b.ball_radius, b.pitch_radius, b.free_contact_angle))
+        q = q + float(kinematics.centrifugal_force(b.ball_mass, b.pitch_radius, wc))
+    return float(np.sum(hertz.tangent_stiffness(ki if race == "inner" else ko, q)))
+
+
+def ring_stable_step(bearing: BallBearing, scenario: Scenario, ring_mass: float, race: str = "inner") -> float:
+    """Largest stable velocity-Verlet step [s] for a ring of mass ``ring_mass``
+    on the ball contacts of its race (the Exudyn step of the fast mode).
+
+    2/omega with omega^2 = :func:`ring_contact_stiffness` / m_ring. No safety
+    factor: the 81 g ring of the 6208 test scene at F_r = 3000 N gets
+    22.8 us; the fast mode runs at 20 us, is 59 % off at 25 us and blows up
+    at 30 us (validation/fast_mode_checks.py). For a ring on a rigid body
+    with several bearings the element uses the body's mass matrix and all
+    its bearings (``BallBearingElement.ringStableStep``).
+    """
+    if not ring_mass > 0.0 or not math.isfinite(ring_mass):
+        raise InputError(f"ring_mass: must be a positive finite mass [kg], got {ring_mass}")
+    return 2.0 / math.sqrt(ring_contact_stiffness(bearing, scenario, race) / ring_mass)

@@ -1,0 +1,1 @@
+"""Outputs of runs: results (series and summaries), plots, JSON conversion."""

@@ -1,0 +1,140 @@
+"""Driver of the numba DEM reference engine: scene set-up, chunked
+integration with progress, the sampled record.
+
+The engine simulates a complete ball bearing ball by ball (PHYSICS.md
+sec. 2-7): Z balls and Z cage balls with 6 DOF, the inner ring translating
+freely under the applied loads and spun at the prescribed omega(t), the outer
+ring fixed. It does not import exudyn.
+"""
+from __future__ import annotations
+
+import sys
+import time
+import warnings
+
+import numpy as np
+
+from ...data import InputError, Lubricant, default_lubricant, load_bearing
+from ...model.initial_state import initial_state
+from ...model.layout import NDIAG, NGLOBAL
+from ...model.motion import ring_poses
+from ...model.parameters import scene_parameters
+from ...model.record import RunRecord
+from ...model.scenario import Scenario
+from ...model.stability import SimulationError, StepSizeWarning, cage_load_check, stable_step, step_warning
+from ...physics import hertz
+from .integrators import evaluate, run_rk4, run_verlet
+
+__all__ = ["ReferenceEngine"]
+
+
+class ReferenceEngine:
+    """The numba DEM engine for one bearing, lubricant and scenario.
+
+    Parameters
+    ----------
+    bearing : BallBearing or str
+        Bearing or catalogue name / JSON path.
+    scenario : Scenario
+    lubricant : Lubricant, optional
+        Default: the DEM papers' lubricant.
+    """
+
+    name = "reference"
+
+    def __init__(self, bearing, scenario: Scenario, lubricant: Lubricant | None = None):
+        b = load_bearing(bearing)
+        if scenario.Pd is not None:
+            b = b.with_clearance(scenario.Pd)
+        self.bearing = b
+        self.scenario = scenario
+        self.lubricant = default_lubricant() if lubricant is None else lubricant
+        if scenario.cage and not b.has_cage:
+            raise InputError(f"cage: bearing {b.name} has no cage balls (cage_ball_radius is None); "
+                             "use cage=False")
+        self.params = scene_parameters(b, scenario, self.lubricant)
+        self.table = hertz.exact_table()
+        self.stable = stable_step(b, scenario, self.lubricant)
+
+    def initial_state(self):
+        """The scene's initial state (:func:`exudyn_bearing.model.initial_state.initial_state`)."""
+        return initial_state(self.bearing, self.scenario)
+
+    # -- run -----------------------------------------------------------
+    def run(self, progress=None, chunk_steps=None):
+        """Integrate the scenario; returns the :class:`~exudyn_bearing.model.record.RunRecord`.
+
+        ``progress``: True to print progress on stderr, None for automatic
+        (runs over 2 million steps).
+        """
+        s = self.scenario
+        p = self.params
+        msg = step_warning(f"dt = {s.dt:.3g} s", s.dt, self.stable)
+        if msg:
+            warnings.warn(msg, StepSizeWarning, stacklevel=2)
+        n_steps = int(round(s.t_end / s.dt))
+        every = max(1, int(round(s.sample_dt / s.dt)))
+        n_samples = n_steps // every
+        z = self.bearing.n_balls
+        st = self.initial_state()
+        xb, vb, wb, xc, vc, ring, hist, hz = (st[k] for k in ("xb", "vb", "wb", "xc", "vc", "ring", "hist", "hz"))
+        fb = np.zeros((z, 3))
+        tb = np.zeros((z, 3))
+        fc = np.zeros((z, 3))
+        fring = np.zeros(3)
+        buf = {
+            "t": np.zeros(n_samples), "glob": np.zeros((n_samples, NGLOBAL)),
+            "diag": np.zeros((n_samples, z, 2, NDIAG)), "cage_load": np.zeros((n_samples, z, 2)),
+            "xb": np.zeros((n_samples, z, 3)), "vb": np.zeros((n_samples, z, 3)),
+            "wb": np.zeros((n_samples, z, 3)), "xc": np.zeros((n_samples, z, 3)),
+            "vc": np.zeros((n_samples, z, 3)), "ring": np.zeros((n_samples, 6)),
+        }
+        # forces at t = 0 (Verlet needs them on entry)
+        evaluate(0.0, p, self.table, xb, vb, wb, xc, vc, ring, ring_poses(), hist, hz, fb, tb, fc,
+                    np.zeros((2, 6)), fring, np.zeros(NGLOBAL), np.zeros((z, 2, NDIAG)), np.zeros((z, 2)),
+                    False)
+        integrate = run_verlet if s.integrator == "verlet" else run_rk4
+        if progress is None:
+            progress = n_steps > 2_000_000
+        chunk = chunk_steps or max(every, (max(n_steps // 50, 1) // every + 1) * every)
+        done = 0
+        k_samp = 0
+        # compile (or load from the cache) before the clock starts: wall_s is the integration alone
+        integrate(0, 0.0, p, self.table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring, every, 0,
+                  buf["t"][:0], buf["glob"][:0], buf["diag"][:0], buf["cage_load"][:0], buf["xb"][:0],
+                  buf["vb"][:0], buf["wb"][:0], buf["xc"][:0], buf["vc"][:0], buf["ring"][:0])
+        wall0 = time.perf_counter()
+        last_print = wall0
+        while done < n_steps:
+            m = min(chunk, n_steps - done)
+            sl = slice(k_samp, n_samples)
+            steps, ns, status = integrate(
+                m, done * s.dt, p, self.table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring,
+                every, done, buf["t"][sl], buf["glob"][sl], buf["diag"][sl], buf["cage_load"][sl],
+                buf["xb"][sl], buf["vb"][sl], buf["wb"][sl], buf["xc"][sl], buf["vc"][sl], buf["ring"][sl])
+            done += steps
+            k_samp += ns
+            if status != 0:
+                t_fail = done * s.dt
+                what = "non-finite" if status == 1 else "runaway (overlap above 5 % of the ball radius)"
+                raise SimulationError(
+                    f"dt: the state became {what} at t = {t_fail:.6g} s with dt = {s.dt:.3g} s; "
+                    f"the stable-step estimate is {self.stable.dt:.3g} s (limited by the "
+                    f"{self.stable.limited_by} contact): reduce dt")
+            if progress and (time.perf_counter() - last_print > 0.5 or done >= n_steps):
+                last_print = time.perf_counter()
+                el = time.perf_counter() - wall0
+                frac = done / n_steps
+                eta = el / frac * (1 - frac) if frac > 0 else float("nan")
+                print(f"\r[reference] t = {done * s.dt:.4f}/{s.t_end:.4f} s  {100 * frac:5.1f} %  "
+                      f"wall {el:6.1f} s  eta {eta:6.1f} s", end="", file=sys.stderr, flush=True)
+        wall = time.perf_counter() - wall0
+        if progress:
+            print(file=sys.stderr)
+        for k in buf:
+            buf[k] = buf[k][:k_samp]
+        msg = cage_load_check(self.bearing, s, self.lubricant, float(buf["cage_load"].max(initial=0.0)), s.dt)
+        if msg:
+            warnings.warn(msg, StepSizeWarning, stacklevel=2)
+        return RunRecord(self.bearing, s, self.lubricant, buf, steps=done, wall_s=wall,
+                         engine=self.name, stable_dt=self.stable.dt, static=st["static"])

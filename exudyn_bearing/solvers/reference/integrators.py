@@ -1,0 +1,230 @@
+"""Compiled time integrators of the reference engine: velocity Verlet (the
+DEM papers' scheme) and classical RK4, over the shared contact kernel
+:func:`exudyn_bearing.model.contact.forces`.
+
+State: ``xb, vb, wb`` (Z, 3) ball centre, velocity, angular velocity;
+``xc, vc`` (Z, 3) cage balls; ``ring`` (6,) inner-ring position and velocity
+(the ring translates, its spin follows the protocol, the outer ring is the
+fixed frame); ``hist`` (Z, 2, 3) Cundall-Strack displacements; ``hz``
+(Z, 2, 4) the Hertz cache of the contact kernel. Sample buffers ``s_*`` get
+one row per sample.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..._jit import kernel
+from ...model.contact import forces
+from ...model.layout import (P_AXIAL_FREE, P_CAGE, P_DT, P_FA, P_FR, P_IB, P_MAX_OVERLAP, P_MB, P_MR, P_MZ,
+                             P_T_DOWN, P_T_STEADY, P_T_UP, P_W_MAX)
+from ...model.motion import kick_drift, omega_profile, ring_poses
+
+__all__ = ["run_verlet", "run_rk4", "evaluate"]
+
+
+@kernel
+def _set_inner_ring(t, p, ring, rings):
+    """Reference engine: the inner ring translates (state ``ring``: position,
+    velocity) and spins at the protocol speed; the outer ring stays fixed."""
+    for d in range(6):
+        rings[0, d] = ring[d]
+    rings[0, 17] = omega_profile(t, p[P_W_MAX], p[P_T_UP], p[P_T_STEADY], p[P_T_DOWN])
+
+
+@kernel
+def _inner_ring_force(p, fr, fring):
+    """Force that accelerates the inner ring: applied load plus the ball reactions."""
+    fring[0] = p[P_FR] + fr[0, 0]
+    fring[1] = fr[0, 1]
+    fring[2] = (p[P_FA] + fr[0, 2]) if p[P_AXIAL_FREE] > 0.5 else 0.0
+
+
+@kernel
+def evaluate(t, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc, fr, fring,
+              glob, diag, cage_load, want):
+    """Reference-engine force evaluation at time t (see :func:`_set_inner_ring`)."""
+    _set_inner_ring(t, p, ring, rings)
+    worst = forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist, p[P_DT], hz, fb, tb, fc, fr, glob, diag,
+                   cage_load, want)
+    _inner_ring_force(p, fr, fring)
+    return worst
+
+
+@kernel
+def _store(k, t, glob, diag, cage_load, xb, vb, wb, xc, vc, ring,
+           s_t, s_glob, s_diag, s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring):
+    """Copy the state and diagnostics into row k of the sample buffers."""
+    s_t[k] = t
+    s_glob[k] = glob
+    s_diag[k] = diag
+    s_cage[k] = cage_load
+    s_xb[k] = xb
+    s_vb[k] = vb
+    s_wb[k] = wb
+    s_xc[k] = xc
+    s_vc[k] = vc
+    s_ring[k] = ring
+
+
+@kernel
+def run_verlet(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring,
+               sample_every, step0, s_t, s_glob, s_diag, s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring):
+    """Velocity-Verlet (the DEM papers' scheme) for ``n_steps`` steps from t0.
+
+    Forces must hold the values at t0 on entry; damping and friction see the
+    half-step velocity. Every ``sample_every``-th step (counted from
+    ``step0``) the state and diagnostics go to the next row of the s_*
+    buffers. Returns (steps done, samples written, status): status 0 ok,
+    1 non-finite state, 2 runaway overlap (> P_MAX_OVERLAP R_b).
+    """
+    dt = p[P_DT]
+    h = 0.5 * dt
+    z = xb.shape[0]
+    inv_mb = 1.0 / p[P_MB]
+    inv_ib = 1.0 / p[P_IB]
+    inv_mz = 1.0 / p[P_MZ] if p[P_CAGE] > 0.5 else 0.0
+    inv_mr = 1.0 / p[P_MR]
+    glob = np.zeros(s_glob.shape[1])
+    diag = np.zeros((z, 2, s_diag.shape[3]))
+    cage_load = np.zeros((z, 2))
+    rings = ring_poses()
+    fr = np.zeros((2, 6))
+    n_samp = 0
+    t = t0
+    for step in range(n_steps):
+        kick_drift(h, dt, xb, vb, wb, xc, vc, fb, tb, fc, inv_mb, inv_ib, inv_mz)
+        for d in range(3):
+            ring[3 + d] += h * fring[d] * inv_mr
+            ring[d] += dt * ring[3 + d]
+        t = t0 + (step + 1) * dt
+        want = (step0 + step + 1) % sample_every == 0 and n_samp < s_t.shape[0]
+        # the three calls of _evaluate, inlined in this hottest loop (the
+        # extra array-passing call measured a few per cent slower)
+        _set_inner_ring(t, p, ring, rings)
+        worst = forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist, dt, hz, fb, tb, fc, fr, glob, diag,
+                       cage_load, want)
+        _inner_ring_force(p, fr, fring)
+        for j in range(z):
+            for d in range(3):
+                vb[j, d] += h * fb[j, d] * inv_mb
+                wb[j, d] += h * tb[j, d] * inv_ib
+                vc[j, d] += h * fc[j, d] * inv_mz
+        for d in range(3):
+            ring[3 + d] += h * fring[d] * inv_mr
+        if want:
+            _store(n_samp, t, glob, diag, cage_load, xb, vb, wb, xc, vc, ring,
+                   s_t, s_glob, s_diag, s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring)
+            n_samp += 1
+            if not (np.all(np.isfinite(xb)) and np.all(np.isfinite(vb)) and np.all(np.isfinite(ring))):
+                return step + 1, n_samp, 1
+        if worst > p[P_MAX_OVERLAP] or not math.isfinite(worst):
+            return step + 1, n_samp, 2
+    if not (np.all(np.isfinite(xb)) and np.all(np.isfinite(vb)) and np.all(np.isfinite(wb))):
+        return n_steps, n_samp, 1
+    return n_steps, n_samp, 0
+
+
+@kernel
+def _rk_stage(t, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc, fr, fring, glob, diag, cage_load,
+              kx, kv, kw, kxc, kvc, kr, stage):
+    """Derivatives of the state at (t, state) into stage ``stage`` of the k
+    arrays; returns the largest overlap ratio."""
+    worst = evaluate(t, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc, fr, fring, glob, diag,
+                      cage_load, False)
+    inv_mz = 1.0 / p[P_MZ] if p[P_CAGE] > 0.5 else 0.0
+    for j in range(xb.shape[0]):
+        for d in range(3):
+            kx[stage, j, d] = vb[j, d]
+            kv[stage, j, d] = fb[j, d] / p[P_MB]
+            kw[stage, j, d] = tb[j, d] / p[P_IB]
+            kxc[stage, j, d] = vc[j, d]
+            kvc[stage, j, d] = fc[j, d] * inv_mz
+    for d in range(3):
+        kr[stage, d] = ring[3 + d]
+        kr[stage, 3 + d] = fring[d] / p[P_MR]
+    return worst
+
+
+@kernel
+def _rk_set(y0x, y0v, y0w, y0xc, y0vc, y0r, kx, kv, kw, kxc, kvc, kr, stage, f,
+            xb, vb, wb, xc, vc, ring):
+    """state = y0 + f k[stage]."""
+    for j in range(xb.shape[0]):
+        for d in range(3):
+            xb[j, d] = y0x[j, d] + f * kx[stage, j, d]
+            vb[j, d] = y0v[j, d] + f * kv[stage, j, d]
+            wb[j, d] = y0w[j, d] + f * kw[stage, j, d]
+            xc[j, d] = y0xc[j, d] + f * kxc[stage, j, d]
+            vc[j, d] = y0vc[j, d] + f * kvc[stage, j, d]
+    for d in range(6):
+        ring[d] = y0r[d] + f * kr[stage, d]
+
+
+@kernel
+def run_rk4(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring,
+            sample_every, step0, s_t, s_glob, s_diag, s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring):
+    """Classical fourth-order Runge-Kutta, for history-free scenes (same
+    interface and status codes as :func:`run_verlet`)."""
+    dt = p[P_DT]
+    z = xb.shape[0]
+    glob = np.zeros(s_glob.shape[1])
+    diag = np.zeros((z, 2, s_diag.shape[3]))
+    cage_load = np.zeros((z, 2))
+    rings = ring_poses()
+    fr = np.zeros((2, 6))
+    kx = np.zeros((4, z, 3))
+    kv = np.zeros((4, z, 3))
+    kw = np.zeros((4, z, 3))
+    kxc = np.zeros((4, z, 3))
+    kvc = np.zeros((4, z, 3))
+    kr = np.zeros((4, 6))
+    y0x = xb.copy()
+    y0v = vb.copy()
+    y0w = wb.copy()
+    y0xc = xc.copy()
+    y0vc = vc.copy()
+    y0r = ring.copy()
+    n_samp = 0
+    for step in range(n_steps):
+        t = t0 + step * dt
+        y0x[:, :] = xb
+        y0v[:, :] = vb
+        y0w[:, :] = wb
+        y0xc[:, :] = xc
+        y0vc[:, :] = vc
+        y0r[:] = ring
+        worst = _rk_stage(t, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc, fr, fring, glob, diag,
+                          cage_load, kx, kv, kw, kxc, kvc, kr, 0)
+        if worst > p[P_MAX_OVERLAP] or not math.isfinite(worst):
+            return step, n_samp, 2
+        _rk_set(y0x, y0v, y0w, y0xc, y0vc, y0r, kx, kv, kw, kxc, kvc, kr, 0, 0.5 * dt, xb, vb, wb, xc, vc, ring)
+        _rk_stage(t + 0.5 * dt, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc, fr, fring, glob, diag,
+                  cage_load, kx, kv, kw, kxc, kvc, kr, 1)
+        _rk_set(y0x, y0v, y0w, y0xc, y0vc, y0r, kx, kv, kw, kxc, kvc, kr, 1, 0.5 * dt, xb, vb, wb, xc, vc, ring)
+        _rk_stage(t + 0.5 * dt, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc, fr, fring, glob, diag,
+                  cage_load, kx, kv, kw, kxc, kvc, kr, 2)
+        _rk_set(y0x, y0v, y0w, y0xc, y0vc, y0r, kx, kv, kw, kxc, kvc, kr, 2, dt, xb, vb, wb, xc, vc, ring)
+        _rk_stage(t + dt, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc, fr, fring, glob, diag,
+                  cage_load, kx, kv, kw, kxc, kvc, kr, 3)
+        c = dt / 6.0
+        for j in range(z):
+            for d in range(3):
+                xb[j, d] = y0x[j, d] + c * (kx[0, j, d] + 2 * kx[1, j, d] + 2 * kx[2, j, d] + kx[3, j, d])
+                vb[j, d] = y0v[j, d] + c * (kv[0, j, d] + 2 * kv[1, j, d] + 2 * kv[2, j, d] + kv[3, j, d])
+                wb[j, d] = y0w[j, d] + c * (kw[0, j, d] + 2 * kw[1, j, d] + 2 * kw[2, j, d] + kw[3, j, d])
+                xc[j, d] = y0xc[j, d] + c * (kxc[0, j, d] + 2 * kxc[1, j, d] + 2 * kxc[2, j, d] + kxc[3, j, d])
+                vc[j, d] = y0vc[j, d] + c * (kvc[0, j, d] + 2 * kvc[1, j, d] + 2 * kvc[2, j, d] + kvc[3, j, d])
+        for d in range(6):
+            ring[d] = y0r[d] + c * (kr[0, d] + 2 * kr[1, d] + 2 * kr[2, d] + kr[3, d])
+        want = (step0 + step + 1) % sample_every == 0 and n_samp < s_t.shape[0]
+        if want:
+            evaluate(t + dt, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc, fr, fring, glob, diag,
+                   cage_load, True)
+            _store(n_samp, t + dt, glob, diag, cage_load, xb, vb, wb, xc, vc, ring,
+                   s_t, s_glob, s_diag, s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring)
+            n_samp += 1
+        if not (np.all(np.isfinite(xb)) and np.all(np.isfinite(vb)) and np.all(np.isfinite(ring))):
+            return step + 1, n_samp, 1
+    return n_steps, n_samp, 0
