@@ -1,0 +1,57 @@
+"""Command line: ``python -m exudyn_bearing`` / ``exudyn-bearing``.
+
+Sub-commands (``--json`` for scripts, tables otherwise):
+
+* ``info BEARING [--omega W]``: geometry, Hertz constants, kinematics.
+* ``static BEARING --Fr N [--Fa N] [--Pd M] [--omega W] [--film hd|mk]
+  [--plot FILE.png]``: quasi-static load distribution and lubrication map.
+* ``simulate --bearing B --Fr N --omega W --engine reference --t-end T
+  [--out DIR] [--json]``: dynamic simulation; summary keys of
+  :meth:`exudyn_bearing.outputs.results.Results.summary`.
+
+BEARING is a catalogue name (6208, 7208, 6004, ACBB-120) or a JSON file with
+the geometry (format of ``exudyn_bearing/data/catalog.json``). Bad input
+exits with status 2 and a one-line message naming the parameter.
+"""
+from __future__ import annotations
+
+import sys
+
+from ..data import InputError
+from ..model.stability import SimulationError
+from . import info, simulate, static
+from .common import Parser
+
+__all__ = ["main"]
+
+#: Sub-commands: name -> module with ``add_parser(subparsers)`` and ``run(args)``.
+COMMANDS = {"info": info, "static": static, "simulate": simulate}
+
+
+def _parser() -> Parser:
+    p = Parser(prog="exudyn-bearing", description=__doc__.split("\n")[0])
+    sub = p.add_subparsers(dest="command", required=True, parser_class=Parser)
+    for module in COMMANDS.values():
+        module.add_parser(sub)
+    return p
+
+
+def main(argv=None) -> int:
+    """Entry point; returns the exit status."""
+    args = _parser().parse_args(argv)
+    try:
+        COMMANDS[args.command].run(args)
+    except (InputError, ValueError) as exc:
+        print(f"exudyn-bearing: error: {exc}", file=sys.stderr)
+        return 2
+    except SimulationError as exc:
+        print(f"exudyn-bearing: error: {exc}", file=sys.stderr)
+        return 3
+    except OSError as exc:
+        print(f"exudyn-bearing: error: {exc}", file=sys.stderr)
+        return 2
+    return 0
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())
