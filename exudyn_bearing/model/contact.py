@@ -1,19 +1,39 @@
-"""Compiled kernels of the DEM reference engine (numba, cache=True).
+"""The contact kernel of the compiled bearing model (numba, cache=True):
+every contact force of the bearing in one call, shared by the reference
+engine and the Exudyn element.
 
-One force evaluation for the whole bearing per call, over flat float64
-arrays; the physics relations come from :mod:`exudyn_bearing.physics`
-(the same kernels the Exudyn element uses). No allocation in the hot loop.
+:func:`forces` loops over the contacts and calls one function per contact
+kind, each inlined by numba (``inline="always"``), so the split costs no
+calls in the hot loop (it allocates nothing and is compiled without numba's
+memory runtime, so that the inlined array arguments carry no reference
+counting: ``exudyn_bearing._jit.kernel``):
 
-State
------
-``xb, vb, wb`` (Z, 3): ball centre, velocity, angular velocity (world frame);
-``xc, vc`` (Z, 3): cage balls (cage ball k sits between balls k and k+1);
-``ring`` (6,): inner-ring position and velocity (it translates; its spin is
-prescribed); ``hist`` (Z, 2, 3): Cundall-Strack tangential displacement of
-the inner (0) and outer (1) contact of every ball.
+* :func:`_race_contact`: ball / raceway (elliptic Hertz or the peer power
+  law, Lambda-switched damping and friction, Cundall-Strack or regularised
+  tangential force), built from :func:`_ring_frame`, :func:`_hertz_constants`,
+  :func:`_normal_law`, :func:`_surface_kinematics`, :func:`_lubrication` and
+  :func:`_tangential_force`;
+* :func:`_pair_contact`: ball / cage ball (or ball / ball without cage),
+  frictionless Hertz spheres with critical damping;
+* :func:`_guide_contact`: cage ball / its guide torus on the outer ring.
 
-Contact diagnostics (``diag``, (Z, 2, NDIAG)) are written when requested, in
-the order of :data:`DIAG_FIELDS`.
+The physics relations are the scalar kernels of :mod:`exudyn_bearing.physics`.
+Inputs (all float64, world frame):
+
+* ``p`` (N_PARAMS,): parameter vector, layout :mod:`.layout` (``P_*``);
+* ``table``: the tabulated exact Hertz solution (:func:`~exudyn_bearing.physics.hertz.exact_table`);
+* ``xb, vb, wb`` (Z, 3): ball centres, velocities, angular velocities;
+  ``xc, vc`` (Z, 3): cage balls (cage ball k sits between balls k and k+1);
+* ``rings`` (2, RING_N): pose of the inner (0) and outer (1) ring (:mod:`.layout`, ``R_*``);
+* ``hist`` (Z, 2, 3): Cundall-Strack tangential displacement of the inner
+  (0) and outer (1) contact of every ball at the last committed time,
+  ``dt_hist`` the time since then, ``hist_out`` where the updated state goes;
+* ``hz`` (Z, 2, 4): cache of R_y/R_x, k, F, E per contact.
+
+Outputs: ``fb, tb`` (Z, 3) force and moment on the balls, ``fc`` (Z, 3) on
+the cage balls, ``fr`` (2, 6) force and moment about its centre that balls
+and cage balls exert on each ring; with ``want`` also ``glob`` (NGLOBAL),
+``diag`` (Z, 2, NDIAG) and ``cage_load`` (Z, 2) (layouts in :mod:`.layout`).
 """
 from __future__ import annotations
 
@@ -22,7 +42,6 @@ import math
 import numpy as np
 
 from .._jit import kernel
-
 from ..physics.damping import (_damping_critical, _damping_fluid, _damping_hysteretic, damping_coefficient,
                                lubrication_regime)
 from ..physics.ehl import _film_thickness
@@ -30,10 +49,13 @@ from ..physics.friction import (_implicit_tangential_stiffness, _regularized_cou
                                 friction_coefficient)
 from ..physics.geometry import _groove_geometry, _raceway_radii_cos
 from ..physics.hertz import _curvature_sum_radius, _kfe_fast, _semi_axes, _stiffness
-from .layout import (FRIC_HISTORY, FRIC_REGULARIZED, P_ALPHA_E, P_CAGE, P_DT, P_EPRIME, P_ETA, P_FILM, P_FRIC,
-                     P_HERTZ, P_K_BB, P_K_BZ, P_K_GUIDE, P_KT_IMPLICIT, P_KT_RATIO, P_L1, P_L3, P_LAW, P_LAW_D,
-                     P_LAW_K, P_LAW_N, P_LUB, P_MB, P_MU_B, P_MU_DRY, P_MU_F, P_MZ, P_RB, P_RCI, P_RCO, P_RGUIDE,
-                     P_RHO_I, P_RHO_O, P_RP, P_RZ, P_SIGMA, P_VREG, P_XI, P_ZG_I, P_ZG_O)
+from .layout import (D_A, D_ANGLE, D_B, D_FRICTION, D_HMIN, D_LAMBDA, D_LOAD, D_MU, D_OVERLAP, D_PMAX, D_REGIME,
+                     D_SLIP, D_SRR, D_UR, FRIC_HISTORY, FRIC_REGULARIZED, G_OMEGA, G_OUTER_FX, G_OUTER_FY,
+                     G_OUTER_FZ, G_OUTER_TORQUE, G_POWER, G_RING_FX, G_RING_FY, G_RING_FZ, G_RING_TORQUE, G_WORST,
+                     P_ALPHA_E, P_CAGE, P_DT, P_EPRIME, P_ETA, P_FILM, P_FRIC, P_HERTZ, P_K_BB, P_K_BZ, P_K_GUIDE,
+                     P_KT_IMPLICIT, P_KT_RATIO, P_L1, P_L3, P_LAW, P_LAW_D, P_LAW_K, P_LAW_N, P_LUB, P_MB, P_MU_B,
+                     P_MU_DRY, P_MU_F, P_MZ, P_RB, P_RCI, P_RCO, P_RGUIDE, P_RHO_I, P_RHO_O, P_RP, P_RZ, P_SIGMA,
+                     P_VREG, P_XI, P_ZG_I, P_ZG_O)
 
 __all__ = ["forces"]
 
@@ -43,26 +65,377 @@ def _cross(a0, a1, a2, b0, b1, b2):
     return a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0
 
 
-@kernel
+@kernel(inline="always")
+def _ring_frame(rings, r, x, y, z):
+    """Point (x, y, z) relative to ring r's centre in the world frame (d) and
+    in the ring frame (c = A^T d); ``rotated`` False when the ring's rotation
+    matrix is the identity (the reference engine), which skips the products."""
+    dxw = x - rings[r, 0]
+    dyw = y - rings[r, 1]
+    dzw = z - rings[r, 2]
+    rotated = not (rings[r, 6] == 1.0 and rings[r, 10] == 1.0 and rings[r, 14] == 1.0)
+    if rotated:
+        cx = rings[r, 6] * dxw + rings[r, 9] * dyw + rings[r, 12] * dzw
+        cy = rings[r, 7] * dxw + rings[r, 10] * dyw + rings[r, 13] * dzw
+        cz = rings[r, 8] * dxw + rings[r, 11] * dyw + rings[r, 14] * dzw
+    else:
+        cx, cy, cz = dxw, dyw, dzw
+    return dxw, dyw, dzw, cx, cy, cz, rotated
+
+
+@kernel(inline="always")
+def _hertz_constants(p, table, hz, j, race, rx, ry):
+    """k, F, E of contact (j, race) (hertz.py), re-evaluated only when R_y/R_x
+    moved by more than 1e-6 (relative) since the last evaluation (cache ``hz``)."""
+    aspect = ry / rx
+    if abs(aspect - hz[j, race, 0]) > 1e-6 * aspect:
+        kappa, ell_f, ell_e = _kfe_fast(rx, ry, int(p[P_HERTZ]), table)
+        hz[j, race, 0] = aspect
+        hz[j, race, 1] = kappa
+        hz[j, race, 2] = ell_f
+        hz[j, race, 3] = ell_e
+        return kappa, ell_f, ell_e
+    return hz[j, race, 1], hz[j, race, 2], hz[j, race, 3]
+
+
+@kernel(inline="always")
+def _normal_law(p, delta, kappa, ell_f, ell_e, rr):
+    """Elastic normal load Q [N], tangent stiffness dQ/d delta [N/m] and
+    hysteretic damping C_hyst [N s/m] at the overlap delta: Hertz
+    Q = K delta^1.5 with the Hunt-Crossley damping, or the peer power law
+    k delta^n (whose own linear damping replaces C_hyst)."""
+    if p[P_LAW] > 0.5:
+        q_el = p[P_LAW_K] * delta ** p[P_LAW_N]
+        return q_el, p[P_LAW_N] * q_el / delta, 0.0
+    kst = _stiffness(kappa, ell_f, ell_e, rr, p[P_EPRIME])
+    sq = math.sqrt(delta)
+    return kst * delta * sq, 1.5 * kst * sq, _damping_hysteretic(kst, delta, p[P_ALPHA_E])
+
+
+@kernel(inline="always")
+def _surface_kinematics(rings, r, xb, vb, wb, j, dxw, dyw, dzw, cx, cy, nx, ny, nz, lev):
+    """Velocities at the contact point, lever ``lev`` from the ball centre
+    along the normal n: approach rate d(delta)/dt, tangential slip velocity
+    (s, |s|), rolling (entrainment) speed u_r = |mean surface velocity
+    relative to the contact point|, the contact point carried by the ball's
+    orbital motion about the ring axis; also the lever l and the contact
+    point relative to the ring centre."""
+    lx, ly, lz = lev * nx, lev * ny, lev * nz
+    bx, by, bz = _cross(wb[j, 0], wb[j, 1], wb[j, 2], lx, ly, lz)
+    vbs_x = vb[j, 0] + bx
+    vbs_y = vb[j, 1] + by
+    vbs_z = vb[j, 2] + bz
+    px = dxw + lx
+    py = dyw + ly
+    pz = dzw + lz
+    wrx, wry, wrz = rings[r, 15], rings[r, 16], rings[r, 17]
+    rwx, rwy, rwz = _cross(wrx, wry, wrz, px, py, pz)
+    vrs_x = rings[r, 3] + rwx
+    vrs_y = rings[r, 4] + rwy
+    vrs_z = rings[r, 5] + rwz
+    # normal approach rate d(delta)/dt = n . (v_ball - v_ring - w_ring x d)
+    ex, ey, ez = _cross(wrx, wry, wrz, dxw, dyw, dzw)
+    vrx = vb[j, 0] - rings[r, 3]
+    vry = vb[j, 1] - rings[r, 4]
+    vrz = vb[j, 2] - rings[r, 5]
+    ddot = (vrx - ex) * nx + (vry - ey) * ny + (vrz - ez) * nz
+    # slip: tangential relative velocity of the surfaces
+    sx = vbs_x - vrs_x
+    sy = vbs_y - vrs_y
+    sz = vbs_z - vrs_z
+    sn = sx * nx + sy * ny + sz * nz
+    sx -= sn * nx
+    sy -= sn * ny
+    sz -= sn * nz
+    slip = math.sqrt(sx * sx + sy * sy + sz * sz)
+    # rolling speed: mean surface velocity relative to the contact point,
+    # which is carried by the ball's orbital motion about the ring axis e
+    a02, a12, a22 = rings[r, 8], rings[r, 11], rings[r, 14]
+    r2 = cx * cx + cy * cy
+    tx_, ty_, tz_ = _cross(dxw, dyw, dzw, vrx, vry, vrz)
+    w_orb = (a02 * tx_ + a12 * ty_ + a22 * tz_) / r2 if r2 > 0.0 else 0.0
+    ox_, oy_, oz_ = _cross(a02, a12, a22, lx, ly, lz)
+    mx = 0.5 * (vbs_x + vrs_x) - (vb[j, 0] + w_orb * ox_)
+    my = 0.5 * (vbs_y + vrs_y) - (vb[j, 1] + w_orb * oy_)
+    mz = 0.5 * (vbs_z + vrs_z) - (vb[j, 2] + w_orb * oz_)
+    mn = mx * nx + my * ny + mz * nz
+    mx -= mn * nx
+    my -= mn * ny
+    mz -= mn * nz
+    u_r = math.sqrt(mx * mx + my * my + mz * mz)
+    return ddot, sx, sy, sz, slip, u_r, lx, ly, lz, px, py, pz
+
+
+@kernel(inline="always")
+def _lubrication(p, u_r, q_el, rx, kappa, major, c_hyst):
+    """Film h_min [m], Lambda, regime code, normal damping C_n [N s/m] and
+    friction coefficient mu of a contact: the Lambda-switched model of the
+    DEM papers (ehl.py, damping.py, friction.py), constant mu_dry and C_hyst
+    without lubrication, or the peer power law's own damping and mu."""
+    if p[P_LAW] > 0.5:
+        return 0.0, 0.0, 0, p[P_LAW_D], p[P_MU_DRY]
+    if p[P_LUB] > 0.5:
+        h = _film_thickness(int(p[P_FILM]), u_r, q_el, rx, kappa, p[P_EPRIME], p[P_ETA], p[P_XI])
+        lam = h / p[P_SIGMA]
+        regime = lubrication_regime(lam, p[P_L1], p[P_L3])
+        if regime == 0:
+            c_n = c_hyst
+        else:
+            c_fl = _damping_fluid(p[P_ETA], major, p[P_RB], h)
+            c_n = damping_coefficient(lam, c_hyst, c_fl, p[P_L1], p[P_L3])
+        return h, lam, regime, c_n, friction_coefficient(lam, p[P_MU_B], p[P_MU_F], p[P_L1], p[P_L3])
+    return 0.0, 0.0, 0, c_hyst, p[P_MU_DRY]
+
+
+@kernel(inline="always")
+def _tangential_force(p, hist, hist_out, dt_hist, j, race, nx, ny, nz, sx, sy, sz, slip, k_n, f_n, mu):
+    """Tangential force on the ball (friction.py): the Cundall-Strack spring
+    with Coulomb cap (the spring kept in ``hist``, rotated into the current
+    tangent plane, incremented by the slip over ``dt_hist``, rescaled when
+    sliding; explicit K_t or its implicit step-consistent value), regularised
+    Coulomb on the slip velocity, or none."""
+    fric = int(p[P_FRIC])
+    if fric == FRIC_HISTORY:
+        hx, hy, hzt = hist[j, race, 0], hist[j, race, 1], hist[j, race, 2]
+        hmag = math.sqrt(hx * hx + hy * hy + hzt * hzt)
+        if hmag > 0.0:
+            hn = hx * nx + hy * ny + hzt * nz
+            hx -= hn * nx
+            hy -= hn * ny
+            hzt -= hn * nz
+            hm2 = math.sqrt(hx * hx + hy * hy + hzt * hzt)
+            if hm2 > 0.0:
+                s = hmag / hm2
+                hx *= s
+                hy *= s
+                hzt *= s
+        hx += sx * dt_hist
+        hy += sy * dt_hist
+        hzt += sz * dt_hist
+        k_t = p[P_KT_RATIO] * k_n
+        if p[P_KT_IMPLICIT] > 0.5:
+            k_t = _implicit_tangential_stiffness(k_t, p[P_DT], _sphere_tangential_mass(p[P_MB]))
+        ftx = -k_t * hx
+        fty = -k_t * hy
+        ftz = -k_t * hzt
+        fmag = math.sqrt(ftx * ftx + fty * fty + ftz * ftz)
+        cap = mu * f_n
+        if fmag > cap:
+            s = cap / fmag
+            ftx *= s
+            fty *= s
+            ftz *= s
+            hx = -ftx / k_t
+            hy = -fty / k_t
+            hzt = -ftz / k_t
+        hist_out[j, race, 0] = hx
+        hist_out[j, race, 1] = hy
+        hist_out[j, race, 2] = hzt
+        return ftx, fty, ftz
+    if fric == FRIC_REGULARIZED and slip > 0.0:
+        fmag = _regularized_coulomb(slip, f_n, mu, p[P_VREG])
+        return -fmag * sx / slip, -fmag * sy / slip, -fmag * sz / slip
+    return 0.0, 0.0, 0.0
+
+
+@kernel(inline="always")
+def _open_contact(hist_out, diag, j, race, delta, ca, sa, want):
+    """A ball / raceway contact without overlap: its tangential spring is
+    reset; diagnostics zero, the gap, the contact angle, no film (NaN) and
+    regime -1."""
+    hist_out[j, race, 0] = 0.0
+    hist_out[j, race, 1] = 0.0
+    hist_out[j, race, 2] = 0.0
+    if want:
+        for k in range(diag.shape[2]):
+            diag[j, race, k] = 0.0
+        diag[j, race, D_OVERLAP] = delta
+        diag[j, race, D_ANGLE] = math.atan2(sa, ca)
+        diag[j, race, D_HMIN] = np.nan
+        diag[j, race, D_LAMBDA] = np.nan
+        diag[j, race, D_REGIME] = -1.0
+        diag[j, race, D_MU] = np.nan
+
+
+@kernel(inline="always")
+def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist, hz, fb, tb, fr, diag, want):
+    """Ball j on the inner (race 0, ring 0) or outer (race 1, ring 1) groove.
+
+    Adds the contact force and moment to ball j (fb, tb) and the reaction to
+    the ring (fr); writes the spring to ``hist_out`` and, with ``want``, the
+    diagnostics. Returns (overlap / R_b, frictional power [W]); (0, 0) when
+    the contact is open."""
+    inner = race == 0
+    if inner:
+        rho, zg, rc = p[P_RHO_I], p[P_ZG_I], p[P_RCI]
+    else:
+        rho, zg, rc = p[P_RHO_O], p[P_ZG_O], p[P_RCO]
+    rb = p[P_RB]
+    dxw, dyw, dzw, cx, cy, cz, rotated = _ring_frame(rings, race, xb[j, 0], xb[j, 1], xb[j, 2])
+    delta, nlx, nly, nlz, ca, sa, r_contact = _groove_geometry(cx, cy, cz, rho, zg, rc, rb, inner)
+    if delta <= 0.0:
+        _open_contact(hist_out, diag, j, race, delta, ca, sa, want)
+        return 0.0, 0.0
+    # contact normal in the world frame, n = A n_local
+    if rotated:
+        nx = rings[race, 6] * nlx + rings[race, 7] * nly + rings[race, 8] * nlz
+        ny = rings[race, 9] * nlx + rings[race, 10] * nly + rings[race, 11] * nlz
+        nz = rings[race, 12] * nlx + rings[race, 13] * nly + rings[race, 14] * nlz
+    else:
+        nx, ny, nz = nlx, nly, nlz
+    # elliptic Hertz at the current contact angle
+    rx, ry = _raceway_radii_cos(rb, rc, r_contact, ca, inner)
+    kappa, ell_f, ell_e = _hertz_constants(p, table, hz, j, race, rx, ry)
+    rr = _curvature_sum_radius(rx, ry)
+    q_el, k_n, c_hyst = _normal_law(p, delta, kappa, ell_f, ell_e, rr)
+    if want or p[P_LUB] > 0.5:
+        major, minor = _semi_axes(kappa, ell_e, rr, p[P_EPRIME], q_el)
+    else:
+        major = minor = 0.0
+    # contact point: middle of the overlap (n points from the groove centre to the
+    # ball centre; the groove surface p + R_c n lies beyond the ball centre along n)
+    ddot, sx, sy, sz, slip, u_r, lx, ly, lz, px, py, pz = _surface_kinematics(
+        rings, race, xb, vb, wb, j, dxw, dyw, dzw, cx, cy, nx, ny, nz, rb - 0.5 * delta)
+    h, lam, regime, c_n, mu = _lubrication(p, u_r, q_el, rx, kappa, major, c_hyst)
+    f_n = q_el + c_n * ddot
+    if f_n < 0.0:
+        f_n = 0.0
+    ftx, fty, ftz = _tangential_force(p, hist, hist_out, dt_hist, j, race, nx, ny, nz, sx, sy, sz, slip, k_n,
+                                      f_n, mu)
+    # forces on the ball: the normal pushes it back towards the groove centre
+    fb[j, 0] += -f_n * nx + ftx
+    fb[j, 1] += -f_n * ny + fty
+    fb[j, 2] += -f_n * nz + ftz
+    mx_, my_, mz_ = _cross(lx, ly, lz, ftx, fty, ftz)
+    tb[j, 0] += mx_
+    tb[j, 1] += my_
+    tb[j, 2] += mz_
+    # reaction on the ring, at the contact point
+    frx = f_n * nx - ftx
+    fry = f_n * ny - fty
+    frz = f_n * nz - ftz
+    fr[race, 0] += frx
+    fr[race, 1] += fry
+    fr[race, 2] += frz
+    mx_, my_, mz_ = _cross(px, py, pz, frx, fry, frz)
+    fr[race, 3] += mx_
+    fr[race, 4] += my_
+    fr[race, 5] += mz_
+    if want:
+        if ry >= rx:
+            a_ax, b_ax = major, minor
+        else:
+            a_ax, b_ax = minor, major
+        diag[j, race, D_LOAD] = f_n
+        diag[j, race, D_OVERLAP] = delta
+        diag[j, race, D_ANGLE] = math.atan2(sa, ca)
+        diag[j, race, D_A] = a_ax
+        diag[j, race, D_B] = b_ax
+        diag[j, race, D_PMAX] = 1.5 * q_el / (math.pi * a_ax * b_ax) if a_ax * b_ax > 0.0 else 0.0
+        diag[j, race, D_UR] = u_r
+        diag[j, race, D_HMIN] = h
+        diag[j, race, D_LAMBDA] = lam if p[P_LUB] > 0.5 else np.nan
+        diag[j, race, D_REGIME] = regime
+        diag[j, race, D_MU] = mu
+        diag[j, race, D_SLIP] = slip
+        diag[j, race, D_SRR] = slip / u_r if u_r > 0.0 else 0.0
+        diag[j, race, D_FRICTION] = math.sqrt(ftx * ftx + fty * fty + ftz * ftz)
+    return delta / rb, -(ftx * sx + fty * sy + ftz * sz)
+
+
+@kernel(inline="always")
+def _pair_contact(ia, ib, xb, vb, fb, px_, pv_, pf_, r_sum, k_pair, m_pair):
+    """Ball ia against sphere ib of (px_, pv_) (a cage ball, or the next ball
+    without cage): frictionless Hertz with critical damping; adds the force
+    to fb[ia] and its reaction to pf_[ib]; returns the contact force [N]."""
+    dx = xb[ia, 0] - px_[ib, 0]
+    dy = xb[ia, 1] - px_[ib, 1]
+    dz = xb[ia, 2] - px_[ib, 2]
+    d2 = dx * dx + dy * dy + dz * dz
+    if not (d2 < r_sum * r_sum and d2 > 0.0):
+        return 0.0
+    dist = math.sqrt(d2)
+    delta = r_sum - dist
+    inv = 1.0 / dist
+    nx, ny, nz = dx * inv, dy * inv, dz * inv
+    sq = math.sqrt(delta)
+    c = _damping_critical(m_pair, 1.5 * k_pair * sq)
+    ddot = -((vb[ia, 0] - pv_[ib, 0]) * nx + (vb[ia, 1] - pv_[ib, 1]) * ny + (vb[ia, 2] - pv_[ib, 2]) * nz)
+    f = k_pair * delta * sq + c * ddot
+    if f < 0.0:
+        f = 0.0
+    fb[ia, 0] += f * nx
+    fb[ia, 1] += f * ny
+    fb[ia, 2] += f * nz
+    pf_[ib, 0] -= f * nx
+    pf_[ib, 1] -= f * ny
+    pf_[ib, 2] -= f * nz
+    return f
+
+
+@kernel(inline="always")
+def _guide_contact(k, p, xc, vc, rings, fc, fr):
+    """Cage ball k in its guide torus, fixed to the outer ring (ring 1): tube-
+    centre circle r_p in the ring's radial plane, tube radius R_z + guide
+    clearance; frictionless Hertz, R_eq = R_z, critical damping. Adds the
+    force to fc[k] and its reaction to fr[1]."""
+    rz = p[P_RZ]
+    free = p[P_RGUIDE] - rz
+    dxw, dyw, dzw, cx, cy, cz, _rot = _ring_frame(rings, 1, xc[k, 0], xc[k, 1], xc[k, 2])
+    dr = math.sqrt(cx * cx + cy * cy) - p[P_RP]
+    if dr * dr + cz * cz <= free * free:
+        return
+    delta, nlx, nly, nlz, _ca, _sa, _rc = _groove_geometry(cx, cy, cz, p[P_RP], 0.0, p[P_RGUIDE], rz, False)
+    if delta <= 0.0:
+        return
+    nx = rings[1, 6] * nlx + rings[1, 7] * nly + rings[1, 8] * nlz
+    ny = rings[1, 9] * nlx + rings[1, 10] * nly + rings[1, 11] * nlz
+    nz = rings[1, 12] * nlx + rings[1, 13] * nly + rings[1, 14] * nlz
+    ex, ey, ez = _cross(rings[1, 15], rings[1, 16], rings[1, 17], dxw, dyw, dzw)
+    vn = ((vc[k, 0] - rings[1, 3] - ex) * nx + (vc[k, 1] - rings[1, 4] - ey) * ny
+          + (vc[k, 2] - rings[1, 5] - ez) * nz)
+    sq = math.sqrt(delta)
+    kst = p[P_K_GUIDE]
+    c = _damping_critical(p[P_MZ], 1.5 * kst * sq)
+    f = kst * delta * sq + c * vn
+    if f > 0.0:
+        fc[k, 0] -= f * nx
+        fc[k, 1] -= f * ny
+        fc[k, 2] -= f * nz
+        fr[1, 0] += f * nx
+        fr[1, 1] += f * ny
+        fr[1, 2] += f * nz
+        mx_, my_, mz_ = _cross(dxw, dyw, dzw, f * nx, f * ny, f * nz)
+        fr[1, 3] += mx_
+        fr[1, 4] += my_
+        fr[1, 5] += mz_
+
+
+@kernel(inline="always")
+def _global_diagnostics(rings, fr, power, worst, glob):
+    """Ring speeds, reactions and torques about the ring axes, frictional power, worst overlap."""
+    ex, ey, ez = rings[0, 8], rings[0, 11], rings[0, 14]
+    glob[G_OMEGA] = ex * rings[0, 15] + ey * rings[0, 16] + ez * rings[0, 17]
+    glob[G_RING_FX] = fr[0, 0]
+    glob[G_RING_FY] = fr[0, 1]
+    glob[G_RING_FZ] = fr[0, 2]
+    glob[G_RING_TORQUE] = ex * fr[0, 3] + ey * fr[0, 4] + ez * fr[0, 5]
+    glob[G_POWER] = power
+    glob[G_WORST] = worst
+    ex, ey, ez = rings[1, 8], rings[1, 11], rings[1, 14]
+    glob[G_OUTER_FX] = fr[1, 0]
+    glob[G_OUTER_FY] = fr[1, 1]
+    glob[G_OUTER_FZ] = fr[1, 2]
+    glob[G_OUTER_TORQUE] = ex * fr[1, 3] + ey * fr[1, 4] + ez * fr[1, 5]
+
+
+@kernel(no_runtime=True)
 def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb, tb, fc, fr, glob, diag,
            cage_load, want):
-    """All contact forces (one call for the whole bearing).
-
-    ``hist`` is the Cundall-Strack state at the last committed time and
-    ``dt_hist`` the time since then; the updated state goes to ``hist_out``
-    (the same array when every evaluation is a committed step, as in the
-    reference engine). ``rings`` (2, RING_N) holds the pose of the inner (0) and outer (1) ring:
-    centre, velocity, rotation matrix (row-major; the bearing axis is the
-    ring's local z) and angular velocity, all in the world frame. Writes fb,
-    tb (balls), fc (cage balls), fr (2, 6: force and torque about its centre
-    that the balls exert on each ring); with ``want`` also glob (NGLOBAL),
-    diag (Z, 2, NDIAG) and cage_load (Z, 2). Returns the largest overlap / R_b.
-
-    The contact laws are the scalar physics functions of exudyn_bearing.physics
-    (scalar arguments, so numba compiles them into the loop); the loops avoid
-    calls that pass arrays, which carry a per-call overhead comparable to a
-    frictionless contact check.
-    """
+    """All contact forces of the bearing (one call; inputs and outputs in the
+    module docstring). ``hist_out`` may be ``hist`` (every evaluation a
+    committed step, as in the reference engine). Returns the largest
+    overlap / R_b of the ball / raceway contacts."""
     z = xb.shape[0]
     fb[:, :] = 0.0
     tb[:, :] = 0.0
@@ -70,251 +443,14 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb,
     fr[:, :] = 0.0
     power_sum = 0.0
     worst = 0.0
-    # -- ball / raceway contacts: race 0 the inner groove on ring 0, race 1 the
-    # outer groove on ring 1 (PHYSICS.md sec. 2-6)
     for j in range(z):
         for race in range(2):
-            inner = race == 0
-            ox, oy, oz = rings[race, 0], rings[race, 1], rings[race, 2]
-            uvx, uvy, uvz = rings[race, 3], rings[race, 4], rings[race, 5]
-            a00, a01, a02 = rings[race, 6], rings[race, 7], rings[race, 8]
-            a10, a11, a12 = rings[race, 9], rings[race, 10], rings[race, 11]
-            a20, a21, a22 = rings[race, 12], rings[race, 13], rings[race, 14]
-            wrx, wry, wrz = rings[race, 15], rings[race, 16], rings[race, 17]
-            if inner:
-                rho, zg, rc = p[P_RHO_I], p[P_ZG_I], p[P_RCI]
-            else:
-                rho, zg, rc = p[P_RHO_O], p[P_ZG_O], p[P_RCO]
-            rb = p[P_RB]
-            # ball centre relative to the ring centre: world (d) and ring frame (c = A^T d)
-            dxw = xb[j, 0] - ox
-            dyw = xb[j, 1] - oy
-            dzw = xb[j, 2] - oz
-            rotated = not (a00 == 1.0 and a11 == 1.0 and a22 == 1.0)
-            if rotated:
-                cx = a00 * dxw + a10 * dyw + a20 * dzw
-                cy = a01 * dxw + a11 * dyw + a21 * dzw
-                cz = a02 * dxw + a12 * dyw + a22 * dzw
-            else:  # unrotated ring (the reference engine): skip the transformation
-                cx, cy, cz = dxw, dyw, dzw
-            delta, nlx, nly, nlz, ca, sa, r_contact = _groove_geometry(cx, cy, cz, rho, zg, rc, rb, inner)
-            if delta <= 0.0:
-                hist_out[j, race, 0] = 0.0
-                hist_out[j, race, 1] = 0.0
-                hist_out[j, race, 2] = 0.0
-                if want:
-                    for k in range(diag.shape[2]):
-                        diag[j, race, k] = 0.0
-                    diag[j, race, 1] = delta
-                    diag[j, race, 2] = math.atan2(sa, ca)
-                    diag[j, race, 7] = np.nan
-                    diag[j, race, 8] = np.nan
-                    diag[j, race, 9] = -1.0
-                    diag[j, race, 10] = np.nan
-                continue
-            ratio = delta / rb
+            ratio, power = _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist, hz, fb,
+                                         tb, fr, diag, want)
             if ratio > worst:
                 worst = ratio
-            # contact normal in the world frame, n = A n_local
-            if rotated:
-                nx = a00 * nlx + a01 * nly + a02 * nlz
-                ny = a10 * nlx + a11 * nly + a12 * nlz
-                nz = a20 * nlx + a21 * nly + a22 * nlz
-            else:
-                nx, ny, nz = nlx, nly, nlz
-            # Hertz (PHYSICS.md sec. 3) at the current contact angle; k, F, E are
-            # re-evaluated when R_y/R_x moved by more than 1e-6 (relative) since the
-            # last evaluation for this contact, K from them and the current radii
-            rx, ry = _raceway_radii_cos(rb, rc, r_contact, ca, inner)
-            e_prime = p[P_EPRIME]
-            aspect = ry / rx
-            if abs(aspect - hz[j, race, 0]) > 1e-6 * aspect:
-                kappa, ell_f, ell_e = _kfe_fast(rx, ry, int(p[P_HERTZ]), table)
-                hz[j, race, 0] = aspect
-                hz[j, race, 1] = kappa
-                hz[j, race, 2] = ell_f
-                hz[j, race, 3] = ell_e
-            else:
-                kappa = hz[j, race, 1]
-                ell_f = hz[j, race, 2]
-                ell_e = hz[j, race, 3]
-            rr = _curvature_sum_radius(rx, ry)
-            power_law = p[P_LAW] > 0.5
-            if power_law:
-                q_el = p[P_LAW_K] * delta ** p[P_LAW_N]
-                k_n = p[P_LAW_N] * q_el / delta
-                c_hyst = 0.0  # the power law has its own linear damping
-            else:
-                kst = _stiffness(kappa, ell_f, ell_e, rr, e_prime)
-                sq = math.sqrt(delta)
-                q_el = kst * delta * sq
-                k_n = 1.5 * kst * sq
-                c_hyst = _damping_hysteretic(kst, delta, p[P_ALPHA_E])
-            need_axes = want or p[P_LUB] > 0.5
-            if need_axes:
-                major, minor = _semi_axes(kappa, ell_e, rr, e_prime, q_el)
-            else:
-                major = minor = 0.0
-            # contact point: middle of the overlap, lever from the ball centre
-            lev = rb - 0.5 * delta
-            # (n points from the groove centre to the ball centre; the groove surface
-            # p + R_c n lies beyond the ball centre along n, for both races)
-            lx, ly, lz = lev * nx, lev * ny, lev * nz
-            # surface velocities at the contact point
-            bx, by, bz = _cross(wb[j, 0], wb[j, 1], wb[j, 2], lx, ly, lz)
-            vbs_x = vb[j, 0] + bx
-            vbs_y = vb[j, 1] + by
-            vbs_z = vb[j, 2] + bz
-            # contact point relative to the ring centre, and the ring's surface velocity there
-            px = dxw + lx
-            py = dyw + ly
-            pz = dzw + lz
-            rwx, rwy, rwz = _cross(wrx, wry, wrz, px, py, pz)
-            vrs_x = uvx + rwx
-            vrs_y = uvy + rwy
-            vrs_z = uvz + rwz
-            # normal approach rate d(delta)/dt = n . (v_ball - v_ring - w_ring x d)
-            ex, ey, ez = _cross(wrx, wry, wrz, dxw, dyw, dzw)
-            vrx = vb[j, 0] - uvx
-            vry = vb[j, 1] - uvy
-            vrz = vb[j, 2] - uvz
-            ddot = (vrx - ex) * nx + (vry - ey) * ny + (vrz - ez) * nz
-            # slip (tangential relative velocity) and rolling speed
-            sx = vbs_x - vrs_x
-            sy = vbs_y - vrs_y
-            sz = vbs_z - vrs_z
-            sn = sx * nx + sy * ny + sz * nz
-            sx -= sn * nx
-            sy -= sn * ny
-            sz -= sn * nz
-            slip = math.sqrt(sx * sx + sy * sy + sz * sz)
-            # rolling speed: mean surface velocity relative to the contact point,
-            # which is carried by the ball's orbital motion about the ring axis e
-            r2 = cx * cx + cy * cy
-            tx_, ty_, tz_ = _cross(dxw, dyw, dzw, vrx, vry, vrz)
-            w_orb = (a02 * tx_ + a12 * ty_ + a22 * tz_) / r2 if r2 > 0.0 else 0.0
-            ox_, oy_, oz_ = _cross(a02, a12, a22, lx, ly, lz)
-            mx = 0.5 * (vbs_x + vrs_x) - (vb[j, 0] + w_orb * ox_)
-            my = 0.5 * (vbs_y + vrs_y) - (vb[j, 1] + w_orb * oy_)
-            mz = 0.5 * (vbs_z + vrs_z) - (vb[j, 2] + w_orb * oz_)
-            mn = mx * nx + my * ny + mz * nz
-            mx -= mn * nx
-            my -= mn * ny
-            mz -= mn * nz
-            u_r = math.sqrt(mx * mx + my * my + mz * mz)
-            # lubrication (PHYSICS.md sec. 4-5)
-            if power_law:
-                h = 0.0
-                lam = 0.0
-                regime = 0
-                c_n = p[P_LAW_D]
-                mu = p[P_MU_DRY]
-            elif p[P_LUB] > 0.5:
-                h = _film_thickness(int(p[P_FILM]), u_r, q_el, rx, kappa, e_prime, p[P_ETA], p[P_XI])
-                lam = h / p[P_SIGMA]
-                regime = lubrication_regime(lam, p[P_L1], p[P_L3])
-                if regime == 0:
-                    c_n = c_hyst
-                else:
-                    c_fl = _damping_fluid(p[P_ETA], major, rb, h)
-                    c_n = damping_coefficient(lam, c_hyst, c_fl, p[P_L1], p[P_L3])
-                mu = friction_coefficient(lam, p[P_MU_B], p[P_MU_F], p[P_L1], p[P_L3])
-            else:
-                h = 0.0
-                lam = 0.0
-                regime = 0
-                c_n = c_hyst
-                mu = p[P_MU_DRY]
-            f_n = q_el + c_n * ddot
-            if f_n < 0.0:
-                f_n = 0.0
-            # tangential force (PHYSICS.md sec. 6)
-            ftx = fty = ftz = 0.0
-            fric = int(p[P_FRIC])
-            if fric == FRIC_HISTORY:
-                hx, hy, hzt = hist[j, race, 0], hist[j, race, 1], hist[j, race, 2]
-                hmag = math.sqrt(hx * hx + hy * hy + hzt * hzt)
-                if hmag > 0.0:
-                    hn = hx * nx + hy * ny + hzt * nz
-                    hx -= hn * nx
-                    hy -= hn * ny
-                    hzt -= hn * nz
-                    hm2 = math.sqrt(hx * hx + hy * hy + hzt * hzt)
-                    if hm2 > 0.0:
-                        s = hmag / hm2
-                        hx *= s
-                        hy *= s
-                        hzt *= s
-                hx += sx * dt_hist
-                hy += sy * dt_hist
-                hzt += sz * dt_hist
-                dt = p[P_DT]
-                k_t = p[P_KT_RATIO] * k_n
-                if p[P_KT_IMPLICIT] > 0.5:
-                    k_t = _implicit_tangential_stiffness(k_t, dt, _sphere_tangential_mass(p[P_MB]))
-                ftx = -k_t * hx
-                fty = -k_t * hy
-                ftz = -k_t * hzt
-                fmag = math.sqrt(ftx * ftx + fty * fty + ftz * ftz)
-                cap = mu * f_n
-                if fmag > cap:
-                    s = cap / fmag
-                    ftx *= s
-                    fty *= s
-                    ftz *= s
-                    hx = -ftx / k_t
-                    hy = -fty / k_t
-                    hzt = -ftz / k_t
-                hist_out[j, race, 0] = hx
-                hist_out[j, race, 1] = hy
-                hist_out[j, race, 2] = hzt
-            elif fric == FRIC_REGULARIZED and slip > 0.0:
-                fmag = _regularized_coulomb(slip, f_n, mu, p[P_VREG])
-                ftx = -fmag * sx / slip
-                fty = -fmag * sy / slip
-                ftz = -fmag * sz / slip
-            # forces on the ball: normal pushes it back towards the groove centre
-            fb[j, 0] += -f_n * nx + ftx
-            fb[j, 1] += -f_n * ny + fty
-            fb[j, 2] += -f_n * nz + ftz
-            mx_, my_, mz_ = _cross(lx, ly, lz, ftx, fty, ftz)
-            tb[j, 0] += mx_
-            tb[j, 1] += my_
-            tb[j, 2] += mz_
-            power_sum -= ftx * sx + fty * sy + ftz * sz
-            # reaction on the ring, at the contact point
-            frx = f_n * nx - ftx
-            fry = f_n * ny - fty
-            frz = f_n * nz - ftz
-            fr[race, 0] += frx
-            fr[race, 1] += fry
-            fr[race, 2] += frz
-            mx_, my_, mz_ = _cross(px, py, pz, frx, fry, frz)
-            fr[race, 3] += mx_
-            fr[race, 4] += my_
-            fr[race, 5] += mz_
-            if want:
-                ft = math.sqrt(ftx * ftx + fty * fty + ftz * ftz)
-                if ry >= rx:
-                    a_ax, b_ax = major, minor
-                else:
-                    a_ax, b_ax = minor, major
-                diag[j, race, 0] = f_n
-                diag[j, race, 1] = delta
-                diag[j, race, 2] = math.atan2(sa, ca)
-                diag[j, race, 3] = a_ax
-                diag[j, race, 4] = b_ax
-                diag[j, race, 5] = 1.5 * q_el / (math.pi * a_ax * b_ax) if a_ax * b_ax > 0.0 else 0.0
-                diag[j, race, 6] = u_r
-                diag[j, race, 7] = h
-                diag[j, race, 8] = lam if p[P_LUB] > 0.5 else np.nan
-                diag[j, race, 9] = regime
-                diag[j, race, 10] = mu
-                diag[j, race, 11] = slip
-                diag[j, race, 12] = slip / u_r if u_r > 0.0 else 0.0
-                diag[j, race, 13] = ft
-    # -- ball / cage-ball (or, without cage, ball / ball) contacts: frictionless
-    # Hertz spheres with critical damping (PHYSICS.md sec. 4)
+            power_sum += power
+    # ball / cage-ball contacts (two per cage ball) or, without cage, ball / ball
     cage = p[P_CAGE] > 0.5
     if cage:
         px_, pv_, pf_ = xc, vc, fc
@@ -328,97 +464,18 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb,
         k_pair = p[P_K_BB]
         m_pair = 0.5 * p[P_MB]
         n_pair = 1
-    r_sum2 = r_sum * r_sum
     for k in range(z):
         k2 = k + 1 if k + 1 < z else 0
         for m in range(n_pair):
             ia = k if m == 0 else k2          # ball
             ib = k if cage else k2            # cage ball k, or the next ball
-            dx = xb[ia, 0] - px_[ib, 0]
-            dy = xb[ia, 1] - px_[ib, 1]
-            dz = xb[ia, 2] - px_[ib, 2]
-            d2 = dx * dx + dy * dy + dz * dz
-            f = 0.0
-            if d2 < r_sum2 and d2 > 0.0:
-                dist = math.sqrt(d2)
-                delta = r_sum - dist
-                inv = 1.0 / dist
-                nx, ny, nz = dx * inv, dy * inv, dz * inv
-                sq = math.sqrt(delta)
-                c = _damping_critical(m_pair, 1.5 * k_pair * sq)
-                ddot = -((vb[ia, 0] - pv_[ib, 0]) * nx + (vb[ia, 1] - pv_[ib, 1]) * ny
-                         + (vb[ia, 2] - pv_[ib, 2]) * nz)
-                f = k_pair * delta * sq + c * ddot
-                if f < 0.0:
-                    f = 0.0
-                fb[ia, 0] += f * nx
-                fb[ia, 1] += f * ny
-                fb[ia, 2] += f * nz
-                pf_[ib, 0] -= f * nx
-                pf_[ib, 1] -= f * ny
-                pf_[ib, 2] -= f * nz
+            f = _pair_contact(ia, ib, xb, vb, fb, px_, pv_, pf_, r_sum, k_pair, m_pair)
             if want:
                 cage_load[k, m] = f
         if want and not cage:
             cage_load[k, 1] = 0.0
         if cage:
-            # cage ball k in its guide torus, fixed to the outer ring (ring 1): tube-
-            # centre circle r_p in the ring's radial plane, tube radius R_z + clearance;
-            # frictionless Hertz, R_eq = R_z, critical damping
-            rz = p[P_RZ]
-            free = p[P_RGUIDE] - rz
-            dxw = xc[k, 0] - rings[1, 0]
-            dyw = xc[k, 1] - rings[1, 1]
-            dzw = xc[k, 2] - rings[1, 2]
-            a00, a01, a02 = rings[1, 6], rings[1, 7], rings[1, 8]
-            a10, a11, a12 = rings[1, 9], rings[1, 10], rings[1, 11]
-            a20, a21, a22 = rings[1, 12], rings[1, 13], rings[1, 14]
-            if a00 == 1.0 and a11 == 1.0 and a22 == 1.0:
-                cx, cy, cz = dxw, dyw, dzw
-            else:
-                cx = a00 * dxw + a10 * dyw + a20 * dzw
-                cy = a01 * dxw + a11 * dyw + a21 * dzw
-                cz = a02 * dxw + a12 * dyw + a22 * dzw
-            dr = math.sqrt(cx * cx + cy * cy) - p[P_RP]
-            if dr * dr + cz * cz > free * free:
-                delta, nlx, nly, nlz, _ca, _sa, _rc = _groove_geometry(cx, cy, cz, p[P_RP], 0.0, p[P_RGUIDE],
-                                                                       rz, False)
-                if delta > 0.0:
-                    nx = a00 * nlx + a01 * nly + a02 * nlz
-                    ny = a10 * nlx + a11 * nly + a12 * nlz
-                    nz = a20 * nlx + a21 * nly + a22 * nlz
-                    ex, ey, ez = _cross(rings[1, 15], rings[1, 16], rings[1, 17], dxw, dyw, dzw)
-                    vn = ((vc[k, 0] - rings[1, 3] - ex) * nx + (vc[k, 1] - rings[1, 4] - ey) * ny
-                          + (vc[k, 2] - rings[1, 5] - ez) * nz)
-                    sq = math.sqrt(delta)
-                    kst = p[P_K_GUIDE]
-                    c = _damping_critical(p[P_MZ], 1.5 * kst * sq)
-                    f = kst * delta * sq + c * vn
-                    if f > 0.0:
-                        fc[k, 0] -= f * nx
-                        fc[k, 1] -= f * ny
-                        fc[k, 2] -= f * nz
-                        fr[1, 0] += f * nx
-                        fr[1, 1] += f * ny
-                        fr[1, 2] += f * nz
-                        mx_, my_, mz_ = _cross(dxw, dyw, dzw, f * nx, f * ny, f * nz)
-                        fr[1, 3] += mx_
-                        fr[1, 4] += my_
-                        fr[1, 5] += mz_
+            _guide_contact(k, p, xc, vc, rings, fc, fr)
     if want:
-        # inner ring: spin about its axis, force of the balls, torque about its axis
-        ex, ey, ez = rings[0, 8], rings[0, 11], rings[0, 14]
-        glob[0] = ex * rings[0, 15] + ey * rings[0, 16] + ez * rings[0, 17]
-        glob[1] = fr[0, 0]
-        glob[2] = fr[0, 1]
-        glob[3] = fr[0, 2]
-        glob[4] = ex * fr[0, 3] + ey * fr[0, 4] + ez * fr[0, 5]
-        glob[5] = power_sum
-        glob[6] = worst
-        # outer ring: force of the balls and cage balls, torque about its axis
-        ex, ey, ez = rings[1, 8], rings[1, 11], rings[1, 14]
-        glob[7] = fr[1, 0]
-        glob[8] = fr[1, 1]
-        glob[9] = fr[1, 2]
-        glob[10] = ex * fr[1, 3] + ey * fr[1, 4] + ez * fr[1, 5]
+        _global_diagnostics(rings, fr, power_sum, worst, glob)
     return worst
