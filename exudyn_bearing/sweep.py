@@ -17,6 +17,7 @@ the finished cases.
 """
 from __future__ import annotations
 
+import io
 import json
 import os
 import sys
@@ -26,6 +27,11 @@ from concurrent.futures import ProcessPoolExecutor, as_completed
 from pathlib import Path
 
 import numpy as np
+
+from .data import Lubricant, load_bearing
+from .model.scenario import Scenario
+from .outputs.jsonio import to_jsonable
+from .simulate import simulate
 
 __all__ = ["run_sweep", "run_case", "load_case"]
 
@@ -53,16 +59,11 @@ def run_case(name: str, spec: dict, out_dir: str) -> str:
     of the sampled series needed for azimuth plots; the JSON the summary and
     the spec.
     """
-    import io
-
-    import exudyn_bearing as eb
-    from exudyn_bearing.outputs.jsonio import to_jsonable
-
     out = Path(out_dir)
-    lub = eb.Lubricant(**spec["lubricant"]) if spec.get("lubricant") else None
+    lub = Lubricant(**spec["lubricant"]) if spec.get("lubricant") else None
     t0 = time.perf_counter()
-    run = eb.simulate(eb.load_bearing(spec["bearing"]), eb.Scenario(**spec["scenario"]),
-                      engine=spec.get("engine", "reference"), lubricant=lub)
+    run = simulate(load_bearing(spec["bearing"]), Scenario(**spec["scenario"]),
+                   engine=spec.get("engine", "reference"), lubricant=lub)
     wall = time.perf_counter() - t0
     w = run.window(0.5)
     arrays = {"t": run.t[w], "psi": run.azimuth()[w], "omega": run.global_series("omega")[w]}

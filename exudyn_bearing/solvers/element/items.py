@@ -1,0 +1,107 @@
+"""Exudyn items of the bearing element: ball and cage-ball nodes, the one
+ObjectGenericODE2 that holds them and the ring nodes, and the arrays the
+compiled user functions work on (coordinate layout in :mod:`.kernels`)."""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ...model import layout as L
+from ...model.motion import ring_poses
+from . import kernels as EK
+
+__all__ = ["ItemsMixin"]
+
+
+class ItemsMixin:
+    """Part of :class:`~.element.BallBearingElement`: item creation."""
+
+    def _add_items(self, mbs, xb, vb, wb, xc, vc, n_cage, fast, show):
+        """Add the nodes (balls and cage balls unless ``fast``) and the
+        ObjectGenericODE2 with the ring nodes; set up the work arrays.
+        Returns (ball nodes, cage nodes, ring nodes, object)."""
+        from exudyn.itemInterface import NodeGenericODE2, ObjectGenericODE2, VObjectGenericODE2
+
+        b = self.bearing
+        z = b.n_balls
+        nodes = []
+        mass = []
+        mb, ib = b.ball_mass, 0.4 * b.ball_mass * b.ball_radius ** 2
+        for j in range(0 if fast else z):
+            nodes.append(mbs.AddNode(NodeGenericODE2(
+                referenceCoordinates=[*xb[j], 0.0, 0.0, 0.0], initialCoordinates=[0.0] * 6,
+                initialCoordinates_t=[*vb[j], *wb[j]], numberOfODE2Coordinates=6)))
+            mass += [mb] * 3 + [ib] * 3
+        cage_nodes = []
+        if n_cage and not fast:
+            mz = b.cage_ball_mass
+            iz = 0.4 * mz * b.cage_ball_radius ** 2
+            for k in range(n_cage):
+                cage_nodes.append(mbs.AddNode(NodeGenericODE2(
+                    referenceCoordinates=[*xc[k], 0.0, 0.0, 0.0], initialCoordinates=[0.0] * 6,
+                    initialCoordinates_t=[*vc[k], 0.0, 0.0, 0.0], numberOfODE2Coordinates=6)))
+                mass += [mz] * 3 + [iz] * 3
+        self.z, self.n_cage = z, n_cage
+        # ring nodes join the object after the balls (once, if both rings share a node)
+        self._ring_kind = np.array([sp[0] for sp in self.rings_spec], np.int64)
+        ring_nodes = []
+        self._ring_data = np.zeros((2, EK.RD_N))
+        n = 0 if fast else 6 * (z + n_cage)
+        ref = [np.zeros(n)]
+        if not fast:
+            for j in range(z):
+                ref[0][6 * j:6 * j + 3] = xb[j]
+            for k in range(n_cage):
+                ref[0][6 * (z + k):6 * (z + k) + 3] = xc[k]
+        offsets = {}
+        for r, (kind, node, local, fixed) in enumerate(self.rings_spec):
+            self._ring_data[r, EK.RD_OFF] = -1
+            if kind != EK.RING_FIXED:
+                if node not in offsets:
+                    rc = np.asarray(mbs.GetNode(node)["referenceCoordinates"], float)
+                    offsets[node] = n
+                    ring_nodes.append(node)
+                    ref.append(rc)
+                    mass += [0.0] * rc.size
+                    n += rc.size
+                self._ring_data[r, EK.RD_OFF] = offsets[node]
+            self._ring_data[r, EK.RD_LOCAL:EK.RD_LOCAL + 3] = local
+            self._ring_data[r, EK.RD_FIXED:EK.RD_FIXED + 12] = fixed
+        self.ref = np.concatenate(ref)
+        self._hist = np.zeros((z, 2, 3))
+        self._hist_trial = np.zeros((z, 2, 3))
+        self._t_commit = 0.0
+        self._t_trial = -1.0
+        self._hz = np.zeros((z, 2, 4))
+        self._work = np.zeros((8, z, 3))  # xb, vb, wb, xc, vc, fb, tb, fc
+        if fast:  # the balls live here, not in Exudyn
+            self._work[0], self._work[1], self._work[2] = xb, vb, wb
+            self._work[3, :n_cage], self._work[4, :n_cage] = xc[:n_cage], vc[:n_cage]
+            self._rings0 = ring_poses()
+            self._rings_sub = ring_poses()
+            self._clock = [math.nan, 0.0, self.sampleInterval, False]
+        self._rings = ring_poses()
+        self._fr = np.zeros((2, 6))
+        self._glob = np.zeros(L.NGLOBAL)
+        self._diag = np.zeros((z, 2, L.NDIAG))
+        self._cage_load = np.zeros((z, 2))
+        self._out = np.zeros(n)
+        # samples: times and flat rows filled by compiled code (kernels.sample_row)
+        self._sample_t, self._sample_rows = [], []
+        self._row = np.zeros(sum(int(np.prod(shape)) for _name, shape in EK.sample_layout(z)))
+        self._next_sample = self.sampleInterval
+        self._evaluations = 0
+        self._wall = 0.0
+        self._speeds = [(r, f) for r, f in enumerate(self.speed) if f is not None]
+        self._dt_sub = float(self.scenario.dt)
+        self._max_overlap = float(self.params[L.P_MAX_OVERLAP])
+        self._status = 0.0
+        if fast:
+            self._force_uf_fast = self._make_fast_uf()
+        obj = mbs.AddObject(ObjectGenericODE2(nodeNumbers=nodes + cage_nodes + ring_nodes, massMatrix=np.diag(mass),
+                                              forceUserFunction=self._force_uf_fast if fast else self._force_uf,
+                                              visualization=VObjectGenericODE2(
+                                                  show=bool(show),
+                                                  graphicsDataUserFunction=self._graphics if show else 0)))
+        return nodes, cage_nodes, ring_nodes, obj

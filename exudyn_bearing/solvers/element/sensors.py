@@ -1,0 +1,97 @@
+"""Sensors, samples and the run record of the bearing element."""
+from __future__ import annotations
+
+import math
+import warnings
+
+import numpy as np
+
+from ...model.record import RunRecord
+from ...model.stability import StepSizeWarning, cage_load_check
+from . import kernels as EK
+
+__all__ = ["SensorsMixin"]
+
+
+class SensorsMixin:
+    """Part of :class:`~.element.BallBearingElement`: sensors, sampling, graphics, record."""
+
+    def _add_sensors(self, mbs, n_cage):
+        """Exudyn SensorUserFunction items for the element's quantities (``self.sensors``)."""
+        from exudyn.itemInterface import SensorUserFunction
+
+        self.sensors = {}
+        sensor_defs = {
+            "cageSpeed": lambda: [float(np.mean(self._orbital(self._work[3, :n_cage], self._work[4, :n_cage])))
+                                  if n_cage else float(np.mean(self._orbital(self._work[0], self._work[1])))],
+            "qMaxInner": lambda: [float(self._diag[:, 0, 0].max())],
+            "qMaxOuter": lambda: [float(self._diag[:, 1, 0].max())],
+            "lambdaOuterPsi0": lambda: [float(self._diag[self._psi0(), 1, 8])],
+            "innerRingForce": lambda: list(self._fr[0, :3]),
+            "outerRingForce": lambda: list(self._fr[1, :3]),
+        }
+        for key, fn in sensor_defs.items():
+            self.sensors[key] = mbs.AddSensor(SensorUserFunction(
+                sensorNumbers=[], factors=[], storeInternal=True, writeToFile=False,
+                sensorUserFunction=(lambda f: (lambda mbs_, t, sn, fac, conf: f()))(fn)))
+
+    def _sample(self, t, rings):
+        self._store(t, rings)
+        self._next_sample += self.sampleInterval * max(1.0, math.floor((t - self._next_sample)
+                                                                       / self.sampleInterval) + 1.0)
+
+    def _graphics(self, mbs, itemNumber):
+        """Graphics for Exudyn's renderer: balls, cage balls and the two groove
+        tori at the last evaluated state (world frame)."""
+        import exudyn.graphics as gr
+
+        b = self.bearing
+        w = self._work
+        data = [gr.Spheres(points=list(w[0]), radii=b.ball_radius, colors=[0.6, 0.6, 0.65, 1.0], nTiles=16)]
+        if self.n_cage:
+            data.append(gr.Spheres(points=list(w[3, :self.n_cage]), radii=b.cage_ball_radius,
+                                   colors=[0.8, 0.6, 0.2, 1.0], nTiles=12))
+        for r, ((rho, zg), rc) in enumerate(((b.inner_groove_center, b.inner_groove_radius),
+                                             (b.outer_groove_center, b.outer_groove_radius))):
+            a = self._rings[r, 6:15].reshape(3, 3)
+            centre = self._rings[r, :3] + a[:, 2] * zg
+            data.append(gr.Torus(point=list(centre), axis=list(a[:, 2]), radiusMajor=rho, radiusMinor=rc,
+                                 color=[0.5, 0.5, 0.55, 0.3], nTilesMajor=48, nTilesMinor=12))
+        return data
+
+    def _store(self, t, rings):
+        """Sample at t; ``rings``: the ring poses the balls saw there."""
+        EK.sample_row(rings, self._work, self._glob, self._diag, self._cage_load, self._row)
+        self._sample_t.append(t)
+        self._sample_rows.append(self._row.copy())
+
+    @staticmethod
+    def _orbital(x, v):
+        r2 = x[:, 0] ** 2 + x[:, 1] ** 2
+        return (x[:, 0] * v[:, 1] - x[:, 1] * v[:, 0]) / np.where(r2 > 0.0, r2, np.inf)
+
+    def _psi0(self):
+        return int(np.argmin(np.abs(np.arctan2(self._work[0, :, 1], self._work[0, :, 0]))))
+
+    def record(self, wall_s=None, steps=None) -> RunRecord:
+        """The sampled series of the run as a :class:`~exudyn_bearing.model.record.RunRecord`
+        (the same layout as the reference engine's: positions, velocities and
+        ring displacement in the outer-ring frame, ball angular velocity
+        relative to the outer ring). ``exudyn_bearing.CreateBallBearing``'s
+        element also has ``results()``, the same wrapped in
+        :class:`~exudyn_bearing.outputs.results.Results`."""
+        if not self._sample_t:
+            raise RuntimeError("results: no samples yet; run mbs.SolveDynamic first")
+        rows = np.array(self._sample_rows)
+        data, k = {"t": np.array(self._sample_t)}, 0
+        for name, shape in EK.sample_layout(self.z):
+            size = int(np.prod(shape))
+            data[name] = rows[:, k:k + size].reshape((len(rows), *shape))
+            k += size
+        steps = self._evaluations if steps is None else steps
+        msg = cage_load_check(self.bearing, self.scenario, self.lubricant,
+                              float(data["cage_load"].max(initial=0.0)), self.scenario.dt)
+        if msg:
+            warnings.warn(msg, StepSizeWarning, stacklevel=3)
+        return RunRecord(self.bearing, self.scenario, self.lubricant, data, steps=steps,
+                         wall_s=self._wall if wall_s is None else wall_s, engine="exudyn", stable_dt=self.stable.dt)

@@ -1,0 +1,153 @@
+"""Force user functions of the bearing element: one compiled call per Exudyn
+evaluation (body mode), or compiled ball sub-steps per Exudyn step (fast
+mode); step and runaway checks."""
+from __future__ import annotations
+
+import math
+import time
+import warnings
+
+import numpy as np
+
+from ...model.contact import forces
+from ...model.stability import StepSizeWarning, step_warning
+from . import kernels as EK
+
+__all__ = ["UserFunctionsMixin"]
+
+
+def _entry_point(dispatcher, args):
+    """numba's compiled entry point of ``dispatcher`` for the types of
+    ``args`` (compiled or loaded from the cache now): calling it skips
+    numba's per-call type dispatch. The dispatcher itself where numba does not
+    offer it (JIT disabled, another numba version)."""
+    try:
+        import numba
+
+        sig = tuple(numba.typeof(a) for a in args)
+        dispatcher.compile(sig)
+        return dispatcher.overloads[sig].entry_point
+    except Exception:  # noqa: BLE001 - any failure falls back to the dispatcher
+        return dispatcher
+
+
+class UserFunctionsMixin:
+    """Part of :class:`~.element.BallBearingElement`: the user functions."""
+
+    def _force_uf(self, mbs, t, itemNumber, q, q_t):
+        t0 = time.perf_counter()
+        for r, f in self._speeds:
+            self._ring_data[r, EK.RD_SPIN] = f(t)
+        # Cundall-Strack history: commit the last trial state when time advances
+        if t > self._t_trial:
+            if self._t_trial >= 0.0:
+                self._hist[:] = self._hist_trial
+                self._t_commit = self._t_trial
+            self._t_trial = t
+        want = t >= self._next_sample - 1e-12
+        worst = EK.element_rhs(np.asarray(q, float), np.asarray(q_t, float), self.ref, self.params, self.table,
+                               self.z, self.n_cage, self._ring_kind, self._ring_data, self._hist, self._hist_trial,
+                               t - self._t_commit, self._hz, self._work, self._rings, self._fr, self._glob,
+                               self._diag, self._cage_load, want, self._out)
+        return self._after_step(t, t0, worst, want, True)
+
+    def _make_fast_uf(self):
+        """The fast mode's force user function, a closure over the element's
+        arrays and the compiled step's entry point.
+
+        Per Exudyn evaluation it advances the balls in compiled sub-steps to
+        t + (H - dt)/2 and returns the mean ring reactions of those sub-steps
+        as generalized ring forces (the sub-step windows are centred on the
+        Exudyn times, so the ring's and the balls' impulses match:
+        :func:`~.kernels.advance_balls`). It runs once per Exudyn step, and its
+        Python cost is a large share of the step: bound locals instead of
+        attribute look-ups and the compiled entry point instead of numba's
+        type dispatch take about a tenth off the step
+        (validation/bench_element.py times the result)."""
+        ref, params, table, kind, rdata = self.ref, self.params, self.table, self._ring_kind, self._ring_data
+        work, rings0, rings, rings_sub = self._work, self._rings0, self._rings, self._rings_sub
+        hist, hz, fr, glob, diag, cload, out = (self._hist, self._hz, self._fr, self._glob, self._diag,
+                                                self._cage_load, self._out)
+        speeds, dt_sub, max_overlap, spin = self._speeds, self._dt_sub, self._max_overlap, EK.RD_SPIN
+        clock = self._clock  # [t of the last Exudyn evaluation (nan: none yet), tau, next sample, step checked]
+        asarray = np.asarray
+        step = _entry_point(EK.fast_step, (asarray(np.zeros(1)), asarray(np.zeros(1)), ref, params, table, kind,
+                                           rdata, 1, 0.0, 0.0, 0.0, work, rings0, rings, rings_sub, hist, hz, fr,
+                                           glob, diag, cload, False, out))
+
+        def force_uf_fast(mbs, t, itemNumber, q, q_t):
+            for r, f in speeds:
+                rdata[r, spin] = f(t)
+            # Exudyn's vectors become contiguous float64 arrays (one compiled signature)
+            q = asarray(q, float)
+            q_t = asarray(q_t, float)
+            t_int = clock[0]
+            if t > t_int + 1e-15:  # False before the first evaluation (nan)
+                big = t - t_int
+                if not clock[3]:
+                    self._check_fast_step(big)
+                m = int(big / dt_sub + 0.5) or 1
+                t_end = t + 0.5 * (big - big / m)
+                tau = clock[1]
+                n_sub = int((t_end - tau) * m / big + 0.5) or 1
+                want = t >= clock[2] - 1e-12
+                worst = step(q, q_t, ref, params, table, kind, rdata, n_sub, tau, t, t_end, work, rings0, rings,
+                             rings_sub, hist, hz, fr, glob, diag, cload, want, out)
+                clock[0] = t
+                clock[1] = t_end
+                if not worst <= max_overlap:  # also catches NaN
+                    self._check_worst(worst, t)
+                if want:
+                    self._sample(t_end, rings_sub)
+                    clock[2] = self._next_sample
+                return out
+            if t_int != t_int:
+                # first evaluation: forces at the initial state, nothing to integrate yet
+                EK.ring_poses_from(q, q_t, ref, kind, rdata, rings)
+                forces(params, table, work[0], work[1], work[2], work[3], work[4], rings, hist, hist, dt_sub, hz,
+                         work[5], work[6], work[7], fr, glob, diag, cload, False)
+                rings0[:] = rings
+                clock[0] = clock[1] = t
+            elif t < t_int - 1e-15:
+                raise RuntimeError("mode: the fast mode integrates the balls forward in time and needs an explicit "
+                                   "fixed-step solver (VelocityVerlet, or RK44 with friction='regularized')")
+            # no time advance: the last reactions at the current ring poses
+            step(q, q_t, ref, params, table, kind, rdata, 0, clock[1], t, t, work, rings0, rings, rings_sub, hist,
+                 hz, fr, glob, diag, cload, False, out)
+            return out
+
+        return force_uf_fast
+
+    def _after_step(self, t, t0, worst, want, advanced):
+        """Runaway check, sampling and bookkeeping after a force evaluation."""
+        if advanced:
+            if not worst <= self._max_overlap:  # also catches NaN
+                self._check_worst(worst, t)
+            if want:
+                self._sample(t, self._rings)
+        self._evaluations += 1
+        self._wall += time.perf_counter() - t0
+        return self._out
+
+    def _check_fast_step(self, h, stacklevel=4):
+        """Warn (once) when the fast mode's Exudyn step ``h`` exceeds the ring
+        bodies' stable step or its ball sub-step the balls' stable step."""
+        self._clock[3] = True
+        dt = h / max(1, int(h / self._dt_sub + 0.5))
+        if h > self.ringStableStep:
+            warnings.warn(f"subSteps: the Exudyn step {h:.3g} s exceeds the ring bodies' stable-step estimate "
+                          f"{self.ringStableStep:.3g} s (ring bodies' inertia against their bearings' contact "
+                          "stiffness at initialLoad); the ring motion will be wrong or blow up: use fewer sub-steps",
+                          StepSizeWarning, stacklevel=stacklevel)
+        msg = step_warning(f"stepSize: the ball sub-step {dt:.3g} s", dt, self.stable)
+        if msg:
+            warnings.warn(msg, StepSizeWarning, stacklevel=stacklevel)
+
+    def _check_worst(self, worst, t):
+        if not math.isfinite(worst) or worst > self._max_overlap:
+            ring = (f" and the ring bodies' {self.ringStableStep:.3g} s for the fast mode's Exudyn step (subSteps * "
+                    "stepSize)" if self.mode == "fast" and math.isfinite(self.ringStableStep) else "")
+            raise RuntimeError(
+                f"stepSize: the bearing state became non-finite or runaway at t = {t:.6g} s; the stable-step "
+                f"estimate is {self.stable.dt:.3g} s (limited by the {self.stable.limited_by} contact){ring}: "
+                "reduce the solver step")
