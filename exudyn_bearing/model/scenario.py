@@ -13,6 +13,7 @@ from dataclasses import dataclass
 from ..data import InputError
 from ..physics.ehl import film_model_code
 from ..physics.hertz import method_code
+from .motion import omega_profile
 
 __all__ = ["Scenario", "FRICTION_MODELS", "INTEGRATORS"]
 
@@ -174,20 +175,10 @@ class Scenario:
             raise InputError(f"Pd: must be finite, got {self.Pd}")
 
     def omega_at(self, t):
-        """Prescribed inner-ring speed omega(t) [rad/s] of the protocol
-        (the same piecewise-linear profile as the kernels' ``omega_profile``)."""
-        t = float(t)
-        if t < 0.0:
-            return 0.0
-        if t < self.t_ramp_up:
-            return self.omega * t / self.t_ramp_up
-        t -= self.t_ramp_up
-        if t < self.t_steady:
-            return float(self.omega)
-        t -= self.t_steady
-        if t < self.t_ramp_down:
-            return self.omega * (1.0 - t / self.t_ramp_down)
-        return 0.0
+        """Prescribed inner-ring speed omega(t) [rad/s] of the protocol (the
+        kernels' :func:`~exudyn_bearing.model.motion.omega_profile`)."""
+        return float(omega_profile(float(t), float(self.omega), float(self.t_ramp_up), float(self.t_steady),
+                                   float(self.t_ramp_down)))
 
     def replace(self, **changes) -> "Scenario":
         return dataclasses.replace(self, **changes)
