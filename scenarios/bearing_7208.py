@@ -8,7 +8,7 @@ combined load; PHYSICS.md sec. 8: the Stribeck law with
 eps = (1 + delta_a tan(alpha)/delta_r)/2). Writes bearing_7208.png with a
 CSV beside it and prints both summaries.
 
-The 1 mm cage balls of the catalogue (33 mg, 4.7 um pocket clearance) set
+The 1 mm cage balls of the catalogue (33 mg, 4.5 um pocket clearance) set
 the step: under the combined load the balls orbit at slightly different
 speeds and press the cage balls with a few hundred newtons, so the run
 needs dt <= 0.5 us (at 1 us it stops with a dt error after about 15 ms;
