@@ -8,6 +8,9 @@ Sub-commands (``--json`` for scripts, tables otherwise):
 * ``simulate --bearing B --Fr N --omega W --engine reference --t-end T
   [--out DIR] [--json]``: dynamic simulation; summary keys of
   :meth:`exudyn_bearing.outputs.results.Results.summary`.
+* ``vibration three-dof [--source-parameters] [--json]``: eigenvalues,
+  natural frequencies, damping ratios and mode shapes of the 3-DOF
+  outer ring / ball / inner ring model.
 
 BEARING is a catalogue name (6208, 7208, 6004, ACBB-120) or a JSON file with
 the geometry (format of ``exudyn_bearing/data/catalog.json``). Bad input
@@ -19,13 +22,13 @@ import sys
 
 from ..data import InputError
 from ..model.stability import SimulationError
-from . import info, simulate, static
+from . import info, simulate, static, vibration
 from .common import Parser
 
 __all__ = ["main"]
 
 #: Sub-commands: name -> module with ``add_parser(subparsers)`` and ``run(args)``.
-COMMANDS = {"info": info, "static": static, "simulate": simulate}
+COMMANDS = {"info": info, "static": static, "simulate": simulate, "vibration": vibration}
 
 
 def _parser() -> Parser:
