@@ -24,6 +24,7 @@ UNITS = {
     "u_roll_outer": "m/s", "slip_y": "- (y/a at the strip centres)", "slip_inner": "m/s", "slip_outer": "m/s",
     "inner_ring_growth": "m", "outer_ring_growth": "m", "inner_thermal_growth": "m", "outer_thermal_growth": "m",
     "ball_thermal_growth": "m", "fit_pressure": "Pa", "operating_clearance": "m", "axial_play": "m",
+    "control_used": "race control per ball (outer, inner, min-energy, none)",
     "stiffness": "N/m, N/rad, N m/m, N m/rad (order delta_x, delta_y, delta_a, tilt_x, tilt_y)",
     "reactions": "N or N m", "residual": "N or N m", "loads": "N or N m", "omega": "rad/s", "omega_outer": "rad/s",
 }
@@ -54,6 +55,9 @@ class QuasiStaticSolution:
     stiffness: np.ndarray        #: (5, 5) = -d(balls' generalized force)/du
     stiffness_check: dict        #: step and convergence of the central differences
     minimum_checks: list = field(default_factory=list)  #: per-ball minimum-energy checks
+    contact_geometry: np.ndarray | None = None  #: packed per-ball contact data (kinematics.GEO_FIELDS)
+    kinematics: np.ndarray | None = None        #: per-ball (omega_m, w_r, w_z) [rad/s]
+    traction_model: object = None               #: the TractionModel used
     iterations: int = 0
     n_strips: int = 0
     n_across: int = 0
@@ -91,7 +95,11 @@ class QuasiStaticSolution:
         for k, v in zip(("delta_x", "delta_y", "delta_a", "tilt_x", "tilt_y"), self.displacement):
             d[k] = float(v)
         for k, v in b.items():
-            arr = np.asarray(v, float)
+            arr = np.asarray(v)
+            if arr.dtype == object:
+                d[k] = [str(x) for x in arr]
+                continue
+            arr = arr.astype(float)
             d[k] = np.degrees(arr) if k in deg else arr
         d["dissipation_inner"] = self.dissipation_inner
         d["dissipation_outer"] = self.dissipation_outer

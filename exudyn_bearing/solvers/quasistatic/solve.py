@@ -50,7 +50,7 @@ from .ring import DOF_NAMES, LOAD_NAMES, RingProblem, solve_ring
 from .solution import QuasiStaticSolution
 from .stiffness import stiffness_matrix
 
-__all__ = ["solve_quasistatic"]
+__all__ = ["solve_quasistatic", "beta_scan"]
 
 
 def _number(name, value, nonneg=False):
@@ -287,7 +287,22 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
         lubricant=lub.name, displacement=u, residual=resid, free=free, held=held, reactions=reactions, balls=out,
         geometry=geometry, stiffness=kmat, stiffness_check=kcheck,
         minimum_checks=[c for c in checks] if control == "min-energy" else [], iterations=it_total,
-        n_strips=n_strips, n_across=n_across, wall_s=time.perf_counter() - t0)
+        n_strips=n_strips, n_across=n_across, wall_s=time.perf_counter() - t0,
+        contact_geometry=geo, kinematics=kin, traction_model=model)
+
+
+def beta_scan(solution: QuasiStaticSolution, betas, ball=0):
+    """Least dissipation of one ball [W] at each spin-axis angle in ``betas`` [rad], over its
+    orbital and ball speed, on the solution's contact geometry (Gupta's Fig. 9 curve).
+
+    Returns an array of the dissipation of that ball (both contacts) for each beta.
+    """
+    if solution.contact_geometry is None:
+        raise InputError("solution: a beta scan needs a solution at speed (omega != omega_outer)")
+    g = solution.contact_geometry[ball]
+    start = solution.kinematics[ball]
+    return np.array([km.dissipation_at_beta(g, solution.traction_model, solution.n_strips, solution.n_across,
+                                            float(bt), start)[0] for bt in np.asarray(betas, float)])
 
 
 def _geo_vector(w_o, w_i, ball, geom, rd_o, rd_i, cs, j, kin, lub, e_prime):
