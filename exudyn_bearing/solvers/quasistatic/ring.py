@@ -34,7 +34,7 @@ from .balls import ring_forces
 __all__ = ["DOF_NAMES", "LOAD_NAMES", "RingProblem", "solve_ring"]
 
 DOF_NAMES = ("delta_x", "delta_y", "delta_a", "tilt_x", "tilt_y")
-LOAD_NAMES = ("Fx", "Fy", "Fa", "Mx", "My")
+LOAD_NAMES = ("Fr", "Fy", "Fa", "Mx", "My")  # the parameter names of solve_quasistatic
 
 
 class RingProblem:
