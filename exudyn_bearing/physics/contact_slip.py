@@ -96,7 +96,7 @@ __all__ = ["contact_traction", "ContactTraction", "deformed_contact_radius", "sp
            "slip_profile", "pure_rolling_points"]
 
 
-@kernel
+@kernel(no_runtime=True)
 def _contact_traction(a, b, load, v0, w_n, c2, v_t, u_roll, h_central, h_min, code, params, n_strips, n_across):
     """Strip integration of the traction over a Hertz ellipse (module docstring).
 

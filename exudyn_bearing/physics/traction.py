@@ -225,7 +225,7 @@ def traction_lambda(srr, film_min, mu_boundary, mu_full_film, lambda_mixed, lamb
                                                           regularizing_srr)
 
 
-@kernel
+@kernel(inline="always", no_runtime=True)
 def _traction(code, params, slip, u_roll, pressure, h_central, h_min):
     """Traction coefficient mu = tau/p [-] of model ``code`` with parameter vector ``params``.
 

@@ -129,8 +129,9 @@ def _ball_equilibrium(pir, piz, por, poz, rci, rco, rb, m_w2, fto, fti, e_prime,
         nir = br / li
         niz = bz / li
         di = li - li0
-        if it % 4 == 0:
-            ko, ki = _contact_constants(por, rco, rb, rci, nor, nir, e_prime, method)
+        # Hertz constants at the current contact angles (stale ones would make the converged state
+        # depend on the iteration history)
+        ko, ki = _contact_constants(por, rco, rb, rci, nor, nir, e_prime, method)
         qo = ko * do * math.sqrt(do) if do > 0.0 else 0.0
         qi = ki * di * math.sqrt(di) if di > 0.0 else 0.0
         kqo = 1.5 * ko * math.sqrt(do) if do > 0.0 else 0.0
