@@ -83,7 +83,7 @@ def _start(prob, u, free, bearing):
             v = u.copy()
             v[2] = sgn * d
             return sgn * prob.residual(v)[0][2]
-        root = _bracket_root(fz, lo, size, limit)
+        root = _bracket_root(fz, lo, size, abs(lo) + limit)
         if root is not None:
             u[2] = sgn * root
     fr = math.hypot(loads[0], loads[1])
