@@ -57,8 +57,8 @@ Compiled interface (for the dynamics engines)
 code, params, n_strips, n_across)`` -> ``(F_x, F_y, M_z, P, QV)``: scalar
 float arguments, ``code`` and the strip counts int, ``params`` a float64
 array (:attr:`exudyn_bearing.data.TractionModel.vector`); it allocates
-nothing and calls :func:`exudyn_bearing.physics.traction._traction` once per
-point (``n_strips * n_across`` points). ``a`` is the semi-axis along e_y,
+nothing and evaluates the traction law (``physics.traction._traction_srr``,
+inlined) once per point (``n_strips * n_across`` points). ``a`` is the semi-axis along e_y,
 ``b`` along e_x (the rolling direction); a zero load or semi-axis returns
 zeros. ``u_roll`` is the rolling (entrainment) speed [m/s] that defines the
 slide-to-roll ratio; the films [m] are used by the ``ehl`` (central) and
@@ -90,7 +90,7 @@ import numpy as np
 from .._jit import kernel
 from ..data import get_traction_model
 from .hertz import _ellipke
-from .traction import _traction
+from .traction import _inverse_rolling_speed, _traction_srr
 
 __all__ = ["contact_traction", "ContactTraction", "deformed_contact_radius", "spin_moment_coulomb",
            "slip_profile", "pure_rolling_points"]
@@ -117,6 +117,7 @@ def _contact_traction(a, b, load, v0, w_n, c2, v_t, u_roll, h_central, h_min, co
     st = math.sin(theta)
     wscale = 0.75 * load * (2.0 / math.pi) * theta  # Q (3/4) * (2/pi) * pi/(m+1)
     dv = 2.0 / n_strips
+    inv_u = _inverse_rolling_speed(u_roll)
     for j in range(n_strips):
         vl = -1.0 + j * dv
         vr = vl + dv
@@ -128,9 +129,13 @@ def _contact_traction(a, b, load, v0, w_n, c2, v_t, u_roll, h_central, h_min, co
         ck = 1.0  # cos(0), sin(0): start of the node recurrence
         sk = 0.0
         for _k in range(m):
-            c_next = ck * ct - sk * st
-            sk = sk * ct + ck * st
-            ck = c_next  # cos(k theta), sin(k theta), k = 1..m
+            if m == 1:  # the single node u = 0 of classical strip theory
+                ck = 0.0
+                sk = 1.0
+            else:
+                c_next = ck * ct - sk * st
+                sk = sk * ct + ck * st
+                ck = c_next  # cos(k theta), sin(k theta), k = 1..m
             x = b * sm * ck
             vy = v_t + w_n * x
             speed = math.sqrt(vx * vx + vy * vy)
@@ -138,7 +143,7 @@ def _contact_traction(a, b, load, v0, w_n, c2, v_t, u_roll, h_central, h_min, co
                 continue
             dq = wscale * wj * sk * sk
             pressure = p0 * sm * sk
-            mu = _traction(code, params, speed, u_roll, pressure, h_central, h_min)
+            mu = _traction_srr(code, params, speed, speed * inv_u, pressure, h_central, h_min)
             f = mu * dq / speed
             tx = -f * vx
             ty = -f * vy

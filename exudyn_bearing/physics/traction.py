@@ -226,16 +226,26 @@ def traction_lambda(srr, film_min, mu_boundary, mu_full_film, lambda_mixed, lamb
 
 
 @kernel(inline="always", no_runtime=True)
+def _inverse_rolling_speed(u_roll):
+    """1 / max(|u|, 1e-9 m/s): the factor from slip speed to slide-to-roll ratio."""
+    u = abs(u_roll)
+    return 1.0 / (u if u > _U_MIN else _U_MIN)
+
+
+@kernel(inline="always", no_runtime=True)
 def _traction(code, params, slip, u_roll, pressure, h_central, h_min):
     """Traction coefficient mu = tau/p [-] of model ``code`` with parameter vector ``params``.
 
     slip |v| [m/s] >= 0, u_roll [m/s] (its magnitude is used), pressure p [Pa],
     central and minimum film thickness [m]. No allocation.
     """
-    u = abs(u_roll)
-    if u < _U_MIN:
-        u = _U_MIN
-    srr = slip / u
+    return _traction_srr(code, params, slip, slip * _inverse_rolling_speed(u_roll), pressure, h_central, h_min)
+
+
+@kernel(inline="always", no_runtime=True)
+def _traction_srr(code, params, slip, srr, pressure, h_central, h_min):
+    """:func:`_traction` with the slide-to-roll ratio already formed (the strip loop forms
+    1/u once per contact)."""
     if code == CURVE:
         if slip <= 0.0:
             return 0.0
