@@ -251,3 +251,16 @@ def test_static_says_what_it_holds(capsys):
 
 def test_top_level_export():
     assert eb.solve_quasistatic is solve_quasistatic
+
+
+def test_readme_quasistatic_example_runs(capsys):
+    from pathlib import Path
+
+    text = (Path(__file__).resolve().parents[1] / "README.md").read_text()
+    start = text.index("## Quasi-static solver")
+    start = text.index("```python\n", start) + len("```python\n")
+    code = text[start:text.index("```\n", start)]
+    scope = {}
+    exec(compile(code, "README.md", "exec"), scope)
+    s = scope["s"]
+    assert s.minimum_checks[0]["is_minimum"] and s.dissipation_total > 0
