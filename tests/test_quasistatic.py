@@ -264,3 +264,14 @@ def test_readme_quasistatic_example_runs(capsys):
     exec(compile(code, "README.md", "exec"), scope)
     s = scope["s"]
     assert s.minimum_checks[0]["is_minimum"] and s.dissipation_total > 0
+
+
+def test_angular_contact_needs_an_axial_load_to_locate_the_ring():
+    # without axial load the ring of a single angular-contact bearing floats axially: refused, not guessed
+    with pytest.raises(InputError, match="^Fa: .*axial load"):
+        solve_quasistatic("ACBB-120", omega=RPM_25000)
+    # a light thrust at speed (inner contacts nearly unloaded, outer ones carry the centrifugal force)
+    s = solve_quasistatic("ACBB-120", 0.0, 100.0, omega=RPM_25000, stiffness=False)
+    q, a = s.balls["q_inner"], s.balls["alpha_inner"]
+    assert (q * np.sin(a)).sum() == pytest.approx(100.0, rel=1e-7)
+    assert s.balls["q_outer"][0] > s.balls["centrifugal_force"][0] * 0.9

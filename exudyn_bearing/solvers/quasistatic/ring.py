@@ -117,12 +117,22 @@ def solve_ring(prob: RingProblem, free, held, u_start, bearing, tol=1e-10, cold=
     """Solve the free DOFs; ``held`` (5,) gives the values of the others.
 
     Returns (u (5,), residual (5,), balls table). Raises InputError when no
-    equilibrium is found (message names the largest load).
+    equilibrium is found (message names the largest load). A warm start
+    (``cold=False``) that fails is retried from the bracketed start.
     """
+    try:
+        return _solve_ring(prob, free, held, u_start, bearing, tol, cold)
+    except InputError:
+        if cold:
+            raise
+        return _solve_ring(prob, free, held, u_start, bearing, tol, True)
+
+
+def _solve_ring(prob, free, held, u_start, bearing, tol, cold):
     free = np.asarray(free, bool)
     u = np.where(free, u_start, held).astype(float)
     if cold:
-        u = _start(prob, u, free, bearing)
+        u = _start(prob, np.where(free, 0.0, held).astype(float), free, bearing)
     if not free.any():
         r, balls = prob.residual(u)
         return u, r, balls

@@ -175,9 +175,9 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
         if loads[2] < 0.0:
             raise InputError(f"Fa: an angular-contact bearing carries axial load along +z only, got {loads[2]:g} N")
         check_axial_load(b, fr, loads[2])
-        if loads[2] == 0.0 and (loads[3] != 0.0 or loads[4] != 0.0):
-            raise InputError("Fa: a single angular-contact bearing needs an axial load to carry a moment "
-                             "(got Fa = 0 N)")
+        if loads[2] == 0.0:
+            raise InputError("Fa: a single angular-contact bearing needs an axial load to locate its inner ring "
+                             "axially (got 0 N; or hold delta_a with fixed=)")
     geom = operating_geometry(b, w_i, w_o, ring_growth, fit, temperatures)
     if geom.operating_clearance < -2.0 * 0.01 * geom.r_b:
         raise InputError(f"fit: the operating interference {-geom.operating_clearance:.3e} m exceeds 2 % of the "
