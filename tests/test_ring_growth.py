@@ -1,5 +1,4 @@
 """Rings at speed, fit and temperature against Timoshenko & Goodier's elasticity solutions."""
-import math
 
 import numpy as np
 import pytest

@@ -9,6 +9,6 @@ energy, slip and dissipation), :mod:`.stiffness` (5x5 stiffness matrix),
 (:func:`solve_quasistatic`). Theory: docs/theory/quasistatic.md.
 """
 from .solution import UNITS, QuasiStaticSolution
-from .solve import solve_quasistatic
+from .solve import beta_scan, solve_quasistatic
 
-__all__ = ["solve_quasistatic", "QuasiStaticSolution", "UNITS"]
+__all__ = ["solve_quasistatic", "beta_scan", "QuasiStaticSolution", "UNITS"]

@@ -121,9 +121,8 @@ class QuasiStaticSolution:
     def summary(self) -> str:
         """A few lines for the command line."""
         g = self.geometry
-        b = self.balls
         lines = [
-            f"{self.bearing_name}: Fx = {self.loads[0]:g} N, Fy = {self.loads[1]:g} N, Fa = {self.loads[2]:g} N, "
+            f"{self.bearing_name}: Fr = {self.loads[0]:g} N (x), Fy = {self.loads[1]:g} N, Fa = {self.loads[2]:g} N, "
             f"Mx = {self.loads[3]:g} N m, My = {self.loads[4]:g} N m, omega = {self.omega:g} rad/s, "
             f"control {self.control}, traction {self.traction}",
             f"delta_x = {self.displacement[0] * 1e6:.3f} um, delta_y = {self.displacement[1] * 1e6:.3f} um, "
