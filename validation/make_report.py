@@ -402,7 +402,11 @@ def section_quasistatic():
                      f"reports about -24 % with his traction curve); minimum check: Hessian eigenvalues "
                      f"{', '.join(f'{x:.3g}' for x in me['minimum_check']['hessian_eigenvalues'])}, neighbours higher "
                      f"{me['minimum_check']['neighbours_higher']}; pure-rolling points x1/a = "
-                     f"{me['x1_over_a_outer']:.3f} (outer), x2/a = {me['x2_over_a_inner']:.3f} (inner). Plots: "
+                     f"{me['x1_over_a_outer']:.3f} (outer), x2/a = {me['x2_over_a_inner']:.3f} (inner); net rolling-"
+                     f"direction traction on a ball (zero in a cageless steady state) {v['race_control']['traction_drag_N']:.1f} N "
+                     f"under race control, {me['traction_drag_N']:.1f} N under minimum energy; traction coefficient "
+                     f"the outer race must supply for the gyroscopic moment under race control "
+                     f"{v['race_control']['gyro_traction_outer']:.4f}. Plots: "
                      f"`{Path(v['beta_scan']['plot']).name}`, `{Path(v['plot_slip']).name}`.")
     rc, rg = d["tractions"]["ester_curve_illustrative"]["rigid_race_control"], \
         d["tractions"]["ester_curve_illustrative"]["race_control"]

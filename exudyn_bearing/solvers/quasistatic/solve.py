@@ -267,7 +267,7 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
                 break
     # final contact results
     out = _ball_results(b, geom, psi, balls, cs, kin, geo, model, n_strips, n_across, w_i, w_o, rd_o, rd_i,
-                        lub, e_prime, mass, inertia, controls, moving)
+                        lub, e_prime, mass, inertia, controls, moving, prob.fto, prob.fti)
     _check_shoulders(b, geom, balls, cs, loads, prob, shoulder_angle)
     if stiffness:
         kmat, kcheck = stiffness_matrix(prob, u, balls)
@@ -345,7 +345,7 @@ def _axial_play(geom):
 
 
 def _ball_results(b, geom, psi, balls, cs, kin, geo, model, n_strips, n_across, w_i, w_o, rd_o, rd_i, lub,
-                  e_prime, mass, inertia, controls, moving):
+                  e_prime, mass, inertia, controls, moving, fto, fti):
     z = psi.size
     out = {"psi": psi, "q_inner": balls[:, B_QI].copy(), "q_outer": balls[:, B_QO].copy(),
            "alpha_inner": np.arctan2(-balls[:, B_NIZ], -balls[:, B_NIR]),
@@ -362,7 +362,7 @@ def _ball_results(b, geom, psi, balls, cs, kin, geo, model, n_strips, n_across, 
     out["beta"] = np.array([km.spin_axis_angle(kin[j, 1], kin[j, 2]) for j in range(z)])
     names = ("spin_roll_inner", "spin_roll_outer", "rolling_point_outer", "rolling_point_inner",
              "dissipation_inner_ball", "dissipation_outer_ball", "qv_inner_ball", "qv_outer_ball",
-             "traction_drag", "gyro_moment_residual", "h_central_inner", "h_central_outer", "h_min_inner",
+             "traction_drag", "gyro_traction_inner", "gyro_traction_outer", "h_central_inner", "h_central_outer", "h_min_inner",
              "h_min_outer", "u_roll_inner", "u_roll_outer")
     for n in names:
         out[n] = np.zeros(z)
@@ -388,7 +388,9 @@ def _ball_results(b, geom, psi, balls, cs, kin, geo, model, n_strips, n_across, 
         x1, x2 = km.rolling_points(c, geo[j])
         out["rolling_point_outer"][j], out["rolling_point_inner"][j] = x1, x2
         out["traction_drag"][j] = c[0, 6] + c[1, 6]
-        out["gyro_moment_residual"][j] = geom.r_b * (c[0, 7] + c[1, 7]) - out["gyroscopic_moment"][j]
+        # friction coefficient the hypothesis asks of each race to hold the gyroscopic moment
+        out["gyro_traction_outer"][j] = abs(fto[j]) / balls[j, B_QO] if balls[j, B_QO] > 0 else 0.0
+        out["gyro_traction_inner"][j] = abs(fti[j]) / balls[j, B_QI] if balls[j, B_QI] > 0 else 0.0
         out["h_central_outer"][j], out["h_min_outer"][j] = geo[j, km.G_HCO], geo[j, km.G_HMO]
         out["h_central_inner"][j], out["h_min_inner"][j] = geo[j, km.G_HCI], geo[j, km.G_HMI]
     return out
