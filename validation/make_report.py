@@ -408,6 +408,11 @@ def section_quasistatic():
                      f"the outer race must supply for the gyroscopic moment under race control "
                      f"{v['race_control']['gyro_traction_outer']:.4f}. Plots: "
                      f"`{Path(v['beta_scan']['plot']).name}`, `{Path(v['plot_slip']).name}`.")
+    cv = d["strip_convergence"]
+    lines.append("- Strip integration (default 32 strips x 4 points): total dissipation with the curve, race control / "
+                 "minimum energy: " + "; ".join(f"{c['n_strips']}x{c['n_across']}: {c['race_control_W']:.1f} / "
+                                                f"{c['min_energy_W']:.1f} W ({100 * c['change']:+.2f} %)" for c in cv)
+                 + ".")
     rc, rg = d["tractions"]["ester_curve_illustrative"]["rigid_race_control"], \
         d["tractions"]["ester_curve_illustrative"]["race_control"]
     c = d["combined"]

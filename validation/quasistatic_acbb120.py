@@ -103,6 +103,14 @@ def main():
                                        OUT / f"qs_acbb120_slip_{tr}.png"))
         res["tractions"][tr] = d
     tr0 = TRACTIONS[0]
+    conv = []
+    for ns, na in ((16, 2), (32, 4), (64, 8), (128, 8)):
+        p = [solve_quasistatic("ACBB-120", 0.0, FA, omega=W, traction=tr0, lubricant=LUB, control=c, n_strips=ns,
+                               n_across=na, stiffness=False).dissipation_total for c in ("outer", "min-energy")]
+        conv.append({"n_strips": ns, "n_across": na, "race_control_W": p[0], "min_energy_W": p[1],
+                     "change": p[1] / p[0] - 1})
+        print(f"strips {ns:3d} x {na}: race control {p[0]:.1f} W, minimum energy {p[1]:.1f} W ({100 * (p[1] / p[0] - 1):+.2f} %)")
+    res["strip_convergence"] = conv
     res["plot_rigid_vs_growing"] = str(plot_loads_angles(
         {"rigid rings": sols[(tr0, "rigid_race_control")], "growing rings": sols[(tr0, "race_control")]},
         OUT / "qs_acbb120_rigid_vs_growing.png"))
