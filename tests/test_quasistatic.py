@@ -275,3 +275,11 @@ def test_angular_contact_needs_an_axial_load_to_locate_the_ring():
     q, a = s.balls["q_inner"], s.balls["alpha_inner"]
     assert (q * np.sin(a)).sum() == pytest.approx(100.0, rel=1e-7)
     assert s.balls["q_outer"][0] > s.balls["centrifugal_force"][0] * 0.9
+
+
+def test_induced_axial_force_published_factor():
+    # Harris & Kotzalas ch. 7 (also bearing catalogues): with half the balls loaded (eps = 0.5),
+    # F_a = 1.216 F_r tan(alpha) for point contact
+    for deg in (15.0, 25.0, 40.0):
+        a = math.radians(deg)
+        assert ld.induced_axial_force(1000.0, a) / (1000.0 * math.tan(a)) == pytest.approx(1.216, abs=5e-4)
