@@ -15,8 +15,10 @@ from .model.scenario import Scenario
 from .model.stability import SimulationError, StepSizeWarning
 from .outputs.results import Results
 from .simulate import CreateBallBearing, simulate
+from .solvers.quasistatic import QuasiStaticSolution, solve_quasistatic
 
 __version__ = "0.1.0"
 
 __all__ = ["CreateBallBearing", "BallBearing", "InputError", "Lubricant", "Material", "Results", "Scenario", "SimulationError", "StepSizeWarning",
-           "catalog", "get_bearing", "load_bearing", "lubricants", "materials", "simulate"]
+           "catalog", "get_bearing", "load_bearing", "lubricants", "materials", "simulate",
+           "solve_quasistatic", "QuasiStaticSolution"]

@@ -33,6 +33,8 @@ SCRIPTS = [
     ("bench_overhead.py", []),
     ("round_off_sensitivity.py", []),
     ("three_dof.py", []),
+    ("quasistatic_acbb120.py", []),
+    ("bench_quasistatic.py", []),
 ]
 
 
@@ -472,6 +474,68 @@ def section_three_dof():
               "one oscillating mode (the two rings and the ball moving together on k1 + k3) and turns the rest into "
               "real roots. The contact-model run keeps three lightly damped modes.", ""]
     return lines
+def section_quasistatic():
+    d = load("quasistatic_acbb120.json")
+    bq = load("bench_quasistatic.json")
+    lines = ["## Quasi-static solver: the ACBB-120 of Gupta (2020)", "",
+             "Command: `python validation/quasistatic_acbb120.py` (solver: `solve_quasistatic`). ACBB-120, "
+             "25,000 rpm, 22,240 N thrust, cageless, M-50, films with the MIL-L-23699 entry at 492 K. Traction: "
+             "`ester_curve_illustrative` (the form of Gupta's traction curve with illustrative parameters, not his "
+             "Fig. 6) and `ehl_mil_l_23699_492K` (this project's EHL parameters). Ball 0 (all balls are equal).", "",
+             "| traction | case | control | alpha_i [deg] | alpha_o [deg] | Q_i [N] | Q_o [N] | omega_m [rad/s] | "
+             "omega_b [rad/s] | beta [deg] | spin/roll i | spin/roll o | P_i [W] | P_o [W] | P total [W] |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    for tr, v in d["tractions"].items():
+        for case in ("rigid_race_control", "race_control", "inner_control", "min_energy", "rigid_min_energy",
+                     "min_energy_492K"):
+            r = v[case]
+            lines.append(f"| {tr} | {case} | {r['control_used']} | {r['alpha_inner_deg']:.2f} | "
+                         f"{r['alpha_outer_deg']:.2f} | {r['q_inner_N']:.0f} | {r['q_outer_N']:.0f} | "
+                         f"{r['orbital_speed_rad_s']:.1f} | {r['ball_speed_rad_s']:.0f} | {r['beta_deg']:.3f} | "
+                         f"{r['spin_roll_inner']:.4f} | {r['spin_roll_outer']:.4f} | {r['dissipation_inner_W']:.0f} | "
+                         f"{r['dissipation_outer_W']:.0f} | {r['dissipation_total_W']:.0f} |")
+    lines.append("")
+    for tr, v in d["tractions"].items():
+        me = v["min_energy"]
+        lines.append(f"- {tr}: minimum energy changes the total dissipation by **{100 * v['min_energy_change']:+.1f} %** "
+                     f"against race control ({v['race_control']['control_used']} race by Jones' criterion; Gupta "
+                     f"reports about -24 % with his traction curve); minimum check: Hessian eigenvalues "
+                     f"{', '.join(f'{x:.3g}' for x in me['minimum_check']['hessian_eigenvalues'])}, neighbours higher "
+                     f"{me['minimum_check']['neighbours_higher']}; pure-rolling points x1/a = "
+                     f"{me['x1_over_a_outer']:.3f} (outer), x2/a = {me['x2_over_a_inner']:.3f} (inner); net rolling-"
+                     f"direction traction on a ball (zero in a cageless steady state) {v['race_control']['traction_drag_N']:.1f} N "
+                     f"under race control, {me['traction_drag_N']:.1f} N under minimum energy; traction coefficient "
+                     f"the outer race must supply for the gyroscopic moment under race control "
+                     f"{v['race_control']['gyro_traction_outer']:.4f}. Plots: "
+                     f"`{Path(v['beta_scan']['plot']).name}`, `{Path(v['plot_slip']).name}`.")
+    cv = d["strip_convergence"]
+    lines.append("- Strip integration (default 32 strips x 4 points): total dissipation with the curve, race control / "
+                 "minimum energy: " + "; ".join(f"{c['n_strips']}x{c['n_across']}: {c['race_control_W']:.1f} / "
+                                                f"{c['min_energy_W']:.1f} W ({100 * c['change']:+.2f} %)" for c in cv)
+                 + ".")
+    rc, rg = d["tractions"]["ester_curve_illustrative"]["rigid_race_control"], \
+        d["tractions"]["ester_curve_illustrative"]["race_control"]
+    c = d["combined"]
+    lines += [f"- Inner-ring growth at 25,000 rpm: {rg['inner_ring_growth_um']:.1f} um (rotating annular disc); "
+              f"contact angles rigid -> growing rings: inner {rc['alpha_inner_deg']:.2f} -> {rg['alpha_inner_deg']:.2f}"
+              f" deg, outer {rc['alpha_outer_deg']:.2f} -> {rg['alpha_outer_deg']:.2f} deg "
+              "(`qs_acbb120_rigid_vs_growing.png`).",
+              f"- Combined case F_r = 3 kN, M_y = 150 N m with the thrust: tilt_y = {c['displacement'][4] * 1e3:.3f} "
+              f"mrad, inner loads {min(c['q_inner_N']):.0f} to {max(c['q_inner_N']):.0f} N, inner contact angles "
+              f"{min(c['alpha_inner_deg']):.1f} to {max(c['alpha_inner_deg']):.1f} deg (`qs_acbb120_combined.png`).",
+              "", "Speed (`python validation/bench_quasistatic.py`, medians, one run):", "",
+              "| case | wall [ms] | target [ms] |", "|---|---|---|"]
+    for k, v in bq.items():
+        if k.endswith("_s") and isinstance(v, float):
+            t = bq["targets_s"].get(k)
+            lines.append(f"| {k[:-2]} | {1e3 * v:.1f} | {'' if t is None else f'{1e3 * t:.0f}'} |")
+    lines += ["", "Compiled contact-slip integration (`physics.contact_slip._contact_traction`, one call, "
+              "timed in a compiled loop):", "", "| traction model | strips x points across | ns per call |",
+              "|---|---|---|"]
+    for k, v in bq["kernel_ns_per_call"].items():
+        name, grid = k.split("|")
+        lines.append(f"| {name} | {grid} | {v:.0f} |")
+    return lines + [""]
 
 
 def main(argv=None):
@@ -499,7 +563,8 @@ def main(argv=None):
                  ", ".join(f"{k} {v:.0f} s" for k, v in walls.items()) + ".", ""]
     body = (section_reference() + section_cage_step() + section_element() + section_cross() + section_peer()
             + section_figures()
-            + section_work_precision() + section_sweep() + section_round_off() + section_three_dof())
+            + section_work_precision() + section_sweep() + section_quasistatic() + section_three_dof()
+            + section_round_off())
     (HERE / "REPORT.md").write_text("\n".join(head + body))
     print(f"written {HERE / 'REPORT.md'}")
 

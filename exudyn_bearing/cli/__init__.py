@@ -3,8 +3,14 @@
 Sub-commands (``--json`` for scripts, tables otherwise):
 
 * ``info BEARING [--omega W]``: geometry, Hertz constants, kinematics.
-* ``static BEARING --Fr N [--Fa N] [--Pd M] [--omega W] [--film hd|mk]
-  [--plot FILE.png]``: quasi-static load distribution and lubrication map.
+* ``static BEARING --Fr N [--Fa N] [--tilt fixed|free] [--Pd M] [--omega W]
+  [--film hd|mk] [--plot FILE.png]``: the zero-speed special case of
+  ``quasistatic`` (load distribution, held DOFs with their reactions) and the
+  lubrication map.
+* ``quasistatic BEARING [--Fr N] [--Fa N] [--Mx NM] [--My NM] [--omega W |
+  --rpm N] [--control outer|inner|auto|min-energy] [--traction NAME]
+  [--ring-growth | --no-ring-growth] [--fit M] [--json] [--plot FILE.png]``:
+  5-DOF equilibrium at speed, ball kinematics, slip, dissipation, stiffness.
 * ``simulate --bearing B --Fr N --omega W --engine reference --t-end T
   [--out DIR] [--json]``: dynamic simulation; summary keys of
   :meth:`exudyn_bearing.outputs.results.Results.summary`.
@@ -22,13 +28,14 @@ import sys
 
 from ..data import InputError
 from ..model.stability import SimulationError
-from . import info, simulate, static, vibration
+from . import info, quasistatic, simulate, static, vibration
 from .common import Parser
 
 __all__ = ["main"]
 
 #: Sub-commands: name -> module with ``add_parser(subparsers)`` and ``run(args)``.
-COMMANDS = {"info": info, "static": static, "simulate": simulate, "vibration": vibration}
+COMMANDS = {"info": info, "static": static, "quasistatic": quasistatic, "simulate": simulate,
+            "vibration": vibration}
 
 
 def _parser() -> Parser:

@@ -1,5 +1,5 @@
-"""The catalogue: materials, lubricants and bearings of ``catalog.json``, and
-bearing look-up by name, JSON file or dict.
+"""The catalogue: materials, lubricants, traction models and bearings of
+``catalog.json``, and bearing look-up by name, JSON file or dict.
 
 Each entry of ``catalog.json`` carries its ``source``. See PHYSICS.md sec. 2.
 """
@@ -16,8 +16,10 @@ from .bearings import BallBearing
 from .errors import InputError, check_finite
 from .lubricants import Lubricant
 from .materials import Material
+from .traction import TractionModel
 
-__all__ = ["catalog", "materials", "lubricants", "get_bearing", "load_bearing", "default_lubricant"]
+__all__ = ["catalog", "materials", "lubricants", "traction_models", "get_bearing", "load_bearing",
+           "default_lubricant", "get_traction_model"]
 
 
 def _read_catalog() -> dict:
@@ -30,6 +32,20 @@ materials: Mapping[str, Material] = {
     k: Material(name=k, **v) for k, v in _RAW["materials"].items()}
 lubricants: Mapping[str, Lubricant] = {
     k: Lubricant(name=k, **v) for k, v in _RAW["lubricants"].items()}
+traction_models: Mapping[str, TractionModel] = {
+    k: TractionModel(name=k, **v) for k, v in _RAW.get("traction_models", {}).items()}
+
+
+def get_traction_model(spec) -> TractionModel:
+    """A traction model by catalogue name (or a TractionModel passed through);
+    an unknown name lists the valid ones."""
+    if isinstance(spec, TractionModel):
+        return spec
+    try:
+        return traction_models[str(spec)]
+    except KeyError:
+        raise InputError(f"traction: unknown traction model {spec!r} "
+                         f"(catalogue: {', '.join(traction_models)})") from None
 
 
 def _bearing_from_dict(name: str, d: Mapping) -> BallBearing:

@@ -35,6 +35,7 @@ __all__ = [
     "film_thickness",
     "film_thickness_hamrock_dowson",
     "film_thickness_masjedi_khonsari",
+    "film_thickness_central_hamrock_dowson",
     "film_parameter",
 ]
 
@@ -141,7 +142,31 @@ def film_thickness_masjedi_khonsari(u_r, load, r_x, kappa, e_prime, eta, xi):
                  * (1.0 - 0.974 * np.exp(-0.676 * kappa)) * r_x)
 
 
+def film_thickness_central_hamrock_dowson(u_r, load, r_x, kappa, e_prime, eta, xi):
+    """Central film thickness h_c [m], Hamrock & Dowson [1]_.
+
+    h_c = 2.69 U^0.67 G^0.53 W^-0.067 (1 - 0.61 exp(-0.73 k)) R_x, the film
+    over the flat part of the contact that carries the shear of the traction
+    models (:mod:`exudyn_bearing.physics.traction`). Parameters as
+    :func:`film_thickness_hamrock_dowson`.
+
+    Examples
+    --------
+    The 6208 outer contact of :func:`film_thickness_hamrock_dowson` (h_c above h_min):
+
+    >>> h = film_thickness_central_hamrock_dowson(7.2475, 1457.0, 7.61e-3, 7.29, 230.77e9, 0.04, 2.3e-8)
+    >>> round(float(h) * 1e6, 2)
+    0.99
+    """
+    ln_u = np.log(np.maximum(eta * np.abs(u_r) / (e_prime * r_x), 1e-300))
+    ln_w = np.log(np.maximum(load, 1e-300) / (e_prime * r_x * r_x))
+    on = (load > 0.0) * (u_r != 0.0)
+    return on * (2.69 * np.exp(0.67 * ln_u + 0.53 * np.log(xi * e_prime) - 0.067 * ln_w)
+                 * (1.0 - 0.61 * np.exp(-0.73 * kappa)) * r_x)
+
+
 _film_hd = kernel(film_thickness_hamrock_dowson)
+_film_central_hd = kernel(film_thickness_central_hamrock_dowson)
 _film_mk = kernel(film_thickness_masjedi_khonsari)
 
 
