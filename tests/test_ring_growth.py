@@ -5,7 +5,7 @@ import pytest
 
 from exudyn_bearing import InputError, catalog
 from exudyn_bearing.physics import ring_growth as rg
-from exudyn_bearing.solvers.quasistatic.geometry import operating_geometry
+from exudyn_bearing.model.operating_geometry import operating_geometry
 
 STEEL = dict(density=7830.0, youngs_modulus=203e9, poisson_ratio=0.28)
 

@@ -15,7 +15,7 @@ The groove construction is that of :class:`exudyn_bearing.data.BallBearing`
   and the groove radius; balls: their radius), from a reference of 293.15 K.
 
 Where the catalogue gives no bore or outside diameter, the ring section is
-estimated as in :func:`exudyn_bearing.model.initial_state.ring_mass_estimate`
+estimated as in :func:`.initial_state.ring_mass_estimate`
 (0.65 R_b below the inner raceway, 0.65 R_b above the outer one).
 """
 from __future__ import annotations
@@ -23,8 +23,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from ...data import BallBearing, InputError
-from ...physics import ring_growth as rg
+from ..data import BallBearing, InputError
+from ..physics import ring_growth as rg
 
 __all__ = ["OperatingGeometry", "operating_geometry", "REFERENCE_TEMPERATURE"]
 
