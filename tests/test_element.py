@@ -213,6 +213,7 @@ def test_exudyn_velocity_verlet_passes_the_half_step_velocity():
     ss.timeIntegration.numberOfSteps, ss.timeIntegration.endTime = 3, 3 * h
     ss.timeIntegration.verboseMode = 0
     ss.timeIntegration.explicit.computeEndOfStepAccelerations = False
+    ss.solution.file.write = False  # the default writes solution/coordinatesSolution.txt into the working directory
     solve_dynamic(mbs, ss, exu.DynamicSolverType.VelocityVerlet)
     (_, x0, _), (_, x1, v1), (_, x2, v2) = seen[-3:]
     assert v1 == pytest.approx((x1 - x0) / h, rel=1e-12) and v2 == pytest.approx((x2 - x1) / h, rel=1e-12)
