@@ -38,7 +38,7 @@ from exudyn.itemInterface import (LoadForceVector, LoadMassProportional, LoadTor
                                   SensorNode)
 
 import exudyn_bearing as eb
-from exudyn_bearing.outputs.plotting import _pyplot, save_figure
+from exudyn_bearing.outputs.plotting import pyplot, save_figure
 
 
 def build(omega_target=1000.0, torque_max=5.0, unbalance=1e-4, dt=5e-6, mode="fast", sub_steps=1):
@@ -103,7 +103,7 @@ def main(argv=None):
         r.save(out, stem=f"bearing_{k}")
     pos = mbs.GetSensorStoredData(sensor)
     w = mbs.GetSensorStoredData(speed)
-    plt = _pyplot()
+    plt = pyplot()
     fig, ax = plt.subplots(2, 2, figsize=(12, 8))
     ax[0, 0].plot(w[:, 0], w[:, 3])
     ax[0, 0].set_xlabel("t [s]")

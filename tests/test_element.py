@@ -1,14 +1,12 @@
 """Exudyn bearing element: cross-check with the reference engine, ring coupling, bad input."""
 import math
-import warnings
 
 import numpy as np
 import pytest
 
 exu = pytest.importorskip("exudyn")
-from exudyn.itemInterface import (LoadForceVector, MarkerBodyRigid, MarkerNodeCoordinate,  # noqa: E402
-                                  MarkerNodePosition, NodePoint, NodeRigidBodyRotVecLG, NodeRigidBodyRxyz,
-                                  ObjectGround, ObjectMassPoint, ObjectRigidBody)
+from exudyn.itemInterface import (LoadForceVector, MarkerBodyRigid, MarkerNodeCoordinate, NodePoint,  # noqa: E402
+                                  NodeRigidBodyRotVecLG, NodeRigidBodyRxyz, ObjectGround, ObjectRigidBody)
 
 import exudyn_bearing as eb  # noqa: E402
 from exudyn_bearing import InputError  # noqa: E402
@@ -32,7 +30,7 @@ def test_cross_engine_summary_within_one_percent(both_engines):
     s_ref, s_exd = ref.summary(), exd.summary()
     assert set(s_ref) == set(s_exd)  # same keys from both engines
     for k in KEYS:
-        # issue: within 1 %; the engines share the contact kernel, so they agree far closer
+        # required: within 1 %; the engines share the contact kernel, so they agree far closer
         assert s_exd[k] == pytest.approx(s_ref[k], rel=1e-3), k
 
 

@@ -34,3 +34,37 @@ def test_guard_sees_a_file_written_into_the_tree():
         probe.unlink()
     assert [e for e, _ in after - before] == ["?? solution_probe_of_the_tree_guard.txt"]
     assert working_tree_changes() == before
+
+
+def _scripts():
+    return sorted((ROOT / "scenarios").glob("*.py")) + sorted((ROOT / "validation").glob("*.py"))
+
+
+def test_scripts_use_only_public_names_of_the_package():
+    import ast
+
+    private = []
+    for path in _scripts():
+        for node in ast.walk(ast.parse(path.read_text(), str(path))):
+            if isinstance(node, ast.ImportFrom) and (node.module or "").startswith("exudyn_bearing"):
+                private += [f"{path.name}: {node.module}.{a.name}" for a in node.names if a.name.startswith("_")]
+    assert private == []
+
+
+def test_validation_and_scenarios_refer_to_no_issue_tracker():
+    import re
+
+    hits = [f"{p.name}:{i}" for p in _scripts() for i, line in enumerate(p.read_text().splitlines(), 1)
+            if re.search(r"\bissue\b", line, re.IGNORECASE)]
+    assert hits == []
+
+
+def test_no_unused_imports_or_variables():
+    import shutil
+
+    ruff = shutil.which("ruff")
+    if ruff is None:
+        pytest.skip("ruff not installed (pip install ruff)")
+    out = subprocess.run([ruff, "check", "--no-cache", "--select", "F401,F841", "tests", "validation", "scenarios",
+                          "exudyn_bearing"], cwd=ROOT, capture_output=True, text=True)
+    assert out.returncode == 0, out.stdout

@@ -75,7 +75,7 @@ def section_reference():
     ok = [f"{n} ({r['wall_per_sim_s']:.2f} s)" for n, r in d["settings"].items()
           if r["wall_per_sim_s"] <= 0.5 and max(r["err_q_max_inner"], r["err_q_max_outer"], r["err_cage_speed"]) <= 5e-3
           and r["summary"]["friction_power"] < 1.0]
-    lines += ["", "- Issue target (at most 0.5 s per simulated second, errors of q_max and cage_speed <= 0.5 %, "
+    lines += ["", "- Requirement (at most 0.5 s per simulated second, errors of q_max and cage_speed <= 0.5 %, "
               "tangential springs resolved): met in this run by " + ("; ".join(ok) if ok else "no setting") + "."]
     lines += [
               f"- Stable step: estimate {est['explicit'] * 1e6:.2f} us (explicit spring) and "
@@ -247,7 +247,7 @@ def section_figures():
     if "item1" in d:
         lines += ["### 1. Quasi-static loads (omega = 1 rad/s)", "",
                   "Largest relative error of Q and delta at the loaded balls (Q > 5 % Q_max) against the discrete "
-                  "analytic solution at the same ball phase (issue target 2 %):", "",
+                  "analytic solution at the same ball phase (required: within 2 %):", "",
                   "| case | engine | err Q | err delta | Q_max | analytic Q_max | analytic eps | wall s |",
                   "|---|---|---|---|---|---|---|---|"]
         for k, v in d["item1"].items():
