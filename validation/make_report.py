@@ -149,12 +149,13 @@ def section_element():
                           for load, r in rotor.items())
               + ". Loaded (600 and 3000 N), every mode and step lies within "
               f"{pct(max(spread(r) for k, r in rotor.items() if k != '24.5'), 1)} of each other. At 24.5 N the "
-              "rotor rattles in the clearance and the run-up is chaotic: the body mode alone spreads "
+              "rotor rattles near the centre and the run-up is chaotic: the body mode alone spreads "
               f"{pct(spread({k: v for k, v in rotor['24.5'].items() if k.startswith('bodies')}), 0)} over its "
               "step sizes, and the fast-mode runs fall in the same band. With one sub-step the fast mode costs "
               f"{d['ratio_fast1_body']:.2f} of the body mode (bench_element.py).",
               "- The run-up of scenarios/rotor_two_6208.py (no load but gravity and unbalance) has two outcomes, "
-              "a shaft rattling near the centre or a whirl at the full clearance from about 25 ms on; which one "
+              "a shaft rattling near the centre or a whirl (the 6208 has no clearance: the orbit is the contacts' "
+              "compliance) from about 25 ms on; which one "
               "occurs is decided by round-off-level differences, not by the mode (same script, mean over 40-50 "
               "ms, orbit radius / largest outer ball load): " + "; ".join(
                   f"{k} {v['orbit_radius_um']:.1f} um / {v['q_max_outer_N']:.0f} N" for k, v in whirl.items()) + ".",
