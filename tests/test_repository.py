@@ -68,3 +68,49 @@ def test_no_unused_imports_or_variables():
     out = subprocess.run([ruff, "check", "--no-cache", "--select", "F401,F841", "tests", "validation", "scenarios",
                           "exudyn_bearing"], cwd=ROOT, capture_output=True, text=True)
     assert out.returncode == 0, out.stdout
+
+
+def test_report_figures_are_tracked_small_and_each_shown_once():
+    import re
+
+    report = (ROOT / "validation" / "REPORT.md").read_text()
+    links = re.findall(r"!\[[^\]]*\]\(([^)]+)\)", report)
+    assert len(links) >= 10
+    folder = ROOT / "validation" / "report_figures"
+    assert sorted(links) == sorted(f"report_figures/{p.name}" for p in folder.glob("*.png"))
+    for link in links:
+        path = ROOT / "validation" / link
+        assert path.stat().st_size < 150_000, link
+        # each figure has its sentence right below it
+        after = report[report.index(link):].splitlines()
+        assert after[2].startswith(f"*{path.name}*: ") and after[2].endswith("."), link
+    tracked = _git("ls-files", "validation/report_figures").split()
+    assert sorted(tracked) == sorted(f"validation/{link}" for link in links)
+
+
+def test_make_report_publishes_a_figure_small(tmp_path, monkeypatch):
+    import sys
+
+    sys.path.insert(0, str(ROOT / "validation"))
+    import make_report
+    from exudyn_bearing.outputs.plotting import pyplot, save_figure
+
+    monkeypatch.setattr(make_report, "OUT", tmp_path / "out")
+    monkeypatch.setattr(make_report, "FIGURES", tmp_path / "report_figures")
+    monkeypatch.setattr(make_report, "_published", [])
+    (tmp_path / "out").mkdir()
+    plt = pyplot()
+    fig, ax = plt.subplots()
+    ax.plot([0, 1, 2], [1, 3, 2], "o-")
+    save_figure(fig, tmp_path / "out" / "a.png")
+    (tmp_path / "report_figures").mkdir()
+    (tmp_path / "report_figures" / "stale.png").write_bytes(b"x")
+    lines = make_report.figure("a.png", "A line.")
+    assert lines == ["![a](report_figures/a.png)", "", "*a.png*: A line.", ""]
+    assert make_report.figure("missing.png", "Not there.") == []
+    make_report.remove_unpublished()
+    assert sorted(p.name for p in (tmp_path / "report_figures").iterdir()) == ["a.png"]
+    from PIL import Image
+
+    with Image.open(tmp_path / "report_figures" / "a.png") as im:
+        assert im.mode == "P" and im.size == Image.open(tmp_path / "out" / "a.png").size
