@@ -162,11 +162,10 @@ def run_case(name: str, spec: dict, out_dir: str) -> str:
     return name
 
 
-def _error_record(name, spec, exc, wall, tb=None):
+def _error_record(name, spec, exc, wall):
     return {"name": name, "status": "failed", "spec": spec, "spec_hash": spec_hash(spec),
             "error": {"type": type(exc).__name__, "message": str(exc)},
-            "traceback": tb if tb is not None else "".join(traceback.format_exception(type(exc), exc, exc.__traceback__)),
-            "wall_case_s": wall}
+            "traceback": "".join(traceback.format_exception(type(exc), exc, exc.__traceback__)), "wall_case_s": wall}
 
 
 def _run_case_recorded(name: str, spec: dict, out_dir: str):

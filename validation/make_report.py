@@ -247,7 +247,8 @@ def section_cross():
     d = load("cross_engine.json")
     lines = ["## Cross-engine check", "",
              "Command: `python validation/cross_engine.py` (T = 0.05 s, dt = 5 us, both engines on each scene; "
-             "figures `out/cross_engine_<scene>.png`, two of them below). Largest relative difference of q_max_inner, q_max_outer, "
+             "figures `out/cross_engine_<scene>.png`, two of them below). Largest relative difference of "
+             "q_max_inner, q_max_outer, "
              "cage_speed, ball_spin and lambda_outer_psi0:", "", "| scene | largest relative difference |",
              "|---|---|"]
     for scene, rows in d.items():
@@ -549,6 +550,15 @@ def section_three_dof():
               f"its squeeze-film term alone is {ci['c_squeeze']:.3g} N s/m): it locks the ball to the rings, leaves "
               "one oscillating mode (the two rings and the ball moving together on k1 + k3) and turns the rest into "
               "real roots. The contact-model run keeps three lightly damped modes.", ""]
+    lines += figure("three_dof_frf.png", "Direct receptances of the outer ring, ball and inner ring against "
+                    "frequency: the source's printed matrices (left), the derived 6004 with short-bearing film "
+                    "damping (middle) and with the contact model's damping (right); thin vertical lines at the "
+                    "natural frequencies.")
+    lines += figure("three_dof_time_response.png", "Response of the derived 6004 to the ball-pass force train at "
+                    "BPFO (top: force, bottom: displacements), short-bearing damping (left) and contact-model "
+                    "damping (right).")
+    lines += figure("three_dof_modes.png", "Mode shapes (largest entry 1, signed by the real part) with their "
+                    "eigenvalues or natural frequencies and damping ratios, for the same three models.")
     return lines
 def section_quasistatic():
     d = load("quasistatic_acbb120.json")
