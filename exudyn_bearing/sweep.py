@@ -244,17 +244,18 @@ class _StopOnSignal:
     like Ctrl-C raises KeyboardInterrupt."""
 
     def __enter__(self):
-        self._old = None
+        self._installed = False
         if threading.current_thread() is threading.main_thread():
             def handler(signum, frame):
                 raise SweepInterrupted(f"sweep stopped by signal {signal.Signals(signum).name}")
 
             self._old = signal.signal(signal.SIGTERM, handler)
+            self._installed = True
         return self
 
     def __exit__(self, *exc):
-        if self._old is not None:
-            signal.signal(signal.SIGTERM, self._old)
+        if self._installed:  # None: a handler not set from Python; the default is the closest
+            signal.signal(signal.SIGTERM, signal.SIG_DFL if self._old is None else self._old)
         return False
 
 

@@ -200,8 +200,11 @@ def test_a_signal_to_the_parent_stops_the_workers(tmp_path, sig):
         proc.wait(10)
 
 
-def test_sweep_interrupted_is_a_keyboard_interrupt():
+def test_sweep_interrupted_is_a_keyboard_interrupt_and_the_handler_is_restored(tmp_path):
     assert issubclass(SweepInterrupted, KeyboardInterrupt)
+    before = signal.getsignal(signal.SIGTERM)
+    run_sweep({"bad": _case(1000.0, dt=-1.0)}, tmp_path, workers=1, progress=False)
+    assert signal.getsignal(signal.SIGTERM) is before
 
 
 def test_dask_local_cluster(tmp_path):
