@@ -609,7 +609,19 @@ def section_quasistatic():
               f"- Combined case F_r = 3 kN, M_y = 150 N m with the thrust: tilt_y = {c['displacement'][4] * 1e3:.3f} "
               f"mrad, inner loads {min(c['q_inner_N']):.0f} to {max(c['q_inner_N']):.0f} N, inner contact angles "
               f"{min(c['alpha_inner_deg']):.1f} to {max(c['alpha_inner_deg']):.1f} deg (`qs_acbb120_combined.png`).",
-              "", "Speed (`python validation/bench_quasistatic.py`, medians, one run):", "",
+              ""]
+    for tr, v in d["tractions"].items():
+        lines += figure(Path(v["beta_scan"]["plot"]).name, f"Dissipation of one ball against the spin-axis angle "
+                        f"beta with traction {tr}: the least dissipation at each fixed beta, the race-control "
+                        "solution and the minimum-energy solution.")
+        lines += figure(Path(v["plot_slip"]).name, f"Slip of ball 0 against its race along the major axis of the "
+                        f"outer (left) and inner (right) contact ellipse, race control and minimum energy, traction "
+                        f"{tr}.")
+    lines += figure("qs_acbb120_rigid_vs_growing.png", "Contact loads (left) and contact angles (right) of all balls "
+                    "against azimuth with rigid and with growing rings.")
+    lines += figure("qs_acbb120_combined.png", "Contact loads (left) and contact angles (right) against azimuth under "
+                    "the thrust alone and with F_r = 3 kN and M_y = 150 N m added.")
+    lines += ["Speed (`python validation/bench_quasistatic.py`, medians, one run):", "",
               "| case | wall [ms] | target [ms] |", "|---|---|---|"]
     for k, v in bq.items():
         if k.endswith("_s") and isinstance(v, float):
