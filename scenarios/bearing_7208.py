@@ -26,7 +26,7 @@ import numpy as np
 
 import exudyn_bearing as eb
 from exudyn_bearing.physics.load_distribution import static_equilibrium
-from exudyn_bearing.outputs.plotting import _pyplot, label_azimuth_axes, save_figure
+from exudyn_bearing.outputs.plotting import label_azimuth_axes, pyplot, save_figure
 
 
 def main(argv=None):
@@ -42,7 +42,7 @@ def main(argv=None):
     st = static_equilibrium(b, 3000.0, 3000.0)
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
-    plt = _pyplot()
+    plt = pyplot()
     fig, ax = plt.subplots(1, 2, figsize=(11, 4.2))
     psi_a = np.degrees((st.psi + np.pi) % (2 * np.pi) - np.pi)
     order = np.argsort(psi_a)

@@ -2,7 +2,7 @@
 
     python validation/bench_quasistatic.py
 
-Targets of issue #10 (wall time on this machine): the full ACBB-120 solution with minimum energy
+Targets (wall time on this machine): the full ACBB-120 solution with minimum energy
 under 0.5 s, a sweep over 20 speeds under 5 s, a 6208 radial case under 50 ms. Also the cost of one
 call of ``physics.contact_slip._contact_traction`` (what the dynamics engines would call per contact
 and step) for several strip counts and traction models, timed inside a compiled loop. Writes

@@ -7,6 +7,10 @@
 Each section names the command that produced it, the engine, the step and the
 wall time. The machines are shared and noisy: wall times are medians where a
 script repeats runs, and ratios matter more than absolute values.
+
+The figures the report shows are copied from validation/out into
+validation/report_figures (tracked; 64-colour PNGs, a few tens of kB each)
+and embedded with a sentence each; figures no longer shown are removed.
 """
 from __future__ import annotations
 
@@ -20,6 +24,11 @@ from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
 OUT = HERE / "out"
+#: Tracked copies of the figures the report shows (REPORT.md links them relatively).
+FIGURES = HERE / "report_figures"
+#: Largest size of a published figure [bytes].
+MAX_FIGURE_BYTES = 150_000
+_published = []
 SCRIPTS = [
     ("bench_reference.py", []),
     ("bench_element.py", ["--ga"]),
@@ -44,6 +53,34 @@ def load(name):
 
 def pct(x, digits=3):
     return "n/a" if x is None else f"{100 * x:.{digits}f} %"
+
+
+def figure(src, sentence):
+    """Markdown lines showing ``OUT / src`` (copied into FIGURES as a 64-colour
+    PNG) with ``sentence`` below it; none if the script did not write it."""
+    path = OUT / src
+    if not path.exists():
+        print(f"figure {src} missing: not in the report")
+        return []
+    from PIL import Image
+
+    FIGURES.mkdir(exist_ok=True)
+    target = FIGURES / path.name
+    with Image.open(path) as im:
+        small = im.convert("RGB").quantize(colors=64, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.NONE)
+        small.save(target, optimize=True)
+    if target.stat().st_size > MAX_FIGURE_BYTES:
+        raise SystemExit(f"{target}: {target.stat().st_size} bytes, above {MAX_FIGURE_BYTES}: lower the figure's dpi")
+    _published.append(target.name)
+    return [f"![{path.stem}]({FIGURES.name}/{target.name})", "", f"*{path.name}*: {sentence}", ""]
+
+
+def remove_unpublished():
+    """Delete figures of FIGURES that this report no longer shows."""
+    if FIGURES.exists():
+        for f in FIGURES.glob("*.png"):
+            if f.name not in _published:
+                f.unlink()
 
 
 def run_all(skip=()):
@@ -75,7 +112,7 @@ def section_reference():
     ok = [f"{n} ({r['wall_per_sim_s']:.2f} s)" for n, r in d["settings"].items()
           if r["wall_per_sim_s"] <= 0.5 and max(r["err_q_max_inner"], r["err_q_max_outer"], r["err_cage_speed"]) <= 5e-3
           and r["summary"]["friction_power"] < 1.0]
-    lines += ["", "- Issue target (at most 0.5 s per simulated second, errors of q_max and cage_speed <= 0.5 %, "
+    lines += ["", "- Requirement (at most 0.5 s per simulated second, errors of q_max and cage_speed <= 0.5 %, "
               "tangential springs resolved): met in this run by " + ("; ".join(ok) if ok else "no setting") + "."]
     lines += [
               f"- Stable step: estimate {est['explicit'] * 1e6:.2f} us (explicit spring) and "
@@ -149,12 +186,13 @@ def section_element():
                           for load, r in rotor.items())
               + ". Loaded (600 and 3000 N), every mode and step lies within "
               f"{pct(max(spread(r) for k, r in rotor.items() if k != '24.5'), 1)} of each other. At 24.5 N the "
-              "rotor rattles in the clearance and the run-up is chaotic: the body mode alone spreads "
+              "rotor rattles near the centre and the run-up is chaotic: the body mode alone spreads "
               f"{pct(spread({k: v for k, v in rotor['24.5'].items() if k.startswith('bodies')}), 0)} over its "
               "step sizes, and the fast-mode runs fall in the same band. With one sub-step the fast mode costs "
               f"{d['ratio_fast1_body']:.2f} of the body mode (bench_element.py).",
               "- The run-up of scenarios/rotor_two_6208.py (no load but gravity and unbalance) has two outcomes, "
-              "a shaft rattling near the centre or a whirl at the full clearance from about 25 ms on; which one "
+              "a shaft rattling near the centre or a whirl (the 6208 has no clearance: the orbit is the contacts' "
+              "compliance) from about 25 ms on; which one "
               "occurs is decided by round-off-level differences, not by the mode (same script, mean over 40-50 "
               "ms, orbit radius / largest outer ball load): " + "; ".join(
                   f"{k} {v['orbit_radius_um']:.1f} um / {v['q_max_outer_N']:.0f} N" for k, v in whirl.items()) + ".",
@@ -209,13 +247,19 @@ def section_cross():
     d = load("cross_engine.json")
     lines = ["## Cross-engine check", "",
              "Command: `python validation/cross_engine.py` (T = 0.05 s, dt = 5 us, both engines on each scene; "
-             "figures `out/cross_engine_<scene>.png`). Largest relative difference of q_max_inner, q_max_outer, "
+             "figures `out/cross_engine_<scene>.png`, two of them below). Largest relative difference of "
+             "q_max_inner, q_max_outer, "
              "cage_speed, ball_spin and lambda_outer_psi0:", "", "| scene | largest relative difference |",
              "|---|---|"]
     for scene, rows in d.items():
         lines.append(f"| {scene} | {max(r['rel_diff'] for r in rows.values()):.1e} |")
     lines += ["", "The engines share the contact kernel; the remaining differences come from Exudyn's "
               "VelocityVerlet and the element's ring coupling.", ""]
+    lines += figure("cross_engine_500rad_s.png", "Outer ball loads of the last samples against azimuth, reference "
+                    "core (blue) and Exudyn element (orange), 6208 at 3000 N and 500 rad/s: the points of the two "
+                    "engines lie on each other.")
+    lines += figure("cross_engine_1700rad_s.png", "The same at 1700 rad/s, where the balls outside the loaded zone "
+                    "press on the outer race with their centrifugal force (the flat part of the curve).")
     return lines
 
 
@@ -242,12 +286,12 @@ def section_peer():
 def section_figures():
     d = load("figures/figures.json")
     lines = ["## The papers' figures (PHYSICS.md sec. 8)", "",
-             "Command: `python validation/figures.py` (figures and their CSV in `out/figures/`; sweeps through "
-             "the sweep runner). Step 5 us, implicit tangential spring, unless said.", ""]
+             "Command: `python validation/figures.py` (figures and their CSV in `out/figures/`, shown below; "
+             "sweeps through the sweep runner). Step 5 us, implicit tangential spring, unless said.", ""]
     if "item1" in d:
         lines += ["### 1. Quasi-static loads (omega = 1 rad/s)", "",
                   "Largest relative error of Q and delta at the loaded balls (Q > 5 % Q_max) against the discrete "
-                  "analytic solution at the same ball phase (issue target 2 %):", "",
+                  "analytic solution at the same ball phase (required: within 2 %):", "",
                   "| case | engine | err Q | err delta | Q_max | analytic Q_max | analytic eps | wall s |",
                   "|---|---|---|---|---|---|---|---|"]
         for k, v in d["item1"].items():
@@ -256,6 +300,11 @@ def section_figures():
                              f"{pct(v['max_rel_err_delta'], 2)} | {v['q_max']:.1f} | {v['q_max_analytic']:.1f} | "
                              f"{v['eps_analytic']:.3f} | {v['wall_s']:.2f} |")
         lines.append("")
+        lines += figure("figures/item1_quasi_static_load.png", "Quasi-static ball loads (left) and total overlaps "
+                        "(right) against azimuth at F_r = 1000, 2000 and 3000 N: lines the discrete analytic "
+                        "solution, circles the reference core, crosses the Exudyn element.")
+        lines += figure("figures/item1_quasi_static_clearance.png", "The same at 3000 N for the clearances P_d = "
+                        "-12.6, 0 and +12.6 um: preload widens the loaded zone, clearance narrows it.")
     if "item2" in d:
         lines += ["### 2. 500 rad/s protocol (start-up 0.05 s, steady 0.2 s, slow-down 0.05 s, from rest)", "",
                   "| engine | ball spin | kinematic | cage | kinematic | Lambda_out psi=0 | median SRR ball 0 "
@@ -270,6 +319,15 @@ def section_figures():
                              f"{srr_s} | {v['wall_s']:.2f} |")
         lines += ["", "Steady values over 0.15-0.25 s. The slide-to-roll ratio of ball 0 is near zero in the "
                   "steady phase and not during start-up and slow-down (figure item2_srr_ball0.png).", ""]
+        lines += figure("figures/item2_speeds_both_engines.png", "Shaft, mean ball spin and cage speed through the "
+                        "protocol, reference core solid and Exudyn element dashed, with the kinematic ball spin "
+                        "952.38 rad/s of PHYSICS.md sec. 8.")
+        lines += figure("figures/item2_srr_ball0.png", "Slide-to-roll ratio of ball 0 at its inner and outer "
+                        "contact (log scale): small in the steady phase, orders of magnitude larger in start-up and "
+                        "slow-down.")
+        lines += figure("figures/item2_film_outer_by_phase.png", "h_min (left) and Lambda (right) of the outer "
+                        "contacts against azimuth by phase: in the steady phase both are lowest at psi = 0; the "
+                        "dashed lines are the regime limits Lambda = 1 and 3.")
     if "item3" in d:
         v = d["item3"]
         lines += ["### 3. Load sweep 750 ... 7500 N (six loads, 500 rad/s)", "",
@@ -278,6 +336,10 @@ def section_figures():
                   f"- slope of ln F_r against ln Q_max: **{v['slope_fr_vs_qmax']:.4f} +- {v['se_slope_fr']:.4f}** "
                   "(near 1; the centrifugal force on the outer race pulls it above 1)",
                   f"- engine {v['engine']}, dt {v['dt'] * 1e6:g} us, total wall {v['wall_s']:.2f} s", ""]
+        lines += figure("figures/item3_lambda_outer_vs_psi.png", "Lambda of the outer contacts against azimuth for "
+                        "the six loads: the higher the load, the lower the film parameter in the loaded zone.")
+        lines += figure("figures/item3_fits.png", "The two log-log fits: Lambda_out at psi = 0 (left) and F_r "
+                        "(right) against the outer Q_max, with the slopes above.")
     if "item4" in d:
         v = d["item4"]
         lines += ["### 4. Clearance sweep (3000 N, 500 rad/s)", "",
@@ -288,6 +350,10 @@ def section_figures():
         lines += ["", f"The loaded zone shrinks and Q_max grows from preload to clearance (monotonic: "
                   f"{v['zone_monotonic'] and v['q_max_monotonic']}); reference engine, total wall "
                   f"{v['wall_s']:.2f} s.", ""]
+        lines += figure("figures/item4_zone_qmax_eps.png", "Loaded-zone half angle, Q_max and the analytic eps "
+                        "against P_d (the table above).")
+        lines += figure("figures/item4_lambda_outer_vs_psi.png", "Lambda of the outer contacts against azimuth "
+                        "for the five clearances: the loaded zone, where the film is thinner, narrows with P_d.")
     if "item5" in d:
         v = d["item5"]
         lines += ["### 5. Speed sweep 100 ... 1700 rad/s (step 200, 3000 N)", "",
@@ -314,6 +380,9 @@ def section_figures():
         lines += ["", "The outer Q_max rises with speed (centrifugal load) while the inner stays near the static "
                   "value. At 100 rad/s the 20 ms averaging window is shorter than one ball passage, which biases "
                   "its Q_max upward.", ""]
+        lines += figure("figures/item5_speed_sweep.png", "Lambda at psi = 0 against speed on log-log axes with "
+                        "the fitted slopes (left), and Q_max of the outer and inner contacts against speed (right), "
+                        "for both film models and both engines.")
     if "item6" in d:
         c7 = load("fast_mode_checks.json")["cage_7208"]
         lines += ["### 6. 7208, F_r = F_a = 3000 N, 500 rad/s, three conformity sums (torus cage, dt = 0.5 us)", "",
@@ -330,6 +399,8 @@ def section_figures():
                   "The catalogue's 1 mm cage balls (33 mg) set the step (`python validation/fast_mode_checks.py`): "
                   f"at dt = 0.5 us their largest contact load over 50 ms is {c7['max_cage_load_N_dt0.5us']:.0f} N; "
                   f"at dt = 1 us the engine reports: \"{c7['dt1us']}\"", ""]
+        lines += figure("figures/item6_7208.png", "7208 ball loads (left) against the Stribeck law at each ball's "
+                        "azimuth and total overlaps (right) for the three conformity sums.")
     if "item7" in d:
         v = d["item7"]
         lines += ["### 7. Defect frequencies (500 rad/s, 0.2 s, samples every 20 us)", "",
@@ -341,13 +412,15 @@ def section_figures():
         lines += ["", f"Engine {v['engine']}, dt {v['dt'] * 1e6:g} us, wall {v['wall_s']:.2f} s. The source "
                   "reports >= 99 % agreement; the largest error here is "
                   f"{max(abs(r['error_pct']) for r in v.values() if isinstance(r, dict)):.3f} %.", ""]
+        lines += figure("figures/item7_ring_force_spectrum.png", "Spectrum of the radial ring reaction with the "
+                        "kinematic BPFO dotted: the ball-pass peak and its harmonics.")
     return lines
 
 
 def section_work_precision():
     d = load("work_precision.json")
     lines = ["## Speed against error (work-precision)", "",
-             "Command: `python validation/work_precision.py` (figure `out/work_precision.png`). Every setting "
+             "Command: `python validation/work_precision.py` (figure `out/work_precision.png`, below). Every setting "
              "against the reference core with the full model at dt = 0.5 us (T = 0.1 s).", "",
              "| family | dt [us] | wall s per simulated s | err q_max | err cage | err Q_max(t) (RMS) |",
              "|---|---|---|---|---|---|"]
@@ -364,6 +437,9 @@ def section_work_precision():
               "the Exudyn element (body mode) at 5 us (8 us with the implicit spring). The fitted Hertz levels "
               "change q_max by less than 0.01 % here (the load sharing is set by equilibrium); switching off "
               "lubrication or the cage is a model change, not an accuracy setting.", ""]
+    lines += figure("work_precision.png", "Relative error of q_max_inner (left), cage speed (middle) and the "
+                    "largest-ball-load trajectory (right) against wall seconds per simulated second, one line per "
+                    "engine, integrator and model switch over its steps: lower left is better.")
     return lines
 
 
@@ -373,7 +449,8 @@ def section_sweep():
             f"Command: `python validation/bench_sweep.py`: {d['cases']} cases (T = 0.1 s each) took "
             f"{d['walls']['1']:.2f} s with one worker and {d['walls']['2']:.2f} s with two: speed-up "
             f"**{d['speedup']:.2f}** on the 2-core machine. Cases are written atomically, so an interrupted "
-            "sweep resumes (tests/test_sweep.py); `scheduler=` sends them to a Dask cluster.", ""]
+            "sweep resumes (tests/test_sweep.py); a case whose spec changed runs again, a failing case is "
+            "recorded with its error while the others finish; `scheduler=` sends them to a Dask cluster.", ""]
 
 
 def section_round_off():
@@ -473,6 +550,15 @@ def section_three_dof():
               f"its squeeze-film term alone is {ci['c_squeeze']:.3g} N s/m): it locks the ball to the rings, leaves "
               "one oscillating mode (the two rings and the ball moving together on k1 + k3) and turns the rest into "
               "real roots. The contact-model run keeps three lightly damped modes.", ""]
+    lines += figure("three_dof_frf.png", "Direct receptances of the outer ring, ball and inner ring against "
+                    "frequency: the source's printed matrices (left), the derived 6004 with short-bearing film "
+                    "damping (middle) and with the contact model's damping (right); thin vertical lines at the "
+                    "natural frequencies.")
+    lines += figure("three_dof_time_response.png", "Response of the derived 6004 to the ball-pass force train at "
+                    "BPFO (top: force, bottom: displacements), short-bearing damping (left) and contact-model "
+                    "damping (right).")
+    lines += figure("three_dof_modes.png", "Mode shapes (largest entry 1, signed by the real part) with their "
+                    "eigenvalues or natural frequencies and damping ratios, for the same three models.")
     return lines
 def section_quasistatic():
     d = load("quasistatic_acbb120.json")
@@ -523,7 +609,19 @@ def section_quasistatic():
               f"- Combined case F_r = 3 kN, M_y = 150 N m with the thrust: tilt_y = {c['displacement'][4] * 1e3:.3f} "
               f"mrad, inner loads {min(c['q_inner_N']):.0f} to {max(c['q_inner_N']):.0f} N, inner contact angles "
               f"{min(c['alpha_inner_deg']):.1f} to {max(c['alpha_inner_deg']):.1f} deg (`qs_acbb120_combined.png`).",
-              "", "Speed (`python validation/bench_quasistatic.py`, medians, one run):", "",
+              ""]
+    for tr, v in d["tractions"].items():
+        lines += figure(Path(v["beta_scan"]["plot"]).name, f"Dissipation of one ball against the spin-axis angle "
+                        f"beta with traction {tr}: the least dissipation at each fixed beta, the race-control "
+                        "solution and the minimum-energy solution.")
+        lines += figure(Path(v["plot_slip"]).name, f"Slip of ball 0 against its race along the major axis of the "
+                        f"outer (left) and inner (right) contact ellipse, race control and minimum energy, traction "
+                        f"{tr}.")
+    lines += figure("qs_acbb120_rigid_vs_growing.png", "Contact loads (left) and contact angles (right) of all balls "
+                    "against azimuth with rigid and with growing rings.")
+    lines += figure("qs_acbb120_combined.png", "Contact loads (left) and contact angles (right) against azimuth under "
+                    "the thrust alone and with F_r = 3 kN and M_y = 150 N m added.")
+    lines += ["Speed (`python validation/bench_quasistatic.py`, medians, one run):", "",
               "| case | wall [ms] | target [ms] |", "|---|---|---|"]
     for k, v in bq.items():
         if k.endswith("_s") and isinstance(v, float):
@@ -566,6 +664,7 @@ def main(argv=None):
             + section_work_precision() + section_sweep() + section_quasistatic() + section_three_dof()
             + section_round_off())
     (HERE / "REPORT.md").write_text("\n".join(head + body))
+    remove_unpublished()
     print(f"written {HERE / 'REPORT.md'}")
 
 

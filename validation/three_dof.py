@@ -32,7 +32,7 @@ import numpy as np
 from scipy import optimize
 
 from exudyn_bearing.outputs.jsonio import to_jsonable
-from exudyn_bearing.outputs.plotting import _pyplot, save_figure
+from exudyn_bearing.outputs.plotting import pyplot, save_figure
 from exudyn_bearing.physics.short_bearing import short_bearing_damping, short_bearing_stiffness
 from exudyn_bearing.solvers.vibration import linear
 from exudyn_bearing.solvers.vibration import three_dof as td
@@ -115,7 +115,7 @@ def derived_part():
 
 
 def plot_frf(sets, source):
-    plt = _pyplot()
+    plt = pyplot()
     f = np.logspace(1, 5.3, 3000)
     fig, axes = plt.subplots(1, 3, figsize=(15, 4.4), sharey=True)
     cols = {"f_hz": f}
@@ -139,7 +139,7 @@ def plot_frf(sets, source):
 
 
 def plot_time(sets):
-    plt = _pyplot()
+    plt = pyplot()
     f_bp = td.bpfo("6004", OMEGA)
     fig, axes = plt.subplots(2, 2, figsize=(13, 7), sharex=True)
     cols = {}
@@ -174,7 +174,7 @@ def plot_time(sets):
 
 
 def plot_modes(sets):
-    plt = _pyplot()
+    plt = pyplot()
     cases = [("source, printed matrices", td.analyse(td.source_parameters())),
              ("derived, contact-model damping", sets["contact_model"]["_result"]),
              ("derived, short-bearing damping", sets["short_bearing"]["_result"])]

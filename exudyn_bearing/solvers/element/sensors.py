@@ -33,7 +33,7 @@ class SensorsMixin:
         for key, fn in sensor_defs.items():
             self.sensors[key] = mbs.AddSensor(SensorUserFunction(
                 sensorNumbers=[], factors=[], storeInternal=True, writeToFile=False,
-                sensorUserFunction=(lambda f: (lambda mbs_, t, sn, fac, conf: f()))(fn)))
+                sensorUserFunction=(lambda f: (lambda mbs_, t, sn, fac, conf: self._check_run(t) or f()))(fn)))
 
     def _sample(self, t, rings):
         self._store(t, rings)
@@ -88,7 +88,8 @@ class SensorsMixin:
             size = int(np.prod(shape))
             data[name] = rows[:, k:k + size].reshape((len(rows), *shape))
             k += size
-        steps = self._evaluations if steps is None else steps
+        if steps is None:  # force evaluations (body mode) or Exudyn steps (fast mode) of the run
+            steps = self._clock[4] if self.mode == "fast" else self._evaluations
         msg = cage_load_check(self.bearing, self.scenario, self.lubricant,
                               float(data["cage_load"].max(initial=0.0)), self.scenario.dt)
         if msg:
