@@ -4,12 +4,12 @@ chosen engine and returns :class:`~exudyn_bearing.outputs.results.Results`;
 :func:`CreateBallBearing` adds the bearing element to an Exudyn model."""
 from __future__ import annotations
 
-from .data import BallBearing, InputError, Lubricant
+from .data import BallBearing, InputError, Lubricant, load_bearing
 from .model.scenario import Scenario
 from .outputs.results import Results
 from .solvers.element import BallBearingElement as _ElementBase
 
-__all__ = ["simulate", "ENGINES", "CreateBallBearing", "BallBearingElement"]
+__all__ = ["simulate", "ENGINES", "CreateBallBearing", "BallBearingElement", "quasistatic_start"]
 
 #: Engines that :func:`simulate` knows.
 ENGINES = ("reference", "exudyn")
@@ -44,15 +44,40 @@ def simulate(bearing, scenario: Scenario | None = None, engine: str = "reference
     198
     """
     scenario = Scenario() if scenario is None else scenario
+    if engine not in ENGINES:
+        raise InputError(f"engine: unknown engine {engine!r} (valid: {', '.join(ENGINES)})")
+    start = quasistatic_start(bearing, scenario, lubricant) if scenario.initial == "quasistatic" else None
     if engine == "reference":
         from .solvers.reference import ReferenceEngine
 
-        return Results(ReferenceEngine(bearing, scenario, lubricant).run(progress=progress))
-    if engine == "exudyn":
-        from .solvers.element.engine import ExudynEngine
+        return Results(ReferenceEngine(bearing, scenario, lubricant, start=start).run(progress=progress))
+    from .solvers.element.engine import ExudynEngine
 
-        return Results(ExudynEngine(bearing, scenario, lubricant).run(progress=progress))
-    raise InputError(f"engine: unknown engine {engine!r} (valid: {', '.join(ENGINES)})")
+    return Results(ExudynEngine(bearing, scenario, lubricant, start=start).run(progress=progress))
+
+
+def quasistatic_start(bearing, scenario: Scenario, lubricant: Lubricant | None = None) -> dict:
+    """Initial state of a dynamic run from the quasi-static solution at the
+    scenario's loads and initial speed: ring displacement, ball positions and
+    contact angles, orbital speeds and ball angular velocities by
+    ``scenario.control`` (race control or minimum energy), with the
+    scenario's traction model, ring growth and temperatures. The inner ring's
+    tilts are held at zero (the dynamic engines' inner ring translates only);
+    the solution is kept as ``start["static"]``."""
+    from .solvers.quasistatic import solve_quasistatic
+
+    b = load_bearing(bearing)
+    if scenario.Pd is not None:
+        b = b.with_clearance(scenario.Pd)
+    sol = solve_quasistatic(b, Fr=scenario.Fr, Fa=scenario.Fa, omega=scenario.omega_at(0.0), control=scenario.control,
+                            traction=scenario.traction, lubricant=lubricant, ring_growth=scenario.ring_growth,
+                            temperatures=scenario.temperatures, fixed={"tilt_x": 0.0, "tilt_y": 0.0},
+                            hertz_method=scenario.hertz, n_strips=max(scenario.n_strips, 16), stiffness=False)
+    start = sol.dynamic_start(b)
+    start["static"] = sol
+    return start
+
+
 
 
 class BallBearingElement(_ElementBase):
@@ -88,4 +113,12 @@ def CreateBallBearing(mbs, bearing: BallBearing | str, markerInnerRing, markerOu
     BallBearingElement
         Holds ``items`` and ``sensors``; ``results()`` after the solve.
     """
+    if options.get("initial") == "quasistatic" and options.get("initialState") is None:
+        load = options.get("initialLoad", (0.0, 0.0))
+        fr, fa = (float(load), 0.0) if isinstance(load, (int, float)) else (float(load[0]), float(load[1]))
+        sc = Scenario(Fr=fr, Fa=fa, omega=float(options.get("initialOmega", 0.0)),
+                      control=options.get("control", "auto"), traction=options.get("traction", "lambda_dem"),
+                      ring_growth=bool(options.get("ringGrowth", False)), temperatures=options.get("temperatures"),
+                      hertz=options.get("hertzModel", "exact"))
+        options["initialState"] = quasistatic_start(bearing, sc, options.get("lubricant"))
     return BallBearingElement(mbs, bearing, markerInnerRing, markerOuterRing, **options)

@@ -44,11 +44,16 @@ import numpy as np
 from .._jit import kernel
 from ..physics.damping import (_damping_critical, _damping_fluid, _damping_hysteretic, damping_coefficient,
                                lubrication_regime)
-from ..physics.ehl import _film_thickness
+from ..data.traction import N_TRACTION_PARAMS
+from ..physics.contact_slip import _contact_traction
+from ..physics.ehl import _film_central_hd, _film_thickness
+from ..physics.traction import EHL as TRACTION_EHL
 from ..physics.friction import (_implicit_tangential_stiffness, _regularized_coulomb, _sphere_tangential_mass,
                                 friction_coefficient)
 from ..physics.geometry import _groove_geometry, _raceway_radii_cos
 from ..physics.hertz import _curvature_sum_radius, _kfe_fast, _semi_axes, _stiffness
+from .layout import (D_POWER, D_ROLL, D_SPIN, D_SPIN_MOMENT, P_GROWTH_I, P_GROWTH_O, P_N_ACROSS, P_N_STRIPS,
+                     P_RD_I, P_RD_O, P_TRACTION_CODE, P_TRACTION_LEVEL, P_TRACTION_PARAMS)
 from .layout import (D_A, D_ANGLE, D_B, D_FRICTION, D_HMIN, D_LAMBDA, D_LOAD, D_MU, D_OVERLAP, D_PMAX, D_REGIME,
                      D_SLIP, D_SRR, D_UR, FRIC_HISTORY, FRIC_REGULARIZED, G_OMEGA, G_OUTER_FX, G_OUTER_FY,
                      G_OUTER_FZ, G_OUTER_TORQUE, G_POWER, G_RING_FX, G_RING_FY, G_RING_FZ, G_RING_TORQUE, G_WORST,
@@ -118,8 +123,8 @@ def _surface_kinematics(rings, r, xb, vb, wb, j, dxw, dyw, dzw, cx, cy, nx, ny, 
     along the normal n: approach rate d(delta)/dt, tangential slip velocity
     (s, |s|), rolling (entrainment) speed u_r = |mean surface velocity
     relative to the contact point|, the contact point carried by the ball's
-    orbital motion about the ring axis; also the lever l and the contact
-    point relative to the ring centre."""
+    orbital motion about the ring axis, and that mean velocity m; also the
+    lever l and the contact point relative to the ring centre."""
     lx, ly, lz = lev * nx, lev * ny, lev * nz
     bx, by, bz = _cross(wb[j, 0], wb[j, 1], wb[j, 2], lx, ly, lz)
     vbs_x = vb[j, 0] + bx
@@ -163,7 +168,7 @@ def _surface_kinematics(rings, r, xb, vb, wb, j, dxw, dyw, dzw, cx, cy, nx, ny, 
     my -= mn * ny
     mz -= mn * nz
     u_r = math.sqrt(mx * mx + my * my + mz * mz)
-    return ddot, sx, sy, sz, slip, u_r, lx, ly, lz, px, py, pz
+    return ddot, sx, sy, sz, slip, u_r, mx, my, mz, lx, ly, lz, px, py, pz
 
 
 @kernel(inline="always")
@@ -239,6 +244,48 @@ def _tangential_force(p, hist, hist_out, dt_hist, j, race, nx, ny, nz, sx, sy, s
 
 
 @kernel(inline="always")
+def _contact_frame(rings, r, wb, j, dxw, dyw, dzw, nx, ny, nz):
+    """Rolling frame of a contact and the ball's angular velocity relative to
+    the race: e_x the rolling (circumferential) direction at the ball, e_y =
+    e_x x n, and (spin, roll) = (w_ball - w_ring) . (n, e_y) [rad/s]."""
+    ax, ay, az = rings[r, 8], rings[r, 11], rings[r, 14]
+    exx, exy, exz = _cross(ax, ay, az, dxw, dyw, dzw)
+    e_n = math.sqrt(exx * exx + exy * exy + exz * exz)
+    if e_n > 0.0:
+        exx /= e_n
+        exy /= e_n
+        exz /= e_n
+    eyx, eyy, eyz = _cross(exx, exy, exz, nx, ny, nz)
+    wx = wb[j, 0] - rings[r, 15]
+    wy = wb[j, 1] - rings[r, 16]
+    wz = wb[j, 2] - rings[r, 17]
+    return (wx * nx + wy * ny + wz * nz, wx * eyx + wy * eyy + wz * eyz, exx, exy, exz, eyx, eyy, eyz)
+
+
+@kernel(inline="always")
+def _ellipse_traction(p, rx, kappa, a_ax, b_ax, f_n, sx, sy, sz, mx, my, mz, h_min, spin, roll, inner,
+                      exx, exy, exz, eyx, eyy, eyz):
+    """Traction of a ball / raceway contact integrated over its Hertz ellipse
+    (:func:`~exudyn_bearing.physics.contact_slip._contact_traction`, the
+    quasi-static solver's relation): slip v0, v_t at the centre along e_x,
+    e_y, spin w_n = -spin about e_z = -n, curvature-induced slip c2 =
+    roll / (2 R_d), rolling speed |m . e_x|. Returns the force on the ball
+    (world), the moment on it about e_z, and the dissipation [W]."""
+    v0 = sx * exx + sy * exy + sz * exz
+    v_t = sx * eyx + sy * eyy + sz * eyz
+    u_roll = abs(mx * exx + my * exy + mz * exz)
+    r_d = p[P_RD_I] if inner else p[P_RD_O]
+    code = int(p[P_TRACTION_CODE])
+    h_c = 0.0
+    if code == TRACTION_EHL:
+        h_c = _film_central_hd(u_roll, f_n, rx, kappa, p[P_EPRIME], p[P_ETA], p[P_XI])
+    f_x, f_y, m_z, power, _qv = _contact_traction(
+        a_ax, b_ax, f_n, v0, -spin, roll / (2.0 * r_d), v_t, u_roll, h_c, h_min, code,
+        p[P_TRACTION_PARAMS:P_TRACTION_PARAMS + N_TRACTION_PARAMS], int(p[P_N_STRIPS]), int(p[P_N_ACROSS]))
+    return (f_x * exx + f_y * eyx, f_x * exy + f_y * eyy, f_x * exz + f_y * eyz, m_z, power)
+
+
+@kernel(inline="always")
 def _open_contact(hist_out, diag, j, race, delta, ca, sa, want):
     """A ball / raceway contact without overlap: its tangential spring is
     reset; diagnostics zero, the gap, the contact angle, no film (NaN) and
@@ -267,10 +314,14 @@ def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist,
     the contact is open."""
     inner = race == 0
     if inner:
-        rho, zg, rc = p[P_RHO_I], p[P_ZG_I], p[P_RCI]
+        rho, zg, rc, growth = p[P_RHO_I], p[P_ZG_I], p[P_RCI], p[P_GROWTH_I]
     else:
-        rho, zg, rc = p[P_RHO_O], p[P_ZG_O], p[P_RCO]
+        rho, zg, rc, growth = p[P_RHO_O], p[P_ZG_O], p[P_RCO], p[P_GROWTH_O]
     rb = p[P_RB]
+    if growth != 0.0:
+        # centrifugal growth of a spinning ring: the groove moves out by growth * omega^2
+        w_ax = rings[race, 8] * rings[race, 15] + rings[race, 11] * rings[race, 16] + rings[race, 14] * rings[race, 17]
+        rho += growth * w_ax * w_ax
     dxw, dyw, dzw, cx, cy, cz, rotated = _ring_frame(rings, race, xb[j, 0], xb[j, 1], xb[j, 2])
     delta, nlx, nly, nlz, ca, sa, r_contact = _groove_geometry(cx, cy, cz, rho, zg, rc, rb, inner)
     if delta <= 0.0:
@@ -288,28 +339,45 @@ def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist,
     kappa, ell_f, ell_e = _hertz_constants(p, table, hz, j, race, rx, ry)
     rr = _curvature_sum_radius(rx, ry)
     q_el, k_n, c_hyst = _normal_law(p, delta, kappa, ell_f, ell_e, rr)
-    if want or p[P_LUB] > 0.5:
+    ellipse = p[P_TRACTION_LEVEL] > 0.5
+    if want or ellipse or p[P_LUB] > 0.5:
         major, minor = _semi_axes(kappa, ell_e, rr, p[P_EPRIME], q_el)
     else:
         major = minor = 0.0
     # contact point: middle of the overlap (n points from the groove centre to the
     # ball centre; the groove surface p + R_c n lies beyond the ball centre along n)
-    ddot, sx, sy, sz, slip, u_r, lx, ly, lz, px, py, pz = _surface_kinematics(
+    ddot, sx, sy, sz, slip, u_r, mx, my, mz, lx, ly, lz, px, py, pz = _surface_kinematics(
         rings, race, xb, vb, wb, j, dxw, dyw, dzw, cx, cy, nx, ny, nz, rb - 0.5 * delta)
     h, lam, regime, c_n, mu = _lubrication(p, u_r, q_el, rx, kappa, major, c_hyst)
     f_n = q_el + c_n * ddot
     if f_n < 0.0:
         f_n = 0.0
-    ftx, fty, ftz = _tangential_force(p, hist, hist_out, dt_hist, j, race, nx, ny, nz, sx, sy, sz, slip, k_n,
-                                      f_n, mu)
+    spin = roll = m_z = 0.0
+    if ellipse or want:
+        spin, roll, exx, exy, exz, eyx, eyy, eyz = _contact_frame(rings, race, wb, j, dxw, dyw, dzw, nx, ny, nz)
+    if ellipse:
+        if ry >= rx:
+            a_ax, b_ax = major, minor
+        else:
+            a_ax, b_ax = minor, major
+        ftx, fty, ftz, m_z, power = _ellipse_traction(p, rx, kappa, a_ax, b_ax, f_n, sx, sy, sz, mx, my, mz, h,
+                                                      spin, roll, inner, exx, exy, exz, eyx, eyy, eyz)
+        hist_out[j, race, 0] = 0.0
+        hist_out[j, race, 1] = 0.0
+        hist_out[j, race, 2] = 0.0
+    else:
+        ftx, fty, ftz = _tangential_force(p, hist, hist_out, dt_hist, j, race, nx, ny, nz, sx, sy, sz, slip, k_n,
+                                          f_n, mu)
+        power = -(ftx * sx + fty * sy + ftz * sz)
     # forces on the ball: the normal pushes it back towards the groove centre
     fb[j, 0] += -f_n * nx + ftx
     fb[j, 1] += -f_n * ny + fty
     fb[j, 2] += -f_n * nz + ftz
     mx_, my_, mz_ = _cross(lx, ly, lz, ftx, fty, ftz)
-    tb[j, 0] += mx_
-    tb[j, 1] += my_
-    tb[j, 2] += mz_
+    # (the ellipse level's spin moment m_z acts about e_z = -n)
+    tb[j, 0] += mx_ - m_z * nx
+    tb[j, 1] += my_ - m_z * ny
+    tb[j, 2] += mz_ - m_z * nz
     # reaction on the ring, at the contact point
     frx = f_n * nx - ftx
     fry = f_n * ny - fty
@@ -318,9 +386,9 @@ def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist,
     fr[race, 1] += fry
     fr[race, 2] += frz
     mx_, my_, mz_ = _cross(px, py, pz, frx, fry, frz)
-    fr[race, 3] += mx_
-    fr[race, 4] += my_
-    fr[race, 5] += mz_
+    fr[race, 3] += mx_ + m_z * nx
+    fr[race, 4] += my_ + m_z * ny
+    fr[race, 5] += mz_ + m_z * nz
     if want:
         if ry >= rx:
             a_ax, b_ax = major, minor
@@ -340,7 +408,11 @@ def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist,
         diag[j, race, D_SLIP] = slip
         diag[j, race, D_SRR] = slip / u_r if u_r > 0.0 else 0.0
         diag[j, race, D_FRICTION] = math.sqrt(ftx * ftx + fty * fty + ftz * ftz)
-    return delta / rb, -(ftx * sx + fty * sy + ftz * sz)
+        diag[j, race, D_SPIN] = spin
+        diag[j, race, D_ROLL] = roll
+        diag[j, race, D_POWER] = power
+        diag[j, race, D_SPIN_MOMENT] = m_z
+    return delta / rb, power
 
 
 @kernel(inline="always")

@@ -7,11 +7,11 @@ import math
 
 import numpy as np
 
-from ..data import BallBearing
+from ..data import BallBearing, InputError
 from ..physics import kinematics
 from ..physics.load_distribution import static_equilibrium
 
-__all__ = ["initial_state", "ring_mass_estimate"]
+__all__ = ["initial_state", "ring_mass_estimate", "state_from_ball_kinematics"]
 
 
 def ring_mass_estimate(bearing: BallBearing) -> float:
@@ -26,11 +26,19 @@ def ring_mass_estimate(bearing: BallBearing) -> float:
     return bearing.material.density * math.pi * (ri ** 2 - (ri - 0.65 * rb) ** 2) * 2.9 * rb
 
 
-def initial_state(bearing: BallBearing, scenario) -> dict:
+def initial_state(bearing: BallBearing, scenario, start: dict | None = None) -> dict:
     """Balls at the quasi-static loaded positions (the analytic solution),
     ring at its static displacement; with ``initial='analytic'`` balls and
-    cage balls at their kinematic (pure-rolling) speeds, else at rest."""
+    cage balls at their kinematic (pure-rolling) speeds, else at rest.
+
+    ``start``: a state of :func:`state_from_ball_kinematics` (from the
+    quasi-static solver, ``initial='quasistatic'``) used instead (copied)."""
     b, s = bearing, scenario
+    if start is not None:
+        return {k: (np.array(v, float) if isinstance(v, np.ndarray) else v) for k, v in start.items()}
+    if s.initial == "quasistatic":
+        raise InputError("initial: the quasi-static start needs the quasi-static solution; exudyn_bearing.simulate "
+                         "and CreateBallBearing compute it, the engines take it as start=")
     z = b.n_balls
     sol = static_equilibrium(b, s.Fr, s.Fa, hertz_method=s.hertz)
     rho_o, z_o = b.outer_groove_center
@@ -64,4 +72,41 @@ def initial_state(bearing: BallBearing, scenario) -> dict:
         vc[:, 0] = -wc * xc[:, 1]
         vc[:, 1] = wc * xc[:, 0]
     return {"xb": xb, "vb": vb, "wb": wb, "xc": xc, "vc": vc, "ring": ring,
-            "hist": np.zeros((z, 2, 3)), "hz": np.zeros((z, 2, 4)), "static": sol}
+            "hist": np.zeros((z, 2, 3)), "hz": np.zeros((z, 2, 4)), "static": sol,
+            "max_overlap": float(np.max(sol.overlap_outer))}
+
+
+def state_from_ball_kinematics(bearing: BallBearing, psi, center_r, center_z, orbital_speed, w_r, w_z,
+                               ring_displacement, static=None, max_overlap=0.0, w_psi=0.0) -> dict:
+    """Initial state (the format of :func:`initial_state`) from a steady ball
+    motion given per ball: azimuth psi [rad], centre (r, z) in its radial
+    plane [m], orbital speed omega_m [rad/s] and angular velocity (w_r, w_z)
+    in the frame orbiting with it [rad/s] (the quasi-static solver's
+    kinematics), its yaw w_psi about the orbit direction [rad/s]; the inner ring at ``ring_displacement`` (x, y, z)
+    [m]. Cage balls, if any, sit midway between neighbouring balls on the
+    pitch circle, orbiting at the balls' mean orbital speed. ``max_overlap``:
+    the largest ball / race overlap of the state [m] (the Exudyn element
+    checks the ring placement against it)."""
+    b = bearing
+    z = b.n_balls
+    psi = np.asarray(psi, float)
+    if psi.shape != (z,):
+        raise ValueError(f"psi: expected {z} ball azimuths, got shape {psi.shape}")
+    c, s = np.cos(psi), np.sin(psi)
+    cr, cz = np.asarray(center_r, float), np.asarray(center_z, float)
+    wm, wr, wz = (np.asarray(x, float) for x in (orbital_speed, w_r, w_z))
+    xb = np.stack([cr * c, cr * s, cz], axis=1)
+    vb = np.stack([-wm * xb[:, 1], wm * xb[:, 0], np.zeros(z)], axis=1)
+    wp = np.broadcast_to(np.asarray(w_psi, float), (z,))
+    wb = np.stack([wr * c - wp * s, wr * s + wp * c, wz + wm], axis=1)
+    # cage ball k between balls k and k+1 (their azimuths unwrapped)
+    gap = np.mod(np.roll(psi, -1) - psi, 2.0 * math.pi)
+    psi_c = psi + 0.5 * gap
+    xc = np.stack([b.pitch_radius * np.cos(psi_c), b.pitch_radius * np.sin(psi_c), np.zeros(z)], axis=1)
+    w_mean = float(np.mean(wm))
+    vc = np.stack([-w_mean * xc[:, 1], w_mean * xc[:, 0], np.zeros(z)], axis=1)
+    ring = np.zeros(6)
+    ring[:3] = np.asarray(ring_displacement, float)[:3]
+    return {"xb": xb, "vb": vb, "wb": wb, "xc": xc, "vc": vc, "ring": ring,
+            "hist": np.zeros((z, 2, 3)), "hz": np.zeros((z, 2, 4)), "static": static,
+            "max_overlap": float(max_overlap)}

@@ -24,6 +24,8 @@ from __future__ import annotations
 
 from typing import NamedTuple
 
+from ..data.traction import N_TRACTION_PARAMS
+
 __all__ = ["ParameterEntry", "PARAMETERS", "N_PARAMS", "RING_N", "DIAG_FIELDS", "DIAG_UNITS", "NDIAG",
            "GLOBAL_FIELDS", "GLOBAL_UNITS", "NGLOBAL", "FRIC_HISTORY", "FRIC_REGULARIZED", "FRIC_NONE",
            "LAW_HERTZ", "LAW_POWER", "describe_parameters"]
@@ -103,6 +105,20 @@ P_LAW_K = _entry("power_law_k", "N/m^n", "power-law stiffness k of F = k delta^n
 P_LAW_N = _entry("power_law_n", "-", "power-law exponent n")
 P_LAW_D = _entry("power_law_d", "N s/m", "power-law damping d")
 
+# -- ellipse traction and ring growth (high-speed dynamics) ---------------
+P_TRACTION_LEVEL = _entry("traction_level", "switch", "tangential force: point-contact law (0) or over the Hertz "
+                          "ellipse (1)")
+P_TRACTION_CODE = _entry("traction_code", "code", "traction model kind, index into data.TRACTION_KINDS")
+P_N_STRIPS = _entry("n_strips", "-", "strips of the ellipse integration along the major axis")
+P_N_ACROSS = _entry("n_across", "-", "points across each strip")
+P_TRACTION_PARAMS = _entry("traction_param_0", "model", "first entry of TractionModel.vector (its units)")
+for _k in range(1, N_TRACTION_PARAMS):
+    _entry(f"traction_param_{_k}", "model", f"entry {_k} of TractionModel.vector (its units)")
+P_RD_I = _entry("deformed_radius_inner", "m", "radius of the pressed inner contact across rolling (Heathcote slip)")
+P_RD_O = _entry("deformed_radius_outer", "m", "radius of the pressed outer contact across rolling")
+P_GROWTH_I = _entry("growth_inner", "m s^2", "centrifugal growth of the inner groove radius per omega_i^2")
+P_GROWTH_O = _entry("growth_outer", "m s^2", "centrifugal growth of the outer groove radius per omega_o^2")
+
 #: All entries of the parameter vector, in index order.
 PARAMETERS: tuple[ParameterEntry, ...] = tuple(_ENTRIES)
 #: Length of the parameter vector.
@@ -128,13 +144,20 @@ RING_N = 18
 # -- diagnostics ---------------------------------------------------------------
 #: Fields of the per-contact diagnostics, in order.
 DIAG_FIELDS = ("load", "overlap", "contact_angle", "a", "b", "p_max", "u_r", "h_min",
-               "lambda", "regime", "mu", "slip_speed", "srr", "friction_force")
+               "lambda", "regime", "mu", "slip_speed", "srr", "friction_force", "spin", "roll", "dissipation",
+               "spin_moment")
 (D_LOAD, D_OVERLAP, D_ANGLE, D_A, D_B, D_PMAX, D_UR, D_HMIN, D_LAMBDA, D_REGIME, D_MU, D_SLIP, D_SRR,
- D_FRICTION) = range(len(DIAG_FIELDS))
+ D_FRICTION, D_SPIN, D_ROLL, D_POWER, D_SPIN_MOMENT) = range(len(DIAG_FIELDS))
 #: Units of the per-contact diagnostics (regime: 0 boundary, 1 mixed, 2 full film, -1 no contact).
+#: ``spin`` and ``roll``: the ball's angular velocity relative to the race
+#: along the contact normal and along the in-plane tangent e_y = e_x x n
+#: (e_x the rolling direction), their ratio the spin-to-roll ratio;
+#: ``dissipation``: frictional power of the contact; ``spin_moment``: the
+#: traction moment on the ball about the contact normal (ellipse level).
 DIAG_UNITS = {"load": "N", "overlap": "m", "contact_angle": "rad", "a": "m", "b": "m", "p_max": "Pa",
               "u_r": "m/s", "h_min": "m", "lambda": "-", "regime": "code", "mu": "-", "slip_speed": "m/s",
-              "srr": "-", "friction_force": "N"}
+              "srr": "-", "friction_force": "N", "spin": "rad/s", "roll": "rad/s",
+              "dissipation": "W", "spin_moment": "N m"}
 NDIAG = len(DIAG_FIELDS)
 #: Global diagnostics per sample, in order: inner-ring speed, force of the
 #: balls on the inner ring and torque about its axis, total frictional power,

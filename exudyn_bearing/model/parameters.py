@@ -7,15 +7,18 @@ import math
 
 import numpy as np
 
-from ..data import BallBearing, Lubricant
+from ..data import BallBearing, Lubricant, get_traction_model
+from ..data.traction import PARAMETER_NAMES
 from ..physics import hertz
+from ..physics.contact_slip import deformed_contact_radius
 from ..physics.ehl import film_model_code
 from ..physics.hertz import material_reduced_modulus
 from . import layout as L
 from .initial_state import ring_mass_estimate
+from .operating_geometry import operating_geometry
 from .scenario import FRICTION_MODELS, Scenario
 
-__all__ = ["scene_parameters"]
+__all__ = ["scene_parameters", "traction_vector"]
 
 
 def scene_parameters(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant) -> np.ndarray:
@@ -74,4 +77,51 @@ def scene_parameters(bearing: BallBearing, scenario: Scenario, lubricant: Lubric
     p[L.P_KT_IMPLICIT] = 1.0 if s.tangential == "implicit" else 0.0
     p[L.P_LAW] = L.LAW_POWER if s.contact_law == "power" else L.LAW_HERTZ
     p[L.P_LAW_K], p[L.P_LAW_N], p[L.P_LAW_D] = (float(x) for x in s.power_law)
+    _set_traction(p, b, s)
+    _set_operating_geometry(p, b, s)
     return p
+
+
+def traction_vector(scenario: Scenario) -> np.ndarray:
+    """The traction model's parameter vector as the dynamic engines use it: a
+    Coulomb-type law (``constant``, ``lambda``) without its own
+    regularisation gets ``scenario.traction_regularizing_srr``."""
+    model = get_traction_model(scenario.traction)
+    vec = np.array(model.vector, float)
+    names = PARAMETER_NAMES[model.kind]
+    if "regularizing_srr" in names:
+        k = names.index("regularizing_srr")
+        if vec[k] <= 0.0:
+            vec[k] = scenario.traction_regularizing_srr
+    return vec
+
+
+def _set_traction(p, b, s):
+    """Ellipse traction level: model code and parameters, strip counts, the
+    pressed contact radii of the curvature-induced slip."""
+    p[L.P_TRACTION_LEVEL] = 1.0 if s.traction_level == "ellipse" else 0.0
+    p[L.P_TRACTION_CODE] = get_traction_model(s.traction).code
+    p[L.P_N_STRIPS] = s.n_strips
+    p[L.P_N_ACROSS] = s.n_across
+    vec = traction_vector(s)
+    p[L.P_TRACTION_PARAMS:L.P_TRACTION_PARAMS + vec.size] = vec
+    p[L.P_RD_I] = float(deformed_contact_radius(p[L.P_RB], p[L.P_RCI]))
+    p[L.P_RD_O] = float(deformed_contact_radius(p[L.P_RB], p[L.P_RCO]))
+
+
+def _set_operating_geometry(p, b, s):
+    """Thermal growth of grooves and balls at the scenario's temperatures
+    (fixed for the run) and the centrifugal growth coefficients (the groove
+    radius grows by coefficient x omega^2 of its ring during the run), from
+    :func:`~.operating_geometry.operating_geometry`; nothing changes without
+    ``ring_growth`` and ``temperatures``."""
+    if s.temperatures:
+        g = operating_geometry(b, temperatures=s.temperatures)
+        p[L.P_RB], p[L.P_RCI], p[L.P_RCO] = g.r_b, g.r_ci, g.r_co
+        p[L.P_RHO_I], p[L.P_ZG_I], p[L.P_RHO_O], p[L.P_ZG_O] = g.rho_i, g.z_i, g.rho_o, g.z_o
+        p[L.P_RD_I] = float(deformed_contact_radius(g.r_b, g.r_ci))
+        p[L.P_RD_O] = float(deformed_contact_radius(g.r_b, g.r_co))
+    if s.ring_growth:
+        # u(omega) = u(1 rad/s) omega^2 for a rotating disc without a fit
+        p[L.P_GROWTH_I] = operating_geometry(b, omega_inner=1.0).inner_ring_growth
+        p[L.P_GROWTH_O] = operating_geometry(b, omega_outer=1.0).outer_ring_growth

@@ -10,16 +10,24 @@ import dataclasses
 import math
 from dataclasses import dataclass
 
-from ..data import InputError
+import numpy as np
+
+from ..data import InputError, get_traction_model
 from ..physics.ehl import film_model_code
 from ..physics.hertz import method_code
 from .motion import omega_profile
 
-__all__ = ["Scenario", "FRICTION_MODELS", "INTEGRATORS"]
+__all__ = ["Scenario", "FRICTION_MODELS", "INTEGRATORS", "TRACTION_LEVELS", "INITIAL_STATES", "CONTROLS"]
 
 #: Tangential force models: Cundall-Strack spring with Coulomb cap (contact
 #: history), regularised Coulomb on the slip velocity (history-free), none.
 FRICTION_MODELS = ("history", "regularized", "none")
+#: Tangential force levels of the ball / raceway contacts.
+TRACTION_LEVELS = ("point", "ellipse")
+#: Initial states of a dynamic run.
+INITIAL_STATES = ("analytic", "rest", "quasistatic")
+#: Kinematic hypotheses of the quasi-static start (those of the quasi-static solver).
+CONTROLS = ("auto", "outer", "inner", "min-energy", "equilibrium")
 #: Time integrators of the reference engine.
 INTEGRATORS = ("verlet", "rk4")
 
@@ -78,9 +86,44 @@ class Scenario:
     ring_mass : float or None
         Translating mass of the inner ring (and what it carries) [kg];
         None: the ring's own mass estimated from the bearing geometry.
-    initial : {"analytic", "rest"}
+    traction_level : {"point", "ellipse"}
+        Tangential force of the ball / raceway contacts: ``"point"`` (the
+        point-contact law chosen by ``friction``: Cundall-Strack spring or
+        regularised Coulomb with mu(Lambda) or ``mu_dry``, PHYSICS of the DEM
+        papers) or ``"ellipse"``: the slip field over the Hertz ellipse
+        (rolling, spin about the normal, curvature-induced slip) integrated
+        over ``n_strips`` strips with the traction model ``traction``,
+        giving the tangential force and the spin moment about the contact
+        normal (:func:`exudyn_bearing.physics.contact_slip._contact_traction`;
+        the quasi-static solver's relation). ``friction``,
+        ``tangential`` and ``mu_dry`` then do not apply.
+    traction : str
+        Traction model of the ellipse level, a name of
+        ``exudyn_bearing.data.traction_models`` (default ``"lambda_dem"``:
+        the DEM papers' mu(Lambda)).
+    n_strips, n_across : int
+        Strips along the major axis and points across each strip of the
+        ellipse integration (accuracy against cost: validation/work_precision.py).
+    traction_regularizing_srr : float
+        Slide-to-roll ratio below which a Coulomb-type traction model
+        (``constant``, ``lambda``) whose own ``regularizing_srr`` is 0 rises
+        linearly from zero in the dynamic engines (a discontinuous law has no
+        stable explicit step); reported in the summary.
+    ring_growth : bool
+        Groove geometry follows the ring speeds during the run: the
+        centrifugal growth of a rotating ring (rotating annular disc,
+        :mod:`exudyn_bearing.physics.ring_growth`, the quasi-static solver's
+        relation) moves its groove outward in proportion to omega^2.
+    temperatures : dict or None
+        ``{"inner", "outer", "ball"}`` temperatures [K] for the uniform
+        thermal growth of rings and balls (from 293.15 K).
+    initial : {"analytic", "rest", "quasistatic"}
         Start from the quasi-static load distribution with balls and cage at
-        their kinematic speeds, or from rest.
+        their kinematic speeds, from rest, or from the quasi-static solver's
+        solution at the scenario's loads and speed (ball positions, contact
+        angles, orbital and ball angular velocities by ``control``).
+    control : {"auto", "outer", "inner", "min-energy"}
+        Kinematic hypothesis of the quasi-static start.
     integrator : {"verlet", "rk4"}
     dt : float
         Time step [s] (default 1 us, the DEM papers' step).
@@ -109,7 +152,15 @@ class Scenario:
     film: str = "hd"
     guide_clearance: float = 50e-6
     ring_mass: float | None = None
+    traction_level: str = "point"
+    traction: str = "lambda_dem"
+    n_strips: int = 8
+    n_across: int = 1
+    traction_regularizing_srr: float = 0.01
+    ring_growth: bool = False
+    temperatures: dict | None = None
     initial: str = "analytic"
+    control: str = "auto"
     integrator: str = "verlet"
     dt: float = 1e-6
     sample_dt: float = 1e-4
@@ -159,8 +210,37 @@ class Scenario:
             k, n, d = self.power_law
             if not (k > 0 and n >= 1 and d >= 0):
                 raise InputError(f"power_law: need k > 0, n >= 1, d >= 0, got {self.power_law}")
-        if self.initial not in ("analytic", "rest"):
-            raise InputError(f"initial: must be 'analytic' or 'rest', got {self.initial!r}")
+        if self.initial not in INITIAL_STATES:
+            raise InputError(f"initial: must be one of {', '.join(INITIAL_STATES)}, got {self.initial!r}")
+        if self.control not in CONTROLS:
+            raise InputError(f"control: must be one of {', '.join(CONTROLS)}, got {self.control!r}")
+        if self.traction_level not in TRACTION_LEVELS:
+            raise InputError(f"traction_level: must be one of {', '.join(TRACTION_LEVELS)}, got "
+                             f"{self.traction_level!r}")
+        get_traction_model(self.traction)  # an unknown name raises, listing the catalogue
+        for name, hi in (("n_strips", 256), ("n_across", 16)):
+            v = getattr(self, name)
+            if isinstance(v, bool) or not isinstance(v, (int, np.integer)) or not 1 <= int(v) <= hi:
+                raise InputError(f"{name}: must be an integer in [1, {hi}], got {v!r}")
+            object.__setattr__(self, name, int(v))
+        srr = self.traction_regularizing_srr
+        if isinstance(srr, bool) or not isinstance(srr, (int, float)) or not 0.0 < srr <= 1.0:
+            raise InputError(f"traction_regularizing_srr: must lie in (0, 1], got {srr!r}")
+        if self.traction_level == "ellipse" and self.friction == "none":
+            raise InputError("friction: 'none' switches the tangential forces off; the ellipse traction level "
+                             "replaces the friction law (use traction_level='point' for a frictionless run)")
+        if self.traction_level == "ellipse" and self.contact_law == "power":
+            raise InputError("contact_law: the peer power law has no Hertz ellipse; use traction_level='point'")
+        if not isinstance(self.ring_growth, (bool, np.bool_)):
+            raise InputError(f"ring_growth: must be True or False, got {self.ring_growth!r}")
+        if self.temperatures is not None:
+            if not isinstance(self.temperatures, dict):
+                raise InputError(f"temperatures: expected a dict of inner, outer, ball [K], got {self.temperatures!r}")
+            for k, v in self.temperatures.items():
+                if k not in ("inner", "outer", "ball"):
+                    raise InputError(f"temperatures: unknown part {k!r} (valid: inner, outer, ball)")
+                if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v) or v <= 0:
+                    raise InputError(f"temperatures.{k}: must be an absolute temperature > 0 K, got {v!r}")
         try:
             method_code(self.hertz)
         except ValueError as exc:

@@ -103,7 +103,9 @@ OPTION_NAMES = {"Fr": "initialLoad", "Fa": "initialLoad", "omega": "initialOmega
                 "sample_dt": "sampleInterval", "hertz": "hertzModel", "guide_clearance": "guideClearance",
                 "mu_dry": "muDry", "regularizing_speed": "regularizingSpeed",
                 "tangential_stiffness_ratio": "tangentialStiffnessRatio", "contact_law": "contactLaw",
-                "power_law": "powerLaw"}
+                "power_law": "powerLaw", "traction_level": "tractionLevel", "n_strips": "nStrips",
+                "n_across": "nAcross", "traction_regularizing_srr": "tractionRegularizingSrr",
+                "ring_growth": "ringGrowth"}
 
 
 def _initial_load(load):
@@ -152,7 +154,9 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin):
                  film="hd", guideClearance=50e-6, muDry=0.1, regularizingSpeed=0.1,
                  tangentialStiffnessRatio=2.0 / 3.0, stepSize=1e-6, innerRingSpeed=None, outerRingSpeed=None,
                  initialOmega=0.0, initialLoad=(0.0, 0.0), initial="analytic", sampleInterval=1e-4,
-                 mode="bodies", subSteps=1, contactLaw="hertz", powerLaw=(0.0, 1.5, 0.0), show=False):
+                 mode="bodies", subSteps=1, contactLaw="hertz", powerLaw=(0.0, 1.5, 0.0), tractionLevel="point",
+                 traction="lambda_dem", nStrips=8, nAcross=1, tractionRegularizingSrr=0.01, ringGrowth=False,
+                 temperatures=None, control="auto", initialState=None, show=False):
         self.mbs = mbs
         self.bearing = b = load_bearing(bearing)
         self.lubricant = default_lubricant() if lubricant is None else lubricant
@@ -160,6 +164,7 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin):
             if f is not None and not callable(f):
                 raise InputError(f"{name}: must be a function of time t [s] returning rad/s")
         self.speed = (innerRingSpeed, outerRingSpeed)
+        self._initial_state = initialState
         fr, fa = _initial_load(initialLoad)
         stepSize = check_positive("stepSize", stepSize)
         sampleInterval = check_positive("sampleInterval", sampleInterval)
@@ -172,7 +177,10 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin):
                                      regularizing_speed=regularizingSpeed,
                                      tangential_stiffness_ratio=tangentialStiffnessRatio, dt=stepSize,
                                      sample_dt=max(sampleInterval, stepSize), initial=initial,
-                                     contact_law=contactLaw, power_law=powerLaw)
+                                     contact_law=contactLaw, power_law=powerLaw, traction_level=tractionLevel,
+                                     traction=traction, n_strips=nStrips, n_across=nAcross,
+                                     traction_regularizing_srr=tractionRegularizingSrr, ring_growth=ringGrowth,
+                                     temperatures=temperatures, control=control)
         except InputError as exc:
             name, _, rest = str(exc).partition(":")
             raise InputError(f"{OPTION_NAMES.get(name, name)}:{rest}") from None
@@ -230,7 +238,7 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin):
         concentric within the play and that no ball overlaps beyond the
         preload. Returns (xb, vb, wb, xc, vc)."""
         b = self.bearing
-        st = initial_state(b, self.scenario)
+        st = initial_state(b, self.scenario, self._initial_state)
         self.initialRingDisplacement = np.asarray(st["ring"][:3], float)
         x_o, a_o, v_o, w_o = poses[1]
         rel = poses[0][0] - x_o
@@ -246,8 +254,7 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin):
         wb = st["wb"] @ a_o.T + w_o
         xc = st["xc"] @ a_o.T + x_o
         vc = st["vc"] @ a_o.T + v_o + np.cross(w_o, xc - x_o)
-        allowed = max(0.0, -0.5 * b.diametral_clearance) + 2.0 * max(
-            float(np.max(st["static"].overlap_outer)), 0.0) + 1e-7
+        allowed = max(0.0, -0.5 * b.diametral_clearance) + 2.0 * max(float(st.get("max_overlap", 0.0)), 0.0) + 1e-7
         self._check_overlap(xb, poses, allowed)
         return xb, vb, wb, xc, vc
 

@@ -67,7 +67,7 @@ class ExudynEngine:
     name = "exudyn"
 
     def __init__(self, bearing, scenario: Scenario, lubricant: Lubricant | None = None, mode: str = "bodies",
-                 sub_steps: int = 1):
+                 sub_steps: int = 1, start: dict | None = None):
         import exudyn as exu
         from exudyn.itemInterface import (LoadForceVector, MarkerBodyRigid, MarkerNodePosition, NodePoint,
                                           ObjectGround, ObjectMassPoint)
@@ -78,7 +78,9 @@ class ExudynEngine:
             b = b.with_clearance(scenario.Pd)
         self.bearing, self.scenario = b, scenario
         s = scenario
-        d0 = initial_state(b, s)["ring"][:3]
+        # the reference engine's initial state (with ramps: the speed at t = 0), handed to the element
+        start = initial_state(b, s, start)
+        d0 = start["ring"][:3]
         self.SC = exu.SystemContainer()
         mbs = self.mbs = self.SC.AddSystem()
         ground = mbs.AddObject(ObjectGround())
@@ -94,8 +96,10 @@ class ExudynEngine:
             guideClearance=s.guide_clearance, muDry=s.mu_dry, regularizingSpeed=s.regularizing_speed,
             tangentialStiffnessRatio=s.tangential_stiffness_ratio, stepSize=s.dt, innerRingSpeed=s.omega_at,
             initialOmega=s.omega, initialLoad=(s.Fr, s.Fa), initial=s.initial, sampleInterval=s.sample_dt,
-            mode=mode, subSteps=sub_steps, contactLaw=s.contact_law, powerLaw=s.power_law)
-        # the reference engine's initial spin follows omega(0); the element took initialOmega
+            mode=mode, subSteps=sub_steps, contactLaw=s.contact_law, powerLaw=s.power_law,
+            tractionLevel=s.traction_level, traction=s.traction, nStrips=s.n_strips, nAcross=s.n_across,
+            tractionRegularizingSrr=s.traction_regularizing_srr, ringGrowth=s.ring_growth,
+            temperatures=s.temperatures, control=s.control, initialState=start)
         mbs.Assemble()
         self.stable = self.element.stable
 

@@ -65,10 +65,10 @@ from ..._jit import kernel
 from ...physics.contact_slip import _contact_traction, pure_rolling_points, spin_moment_coulomb
 
 __all__ = ["CONTROLS", "GEO_FIELDS", "CONTACT_FIELDS", "race_control", "jones_outer_controls", "ball_contacts",
-           "minimum_energy", "dissipation_at_beta", "spin_axis_angle", "rolling_points"]
+           "minimum_energy", "traction_equilibrium", "dissipation_at_beta", "spin_axis_angle", "rolling_points"]
 
 #: Kinematic hypotheses.
-CONTROLS = ("outer", "inner", "auto", "min-energy")
+CONTROLS = ("outer", "inner", "auto", "min-energy", "equilibrium")
 #: Entries of the packed per-ball geometry vector ``geo``.
 GEO_FIELDS = ("omega_o", "omega_i", "c_r", "c_z", "no_r", "no_z", "ni_r", "ni_z", "r_b", "rd_o", "rd_i",
               "a_o", "b_o", "q_o", "a_i", "b_i", "q_i", "hc_o", "hm_o", "hc_i", "hm_i")
@@ -91,9 +91,10 @@ def _slip_inputs(w_r, w_z, omega_m, omega_ring, cr, nr, nz, rb, rd):
 
 
 @kernel
-def _ball_contacts(omega_m, w_r, w_z, geo, code, params, n_strips, n_across, out):
+def _ball_contacts(omega_m, w_r, w_z, v_t, geo, code, params, n_strips, n_across, out):
     """Slip and traction of both contacts of one ball; rows of ``out`` (2, NC):
-    outer, inner. Returns the total dissipation [W]."""
+    outer, inner. ``v_t``: transverse slip at both contact centres from the
+    ball's yaw (pivoting) w_psi, v_t = R_b w_psi. Returns the total dissipation [W]."""
     total = 0.0
     for k in range(2):
         if k == 0:
@@ -103,7 +104,7 @@ def _ball_contacts(omega_m, w_r, w_z, geo, code, params, n_strips, n_across, out
             wring, nr, nz, rd, a, b, q, hc, hm = (geo[G_WI], geo[G_NIR], geo[G_NIZ], geo[G_RDI], geo[G_AI],
                                                   geo[G_BI], geo[G_QI], geo[G_HCI], geo[G_HMI])
         v0, wn, c2, u, spin, roll = _slip_inputs(w_r, w_z, omega_m, wring, geo[G_CR], nr, nz, geo[G_RB], rd)
-        fx, fy, mz, p, qv = _contact_traction(a, b, q, v0, wn, c2, 0.0, u, hc, hm, code, params, n_strips,
+        fx, fy, mz, p, qv = _contact_traction(a, b, q, v0, wn, c2, v_t, u, hc, hm, code, params, n_strips,
                                               n_across)
         out[k, 0] = v0
         out[k, 1] = wn
@@ -121,10 +122,11 @@ def _ball_contacts(omega_m, w_r, w_z, geo, code, params, n_strips, n_across, out
 
 
 def ball_contacts(kin, geo, model, n_strips, n_across):
-    """Per-contact slip and traction (2, NC) for kinematics kin = (omega_m, w_r, w_z)."""
+    """Per-contact slip and traction (2, NC) for kinematics kin = (omega_m, w_r, w_z[, v_t])."""
     out = np.zeros((2, NC))
-    _ball_contacts(float(kin[0]), float(kin[1]), float(kin[2]), geo, model.code, model.vector, n_strips, n_across,
-                   out)
+    v_t = float(kin[3]) if len(kin) > 3 else 0.0
+    _ball_contacts(float(kin[0]), float(kin[1]), float(kin[2]), v_t, geo, model.code, model.vector, n_strips,
+                   n_across, out)
     return out
 
 
@@ -194,15 +196,16 @@ def minimum_energy(geo, model, n_strips, n_across, start):
 
     Returns (kinematics (3,), check dict with ``hessian_eigenvalues`` (relative, in the scaled
     variables), ``neighbours_higher``, ``is_minimum``, ``evaluations``)."""
+    start = np.asarray(start, float)[:3]
     scale = max(abs(start[0]), math.hypot(start[1], start[2]), 1e-12)
     code, vec = model.code, model.vector
     out = np.zeros((2, NC))
     x0 = np.asarray(start, float) / scale
-    f0 = _ball_contacts(start[0], start[1], start[2], geo, code, vec, n_strips, n_across, out)
+    f0 = _ball_contacts(start[0], start[1], start[2], 0.0, geo, code, vec, n_strips, n_across, out)
     norm = f0 if f0 > 0 else 1.0
 
     def f(x):
-        return _ball_contacts(x[0] * scale, x[1] * scale, x[2] * scale, geo, code, vec, n_strips, n_across,
+        return _ball_contacts(x[0] * scale, x[1] * scale, x[2] * scale, 0.0, geo, code, vec, n_strips, n_across,
                               out) / norm
 
     simplex = np.vstack([x0] + [x0 + 2e-3 * np.eye(3)[i] for i in range(3)])
@@ -214,6 +217,90 @@ def minimum_energy(geo, model, n_strips, n_across, start):
              "is_minimum": bool(higher and eig.min() > 0.0), "evaluations": int(res.nfev),
              "converged": bool(res.success)}
     return res.x * scale, check
+
+
+def traction_equilibrium(geo, model, n_strips, n_across, start, inertia):
+    """Kinematics at which the traction of both contacts holds the ball in a
+    steady orbit, without a kinematic hypothesis: (omega_m, w_r, w_z, v_t)
+    with v_t = R_b w_psi the transverse slip of the ball's yaw (pivoting), from
+
+    * the gyroscopic moment: R_b (F_y,o + F_y,i) = J omega_m w_r, the moment
+      about e_psi that turns the spin axis with the orbit, carried by the
+      transverse tractions F_y along t_k = e_psi x n_k (Harris & Kotzalas
+      [2]_); for given (omega_m, w_r, w_z) it fixes v_t (the root nearest
+      zero: the traction rises from zero with the slip);
+    * no net traction along the orbit (a cageless ball): F_x,o + F_x,i = 0;
+    * the in-plane moment: sum_k F_x,k R_b (-n_z, n_r) - M_z,k (n_r, n_z) =
+      (-J omega_m w_psi, 0) (the rolling-direction tractions at their levers
+      and the spin moments about the contact normals, r and z components,
+      turn the yaw component of the spin with the orbit).
+
+    These are the ball's Newton-Euler equations in a steady orbit (all balls
+    alike, as under thrust): a dynamic run with the same traction model
+    settles there. The three outer equations are solved with scipy's hybrid
+    Powell method from ``start`` (omega_m, w_r, w_z[, v_t]), v_t inside by
+    Brent's method. Returns (kinematics (4,), check dict with the scaled
+    residual, convergence and whether the gyroscopic moment could be held)."""
+    start = np.asarray(start, float)
+    scale = max(abs(start[0]), math.hypot(start[1], start[2]), 1e-12)
+    rb = geo[G_RB]
+    out = np.zeros((2, NC))
+    code, vec = model.code, model.vector
+    qref = max(geo[G_QO], geo[G_QI], 1e-12)
+    normals = ((geo[G_NOR], geo[G_NOZ]), (geo[G_NIR], geo[G_NIZ]))
+    held = [True]
+
+    j_eff = [inertia]
+
+    def gyro(v_t, wm, wr, wz):
+        _ball_contacts(wm, wr, wz, v_t, geo, code, vec, n_strips, n_across, out)
+        return (rb * (out[0, 7] + out[1, 7]) - j_eff[0] * wm * wr) / (rb * qref)
+
+    def pivot(wm, wr, wz):
+        g0 = gyro(0.0, wm, wr, wz)
+        if g0 == 0.0:
+            return 0.0
+        direction = 1.0 if g0 > 0.0 else -1.0   # the tractions oppose the slip: g falls as v_t grows
+        u = max(0.5 * (abs(out[0, 3]) + abs(out[1, 3])), 1e-9)
+        lo, step = 0.0, 1e-6 * u
+        while step <= u:
+            hi = direction * step
+            if gyro(hi, wm, wr, wz) * g0 < 0.0:
+                return optimize.brentq(gyro, lo, hi, args=(wm, wr, wz), xtol=1e-12 * u, rtol=1e-12)
+            lo, step = hi, 2.0 * step
+        held[0] = False                          # gross pivoting: the moment is not held up to s = 1
+        return direction * u
+
+    def resid(x):
+        wm, wr, wz = x[0] * scale, x[1] * scale, x[2] * scale
+        v_t = pivot(wm, wr, wz)
+        _ball_contacts(wm, wr, wz, v_t, geo, code, vec, n_strips, n_across, out)
+        f_x = out[0, 6] + out[1, 6]
+        m_r = m_z = 0.0
+        for k in range(2):
+            nr, nz = normals[k]
+            m_r += -out[k, 6] * rb * nz - out[k, 8] * nr
+            m_z += out[k, 6] * rb * nr - out[k, 8] * nz
+        m_r += j_eff[0] * wm * v_t / rb          # = -(-J omega_m w_psi), w_psi = v_t / R_b
+        return np.array([f_x, m_r / rb, m_z / rb]) / qref
+
+    # continuation in the ball's inertia (0 -> J): without the gyroscopic
+    # moments the start (race control or minimum energy) is close to the
+    # solution; the full equations then have further roots with gross
+    # transverse sliding that kills the in-plane tractions, which a direct
+    # solve from far away can land on
+    x = start[:3] / scale
+    for frac in (0.0, 0.25, 0.5, 0.75, 1.0):
+        j_eff[0] = frac * inertia
+        sol = optimize.root(resid, x, method="hybr", options={"xtol": 1e-13})
+        x = sol.x
+    held[0] = True
+    res = resid(sol.x)
+    wm, wr, wz = sol.x * scale
+    v_t = pivot(wm, wr, wz)
+    check = {"converged": bool(sol.success and np.max(np.abs(res)) < 1e-8), "residual": float(np.max(np.abs(res))),
+             "evaluations": int(sol.nfev), "gyroscopic_moment_held": bool(held[0])}
+    return np.array([wm, wr, wz, v_t]), check
 
 
 def dissipation_at_beta(geo, model, n_strips, n_across, beta, start):
@@ -230,7 +317,7 @@ def dissipation_at_beta(geo, model, n_strips, n_across, beta, start):
 
     def f(x):
         k = kin(x)
-        return _ball_contacts(k[0], k[1], k[2], geo, code, vec, n_strips, n_across, out)
+        return _ball_contacts(k[0], k[1], k[2], 0.0, geo, code, vec, n_strips, n_across, out)
 
     x0 = np.array([start[0], w0]) / scale
     simplex = np.vstack([x0, x0 + [2e-3, 0.0], x0 + [0.0, 2e-3]])

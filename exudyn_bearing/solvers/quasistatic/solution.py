@@ -5,6 +5,9 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ...data import InputError
+from ...model.initial_state import state_from_ball_kinematics
+
 __all__ = ["QuasiStaticSolution", "UNITS"]
 
 #: Units of the keys of :meth:`QuasiStaticSolution.to_dict`.
@@ -13,7 +16,7 @@ UNITS = {
     "tilt_y": "rad", "psi": "deg", "q_inner": "N", "q_outer": "N", "alpha_inner": "deg", "alpha_outer": "deg",
     "a_inner": "m", "b_inner": "m", "a_outer": "m", "b_outer": "m", "p_max_inner": "Pa", "p_max_outer": "Pa",
     "delta_inner": "m", "delta_outer": "m", "centrifugal_force": "N", "gyroscopic_moment": "N m",
-    "orbital_speed": "rad/s", "ball_speed": "rad/s (about its own axis, in the orbiting frame)",
+    "orbital_speed": "rad/s", "pivot_slip": "m/s (transverse slip of the ball's yaw, control equilibrium)", "ball_speed": "rad/s (about its own axis, in the orbiting frame)",
     "ball_speed_absolute": "rad/s", "beta": "deg", "spin_roll_inner": "-", "spin_roll_outer": "-",
     "rolling_point_outer": "m (x1, along the major axis from the centre)",
     "rolling_point_inner": "m (x2)", "dissipation_inner": "W (whole bearing)",
@@ -57,7 +60,7 @@ class QuasiStaticSolution:
     stiffness_check: dict        #: step and convergence of the central differences
     minimum_checks: list = field(default_factory=list)  #: per-ball minimum-energy checks
     contact_geometry: np.ndarray | None = None  #: packed per-ball contact data (kinematics.GEO_FIELDS)
-    kinematics: np.ndarray | None = None        #: per-ball (omega_m, w_r, w_z) [rad/s]
+    kinematics: np.ndarray | None = None        #: per-ball (omega_m, w_r, w_z) [rad/s], pivot slip v_t [m/s]
     traction_model: object = None               #: the TractionModel used
     iterations: int = 0
     n_strips: int = 0
@@ -118,6 +121,22 @@ class QuasiStaticSolution:
         d["wall_s"] = self.wall_s
         d["units"] = dict(UNITS)
         return d
+
+    def dynamic_start(self, bearing) -> dict:
+        """The solution as the initial state of a dynamic run (ball centres,
+        orbital speeds and angular velocities, inner-ring displacement x, y,
+        axial; :func:`exudyn_bearing.model.initial_state.state_from_ball_kinematics`).
+        The dynamic engines' inner ring does not tilt: a solution with tilt
+        is refused."""
+        if np.any(np.abs(self.displacement[3:]) > 1e-12):
+            raise InputError("initial: the quasi-static solution has a tilted inner ring, which the dynamic engines "
+                             "cannot represent (their inner ring translates only): solve with the tilts fixed")
+        b = self.balls
+        r_b = bearing.ball_radius + self.geometry.get("ball_thermal_growth", 0.0)
+        return state_from_ball_kinematics(bearing, b["psi"], b["ball_center_r"], b["ball_center_z"],
+                                          self.kinematics[:, 0], self.kinematics[:, 1], self.kinematics[:, 2],
+                                          self.displacement[:3], w_psi=self.kinematics[:, 3] / r_b,
+                                          max_overlap=float(np.max(np.maximum(b["delta_outer"], b["delta_inner"]))))
 
     def summary(self) -> str:
         """A few lines for the command line."""

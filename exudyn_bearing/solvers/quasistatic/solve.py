@@ -209,7 +209,8 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
     wm0 = float(_kin.cage_speed(w_i, w_o, geom.r_b, b.pitch_radius, a0))
     wr0 = float(_kin.ball_spin_relative(w_i, w_o, geom.r_b, b.pitch_radius, a0))
     # ball angular velocity w_R (-sin alpha, cos alpha) in the orbit frame
-    kin = np.tile([wm0, -wr0 * math.sin(a0), wr0 * math.cos(a0)], (z, 1))
+    # (orbital speed, w_r, w_z, transverse pivot slip v_t: zero but for the equilibrium stage)
+    kin = np.tile([wm0, -wr0 * math.sin(a0), wr0 * math.cos(a0), 0.0], (z, 1))
     moving = w_i != w_o
     mass = b.ball_mass * (geom.r_b / b.ball_radius) ** 3
     inertia = 0.4 * mass * geom.r_b ** 2
@@ -221,7 +222,7 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
     checks = [None] * z
     cold = True
     it_total = 0
-    phases = ["race"] + (["min-energy"] if control == "min-energy" and moving else [])
+    phases = ["race"] + ([control] if control in ("min-energy", "equilibrium") and moving else [])
     prob = balls = geo = cs = None
     for stage in phases:
         tol = 1e-10 if stage == "race" else 1e-7
@@ -231,7 +232,11 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
             fto = np.zeros(z)
             fti = np.zeros(z)
             for j in range(z):
-                if stage == "min-energy":
+                if stage == "equilibrium":
+                    # the transverse tractions the traction model gives at the current kinematics
+                    c = km.ball_contacts(kin[j], geo[j], model, n_strips, n_across)
+                    fto[j], fti[j] = c[0, 7], c[1, 7]
+                elif stage == "min-energy":
                     fto[j] = fti[j] = 0.5 * g_mom[j] / geom.r_b
                 elif controls[j] == "inner":
                     fti[j] = g_mom[j] / geom.r_b
@@ -253,14 +258,22 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
                     "outer" if (not loaded or km.jones_outer_controls(geo[j])) else "inner")
                 if stage == "race":
                     controls[j] = race if loaded else "outer"
-                    new[j] = km.race_control(geo[j], controls[j])
+                    new[j, :3] = km.race_control(geo[j], controls[j])
+                elif loaded and stage == "equilibrium":
+                    controls[j] = "equilibrium"
+                    same = next((i for i in range(j) if np.allclose(geo[i], geo[j], rtol=1e-12, atol=0.0)), None)
+                    if same is not None:
+                        new[j], checks[j] = new[same], checks[same]
+                    else:
+                        new[j], checks[j] = km.traction_equilibrium(geo[j], model, n_strips, n_across, kin[j],
+                                                                    inertia)
                 elif loaded:
                     controls[j] = "min-energy"
                     same = next((i for i in range(j) if np.allclose(geo[i], geo[j], rtol=1e-12, atol=0.0)), None)
                     if same is not None:
                         new[j], checks[j] = new[same], checks[same]
                     else:
-                        new[j], checks[j] = km.minimum_energy(geo[j], model, n_strips, n_across, kin[j])
+                        new[j, :3], checks[j] = km.minimum_energy(geo[j], model, n_strips, n_across, kin[j])
             change = np.abs(new - kin).max() / wref
             kin = new
             if change < tol:
@@ -268,6 +281,12 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
     # final contact results
     out = _ball_results(b, geom, psi, balls, cs, kin, geo, model, n_strips, n_across, w_i, w_o, rd_o, rd_i,
                         lub, e_prime, mass, inertia, controls, moving, prob.fto, prob.fti)
+    if control == "equilibrium":
+        bad = [j for j, c in enumerate(checks) if c is not None and not c["converged"]]
+        if bad:
+            raise InputError(f"control: the traction equilibrium of ball {bad[0]} did not converge (scaled residual "
+                             f"{checks[bad[0]]['residual']:.2g}); the traction model may be too steep or too weak "
+                             "to hold the ball: try more regularisation, or control='min-energy'")
     _check_shoulders(b, geom, balls, cs, loads, prob, shoulder_angle)
     if stiffness:
         kmat, kcheck = stiffness_matrix(prob, u, balls)
@@ -286,7 +305,7 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
         bearing_name=b.name, loads=loads, omega=w_i, omega_outer=w_o, control=control, traction=model.name,
         lubricant=lub.name, displacement=u, residual=resid, free=free, held=held, reactions=reactions, balls=out,
         geometry=geometry, stiffness=kmat, stiffness_check=kcheck,
-        minimum_checks=[c for c in checks] if control == "min-energy" else [], iterations=it_total,
+        minimum_checks=[c for c in checks] if control in ("min-energy", "equilibrium") else [], iterations=it_total,
         n_strips=n_strips, n_across=n_across, wall_s=time.perf_counter() - t0,
         contact_geometry=geo, kinematics=kin, traction_model=model)
 
@@ -357,6 +376,7 @@ def _ball_results(b, geom, psi, balls, cs, kin, geo, model, n_strips, n_across, 
     out["centrifugal_force"] = mass * kin[:, 0] ** 2 * balls[:, B_CR]
     out["gyroscopic_moment"] = inertia * kin[:, 0] * kin[:, 1]
     out["orbital_speed"] = kin[:, 0].copy()
+    out["pivot_slip"] = kin[:, 3].copy()
     out["ball_speed"] = np.hypot(kin[:, 1], kin[:, 2])
     out["ball_speed_absolute"] = np.hypot(kin[:, 1], kin[:, 2] + kin[:, 0])
     out["beta"] = np.array([km.spin_axis_angle(kin[j, 1], kin[j, 2]) for j in range(z)])

@@ -38,15 +38,20 @@ class ReferenceEngine:
     scenario : Scenario
     lubricant : Lubricant, optional
         Default: the DEM papers' lubricant.
+    start : dict, optional
+        Initial state (:func:`~exudyn_bearing.model.initial_state.state_from_ball_kinematics`,
+        e.g. a quasi-static solution's ``dynamic_start``); required with
+        ``scenario.initial == "quasistatic"``.
     """
 
     name = "reference"
 
-    def __init__(self, bearing, scenario: Scenario, lubricant: Lubricant | None = None):
+    def __init__(self, bearing, scenario: Scenario, lubricant: Lubricant | None = None, start: dict | None = None):
         b = load_bearing(bearing)
         if scenario.Pd is not None:
             b = b.with_clearance(scenario.Pd)
         self.bearing = b
+        self.start = start
         self.scenario = scenario
         self.lubricant = default_lubricant() if lubricant is None else lubricant
         if scenario.cage and not b.has_cage:
@@ -58,7 +63,7 @@ class ReferenceEngine:
 
     def initial_state(self):
         """The scene's initial state (:func:`exudyn_bearing.model.initial_state.initial_state`)."""
-        return initial_state(self.bearing, self.scenario)
+        return initial_state(self.bearing, self.scenario, self.start)
 
     # -- run -----------------------------------------------------------
     def run(self, progress=None, chunk_steps=None):
