@@ -61,16 +61,18 @@ def quasistatic_start(bearing, scenario: Scenario, lubricant: Lubricant | None =
     scenario's loads and initial speed: ring displacement, ball positions and
     contact angles, orbital speeds and ball angular velocities by
     ``scenario.control`` (race control or minimum energy), with the
-    scenario's traction model, ring growth and temperatures. The inner ring's
+    scenario's traction model (regularised as the dynamic engines use it),
+    ring growth and temperatures. The inner ring's
     tilts are held at zero (the dynamic engines' inner ring translates only);
     the solution is kept as ``start["static"]``."""
+    from .model.parameters import dynamic_traction_model
     from .solvers.quasistatic import solve_quasistatic
 
     b = load_bearing(bearing)
     if scenario.Pd is not None:
         b = b.with_clearance(scenario.Pd)
     sol = solve_quasistatic(b, Fr=scenario.Fr, Fa=scenario.Fa, omega=scenario.omega_at(0.0), control=scenario.control,
-                            traction=scenario.traction, lubricant=lubricant, ring_growth=scenario.ring_growth,
+                            traction=dynamic_traction_model(scenario), lubricant=lubricant, ring_growth=scenario.ring_growth,
                             temperatures=scenario.temperatures, fixed={"tilt_x": 0.0, "tilt_y": 0.0},
                             hertz_method=scenario.hertz, n_strips=max(scenario.n_strips, 16), stiffness=False)
     start = sol.dynamic_start(b)

@@ -18,7 +18,7 @@ from .initial_state import ring_mass_estimate
 from .operating_geometry import operating_geometry
 from .scenario import FRICTION_MODELS, Scenario
 
-__all__ = ["scene_parameters", "traction_vector"]
+__all__ = ["scene_parameters", "traction_vector", "dynamic_traction_model"]
 
 
 def scene_parameters(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant) -> np.ndarray:
@@ -82,25 +82,27 @@ def scene_parameters(bearing: BallBearing, scenario: Scenario, lubricant: Lubric
     return p
 
 
-def traction_vector(scenario: Scenario) -> np.ndarray:
-    """The traction model's parameter vector as the dynamic engines use it: a
+def dynamic_traction_model(scenario: Scenario):
+    """The scenario's traction model as the dynamic engines use it: a
     Coulomb-type law (``constant``, ``lambda``) without its own
-    regularisation gets ``scenario.traction_regularizing_srr``."""
+    regularisation gets ``scenario.traction_regularizing_srr`` (a
+    discontinuous law has no stable explicit step); others unchanged."""
     model = get_traction_model(scenario.traction)
-    vec = np.array(model.vector, float)
-    names = PARAMETER_NAMES[model.kind]
-    if "regularizing_srr" in names:
-        k = names.index("regularizing_srr")
-        if vec[k] <= 0.0:
-            vec[k] = scenario.traction_regularizing_srr
-    return vec
+    if "regularizing_srr" in PARAMETER_NAMES[model.kind] and model.parameters["regularizing_srr"] <= 0.0:
+        return model.replace(regularizing_srr=scenario.traction_regularizing_srr)
+    return model
+
+
+def traction_vector(scenario: Scenario) -> np.ndarray:
+    """Parameter vector of :func:`dynamic_traction_model`."""
+    return np.array(dynamic_traction_model(scenario).vector, float)
 
 
 def _set_traction(p, b, s):
     """Ellipse traction level: model code and parameters, strip counts, the
     pressed contact radii of the curvature-induced slip."""
     p[L.P_TRACTION_LEVEL] = 1.0 if s.traction_level == "ellipse" else 0.0
-    p[L.P_TRACTION_CODE] = get_traction_model(s.traction).code
+    p[L.P_TRACTION_CODE] = dynamic_traction_model(s).code
     p[L.P_N_STRIPS] = s.n_strips
     p[L.P_N_ACROSS] = s.n_across
     vec = traction_vector(s)

@@ -26,7 +26,7 @@ from ..data import Lubricant, load_bearing
 from ..model.layout import DIAG_FIELDS, GLOBAL_FIELDS
 from ..model.record import RunRecord
 from ..model.scenario import Scenario
-from ..physics import kinematics
+from .contact_summary import contact_summary
 from .jsonio import to_jsonable
 
 __all__ = ["Results", "SUMMARY_KEYS"]
@@ -132,7 +132,6 @@ class Results:
                 for code, name in enumerate(("boundary", "mixed", "full_film"))}
         srr = np.stack([self.contact("srr", "inner")[w], self.contact("srr", "outer")[w]])
         omega = float(np.mean(self.global_series("omega")[w]))
-        a0 = b.free_contact_angle
 
         def nanmean(x):
             x = np.asarray(x, float)
@@ -156,9 +155,6 @@ class Results:
             "ring_displacement": [float(x) for x in np.mean(self.data["ring"][w, :3], axis=0)],
             "friction_torque": float(np.mean(self.global_series("ring_torque")[w])),
             "friction_power": float(np.mean(self.global_series("friction_power")[w])),
-            "kinematic_cage_speed": float(kinematics.cage_speed(omega, 0.0, b.ball_radius, b.pitch_radius, a0)),
-            "kinematic_ball_spin": float(kinematics.ball_spin_absolute(omega, 0.0, b.ball_radius,
-                                                                       b.pitch_radius, a0)),
             "steps": self.steps,
             "dt": self.scenario.dt,
             "t_end": float(self.t[-1]) if len(self.t) else 0.0,
@@ -170,7 +166,9 @@ class Results:
             "film": self.scenario.film,
             "cage": bool(self.scenario.cage and b.has_cage),
             "lubrication": self.scenario.lubrication,
+            "traction_level": self.scenario.traction_level,
         }
+        out.update(contact_summary(self.data, w, omega, b))
         return out
 
     # -- persistence ---------------------------------------------------
