@@ -12,6 +12,7 @@ import time
 from ...data import Lubricant, load_bearing
 from ...model.initial_state import initial_state, ring_mass_estimate
 from ...model.scenario import Scenario
+from ...model.stability import stable_step
 from .element import BallBearingElement
 
 __all__ = ["ExudynEngine", "SOLVERS", "solve_dynamic"]
@@ -71,6 +72,8 @@ class ExudynEngine:
             initialOmega=s.omega, initialLoad=(s.Fr, s.Fa), initial=s.initial, sampleInterval=s.sample_dt,
             mode=mode, subSteps=sub_steps, contactLaw=s.contact_law, powerLaw=s.power_law)
         # the reference engine's initial spin follows omega(0); the element took initialOmega
+        # the element knows loads and switches only: its step estimate takes the protocol from the scenario
+        self.element.stable = stable_step(b, s, self.element.lubricant)
         mbs.Assemble()
         self.stable = self.element.stable
 
