@@ -131,6 +131,9 @@ class Scenario:
                 raise InputError(f"{name}: must be > 0, got {getattr(self, name)}")
         if self.sample_dt < self.dt:
             raise InputError(f"sample_dt: must be >= dt ({self.dt}), got {self.sample_dt}")
+        if self.t_end < self.sample_dt:
+            raise InputError(f"t_end: must be >= sample_dt ({self.sample_dt:g} s) so that the run has a sample, "
+                             f"got {self.t_end:g}")
         if self.dt > 1e-4:
             raise InputError(f"dt: {self.dt} s is far above any stable step of a Hertz contact")
         if not 2.0 / 3.0 - 1e-12 <= self.tangential_stiffness_ratio <= 1.0:

@@ -124,6 +124,7 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin):
                                  regularizing_speed=regularizingSpeed,
                                  tangential_stiffness_ratio=tangentialStiffnessRatio, dt=stepSize,
                                  sample_dt=max(sampleInterval, stepSize), initial=initial, contact_law=contactLaw,
+                                 t_end=max(0.05, sampleInterval, stepSize),  # the run's end is the solver's
                                  power_law=tuple(powerLaw))
         if cage and not b.has_cage:
             raise InputError(f"cage: bearing {b.name} has no cage balls; use cage=False")

@@ -88,10 +88,14 @@ class SensorsMixin:
             size = int(np.prod(shape))
             data[name] = rows[:, k:k + size].reshape((len(rows), *shape))
             k += size
-        steps = self._evaluations if steps is None else steps
+        if self.mode == "fast":  # ball sub-steps taken and the wall time of the user function
+            steps_taken, wall = self._fast_stats
+        else:  # force evaluations (one per step with VelocityVerlet) and their wall time
+            steps_taken, wall = self._evaluations, self._wall
+        steps = steps_taken if steps is None else steps
         msg = cage_load_check(self.bearing, self.scenario, self.lubricant,
                               float(data["cage_load"].max(initial=0.0)), self.scenario.dt)
         if msg:
             warnings.warn(msg, StepSizeWarning, stacklevel=3)
         return RunRecord(self.bearing, self.scenario, self.lubricant, data, steps=steps,
-                         wall_s=self._wall if wall_s is None else wall_s, engine="exudyn", stable_dt=self.stable.dt)
+                         wall_s=wall if wall_s is None else wall_s, engine="exudyn", stable_dt=self.stable.dt)

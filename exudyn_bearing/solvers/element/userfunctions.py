@@ -70,12 +70,15 @@ class UserFunctionsMixin:
                                                 self._cage_load, self._out)
         speeds, dt_sub, max_overlap, spin = self._speeds, self._dt_sub, self._max_overlap, EK.RD_SPIN
         clock = self._clock  # [t of the last Exudyn evaluation (nan: none yet), tau, next sample, step checked]
+        stats = self._fast_stats = [0, 0.0]  # ball sub-steps taken, wall seconds in this function
         asarray = np.asarray
+        perf_counter = time.perf_counter
         step = _entry_point(EK.fast_step, (asarray(np.zeros(1)), asarray(np.zeros(1)), ref, params, table, kind,
                                            rdata, 1, 0.0, 0.0, 0.0, work, rings0, rings, rings_sub, hist, hz, fr,
                                            glob, diag, cload, False, out))
 
         def force_uf_fast(mbs, t, itemNumber, q, q_t):
+            t0 = perf_counter()
             for r, f in speeds:
                 rdata[r, spin] = f(t)
             # Exudyn's vectors become contiguous float64 arrays (one compiled signature)
@@ -100,6 +103,8 @@ class UserFunctionsMixin:
                 if want:
                     self._sample(t_end, rings_sub)
                     clock[2] = self._next_sample
+                stats[0] += n_sub
+                stats[1] += perf_counter() - t0
                 return out
             if t_int != t_int:
                 # first evaluation: forces at the initial state, nothing to integrate yet
@@ -114,6 +119,7 @@ class UserFunctionsMixin:
             # no time advance: the last reactions at the current ring poses
             step(q, q_t, ref, params, table, kind, rdata, 0, clock[1], t, t, work, rings0, rings, rings_sub, hist,
                  hz, fr, glob, diag, cload, False, out)
+            stats[1] += perf_counter() - t0
             return out
 
         return force_uf_fast
