@@ -9,10 +9,10 @@ Modules: :mod:`.errors` (InputError and the checks), :mod:`.materials`,
 construction), :mod:`.catalog` (``catalog.json``, look-up by name or file).
 """
 from .bearings import MAX_FREE_CONTACT_ANGLE, MAX_PRELOAD_INTERFERENCE, BallBearing
-from .catalog import catalog, default_lubricant, get_bearing, load_bearing, lubricants, materials
+from .catalog import catalog, default_lubricant, get_bearing, load_bearing, load_lubricant, lubricants, materials
 from .errors import InputError
 from .lubricants import Lubricant
 from .materials import Material
 
 __all__ = ["InputError", "Material", "Lubricant", "BallBearing", "catalog", "materials", "lubricants",
-           "get_bearing", "load_bearing", "default_lubricant", "MAX_FREE_CONTACT_ANGLE", "MAX_PRELOAD_INTERFERENCE"]
+           "get_bearing", "load_bearing", "load_lubricant", "default_lubricant", "MAX_FREE_CONTACT_ANGLE", "MAX_PRELOAD_INTERFERENCE"]

@@ -11,6 +11,7 @@ import math
 from dataclasses import dataclass
 
 from ..data import InputError
+from ..data.errors import check_bool, check_number
 from ..physics.ehl import film_model_code
 from ..physics.hertz import method_code
 from .motion import omega_profile
@@ -115,14 +116,22 @@ class Scenario:
     sample_dt: float = 1e-4
 
     def __post_init__(self):
+        # numbers as plain floats (numpy scalars are numbers; strings and booleans are not)
         for name in ("Fr", "Fa", "omega", "t_end", "t_ramp_up", "t_ramp_down", "mu_dry",
-                     "regularizing_speed", "guide_clearance", "dt", "sample_dt"):
-            v = getattr(self, name)
-            if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
+                     "regularizing_speed", "guide_clearance", "dt", "sample_dt", "tangential_stiffness_ratio"):
+            v = check_number(name, getattr(self, name))
+            if not math.isfinite(v):
                 raise InputError(f"{name}: must be a finite number, got {v!r}")
-        ts = self.t_steady
-        if not isinstance(ts, (int, float)) or math.isnan(ts) or ts < 0:
+            object.__setattr__(self, name, v)
+        ts = check_number("t_steady", self.t_steady)
+        if math.isnan(ts) or ts < 0:
             raise InputError(f"t_steady: must be >= 0 (inf allowed), got {ts!r}")
+        object.__setattr__(self, "t_steady", ts)
+        for name in ("Pd", "ring_mass"):
+            if getattr(self, name) is not None:
+                object.__setattr__(self, name, check_number(name, getattr(self, name)))
+        for name in ("cage", "lubrication"):
+            object.__setattr__(self, name, check_bool(name, getattr(self, name)))
         for name in ("Fr", "Fa", "t_ramp_up", "t_ramp_down", "mu_dry"):
             if getattr(self, name) < 0:
                 raise InputError(f"{name}: must be >= 0, got {getattr(self, name)}")
