@@ -81,3 +81,27 @@ def test_exudyn_engine_estimates_the_protocol_like_the_reference_engine():
 
     sc = PROTOCOL.replace(dt=3e-6)
     assert ExudynEngine("6208", sc).stable == ReferenceEngine("6208", sc).stable
+
+
+@pytest.mark.parametrize("fr", [25000.0, 1e9])
+def test_loads_outside_the_elastic_contact_range_are_refused(fr):
+    # a 1e9 N load gave a 75 mm overlap without a word; the limit is the ISO 76 contact pressure
+    from exudyn_bearing.model.load_range import MAX_CONTACT_PRESSURE, check_load_range, contact_pressures
+    from exudyn_bearing.solvers.analytic import static_analysis
+
+    limit = f"{MAX_CONTACT_PRESSURE / 1e9:g} GPa"
+    with pytest.raises(eb.InputError, match=f"^radial_load: .*{limit}"):
+        static_analysis(eb.catalog["6208"], fr)
+    with pytest.raises(eb.InputError, match=f"^Fr: .*{limit}"):
+        eb.simulate("6208", eb.Scenario(Fr=fr, t_end=1e-4, dt=1e-6))
+    # the papers' 3000 N: 2.2 GPa, well inside
+    p_in, p_out = contact_pressures(check_load_range(eb.catalog["6208"], 3000.0))
+    assert 0.4 * MAX_CONTACT_PRESSURE < p_in.max() < 0.6 * MAX_CONTACT_PRESSURE and p_out.max() < p_in.max()
+
+
+def test_the_load_range_error_names_the_load():
+    from exudyn_bearing.model.load_range import check_load_range
+
+    with pytest.raises(eb.InputError, match="^Fa: F_r = 0 N, F_a = 50000 N give a contact pressure of"):
+        check_load_range(eb.catalog["7208"], 0.0, 50000.0)
+    assert check_load_range(eb.catalog["6208"], 0.0, 0.0) is None  # unloaded with clearance: nothing to check

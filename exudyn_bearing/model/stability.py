@@ -17,7 +17,8 @@ from ..data import BallBearing, InputError, Lubricant, default_lubricant
 from ..physics import hertz, kinematics
 from ..physics.friction import sphere_tangential_mass
 from ..physics.hertz import material_reduced_modulus
-from ..physics.load_distribution import race_stiffness, static_equilibrium
+from ..physics.load_distribution import race_stiffness
+from .load_range import check_load_range
 from .scenario import Scenario
 
 __all__ = ["SimulationError", "StepSizeWarning", "StableStep", "STABILITY_SAFETY", "START_UP_CAGE_LOAD",
@@ -106,10 +107,10 @@ class StableStep:
 
 def _static_solution(b: BallBearing, scenario: Scenario):
     """Quasi-static solution under the scenario's F_r, F_a (None for an
-    unloaded bearing with clearance, which has no equilibrium to solve)."""
-    if scenario.Fr > 0 or scenario.Fa > 0 or b.diametral_clearance < 0:
-        return static_equilibrium(b, scenario.Fr, scenario.Fa, hertz_method=scenario.hertz)
-    return None
+    unloaded bearing with clearance, which has no equilibrium to solve);
+    InputError for loads outside the elastic contact model
+    (:func:`~exudyn_bearing.model.load_range.check_load_range`)."""
+    return check_load_range(b, scenario.Fr, scenario.Fa, scenario.hertz)
 
 
 def _static_ball_loads(b: BallBearing, scenario: Scenario) -> np.ndarray:
