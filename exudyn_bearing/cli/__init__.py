@@ -1,17 +1,19 @@
 """Command line: ``python -m exudyn_bearing`` / ``exudyn-bearing``.
 
-Sub-commands (``--json`` for scripts, tables otherwise):
+Sub-commands (``--json`` for scripts, with a ``units`` map; tables otherwise):
 
-* ``info BEARING [--omega W]``: geometry, Hertz constants, kinematics.
-* ``static BEARING --Fr N [--Fa N] [--Pd M] [--omega W] [--film hd|mk]
-  [--plot FILE.png]``: quasi-static load distribution and lubrication map.
-* ``simulate --bearing B --Fr N --omega W --engine reference --t-end T
-  [--out DIR] [--json]``: dynamic simulation; summary keys of
-  :meth:`exudyn_bearing.outputs.results.Results.summary`.
+* ``info BEARING [--omega W | --rpm N]``: geometry, Hertz constants, kinematics.
+* ``static BEARING --Fr N [--Fa N] [--Pd M] [--omega W | --rpm N]
+  [--lubricant L] [--film hd|mk] [--plot FILE.png]``: quasi-static load
+  distribution and lubrication map.
+* ``simulate [BEARING] --Fr N [--omega W | --rpm N] [--ramp UP STEADY DOWN]
+  [--t-end T] [--engine reference|exudyn] [--out DIR]``: dynamic simulation;
+  summary keys of :meth:`exudyn_bearing.outputs.results.Results.summary`.
 
-BEARING is a catalogue name (6208, 7208, 6004, ACBB-120) or a JSON file with
-the geometry (format of ``exudyn_bearing/data/catalog.json``). Bad input
-exits with status 2 and a one-line message naming the parameter.
+BEARING is a catalogue name (6208, 7208, 6004, ACBB-120) or a JSON file
+(:mod:`exudyn_bearing.data.catalog`: one bearing by race radii or dimensions,
+or a catalogue-shaped file). Shared options live in :mod:`.common`. Bad
+input exits with status 2 and a one-line message naming the parameter.
 """
 from __future__ import annotations
 
@@ -24,12 +26,17 @@ from .common import Parser
 
 __all__ = ["main"]
 
+#: Text of ``exudyn-bearing --help``.
+DESCRIPTION = ("Rolling-element ball bearings: data sheet (info), quasi-static load distribution and "
+               "lubrication map (static), dynamic simulation ball by ball (simulate). BEARING is a catalogue "
+               "name or a JSON file; 'exudyn-bearing COMMAND --help' lists a command's options.")
+
 #: Sub-commands: name -> module with ``add_parser(subparsers)`` and ``run(args)``.
 COMMANDS = {"info": info, "static": static, "simulate": simulate}
 
 
 def _parser() -> Parser:
-    p = Parser(prog="exudyn-bearing", description=__doc__.split("\n")[0])
+    p = Parser(prog="exudyn-bearing", description=DESCRIPTION)
     sub = p.add_subparsers(dest="command", required=True, parser_class=Parser)
     for module in COMMANDS.values():
         module.add_parser(sub)

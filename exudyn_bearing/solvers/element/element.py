@@ -63,6 +63,7 @@ import warnings
 
 import numpy as np
 
+from ..._jit import announce_compilation
 from ...data import InputError, Lubricant, default_lubricant, load_bearing
 from ...model import layout as L
 from ...model.contact import forces
@@ -110,6 +111,7 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin):
                  tangentialStiffnessRatio=2.0 / 3.0, stepSize=1e-6, innerRingSpeed=None, outerRingSpeed=None,
                  initialOmega=0.0, initialLoad=(0.0, 0.0), initial="analytic", sampleInterval=1e-4,
                  mode="bodies", subSteps=1, contactLaw="hertz", powerLaw=(0.0, 1.5, 0.0), show=False):
+        announce_compilation(forces, EK.fast_step if mode == "fast" else EK.element_rhs)
         self.mbs = mbs
         self.bearing = b = load_bearing(bearing)
         self.lubricant = default_lubricant() if lubricant is None else lubricant
