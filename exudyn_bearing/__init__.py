@@ -15,8 +15,9 @@ from .model.scenario import Scenario
 from .model.stability import SimulationError, StepSizeWarning
 from .outputs.results import Results
 from .simulate import CreateBallBearing, simulate
+from .solvers.element.console import filter_exudyn_notes
 
 __version__ = "0.1.0"
 
-__all__ = ["CreateBallBearing", "BallBearing", "InputError", "Lubricant", "Material", "Results", "Scenario", "SimulationError", "StepSizeWarning",
+__all__ = ["CreateBallBearing", "filter_exudyn_notes", "BallBearing", "InputError", "Lubricant", "Material", "Results", "Scenario", "SimulationError", "StepSizeWarning",
            "catalog", "get_bearing", "load_bearing", "load_lubricant", "lubricants", "materials", "simulate"]

@@ -51,7 +51,9 @@ def build_builtin(k=K_CONTACT, damping=D_CONTACT, mu=MU, v_reg=V_REG, ring_polar
     # the inner ring: mass of the 6208 inner ring, a large polar inertia that keeps it at
     # 500 rad/s while it spins the balls up (exudyn_bearing prescribes the ring speed)
     ring = InertiaCylinder(density=7850.0, length=0.018, outerRadius=0.024, innerRadius=0.02, axis=2)
-    jxx = ring.Inertia()[0, 0]
+    # tilting inertia raised with the polar one, so that the tensor stays physical
+    # (J_zz <= J_xx + J_yy; Exudyn warns otherwise): the ring hardly tilts, as our mass point
+    jxx = max(ring.Inertia()[0, 0], 0.5 * ring_polar_inertia)
     inner = mbs.CreateRigidBody(referencePosition=[0, 0, 0], initialAngularVelocity=[0, 0, 500.0],
                                 inertia=RigidBodyInertia(mass=ring.Mass(),
                                                          inertiaTensor=np.diag([jxx, jxx, ring_polar_inertia])))

@@ -13,6 +13,7 @@ from ...data import Lubricant, load_bearing
 from ...model.initial_state import initial_state, ring_mass_estimate
 from ...model.scenario import Scenario
 from ...model.stability import stable_step
+from .console import filter_exudyn_notes
 from .element import BallBearingElement
 
 __all__ = ["ExudynEngine", "SOLVERS", "solve_dynamic"]
@@ -23,17 +24,11 @@ SOLVERS = {"verlet": "VelocityVerlet", "rk4": "RK44"}
 
 def solve_dynamic(mbs, settings, solverType=None, quiet=True):
     """``mbs.SolveDynamic`` with ``settings`` (solver: ``solverType``, default
-    the one in the settings); ``quiet`` keeps Exudyn's solver notes off stdout
-    (which must stay clean for --json) and restores the setting afterwards."""
-    import exudyn as exu
-
-    printing = exu.config.printToConsole
-    if quiet:
-        exu.config.printToConsole = False
-    try:
+    the one in the settings) inside :func:`~.console.filter_exudyn_notes`:
+    ``quiet`` keeps all of Exudyn's solver output off stdout (which must stay
+    clean for --json); otherwise its known-benign notes are dropped."""
+    with filter_exudyn_notes(quiet=quiet):
         return mbs.SolveDynamic(settings, solverType=solverType or settings.timeIntegration.solverType)
-    finally:
-        exu.config.printToConsole = printing
 
 
 class ExudynEngine:
