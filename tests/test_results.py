@@ -104,3 +104,34 @@ def test_fast_mode_element_counts_its_steps_and_wall_time():
         assert abs(r.steps - t_end / dt) <= sub and r.wall_s > 0.0
         s = r.summary()
         assert s["steps"] == r.steps and math.isfinite(s["wall_s"]) and s["wall_s"] > 0.0
+
+
+def test_run_plot_masks_unloaded_balls_and_keeps_legends_off_the_data(steady, tmp_path, monkeypatch):
+    # run.png drew Lambda and h_min of balls held by the centrifugal force alone (a flat band
+    # at Lambda = 3.05 outside the loaded zone) and its legends covered data
+    from exudyn_bearing.outputs import plotting
+
+    figs = []
+    original = plotting.save_figure
+
+    def keep(fig, png, *args, **kw):
+        fig.canvas.draw()
+        figs.append(fig)
+        return original(fig, png, *args, **kw)
+
+    monkeypatch.setattr(plotting, "save_figure", keep)
+    steady.plot(tmp_path / "run.png")
+    fig = figs[0]
+    ax = fig.axes
+    mask = plotting.loaded_ball_mask(steady)
+    assert 0 < mask.sum() < mask.size  # the steady 6208 has balls outside the loaded zone
+    for a in ax[2:4]:
+        assert len(a.collections[0].get_offsets()) == mask.sum()
+    psi = np.degrees(steady.azimuth())
+    assert np.all(np.abs(psi[mask]) < 100.0)  # the loaded zone of the 6208 at P_d = 0
+    texts = " ".join(t.get_text() for t in ax[2].texts)
+    assert "boundary | mixed" in texts and "mixed | full film" in texts
+    for a in ax[:2]:
+        leg, box = a.get_legend().get_window_extent(), a.get_window_extent()
+        assert leg.y0 >= box.y1 - 1.0  # above the axes, not on the curves
+    assert (tmp_path / "run.png").stat().st_size > 10_000
