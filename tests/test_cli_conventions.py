@@ -178,3 +178,17 @@ def test_cold_numba_cache_is_announced_once(tmp_path, monkeypatch, capsys):
 
     simulate("6208", Scenario(t_end=1e-4, dt=5e-6, sample_dt=1e-4))
     assert not _jit._cache_is_cold(run_verlet)
+
+
+def test_readme_command_1_is_what_ci_runs_and_parses():
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parents[1]
+    readme = (root / "README.md").read_text()
+    ci = (root / ".ci" / "run").read_text()
+    line = next(x for x in readme.splitlines() if x.startswith('pip install -e ".[test]" && python -m exudyn_bearing'))
+    assert line in ci.splitlines()
+    argv = line.split("python -m exudyn_bearing ", 1)[1].split()
+    args = _parser().parse_args(argv)
+    assert args.bearing == "6208" and args.t_end is None  # the protocol sets the run length
+    assert scenario_from_args(args).t_end == pytest.approx(0.3)

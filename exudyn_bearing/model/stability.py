@@ -300,7 +300,7 @@ def ring_stable_step(bearing: BallBearing, scenario: Scenario, ring_mass: float,
 
     2/omega with omega^2 = :func:`ring_contact_stiffness` / m_ring. No safety
     factor: the 81 g ring of the 6208 test scene at F_r = 3000 N gets
-    22.8 us; the fast mode runs at 20 us, is 59 % off at 25 us and blows up
+    22.8 us; the fast mode runs at 20 us, puts Q_max 5.6 times too high at 25 us and blows up
     at 30 us (validation/fast_mode_checks.py). For a ring on a rigid body
     with several bearings the element uses the body's mass matrix and all
     its bearings (``BallBearingElement.ringStableStep``).
