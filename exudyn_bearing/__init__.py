@@ -16,8 +16,10 @@ from .model.stability import SimulationError, StepSizeWarning
 from .outputs.results import Results
 from .simulate import CreateBallBearing, simulate
 from .solvers.element.console import filter_exudyn_notes
+from .solvers.quasistatic import QuasiStaticSolution, solve_quasistatic
 
 __version__ = "0.1.0"
 
-__all__ = ["CreateBallBearing", "filter_exudyn_notes", "BallBearing", "InputError", "Lubricant", "Material", "Results", "Scenario", "SimulationError", "StepSizeWarning",
-           "catalog", "get_bearing", "load_bearing", "load_lubricant", "lubricants", "materials", "simulate"]
+__all__ = ["CreateBallBearing", "filter_exudyn_notes", "BallBearing", "InputError", "Lubricant", "Material", "Results",
+           "Scenario", "SimulationError", "StepSizeWarning", "catalog", "get_bearing", "load_bearing", "load_lubricant",
+           "lubricants", "materials", "simulate", "solve_quasistatic", "QuasiStaticSolution"]

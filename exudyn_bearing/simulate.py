@@ -81,7 +81,9 @@ def CreateBallBearing(mbs, bearing: BallBearing | str, markerInnerRing, markerOu
         Keyword options of :class:`~exudyn_bearing.solvers.element.BallBearingElement`
         (``lubricant``, ``cage``, ``lubrication``, ``friction``, ``tangential``,
         ``hertzModel``, ``film``, ``stepSize``, ``innerRingSpeed``,
-        ``initialOmega``, ``initialLoad``, ``sampleInterval``, ``show``, ...).
+        ``initialOmega``, ``initialLoad`` ((Fr, Fa) [N] or a radial load Fr),
+        ``sampleInterval``, ``show``, ...); an invalid option raises
+        InputError naming it.
 
     Returns
     -------

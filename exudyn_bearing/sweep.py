@@ -2,11 +2,40 @@
 
 Cases run on local processes (all cores by default) or, given a scheduler
 address, on a Dask distributed cluster (``pip install exudyn-bearing[dask]``).
-Every finished case is written atomically (temporary file, then rename) to
-``<out>/<name>.json`` and ``<out>/<name>.npz``, so an interrupted sweep
-resumes where it stopped: cases whose JSON exists are not run again, and a
-case is never half-written or duplicated. A progress line on stderr counts
-the finished cases.
+
+Files in the output folder (each written atomically: a temporary file, then a
+rename, with the usual permissions of the process umask, 0644 under umask
+022):
+
+``<name>.npz``, ``<name>.json``
+    A finished case: the arrays, and the record ``{"name", "status": "done",
+    "spec", "spec_hash", "summary", "wall_case_s"}`` (written last: its
+    presence marks the case as done).
+``<name>.error.json``
+    A failed case: ``{"name", "status": "failed", "spec", "spec_hash",
+    "error": {"type", "message"}, "traceback", "wall_case_s"}``. It does not
+    mark the case as done: the next run tries the case again (and removes the
+    error record when the case then succeeds).
+``index.json``, ``index.csv``
+    Every case of the last call with its status (``done``, ``failed``, or
+    ``pending`` when the sweep was stopped), ``spec_hash``, the error of a
+    failed case, and the parameters (``index.csv``: one row per case, the
+    scenario parameters as ``scenario.<name>`` columns).
+
+Resume: a case is done when its JSON exists and holds the hash of the same
+spec (:func:`spec_hash`: the spec as written, with a bearing given as a JSON
+file replaced by the file's content). A case whose spec changed under the
+same name runs again: its old files are removed first and the change is
+noted on stderr. A spec that changed only in how it is written (a default
+spelled out) counts as changed; ``3000`` for ``3000.0`` does not.
+
+A case that raises is recorded and the sweep goes on with the others; the
+failures are listed on stderr at the end and in the index, and their
+records come back with ``"status": "failed"``. Ctrl-C or SIGTERM stop the
+sweep: queued cases are cancelled, the worker processes terminated, the
+index written with the unfinished cases ``pending``, and
+:class:`SweepInterrupted` (a KeyboardInterrupt) raised. A progress line on
+stderr counts the finished cases.
 
 ::
 
@@ -17,27 +46,43 @@ the finished cases.
 """
 from __future__ import annotations
 
+import csv
+import hashlib
 import io
 import json
 import os
+import signal
 import sys
-import tempfile
+import threading
 import time
+import traceback
+import uuid
 from concurrent.futures import ProcessPoolExecutor, as_completed
 from pathlib import Path
 
 import numpy as np
 
-from .data import Lubricant, load_bearing
+from .data import InputError, Lubricant, catalog, load_bearing
 from .model.scenario import Scenario
 from .outputs.jsonio import to_jsonable
 from .simulate import simulate
 
-__all__ = ["run_sweep", "run_case", "load_case"]
+__all__ = ["run_sweep", "run_case", "load_case", "spec_hash", "SweepInterrupted", "INDEX"]
+
+#: Index files of the last sweep in the output folder.
+INDEX = ("index.json", "index.csv")
+
+
+class SweepInterrupted(KeyboardInterrupt):
+    """The sweep was stopped (Ctrl-C or SIGTERM); finished cases are kept and
+    a later run resumes."""
 
 
 def _atomic_write_bytes(path: Path, data: bytes) -> None:
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+    """Write ``data`` to a temporary file beside ``path`` (created with mode
+    0666 less the umask, as ``open`` does), then rename it to ``path``."""
+    tmp = path.parent / f".{path.name}.{os.getpid()}.{uuid.uuid4().hex[:12]}.tmp"
+    fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666)
     try:
         with os.fdopen(fd, "wb") as f:
             f.write(data)
@@ -50,16 +95,49 @@ def _atomic_write_bytes(path: Path, data: bytes) -> None:
         raise
 
 
+def _write_json(path: Path, obj) -> None:
+    _atomic_write_bytes(path, json.dumps(to_jsonable(obj), indent=2).encode())
+
+
+def _canonical(obj):
+    """JSON-like ``obj`` with integers as floats (3000 and 3000.0 are the same
+    load) and tuples as lists."""
+    if isinstance(obj, dict):
+        return {str(k): _canonical(v) for k, v in obj.items()}
+    if isinstance(obj, (list, tuple)):
+        return [_canonical(v) for v in obj]
+    if isinstance(obj, (int, np.integer)) and not isinstance(obj, (bool, np.bool_)):
+        return float(obj)
+    return to_jsonable(obj)
+
+
+def spec_hash(spec: dict) -> str:
+    """SHA-256 (hex) of a case spec: its canonical JSON (sorted keys, numbers
+    as floats), with a bearing given as a path to a JSON file replaced by the
+    file's content, so that an edited bearing file re-runs its cases."""
+    spec = dict(spec)
+    bearing = spec.get("bearing")
+    if isinstance(bearing, (str, os.PathLike)) and str(bearing) not in catalog and Path(bearing).is_file():
+        try:
+            spec["bearing"] = json.loads(Path(bearing).read_text())
+        except (OSError, ValueError):
+            pass
+    text = json.dumps(_canonical(spec), sort_keys=True, separators=(",", ":"))
+    return hashlib.sha256(text.encode()).hexdigest()
+
+
 def run_case(name: str, spec: dict, out_dir: str) -> str:
-    """Run one case and write its files; returns the case name.
+    """Run one case and write its files; returns the case name (raises what
+    the case raises; :func:`run_sweep` records that instead).
 
     ``spec``: ``bearing`` (name, JSON path or dict), ``scenario`` (Scenario
     keyword arguments), optional ``engine`` ('reference' or 'exudyn') and
     ``lubricant`` (Lubricant keyword arguments). The NPZ holds the last half
-    of the sampled series needed for azimuth plots; the JSON the summary and
-    the spec.
+    of the sampled series needed for azimuth plots; the JSON the summary, the
+    spec and its :func:`spec_hash`.
     """
     out = Path(out_dir)
+    key = spec_hash(spec)
     lub = Lubricant(**spec["lubricant"]) if spec.get("lubricant") else None
     t0 = time.perf_counter()
     run = simulate(load_bearing(spec["bearing"]), Scenario(**spec["scenario"]),
@@ -73,10 +151,34 @@ def run_case(name: str, spec: dict, out_dir: str) -> str:
     buf = io.BytesIO()
     np.savez_compressed(buf, **arrays)
     _atomic_write_bytes(out / f"{name}.npz", buf.getvalue())
-    record = {"name": name, "spec": spec, "summary": run.summary(), "wall_case_s": wall}
+    record = {"name": name, "status": "done", "spec": spec, "spec_hash": key, "summary": run.summary(),
+              "wall_case_s": wall}
     # the JSON goes last: its presence marks the case as done
-    _atomic_write_bytes(out / f"{name}.json", json.dumps(to_jsonable(record), indent=2).encode())
+    _write_json(out / f"{name}.json", record)
+    try:
+        (out / f"{name}.error.json").unlink()
+    except FileNotFoundError:
+        pass
     return name
+
+
+def _error_record(name, spec, exc, wall):
+    return {"name": name, "status": "failed", "spec": spec, "spec_hash": spec_hash(spec),
+            "error": {"type": type(exc).__name__, "message": str(exc)},
+            "traceback": "".join(traceback.format_exception(type(exc), exc, exc.__traceback__)), "wall_case_s": wall}
+
+
+def _run_case_recorded(name: str, spec: dict, out_dir: str):
+    """:func:`run_case`; an exception becomes ``<name>.error.json``.
+    Returns (name, None) or (name, error record)."""
+    t0 = time.perf_counter()
+    try:
+        run_case(name, spec, out_dir)
+        return name, None
+    except Exception as exc:  # noqa: BLE001 - every failure of a case is recorded, the sweep goes on
+        rec = _error_record(name, spec, exc, time.perf_counter() - t0)
+        _write_json(Path(out_dir) / f"{name}.error.json", rec)
+        return name, rec
 
 
 def load_case(out_dir, name: str) -> dict:
@@ -88,18 +190,102 @@ def load_case(out_dir, name: str) -> dict:
     return rec
 
 
-def _progress(done, total, t0, stream):
+def _is_done(out: Path, name: str, key: str) -> bool:
+    """The case's JSON exists and was written for the spec with hash ``key``
+    (records from before the hash was stored: the hash of their spec)."""
+    try:
+        rec = json.loads((out / f"{name}.json").read_text())
+        if not (out / f"{name}.npz").exists():
+            return False
+        stored = rec.get("spec_hash") or spec_hash(rec["spec"])
+    except (OSError, ValueError, KeyError, TypeError, AttributeError):
+        return False
+    return stored == key
+
+
+def _progress(done, total, t0, stream, failed=0):
     el = time.perf_counter() - t0
     width = 30
     n = int(width * done / max(total, 1))
-    print(f"\r[sweep] |{'#' * n}{'.' * (width - n)}| {done}/{total} cases, {el:6.1f} s", end="", file=stream,
-          flush=True)
+    fail = f", {failed} failed" if failed else ""
+    print(f"\r[sweep] |{'#' * n}{'.' * (width - n)}| {done}/{total} cases{fail}, {el:6.1f} s", end="",
+          file=stream, flush=True)
+
+
+def _write_index(out: Path, cases: dict, keys: dict, status: dict, errors: dict) -> None:
+    entries = {}
+    for n, spec in cases.items():
+        e = {"status": status.get(n, "pending"), "spec_hash": keys[n], "spec": spec}
+        if n in errors:
+            e["error"] = errors[n]["error"]
+        entries[n] = e
+    failed = [n for n, e in entries.items() if e["status"] == "failed"]
+    counts = {s: sum(e["status"] == s for e in entries.values()) for s in ("done", "failed", "pending")}
+    _write_json(out / INDEX[0], {"counts": counts, "failed": failed, "cases": entries})
+    scen_keys = sorted({k for spec in cases.values() if isinstance(spec.get("scenario"), dict)
+                        for k in spec["scenario"]})
+    buf = io.StringIO()
+    w = csv.writer(buf, lineterminator="\n")
+    w.writerow(["name", "status", "error_type", "error_message", "engine", "bearing", "spec_hash"]
+               + [f"scenario.{k}" for k in scen_keys])
+    for n, spec in cases.items():
+        e = entries[n]
+        bearing = spec.get("bearing")
+        scen = spec.get("scenario") if isinstance(spec.get("scenario"), dict) else {}
+        w.writerow([n, e["status"], e.get("error", {}).get("type", ""), e.get("error", {}).get("message", ""),
+                    spec.get("engine", "reference"),
+                    bearing.get("name", "dict") if isinstance(bearing, dict) else bearing, keys[n]]
+                   + [to_jsonable(scen.get(k, "")) for k in scen_keys])
+    _atomic_write_bytes(out / INDEX[1], buf.getvalue().encode())
+
+
+class _StopOnSignal:
+    """While active (main thread only): SIGTERM raises :class:`SweepInterrupted`
+    like Ctrl-C raises KeyboardInterrupt."""
+
+    def __enter__(self):
+        self._installed = False
+        if threading.current_thread() is threading.main_thread():
+            def handler(signum, frame):
+                raise SweepInterrupted(f"sweep stopped by signal {signal.Signals(signum).name}")
+
+            self._old = signal.signal(signal.SIGTERM, handler)
+            self._installed = True
+        return self
+
+    def __exit__(self, *exc):
+        if self._installed:  # None: a handler not set from Python; the default is the closest
+            signal.signal(signal.SIGTERM, signal.SIG_DFL if self._old is None else self._old)
+        return False
+
+
+def _ignore_sigint():
+    """Worker initialiser: Ctrl-C reaches the whole process group; the parent
+    alone handles it and terminates the workers."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+
+
+def _terminate_pool(pool: ProcessPoolExecutor) -> None:
+    """Cancel the queued cases and terminate the worker processes now."""
+    procs = list((getattr(pool, "_processes", None) or {}).values())
+    pool.shutdown(wait=False, cancel_futures=True)
+    for p in procs:
+        if p.is_alive():
+            p.terminate()
+    for p in procs:
+        p.join(5.0)
+        if p.is_alive():
+            p.kill()
+            p.join(5.0)
 
 
 def run_sweep(cases: dict, out_dir, workers: int | None = None, scheduler: str | None = None,
               progress: bool = True) -> dict:
     """Run every case of ``cases`` (name -> spec, see :func:`run_case`) not
-    yet finished in ``out_dir``; returns name -> record for all cases.
+    yet done in ``out_dir`` (see the module docstring: resume by spec hash,
+    failure records, index); returns name -> record for all cases: the JSON
+    record with its ``arrays`` for a finished case, the error record
+    (``"status": "failed"``, ``"error": {"type", "message"}``) for a failed one.
 
     Parameters
     ----------
@@ -108,45 +294,101 @@ def run_sweep(cases: dict, out_dir, workers: int | None = None, scheduler: str |
     scheduler : str, optional
         Address of a Dask distributed scheduler (``tcp://host:8786``) or a
         ``distributed.Client``; the cases then run on its workers.
+    progress : bool
+        Progress line on stderr (the list of failures is printed regardless).
+
+    Raises
+    ------
+    InputError
+        An invalid case name (empty, with a path separator, or starting with a dot).
+    SweepInterrupted
+        Ctrl-C or SIGTERM; finished cases are kept, the index lists the rest as pending.
     """
     out = Path(out_dir)
-    out.mkdir(parents=True, exist_ok=True)
     for name in cases:
-        if not name or any(c in name for c in "/\\") or name.startswith("."):
-            raise ValueError(f"cases: invalid case name {name!r}")
-    todo = [n for n in cases if not (out / f"{n}.json").exists()]
+        if not isinstance(name, str) or not name or any(c in name for c in "/\\") or name.startswith("."):
+            raise InputError(f"cases: invalid case name {name!r} (non-empty, no path separator, no leading dot)")
+    out.mkdir(parents=True, exist_ok=True)
+    keys = {n: spec_hash(spec) for n, spec in cases.items()}
+    status = {n: "done" for n in cases if _is_done(out, n, keys[n])}
+    errors = {}
+    todo = [n for n in cases if n not in status]
     total = len(cases)
-    done = total - len(todo)
     t0 = time.perf_counter()
     stream = sys.stderr
-    if progress:
-        _progress(done, total, t0, stream)
-    if todo:
-        if scheduler is not None:
-            from distributed import Client, as_completed as dask_completed
+    changed = [n for n in todo if (out / f"{n}.json").exists()]
+    for n in changed:  # a result of another spec under this name: no longer valid
+        for suffix in (".json", ".npz"):
+            (out / f"{n}{suffix}").unlink(missing_ok=True)
+    if changed:
+        print(f"[sweep] {len(changed)} case(s) changed their spec since their record and run again: "
+              + ", ".join(changed[:10]) + (" ..." if len(changed) > 10 else ""), file=stream)
 
-            client = scheduler if isinstance(scheduler, Client) else Client(scheduler)
-            futures = [client.submit(run_case, n, cases[n], str(out), key=f"exudyn-bearing-{n}-{time.time_ns()}",
-                                     pure=False) for n in todo]
-            for fut in dask_completed(futures):
-                fut.result()
-                done += 1
-                if progress:
-                    _progress(done, total, t0, stream)
-        elif (workers or os.cpu_count() or 1) == 1:
-            for n in todo:
-                run_case(n, cases[n], str(out))
-                done += 1
-                if progress:
-                    _progress(done, total, t0, stream)
-        else:
-            with ProcessPoolExecutor(max_workers=workers or os.cpu_count()) as pool:
-                futures = [pool.submit(run_case, n, cases[n], str(out)) for n in todo]
-                for fut in as_completed(futures):
-                    fut.result()
-                    done += 1
-                    if progress:
-                        _progress(done, total, t0, stream)
+    def finished(name, err):
+        status[name] = "failed" if err else "done"
+        if err:
+            errors[name] = err
+        if progress:
+            _progress(len(status), total, t0, stream, len(errors))
+
     if progress:
-        print(file=stream)
-    return {n: load_case(out, n) for n in cases}
+        _progress(len(status), total, t0, stream)
+    try:
+        with _StopOnSignal():
+            if not todo:
+                pass
+            elif scheduler is not None:
+                _run_dask(cases, todo, out, scheduler, finished)
+            elif (workers or os.cpu_count() or 1) == 1:
+                for n in todo:
+                    finished(*_run_case_recorded(n, cases[n], str(out)))
+            else:
+                _run_pool(cases, todo, out, workers or os.cpu_count(), finished)
+    finally:
+        if progress:
+            print(file=stream)
+        _write_index(out, cases, keys, status, errors)
+    if errors:
+        print(f"[sweep] {len(errors)} of {total} cases failed (records <name>.error.json and {INDEX[0]} in "
+              f"{out}):", file=stream)
+        for n, e in errors.items():
+            print(f"  {n}: {e['error']['type']}: {e['error']['message']}", file=stream)
+    return {n: errors[n] if n in errors else load_case(out, n) for n in cases}
+
+
+def _run_pool(cases, todo, out, workers, finished):
+    pool = ProcessPoolExecutor(max_workers=workers, initializer=_ignore_sigint)
+    try:
+        futures = {pool.submit(_run_case_recorded, n, cases[n], str(out)): n for n in todo}
+        for fut in as_completed(futures):
+            n = futures[fut]
+            try:
+                finished(*fut.result())
+            except Exception as exc:  # noqa: BLE001 - the worker died (killed, out of memory): record it
+                rec = _error_record(n, cases[n], exc, 0.0)
+                _write_json(out / f"{n}.error.json", rec)
+                finished(n, rec)
+    except BaseException:
+        _terminate_pool(pool)
+        raise
+    pool.shutdown(wait=True)
+
+
+def _run_dask(cases, todo, out, scheduler, finished):
+    from distributed import Client, as_completed as dask_completed
+
+    client = scheduler if isinstance(scheduler, Client) else Client(scheduler)
+    futures = {client.submit(_run_case_recorded, n, cases[n], str(out), key=f"exudyn-bearing-{n}-{time.time_ns()}",
+                             pure=False): n for n in todo}
+    try:
+        for fut in dask_completed(list(futures)):
+            n = futures[fut]
+            try:
+                finished(*fut.result())
+            except Exception as exc:  # noqa: BLE001 - the worker was lost: record it
+                rec = _error_record(n, cases[n], exc, 0.0)
+                _write_json(out / f"{n}.error.json", rec)
+                finished(n, rec)
+    except BaseException:
+        client.cancel(list(futures))
+        raise

@@ -8,7 +8,7 @@ combined load; PHYSICS.md sec. 8: the Stribeck law with
 eps = (1 + delta_a tan(alpha)/delta_r)/2). Writes bearing_7208.png with a
 CSV beside it and prints both summaries.
 
-The 1 mm cage balls of the catalogue (33 mg, 4.7 um pocket clearance) set
+The 1 mm cage balls of the catalogue (33 mg, 4.5 um pocket clearance) set
 the step: under the combined load the balls orbit at slightly different
 speeds and press the cage balls with a few hundred newtons, so the run
 needs dt <= 0.5 us (at 1 us it stops with a dt error after about 15 ms;
@@ -26,7 +26,7 @@ import numpy as np
 
 import exudyn_bearing as eb
 from exudyn_bearing.physics.load_distribution import static_equilibrium
-from exudyn_bearing.outputs.plotting import _pyplot, label_azimuth_axes, save_figure
+from exudyn_bearing.outputs.plotting import label_azimuth_axes, pyplot, save_figure
 
 
 def main(argv=None):
@@ -42,7 +42,7 @@ def main(argv=None):
     st = static_equilibrium(b, 3000.0, 3000.0)
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
-    plt = _pyplot()
+    plt = pyplot()
     fig, ax = plt.subplots(1, 2, figsize=(11, 4.2))
     psi_a = np.degrees((st.psi + np.pi) % (2 * np.pi) - np.pi)
     order = np.argsort(psi_a)

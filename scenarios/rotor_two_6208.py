@@ -10,14 +10,34 @@ Exudyn) with one sub-step of 5 us per Exudyn step by default (``--sub-steps``
 up to 4 stay far below the 2.5 kg rotor's stable step), tangential history
 with the implicit spring; ``--mode bodies`` runs the body mode.
 
-The bearings carry only 12 N of weight each plus the unbalance, with
-clearance and no preload, and the run-up has two outcomes: the shaft either
-rattles near the centre with ball loads of a few N, or, from about 25 ms on,
-whirls at the full radial clearance (orbit radius about 7 um, outer ball
-loads about 250 N, cage at its kinematic speed). Which one occurs is not
-settled by the step size (``python validation/fast_mode_checks.py``: in
-the body mode it whirls at 1.25 us and 5 us but not at 2.5 us or 4 us), so
-compare modes and steps on loaded bearings, not on this run.
+The bearings carry only 12 N of weight each plus the unbalance (m e omega^2 =
+100 N at 1000 rad/s, shared by the two bearings). The catalogue 6208 has no diametral clearance and
+no preload: the shaft moves on the Hertz compliance of the ball contacts.
+During the run-up the shaft starts to whirl, and the whirl decays once the
+speed is reached. ``python scenarios/rotor_two_6208.py`` (defaults: 0.3 s,
+fast mode, one 5 us sub-step; about 5 s of solver wall time, half a minute
+with start-up and figure) prints, per window of the run, the orbit radius of
+the shaft centre and the largest outer ball load (mean / largest; both
+bearings alike):
+
+=============  ==================  ====================
+window [ms]    orbit radius [um]   outer ball load [N]
+=============  ==================  ====================
+0-27           1.8 / 6.8           42 / 250
+27-55          7.1 / 8.1           225 / 314
+55-109         9.2 / 10.4          337 / 401
+109-205        4.4 / 9.1           135 / 341
+205-300        2.6 / 4.5           70 / 130
+=============  ==================  ====================
+
+(run-up to 1000 rad/s ends at 109 ms; cage 396.0 rad/s and Lambda_out at
+psi = 0 4.39 over the last quarter). The run warns that its cage-ball
+contacts reached 33 N, where their stable step (4.96 us) is just below the
+5 us step: its cage loads are not reliable. The whirl is sensitive to
+round-off: at other step sizes and sub-step counts the shaft may instead
+rattle near the centre with ball loads of a few N (``python
+validation/fast_mode_checks.py``, validation/REPORT.md), so compare modes
+and steps on loaded bearings, not on this run.
 
 Writes into ``--out`` (default scenarios/out/rotor_two_6208): rotor.png
 (speed, orbit of the shaft centre, largest ball loads and Lambda_out at
@@ -38,7 +58,7 @@ from exudyn.itemInterface import (LoadForceVector, LoadMassProportional, LoadTor
                                   SensorNode)
 
 import exudyn_bearing as eb
-from exudyn_bearing.outputs.plotting import _pyplot, save_figure
+from exudyn_bearing.outputs.plotting import pyplot, save_figure
 
 
 def build(omega_target=1000.0, torque_max=5.0, unbalance=1e-4, dt=5e-6, mode="fast", sub_steps=1):
@@ -104,12 +124,12 @@ def main(argv=None):
         r.save(out, stem=f"bearing_{k}")
     pos = mbs.GetSensorStoredData(sensor)
     w = mbs.GetSensorStoredData(speed)
-    plt = _pyplot()
+    plt = pyplot()
     fig, ax = plt.subplots(2, 2, figsize=(12, 8.4))
     ax[0, 0].plot(w[:, 0], w[:, 3])
     ax[0, 0].set_xlabel("t [s]")
     ax[0, 0].set_ylabel("rotor speed [rad/s]")
-    # orbit coloured by time: the run-up rattles near the centre, the whirl circles at the clearance
+    # orbit coloured by time: near the centre early in the run-up, wider circles later
     orbit = ax[0, 1].scatter(pos[:, 1] * 1e6, pos[:, 2] * 1e6, c=pos[:, 0], s=3, cmap="viridis")
     ax[0, 1].plot(pos[:, 1] * 1e6, pos[:, 2] * 1e6, lw=0.3, color="0.6", zorder=0)
     fig.colorbar(orbit, ax=ax[0, 1], label="t [s]")
@@ -137,10 +157,41 @@ def main(argv=None):
                 trim=True)
     s = {k: r.summary() for k, r in runs.items()}
     print(f"{args.t_end} s simulated in {wall:.1f} s wall; final speed {w[-1, 3]:.0f} rad/s")
+    for line in phase_table(pos, w, runs, args.omega):
+        print(line)
     for k in runs:
-        print(f"bearing {k}: q_max_outer {s[k]['q_max_outer']:.1f} N, cage {s[k]['cage_speed']:.1f} rad/s, "
-              f"Lambda_out(psi=0) {s[k]['lambda_outer_psi0']}")
+        print(f"bearing {k} (last quarter): q_max_outer {s[k]['q_max_outer']:.1f} N, cage {s[k]['cage_speed']:.1f} "
+              f"rad/s, Lambda_out(psi=0) {s[k]['lambda_outer_psi0']:.2f}")
     print("figure:", out / "rotor.png")
+
+
+def phase_table(pos, w, runs, omega_target):
+    """Lines of a table over the run-up and the run at speed: orbit radius of
+    the shaft centre (mean and largest) and the largest outer ball load of
+    each bearing (mean over the samples of the per-sample largest, and the
+    largest) in windows of the run."""
+    t = pos[:, 0]
+    radius = 1e6 * np.hypot(pos[:, 1], pos[:, 2])
+    reached = w[:, 3] >= 0.99 * omega_target
+    at_speed = t[np.argmax(reached)] if reached.any() else t[-1]
+    edges = [0.0, 0.25 * at_speed, 0.5 * at_speed, at_speed]
+    if at_speed < t[-1]:
+        edges += [0.5 * (at_speed + t[-1]), t[-1]]
+    edges[-1] += 1e-12
+    lines = [f"run-up to {omega_target:.0f} rad/s " + (f"ends at {1e3 * at_speed:.0f} ms" if reached.any() else
+                                                          "not finished") +
+             "; orbit radius [um] and largest outer ball load [N], mean / largest per window:",
+             "  window [ms]   orbit radius   " + "   ".join(f"bearing {k} q_outer" for k in runs)]
+    for a, b in zip(edges[:-1], edges[1:]):
+        m = (t >= a) & (t < b)
+        if not m.any() or not all(((r.t >= a) & (r.t < b)).any() for r in runs.values()):
+            continue
+        row = f"  {1e3 * a:4.0f}-{1e3 * b:4.0f}    {radius[m].mean():5.1f} / {radius[m].max():5.1f}  "
+        for r in runs.values():
+            q = r.contact("load", "outer").max(axis=1)[(r.t >= a) & (r.t < b)]
+            row += f"   {q.mean():6.0f} / {q.max():6.0f}   "
+        lines.append(row.rstrip())
+    return lines
 
 
 if __name__ == "__main__":

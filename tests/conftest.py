@@ -1,6 +1,51 @@
+import os
+import subprocess
+from pathlib import Path
+
 import pytest
 
 from exudyn_bearing import catalog
+
+ROOT = Path(__file__).resolve().parents[1]
+#: Paths a test run may touch in the working tree: Python and numba caches
+#: (numba writes its compiled kernels beside the sources), pytest's cache,
+#: the editable install's metadata and the virtual environment.
+_CACHE_PARTS = ("__pycache__", ".pytest_cache", ".venv", ".egg-info")
+
+
+def working_tree_changes(root=ROOT):
+    """Set of (``git status --porcelain`` line, mtime) of the changed,
+    untracked and ignored files (one by one) outside the caches; None outside
+    a git work tree."""
+    try:
+        out = subprocess.run(["git", "-C", str(root), "status", "--porcelain=v1", "--untracked-files=all",
+                              "--ignored=traditional", "-z"], capture_output=True, text=True, timeout=60)
+    except (OSError, subprocess.SubprocessError):
+        return None
+    if out.returncode != 0:
+        return None
+    entries = [e for e in out.stdout.split("\0") if e and not any(part in e for part in _CACHE_PARTS)]
+
+    def mtime(entry):
+        try:
+            return (root / entry[3:]).stat().st_mtime_ns
+        except OSError:
+            return None
+    return {(e, mtime(e)) for e in entries}
+
+
+@pytest.fixture(scope="session", autouse=True)
+def no_writes_into_the_working_tree():
+    """Fail the session when a test wrote into the working tree (outputs
+    belong in ``tmp_path``; Exudyn's default SimulationSettings, for one,
+    write solution/coordinatesSolution.txt)."""
+    before = working_tree_changes()
+    yield
+    if before is None or os.environ.get("EXUDYN_BEARING_ALLOW_TREE_WRITES"):
+        return
+    after = working_tree_changes()
+    new = sorted({e for e, _ in (after or set()) - before})
+    assert not new, f"the tests wrote into the working tree {ROOT}: {new}"
 
 
 @pytest.fixture

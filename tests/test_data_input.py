@@ -79,7 +79,9 @@ def test_catalogue_shaped_files_are_accepted(tmp_path):
     g.write_text(json.dumps(one))
     b = load_bearing(str(g))
     assert b.name == "hybrid" and b.material.youngs_modulus == 310e9 and b.material.name == "ceramic"
-    assert load_lubricant(f"{f}").name == "guessasma2018"  # the catalogue's only lubricant
+    assert load_lubricant(f"{f}#guessasma2018") == eb.lubricants["guessasma2018"]
+    with pytest.raises(InputError, match=r"^lubricant: .* entries under 'lubricants' \(guessasma2018, "):
+        load_lubricant(str(f))
 
 
 def test_single_bearing_file_round_trips(tmp_path):

@@ -6,9 +6,8 @@ import numpy as np
 import pytest
 
 exu = pytest.importorskip("exudyn")
-from exudyn.itemInterface import (LoadForceVector, MarkerBodyRigid, MarkerNodeCoordinate,  # noqa: E402
-                                  MarkerNodePosition, NodePoint, NodeRigidBodyRotVecLG, NodeRigidBodyRxyz,
-                                  ObjectGround, ObjectMassPoint, ObjectRigidBody)
+from exudyn.itemInterface import (LoadForceVector, MarkerBodyRigid, MarkerNodeCoordinate, NodePoint,  # noqa: E402
+                                  NodeRigidBodyRotVecLG, NodeRigidBodyRxyz, ObjectGround, ObjectRigidBody)
 
 import exudyn_bearing as eb  # noqa: E402
 from exudyn_bearing import InputError  # noqa: E402
@@ -16,6 +15,7 @@ from exudyn_bearing import CreateBallBearing  # noqa: E402
 from exudyn_bearing.solvers.element.engine import solve_dynamic  # noqa: E402
 from exudyn_bearing.solvers.reference import ReferenceEngine  # noqa: E402
 from exudyn_bearing.model.initial_state import ring_mass_estimate  # noqa: E402
+from exudyn_bearing.model.stability import SimulationError  # noqa: E402
 
 SCENE = dict(Fr=3000.0, omega=500.0, t_end=0.02, dt=5e-6, sample_dt=1e-4)
 KEYS = ("q_max_inner", "q_max_outer", "cage_speed", "ball_spin", "lambda_outer_psi0")
@@ -32,7 +32,7 @@ def test_cross_engine_summary_within_one_percent(both_engines):
     s_ref, s_exd = ref.summary(), exd.summary()
     assert set(s_ref) == set(s_exd)  # same keys from both engines
     for k in KEYS:
-        # issue: within 1 %; the engines share the contact kernel, so they agree far closer
+        # required: within 1 %; the engines share the contact kernel, so they agree far closer
         assert s_exd[k] == pytest.approx(s_ref[k], rel=1e-3), k
 
 
@@ -162,8 +162,21 @@ def test_step_above_the_stable_estimate_warns_and_stops_cleanly():
     mbs.Assemble()
     with pytest.warns(UserWarning, match="stepSize"):
         ss = el.SimulationSettings(0.01)
-    with pytest.raises(Exception, match="stepSize"):
+    # Exudyn wraps a user function's exception in its ModelError (a ValueError); solve_dynamic
+    # hands on the element's SimulationError
+    with pytest.raises(SimulationError, match="^stepSize"):
         solve_dynamic(mbs, ss)
+
+
+def test_exudyn_engine_blow_up_exits_with_the_simulation_error_code(capsys):
+    from exudyn_bearing.cli import main
+    from exudyn_bearing.model.stability import StepSizeWarning
+
+    with pytest.warns(StepSizeWarning):
+        rc = main(["simulate", "--engine", "exudyn", "--t-end", "0.005", "--dt", "5e-5"])
+    assert rc == 3
+    err = capsys.readouterr().err.strip()
+    assert err.startswith("exudyn-bearing: error: dt: the bearing state became non-finite") and "\n" not in err
 
 
 def test_rk44_with_regularized_friction_matches_verlet():
@@ -213,6 +226,7 @@ def test_exudyn_velocity_verlet_passes_the_half_step_velocity():
     ss.timeIntegration.numberOfSteps, ss.timeIntegration.endTime = 3, 3 * h
     ss.timeIntegration.verboseMode = 0
     ss.timeIntegration.explicit.computeEndOfStepAccelerations = False
+    ss.solution.file.write = False  # the default writes solution/coordinatesSolution.txt into the working directory
     solve_dynamic(mbs, ss, exu.DynamicSolverType.VelocityVerlet)
     (_, x0, _), (_, x1, v1), (_, x2, v2) = seen[-3:]
     assert v1 == pytest.approx((x1 - x0) / h, rel=1e-12) and v2 == pytest.approx((x2 - x1) / h, rel=1e-12)
@@ -305,7 +319,8 @@ def test_ring_stable_step_of_a_rotor_adds_its_bearings():
 
 
 def test_fast_mode_time_must_advance():
-    # the fast mode integrates the balls forward; an evaluation back in time is refused
+    # the fast mode integrates the balls forward; an evaluation back in time, other than
+    # to the run's start (a new run), is refused
     from exudyn_bearing.solvers.element.engine import ExudynEngine
 
     eng = ExudynEngine("6208", eb.Scenario(t_end=0.001, dt=5e-6), mode="fast")
@@ -316,8 +331,103 @@ def test_fast_mode_time_must_advance():
 
     with pytest.warns(StepSizeWarning, match="^subSteps"):  # a 100 us step for the 81 g ring, checked at run time
         el._force_uf_fast(eng.mbs, 2e-4, 0, q, q)
-    with pytest.raises(RuntimeError, match="^mode"):
-        el._force_uf_fast(eng.mbs, 1e-4, 0, q, q)
+    el._force_uf_fast(eng.mbs, 3e-4, 0, q, q)
+    with pytest.raises(InputError, match="^mode: an evaluation at t = 0.00015 s after one at 0.0003 s"):
+        el._force_uf_fast(eng.mbs, 1.5e-4, 0, q, q)
+
+
+def _two_runs(mode, continuation):
+    """The rotor scene's bearing (3000 N, 500 rad/s) solved twice: both runs 0 -> 4 ms
+    (a restart), or 0 -> 2 ms and then on from the end state to 4 ms (a continuation);
+    returns (records, stored cageSpeed/qMaxInner sensor data) after each run."""
+    SC, mbs, m_in, m_out, b = _rotor_scene()
+    el = CreateBallBearing(mbs, b, m_in, m_out, initialOmega=500.0, initialLoad=(3000.0, 0.0), stepSize=5e-6,
+                           tangential="implicit", sampleInterval=5e-4, mode=mode)
+    mbs.Assemble()
+    out = []
+    t1 = 0.002 if continuation else 0.004
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", eb.StepSizeWarning)  # the cage contacts' estimate; loads are the point here
+        for k in range(2):
+            ss = el.SimulationSettings(t1)
+            if k and continuation:
+                mbs.systemData.SetSystemState(mbs.systemData.GetSystemState(exu.ConfigurationType.Current),
+                                              exu.ConfigurationType.Initial)
+                ss.timeIntegration.startTime, ss.timeIntegration.endTime = t1, 2 * t1
+            solve_dynamic(mbs, ss)
+            out.append((el.record(), {k: mbs.GetSensorStoredData(el.sensors[k]) for k in ("qMaxInner", "cageSpeed")}))
+    return out
+
+
+@pytest.mark.parametrize("mode", ["bodies", "fast"])
+def test_a_second_solve_from_the_start_repeats_the_first(mode):
+    # Exudyn restarts a second SolveDynamic at t = 0 from the initial state: the element
+    # restarts with it (samples, contact history, the fast mode's balls), so the second run
+    # repeats the first, samples, sensors and step count alike (before: no new samples,
+    # steps doubled, the tangential history frozen)
+    (r1, s1), (r2, s2) = _two_runs(mode, continuation=False)
+    np.testing.assert_array_equal(r2.data["t"], r1.data["t"])
+    assert len(r1.data["t"]) == 8 and r2.steps == r1.steps == (800 if mode == "fast" else 801)
+    for key in ("diag", "xb", "vb", "wb"):
+        np.testing.assert_array_equal(r2.data[key], r1.data[key], err_msg=key)
+    for key in s1:
+        np.testing.assert_array_equal(s2[key], s1[key], err_msg=key)
+
+
+@pytest.mark.parametrize("mode", ["bodies", "fast"])
+def test_a_second_solve_from_the_end_state_continues_the_first(mode):
+    # the second run starts where the first ended, from its end state: the element's samples
+    # append and its contact history and (fast mode) balls carry on; the loads follow one
+    # uninterrupted 4 ms run (Exudyn restarts its velocity-Verlet step from the stored state)
+    (r1, _), (r2, _) = _two_runs(mode, continuation=True)
+    (whole, _), _ = _two_runs(mode, continuation=False)
+    assert len(r1.data["t"]) == 4
+    np.testing.assert_allclose(r2.data["t"], whole.data["t"], rtol=0, atol=1e-12)
+    assert r2.steps == (800 if mode == "fast" else 802)
+    np.testing.assert_allclose(r2.data["diag"][..., 0], whole.data["diag"][..., 0], rtol=0, atol=0.1)  # N
+
+
+def test_fast_mode_refuses_implicit_solvers():
+    SC, mbs, m_in, m_out, b = _rotor_scene()
+    el = CreateBallBearing(mbs, b, m_in, m_out, initialOmega=500.0, initialLoad=(3000.0, 0.0), stepSize=5e-6,
+                           mode="fast")
+    mbs.Assemble()
+    with pytest.raises(InputError, match="^mode: .* not GeneralizedAlpha"):
+        el.SimulationSettings(0.001, solverType="GeneralizedAlpha")
+    with pytest.raises(InputError, match="^solverType"):
+        el.SimulationSettings(0.001, solverType="Leapfrog")
+    # settings made otherwise: refused at the solve's first evaluation
+    ss = el.SimulationSettings(0.001)
+    with pytest.raises(InputError, match="^mode: .* not TrapezoidalIndex2"):
+        solve_dynamic(mbs, ss, exu.DynamicSolverType.TrapezoidalIndex2)
+
+
+def test_element_options_are_checked_by_their_names():
+    SC, mbs, m_in, m_out, b = _rotor_scene()
+    for kw, word in [(dict(stepSize=-1e-6), "stepSize"), (dict(stepSize=0.0), "stepSize"),
+                     (dict(stepSize=1e-3), "stepSize"), (dict(sampleInterval=0.0), "sampleInterval"),
+                     (dict(initialLoad=(3000.0, 0.0, 1.0)), "initialLoad"), (dict(initialLoad="3 kN"), "initialLoad"),
+                     (dict(initialLoad=-5.0), "initialLoad"), (dict(muDry=-0.1), "muDry"),
+                     (dict(initialOmega=float("nan")), "initialOmega"), (dict(hertzModel="x"), "hertzModel")]:
+        with pytest.raises(InputError, match=f"^{word}:"):
+            CreateBallBearing(mbs, b, m_in, m_out, **kw)
+    # a number is the radial load
+    a = CreateBallBearing(mbs, b, m_in, m_out, initialLoad=3000)
+    c = CreateBallBearing(mbs, b, m_in, m_out, initialLoad=(3000.0, 0.0))
+    assert (a.scenario.Fr, a.scenario.Fa) == (3000.0, 0.0)
+    np.testing.assert_array_equal(a.initialRingDisplacement, c.initialRingDisplacement)
+
+
+def test_both_rings_need_their_own_markers_and_nodes():
+    SC, mbs, m_in, m_out, b = _rotor_scene()
+    with pytest.raises(InputError, match="^markerOuterRing: marker .* is also markerInnerRing"):
+        CreateBallBearing(mbs, b, m_in, m_in)
+    body = mbs.GetMarker(m_in)["bodyNumber"]
+    m_same_body = mbs.AddMarker(MarkerBodyRigid(bodyNumber=body, localPosition=[0.0, 0.0, 0.0]))
+    with pytest.raises(InputError, match="^markerOuterRing: on node"):
+        CreateBallBearing(mbs, b, m_in, m_same_body)
+    with pytest.raises(InputError, match="^markerOuterRing"):
+        CreateBallBearing(mbs, b, m_out, m_out)
 
 
 def test_graphics_for_the_renderer():

@@ -4,7 +4,7 @@ import math
 import numpy as np
 import pytest
 
-from exudyn_bearing import InputError, catalog
+from exudyn_bearing import InputError
 from exudyn_bearing.solvers.analytic import static_analysis
 from exudyn_bearing.physics import load_distribution as ld
 

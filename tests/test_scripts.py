@@ -39,8 +39,19 @@ def test_papers_scenario_script(tmp_path, capsys):
 
 def test_rotor_scenario_script(tmp_path, capsys):
     mod = _load(ROOT / "scenarios" / "rotor_two_6208.py")
-    mod.main(["--t-end", "0.004", "--out", str(tmp_path)])
+    # a short run to 30 rad/s (the speed limiter takes the last 1 % in about 25 ms)
+    mod.main(["--t-end", "0.04", "--omega", "30", "--out", str(tmp_path)])
     assert (tmp_path / "rotor.png").stat().st_size > 0 and (tmp_path / "bearing_A.npz").exists()
+    # the table its docstring quotes: windows of orbit radius and outer ball loads
+    out = capsys.readouterr().out.splitlines()
+    head = next(i for i, line in enumerate(out) if line.strip().startswith("window [ms]"))
+    assert "run-up to 30 rad/s ends at" in out[head - 1]
+    assert "bearing A q_outer" in out[head] and "bearing B q_outer" in out[head]
+    rows = [line for line in out[head + 1:] if line.startswith("  ") and line.count("/") == 3]
+    assert len(rows) == 5
+    # the catalogue 6208 has no clearance: the docstring must not promise a whirl "at the full clearance"
+    assert "window [ms]" in mod.__doc__ and "no diametral clearance" in mod.__doc__
+    assert "full clearance" not in mod.__doc__
 
 
 def test_7208_scenario_script(tmp_path, capsys):

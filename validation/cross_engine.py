@@ -11,10 +11,9 @@ import argparse
 import json
 from pathlib import Path
 
-import numpy as np
 
 import exudyn_bearing as eb
-from exudyn_bearing.outputs.plotting import _pyplot, save_figure
+from exudyn_bearing.outputs.plotting import pyplot, save_figure
 
 SCENES = {
     "500rad_s": dict(Fr=3000.0, omega=500.0),
@@ -33,7 +32,7 @@ def main(argv=None):
     args = ap.parse_args(argv)
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
-    plt = _pyplot()
+    plt = pyplot()
     report = {}
     for name, kw in SCENES.items():
         sc = eb.Scenario(t_end=args.t_end, dt=args.dt, sample_dt=2e-4, **kw)

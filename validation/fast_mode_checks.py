@@ -8,10 +8,10 @@
    mean cage speed of bearing A over 10-20 ms (sampled every 20 us) and at
    20 ms, in the body mode at three steps and in the fast mode for 1, 2
    and 4 sub-steps of 5 us and 2 and 4 of 4 us. The body mode's own spread
-   over its step sizes is the yardstick: at 24.5 N the rotor rattles in the
-   clearance and the run-up is chaotic.
+   over its step sizes is the yardstick: at 24.5 N the rotor rattles near the
+   centre and the run-up is chaotic.
 3. The run-up of scenarios/rotor_two_6208.py (gravity, unbalance, no load)
-   over 50 ms: whether the shaft whirls at the full clearance (orbit radius
+   over 50 ms: whether the shaft whirls (orbit radius
    and largest outer ball load over 40-50 ms) in the body mode at four steps
    and in the fast mode with 1-4 sub-steps of 5 us.
 4. Explicit solvers on the 6208 test scene (10 ms, 2 us steps): body mode

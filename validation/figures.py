@@ -36,7 +36,7 @@ from exudyn_bearing.outputs import plotting
 from exudyn_bearing.outputs.jsonio import to_jsonable
 from exudyn_bearing.physics import kinematics
 from exudyn_bearing.physics.load_distribution import static_equilibrium, stribeck_load
-from exudyn_bearing.outputs.plotting import _pyplot, label_azimuth_axes, save_csv, save_figure
+from exudyn_bearing.outputs.plotting import label_azimuth_axes, pyplot, save_csv, save_figure
 from exudyn_bearing.sweep import run_sweep
 
 DT = 5e-6
@@ -61,7 +61,7 @@ def item1(out, workers):
                 bearing="6208", engine=engine,
                 scenario=dict(Fr=fr, Pd=pd, omega=1.0, t_end=0.004, sample_dt=2e-4, **COMMON))
     res = run_sweep(cases, out / "sweep_item1", workers=workers)
-    plt = _pyplot()
+    plt = pyplot()
     metrics = {}
     b = eb.catalog["6208"]
     for gname, group in groups.items():
@@ -105,7 +105,7 @@ def item2(out, workers):
     plotting.plot_speeds(runs["reference"], out / "item2_speeds_reference.png")
     plotting.plot_speeds(runs["exudyn"], out / "item2_speeds_exudyn.png")
     # both engines overlaid: shaft, mean ball spin and cage speed
-    plt = _pyplot()
+    plt = pyplot()
     fig, ax = plt.subplots(figsize=(7, 4.2))
     cols = {}
     for e, ls in (("reference", "-"), ("exudyn", "--")):
@@ -139,7 +139,7 @@ def item2(out, workers):
 
 
 def _azimuth_plot(res, names, labels, field, title, png, ylabel):
-    plt = _pyplot()
+    plt = pyplot()
     fig, ax = plt.subplots(figsize=(7, 4.2))
     cols = {}
     for i, (n, lab) in enumerate(zip(names, labels)):
@@ -172,7 +172,7 @@ def item3(out, workers):
     s_lam, se_lam = slope_se(q, lam)
     s_fr, se_fr = slope_se(q, frs)
     save_csv(out / "item3_fits.csv", {"Fr_N": frs, "q_max_outer_N": q, "lambda_outer_psi0": lam})
-    plt = _pyplot()
+    plt = pyplot()
     fig, ax = plt.subplots(1, 2, figsize=(11, 4.2))
     ax[0].loglog(q, lam, "o-")
     ax[0].set_xlabel("Q_max outer [N]")
@@ -209,7 +209,7 @@ def item4(out, workers):
         eps.append(float(static_equilibrium(eb.catalog["6208"].with_clearance(pd), 3000.0).eps))
     save_csv(out / "item4_zone.csv", {"Pd_m": pds, "loaded_zone_half_angle_deg": zone, "q_max_inner_N": qmax,
                                       "eps_analytic": eps})
-    plt = _pyplot()
+    plt = pyplot()
     fig, ax = plt.subplots(1, 3, figsize=(13, 4))
     ax[0].plot(pds * 1e6, zone, "o-")
     ax[0].set_ylabel("loaded-zone half angle [deg]")
@@ -237,7 +237,7 @@ def item5(out, workers):
             Fr=3000.0, omega=float(w), t_end=0.02, sample_dt=1e-4, **COMMON))
     res = run_sweep(cases, out / "sweep_item5", workers=workers)
     metrics = {}
-    plt = _pyplot()
+    plt = pyplot()
     fig, ax = plt.subplots(1, 2, figsize=(11, 4.2))
     cols = {"omega": omegas}
     for film, color in (("hd", "C0"), ("mk", "C1"), ("exudyn", "C2")):
@@ -296,7 +296,7 @@ def item6(out, workers):
         cases[f"b7208_B{bval:.2f}"] = dict(bearing=d, scenario=dict(Fr=3000.0, Fa=3000.0, omega=500.0, t_end=0.02,
                                                                    sample_dt=1e-4, dt=0.5e-6))
     res = run_sweep(cases, out / "sweep_item6", workers=workers)
-    plt = _pyplot()
+    plt = pyplot()
     fig, ax = plt.subplots(1, 2, figsize=(11, 4.2))
     metrics, cols = {}, {}
     for i, bval in enumerate(bs):
@@ -309,7 +309,6 @@ def item6(out, workers):
         law = stribeck_load(psi, st.q_max, st.eps)
         q = a["load_inner"][-1]
         d = a["overlap_inner"][-1] + a["overlap_outer"][-1]
-        loaded = law > 0.1 * st.q_max
         grid = np.linspace(-math.pi, math.pi, 361)
         ax[0].plot(np.degrees(grid), stribeck_load(grid, st.q_max, st.eps), "-", color=f"C{i}",
                    label=f"analytic B = {bval:.2f}, eps = {st.eps:.3f}")
@@ -321,7 +320,8 @@ def item6(out, workers):
         metrics[f"B={bval:.2f}"] = dict(max_err_Q_over_qmax=float(np.max(np.abs(q - law)) / st.q_max),
                                         q_max=float(q.max()), q_max_analytic=st.q_max, eps_analytic=st.eps,
                                         cage_speed=s["cage_speed"], kinematic_cage_at_alpha=wc,
-                                        contact_angle_deg=math.degrees(alpha), wall_s=rec["wall_case_s"], dt=2e-6,
+                                        contact_angle_deg=math.degrees(alpha), wall_s=rec["wall_case_s"],
+                                        dt=rec["spec"]["scenario"]["dt"],
                                         engine="reference")
         cols.update({f"psi_{i}": psi, f"q_{i}": q, f"q_law_{i}": law, f"delta_{i}": d})
     label_azimuth_axes(ax, ("ball load Q [N]", "total overlap [um]"), 6, ax[:1])
@@ -365,7 +365,7 @@ def item7(out, workers):
             "BPFO (spectrum)": (bpfo_spectrum, ref["bpfo"], "peak of the ring-force spectrum"),
             "BPFI": (bpfi, ref["bpfi"], "balls passing a point of the inner ring"),
             "BSF": (bsf, ref["bsf"], "ball spin relative to the cage")}
-    plt = _pyplot()
+    plt = pyplot()
     fig, ax = plt.subplots(figsize=(7, 4.2))
     ax.semilogy(freqs, spec + 1e-12)
     ax.axvline(ref["bpfo"], color="k", ls=":", label=f"kinematic BPFO {ref['bpfo']:.2f} Hz")

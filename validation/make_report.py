@@ -7,6 +7,10 @@
 Each section names the command that produced it, the engine, the step and the
 wall time. The machines are shared and noisy: wall times are medians where a
 script repeats runs, and ratios matter more than absolute values.
+
+The figures the report shows are copied from validation/out into
+validation/report_figures (tracked; 64-colour PNGs, a few tens of kB each)
+and embedded with a sentence each; figures no longer shown are removed.
 """
 from __future__ import annotations
 
@@ -20,6 +24,11 @@ from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
 OUT = HERE / "out"
+#: Tracked copies of the figures the report shows (REPORT.md links them relatively).
+FIGURES = HERE / "report_figures"
+#: Largest size of a published figure [bytes].
+MAX_FIGURE_BYTES = 150_000
+_published = []
 SCRIPTS = [
     ("bench_reference.py", []),
     ("bench_element.py", ["--ga"]),
@@ -32,6 +41,9 @@ SCRIPTS = [
     ("cage_step_checks.py", []),
     ("bench_overhead.py", []),
     ("round_off_sensitivity.py", []),
+    ("three_dof.py", []),
+    ("quasistatic_acbb120.py", []),
+    ("bench_quasistatic.py", []),
 ]
 
 
@@ -41,6 +53,34 @@ def load(name):
 
 def pct(x, digits=3):
     return "n/a" if x is None else f"{100 * x:.{digits}f} %"
+
+
+def figure(src, sentence):
+    """Markdown lines showing ``OUT / src`` (copied into FIGURES as a 64-colour
+    PNG) with ``sentence`` below it; none if the script did not write it."""
+    path = OUT / src
+    if not path.exists():
+        print(f"figure {src} missing: not in the report")
+        return []
+    from PIL import Image
+
+    FIGURES.mkdir(exist_ok=True)
+    target = FIGURES / path.name
+    with Image.open(path) as im:
+        small = im.convert("RGB").quantize(colors=64, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.NONE)
+        small.save(target, optimize=True)
+    if target.stat().st_size > MAX_FIGURE_BYTES:
+        raise SystemExit(f"{target}: {target.stat().st_size} bytes, above {MAX_FIGURE_BYTES}: lower the figure's dpi")
+    _published.append(target.name)
+    return [f"![{path.stem}]({FIGURES.name}/{target.name})", "", f"*{path.name}*: {sentence}", ""]
+
+
+def remove_unpublished():
+    """Delete figures of FIGURES that this report no longer shows."""
+    if FIGURES.exists():
+        for f in FIGURES.glob("*.png"):
+            if f.name not in _published:
+                f.unlink()
 
 
 def run_all(skip=()):
@@ -72,7 +112,7 @@ def section_reference():
     ok = [f"{n} ({r['wall_per_sim_s']:.2f} s)" for n, r in d["settings"].items()
           if r["wall_per_sim_s"] <= 0.5 and max(r["err_q_max_inner"], r["err_q_max_outer"], r["err_cage_speed"]) <= 5e-3
           and r["summary"]["friction_power"] < 1.0]
-    lines += ["", "- Issue target (at most 0.5 s per simulated second, errors of q_max and cage_speed <= 0.5 %, "
+    lines += ["", "- Requirement (at most 0.5 s per simulated second, errors of q_max and cage_speed <= 0.5 %, "
               "tangential springs resolved): met in this run by " + ("; ".join(ok) if ok else "no setting") + "."]
     lines += [
               f"- Stable step: estimate {est['explicit'] * 1e6:.2f} us (explicit spring) and "
@@ -146,12 +186,13 @@ def section_element():
                           for load, r in rotor.items())
               + ". Loaded (600 and 3000 N), every mode and step lies within "
               f"{pct(max(spread(r) for k, r in rotor.items() if k != '24.5'), 1)} of each other. At 24.5 N the "
-              "rotor rattles in the clearance and the run-up is chaotic: the body mode alone spreads "
+              "rotor rattles near the centre and the run-up is chaotic: the body mode alone spreads "
               f"{pct(spread({k: v for k, v in rotor['24.5'].items() if k.startswith('bodies')}), 0)} over its "
               "step sizes, and the fast-mode runs fall in the same band. With one sub-step the fast mode costs "
               f"{d['ratio_fast1_body']:.2f} of the body mode (bench_element.py).",
               "- The run-up of scenarios/rotor_two_6208.py (no load but gravity and unbalance) has two outcomes, "
-              "a shaft rattling near the centre or a whirl at the full clearance from about 25 ms on; which one "
+              "a shaft rattling near the centre or a whirl (the 6208 has no clearance: the orbit is the contacts' "
+              "compliance) from about 25 ms on; which one "
               "occurs is decided by round-off-level differences, not by the mode (same script, mean over 40-50 "
               "ms, orbit radius / largest outer ball load): " + "; ".join(
                   f"{k} {v['orbit_radius_um']:.1f} um / {v['q_max_outer_N']:.0f} N" for k, v in whirl.items()) + ".",
@@ -215,13 +256,19 @@ def section_cross():
     d = load("cross_engine.json")
     lines = ["## Cross-engine check", "",
              "Command: `python validation/cross_engine.py` (T = 0.05 s, dt = 5 us, both engines on each scene; "
-             "figures `out/cross_engine_<scene>.png`). Largest relative difference of q_max_inner, q_max_outer, "
+             "figures `out/cross_engine_<scene>.png`, two of them below). Largest relative difference of "
+             "q_max_inner, q_max_outer, "
              "cage_speed, ball_spin and lambda_outer_psi0:", "", "| scene | largest relative difference |",
              "|---|---|"]
     for scene, rows in d.items():
         lines.append(f"| {scene} | {max(r['rel_diff'] for r in rows.values()):.1e} |")
     lines += ["", "The engines share the contact kernel; the remaining differences come from Exudyn's "
               "VelocityVerlet and the element's ring coupling.", ""]
+    lines += figure("cross_engine_500rad_s.png", "Outer ball loads of the last samples against azimuth, reference "
+                    "core (blue) and Exudyn element (orange), 6208 at 3000 N and 500 rad/s: the points of the two "
+                    "engines lie on each other.")
+    lines += figure("cross_engine_1700rad_s.png", "The same at 1700 rad/s, where the balls outside the loaded zone "
+                    "press on the outer race with their centrifugal force (the flat part of the curve).")
     return lines
 
 
@@ -248,12 +295,12 @@ def section_peer():
 def section_figures():
     d = load("figures/figures.json")
     lines = ["## The papers' figures (PHYSICS.md sec. 8)", "",
-             "Command: `python validation/figures.py` (figures and their CSV in `out/figures/`; sweeps through "
-             "the sweep runner). Step 5 us, implicit tangential spring, unless said.", ""]
+             "Command: `python validation/figures.py` (figures and their CSV in `out/figures/`, shown below; "
+             "sweeps through the sweep runner). Step 5 us, implicit tangential spring, unless said.", ""]
     if "item1" in d:
         lines += ["### 1. Quasi-static loads (omega = 1 rad/s)", "",
                   "Largest relative error of Q and delta at the loaded balls (Q > 5 % Q_max) against the discrete "
-                  "analytic solution at the same ball phase (issue target 2 %):", "",
+                  "analytic solution at the same ball phase (required: within 2 %):", "",
                   "| case | engine | err Q | err delta | Q_max | analytic Q_max | analytic eps | wall s |",
                   "|---|---|---|---|---|---|---|---|"]
         for k, v in d["item1"].items():
@@ -262,6 +309,11 @@ def section_figures():
                              f"{pct(v['max_rel_err_delta'], 2)} | {v['q_max']:.1f} | {v['q_max_analytic']:.1f} | "
                              f"{v['eps_analytic']:.3f} | {v['wall_s']:.2f} |")
         lines.append("")
+        lines += figure("figures/item1_quasi_static_load.png", "Quasi-static ball loads (left) and total overlaps "
+                        "(right) against azimuth at F_r = 1000, 2000 and 3000 N: lines the discrete analytic "
+                        "solution, circles the reference core, crosses the Exudyn element.")
+        lines += figure("figures/item1_quasi_static_clearance.png", "The same at 3000 N for the clearances P_d = "
+                        "-12.6, 0 and +12.6 um: preload widens the loaded zone, clearance narrows it.")
     if "item2" in d:
         lines += ["### 2. 500 rad/s protocol (start-up 0.05 s, steady 0.2 s, slow-down 0.05 s, from rest)", "",
                   "| engine | ball spin | kinematic | cage | kinematic | Lambda_out psi=0 | median SRR ball 0 "
@@ -276,6 +328,15 @@ def section_figures():
                              f"{srr_s} | {v['wall_s']:.2f} |")
         lines += ["", "Steady values over 0.15-0.25 s. The slide-to-roll ratio of ball 0 is near zero in the "
                   "steady phase and not during start-up and slow-down (figure item2_srr_ball0.png).", ""]
+        lines += figure("figures/item2_speeds_both_engines.png", "Shaft, mean ball spin and cage speed through the "
+                        "protocol, reference core solid and Exudyn element dashed, with the kinematic ball spin "
+                        "952.38 rad/s of PHYSICS.md sec. 8.")
+        lines += figure("figures/item2_srr_ball0.png", "Slide-to-roll ratio of ball 0 at its inner and outer "
+                        "contact (log scale): small in the steady phase, orders of magnitude larger in start-up and "
+                        "slow-down.")
+        lines += figure("figures/item2_film_outer_by_phase.png", "h_min (left) and Lambda (right) of the outer "
+                        "contacts against azimuth by phase: in the steady phase both are lowest at psi = 0; the "
+                        "dashed lines are the regime limits Lambda = 1 and 3.")
     if "item3" in d:
         v = d["item3"]
         lines += ["### 3. Load sweep 750 ... 7500 N (six loads, 500 rad/s)", "",
@@ -284,6 +345,10 @@ def section_figures():
                   f"- slope of ln F_r against ln Q_max: **{v['slope_fr_vs_qmax']:.4f} +- {v['se_slope_fr']:.4f}** "
                   "(near 1; the centrifugal force on the outer race pulls it above 1)",
                   f"- engine {v['engine']}, dt {v['dt'] * 1e6:g} us, total wall {v['wall_s']:.2f} s", ""]
+        lines += figure("figures/item3_lambda_outer_vs_psi.png", "Lambda of the outer contacts against azimuth for "
+                        "the six loads: the higher the load, the lower the film parameter in the loaded zone.")
+        lines += figure("figures/item3_fits.png", "The two log-log fits: Lambda_out at psi = 0 (left) and F_r "
+                        "(right) against the outer Q_max, with the slopes above.")
     if "item4" in d:
         v = d["item4"]
         lines += ["### 4. Clearance sweep (3000 N, 500 rad/s)", "",
@@ -294,6 +359,10 @@ def section_figures():
         lines += ["", f"The loaded zone shrinks and Q_max grows from preload to clearance (monotonic: "
                   f"{v['zone_monotonic'] and v['q_max_monotonic']}); reference engine, total wall "
                   f"{v['wall_s']:.2f} s.", ""]
+        lines += figure("figures/item4_zone_qmax_eps.png", "Loaded-zone half angle, Q_max and the analytic eps "
+                        "against P_d (the table above).")
+        lines += figure("figures/item4_lambda_outer_vs_psi.png", "Lambda of the outer contacts against azimuth "
+                        "for the five clearances: the loaded zone, where the film is thinner, narrows with P_d.")
     if "item5" in d:
         v = d["item5"]
         lines += ["### 5. Speed sweep 100 ... 1700 rad/s (step 200, 3000 N)", "",
@@ -320,6 +389,9 @@ def section_figures():
         lines += ["", "The outer Q_max rises with speed (centrifugal load) while the inner stays near the static "
                   "value. At 100 rad/s the 20 ms averaging window is shorter than one ball passage, which biases "
                   "its Q_max upward.", ""]
+        lines += figure("figures/item5_speed_sweep.png", "Lambda at psi = 0 against speed on log-log axes with "
+                        "the fitted slopes (left), and Q_max of the outer and inner contacts against speed (right), "
+                        "for both film models and both engines.")
     if "item6" in d:
         c7 = load("fast_mode_checks.json")["cage_7208"]
         lines += ["### 6. 7208, F_r = F_a = 3000 N, 500 rad/s, three conformity sums (torus cage, dt = 0.5 us)", "",
@@ -336,6 +408,8 @@ def section_figures():
                   "The catalogue's 1 mm cage balls (33 mg) set the step (`python validation/fast_mode_checks.py`): "
                   f"at dt = 0.5 us their largest contact load over 50 ms is {c7['max_cage_load_N_dt0.5us']:.0f} N; "
                   f"at dt = 1 us the engine reports: \"{c7['dt1us']}\"", ""]
+        lines += figure("figures/item6_7208.png", "7208 ball loads (left) against the Stribeck law at each ball's "
+                        "azimuth and total overlaps (right) for the three conformity sums.")
     if "item7" in d:
         v = d["item7"]
         lines += ["### 7. Defect frequencies (500 rad/s, 0.2 s, samples every 20 us)", "",
@@ -347,13 +421,15 @@ def section_figures():
         lines += ["", f"Engine {v['engine']}, dt {v['dt'] * 1e6:g} us, wall {v['wall_s']:.2f} s. The source "
                   "reports >= 99 % agreement; the largest error here is "
                   f"{max(abs(r['error_pct']) for r in v.values() if isinstance(r, dict)):.3f} %.", ""]
+        lines += figure("figures/item7_ring_force_spectrum.png", "Spectrum of the radial ring reaction with the "
+                        "kinematic BPFO dotted: the ball-pass peak and its harmonics.")
     return lines
 
 
 def section_work_precision():
     d = load("work_precision.json")
     lines = ["## Speed against error (work-precision)", "",
-             "Command: `python validation/work_precision.py` (figure `out/work_precision.png`). Every setting "
+             "Command: `python validation/work_precision.py` (figure `out/work_precision.png`, below). Every setting "
              "against the reference core with the full model at dt = 0.5 us (T = 0.1 s).", "",
              "| family | dt [us] | wall s per simulated s | err q_max | err cage | err Q_max(t) (RMS) |",
              "|---|---|---|---|---|---|"]
@@ -370,6 +446,9 @@ def section_work_precision():
               "the Exudyn element (body mode) at 5 us (8 us with the implicit spring). The fitted Hertz levels "
               "change q_max by less than 0.01 % here (the load sharing is set by equilibrium); switching off "
               "lubrication or the cage is a model change, not an accuracy setting.", ""]
+    lines += figure("work_precision.png", "Relative error of q_max_inner (left), cage speed (middle) and the "
+                    "largest-ball-load trajectory (right) against wall seconds per simulated second, one line per "
+                    "engine, integrator and model switch over its steps: lower left is better.")
     return lines
 
 
@@ -379,7 +458,8 @@ def section_sweep():
             f"Command: `python validation/bench_sweep.py`: {d['cases']} cases (T = 0.1 s each) took "
             f"{d['walls']['1']:.2f} s with one worker and {d['walls']['2']:.2f} s with two: speed-up "
             f"**{d['speedup']:.2f}** on the 2-core machine. Cases are written atomically, so an interrupted "
-            "sweep resumes (tests/test_sweep.py); `scheduler=` sends them to a Dask cluster.", ""]
+            "sweep resumes (tests/test_sweep.py); a case whose spec changed runs again, a failing case is "
+            "recorded with its error while the others finish; `scheduler=` sends them to a Dask cluster.", ""]
 
 
 def section_round_off():
@@ -399,6 +479,170 @@ def section_round_off():
               "the largest start-up cage load move by percent to tens of percent under a last-bit perturbation, the "
               "steady-window loads and speeds by about 1e-5.", ""]
     return lines
+
+
+def section_three_dof():
+    d = load("three_dof.json")
+    s = d["source"]
+    ev = lambda z: f"{z[0]:.4g} {'+' if z[1] >= 0 else '-'} {abs(z[1]):.5g}i"  # noqa: E731
+    pair = s["inner_pair"]
+    lines = ["## 3-DOF vibration model (El Had et al. 2014)", "",
+             "Command: `python validation/three_dof.py` (figures `out/three_dof_frf.png`, "
+             "`out/three_dof_time_response.png`, `out/three_dof_modes.png`, each with its CSV). Theory and "
+             "readings: docs/theory/vibration.md.", "",
+             "**Where the source's eigenvalues come from.** It prints V = "
+             + ", ".join(f"{v:g}" for v in s["printed_eigenvalues"]) + " 1/s. Its printed state matrix L has "
+             "eigenvalues " + ", ".join(f"{v:.5g}" for v in s["printed_state_matrix_eigenvalues"])
+             + " (the printed values to their 4-5 digits; its characteristic polynomial starts "
+             f"X^6 {s['printed_polynomial'][1]:+.6g} X^5, the source prints -5,363 X^5). L is "
+             "[[0, I], [+A^-1 C, +A^-1 B]]: both lower blocks carry the wrong sign (M y'' + B y' + C y = 0 gives "
+             "-A^-1 C and -A^-1 B), and A^-1 B holds 413.25 where 43.5 x 9.9 = "
+             f"{s['rebuilt_vs_printed_entries']['A^-1 B [5,5] = 43.5 * 9.9']:.2f}. With +k/M a ring on its spring "
+             "has lambda^2 = +k/M, real roots +-sqrt(k/M), instead of +-i sqrt(k/M): "
+             + "; ".join(f"{k}: sqrt(k/M) = {v['sqrt_k_over_M']:.5g} 1/s ({v['f_hz']:.5g} Hz)"
+                         for k, v in s["sqrt_k_over_M"].items())
+             + f". The inner-ring pair of L, {pair['source_roots'][0]:.6g} and {pair['source_roots'][1]:.6g}, "
+             f"solves r^2 - b r - k/M = 0: product {pair['product']:.5g} against |lambda|^2 = "
+             f"{pair['correct_modulus_squared']:.5g} of the correct root {ev(pair['correct_eigenvalue'])}, sum "
+             f"{pair['sum']:.4g} against -2 Re(lambda) = {pair['correct_minus_twice_real']:.4g} (the source's "
+             "rounded A^-1 and its 413.25 make the difference).", "",
+             "Correct eigenvalues of the printed matrices (scipy.linalg.eig of [[0, I], [-M^-1 K, -M^-1 C]]): "
+             + ", ".join(ev(r["eigenvalue"]) for r in s["correct_printed_matrices"]) + " 1/s.", "",
+             "Each reading of the source's printed values (ball links k21 = 0.9925 N/m, C21 = 9.9072 N s/m, "
+             "masses 25, 2, 23 g):", "",
+             "| reading | eigenvalues [1/s] | f_n [Hz] | zeta |", "|---|---|---|---|"]
+    for name, r in s["readings"].items():
+        lines.append(f"| {name} | " + ", ".join(ev(m["eigenvalue"]) for m in r["modes"]) + " | "
+                     + ", ".join(f"{m['f_n_hz']:.5g}" for m in r["modes"]) + " | "
+                     + ", ".join(f"{m['zeta']:.3g}" for m in r["modes"]) + " |")
+    fv = d["source_film_values"]
+    lines += ["", "Real roots have zeta = 1 and f_n = |lambda| / 2 pi. The readings: inner_ring printed_matrix "
+              "k3 = 1e8 N/m (its numeric matrix), parameter_list 1e7; outer_link printed_matrix: no ball / outer "
+              "race link (its numeric matrices), eq7: k22 = 0.9925 N/m, C22 = 9.9072 N s/m; damping_row "
+              "eq7_literal: the ball row of eq. 7 as printed (C22 on y2' twice, no y1' term).", "",
+              "The source's ball-race values are not dimensional film coefficients. Read as the dimensionless "
+              "values of its eqs. 5-6 with its printed prefactor, 0.9925 needs eps_0 = "
+              + ", ".join(f"{e:.4f}" for e in fv["printed prefactor"]["k 0.9925"]) + " and 9.9072 needs eps_0 = "
+              + ", ".join(f"{e:.4f}" for e in fv["printed prefactor"]["C 9.9072"])
+              + "; with the corrected prefactor 0.9925 is reached at no eccentricity ("
+              + (", ".join(f"{e:.4f}" for e in fv["corrected prefactor"]["k 0.9925"]) or "none")
+              + ") and 9.9072 at " + ", ".join(f"{e:.4f}" for e in fv["corrected prefactor"]["C 9.9072"])
+              + ". No single film gives both.", ""]
+    for key, title in (("contact_model", "contact-model damping"), ("short_bearing", "short-bearing film damping")):
+        v = d["derived"][key]
+        dv = v["derivation"]
+        ci, co = dv["contacts"]["inner"], dv["contacts"]["outer"]
+        lines += [f"**Derived 6004, {title}** (F_r = {dv['radial_load']:g} N, {dv['omega'] * 30 / 3.141592653589793:.0f} "
+                  f"rpm, P_d = {dv['diametral_clearance'] * 1e6:g} um, eta = {dv['viscosity']:g} Pa s): "
+                  f"outer ring {dv['outer_ring']['mass'] * 1e3:.2f} g, oval mode {dv['outer_ring']['f_2_hz']:.0f} Hz, "
+                  f"k1 = {dv['outer_ring']['stiffness']:.4g} N/m; inner ring {dv['inner_ring']['mass'] * 1e3:.2f} g, "
+                  f"{dv['inner_ring']['f_2_hz']:.0f} Hz, k3 = {dv['inner_ring']['stiffness']:.4g} N/m; ball "
+                  f"{dv['ball_mass'] * 1e3:.3f} g, Q = {dv['q_max']:.1f} N; inner / outer contact: Hertz "
+                  f"{ci['k_hertz']:.4g} / {co['k_hertz']:.4g} N/m, h_min {ci['h_min'] * 1e9:.0f} / "
+                  f"{co['h_min'] * 1e9:.0f} nm, eps_0 {ci['eccentricity']:.4f} / {co['eccentricity']:.4f}, film "
+                  f"{ci['k_film']:.3g} / {co['k_film']:.3g} N/m, series link {ci['k_link']:.4g} / "
+                  f"{co['k_link']:.4g} N/m; damping short-bearing {ci['c_film']:.3g} / {co['c_film']:.3g} N s/m, "
+                  f"contact model {ci['c_contact_model']:.3g} / {co['c_contact_model']:.3g} N s/m (Lambda "
+                  f"{ci['film_parameter']:.2f} / {co['film_parameter']:.2f}).", "",
+                  "| eigenvalue [1/s] | f_n [Hz] | zeta | abs(shape) outer, ball, inner |", "|---|---|---|---|"]
+        for m in v["modes"]:
+            lines.append(f"| {ev(m['eigenvalue'])} | {m['f_n_hz']:.6g} | {m['zeta']:.4g} | "
+                         + ", ".join(f"{x:.3g}" for x in m["shape_abs"]) + " |")
+        tr = v["time_response"]
+        lines += ["", f"Ball-pass train at BPFO = {tr['bpfo_hz']:.2f} Hz (half-sine pulses of {tr['amplitude_N']:g} N, "
+                  f"{tr['pulse_duration_s'] * 1e3:.3f} ms, pushing outer ring and ball apart): peak displacements "
+                  + ", ".join(f"{x * 1e9:.1f}" for x in tr["peak_displacement_m"]) + " nm (outer, ball, inner).", ""]
+    ci = d["derived"]["short_bearing"]["derivation"]["contacts"]["inner"]
+    lines += ["The source's short-bearing film damping, normalised with the load, the radial clearance and the "
+              f"shaft speed, is {ci['c_film']:.3g} N s/m at the inner contact, {ci['c_film'] / ci['c_contact_model']:.2g} "
+              f"times the contact model's damping there ({ci['c_contact_model']:.3g} N s/m, hysteretic at Lambda < 1; "
+              f"its squeeze-film term alone is {ci['c_squeeze']:.3g} N s/m): it locks the ball to the rings, leaves "
+              "one oscillating mode (the two rings and the ball moving together on k1 + k3) and turns the rest into "
+              "real roots. The contact-model run keeps three lightly damped modes.", ""]
+    lines += figure("three_dof_frf.png", "Direct receptances of the outer ring, ball and inner ring against "
+                    "frequency: the source's printed matrices (left), the derived 6004 with short-bearing film "
+                    "damping (middle) and with the contact model's damping (right); thin vertical lines at the "
+                    "natural frequencies.")
+    lines += figure("three_dof_time_response.png", "Response of the derived 6004 to the ball-pass force train at "
+                    "BPFO (top: force, bottom: displacements), short-bearing damping (left) and contact-model "
+                    "damping (right).")
+    lines += figure("three_dof_modes.png", "Mode shapes (largest entry 1, signed by the real part) with their "
+                    "eigenvalues or natural frequencies and damping ratios, for the same three models.")
+    return lines
+def section_quasistatic():
+    d = load("quasistatic_acbb120.json")
+    bq = load("bench_quasistatic.json")
+    lines = ["## Quasi-static solver: the ACBB-120 of Gupta (2020)", "",
+             "Command: `python validation/quasistatic_acbb120.py` (solver: `solve_quasistatic`). ACBB-120, "
+             "25,000 rpm, 22,240 N thrust, cageless, M-50, films with the MIL-L-23699 entry at 492 K. Traction: "
+             "`ester_curve_illustrative` (the form of Gupta's traction curve with illustrative parameters, not his "
+             "Fig. 6) and `ehl_mil_l_23699_492K` (this project's EHL parameters). Ball 0 (all balls are equal).", "",
+             "| traction | case | control | alpha_i [deg] | alpha_o [deg] | Q_i [N] | Q_o [N] | omega_m [rad/s] | "
+             "omega_b [rad/s] | beta [deg] | spin/roll i | spin/roll o | P_i [W] | P_o [W] | P total [W] |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    for tr, v in d["tractions"].items():
+        for case in ("rigid_race_control", "race_control", "inner_control", "min_energy", "rigid_min_energy",
+                     "min_energy_492K"):
+            r = v[case]
+            lines.append(f"| {tr} | {case} | {r['control_used']} | {r['alpha_inner_deg']:.2f} | "
+                         f"{r['alpha_outer_deg']:.2f} | {r['q_inner_N']:.0f} | {r['q_outer_N']:.0f} | "
+                         f"{r['orbital_speed_rad_s']:.1f} | {r['ball_speed_rad_s']:.0f} | {r['beta_deg']:.3f} | "
+                         f"{r['spin_roll_inner']:.4f} | {r['spin_roll_outer']:.4f} | {r['dissipation_inner_W']:.0f} | "
+                         f"{r['dissipation_outer_W']:.0f} | {r['dissipation_total_W']:.0f} |")
+    lines.append("")
+    for tr, v in d["tractions"].items():
+        me = v["min_energy"]
+        lines.append(f"- {tr}: minimum energy changes the total dissipation by **{100 * v['min_energy_change']:+.1f} %** "
+                     f"against race control ({v['race_control']['control_used']} race by Jones' criterion; Gupta "
+                     f"reports about -24 % with his traction curve); minimum check: Hessian eigenvalues "
+                     f"{', '.join(f'{x:.3g}' for x in me['minimum_check']['hessian_eigenvalues'])}, neighbours higher "
+                     f"{me['minimum_check']['neighbours_higher']}; pure-rolling points x1/a = "
+                     f"{me['x1_over_a_outer']:.3f} (outer), x2/a = {me['x2_over_a_inner']:.3f} (inner); net rolling-"
+                     f"direction traction on a ball (zero in a cageless steady state) {v['race_control']['traction_drag_N']:.1f} N "
+                     f"under race control, {me['traction_drag_N']:.1f} N under minimum energy; traction coefficient "
+                     f"the outer race must supply for the gyroscopic moment under race control "
+                     f"{v['race_control']['gyro_traction_outer']:.4f}. Plots: "
+                     f"`{Path(v['beta_scan']['plot']).name}`, `{Path(v['plot_slip']).name}`.")
+    cv = d["strip_convergence"]
+    lines.append("- Strip integration (default 32 strips x 4 points): total dissipation with the curve, race control / "
+                 "minimum energy: " + "; ".join(f"{c['n_strips']}x{c['n_across']}: {c['race_control_W']:.1f} / "
+                                                f"{c['min_energy_W']:.1f} W ({100 * c['change']:+.2f} %)" for c in cv)
+                 + ".")
+    rc, rg = d["tractions"]["ester_curve_illustrative"]["rigid_race_control"], \
+        d["tractions"]["ester_curve_illustrative"]["race_control"]
+    c = d["combined"]
+    lines += [f"- Inner-ring growth at 25,000 rpm: {rg['inner_ring_growth_um']:.1f} um (rotating annular disc); "
+              f"contact angles rigid -> growing rings: inner {rc['alpha_inner_deg']:.2f} -> {rg['alpha_inner_deg']:.2f}"
+              f" deg, outer {rc['alpha_outer_deg']:.2f} -> {rg['alpha_outer_deg']:.2f} deg "
+              "(`qs_acbb120_rigid_vs_growing.png`).",
+              f"- Combined case F_r = 3 kN, M_y = 150 N m with the thrust: tilt_y = {c['displacement'][4] * 1e3:.3f} "
+              f"mrad, inner loads {min(c['q_inner_N']):.0f} to {max(c['q_inner_N']):.0f} N, inner contact angles "
+              f"{min(c['alpha_inner_deg']):.1f} to {max(c['alpha_inner_deg']):.1f} deg (`qs_acbb120_combined.png`).",
+              ""]
+    for tr, v in d["tractions"].items():
+        lines += figure(Path(v["beta_scan"]["plot"]).name, f"Dissipation of one ball against the spin-axis angle "
+                        f"beta with traction {tr}: the least dissipation at each fixed beta, the race-control "
+                        "solution and the minimum-energy solution.")
+        lines += figure(Path(v["plot_slip"]).name, f"Slip of ball 0 against its race along the major axis of the "
+                        f"outer (left) and inner (right) contact ellipse, race control and minimum energy, traction "
+                        f"{tr}.")
+    lines += figure("qs_acbb120_rigid_vs_growing.png", "Contact loads (left) and contact angles (right) of all balls "
+                    "against azimuth with rigid and with growing rings.")
+    lines += figure("qs_acbb120_combined.png", "Contact loads (left) and contact angles (right) against azimuth under "
+                    "the thrust alone and with F_r = 3 kN and M_y = 150 N m added.")
+    lines += ["Speed (`python validation/bench_quasistatic.py`, medians, one run):", "",
+              "| case | wall [ms] | target [ms] |", "|---|---|---|"]
+    for k, v in bq.items():
+        if k.endswith("_s") and isinstance(v, float):
+            t = bq["targets_s"].get(k)
+            lines.append(f"| {k[:-2]} | {1e3 * v:.1f} | {'' if t is None else f'{1e3 * t:.0f}'} |")
+    lines += ["", "Compiled contact-slip integration (`physics.contact_slip._contact_traction`, one call, "
+              "timed in a compiled loop):", "", "| traction model | strips x points across | ns per call |",
+              "|---|---|---|"]
+    for k, v in bq["kernel_ns_per_call"].items():
+        name, grid = k.split("|")
+        lines.append(f"| {name} | {grid} | {v:.0f} |")
+    return lines + [""]
 
 
 def main(argv=None):
@@ -426,8 +670,10 @@ def main(argv=None):
                  ", ".join(f"{k} {v:.0f} s" for k, v in walls.items()) + ".", ""]
     body = (section_reference() + section_cage_step() + section_element() + section_cross() + section_peer()
             + section_figures()
-            + section_work_precision() + section_sweep() + section_round_off())
+            + section_work_precision() + section_sweep() + section_quasistatic() + section_three_dof()
+            + section_round_off())
     (HERE / "REPORT.md").write_text("\n".join(head + body))
+    remove_unpublished()
     print(f"written {HERE / 'REPORT.md'}")
 
 

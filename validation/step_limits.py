@@ -30,7 +30,6 @@ import json
 import warnings
 from pathlib import Path
 
-import numpy as np
 
 import exudyn_bearing as eb
 from exudyn_bearing.model.stability import SimulationError, StepSizeWarning, expected_cage_load, stable_step

@@ -24,7 +24,7 @@ import numpy as np
 
 import exudyn_bearing as eb
 from exudyn_bearing.outputs.jsonio import to_jsonable
-from exudyn_bearing.outputs.plotting import _pyplot, save_figure
+from exudyn_bearing.outputs.plotting import pyplot, save_figure
 
 FAMILIES = {
     "reference, verlet, explicit spring": [dict(dt=d) for d in (1e-6, 2e-6, 4e-6, 6e-6)],
@@ -81,7 +81,7 @@ def main(argv=None):
             rows.append(row)
             print(f"{fam:42s} {kw['dt'] * 1e6:6.2f} {row['wall_per_sim_s']:10.3f} {100 * row['err_q_max']:9.4f} "
                   f"{100 * row['err_cage']:10.4f} {100 * row['err_trajectory']:10.4f}")
-    plt = _pyplot()
+    plt = pyplot()
     fig, ax = plt.subplots(1, 3, figsize=(16, 6.2))
     fig.subplots_adjust(left=0.05, right=0.99, top=0.88, bottom=0.3, wspace=0.25)
     markers = "osD^v<>ph"

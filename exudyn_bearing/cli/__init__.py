@@ -3,12 +3,20 @@
 Sub-commands (``--json`` for scripts, with a ``units`` map; tables otherwise):
 
 * ``info BEARING [--omega W | --rpm N]``: geometry, Hertz constants, kinematics.
-* ``static BEARING --Fr N [--Fa N] [--Pd M] [--omega W | --rpm N]
-  [--lubricant L] [--film hd|mk] [--plot FILE.png]``: quasi-static load
-  distribution and lubrication map.
+* ``static BEARING --Fr N [--Fa N] [--tilt fixed|free] [--Pd M] [--omega W |
+  --rpm N] [--lubricant L] [--film hd|mk] [--plot FILE.png]``: the zero-speed
+  special case of ``quasistatic`` (load distribution, held DOFs with their
+  reactions) and the lubrication map.
+* ``quasistatic BEARING [--Fr N] [--Fa N] [--Mx NM] [--My NM] [--omega W |
+  --rpm N] [--control outer|inner|auto|min-energy] [--traction NAME]
+  [--ring-growth | --no-ring-growth] [--fit M] [--json] [--plot FILE.png]``:
+  5-DOF equilibrium at speed, ball kinematics, slip, dissipation, stiffness.
 * ``simulate [BEARING] --Fr N [--omega W | --rpm N] [--ramp UP STEADY DOWN]
   [--t-end T] [--engine reference|exudyn] [--out DIR]``: dynamic simulation;
   summary keys of :meth:`exudyn_bearing.outputs.results.Results.summary`.
+* ``vibration three-dof [--source-parameters] [--json]``: eigenvalues,
+  natural frequencies, damping ratios and mode shapes of the 3-DOF
+  outer ring / ball / inner ring model.
 
 BEARING is a catalogue name (6208, 7208, 6004, ACBB-120) or a JSON file
 (:mod:`exudyn_bearing.data.catalog`: one bearing by race radii or dimensions,
@@ -21,23 +29,26 @@ import sys
 
 from ..data import InputError
 from ..model.stability import SimulationError
-from . import info, simulate, static
+from . import info, quasistatic, simulate, static, vibration
 from .common import Parser
 
 __all__ = ["main"]
 
 #: Text of ``exudyn-bearing --help``.
-DESCRIPTION = ("Rolling-element ball bearings: data sheet (info), quasi-static load distribution and "
-               "lubrication map (static), dynamic simulation ball by ball (simulate). BEARING is a catalogue "
-               "name or a JSON file; 'exudyn-bearing COMMAND --help' lists a command's options.")
+DESCRIPTION = ("Rolling-element ball bearings: data sheet (info), load distribution and lubrication map at "
+               "zero speed (static), quasi-static equilibrium at speed (quasistatic), dynamic simulation ball by "
+               "ball (simulate), linear vibration models (vibration). BEARING is a catalogue name or a JSON file; "
+               "'exudyn-bearing COMMAND --help' lists a command's options.")
 
 #: Sub-commands: name -> module with ``add_parser(subparsers)`` and ``run(args)``.
-COMMANDS = {"info": info, "static": static, "simulate": simulate}
+COMMANDS = {"info": info, "static": static, "quasistatic": quasistatic, "simulate": simulate,
+            "vibration": vibration}
 
 
 def _parser() -> Parser:
     p = Parser(prog="exudyn-bearing", description=DESCRIPTION)
-    sub = p.add_subparsers(dest="command", required=True, parser_class=Parser)
+    sub = p.add_subparsers(dest="command", required=True, parser_class=Parser, metavar="COMMAND",
+                           help="one of the sub-commands below ('COMMAND --help' for its options)")
     for module in COMMANDS.values():
         module.add_parser(sub)
     return p

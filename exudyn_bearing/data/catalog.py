@@ -1,5 +1,5 @@
-"""The catalogue: materials, lubricants and bearings of ``catalog.json``, and
-bearing and lubricant look-up by name, JSON file or dict.
+"""The catalogue: materials, lubricants, traction models and bearings of
+``catalog.json``, and bearing and lubricant look-up by name, JSON file or dict.
 
 Each entry of ``catalog.json`` carries its ``source``. See PHYSICS.md sec. 2.
 
@@ -35,9 +35,10 @@ from .bearings import BallBearing
 from .errors import InputError, check_finite, check_keys
 from .lubricants import Lubricant
 from .materials import Material
+from .traction import TractionModel
 
-__all__ = ["catalog", "materials", "lubricants", "get_bearing", "load_bearing", "load_lubricant",
-           "default_lubricant", "BEARING_KEYS", "DIMENSION_KEYS"]
+__all__ = ["catalog", "materials", "lubricants", "traction_models", "get_bearing", "load_bearing", "load_lubricant",
+           "default_lubricant", "get_traction_model", "BEARING_KEYS", "DIMENSION_KEYS"]
 
 #: Keys of a bearing in the race-radii form (the fields of BallBearing).
 BEARING_KEYS = tuple(f.name for f in dataclasses.fields(BallBearing))
@@ -59,6 +60,20 @@ materials: Mapping[str, Material] = {
     k: Material(name=k, **v) for k, v in _RAW["materials"].items()}
 lubricants: Mapping[str, Lubricant] = {
     k: Lubricant(name=k, **v) for k, v in _RAW["lubricants"].items()}
+traction_models: Mapping[str, TractionModel] = {
+    k: TractionModel(name=k, **v) for k, v in _RAW.get("traction_models", {}).items()}
+
+
+def get_traction_model(spec) -> TractionModel:
+    """A traction model by catalogue name (or a TractionModel passed through);
+    an unknown name lists the valid ones."""
+    if isinstance(spec, TractionModel):
+        return spec
+    try:
+        return traction_models[str(spec)]
+    except KeyError:
+        raise InputError(f"traction: unknown traction model {spec!r} "
+                         f"(catalogue: {', '.join(traction_models)})") from None
 
 
 def _material_from_dict(name: str, d) -> Material:

@@ -23,12 +23,18 @@ class Material:
     hysteretic_damping : float
         Hunt-Crossley coefficient alpha_e [s/m] of PHYSICS.md sec. 4.
         Default 0.08 (steel).
+    thermal_expansion : float
+        Linear thermal expansion coefficient [1/K]. Default 12.5e-6, the
+        handbook value of AISI 52100 bearing steel near room temperature
+        (T. A. Harris and M. N. Kotzalas, Rolling Bearing Analysis, 5th ed.,
+        CRC Press, 2006, Essential Concepts, ch. 'Bearing materials').
     """
 
     youngs_modulus: float = 210e9
     poisson_ratio: float = 0.3
     density: float = 7850.0
     hysteretic_damping: float = 0.08
+    thermal_expansion: float = 12.5e-6
     name: str = "steel"
     source: str = "PHYSICS.md sec. 2"
 
@@ -40,6 +46,9 @@ class Material:
         nu = values["poisson_ratio"]
         if not -1.0 < nu < 0.5:
             raise InputError(f"poisson_ratio: must lie in (-1, 0.5), got {nu}")
+        te = values["thermal_expansion"] = check_finite("thermal_expansion", self.thermal_expansion)
+        if not 0.0 <= te < 1e-4:
+            raise InputError(f"thermal_expansion: must lie in [0, 1e-4) 1/K, got {te}")
         check_text("name", self.name)
         check_text("source", self.source)
         for key, v in values.items():  # plain floats from here on (numpy scalars, ints)

@@ -7,16 +7,22 @@ from pathlib import Path
 import numpy as np
 
 __all__ = ["plot_static", "plot_run", "plot_speeds", "plot_srr", "plot_film_by_phase",
-           "plot_quasi_static", "save_csv", "save_figure", "loaded_ball_mask", "label_regime_lines"]
+           "plot_quasi_static", "save_csv", "save_figure", "pyplot", "loaded_ball_mask", "label_regime_lines"]
 
 
-def _pyplot():
+def pyplot():
+    """``matplotlib.pyplot`` on the non-interactive Agg backend (figures are
+    written to files; no display needed). Scripts draw their own figures with
+    it and save them with :func:`save_figure`."""
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
     return plt
+
+
+_pyplot = pyplot  # the name used inside this module
 
 
 def save_csv(path, columns: dict) -> Path:

@@ -23,7 +23,7 @@ from pathlib import Path
 import numpy as np
 
 from ..data import Lubricant, load_bearing
-from ..model.layout import DIAG_FIELDS, DIAG_UNITS, GLOBAL_FIELDS, GLOBAL_UNITS
+from ..model.layout import DIAG_FIELDS, GLOBAL_FIELDS, GLOBAL_UNITS
 from ..model.record import RunRecord
 from ..model.scenario import Scenario
 from ..physics import kinematics

@@ -25,7 +25,8 @@ REGIME_CODES = {"-1": "no contact", **{str(code): name for code, name in enumera
 #: Units of :func:`exudyn_bearing.solvers.analytic.static_analysis` (per-ball
 #: arrays share the unit of their key).
 STATIC_UNITS = dict(
-    Fr="N", Fa="N", Pd="m", phase="rad", psi="rad", q="N", q_max="N", overlap="m", overlap_inner="m", overlap_outer="m",
+    Fr="N", Fa="N", Mx="N m", My="N m", Pd="m", phase="rad", psi="rad", tilt_x="rad", tilt_y="rad",
+    reaction_moment="N m", q="N", q_max="N", overlap="m", overlap_inner="m", overlap_outer="m",
     contact_angle="rad", displacement="m", delta_r="m", delta_a="m", eps="-", q_max_stribeck="N",
     eps_stribeck="-", omega="rad/s",
     **{f"{name}_{race}": unit for race in ("inner", "outer")

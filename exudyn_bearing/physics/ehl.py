@@ -17,9 +17,9 @@ References
 .. [1] B. J. Hamrock and D. Dowson, "Isothermal elastohydrodynamic
    lubrication of point contacts, Part III - Fully flooded results,"
    J. Lubr. Technol. 99(2) (1977) 264-275. doi:10.1115/1.3453074
-.. [2] M. Masjedi and M. M. Khonsari, "On the prediction of point-contact
-   film thickness in the presence of surface roughness," Tribol. Int. 82
-   (2015) 228-244. doi:10.1016/j.triboint.2014.10.009
+.. [2] M. Masjedi and M. M. Khonsari, "On the effect of surface roughness in
+   point-contact EHL: Formulas for film thickness and asperity load,"
+   Tribol. Int. 82 (2015) 228-244. doi:10.1016/j.triboint.2014.09.010
 .. [3] S. Guessasma and C. Machado, Lubricants 6 (2018) 46.
    doi:10.3390/lubricants6020046
 """
@@ -35,6 +35,7 @@ __all__ = [
     "film_thickness",
     "film_thickness_hamrock_dowson",
     "film_thickness_masjedi_khonsari",
+    "film_thickness_central_hamrock_dowson",
     "film_parameter",
 ]
 
@@ -102,15 +103,34 @@ def film_thickness_hamrock_dowson(u_r, load, r_x, kappa, e_prime, eta, xi):
 def film_thickness_masjedi_khonsari(u_r, load, r_x, kappa, e_prime, eta, xi):
     """Minimum film thickness h_min [m], a reading of Masjedi & Khonsari [2]_.
 
-    The source prints h_min/R_x = 1.637 U^(0.711k - 0.023) G^(0.65k - 0.045)
-    W^(-0.09k - 0.15) (1 - 0.974 exp(-0.676 k)), which read literally gives
-    h_min near zero for k about 9. Implemented is the reading of PHYSICS.md
-    sec. 5 (exponents as powers of k)::
+    The smooth-surface minimum-film fit as the digital-twin DEM paper prints
+    it, h_min/R_x = 1.637 U^(0.711k - 0.023) G^(0.65k - 0.045)
+    W^(-0.09k - 0.15) (1 - 0.974 exp(-0.676 k)), cannot be meant literally:
+    with k about 9 the speed exponent would be about 6.4 and h_min near
+    zero. Each of the three exponents has the pattern "a k - b", read here
+    as a lost superscript, a k^-b::
 
         h_min / R_x = 1.637 U^(0.711 k^-0.023) G^(0.65 k^-0.045)
-                      W^(-0.09 k^0.15) (1 - 0.974 exp(-0.676 k))
+                      W^(-0.09 k^-0.15) (1 - 0.974 exp(-0.676 k))
+
+    (an earlier version read the load exponent as -0.09 k^+0.15, which
+    breaks the pattern). Theory and numbers:
+    docs/theory/lubrication.md#masjedi-khonsari-reading.
 
     Parameters as :func:`film_thickness_hamrock_dowson`.
+
+    Examples
+    --------
+    Speed and load exponents at the 6208 outer contact (k = 7.2486), fitted
+    from the function itself; the reading predicts 0.711 k^-0.023 and
+    -0.09 k^-0.15:
+
+    >>> k, e_p = 7.2486, 230.77e9
+    >>> h = lambda u, q: float(film_thickness_masjedi_khonsari(u, q, 7.61e-3, k, e_p, 0.04, 2.3e-8))
+    >>> round(float(np.log10(h(10.0, 1457.0) / h(1.0, 1457.0))), 4)
+    0.6793
+    >>> round(float(np.log10(h(7.25, 5000.0) / h(7.25, 500.0))), 4)
+    -0.0669
     """
     ln_u = np.log(np.maximum(eta * np.abs(u_r) / (e_prime * r_x), 1e-300))
     ln_w = np.log(np.maximum(load, 1e-300) / (e_prime * r_x * r_x))
@@ -118,11 +138,35 @@ def film_thickness_masjedi_khonsari(u_r, load, r_x, kappa, e_prime, eta, xi):
     on = (load > 0.0) * (u_r != 0.0)
     return on * (1.637 * np.exp(0.711 * np.exp(-0.023 * ln_k) * ln_u
                                 + 0.65 * np.exp(-0.045 * ln_k) * np.log(xi * e_prime)
-                                - 0.09 * np.exp(0.15 * ln_k) * ln_w)
+                                - 0.09 * np.exp(-0.15 * ln_k) * ln_w)
                  * (1.0 - 0.974 * np.exp(-0.676 * kappa)) * r_x)
 
 
+def film_thickness_central_hamrock_dowson(u_r, load, r_x, kappa, e_prime, eta, xi):
+    """Central film thickness h_c [m], Hamrock & Dowson [1]_.
+
+    h_c = 2.69 U^0.67 G^0.53 W^-0.067 (1 - 0.61 exp(-0.73 k)) R_x, the film
+    over the flat part of the contact that carries the shear of the traction
+    models (:mod:`exudyn_bearing.physics.traction`). Parameters as
+    :func:`film_thickness_hamrock_dowson`.
+
+    Examples
+    --------
+    The 6208 outer contact of :func:`film_thickness_hamrock_dowson` (h_c above h_min):
+
+    >>> h = film_thickness_central_hamrock_dowson(7.2475, 1457.0, 7.61e-3, 7.29, 230.77e9, 0.04, 2.3e-8)
+    >>> round(float(h) * 1e6, 2)
+    0.99
+    """
+    ln_u = np.log(np.maximum(eta * np.abs(u_r) / (e_prime * r_x), 1e-300))
+    ln_w = np.log(np.maximum(load, 1e-300) / (e_prime * r_x * r_x))
+    on = (load > 0.0) * (u_r != 0.0)
+    return on * (2.69 * np.exp(0.67 * ln_u + 0.53 * np.log(xi * e_prime) - 0.067 * ln_w)
+                 * (1.0 - 0.61 * np.exp(-0.73 * kappa)) * r_x)
+
+
 _film_hd = kernel(film_thickness_hamrock_dowson)
+_film_central_hd = kernel(film_thickness_central_hamrock_dowson)
 _film_mk = kernel(film_thickness_masjedi_khonsari)
 
 

@@ -22,6 +22,15 @@ PHYSICS.md sec. 8. Two levels:
   For alpha_0 = 0 and P_d = 0 this reduces to delta_j = delta_r cos psi_j to
   first order. No centrifugal or gyroscopic load (omega -> 0): the quasi-static
   reference of the DEM papers' Appendix A (omega = 1 rad/s).
+  The inner ring only translates (its tilt is held at zero, as in the DEM
+  engines); the moment that holding it takes is reported as
+  ``StaticSolution.reaction_moment``. Free tilt, moment loads and speed
+  effects: :func:`exudyn_bearing.solvers.quasistatic.solve_quasistatic`.
+* A single angular-contact bearing carries a radial load only together with
+  an axial load of at least F_r tan(alpha) (one ball loaded); half the balls
+  are loaded at the induced axial force F_r tan(alpha) J_a(0.5)/J_r(0.5)
+  = 1.216 F_r tan(alpha) (:func:`induced_axial_force`, Harris & Kotzalas
+  [1]_ ch. 7). :func:`static_equilibrium` refuses smaller axial loads.
 
 Azimuth psi is measured from the applied radial load direction (x), so
 psi = 0 is the most loaded ball; the inner ring carries +x radial and +z
@@ -57,6 +66,8 @@ __all__ = [
     "StaticSolution",
     "static_equilibrium",
     "race_stiffness",
+    "induced_axial_force",
+    "check_axial_load",
 ]
 
 
@@ -115,6 +126,48 @@ def load_integral_axial(eps):
     0.2782
     """
     return np.vectorize(lambda e: _zone_integral(float(e), lambda p: 1.0), otypes=[float])(eps)
+
+
+def induced_axial_force(radial_load, contact_angle, eps=0.5):
+    """Axial force [N] that a radial load induces in an angular-contact bearing.
+
+    F_a = F_r tan(alpha) J_a(eps) / J_r(eps) (Harris & Kotzalas [1]_ ch. 7,
+    eq. 7.41-7.42 at a fixed contact angle): the axial load with which the
+    loaded zone spans the fraction given by eps; at eps = 0.5 (half the
+    balls loaded) F_a = 1.216 F_r tan(alpha). As eps -> 0 (a single ball)
+    it falls to F_r tan(alpha), the least axial load that can hold F_r.
+
+    Examples
+    --------
+    7208 (alpha = 40 deg) at F_r = 3000 N:
+
+    >>> round(float(induced_axial_force(3000.0, math.radians(40.0))))
+    3061
+    """
+    return (np.asarray(radial_load, float) * np.tan(contact_angle) * load_integral_axial(eps)
+            / load_integral_radial(eps))
+
+
+def check_axial_load(bearing: BallBearing, radial_load: float, axial_load: float) -> None:
+    """InputError unless an angular-contact bearing's axial load can hold its radial load.
+
+    Needs F_a > F_r tan(alpha_f) with alpha_f the free contact angle after the
+    axial shift (:attr:`BallBearing.free_contact_angle_max`); the message
+    gives that limit and the induced axial force of :func:`induced_axial_force`.
+    Deep-groove bearings (alpha_0 = 0) carry radial load without axial load.
+    """
+    a0 = bearing.free_contact_angle
+    if a0 <= 0.0 or radial_load <= 0.0:
+        return
+    af = bearing.free_contact_angle_max
+    need = radial_load * math.tan(af)
+    if axial_load <= need:
+        ind = float(induced_axial_force(radial_load, af))
+        raise InputError(
+            f"axial_load: {axial_load:g} N cannot hold the radial load {radial_load:g} N of the "
+            f"angular-contact bearing {bearing.name} (alpha = {math.degrees(af):.1f} deg): it needs "
+            f"F_a > F_r tan(alpha) = {need:.0f} N; the induced axial force with half the balls "
+            f"loaded is {ind:.0f} N (Harris & Kotzalas)")
 
 
 def race_stiffness(bearing: BallBearing, contact_angle=None, method="exact"):
@@ -248,6 +301,9 @@ class StaticSolution:
     delta_a: float               #: axial displacement [m]
     eps: float                   #: loaded-zone parameter [-]
     hertz_method: str = "exact"
+    #: moment (M_x, M_y) [N m] that holding the inner ring's tilt at zero
+    #: takes: minus the moment of the ball forces about the bearing centre
+    reaction_moment: np.ndarray = field(default_factory=lambda: np.zeros(2))
     extra: dict = field(default_factory=dict)
 
     @property
@@ -260,6 +316,12 @@ def static_equilibrium(bearing: BallBearing, radial_load: float, axial_load: flo
                        phase: float = 0.0, hertz_method: str = "exact",
                        tol: float = 1e-10) -> StaticSolution:
     """Discrete quasi-static load distribution of Z balls (module docstring).
+
+    The inner ring translates (dx, dy, dz); its tilt is held at zero and the
+    moment this takes is returned as ``reaction_moment`` (zero for radial or
+    axial load alone on a symmetric bearing, not zero for combined load).
+    Angular-contact bearings need an axial load that can hold the radial one
+    (:func:`check_axial_load`).
 
     Parameters
     ----------
@@ -291,6 +353,7 @@ def static_equilibrium(bearing: BallBearing, radial_load: float, axial_load: flo
     phase = float(phase)
     if not math.isfinite(phase):
         raise InputError(f"phase: must be finite, got {phase}")
+    check_axial_load(bearing, fr, fa)
     b = bearing
     method = _hz.method_code(hertz_method)
     z = b.n_balls
@@ -329,6 +392,12 @@ def static_equilibrium(bearing: BallBearing, radial_load: float, axial_load: flo
         if not axial_free:
             x = np.array([x[0], x[1], 0.0])
     evaluate(x)
+    if b.free_contact_angle > 0.0 and np.any((q > 0.0) & (alpha <= 0.0)):
+        raise InputError(f"axial_load: {fa:g} N is too small for the radial load {fr:g} N: loaded balls of "
+                         f"{b.name} are pushed across the groove bottom to the low shoulder (alpha <= 0)")
+    # moment of the ball forces on the ring (-q nvec at the inner groove centres) held by the tilt constraint
+    pts = np.stack([rho_i * np.cos(psi), rho_i * np.sin(psi), np.full(z, z_i)], axis=1)
+    reaction = np.cross(pts, q[:, None] * nvec).sum(axis=0)[:2]
     # split of the total overlap between the races (equal loads)
     ki_ko = np.array([_race_stiffness(b.pitch_radius, b.ball_radius, b.inner_groove_radius,
                                       b.outer_groove_radius, float(al), e_prime, method)[:2]
@@ -341,7 +410,7 @@ def static_equilibrium(bearing: BallBearing, radial_load: float, axial_load: flo
         math.inf if (delta_a > 0 or pd < 0) else 0.0)
     return StaticSolution(b, fr, fa, psi, q.copy(), delta.copy(), di, do, alpha.copy(),
                           np.asarray(x, float), delta_r, delta_a, eps,
-                          hertz_method=_hz.METHODS[method])
+                          hertz_method=_hz.METHODS[method], reaction_moment=reaction)
 
 
 def _check_load(name, value):

@@ -158,8 +158,16 @@ def lubrication_map(solution: StaticSolution, omega_inner: float, omega_outer: f
 def static_analysis(bearing: BallBearing, radial_load: float, axial_load: float = 0.0,
                     omega: float | None = None, film: str = "hd",
                     lubricant: Lubricant | None = None, hertz_method: str = "exact",
-                    phase: float = 0.0) -> dict:
-    """Quasi-static load distribution, and with ``omega`` the lubrication map.
+                    phase: float = 0.0, moment=(0.0, 0.0)) -> dict:
+    """Quasi-static load distribution of a translating inner ring, and with ``omega`` the lubrication map.
+
+    The inner ring translates only: its tilt is held at zero (the classical
+    Harris distribution of :func:`~exudyn_bearing.physics.load_distribution.static_equilibrium`,
+    as in the DEM engines) and the moment this takes is returned as
+    ``reaction_moment`` [N m]. For a free tilt, moment loads and speed
+    effects use :func:`exudyn_bearing.solvers.quasistatic.solve_quasistatic`
+    (the ``static`` and ``quasistatic`` commands); a nonzero ``moment``
+    here is refused.
 
     ``phase`` (azimuth of ball 0) is taken modulo 2 pi. Loads whose contact
     pressure exceeds the elastic range (:mod:`exudyn_bearing.model.load_range`)
@@ -172,6 +180,11 @@ def static_analysis(bearing: BallBearing, radial_load: float, axial_load: float 
     ``h_min_inner``, ``h_min_outer`` [m], ``lambda_inner``, ``lambda_outer``
     and the rest of :func:`lubrication_map`.
     """
+    mx, my = (float(v) for v in moment)
+    if mx != 0.0 or my != 0.0:
+        raise InputError("moment: static_analysis holds the inner ring's tilt at zero (translation-only "
+                         "distribution); moment loads need the free tilt of "
+                         "exudyn_bearing.solve_quasistatic(..., Mx=..., My=...)")
     phase = float(phase)
     if not math.isfinite(phase):
         raise InputError(f"phase: must be finite, got {phase}")
@@ -198,6 +211,8 @@ def static_analysis(bearing: BallBearing, radial_load: float, axial_load: float 
         "delta_r": sol.delta_r,
         "delta_a": sol.delta_a,
         "eps": sol.eps,
+        "tilt": "held at zero",
+        "reaction_moment": sol.reaction_moment,
     }
     if sol.radial_load > 0.0 or sol.axial_load > 0.0:
         try:

@@ -53,8 +53,25 @@ not symplectic, it drives the stiff contacts unstable (validation/REPORT.md).
 Implicit solvers work in the body mode with the numerical Jacobian but are
 not recommended (EXUDYN_NOTES: an order of magnitude slower for Hertz
 contact); the fast mode needs an explicit solver (its balls advance at the
-first evaluation of a new time and ignore Newton iterations there; an
-evaluation back in time raises).
+first evaluation of a new time and ignore Newton iterations there):
+``SimulationSettings`` and the first evaluation of a run under an implicit
+solver raise InputError naming ``mode``, and so does an evaluation back in
+time within a run.
+
+Repeated solves: Exudyn starts every ``mbs.SolveDynamic`` at
+``startTime`` from the initial state. A run that starts where the
+element's last one ended (``startTime`` equal to its last time, with the end
+state copied into the initial state, ``mbs.systemData.SetSystemState(
+mbs.systemData.GetSystemState(exu.ConfigurationType.Current),
+exu.ConfigurationType.Initial)``) continues it: samples append, the contact
+history and the fast mode's balls carry on. Any other run starts over: the
+element's samples, step count, contact history and the fast mode's balls
+return to their initial state, so the same run twice gives the same results.
+Errors inside a solve: a blow-up raises ``SimulationError``; Exudyn
+re-raises a user function's exception as its ModelError (a ValueError)
+with the original as ``__cause__``;
+:func:`~exudyn_bearing.solvers.element.engine.solve_dynamic` hands on the
+original.
 """
 from __future__ import annotations
 
@@ -65,6 +82,7 @@ import numpy as np
 
 from ..._jit import announce_compilation
 from ...data import InputError, Lubricant, default_lubricant, load_bearing
+from ...data.errors import check_finite, check_positive
 from ...model import layout as L
 from ...model.contact import forces
 from ...model.initial_state import initial_state
@@ -77,9 +95,29 @@ from . import kernels as EK
 from .items import ItemsMixin
 from .markers import RING_REGISTRY, initial_ring_pose, ring_from_marker, ring_mobility
 from .sensors import SensorsMixin
-from .userfunctions import UserFunctionsMixin
+from .userfunctions import IMPLICIT_SOLVERS, UserFunctionsMixin, implicit_solver_error
 
-__all__ = ["BallBearingElement"]
+__all__ = ["BallBearingElement", "OPTION_NAMES"]
+
+#: Scenario field -> the element's option of the same meaning (for error messages).
+OPTION_NAMES = {"Fr": "initialLoad", "Fa": "initialLoad", "omega": "initialOmega", "dt": "stepSize",
+                "sample_dt": "sampleInterval", "hertz": "hertzModel", "guide_clearance": "guideClearance",
+                "mu_dry": "muDry", "regularizing_speed": "regularizingSpeed",
+                "tangential_stiffness_ratio": "tangentialStiffnessRatio", "contact_law": "contactLaw",
+                "power_law": "powerLaw"}
+
+
+def _initial_load(load):
+    """(Fr, Fa) of ``initialLoad``: a pair (Fr, Fa) or a number Fr (radial only)."""
+    if isinstance(load, (int, float, np.integer, np.floating)) and not isinstance(load, bool):
+        return check_finite("initialLoad", load), 0.0
+    try:
+        pair = [float(x) for x in load]
+    except (TypeError, ValueError):
+        raise InputError(f"initialLoad: expected (Fr, Fa) [N] or a radial load Fr, got {load!r}") from None
+    if len(pair) != 2:
+        raise InputError(f"initialLoad: expected (Fr, Fa) [N] or a radial load Fr, got {load!r}")
+    return check_finite("initialLoad", pair[0]), check_finite("initialLoad", pair[1])
 
 
 class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin):
@@ -103,6 +141,11 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin):
     ringStableStep : float
         Fast mode: the largest Exudyn step [s] for the ring bodies on the
         ball contacts of all bearings on them (property, see its docstring).
+
+    Options are those of :func:`exudyn_bearing.CreateBallBearing`;
+    ``initialLoad`` is (Fr, Fa) [N] or a radial load Fr; an invalid option
+    raises InputError naming it (``stepSize``, ``sampleInterval``,
+    ``initialLoad``, ``markerOuterRing``, ...).
     """
 
     def __init__(self, mbs, bearing, markerInnerRing, markerOuterRing, lubricant: Lubricant | None = None,
@@ -119,15 +162,23 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin):
             if f is not None and not callable(f):
                 raise InputError(f"{name}: must be a function of time t [s] returning rad/s")
         self.speed = (innerRingSpeed, outerRingSpeed)
-        # model switches go through Scenario (validated there); loads come from the model
-        self.scenario = Scenario(Fr=float(initialLoad[0]), Fa=float(initialLoad[1]), omega=float(initialOmega),
-                                 cage=cage, lubrication=lubrication, friction=friction, tangential=tangential,
-                                 hertz=hertzModel, film=film, guide_clearance=guideClearance, mu_dry=muDry,
-                                 regularizing_speed=regularizingSpeed,
-                                 tangential_stiffness_ratio=tangentialStiffnessRatio, dt=stepSize,
-                                 sample_dt=max(sampleInterval, stepSize), initial=initial, contact_law=contactLaw,
-                                 t_end=max(0.05, sampleInterval, stepSize),  # the run's end is the solver's
-                                 power_law=tuple(powerLaw))
+        fr, fa = _initial_load(initialLoad)
+        stepSize = check_positive("stepSize", stepSize)
+        sampleInterval = check_positive("sampleInterval", sampleInterval)
+        # model switches go through Scenario (validated there, its messages renamed to the options here);
+        # loads come from the model
+        try:
+            self.scenario = Scenario(Fr=fr, Fa=fa, omega=check_finite("initialOmega", initialOmega), cage=cage,
+                                     lubrication=lubrication, friction=friction, tangential=tangential,
+                                     hertz=hertzModel, film=film, guide_clearance=guideClearance, mu_dry=muDry,
+                                     regularizing_speed=regularizingSpeed,
+                                     tangential_stiffness_ratio=tangentialStiffnessRatio, dt=stepSize,
+                                     sample_dt=max(sampleInterval, stepSize), initial=initial,
+                                     contact_law=contactLaw, power_law=powerLaw,
+                                     t_end=max(0.05, sampleInterval, stepSize))  # the run's end is the solver's
+        except InputError as exc:
+            name, _, rest = str(exc).partition(":")
+            raise InputError(f"{OPTION_NAMES.get(name, name)}:{rest}") from None
         if cage and not b.has_cage:
             raise InputError(f"cage: bearing {b.name} has no cage balls; use cage=False")
         self.params = scene_parameters(b, self.scenario, self.lubricant)
@@ -138,6 +189,13 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin):
         self.rings_spec = [ring_from_marker(mbs, markerInnerRing, "Inner"),
                            ring_from_marker(mbs, markerOuterRing, "Outer")]
         self.markers = (markerInnerRing, markerOuterRing)
+        (kind_i, node_i, *_), (kind_o, node_o, *_) = self.rings_spec
+        if int(markerInnerRing) == int(markerOuterRing):
+            raise InputError(f"markerOuterRing: marker {markerOuterRing} is also markerInnerRing; the rings need "
+                             "their own markers (the outer ring on ground or on a housing body)")
+        if kind_i != EK.RING_FIXED and node_i == node_o:
+            raise InputError(f"markerOuterRing: on node {node_o}, the node of markerInnerRing; both rings on one "
+                             "body would carry the bearing's forces on itself")
         poses = [initial_ring_pose(mbs, *spec) for spec in self.rings_spec]
         axis_i, axis_o = poses[0][1][:, 2], poses[1][1][:, 2]
         if abs(float(axis_i @ axis_o)) < 1.0 - 1e-9:
@@ -237,8 +295,18 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin):
     def SimulationSettings(self, endTime, stepSize=None, solverType="VelocityVerlet"):
         """Recommended explicit settings: fixed step ``stepSize`` (default: the
         element's step, times ``subSteps`` in the fast mode), no solution file,
-        sensors written every sample interval, sparse linear solver."""
+        sensors written every sample interval, sparse linear solver.
+        ``solverType``: a name of ``exudyn.DynamicSolverType`` or one of its
+        values; the fast mode refuses the implicit solvers."""
         exu = self._exu
+        name = solverType if isinstance(solverType, str) else getattr(solverType, "name", str(solverType))
+        if not isinstance(getattr(exu.DynamicSolverType, name, None), exu.DynamicSolverType):
+            raise InputError(f"solverType: {solverType!r} is not an exudyn.DynamicSolverType")
+        if self.mode == "fast" and name in IMPLICIT_SOLVERS:
+            raise implicit_solver_error(name)
+        check_positive("endTime", endTime)
+        if stepSize is not None:
+            check_positive("stepSize", stepSize)
         ss = exu.SimulationSettings()
         h = float(stepSize or self.scenario.dt * (self.subSteps if self.mode == "fast" else 1))
         if self.mode == "fast":
@@ -253,7 +321,7 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin):
         ss.timeIntegration.explicit.computeMassMatrixInversePerBody = False  # not available for ObjectGenericODE2
         ss.linearSolver.solverType = exu.LinearSolverType.EigenSparse
         ss.timeIntegration.explicit.computeEndOfStepAccelerations = False
-        ss.timeIntegration.solverType = getattr(exu.DynamicSolverType, solverType)
+        ss.timeIntegration.solverType = getattr(exu.DynamicSolverType, name)
         ss.solution.file.write = False
         ss.solution.sensors.writePeriod = self.sampleInterval
         return ss

@@ -9,10 +9,10 @@ from __future__ import annotations
 
 import time
 
-from ...data import Lubricant, load_bearing
+from ...data import InputError, Lubricant, load_bearing
 from ...model.initial_state import initial_state, ring_mass_estimate
 from ...model.scenario import Scenario
-from ...model.stability import stable_step
+from ...model.stability import SimulationError, stable_step
 from .console import filter_exudyn_notes
 from .element import BallBearingElement
 
@@ -22,13 +22,38 @@ __all__ = ["ExudynEngine", "SOLVERS", "solve_dynamic"]
 SOLVERS = {"verlet": "VelocityVerlet", "rk4": "RK44"}
 
 
+def _element_error(exc):
+    """The SimulationError or InputError a user function of the element
+    raised, found in the chain of the exception Exudyn raised instead
+    (Exudyn re-raises a user function's exception as its own ModelError, a
+    ValueError, with the original as the cause); None if there is none."""
+    seen = set()
+    while exc is not None and id(exc) not in seen:
+        if isinstance(exc, (SimulationError, InputError)):
+            return exc
+        seen.add(id(exc))
+        exc = exc.__cause__ or exc.__context__
+    return None
+
+
 def solve_dynamic(mbs, settings, solverType=None, quiet=True):
     """``mbs.SolveDynamic`` with ``settings`` (solver: ``solverType``, default
     the one in the settings) inside :func:`~.console.filter_exudyn_notes`:
     ``quiet`` keeps all of Exudyn's solver output off stdout (which must stay
-    clean for --json); otherwise its known-benign notes are dropped."""
+    clean for --json); otherwise its known-benign notes are dropped.
+
+    A blow-up of the bearing element raises
+    :class:`~exudyn_bearing.model.stability.SimulationError` and bad input it
+    detects during the solve :class:`~exudyn_bearing.data.InputError`, not
+    the ModelError Exudyn wraps them in."""
     with filter_exudyn_notes(quiet=quiet):
-        return mbs.SolveDynamic(settings, solverType=solverType or settings.timeIntegration.solverType)
+        try:
+            return mbs.SolveDynamic(settings, solverType=solverType or settings.timeIntegration.solverType)
+        except Exception as exc:
+            err = _element_error(exc.__cause__ or exc.__context__)
+            if err is None:
+                raise
+            raise err from None
 
 
 class ExudynEngine:
@@ -78,7 +103,11 @@ class ExudynEngine:
         if progress:
             settings.timeIntegration.verboseMode = 1
         wall0 = time.perf_counter()
-        solve_dynamic(self.mbs, settings, quiet=not progress)
+        try:
+            solve_dynamic(self.mbs, settings, quiet=not progress)
+        except SimulationError as exc:  # the scenario names the element's stepSize dt
+            msg = str(exc)
+            raise SimulationError("dt" + msg[len("stepSize"):] if msg.startswith("stepSize") else msg) from None
         rec = self.element.record(wall_s=time.perf_counter() - wall0,
                                   steps=settings.timeIntegration.numberOfSteps)
         rec.scenario = self.scenario  # the run's protocol and solver, not the element's model options only

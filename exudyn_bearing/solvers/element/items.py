@@ -72,7 +72,10 @@ class ItemsMixin:
         self._hist = np.zeros((z, 2, 3))
         self._hist_trial = np.zeros((z, 2, 3))
         self._t_commit = 0.0
-        self._t_trial = -1.0
+        self._t_trial = -math.inf  # body mode: the latest time evaluated (-inf: none yet)
+        # runs: [the Exudyn solver object of the current SolveDynamic, time of its first evaluation (inf: none)]
+        self._run = [None, math.inf]
+        self._sys = mbs.sys  # Exudyn keeps the running solver and its settings here (storeSolver=True)
         self._hz = np.zeros((z, 2, 4))
         self._work = np.zeros((8, z, 3))  # xb, vb, wb, xc, vc, fb, tb, fc
         if fast:  # the balls live here, not in Exudyn
@@ -80,7 +83,8 @@ class ItemsMixin:
             self._work[3, :n_cage], self._work[4, :n_cage] = xc[:n_cage], vc[:n_cage]
             self._rings0 = ring_poses()
             self._rings_sub = ring_poses()
-            self._clock = [math.nan, 0.0, self.sampleInterval, False]
+            self._clock = [math.nan, 0.0, self.sampleInterval, False, 0]
+        self._work0 = self._work.copy()  # the initial state a restarted run returns to (fast mode: the balls)
         self._rings = ring_poses()
         self._fr = np.zeros((2, 6))
         self._glob = np.zeros(L.NGLOBAL)

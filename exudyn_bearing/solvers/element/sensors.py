@@ -33,7 +33,7 @@ class SensorsMixin:
         for key, fn in sensor_defs.items():
             self.sensors[key] = mbs.AddSensor(SensorUserFunction(
                 sensorNumbers=[], factors=[], storeInternal=True, writeToFile=False,
-                sensorUserFunction=(lambda f: (lambda mbs_, t, sn, fac, conf: f()))(fn)))
+                sensorUserFunction=(lambda f: (lambda mbs_, t, sn, fac, conf: self._check_run(t) or f()))(fn)))
 
     def _sample(self, t, rings):
         self._store(t, rings)
@@ -88,14 +88,11 @@ class SensorsMixin:
             size = int(np.prod(shape))
             data[name] = rows[:, k:k + size].reshape((len(rows), *shape))
             k += size
-        if self.mode == "fast":  # ball sub-steps taken and the wall time of the user function
-            steps_taken, wall = self._fast_stats
-        else:  # force evaluations (one per step with VelocityVerlet) and their wall time
-            steps_taken, wall = self._evaluations, self._wall
-        steps = steps_taken if steps is None else steps
+        if steps is None:  # force evaluations (body mode) or Exudyn steps (fast mode) of the run
+            steps = self._clock[4] if self.mode == "fast" else self._evaluations
         msg = cage_load_check(self.bearing, self.scenario, self.lubricant,
                               float(data["cage_load"].max(initial=0.0)), self.scenario.dt)
         if msg:
             warnings.warn(msg, StepSizeWarning, stacklevel=3)
         return RunRecord(self.bearing, self.scenario, self.lubricant, data, steps=steps,
-                         wall_s=wall if wall_s is None else wall_s, engine="exudyn", stable_dt=self.stable.dt)
+                         wall_s=self._wall if wall_s is None else wall_s, engine="exudyn", stable_dt=self.stable.dt)

@@ -9,11 +9,24 @@ import warnings
 
 import numpy as np
 
+from ...data import InputError
 from ...model.contact import forces
-from ...model.stability import StepSizeWarning, step_warning
+from ...model.stability import SimulationError, StepSizeWarning, step_warning
 from . import kernels as EK
 
-__all__ = ["UserFunctionsMixin"]
+#: Exudyn's implicit dynamic solvers (names of exudyn.DynamicSolverType).
+IMPLICIT_SOLVERS = ("GeneralizedAlpha", "TrapezoidalIndex2")
+#: Times closer than this [s] are the same time.
+_T_EPS = 1e-12
+
+
+def implicit_solver_error(solver):
+    """The fast mode's InputError for an implicit ``solver`` (a name)."""
+    return InputError(f"mode: the fast mode integrates the balls forward in time and needs an explicit solver "
+                      f"(VelocityVerlet, or RK44 with friction='regularized'), not {solver}; use mode='bodies' for "
+                      "implicit solvers")
+
+__all__ = ["UserFunctionsMixin", "IMPLICIT_SOLVERS", "implicit_solver_error"]
 
 
 def _entry_point(dispatcher, args):
@@ -34,13 +47,68 @@ def _entry_point(dispatcher, args):
 class UserFunctionsMixin:
     """Part of :class:`~.element.BallBearingElement`: the user functions."""
 
+    def _new_run(self, t, t_last):
+        """First evaluation of a SolveDynamic (Exudyn's solver object in
+        ``mbs.sys`` changed, or the time went back to the run's first time).
+
+        A run that starts where the element's last one ended (its start time
+        equal to the last evaluated time ``t_last``) continues it: samples
+        append, the contact history and the fast mode's balls carry on, as
+        the ring states do when the caller copied the end state into the
+        initial state. Any other start is a new run from the model's initial
+        state, as Exudyn starts it: samples, evaluations, contact history and
+        the fast mode's balls are reset. The fast mode refuses implicit
+        solvers (its balls would ignore their Newton iterations)."""
+        run = self._run
+        run[0] = self._sys.get("dynamicSolver")
+        settings = self._sys.get("simulationSettings")
+        solver = getattr(getattr(getattr(settings, "timeIntegration", None), "solverType", None), "name", "")
+        if self.mode == "fast" and solver in IMPLICIT_SOLVERS:
+            raise implicit_solver_error(solver)
+        first = run[1] == math.inf
+        run[1] = t
+        if first:
+            self._t_commit = t
+            return
+        if abs(t - t_last) <= _T_EPS:
+            return
+        self._restart(t)
+
+    def _restart(self, t):
+        """Reset the element to its initial state for a run starting at t."""
+        self._hist[:] = 0.0
+        self._hist_trial[:] = 0.0
+        self._hz[:] = 0.0
+        self._t_commit = t
+        self._t_trial = -math.inf
+        self._work[:] = self._work0
+        self._sample_t.clear()
+        self._sample_rows.clear()
+        self._next_sample = t + self.sampleInterval
+        self._evaluations = 0
+        self._wall = 0.0
+        for a in (self._fr, self._glob, self._diag, self._cage_load, self._out):
+            a[...] = 0.0
+        if self.mode == "fast":
+            self._clock[:] = [math.nan, t, t + self.sampleInterval, False, 0]
+
+    def _check_run(self, t):
+        """Start a new run (:meth:`_new_run`) if ``t`` is the first time of a
+        new SolveDynamic; for the sensors, which Exudyn evaluates at the start
+        time before the first force evaluation."""
+        if self._sys.get("dynamicSolver") is not self._run[0] or t <= self._run[1] + _T_EPS:
+            self._new_run(t, self._clock[0] if self.mode == "fast" else self._t_trial)
+
     def _force_uf(self, mbs, t, itemNumber, q, q_t):
         t0 = time.perf_counter()
+        run = self._run
+        if self._sys.get("dynamicSolver") is not run[0] or t <= run[1] + _T_EPS:
+            self._new_run(t, self._t_trial)
         for r, f in self._speeds:
             self._ring_data[r, EK.RD_SPIN] = f(t)
         # Cundall-Strack history: commit the last trial state when time advances
         if t > self._t_trial:
-            if self._t_trial >= 0.0:
+            if self._t_trial > -math.inf:
                 self._hist[:] = self._hist_trial
                 self._t_commit = self._t_trial
             self._t_trial = t
@@ -69,8 +137,9 @@ class UserFunctionsMixin:
         hist, hz, fr, glob, diag, cload, out = (self._hist, self._hz, self._fr, self._glob, self._diag,
                                                 self._cage_load, self._out)
         speeds, dt_sub, max_overlap, spin = self._speeds, self._dt_sub, self._max_overlap, EK.RD_SPIN
-        clock = self._clock  # [t of the last Exudyn evaluation (nan: none yet), tau, next sample, step checked]
-        stats = self._fast_stats = [0, 0.0]  # ball sub-steps taken, wall seconds in this function
+        # [t of the last Exudyn evaluation (nan: none yet), tau, next sample, step checked, Exudyn steps]
+        clock = self._clock
+        run, sysd, new_run = self._run, self._sys, self._new_run
         asarray = np.asarray
         perf_counter = time.perf_counter
         step = _entry_point(EK.fast_step, (asarray(np.zeros(1)), asarray(np.zeros(1)), ref, params, table, kind,
@@ -98,14 +167,18 @@ class UserFunctionsMixin:
                              rings_sub, hist, hz, fr, glob, diag, cload, want, out)
                 clock[0] = t
                 clock[1] = t_end
+                clock[4] += 1
                 if not worst <= max_overlap:  # also catches NaN
                     self._check_worst(worst, t)
                 if want:
                     self._sample(t_end, rings_sub)
                     clock[2] = self._next_sample
-                stats[0] += n_sub
-                stats[1] += perf_counter() - t0
+                self._wall += perf_counter() - t0
                 return out
+            # a new SolveDynamic starts at or before the last time (a run that starts later continues this one)
+            if sysd.get("dynamicSolver") is not run[0] or t <= run[1] + 1e-12:
+                new_run(t, t_int)
+                t_int = clock[0]
             if t_int != t_int:
                 # first evaluation: forces at the initial state, nothing to integrate yet
                 EK.ring_poses_from(q, q_t, ref, kind, rdata, rings)
@@ -114,12 +187,14 @@ class UserFunctionsMixin:
                 rings0[:] = rings
                 clock[0] = clock[1] = t
             elif t < t_int - 1e-15:
-                raise RuntimeError("mode: the fast mode integrates the balls forward in time and needs an explicit "
-                                   "fixed-step solver (VelocityVerlet, or RK44 with friction='regularized')")
+                raise InputError(f"mode: an evaluation at t = {t:.9g} s after one at {t_int:.9g} s; the fast mode "
+                                 "integrates the balls forward in time and needs an explicit fixed-step solver "
+                                 "(VelocityVerlet, or RK44 with friction='regularized'); a new SolveDynamic starts "
+                                 "at the first run's start time (restart) or at its end time (continuation)")
             # no time advance: the last reactions at the current ring poses
             step(q, q_t, ref, params, table, kind, rdata, 0, clock[1], t, t, work, rings0, rings, rings_sub, hist,
                  hz, fr, glob, diag, cload, False, out)
-            stats[1] += perf_counter() - t0
+            self._wall += perf_counter() - t0
             return out
 
         return force_uf_fast
@@ -153,7 +228,7 @@ class UserFunctionsMixin:
         if not math.isfinite(worst) or worst > self._max_overlap:
             ring = (f" and the ring bodies' {self.ringStableStep:.3g} s for the fast mode's Exudyn step (subSteps * "
                     "stepSize)" if self.mode == "fast" and math.isfinite(self.ringStableStep) else "")
-            raise RuntimeError(
+            raise SimulationError(
                 f"stepSize: the bearing state became non-finite or runaway at t = {t:.6g} s; the stable-step "
                 f"estimate is {self.stable.dt:.3g} s (limited by the {self.stable.limited_by} contact){ring}: "
                 "reduce the solver step")

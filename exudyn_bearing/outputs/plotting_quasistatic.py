@@ -1,0 +1,85 @@
+"""Figures of the quasi-static solver (matplotlib, Agg), each a PNG with its CSV beside it."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+from .plotting import _pyplot, label_azimuth_axes, save_figure
+
+__all__ = ["plot_loads_angles", "plot_slip", "plot_dissipation_beta"]
+
+
+def _azimuth_deg(psi):
+    d = (np.degrees(np.asarray(psi, float)) + 180.0) % 360.0 - 180.0
+    return d, np.argsort(d)
+
+
+def plot_loads_angles(solutions: dict, png) -> Path:
+    """Contact loads and contact angles of both races against azimuth, one line style per solution.
+
+    ``solutions`` maps a label to a QuasiStaticSolution (or its ``to_dict()``).
+    """
+    plt = _pyplot()
+    png = Path(png)
+    png.parent.mkdir(parents=True, exist_ok=True)
+    fig, ax = plt.subplots(1, 2, figsize=(11.5, 4.3))
+    cols = {}
+    for i, (label, s) in enumerate(solutions.items()):
+        d = s.to_dict() if hasattr(s, "to_dict") else s
+        az, order = _azimuth_deg(np.radians(d["psi"]))
+        for race, ls in (("inner", "-o"), ("outer", "--s")):
+            ax[0].plot(az[order], np.asarray(d[f"q_{race}"])[order], ls, color=f"C{i}", ms=4, label=f"{label}: {race}")
+            ax[1].plot(az[order], np.asarray(d[f"alpha_{race}"])[order], ls, color=f"C{i}", ms=4,
+                       label=f"{label}: {race}")
+            key = label.replace(" ", "_")
+            cols[f"{key}_q_{race}_N"] = np.asarray(d[f"q_{race}"])[order]
+            cols[f"{key}_alpha_{race}_deg"] = np.asarray(d[f"alpha_{race}"])[order]
+        cols[f"{label.replace(' ', '_')}_psi_deg"] = az[order]
+    label_azimuth_axes(ax, ("contact load Q [N]", "contact angle alpha [deg]"), legend_fontsize=7)
+    return save_figure(fig, png, cols, trim=True)
+
+
+def plot_slip(solutions: dict, png, ball=0) -> Path:
+    """Rolling-direction slip along the major axis of both contacts of one ball, per solution."""
+    plt = _pyplot()
+    png = Path(png)
+    png.parent.mkdir(parents=True, exist_ok=True)
+    fig, ax = plt.subplots(1, 2, figsize=(11.5, 4.3))
+    cols = {}
+    for i, (label, s) in enumerate(solutions.items()):
+        d = s.to_dict() if hasattr(s, "to_dict") else s
+        y = np.asarray(d["slip_y"])
+        for k, race in enumerate(("outer", "inner")):
+            v = np.asarray(d[f"slip_{race}"])[ball]
+            ax[k].plot(y, v, "-", color=f"C{i}", label=f"{label} (beta {np.asarray(d['beta'])[ball]:.2f} deg)")
+            cols[f"{label.replace(' ', '_')}_slip_{race}_m_s"] = v
+        cols["y_over_a"] = y
+    for k, race in enumerate(("outer", "inner")):
+        ax[k].axhline(0.0, color="k", lw=0.8)
+        ax[k].set_xlabel("y / a along the major axis [-]")
+        ax[k].set_ylabel("slip of the ball against the race [m/s]")
+        ax[k].set_title(f"{race} contact, ball {ball}")
+        ax[k].grid(alpha=0.3)
+        ax[k].legend(fontsize=7)
+    return save_figure(fig, png, cols)
+
+
+def plot_dissipation_beta(beta_deg, dissipation, points: dict, png, title="") -> Path:
+    """Least dissipation against the spin-axis angle beta, with marked solution points.
+
+    ``points`` maps a label to (beta [deg], dissipation [W]).
+    """
+    plt = _pyplot()
+    png = Path(png)
+    png.parent.mkdir(parents=True, exist_ok=True)
+    fig, ax = plt.subplots(figsize=(6.5, 4.3))
+    ax.plot(beta_deg, dissipation, "-", color="C0", label="least dissipation at fixed beta")
+    for i, (label, (bb, q)) in enumerate(points.items()):
+        ax.plot([bb], [q], "o^sD"[i % 4], color=f"C{i + 1}", ms=8, label=f"{label}: {q:.4g} W at {bb:.2f} deg")
+    ax.set_xlabel("spin-axis angle beta [deg]")
+    ax.set_ylabel("dissipation of one ball, both contacts [W]")
+    ax.set_title(title, fontsize=9)
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=7)
+    return save_figure(fig, png, {"beta_deg": beta_deg, "dissipation_W": dissipation})

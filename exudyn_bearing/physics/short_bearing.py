@@ -1,0 +1,250 @@
+"""Stiffness and damping of a lubricant film by the short-bearing theory.
+
+El Had et al. [1]_ (their eqs. 5-6) give the film stiffness k and damping C
+of the ball-race contacts of their 3-DOF bearing model as functions of one
+eccentricity ratio eps_0 = 1 - h/c (film thickness h, clearance c). Their
+brackets are the direct coefficients, along the load line, of Ocvirk's
+short journal bearing [2]_ (pressure-positive half of the film, L/D -> 0),
+made dimensionless with the load W, the clearance c and the journal speed
+omega::
+
+    k_bar = k c / W   = (4 / W_bar) [ eps/(1-eps^2)^2 sin^2 phi
+                          + 3 pi eps^2 / (4 (1-eps^2)^(5/2)) sin phi cos phi
+                          + 2 eps (1+eps^2)/(1-eps^2)^3 cos^2 phi ]           (5)
+    C_bar = C c w / W = (4 / W_bar) [ pi / (2 (1-eps^2)^(3/2)) sin^2 phi
+                          + 4 eps/(1-eps^2)^2 sin phi cos phi
+                          + pi (1+2 eps^2) / (2 (1-eps^2)^(5/2)) cos^2 phi ]  (6)
+
+    W_bar = eps sqrt(16 eps^2 + pi^2 (1-eps^2)) / (1-eps^2)^2,
+    tan phi = pi sqrt(1-eps^2) / (4 eps)         (attitude angle phi)
+
+W_bar is the short bearing's load number, W = W_bar mu omega R L^3/(4 c^2)
+(viscosity mu, journal radius R, length L). In polar coordinates along and
+across the line of centres, the radial force of the short bearing is
+proportional to eps^2/(1-eps^2)^2 and the tangential one to
+pi eps/(4 (1-eps^2)^(3/2)); the three stiffness terms are their derivatives
+(d/d eps of the radial force, the radial force over eps, the sum of the two
+cross derivatives), the three damping terms the squeeze-film integrals
+int cos^2, sin cos, sin^2 / (1 + eps cos theta)^3 over the film, each turned
+onto the load line at phi from the line of centres. Both are identical to
+the closed forms of the load-direction coefficients quoted by Friswell et
+al. [3]_ (with h_0 = (pi^2 (1-eps^2) + 16 eps^2)^(-3/2))::
+
+    k_bar = 4 h_0 [pi^2 + (32 + pi^2) eps^2 + (32 - 2 pi^2) eps^4] / (1 - eps^2)
+    C_bar = 2 pi h_0 [pi^2 + 2 (24 - pi^2) eps^2 + pi^2 eps^4] / (eps sqrt(1 - eps^2))
+
+Correction of the source: it prints the prefactor 4/(W_r lambda_k^2) as
+(1-eps^2)^2 / (eps [16 eps^2 + pi^2 (1-eps^2)]^(1/2)) cos^2 phi, i.e.
+without the 4 and with a stray cos^2 phi; with that factor the coefficients
+are cos^2 phi / 4 times the short-bearing ones (0.088 at eps = 0.5). The
+functions here use 4 / W_bar; ``printed_prefactor=True`` gives the printed
+version for comparison.
+
+Nomenclature: eps_0 -> ``eccentricity``, h -> ``film_thickness`` [m],
+c -> ``clearance`` [m] (radial clearance of the journal analogy, so that
+h = c (1 - eps_0) is the smallest film), W -> ``load`` [N], omega ->
+``omega`` [rad/s].
+
+References
+----------
+.. [1] K. El Had, A. Hachim, A. Chouairi, M. El Ghorba, "Improved analytical
+   approach of vibration behavior destined to ball bearings in the case of
+   angular contact," Rev. Energy Technol. Policy Res. 1(2) (2014) 56-68.
+   doi:10.18488/journal.77/2014.1.2/77.2.56.68
+.. [2] F. W. Ocvirk, "Short-bearing approximation for full journal
+   bearings," NACA Technical Note 2808, 1952.
+.. [3] M. I. Friswell, J. E. T. Penny, S. D. Garvey, A. W. Lees, Dynamics of
+   Rotating Machines, Cambridge University Press, 2010, ch. 5 (short
+   journal bearing coefficients).
+.. [4] J. W. Lund, "Review of the concept of dynamic coefficients for fluid
+   film journal bearings," J. Tribol. 109(1) (1987) 37-41. doi:10.1115/1.3261324
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from ..data import InputError
+
+__all__ = ["film_eccentricity", "short_bearing_attitude_angle", "short_bearing_load_number",
+           "short_bearing_stiffness", "short_bearing_damping", "film_coefficients"]
+
+
+def _eps(eccentricity):
+    e = np.asarray(eccentricity, dtype=float)
+    if not np.all(np.isfinite(e)) or np.any(e <= 0.0) or np.any(e >= 1.0):
+        raise InputError(f"eccentricity: must lie in (0, 1), got {eccentricity!r}")
+    return e
+
+
+def film_eccentricity(film_thickness, clearance):
+    """Eccentricity ratio eps_0 = 1 - h/c of a film of thickness h in a
+    clearance c [-] (El Had et al. [1]_; journal-bearing geometry
+    h_min = c (1 - eps) [2]_).
+
+    Parameters
+    ----------
+    film_thickness : float or ndarray
+        Smallest film thickness h [m], 0 < h < c.
+    clearance : float or ndarray
+        Radial clearance c [m] (half the diametral clearance).
+
+    Returns
+    -------
+    float or ndarray [-] in (0, 1)
+
+    Examples
+    --------
+    >>> round(float(film_eccentricity(0.3e-6, 6.25e-6)), 3)
+    0.952
+    """
+    h = np.asarray(film_thickness, dtype=float)
+    c = np.asarray(clearance, dtype=float)
+    if not np.all(np.isfinite(c)) or np.any(c <= 0.0):
+        raise InputError(f"clearance: must be finite and > 0 (a film needs a clearance), got {clearance!r}")
+    if not np.all(np.isfinite(h)) or np.any(h <= 0.0):
+        raise InputError(f"film_thickness: must be finite and > 0, got {film_thickness!r}")
+    if np.any(h >= c):
+        raise InputError(f"film_thickness: h = {film_thickness!r} m is not smaller than the clearance "
+                         f"c = {clearance!r} m (eccentricity 1 - h/c would be <= 0)")
+    return 1.0 - h / c
+
+
+def short_bearing_attitude_angle(eccentricity):
+    """Attitude angle phi of the short bearing, between the load line and the
+    line of centres [rad]: tan phi = pi sqrt(1 - eps^2) / (4 eps) [2]_ [1]_.
+
+    Examples
+    --------
+    >>> round(float(np.degrees(short_bearing_attitude_angle(0.5))), 2)
+    53.68
+    """
+    e = _eps(eccentricity)
+    return np.arctan2(np.pi * np.sqrt(1.0 - e * e), 4.0 * e)
+
+
+def short_bearing_load_number(eccentricity):
+    """Load number W_bar = eps sqrt(16 eps^2 + pi^2 (1 - eps^2)) / (1 - eps^2)^2
+    of the short bearing [-]: W = W_bar mu omega R L^3 / (4 c^2) [2]_.
+
+    Examples
+    --------
+    >>> round(float(short_bearing_load_number(0.5)), 4)
+    3.0015
+    """
+    e = _eps(eccentricity)
+    s = 1.0 - e * e
+    return e * np.sqrt(16.0 * e * e + np.pi ** 2 * s) / (s * s)
+
+
+def _prefactor(e, printed_prefactor):
+    if printed_prefactor:
+        # the source's printed form of 4/(W_r lambda_k^2): no 4, a stray cos^2(phi)
+        return np.cos(short_bearing_attitude_angle(e)) ** 2 / short_bearing_load_number(e)
+    return 4.0 / short_bearing_load_number(e)
+
+
+def short_bearing_stiffness(eccentricity, printed_prefactor=False):
+    """Film stiffness along the load line, k_bar = k c / W [-] (El Had et al.
+    [1]_ eq. 5 with the corrected prefactor 4 / W_bar; short bearing [2]_ [3]_).
+
+    Parameters
+    ----------
+    eccentricity : float or ndarray
+        eps_0 in (0, 1).
+    printed_prefactor : bool
+        Use the source's printed prefactor (module docstring) instead of
+        4 / W_bar; for comparison only.
+
+    Returns
+    -------
+    float or ndarray [-]; the stiffness is k = k_bar W / c [N/m].
+
+    Notes
+    -----
+    Equation (5) of the module docstring; equal to
+    4 h_0 [pi^2 + (32 + pi^2) eps^2 + (32 - 2 pi^2) eps^4] / (1 - eps^2) [3]_.
+
+    Examples
+    --------
+    >>> round(float(short_bearing_stiffness(0.5)), 4)
+    2.9233
+    """
+    e = _eps(eccentricity)
+    s = 1.0 - e * e
+    phi = short_bearing_attitude_angle(e)
+    sn, cs = np.sin(phi), np.cos(phi)
+    bracket = (e / s ** 2 * sn * sn + 3.0 * np.pi * e * e / (4.0 * s ** 2.5) * sn * cs
+               + 2.0 * e * (1.0 + e * e) / s ** 3 * cs * cs)
+    return _prefactor(e, printed_prefactor) * bracket
+
+
+def short_bearing_damping(eccentricity, printed_prefactor=False):
+    """Film damping along the load line, C_bar = C c omega / W [-] (El Had
+    et al. [1]_ eq. 6 with the corrected prefactor 4 / W_bar; short bearing
+    [2]_ [3]_).
+
+    Parameters
+    ----------
+    eccentricity : float or ndarray
+        eps_0 in (0, 1).
+    printed_prefactor : bool
+        Use the source's printed prefactor instead of 4 / W_bar.
+
+    Returns
+    -------
+    float or ndarray [-]; the damping is C = C_bar W / (c omega) [N s/m].
+
+    Notes
+    -----
+    Equation (6) of the module docstring; equal to
+    2 pi h_0 [pi^2 + 2 (24 - pi^2) eps^2 + pi^2 eps^4] / (eps sqrt(1 - eps^2)) [3]_.
+
+    Examples
+    --------
+    >>> round(float(short_bearing_damping(0.5)), 4)
+    6.6148
+    """
+    e = _eps(eccentricity)
+    s = 1.0 - e * e
+    phi = short_bearing_attitude_angle(e)
+    sn, cs = np.sin(phi), np.cos(phi)
+    bracket = (np.pi / (2.0 * s ** 1.5) * sn * sn + 4.0 * e / s ** 2 * sn * cs
+               + np.pi * (1.0 + 2.0 * e * e) / (2.0 * s ** 2.5) * cs * cs)
+    return _prefactor(e, printed_prefactor) * bracket
+
+
+def film_coefficients(eccentricity, load, clearance, omega, printed_prefactor=False):
+    """Dimensional film stiffness k = k_bar W / c [N/m] and damping
+    C = C_bar W / (c omega) [N s/m] along the load line [1]_ [4]_.
+
+    Parameters
+    ----------
+    eccentricity : float or ndarray
+        eps_0 in (0, 1).
+    load : float or ndarray
+        Load W carried by the film [N] (> 0).
+    clearance : float or ndarray
+        Radial clearance c [m] (> 0).
+    omega : float or ndarray
+        Journal speed of the normalisation [rad/s] (> 0).
+    printed_prefactor : bool
+        As :func:`short_bearing_stiffness`.
+
+    Returns
+    -------
+    (k [N/m], C [N s/m])
+
+    Examples
+    --------
+    >>> k, c = film_coefficients(0.5, 100.0, 1e-5, 100.0)
+    >>> round(float(k) / 1e7, 4), round(float(c) / 1e5, 4)
+    (2.9233, 6.6148)
+    """
+    w = np.asarray(load, dtype=float)
+    c = np.asarray(clearance, dtype=float)
+    om = np.asarray(omega, dtype=float)
+    for name, v, given in (("load", w, load), ("clearance", c, clearance), ("omega", om, omega)):
+        if not np.all(np.isfinite(v)) or np.any(v <= 0.0):
+            raise InputError(f"{name}: must be finite and > 0, got {given!r}")
+    return (short_bearing_stiffness(eccentricity, printed_prefactor) * w / c,
+            short_bearing_damping(eccentricity, printed_prefactor) * w / (c * om))

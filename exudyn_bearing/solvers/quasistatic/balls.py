@@ -1,0 +1,220 @@
+"""Ball equilibrium (compiled): every ball's position and contact loads for an
+inner-ring pose, and the generalized force the balls put on the ring.
+
+Per ball (Jones [1]_, Harris & Kotzalas [2]_), in the ball's (r, z) plane at
+azimuth psi: outer groove centre p_o (fixed ring), inner groove centre
+p_i(psi) moved by the ring pose u = (dx, dy, dz, theta_x, theta_y) with the
+small-displacement kinematics
+
+    Delta r = dx cos psi + dy sin psi + z_i (theta_y cos psi - theta_x sin psi)
+    Delta z = dz + rho_i (theta_x sin psi - theta_y cos psi)
+
+and the ball centre c solves the two force equations
+
+    -Q_o n_o - Q_i n_i + m omega_m^2 r_c e_r + F_to t_o + F_ti t_i = 0
+
+with n_k = (c - p_k)/|c - p_k| (groove centre to ball centre), overlaps
+delta_k = |c - p_k| - (R_ck - R_b), Q_k = K_k delta_k^(3/2) (exact Hertz
+constant at the contact's angle, curvature radii taken at the undeformed
+contact points as in :func:`exudyn_bearing.physics.load_distribution.static_equilibrium`),
+t_k = e_psi x n_k = (n_z, -n_r) the in-plane tangent and F_tk the traction
+that carries the gyroscopic moment (:mod:`.kinematics`). The centrifugal
+force acts at the ball's actual orbit radius r_c. Newton's method with the
+analytic Jacobian; at zero speed the start (loads equal along the groove
+centre line, overlaps split by stiffness) is already the solution.
+
+The ring gets -(the forces on the ball at the inner contact); its
+generalized force is J^T f with J the matrix of the kinematics above (exact
+conjugate of u, so the zero-speed stiffness is symmetric).
+
+References
+----------
+.. [1] A. B. Jones, "A general theory of elastically constrained ball and
+   roller bearings under arbitrary load and speed conditions," J. Basic Eng.
+   82 (1960) 309-320. doi:10.1115/1.3662587
+.. [2] T. A. Harris and M. N. Kotzalas, Rolling Bearing Analysis, 5th ed.,
+   CRC Press, 2006, Advanced Concepts ch. 'High-speed operation'.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..._jit import kernel
+from ...physics import hertz as _hz
+from ...physics.geometry import _raceway_radii_cos
+
+__all__ = ["BALL_FIELDS", "ring_forces"]
+
+#: Columns of the per-ball result array of :func:`ring_forces`.
+BALL_FIELDS = ("c_r", "c_z", "q_o", "q_i", "delta_o", "delta_i", "no_r", "no_z", "ni_r", "ni_z", "k_o", "k_i",
+               "converged")
+(B_CR, B_CZ, B_QO, B_QI, B_DO, B_DI, B_NOR, B_NOZ, B_NIR, B_NIZ, B_KO, B_KI, B_OK) = range(len(BALL_FIELDS))
+NB = len(BALL_FIELDS)
+
+
+@kernel
+def _contact_constants(por, rco, rb, rci, nor, nir, e_prime, method):
+    """Hertz constants K_o, K_i [N/m^1.5] at the contact angles given by the normals
+    (curvature radii at the undeformed contact points, ball centre at its
+    groove-centre distance from the outer groove)."""
+    r_ref = por + (rco - rb) * nor
+    ca_o = nor if nor > 1e-12 else 1e-12
+    ca_i = -nir if -nir > 1e-12 else 1e-12
+    rxo, ryo = _raceway_radii_cos(rb, rco, r_ref + rb * ca_o, ca_o, False)
+    rxi, ryi = _raceway_radii_cos(rb, rci, r_ref - rb * ca_i, ca_i, True)
+    ko = _hz._hertz(rxo, ryo, e_prime, 0.0, method)[1]
+    ki = _hz._hertz(rxi, ryi, e_prime, 0.0, method)[1]
+    return ko, ki
+
+
+@kernel
+def _ball_equilibrium(pir, piz, por, poz, rci, rco, rb, m_w2, fto, fti, e_prime, method, out):
+    """Solve one ball; writes the fields of BALL_FIELDS into ``out``."""
+    lo0 = rco - rb
+    li0 = rci - rb
+    dr = pir - por
+    dz = piz - poz
+    dist = math.sqrt(dr * dr + dz * dz)
+    er = dr / dist
+    ez = dz / dist
+    ko, ki = _contact_constants(por, rco, rb, rci, er, -er, e_prime, method)
+    total = dist - lo0 - li0
+    if total > 0.0:
+        wo = ki ** (2.0 / 3.0)
+        wi = ko ** (2.0 / 3.0)
+        d_o = total * wo / (wo + wi)
+        cr = por + (lo0 + d_o) * er
+        cz = poz + (lo0 + d_o) * ez
+    elif m_w2 > 0.0:
+        d_o = (m_w2 * por / ko) ** (2.0 / 3.0)
+        cr = por + lo0 + d_o
+        cz = poz
+    else:  # unloaded, nothing presses it: middle of the gap on the line
+        cr = por + (lo0 + 0.5 * total) * er
+        cz = poz + (lo0 + 0.5 * total) * ez
+        for k in range(NB):
+            out[k] = 0.0
+        out[B_CR] = cr
+        out[B_CZ] = cz
+        out[B_DO] = 0.5 * total
+        out[B_DI] = 0.5 * total
+        out[B_NOR] = er
+        out[B_NOZ] = ez
+        out[B_NIR] = -er
+        out[B_NIZ] = -ez
+        out[B_KO] = ko
+        out[B_KI] = ki
+        out[B_OK] = 1.0
+        return
+    scale = 1e-9 * (ko + ki) * (1e-6 * rb) ** 1.5 + 1e-300
+    ok = 0.0
+    step_max = 0.02 * rb
+    qo = qi = 0.0
+    nor = noz = nir = niz = 0.0
+    do = di = 0.0
+    for it in range(80):
+        # outer contact
+        ar = cr - por
+        az = cz - poz
+        lo = math.sqrt(ar * ar + az * az)
+        nor = ar / lo
+        noz = az / lo
+        do = lo - lo0
+        # inner contact
+        br = cr - pir
+        bz = cz - piz
+        li = math.sqrt(br * br + bz * bz)
+        nir = br / li
+        niz = bz / li
+        di = li - li0
+        # Hertz constants at the current contact angles (stale ones would make the converged state
+        # depend on the iteration history)
+        ko, ki = _contact_constants(por, rco, rb, rci, nor, nir, e_prime, method)
+        qo = ko * do * math.sqrt(do) if do > 0.0 else 0.0
+        qi = ki * di * math.sqrt(di) if di > 0.0 else 0.0
+        kqo = 1.5 * ko * math.sqrt(do) if do > 0.0 else 0.0
+        kqi = 1.5 * ki * math.sqrt(di) if di > 0.0 else 0.0
+        # residual: forces on the ball
+        rr = -qo * nor - qi * nir + m_w2 * cr + fto * noz + fti * niz
+        rz = -qo * noz - qi * niz - fto * nor - fti * nir
+        if abs(rr) + abs(rz) <= 1e-13 * (qo + qi + m_w2 * cr + abs(fto) + abs(fti)) + scale:
+            ok = 1.0
+            break
+        # Jacobian d(residual)/dc
+        go = qo / lo
+        gi = qi / li
+        j11 = -(kqo * nor * nor + go * (1.0 - nor * nor)) - (kqi * nir * nir + gi * (1.0 - nir * nir)) + m_w2
+        j12 = -(kqo * nor * noz - go * nor * noz) - (kqi * nir * niz - gi * nir * niz)
+        j22 = -(kqo * noz * noz + go * (1.0 - noz * noz)) - (kqi * niz * niz + gi * (1.0 - niz * niz))
+        # tangential forces turn with the normals: d t/dc = R90 (I - n n^T)/|c - p|, R90 = [[0, 1], [-1, 0]]
+        fo = fto / lo
+        fi = fti / li
+        j11 += fo * (-noz * nor) + fi * (-niz * nir)
+        j12 += fo * (1.0 - noz * noz) + fi * (1.0 - niz * niz)
+        j21 = -(kqo * nor * noz - go * nor * noz) - (kqi * nir * niz - gi * nir * niz) \
+            - fo * (1.0 - nor * nor) - fi * (1.0 - nir * nir)
+        j22 += fo * (nor * noz) + fi * (nir * niz)
+        det = j11 * j22 - j12 * j21
+        if det == 0.0:
+            break
+        sr = -(j22 * rr - j12 * rz) / det
+        sz = -(-j21 * rr + j11 * rz) / det
+        norm = math.sqrt(sr * sr + sz * sz)
+        if norm > step_max:
+            sr *= step_max / norm
+            sz *= step_max / norm
+        cr += sr
+        cz += sz
+        if norm < 1e-17:
+            ok = 1.0
+            break
+    out[B_CR] = cr
+    out[B_CZ] = cz
+    out[B_QO] = qo
+    out[B_QI] = qi
+    out[B_DO] = do
+    out[B_DI] = di
+    out[B_NOR] = nor
+    out[B_NOZ] = noz
+    out[B_NIR] = nir
+    out[B_NIZ] = niz
+    out[B_KO] = ko
+    out[B_KI] = ki
+    out[B_OK] = ok
+
+
+@kernel
+def _ring_forces(u, psi, rho_i, z_i, rho_o, z_o, rci, rco, rb, m_w2, fto, fti, e_prime, method, balls, gen):
+    """All balls for the ring pose u (5,); per-ball results into ``balls`` (Z, NB),
+    generalized force of the balls on the ring into ``gen`` (5,)."""
+    for k in range(5):
+        gen[k] = 0.0
+    for j in range(psi.size):
+        c = math.cos(psi[j])
+        s = math.sin(psi[j])
+        pir = rho_i + u[0] * c + u[1] * s + z_i * (u[4] * c - u[3] * s)
+        piz = z_i + u[2] + rho_i * (u[3] * s - u[4] * c)
+        _ball_equilibrium(pir, piz, rho_o, z_o, rci, rco, rb, m_w2[j], fto[j], fti[j], e_prime, method, balls[j])
+        q = balls[j, B_QI]
+        nr = balls[j, B_NIR]
+        nz = balls[j, B_NIZ]
+        # force of the ball on the ring: +Q_i n_i - F_ti t_i, t_i = (n_z, -n_r)
+        fr = q * nr - fti[j] * nz
+        fz = q * nz + fti[j] * nr
+        gen[0] += fr * c
+        gen[1] += fr * s
+        gen[2] += fz
+        gen[3] += -z_i * s * fr + rho_i * s * fz
+        gen[4] += z_i * c * fr - rho_i * c * fz
+
+
+def ring_forces(u, psi, geom, m_w2, fto, fti, e_prime, method):
+    """Python wrapper of the compiled ball loop: (generalized force (5,), balls (Z, NB))."""
+    z = psi.size
+    balls = np.zeros((z, NB))
+    gen = np.zeros(5)
+    _ring_forces(np.asarray(u, float), psi, geom.rho_i, geom.z_i, geom.rho_o, geom.z_o, geom.r_ci, geom.r_co,
+                 geom.r_b, m_w2, fto, fti, e_prime, method, balls, gen)
+    return gen, balls

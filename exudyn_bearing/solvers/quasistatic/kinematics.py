@@ -1,0 +1,239 @@
+"""Ball kinematics on a solved contact geometry: race control (Jones) and the
+minimum-energy hypothesis (Gupta), with the slip, traction and dissipation of
+both contacts.
+
+Frame: the ball's orbit frame, turning with the ball's orbital speed
+omega_m about the bearing axis, in which the ball centre c = (c_r, c_z) is at
+rest. Unknowns per ball: omega_m and the ball's angular velocity w = (w_r,
+w_z) in that frame (no yaw: w lies in the ball's (r, z) plane); the spin-axis
+angle to the bearing axis is beta = atan2(-sigma w_r, sigma w_z), sigma =
+sign(w_z) (beta = alpha when w is perpendicular to a contact line at alpha).
+A race k turns at Omega_k = omega_k - omega_m in this frame.
+
+Contact k (normal n_k from its groove centre to c, contact centre X_k = c +
+R_b n_k, in-plane tangent t_k = (n_z, -n_r)): the slip of the ball against
+the race along the rolling direction e_psi, at a distance y along t_k on
+the pressed surface of radius R_d (:func:`~exudyn_bearing.physics.contact_slip.deformed_contact_radius`) is
+
+    v_x(y) = v0 + omega_s y + omega_roll y^2 / (2 R_d)
+    v0 = R_b (w_z n_r - w_r n_z) - Omega_k X_r
+    omega_s = (w - Omega_k e_z) . n_k          spin about the normal
+    omega_roll = (w - Omega_k e_z) . t_k       rolling angular speed
+
+(rigid-body velocities of ball and race at the same point of the pressed
+surface; Harris & Kotzalas [2]_), handed to
+:func:`exudyn_bearing.physics.contact_slip._contact_traction` as v0, w_n =
+-omega_s (its e_z is -n_k), c2 = omega_roll / (2 R_d), with the rolling
+speed u = |ball + race surface speed| / 2 at the centre.
+
+* **Race control** (Jones [1]_): pure rolling at both contact centres
+  (v0_o = v0_i = 0) and no spin at the controlling race (omega_s = 0
+  there): three linear equations in (omega_m, w_r, w_z). ``"auto"`` picks
+  the race by Jones' criterion on the Coulomb spin moments: outer control if
+  Q_o a_o E(e_o) cos(alpha_o - alpha_i) > Q_i a_i E(e_i) (Harris & Kotzalas
+  [2]_). The gyroscopic moment is carried by traction at the controlling race.
+* **Minimum energy** (Gupta [3]_): the kinematics that minimise the total
+  dissipation P_o + P_i of the two contacts for the traction model, the
+  contact loads and ellipses held fixed. Gupta scans the pure-rolling points
+  x1 (outer), x2 (inner) and beta; x1, x2, beta and (omega_m, w_r, w_z) map
+  one-to-one where pure-rolling points exist, and the velocities have no
+  double root (two pure-rolling points on one contact give the same
+  motion), so the minimisation runs over the velocities (scipy Nelder-Mead
+  from the race-control point) and reports x1, x2, beta of the result. The
+  minimum is checked by a finite-difference Hessian and by its six
+  neighbours. The gyroscopic moment is split equally between the races
+  (Harris' lambda_o = lambda_i = 1 when no race controls).
+
+References
+----------
+.. [1] A. B. Jones, "Ball motion and sliding friction in ball bearings,"
+   J. Basic Eng. 81 (1959) 1-12. doi:10.1115/1.4008346
+.. [2] T. A. Harris and M. N. Kotzalas, Rolling Bearing Analysis, 5th ed.,
+   CRC Press, 2006, Advanced Concepts ch. 'High-speed operation' and
+   'Friction in rolling element-raceway contacts'.
+.. [3] P. K. Gupta, "Minimum energy hypothesis in quasi-static equilibrium
+   solutions for angular contact ball bearings," Tribol. Trans. (2020).
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from scipy import optimize
+
+from ..._jit import kernel
+from ...physics.contact_slip import _contact_traction, pure_rolling_points, spin_moment_coulomb
+
+__all__ = ["CONTROLS", "GEO_FIELDS", "CONTACT_FIELDS", "race_control", "jones_outer_controls", "ball_contacts",
+           "minimum_energy", "dissipation_at_beta", "spin_axis_angle", "rolling_points"]
+
+#: Kinematic hypotheses.
+CONTROLS = ("outer", "inner", "auto", "min-energy")
+#: Entries of the packed per-ball geometry vector ``geo``.
+GEO_FIELDS = ("omega_o", "omega_i", "c_r", "c_z", "no_r", "no_z", "ni_r", "ni_z", "r_b", "rd_o", "rd_i",
+              "a_o", "b_o", "q_o", "a_i", "b_i", "q_i", "hc_o", "hm_o", "hc_i", "hm_i")
+(G_WO, G_WI, G_CR, G_CZ, G_NOR, G_NOZ, G_NIR, G_NIZ, G_RB, G_RDO, G_RDI, G_AO, G_BO, G_QO, G_AI, G_BI, G_QI,
+ G_HCO, G_HMO, G_HCI, G_HMI) = range(len(GEO_FIELDS))
+#: Per-contact results of :func:`ball_contacts` (row 0 outer, row 1 inner).
+CONTACT_FIELDS = ("v0", "w_n", "c2", "u", "spin", "roll", "f_x", "f_y", "m_z", "dissipation", "qv")
+NC = len(CONTACT_FIELDS)
+
+
+@kernel
+def _slip_inputs(w_r, w_z, omega_m, omega_ring, cr, nr, nz, rb, rd):
+    big = omega_ring - omega_m
+    x0r = cr + rb * nr
+    ball = rb * (w_z * nr - w_r * nz)
+    race = big * x0r
+    spin = w_r * nr + w_z * nz - big * nz
+    roll = w_r * nz - (w_z - big) * nr
+    return ball - race, -spin, roll / (2.0 * rd), 0.5 * abs(ball + race), spin, roll
+
+
+@kernel
+def _ball_contacts(omega_m, w_r, w_z, geo, code, params, n_strips, n_across, out):
+    """Slip and traction of both contacts of one ball; rows of ``out`` (2, NC):
+    outer, inner. Returns the total dissipation [W]."""
+    total = 0.0
+    for k in range(2):
+        if k == 0:
+            wring, nr, nz, rd, a, b, q, hc, hm = (geo[G_WO], geo[G_NOR], geo[G_NOZ], geo[G_RDO], geo[G_AO],
+                                                  geo[G_BO], geo[G_QO], geo[G_HCO], geo[G_HMO])
+        else:
+            wring, nr, nz, rd, a, b, q, hc, hm = (geo[G_WI], geo[G_NIR], geo[G_NIZ], geo[G_RDI], geo[G_AI],
+                                                  geo[G_BI], geo[G_QI], geo[G_HCI], geo[G_HMI])
+        v0, wn, c2, u, spin, roll = _slip_inputs(w_r, w_z, omega_m, wring, geo[G_CR], nr, nz, geo[G_RB], rd)
+        fx, fy, mz, p, qv = _contact_traction(a, b, q, v0, wn, c2, 0.0, u, hc, hm, code, params, n_strips,
+                                              n_across)
+        out[k, 0] = v0
+        out[k, 1] = wn
+        out[k, 2] = c2
+        out[k, 3] = u
+        out[k, 4] = spin
+        out[k, 5] = roll
+        out[k, 6] = fx
+        out[k, 7] = fy
+        out[k, 8] = mz
+        out[k, 9] = p
+        out[k, 10] = qv
+        total += p
+    return total
+
+
+def ball_contacts(kin, geo, model, n_strips, n_across):
+    """Per-contact slip and traction (2, NC) for kinematics kin = (omega_m, w_r, w_z)."""
+    out = np.zeros((2, NC))
+    _ball_contacts(float(kin[0]), float(kin[1]), float(kin[2]), geo, model.code, model.vector, n_strips, n_across,
+                   out)
+    return out
+
+
+def spin_axis_angle(w_r, w_z):
+    """beta [rad]: angle of the ball's spin axis to the bearing axis (module docstring)."""
+    sigma = -1.0 if w_z < 0.0 else 1.0
+    return math.atan2(-sigma * w_r, sigma * w_z)
+
+
+def race_control(geo, race):
+    """(omega_m, w_r, w_z) of race control by ``race`` ('outer' or 'inner'): pure rolling at both
+    contact centres and no spin at the controlling race (Jones)."""
+    rows, rhs = [], []
+    for k, (wring, nr, nz) in enumerate(((geo[G_WO], geo[G_NOR], geo[G_NOZ]), (geo[G_WI], geo[G_NIR], geo[G_NIZ]))):
+        x0r = geo[G_CR] + geo[G_RB] * nr
+        rows.append([x0r, -geo[G_RB] * nz, geo[G_RB] * nr])          # v0 = 0
+        rhs.append(wring * x0r)
+        if (race == "outer") == (k == 0):
+            rows.append([nz, nr, nz])                                # omega_s = 0
+            rhs.append(wring * nz)
+    return np.linalg.solve(np.array(rows), np.array(rhs))
+
+
+def jones_outer_controls(geo):
+    """Jones' criterion: True if the outer race controls, Q_o a_o E_o cos(alpha_o - alpha_i) > Q_i a_i E_i."""
+    a_o = math.atan2(geo[G_NOZ], geo[G_NOR])
+    a_i = math.atan2(-geo[G_NIZ], -geo[G_NIR])
+    m_o = float(spin_moment_coulomb(1.0, geo[G_QO], geo[G_AO], geo[G_BO])) if geo[G_QO] > 0 else 0.0
+    m_i = float(spin_moment_coulomb(1.0, geo[G_QI], geo[G_AI], geo[G_BI])) if geo[G_QI] > 0 else 0.0
+    return m_o * math.cos(a_o - a_i) > m_i
+
+
+def rolling_points(contacts, geo):
+    """Pure-rolling points (x1 outer, x2 inner) [m]: the one nearest each contact centre, NaN where the
+    contact slides everywhere."""
+    res = []
+    for k, a in ((0, geo[G_AO]), (1, geo[G_AI])):
+        v0, wn, c2 = contacts[k, 0], contacts[k, 1], contacts[k, 2]
+        pts = pure_rolling_points(a, v0, wn, c2) if a > 0 else np.array([])
+        res.append(float(pts[np.argmin(np.abs(pts))]) if pts.size else math.nan)
+    return res
+
+
+def _check_minimum(f, x, h):
+    """Finite-difference Hessian eigenvalues (relative to f(x)) and whether all six axis neighbours are higher."""
+    f0 = f(x)
+    n = x.size
+    hess = np.zeros((n, n))
+    higher = True
+    for i in range(n):
+        ei = np.zeros(n)
+        ei[i] = h
+        fp, fm = f(x + ei), f(x - ei)
+        higher &= bool(fp >= f0 and fm >= f0)
+        hess[i, i] = (fp - 2.0 * f0 + fm) / (h * h)
+        for j in range(i + 1, n):
+            ej = np.zeros(n)
+            ej[j] = h
+            hess[i, j] = hess[j, i] = (f(x + ei + ej) - f(x + ei - ej) - f(x - ei + ej) + f(x - ei - ej)) / (
+                4.0 * h * h)
+    eig = np.linalg.eigvalsh(hess) / max(abs(f0), 1e-300)
+    return eig, higher
+
+
+def minimum_energy(geo, model, n_strips, n_across, start):
+    """Kinematics that minimise P_o + P_i (Gupta's hypothesis) from ``start`` = (omega_m, w_r, w_z).
+
+    Returns (kinematics (3,), check dict with ``hessian_eigenvalues`` (relative, in the scaled
+    variables), ``neighbours_higher``, ``is_minimum``, ``evaluations``)."""
+    scale = max(abs(start[0]), math.hypot(start[1], start[2]), 1e-12)
+    code, vec = model.code, model.vector
+    out = np.zeros((2, NC))
+    x0 = np.asarray(start, float) / scale
+    f0 = _ball_contacts(start[0], start[1], start[2], geo, code, vec, n_strips, n_across, out)
+    norm = f0 if f0 > 0 else 1.0
+
+    def f(x):
+        return _ball_contacts(x[0] * scale, x[1] * scale, x[2] * scale, geo, code, vec, n_strips, n_across,
+                              out) / norm
+
+    simplex = np.vstack([x0] + [x0 + 2e-3 * np.eye(3)[i] for i in range(3)])
+    res = optimize.minimize(f, x0, method="Nelder-Mead",
+                            options={"initial_simplex": simplex, "xatol": 1e-11, "fatol": 1e-13, "maxiter": 6000,
+                                     "maxfev": 12000})
+    eig, higher = _check_minimum(f, res.x, 1e-5)
+    check = {"hessian_eigenvalues": eig.tolist(), "neighbours_higher": higher,
+             "is_minimum": bool(higher and eig.min() > 0.0), "evaluations": int(res.nfev),
+             "converged": bool(res.success)}
+    return res.x * scale, check
+
+
+def dissipation_at_beta(geo, model, n_strips, n_across, beta, start):
+    """Least dissipation [W] with the spin axis held at ``beta`` [rad] (minimised over omega_m and
+    the ball speed), and the kinematics (3,) that give it: the curve of Gupta's Fig. 9."""
+    scale = max(abs(start[0]), math.hypot(start[1], start[2]), 1e-12)
+    code, vec = model.code, model.vector
+    out = np.zeros((2, NC))
+    sb, cb = math.sin(beta), math.cos(beta)
+    w0 = start[1] * sb - start[2] * cb       # speed along the axis (sin beta, -cos beta)
+
+    def kin(x):
+        return x[0] * scale, x[1] * scale * sb, -x[1] * scale * cb
+
+    def f(x):
+        k = kin(x)
+        return _ball_contacts(k[0], k[1], k[2], geo, code, vec, n_strips, n_across, out)
+
+    x0 = np.array([start[0], w0]) / scale
+    simplex = np.vstack([x0, x0 + [2e-3, 0.0], x0 + [0.0, 2e-3]])
+    res = optimize.minimize(f, x0, method="Nelder-Mead",
+                            options={"initial_simplex": simplex, "xatol": 1e-11, "fatol": 1e-14, "maxfev": 8000})
+    return float(res.fun), np.array(kin(res.x))

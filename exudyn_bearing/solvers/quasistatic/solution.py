@@ -1,0 +1,139 @@
+"""The solution record of the quasi-static solver and its JSON form."""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+__all__ = ["QuasiStaticSolution", "UNITS"]
+
+#: Units of the keys of :meth:`QuasiStaticSolution.to_dict`.
+UNITS = {
+    "delta_x": "m", "delta_y": "m", "delta_a": "m (axial, from the centred ring)", "tilt_x": "rad",
+    "tilt_y": "rad", "psi": "deg", "q_inner": "N", "q_outer": "N", "alpha_inner": "deg", "alpha_outer": "deg",
+    "a_inner": "m", "b_inner": "m", "a_outer": "m", "b_outer": "m", "p_max_inner": "Pa", "p_max_outer": "Pa",
+    "delta_inner": "m", "delta_outer": "m", "centrifugal_force": "N", "gyroscopic_moment": "N m",
+    "orbital_speed": "rad/s", "ball_speed": "rad/s (about its own axis, in the orbiting frame)",
+    "ball_speed_absolute": "rad/s", "beta": "deg", "spin_roll_inner": "-", "spin_roll_outer": "-",
+    "rolling_point_outer": "m (x1, along the major axis from the centre)",
+    "rolling_point_inner": "m (x2)", "dissipation_inner": "W (whole bearing)",
+    "dissipation_outer": "W (whole bearing)", "dissipation_total": "W (whole bearing)",
+    "dissipation_inner_ball": "W", "dissipation_outer_ball": "W", "qv_inner_ball": "N m/s",
+    "qv_outer_ball": "N m/s", "qv_total": "N m/s (whole bearing)", "traction_drag": "N (sum of the rolling-direction traction on the ball: zero in a true steady state without cage)",
+    "gyro_traction_inner": "- (traction / load the inner race must supply for the gyroscopic moment)",
+    "gyro_traction_outer": "-", "h_central_inner": "m", "h_central_outer": "m", "u_roll_inner": "m/s",
+    "u_roll_outer": "m/s", "slip_y": "- (y/a at the strip centres)", "slip_inner": "m/s", "slip_outer": "m/s",
+    "inner_ring_growth": "m", "outer_ring_growth": "m", "inner_thermal_growth": "m", "outer_thermal_growth": "m",
+    "ball_thermal_growth": "m", "fit_pressure": "Pa", "operating_clearance": "m", "axial_play": "m",
+    "control_used": "race control per ball (outer, inner, min-energy, none)",
+    "stiffness": "N/m, N/rad, N m/m, N m/rad (order delta_x, delta_y, delta_a, tilt_x, tilt_y)",
+    "reactions": "N or N m", "residual": "N or N m", "loads": "N or N m", "omega": "rad/s", "omega_outer": "rad/s",
+}
+
+
+@dataclass
+class QuasiStaticSolution:
+    """Quasi-static equilibrium of a ball bearing: per-ball arrays in psi order and totals.
+
+    Angles are stored in radians; :meth:`to_dict` gives degrees where its
+    units map says so.
+    """
+
+    bearing_name: str
+    loads: np.ndarray            #: (F_x, F_y, F_a, M_x, M_y) [N, N, N, N m, N m]
+    omega: float                 #: inner-ring speed [rad/s]
+    omega_outer: float           #: outer-ring speed [rad/s]
+    control: str                 #: kinematic hypothesis asked for
+    traction: str                #: traction model name
+    lubricant: str               #: lubricant name
+    displacement: np.ndarray     #: (delta_x, delta_y, delta_a, tilt_x, tilt_y)
+    residual: np.ndarray         #: balls' generalized force + loads at the solution (5,)
+    free: np.ndarray             #: which DOFs were solved (5,) bool
+    held: dict                   #: DOF name -> why held ("fixed" or "symmetry")
+    reactions: dict              #: DOF name -> reaction of the held DOF [N or N m]
+    balls: dict                  #: per-ball arrays (module UNITS), radians for angles
+    geometry: dict               #: operating geometry (growth, clearance, fit)
+    stiffness: np.ndarray        #: (5, 5) = -d(balls' generalized force)/du
+    stiffness_check: dict        #: step and convergence of the central differences
+    minimum_checks: list = field(default_factory=list)  #: per-ball minimum-energy checks
+    contact_geometry: np.ndarray | None = None  #: packed per-ball contact data (kinematics.GEO_FIELDS)
+    kinematics: np.ndarray | None = None        #: per-ball (omega_m, w_r, w_z) [rad/s]
+    traction_model: object = None               #: the TractionModel used
+    iterations: int = 0
+    n_strips: int = 0
+    n_across: int = 0
+    wall_s: float = 0.0
+
+    # convenient totals -------------------------------------------------------------
+    @property
+    def dissipation_inner(self) -> float:
+        return float(np.sum(self.balls["dissipation_inner_ball"]))
+
+    @property
+    def dissipation_outer(self) -> float:
+        return float(np.sum(self.balls["dissipation_outer_ball"]))
+
+    @property
+    def dissipation_total(self) -> float:
+        """Frictional power of all ball / race contacts [W]."""
+        return self.dissipation_inner + self.dissipation_outer
+
+    @property
+    def q_max_inner(self) -> float:
+        return float(np.max(self.balls["q_inner"]))
+
+    @property
+    def q_max_outer(self) -> float:
+        return float(np.max(self.balls["q_outer"]))
+
+    def to_dict(self) -> dict:
+        """JSON-ready dict with the keys of :data:`UNITS` (and ``units``)."""
+        b = self.balls
+        deg = {"psi", "alpha_inner", "alpha_outer", "beta"}
+        d = {"bearing": self.bearing_name, "control": self.control, "traction": self.traction,
+             "lubricant": self.lubricant, "omega": self.omega, "omega_outer": self.omega_outer,
+             "loads": dict(zip(("Fx", "Fy", "Fa", "Mx", "My"), map(float, self.loads)))}
+        for k, v in zip(("delta_x", "delta_y", "delta_a", "tilt_x", "tilt_y"), self.displacement):
+            d[k] = float(v)
+        for k, v in b.items():
+            arr = np.asarray(v)
+            if arr.dtype == object:
+                d[k] = [str(x) for x in arr]
+                continue
+            arr = arr.astype(float)
+            d[k] = np.degrees(arr) if k in deg else arr
+        d["dissipation_inner"] = self.dissipation_inner
+        d["dissipation_outer"] = self.dissipation_outer
+        d["dissipation_total"] = self.dissipation_total
+        d["qv_total"] = float(np.sum(b["qv_inner_ball"]) + np.sum(b["qv_outer_ball"]))
+        d.update(self.geometry)
+        d["stiffness"] = self.stiffness
+        d["stiffness_check"] = self.stiffness_check
+        d["residual"] = dict(zip(("Fx", "Fy", "Fa", "Mx", "My"), map(float, self.residual)))
+        d["held_dofs"] = dict(self.held)
+        d["reactions"] = dict(self.reactions)
+        d["minimum_checks"] = self.minimum_checks
+        d["iterations"] = self.iterations
+        d["n_strips"], d["n_across"] = self.n_strips, self.n_across
+        d["wall_s"] = self.wall_s
+        d["units"] = dict(UNITS)
+        return d
+
+    def summary(self) -> str:
+        """A few lines for the command line."""
+        g = self.geometry
+        lines = [
+            f"{self.bearing_name}: Fr = {self.loads[0]:g} N (x), Fy = {self.loads[1]:g} N, Fa = {self.loads[2]:g} N, "
+            f"Mx = {self.loads[3]:g} N m, My = {self.loads[4]:g} N m, omega = {self.omega:g} rad/s, "
+            f"control {self.control}, traction {self.traction}",
+            f"delta_x = {self.displacement[0] * 1e6:.3f} um, delta_y = {self.displacement[1] * 1e6:.3f} um, "
+            f"delta_a = {self.displacement[2] * 1e6:.3f} um, tilt_x = {self.displacement[3] * 1e3:.4f} mrad, "
+            f"tilt_y = {self.displacement[4] * 1e3:.4f} mrad",
+            f"inner ring growth {g['inner_ring_growth'] * 1e6:.2f} um, operating clearance "
+            f"{g['operating_clearance'] * 1e6:.2f} um, dissipation {self.dissipation_total:.4g} W "
+            f"(inner {self.dissipation_inner:.4g}, outer {self.dissipation_outer:.4g})",
+        ]
+        for name, why in self.held.items():
+            lines.append(f"{name} held ({why}); reaction {self.reactions.get(name, 0.0):.6g}")
+        return "\n".join(lines)
+

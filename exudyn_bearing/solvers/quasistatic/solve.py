@@ -1,0 +1,415 @@
+"""``solve_quasistatic``: ring equilibrium, ball equilibrium and ball kinematics together.
+
+Procedure (Jones [1]_, Harris & Kotzalas [2]_; Gupta [3]_ for the minimum
+energy):
+
+1. geometry at the operating point (:mod:`.geometry`);
+2. start from pure-rolling kinematics at the free contact angle;
+3. repeat until the orbital and ball speeds stop changing (relative 1e-10):
+   centrifugal force m omega_m^2 r_c and gyroscopic moment
+   J omega_m w_r per ball from the current kinematics; ring and ball
+   equilibrium (:mod:`.ring`, :mod:`.balls`); contact ellipses and films;
+   race-control kinematics of every ball (:mod:`.kinematics`);
+4. with ``control="min-energy"``: the same loop with the minimum-energy
+   kinematics, from the race-control solution, until the speeds change by
+   less than 1e-7 (the minimiser's resolution);
+5. slip, traction and dissipation of every contact, the stiffness matrix
+   (:mod:`.stiffness`) and the checks (shoulder, convergence, minimum).
+
+Choices where the sources leave room (also in docs/theory/quasistatic.md):
+balls are independent (each its own orbital speed: no cage, as the
+ACBB-120); unloaded balls (a contact without load) take outer-race-control
+kinematics; films by Hamrock & Dowson at the race-control rolling speed.
+
+References
+----------
+.. [1] A. B. Jones, J. Basic Eng. 82 (1960) 309-320. doi:10.1115/1.3662587
+.. [2] T. A. Harris and M. N. Kotzalas, Rolling Bearing Analysis, 5th ed.,
+   CRC Press, 2006.
+.. [3] P. K. Gupta, Tribol. Trans. (2020).
+"""
+from __future__ import annotations
+
+import math
+import time
+
+import numpy as np
+
+from ...data import (MAX_FREE_CONTACT_ANGLE, BallBearing, InputError, Lubricant, default_lubricant,
+                     get_traction_model, load_bearing, lubricants)
+from ...physics import ehl
+from ...physics import hertz as _hz
+from ...physics import kinematics as _kin
+from ...physics.contact_slip import deformed_contact_radius
+from ...physics.geometry import _raceway_radii_cos
+from ...physics.load_distribution import check_axial_load
+from . import kinematics as km
+from .balls import B_CR, B_CZ, B_DI, B_DO, B_NIR, B_NIZ, B_NOR, B_NOZ, B_QI, B_QO
+from .geometry import operating_geometry
+from .ring import DOF_NAMES, LOAD_NAMES, RingProblem, solve_ring
+from .solution import QuasiStaticSolution
+from .stiffness import stiffness_matrix
+
+__all__ = ["solve_quasistatic", "beta_scan"]
+
+
+def _number(name, value, nonneg=False):
+    try:
+        v = float(value)
+    except (TypeError, ValueError):
+        raise InputError(f"{name}: expected a number, got {value!r}") from None
+    if not math.isfinite(v):
+        raise InputError(f"{name}: must be finite, got {v}")
+    if nonneg and v < 0.0:
+        raise InputError(f"{name}: must be >= 0, got {v}")
+    return v
+
+
+def _contact_state(geom, balls, e_prime, method):
+    """Hertz ellipse (a, b, p_max, kappa, R_x) of both contacts of every ball."""
+    z = balls.shape[0]
+    res = {k: np.zeros(z) for k in ("a_o", "b_o", "p_o", "k_o", "rx_o", "a_i", "b_i", "p_i", "k_i", "rx_i")}
+    for j in range(z):
+        nor, nir = balls[j, B_NOR], balls[j, B_NIR]
+        r_ref = geom.rho_o + (geom.r_co - geom.r_b) * nor
+        for tag, r_c, ca, inner, d in (("o", geom.r_co, nor, False, balls[j, B_DO]),
+                                       ("i", geom.r_ci, -nir, True, balls[j, B_DI])):
+            ca = max(ca, 1e-12)
+            r_contact = r_ref - geom.r_b * ca if inner else r_ref + geom.r_b * ca
+            rx, ry = _raceway_radii_cos(geom.r_b, r_c, r_contact, ca, inner)
+            q, _k, kap, a, b, pm, _kn = _hz._hertz(rx, ry, e_prime, max(d, 0.0), method)
+            # a: across rolling (the major axis for ball / groove contacts)
+            res[f"a_{tag}"][j], res[f"b_{tag}"][j], res[f"p_{tag}"][j] = a, b, pm
+            res[f"k_{tag}"][j], res[f"rx_{tag}"][j] = kap, rx
+    return res
+
+
+def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=0.0, omega_outer=0.0,
+                      control="auto", traction="lambda_dem", lubricant: Lubricant | str | None = None,
+                      ring_growth=True, fit=0.0, temperatures=None, fixed=None, hertz_method="exact",
+                      phase=0.0, n_strips=32, n_across=4, shoulder_angle=MAX_FREE_CONTACT_ANGLE,
+                      stiffness=True) -> QuasiStaticSolution:
+    """Quasi-static equilibrium of a ball bearing with free inner-ring DOFs, speed effects and kinematics.
+
+    Parameters
+    ----------
+    bearing : BallBearing or str
+        Geometry (catalogue name or JSON file); its ``diametral_clearance``
+        (negative: preload) applies.
+    Fr, Fy, Fa : float
+        Loads on the inner ring [N]: radial along +x (psi = 0) and +y, axial along +z.
+    Mx, My : float
+        Moments on the inner ring about x and y [N m].
+    omega, omega_outer : float
+        Inner- and outer-ring speeds [rad/s] (outer ring fixed by default).
+    control : {"auto", "outer", "inner", "min-energy"}
+        Ball kinematics: race control (Jones; ``auto`` by his spin-moment
+        criterion) or minimum frictional dissipation (Gupta).
+    traction : str or TractionModel
+        Traction model for slip, dissipation and the minimum energy.
+    lubricant : Lubricant or str, optional
+        For the film thicknesses (default: the DEM papers' oil).
+    ring_growth : bool
+        Centrifugal growth of the rotating rings (False: rigid rings).
+    fit : float
+        Diametral interference of the inner ring on a solid shaft [m].
+    temperatures : dict, optional
+        ``{"inner", "outer", "ball"}`` temperatures [K] for uniform thermal growth.
+    fixed : dict, optional
+        DOFs to hold, name -> value (names ``delta_x, delta_y, delta_a,
+        tilt_x, tilt_y``); their reactions are reported.
+    hertz_method : str
+        Hertz fidelity level.
+    phase : float
+        Azimuth of ball 0 [rad].
+    n_strips, n_across : int
+        Strip integration of slip and traction over each ellipse.
+    shoulder_angle : float
+        Largest angle from the groove bottom that a contact ellipse may reach [rad].
+    stiffness : bool
+        Compute the 5x5 stiffness matrix.
+
+    Returns
+    -------
+    QuasiStaticSolution
+
+    Examples
+    --------
+    >>> import exudyn_bearing as eb
+    >>> s = eb.solve_quasistatic("6208", Fr=3000.0)
+    >>> round(s.q_max_inner, 1)
+    1461.7
+    """
+    t0 = time.perf_counter()
+    b: BallBearing = load_bearing(bearing)
+    loads = np.array([_number("Fr", Fr), _number("Fy", Fy), _number("Fa", Fa), _number("Mx", Mx),
+                      _number("My", My)])
+    w_i = _number("omega", omega)
+    w_o = _number("omega_outer", omega_outer)
+    if control not in km.CONTROLS:
+        raise InputError(f"control: must be one of {', '.join(km.CONTROLS)}, got {control!r}")
+    model = get_traction_model(traction)
+    if lubricant is None:
+        lub = default_lubricant()
+    elif isinstance(lubricant, Lubricant):
+        lub = lubricant
+    elif str(lubricant) in lubricants:
+        lub = lubricants[str(lubricant)]
+    else:
+        raise InputError(f"lubricant: unknown lubricant {lubricant!r} (catalogue: {', '.join(lubricants)})")
+    n_strips, n_across = int(n_strips), int(n_across)
+    if not 1 <= n_strips <= 4096:
+        raise InputError(f"n_strips: must lie in [1, 4096], got {n_strips}")
+    if not 1 <= n_across <= 64:
+        raise InputError(f"n_across: must lie in [1, 64], got {n_across}")
+    method = _hz.method_code(hertz_method)
+    phase = _number("phase", phase)
+    fixed = dict(fixed or {})
+    for k in fixed:
+        if k not in DOF_NAMES:
+            raise InputError(f"fixed: unknown DOF {k!r} (valid: {', '.join(DOF_NAMES)})")
+        fixed[k] = _number(f"fixed.{k}", fixed[k])
+    angular = b.free_contact_angle > 0.0
+    fr = math.hypot(loads[0], loads[1])
+    if angular and "delta_a" not in fixed:
+        if loads[2] < 0.0:
+            raise InputError(f"Fa: an angular-contact bearing carries axial load along +z only, got {loads[2]:g} N")
+        check_axial_load(b, fr, loads[2])
+        if loads[2] == 0.0:
+            raise InputError("Fa: a single angular-contact bearing needs an axial load to locate its inner ring "
+                             "axially (got 0 N; or hold delta_a with fixed=)")
+    geom = operating_geometry(b, w_i, w_o, ring_growth, fit, temperatures)
+    if geom.operating_clearance < -2.0 * 0.01 * geom.r_b:
+        raise InputError(f"fit: the operating interference {-geom.operating_clearance:.3e} m exceeds 2 % of the "
+                         f"ball radius: the balls do not fit between the grown rings")
+    e_prime = _hz.material_reduced_modulus(b.material)
+    z = b.n_balls
+    psi = phase + 2.0 * math.pi * np.arange(z) / z
+
+    # DOFs held: by the caller, or by symmetry where the equations are singular
+    held, values = {}, np.zeros(5)
+    for k, v in fixed.items():
+        held[k] = "fixed"
+        values[DOF_NAMES.index(k)] = v
+    deep = abs(geom.z_i) < 1e-15 and abs(geom.z_o) < 1e-15
+    if deep and loads[2] == 0.0 and loads[3] == 0.0 and loads[4] == 0.0:
+        for k in ("delta_a", "tilt_x", "tilt_y"):
+            held.setdefault(k, "symmetry")
+    if fr == 0.0 and loads[3] == 0.0 and loads[4] == 0.0 and not fixed:
+        for k in ("delta_x", "delta_y", "tilt_x", "tilt_y"):
+            held.setdefault(k, "symmetry")
+    free = np.array([k not in held for k in DOF_NAMES])
+    if (loads == 0.0).all() and b.diametral_clearance >= 0.0 and not angular and w_i == w_o:
+        free[:] = False
+        for k in DOF_NAMES:
+            held.setdefault(k, "symmetry")
+
+    # kinematics: start at pure rolling at the free contact angle
+    a0 = b.free_contact_angle
+    wm0 = float(_kin.cage_speed(w_i, w_o, geom.r_b, b.pitch_radius, a0))
+    wr0 = float(_kin.ball_spin_relative(w_i, w_o, geom.r_b, b.pitch_radius, a0))
+    # ball angular velocity w_R (-sin alpha, cos alpha) in the orbit frame
+    kin = np.tile([wm0, -wr0 * math.sin(a0), wr0 * math.cos(a0)], (z, 1))
+    moving = w_i != w_o
+    mass = b.ball_mass * (geom.r_b / b.ball_radius) ** 3
+    inertia = 0.4 * mass * geom.r_b ** 2
+    rd_o = float(deformed_contact_radius(geom.r_b, geom.r_co))
+    rd_i = float(deformed_contact_radius(geom.r_b, geom.r_ci))
+    wref = max(abs(w_i - w_o), 1e-300)
+    u = values.copy()
+    controls = np.array(["outer"] * z, dtype=object)
+    checks = [None] * z
+    cold = True
+    it_total = 0
+    phases = ["race"] + (["min-energy"] if control == "min-energy" and moving else [])
+    prob = balls = geo = cs = None
+    for stage in phases:
+        tol = 1e-10 if stage == "race" else 1e-7
+        for _it in range(40 if stage == "race" else 12):
+            it_total += 1
+            g_mom = inertia * kin[:, 0] * kin[:, 1]        # J omega_m w_r: moment about e_psi [N m]
+            fto = np.zeros(z)
+            fti = np.zeros(z)
+            for j in range(z):
+                if stage == "min-energy":
+                    fto[j] = fti[j] = 0.5 * g_mom[j] / geom.r_b
+                elif controls[j] == "inner":
+                    fti[j] = g_mom[j] / geom.r_b
+                else:
+                    fto[j] = g_mom[j] / geom.r_b
+            prob = RingProblem(psi, geom, mass * kin[:, 0] ** 2, fto, fti, e_prime, method, loads)
+            u, resid, balls = solve_ring(prob, free, values, u, b, cold=cold)
+            cold = False
+            cs = _contact_state(geom, balls, e_prime, method)
+            if not moving:
+                kin[:] = 0.0
+                break
+            new = kin.copy()
+            geo = np.zeros((z, len(km.GEO_FIELDS)))
+            for j in range(z):
+                geo[j] = _geo_vector(w_o, w_i, balls[j], geom, rd_o, rd_i, cs, j, kin[j], lub, e_prime)
+                loaded = balls[j, B_QO] > 0.0 and balls[j, B_QI] > 0.0
+                race = control if control in ("outer", "inner") else (
+                    "outer" if (not loaded or km.jones_outer_controls(geo[j])) else "inner")
+                if stage == "race":
+                    controls[j] = race if loaded else "outer"
+                    new[j] = km.race_control(geo[j], controls[j])
+                elif loaded:
+                    controls[j] = "min-energy"
+                    same = next((i for i in range(j) if np.allclose(geo[i], geo[j], rtol=1e-12, atol=0.0)), None)
+                    if same is not None:
+                        new[j], checks[j] = new[same], checks[same]
+                    else:
+                        new[j], checks[j] = km.minimum_energy(geo[j], model, n_strips, n_across, kin[j])
+            change = np.abs(new - kin).max() / wref
+            kin = new
+            if change < tol:
+                break
+    # final contact results
+    out = _ball_results(b, geom, psi, balls, cs, kin, geo, model, n_strips, n_across, w_i, w_o, rd_o, rd_i,
+                        lub, e_prime, mass, inertia, controls, moving, prob.fto, prob.fti)
+    _check_shoulders(b, geom, balls, cs, loads, prob, shoulder_angle)
+    if stiffness:
+        kmat, kcheck = stiffness_matrix(prob, u, balls)
+    else:
+        kmat, kcheck = np.full((5, 5), np.nan), {}
+    resid = prob.residual(u)[0]
+    reactions = {k: float(-resid[DOF_NAMES.index(k)]) for k in held}
+    rho_i, z_i = b.inner_groove_center
+    rho_o, z_o = b.outer_groove_center
+    geometry = {"inner_ring_growth": geom.inner_ring_growth, "outer_ring_growth": geom.outer_ring_growth,
+                "inner_thermal_growth": geom.inner_thermal_growth, "outer_thermal_growth": geom.outer_thermal_growth,
+                "ball_thermal_growth": geom.ball_thermal_growth, "fit_pressure": geom.fit_pressure,
+                "operating_clearance": geom.operating_clearance, "axial_play": _axial_play(geom),
+                "diametral_clearance": b.diametral_clearance}
+    return QuasiStaticSolution(
+        bearing_name=b.name, loads=loads, omega=w_i, omega_outer=w_o, control=control, traction=model.name,
+        lubricant=lub.name, displacement=u, residual=resid, free=free, held=held, reactions=reactions, balls=out,
+        geometry=geometry, stiffness=kmat, stiffness_check=kcheck,
+        minimum_checks=[c for c in checks] if control == "min-energy" else [], iterations=it_total,
+        n_strips=n_strips, n_across=n_across, wall_s=time.perf_counter() - t0,
+        contact_geometry=geo, kinematics=kin, traction_model=model)
+
+
+def beta_scan(solution: QuasiStaticSolution, betas, ball=0):
+    """Least dissipation of one ball [W] at each spin-axis angle in ``betas`` [rad], over its
+    orbital and ball speed, on the solution's contact geometry (Gupta's Fig. 9 curve).
+
+    Returns an array of the dissipation of that ball (both contacts) for each beta.
+    """
+    if solution.contact_geometry is None:
+        raise InputError("solution: a beta scan needs a solution at speed (omega != omega_outer)")
+    g = solution.contact_geometry[ball]
+    start = solution.kinematics[ball]
+    return np.array([km.dissipation_at_beta(g, solution.traction_model, solution.n_strips, solution.n_across,
+                                            float(bt), start)[0] for bt in np.asarray(betas, float)])
+
+
+def _geo_vector(w_o, w_i, ball, geom, rd_o, rd_i, cs, j, kin, lub, e_prime):
+    """Packed per-ball geometry for :mod:`.kinematics` (films at the current rolling speeds)."""
+    g = np.zeros(len(km.GEO_FIELDS))
+    g[km.G_WO], g[km.G_WI] = w_o, w_i
+    g[km.G_CR], g[km.G_CZ] = ball[B_CR], ball[B_CZ]
+    g[km.G_NOR], g[km.G_NOZ], g[km.G_NIR], g[km.G_NIZ] = ball[B_NOR], ball[B_NOZ], ball[B_NIR], ball[B_NIZ]
+    g[km.G_RB], g[km.G_RDO], g[km.G_RDI] = geom.r_b, rd_o, rd_i
+    g[km.G_AO], g[km.G_BO], g[km.G_QO] = cs["a_o"][j], cs["b_o"][j], ball[B_QO]
+    g[km.G_AI], g[km.G_BI], g[km.G_QI] = cs["a_i"][j], cs["b_i"][j], ball[B_QI]
+    c = km.ball_contacts(kin, g, _DUMMY, 1, 1)
+    for k, tag in ((0, "o"), (1, "i")):
+        u_r = c[k, 3]
+        q = ball[B_QO] if k == 0 else ball[B_QI]
+        rx, kap = cs[f"rx_{tag}"][j], cs[f"k_{tag}"][j]
+        kap = kap if kap >= 1.0 else 1.0 / kap
+        hc = float(ehl.film_thickness_central_hamrock_dowson(u_r, q, rx, kap, e_prime, lub.viscosity,
+                                                             lub.pressure_viscosity))
+        hm = float(ehl.film_thickness_hamrock_dowson(u_r, q, rx, kap, e_prime, lub.viscosity,
+                                                     lub.pressure_viscosity))
+        if k == 0:
+            g[km.G_HCO], g[km.G_HMO] = hc, hm
+        else:
+            g[km.G_HCI], g[km.G_HMI] = hc, hm
+    return g
+
+
+_DUMMY = get_traction_model("coulomb_0.1")
+
+
+def _axial_play(geom):
+    """Axial shift between the two positions where a ball touches both grooves [m] (rings concentric,
+    operating geometry); 0 with interference."""
+    a = geom.groove_distance
+    dr = geom.rho_i - geom.rho_o
+    if abs(dr) >= a:
+        return 0.0
+    return 2.0 * math.sqrt(a * a - dr * dr)
+
+
+def _ball_results(b, geom, psi, balls, cs, kin, geo, model, n_strips, n_across, w_i, w_o, rd_o, rd_i, lub,
+                  e_prime, mass, inertia, controls, moving, fto, fti):
+    z = psi.size
+    out = {"psi": psi, "q_inner": balls[:, B_QI].copy(), "q_outer": balls[:, B_QO].copy(),
+           "alpha_inner": np.arctan2(-balls[:, B_NIZ], -balls[:, B_NIR]),
+           "alpha_outer": np.arctan2(balls[:, B_NOZ], balls[:, B_NOR]),
+           "a_inner": cs["a_i"], "b_inner": cs["b_i"], "a_outer": cs["a_o"], "b_outer": cs["b_o"],
+           "p_max_inner": cs["p_i"], "p_max_outer": cs["p_o"],
+           "delta_inner": balls[:, B_DI].copy(), "delta_outer": balls[:, B_DO].copy(),
+           "ball_center_r": balls[:, B_CR].copy(), "ball_center_z": balls[:, B_CZ].copy()}
+    out["centrifugal_force"] = mass * kin[:, 0] ** 2 * balls[:, B_CR]
+    out["gyroscopic_moment"] = inertia * kin[:, 0] * kin[:, 1]
+    out["orbital_speed"] = kin[:, 0].copy()
+    out["ball_speed"] = np.hypot(kin[:, 1], kin[:, 2])
+    out["ball_speed_absolute"] = np.hypot(kin[:, 1], kin[:, 2] + kin[:, 0])
+    out["beta"] = np.array([km.spin_axis_angle(kin[j, 1], kin[j, 2]) for j in range(z)])
+    names = ("spin_roll_inner", "spin_roll_outer", "rolling_point_outer", "rolling_point_inner",
+             "dissipation_inner_ball", "dissipation_outer_ball", "qv_inner_ball", "qv_outer_ball",
+             "traction_drag", "gyro_traction_inner", "gyro_traction_outer", "h_central_inner", "h_central_outer", "h_min_inner",
+             "h_min_outer", "u_roll_inner", "u_roll_outer")
+    for n in names:
+        out[n] = np.zeros(z)
+    ys = -1.0 + (2.0 * np.arange(n_strips) + 1.0) / n_strips
+    out["slip_y"] = ys
+    out["slip_inner"] = np.zeros((z, n_strips))
+    out["slip_outer"] = np.zeros((z, n_strips))
+    out["control_used"] = np.array(controls if moving else ["none"] * z, dtype=object)
+    if not moving:
+        out["beta"][:] = 0.0
+        return out
+    for j in range(z):
+        c = km.ball_contacts(kin[j], geo[j], model, n_strips, n_across)
+        for k, tag in ((0, "outer"), (1, "inner")):
+            v0, wn, c2, u_r, spin, roll = c[k, :6]
+            out[f"spin_roll_{tag}"][j] = spin / abs(roll) if roll != 0.0 else math.nan
+            out[f"dissipation_{tag}_ball"][j] = c[k, 9]
+            out[f"qv_{tag}_ball"][j] = c[k, 10]
+            out[f"u_roll_{tag}"][j] = u_r
+            a = geo[j, km.G_AO] if k == 0 else geo[j, km.G_AI]
+            y = a * ys
+            out[f"slip_{tag}"][j] = v0 - wn * y + c2 * y * y
+        x1, x2 = km.rolling_points(c, geo[j])
+        out["rolling_point_outer"][j], out["rolling_point_inner"][j] = x1, x2
+        out["traction_drag"][j] = c[0, 6] + c[1, 6]
+        # friction coefficient the hypothesis asks of each race to hold the gyroscopic moment
+        out["gyro_traction_outer"][j] = abs(fto[j]) / balls[j, B_QO] if balls[j, B_QO] > 0 else 0.0
+        out["gyro_traction_inner"][j] = abs(fti[j]) / balls[j, B_QI] if balls[j, B_QI] > 0 else 0.0
+        out["h_central_outer"][j], out["h_min_outer"][j] = geo[j, km.G_HCO], geo[j, km.G_HMO]
+        out["h_central_inner"][j], out["h_min_inner"][j] = geo[j, km.G_HCI], geo[j, km.G_HMI]
+    return out
+
+
+def _check_shoulders(b, geom, balls, cs, loads, prob, limit):
+    """InputError when a loaded contact ellipse reaches past the groove shoulder."""
+    arm = prob.arm if prob is not None else 1.0
+    k = int(np.argmax(np.abs(loads) * np.array([1, 1, 1, 1 / arm, 1 / arm])))
+    for tag, qk, nr, nz, r_c, sgn in (("inner", B_QI, B_NIR, B_NIZ, geom.r_ci, -1.0),
+                                      ("outer", B_QO, B_NOR, B_NOZ, geom.r_co, 1.0)):
+        alpha = np.arctan2(sgn * balls[:, nz], sgn * balls[:, nr])
+        half = cs[f"a_{tag[0]}"] / r_c
+        reach = np.abs(alpha) + half
+        bad = (balls[:, qk] > 0.0) & (reach > limit)
+        if bad.any():
+            j = int(np.argmax(np.where(bad, reach, -1.0)))
+            raise InputError(
+                f"{LOAD_NAMES[k]}: the {tag} contact ellipse of ball {j} reaches {math.degrees(reach[j]):.1f} deg "
+                f"from the groove bottom (contact angle {math.degrees(alpha[j]):.1f} deg + half-width "
+                f"{math.degrees(half[j]):.1f} deg) > shoulder {math.degrees(limit):.0f} deg: the load puts the "
+                f"contact over the shoulder")

@@ -1,0 +1,123 @@
+"""The repository itself: no generated output tracked, and the session guard
+(tests/conftest.py) that keeps test runs from writing into the working tree."""
+import subprocess
+
+import pytest
+
+from conftest import ROOT, working_tree_changes
+
+
+def _git(*args):
+    try:
+        out = subprocess.run(["git", "-C", str(ROOT), *args], capture_output=True, text=True, timeout=60)
+    except OSError:
+        pytest.skip("git not available")
+    if out.returncode != 0:
+        pytest.skip("not a git work tree")
+    return out.stdout
+
+
+def test_no_exudyn_output_is_tracked():
+    # Exudyn's default SimulationSettings write solution/coordinatesSolution.txt
+    assert _git("ls-files", "solution") == ""
+    assert "solution/" in (ROOT / ".gitignore").read_text().split()
+
+
+def test_guard_sees_a_file_written_into_the_tree():
+    _git("status")
+    before = working_tree_changes()
+    probe = ROOT / "solution_probe_of_the_tree_guard.txt"
+    probe.write_text("x")
+    try:
+        after = working_tree_changes()
+    finally:
+        probe.unlink()
+    assert [e for e, _ in after - before] == ["?? solution_probe_of_the_tree_guard.txt"]
+    assert working_tree_changes() == before
+
+
+def _scripts():
+    return sorted((ROOT / "scenarios").glob("*.py")) + sorted((ROOT / "validation").glob("*.py"))
+
+
+#: Private names a script may import: benchmarks that time a compiled kernel itself.
+ALLOWED_PRIVATE = {"bench_quasistatic.py: exudyn_bearing.physics.contact_slip._contact_traction"}
+
+
+def test_scripts_use_only_public_names_of_the_package():
+    import ast
+
+    private = []
+    for path in _scripts():
+        for node in ast.walk(ast.parse(path.read_text(), str(path))):
+            if isinstance(node, ast.ImportFrom) and (node.module or "").startswith("exudyn_bearing"):
+                private += [f"{path.name}: {node.module}.{a.name}" for a in node.names if a.name.startswith("_")]
+    assert sorted(set(private) - ALLOWED_PRIVATE) == []
+
+
+def test_validation_and_scenarios_refer_to_no_issue_tracker():
+    import re
+
+    hits = [f"{p.name}:{i}" for p in _scripts() for i, line in enumerate(p.read_text().splitlines(), 1)
+            if re.search(r"\bissue\b", line, re.IGNORECASE)]
+    assert hits == []
+
+
+def test_no_unused_imports_or_variables():
+    import shutil
+
+    ruff = shutil.which("ruff")
+    if ruff is None:
+        pytest.skip("ruff not installed (pip install ruff)")
+    out = subprocess.run([ruff, "check", "--no-cache", "--select", "F401,F841", "tests", "validation", "scenarios",
+                          "exudyn_bearing"], cwd=ROOT, capture_output=True, text=True)
+    assert out.returncode == 0, out.stdout
+
+
+def test_report_figures_are_tracked_small_and_each_shown_once():
+    import re
+
+    report = (ROOT / "validation" / "REPORT.md").read_text()
+    links = re.findall(r"!\[[^\]]*\]\(([^)]+)\)", report)
+    assert len(links) >= 10
+    folder = ROOT / "validation" / "report_figures"
+    assert sorted(links) == sorted(f"report_figures/{p.name}" for p in folder.glob("*.png"))
+    for link in links:
+        path = ROOT / "validation" / link
+        assert path.stat().st_size < 150_000, link
+        # each figure has its sentence right below it
+        after = report[report.index(link):].splitlines()
+        assert after[2].startswith(f"*{path.name}*: ") and after[2].endswith("."), link
+    # every figure the text names is shown (the cross-engine pattern stands for the scenes shown)
+    named = set(re.findall(r"([A-Za-z0-9_]+\.png)", report))
+    assert named == {link.split("/")[-1] for link in links}
+    tracked = _git("ls-files", "validation/report_figures").split()
+    assert sorted(tracked) == sorted(f"validation/{link}" for link in links)
+
+
+def test_make_report_publishes_a_figure_small(tmp_path, monkeypatch):
+    import sys
+
+    sys.path.insert(0, str(ROOT / "validation"))
+    import make_report
+    from exudyn_bearing.outputs.plotting import pyplot, save_figure
+
+    monkeypatch.setattr(make_report, "OUT", tmp_path / "out")
+    monkeypatch.setattr(make_report, "FIGURES", tmp_path / "report_figures")
+    monkeypatch.setattr(make_report, "_published", [])
+    (tmp_path / "out").mkdir()
+    plt = pyplot()
+    fig, ax = plt.subplots()
+    ax.plot([0, 1, 2], [1, 3, 2], "o-")
+    save_figure(fig, tmp_path / "out" / "a.png")
+    (tmp_path / "report_figures").mkdir()
+    (tmp_path / "report_figures" / "stale.png").write_bytes(b"x")
+    lines = make_report.figure("a.png", "A line.")
+    assert lines == ["![a](report_figures/a.png)", "", "*a.png*: A line.", ""]
+    assert make_report.figure("missing.png", "Not there.") == []
+    make_report.remove_unpublished()
+    assert sorted(p.name for p in (tmp_path / "report_figures").iterdir()) == ["a.png"]
+    from PIL import Image
+
+    with Image.open(tmp_path / "report_figures" / "a.png") as im:
+        assert im.mode == "P" and im.size == Image.open(tmp_path / "out" / "a.png").size
