@@ -9,16 +9,17 @@ Layers (each imports only the ones above it in this list): :mod:`.data`
 >>> run = eb.simulate("6208", eb.Scenario(Fr=3000, omega=500, t_end=0.004, dt=2e-6))  # doctest: +SKIP
 >>> run.plot("6208.png"); print(run.summary())                                        # doctest: +SKIP
 """
-from .data import (BallBearing, InputError, Lubricant, Material, catalog, get_bearing, load_bearing, lubricants,
-                   materials)
+from .data import (BallBearing, InputError, Lubricant, Material, catalog, get_bearing, load_bearing, load_lubricant,
+                   lubricants, materials)
 from .model.scenario import Scenario
 from .model.stability import SimulationError, StepSizeWarning
 from .outputs.results import Results
 from .simulate import CreateBallBearing, simulate
+from .solvers.element.console import filter_exudyn_notes
 from .solvers.quasistatic import QuasiStaticSolution, solve_quasistatic
 
 __version__ = "0.1.0"
 
-__all__ = ["CreateBallBearing", "BallBearing", "InputError", "Lubricant", "Material", "Results", "Scenario", "SimulationError", "StepSizeWarning",
-           "catalog", "get_bearing", "load_bearing", "lubricants", "materials", "simulate",
-           "solve_quasistatic", "QuasiStaticSolution"]
+__all__ = ["CreateBallBearing", "filter_exudyn_notes", "BallBearing", "InputError", "Lubricant", "Material", "Results",
+           "Scenario", "SimulationError", "StepSizeWarning", "catalog", "get_bearing", "load_bearing", "load_lubricant",
+           "lubricants", "materials", "simulate", "solve_quasistatic", "QuasiStaticSolution"]

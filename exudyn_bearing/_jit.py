@@ -11,10 +11,16 @@ compiled copy of the shared contact kernel can never survive an edit or an
 upgrade, :func:`_drop_stale_caches` hashes all kernel sources at import and
 clears the package's numba cache files when the hash differs from the one
 stored beside them.
+
+Compiling every kernel takes 20-30 s of CPU time (once per installation and
+after every update); :func:`announce_compilation` says so on stderr when a
+run is about to compile instead of load them.
 """
 from __future__ import annotations
 
 import hashlib
+import os
+import sys
 from pathlib import Path
 
 from numba import njit
@@ -47,6 +53,36 @@ def _drop_stale_caches() -> None:
 
 
 _drop_stale_caches()
+
+
+#: The line :func:`announce_compilation` prints (measured: 21-26 s of CPU time for the
+#: reference engine or the Exudyn element on a free core of the 2-core test machine,
+#: 30-50 s of wall time when the machine is busy; a warm start takes 2-3 s).
+COMPILE_NOTICE = ("exudyn_bearing: compiling the numba kernels (first run after installing or updating; about 30 s, "
+                  "up to a minute on a busy machine; later runs load them from the cache)")
+_announced = False
+
+
+def _cache_is_cold(dispatcher) -> bool:
+    """True when numba has no cache index for ``dispatcher`` (it will compile, not load)."""
+    return not os.path.exists(dispatcher._cache._cache_file._index_path)
+
+
+def announce_compilation(*dispatchers) -> bool:
+    """Print :data:`COMPILE_NOTICE` on stderr (once per process) when any of
+    the compiled ``dispatchers`` has no on-disk cache yet; returns whether it
+    printed. Silent where numba's cache layout differs (or JIT is disabled)."""
+    global _announced
+    if _announced:
+        return False
+    try:
+        cold = any(_cache_is_cold(d) for d in dispatchers)
+    except (AttributeError, TypeError, OSError):
+        return False
+    if cold:
+        _announced = True
+        print(COMPILE_NOTICE, file=sys.stderr, flush=True)
+    return cold
 
 
 def _runtime_option_supported() -> bool:

@@ -4,7 +4,7 @@ chosen engine and returns :class:`~exudyn_bearing.outputs.results.Results`;
 :func:`CreateBallBearing` adds the bearing element to an Exudyn model."""
 from __future__ import annotations
 
-from .data import BallBearing, InputError, Lubricant, load_bearing
+from .data import BallBearing, InputError, Lubricant, load_bearing, load_lubricant
 from .model.scenario import Scenario
 from .outputs.results import Results
 from .solvers.element import BallBearingElement as _ElementBase
@@ -27,7 +27,8 @@ def simulate(bearing, scenario: Scenario | None = None, engine: str = "reference
     engine : {"reference", "exudyn"}
         The numba DEM reference core, or the same scene built in Exudyn with
         the bearing element (:mod:`exudyn_bearing.solvers.element`).
-    lubricant : Lubricant, optional
+    lubricant : Lubricant or str, optional
+        Lubricant, catalogue name or JSON file (default: the DEM papers').
     progress : bool or None
         Progress on stderr (None: for long runs).
 
@@ -44,6 +45,7 @@ def simulate(bearing, scenario: Scenario | None = None, engine: str = "reference
     198
     """
     scenario = Scenario() if scenario is None else scenario
+    lubricant = None if lubricant is None else load_lubricant(lubricant)
     if engine not in ENGINES:
         raise InputError(f"engine: unknown engine {engine!r} (valid: {', '.join(ENGINES)})")
     start = quasistatic_start(bearing, scenario, lubricant) if scenario.initial == "quasistatic" else None

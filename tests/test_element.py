@@ -488,4 +488,6 @@ def test_outer_ring_on_a_flexible_housing():
     assert x_h[0] == pytest.approx(3000.0 / k_h, rel=0.15)
     s = el.results().summary()
     assert s["cage_speed"] == pytest.approx(198.0, rel=0.01)
-    assert s["q_max_inner"] == pytest.approx(1420, rel=0.05)
+    # q_max_inner is the largest ball load of the window (Q_max, 1462 N quasi-static; it was the
+    # time mean of the per-sample maximum, about 1420 N)
+    assert s["q_max_inner"] == pytest.approx(1462, rel=0.05)

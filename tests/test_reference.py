@@ -207,7 +207,9 @@ def test_switches_keep_the_kinematics(kw):
     r = run(Fr=3000.0, omega=500.0, t_end=0.006, sample_dt=1e-4, **kw)
     s = r.summary()
     assert s["cage_speed"] == pytest.approx(198.0, rel=0.01)
-    assert s["q_max_outer"] == pytest.approx(1430, rel=0.05)
+    # q_max_outer is the largest ball load of the window (Q_max, 1462 N quasi-static plus the centrifugal
+    # load; it was the time mean of the per-sample maximum, about 1430 N)
+    assert s["q_max_outer"] == pytest.approx(1472, rel=0.05)
 
 
 def test_samples_not_steps_are_stored():

@@ -13,8 +13,8 @@ balls); the built-in inner ring is a free rigid body (polar inertia
 its load ramped in over 5 ms, ours a mass point with prescribed spin and the
 full load from the analytic start.
 
-Compares the largest ball load (inner and outer contacts) and the cage
-speed, averaged over the last quarter of the run.
+Compares the largest ball load (inner and outer contacts) over the last
+quarter of the run, its time mean, and the mean cage speed.
 
     python validation/peer_builtin.py [--t-end 0.04]
 """
@@ -51,7 +51,9 @@ def build_builtin(k=K_CONTACT, damping=D_CONTACT, mu=MU, v_reg=V_REG, ring_polar
     # the inner ring: mass of the 6208 inner ring, a large polar inertia that keeps it at
     # 500 rad/s while it spins the balls up (exudyn_bearing prescribes the ring speed)
     ring = InertiaCylinder(density=7850.0, length=0.018, outerRadius=0.024, innerRadius=0.02, axis=2)
-    jxx = ring.Inertia()[0, 0]
+    # tilting inertia raised with the polar one, so that the tensor stays physical
+    # (J_zz <= J_xx + J_yy; Exudyn warns otherwise): the ring hardly tilts, as our mass point
+    jxx = max(ring.Inertia()[0, 0], 0.5 * ring_polar_inertia)
     inner = mbs.CreateRigidBody(referencePosition=[0, 0, 0], initialAngularVelocity=[0, 0, 500.0],
                                 inertia=RigidBodyInertia(mass=ring.Mass(),
                                                          inertiaTensor=np.diag([jxx, jxx, ring_polar_inertia])))
@@ -102,8 +104,9 @@ def builtin(t_end, h=1e-5, n_samples=200, ring_polar_inertia=1e3):
     out = {}
     for race, ss_ in sens.items():
         f = np.stack([np.linalg.norm(mbs.GetSensorStoredData(s_)[:, 1:4], axis=1) for s_ in ss_], axis=1)
-        q = f.max(axis=1)
-        out[f"q_max_{race}"] = float(np.mean(q[-len(q) // 4:]))
+        q = f.max(axis=1)[-len(f) // 4:]  # largest ball load of each sample, last quarter
+        out[f"q_max_{race}"] = float(np.max(q))  # the definitions of Results.summary
+        out[f"q_max_{race}_mean"] = float(np.mean(q))
     w = mbs.GetSensorStoredData(cage)[:, 3]
     out["cage_speed"] = float(np.mean(w[-len(w) // 4:]))
     out["wall_s"] = wall
@@ -128,9 +131,9 @@ def main(argv=None):
     a = builtin(args.t_end)
     e = element(args.t_end)
     rows = {}
-    for k in ("q_max_inner", "q_max_outer", "cage_speed"):
+    for k in ("q_max_inner", "q_max_outer", "q_max_inner_mean", "q_max_outer_mean", "cage_speed"):
         rows[k] = dict(builtin=a[k], element=e[k], rel_diff=abs(e[k] / a[k] - 1))
-        print(f"{k:12s} built-in {a[k]:10.3f}  element {e[k]:10.3f}  rel. diff {100 * rows[k]['rel_diff']:.3f} %")
+        print(f"{k:16s} built-in {a[k]:10.3f}  element {e[k]:10.3f}  rel. diff {100 * rows[k]['rel_diff']:.3f} %")
     print(f"wall: built-in {a['wall_s']:.1f} s, element {e['wall_s']:.1f} s")
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)

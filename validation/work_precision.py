@@ -82,24 +82,31 @@ def main(argv=None):
             print(f"{fam:42s} {kw['dt'] * 1e6:6.2f} {row['wall_per_sim_s']:10.3f} {100 * row['err_q_max']:9.4f} "
                   f"{100 * row['err_cage']:10.4f} {100 * row['err_trajectory']:10.4f}")
     plt = pyplot()
-    fig, ax = plt.subplots(1, 3, figsize=(16, 5))
+    fig, ax = plt.subplots(1, 3, figsize=(16, 6.2))
+    fig.subplots_adjust(left=0.05, right=0.99, top=0.88, bottom=0.3, wspace=0.25)
     markers = "osD^v<>ph"
     for i, fam in enumerate(FAMILIES):
         sel = [r for r in rows if r["family"] == fam]
         x = [r["wall_per_sim_s"] for r in sel]
         for a, key in zip(ax, ("err_q_max", "err_cage", "err_trajectory")):
-            a.loglog(x, [max(r[key], 1e-7) for r in sel], marker=markers[i % len(markers)], ls="-", label=fam)
-    for a, title in zip(ax, ("q_max_inner (last quarter)", "cage speed (last quarter)",
+            y = [max(r[key], 1e-7) for r in sel]
+            a.loglog(x, y, marker=markers[i % len(markers)], ls="-", color=f"C{i}", label=fam if a is ax[0] else None)
+            for xi, yi, r in zip(x, y, sel):  # each point labelled with its step [us]
+                a.annotate(f"{r['dt'] * 1e6:g}", (xi, yi), textcoords="offset points", xytext=(4, 3), fontsize=6,
+                           color=f"C{i}")
+    for a, title in zip(ax, ("q_max_inner (largest ball load, last quarter)", "cage speed (mean, last quarter)",
                              "trajectory of the largest ball load (RMS)")):
         a.set_xlabel("wall seconds per simulated second")
         a.set_ylabel("relative error against dt = 0.5 us (floor 1e-7)")
         a.set_title(title)
         a.grid(alpha=0.3, which="both")
-    ax[0].legend(fontsize=6)
+    # the legend below the plots, where it covers no point; numbers at the points: dt [us]
+    fig.legend(loc="lower center", ncol=3, fontsize=8, frameon=False,
+               title="family (numbers at the points: time step dt [us])", title_fontsize=8)
     fig.suptitle("6208, 3000 N, 500 rad/s: speed against error (lower left is better)")
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
-    save_figure(fig, out / "work_precision.png", {k: [r[k] for r in rows] for k in
+    save_figure(fig, out / "work_precision.png", layout=False, columns={k: [r[k] for r in rows] for k in
                                                   ("dt", "wall_per_sim_s", "err_q_max", "err_cage", "err_trajectory")})
     (out / "work_precision.json").write_text(json.dumps(to_jsonable(dict(rows=rows, reference=s_ref, t_end=T)),
                                                         indent=2))

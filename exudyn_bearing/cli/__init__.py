@@ -1,26 +1,27 @@
 """Command line: ``python -m exudyn_bearing`` / ``exudyn-bearing``.
 
-Sub-commands (``--json`` for scripts, tables otherwise):
+Sub-commands (``--json`` for scripts, with a ``units`` map; tables otherwise):
 
-* ``info BEARING [--omega W]``: geometry, Hertz constants, kinematics.
-* ``static BEARING --Fr N [--Fa N] [--tilt fixed|free] [--Pd M] [--omega W]
-  [--film hd|mk] [--plot FILE.png]``: the zero-speed special case of
-  ``quasistatic`` (load distribution, held DOFs with their reactions) and the
-  lubrication map.
+* ``info BEARING [--omega W | --rpm N]``: geometry, Hertz constants, kinematics.
+* ``static BEARING --Fr N [--Fa N] [--tilt fixed|free] [--Pd M] [--omega W |
+  --rpm N] [--lubricant L] [--film hd|mk] [--plot FILE.png]``: the zero-speed
+  special case of ``quasistatic`` (load distribution, held DOFs with their
+  reactions) and the lubrication map.
 * ``quasistatic BEARING [--Fr N] [--Fa N] [--Mx NM] [--My NM] [--omega W |
   --rpm N] [--control outer|inner|auto|min-energy] [--traction NAME]
   [--ring-growth | --no-ring-growth] [--fit M] [--json] [--plot FILE.png]``:
   5-DOF equilibrium at speed, ball kinematics, slip, dissipation, stiffness.
-* ``simulate --bearing B --Fr N --omega W --engine reference --t-end T
-  [--out DIR] [--json]``: dynamic simulation; summary keys of
-  :meth:`exudyn_bearing.outputs.results.Results.summary`.
+* ``simulate [BEARING] --Fr N [--omega W | --rpm N] [--ramp UP STEADY DOWN]
+  [--t-end T] [--engine reference|exudyn] [--out DIR]``: dynamic simulation;
+  summary keys of :meth:`exudyn_bearing.outputs.results.Results.summary`.
 * ``vibration three-dof [--source-parameters] [--json]``: eigenvalues,
   natural frequencies, damping ratios and mode shapes of the 3-DOF
   outer ring / ball / inner ring model.
 
-BEARING is a catalogue name (6208, 7208, 6004, ACBB-120) or a JSON file with
-the geometry (format of ``exudyn_bearing/data/catalog.json``). Bad input
-exits with status 2 and a one-line message naming the parameter.
+BEARING is a catalogue name (6208, 7208, 6004, ACBB-120) or a JSON file
+(:mod:`exudyn_bearing.data.catalog`: one bearing by race radii or dimensions,
+or a catalogue-shaped file). Shared options live in :mod:`.common`. Bad
+input exits with status 2 and a one-line message naming the parameter.
 """
 from __future__ import annotations
 
@@ -33,14 +34,21 @@ from .common import Parser
 
 __all__ = ["main"]
 
+#: Text of ``exudyn-bearing --help``.
+DESCRIPTION = ("Rolling-element ball bearings: data sheet (info), load distribution and lubrication map at "
+               "zero speed (static), quasi-static equilibrium at speed (quasistatic), dynamic simulation ball by "
+               "ball (simulate), linear vibration models (vibration). BEARING is a catalogue name or a JSON file; "
+               "'exudyn-bearing COMMAND --help' lists a command's options.")
+
 #: Sub-commands: name -> module with ``add_parser(subparsers)`` and ``run(args)``.
 COMMANDS = {"info": info, "static": static, "quasistatic": quasistatic, "simulate": simulate,
             "vibration": vibration}
 
 
 def _parser() -> Parser:
-    p = Parser(prog="exudyn-bearing", description=__doc__.split("\n")[0])
-    sub = p.add_subparsers(dest="command", required=True, parser_class=Parser)
+    p = Parser(prog="exudyn-bearing", description=DESCRIPTION)
+    sub = p.add_subparsers(dest="command", required=True, parser_class=Parser, metavar="COMMAND",
+                           help="one of the sub-commands below ('COMMAND --help' for its options)")
     for module in COMMANDS.values():
         module.add_parser(sub)
     return p

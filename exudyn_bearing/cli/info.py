@@ -3,37 +3,28 @@ from __future__ import annotations
 
 import json
 
-from ..data import load_bearing
 from ..outputs.jsonio import to_jsonable
+from ..outputs.units import INFO_UNITS, with_units
 from ..physics.hertz import METHODS
 from ..solvers.analytic import bearing_info
-from .common import BEARING_HELP, finite_float, print_table
+from .common import add_bearing_argument, add_speed_arguments, bearing_from_args, omega_from_args, print_table
 
 
 def add_parser(sub):
-    p = sub.add_parser("info", help="geometry, Hertz constants and kinematics of a bearing")
-    p.add_argument("bearing", help=BEARING_HELP)
-    p.add_argument("--omega", type=finite_float, help="inner-ring speed [rad/s], outer ring fixed")
+    p = sub.add_parser("info", help="geometry, Hertz constants and kinematics of a bearing",
+                       description="Geometry, Hertz constants and, with a speed, kinematics and defect "
+                                   "frequencies [Hz] of a bearing.")
+    add_bearing_argument(p)
+    add_speed_arguments(p, what="none: geometry and Hertz constants only")
     p.add_argument("--hertz", choices=METHODS, default="exact", help="Hertz fidelity level")
-    p.add_argument("--json", action="store_true", help="print JSON")
-
-
-_LENGTHS = ("ball_radius", "inner_race_radius", "outer_race_radius", "inner_groove_radius",
-            "outer_groove_radius", "cage_ball_radius", "pitch_radius", "diametral_clearance",
-            "cage_pocket_clearance", "R_x_inner", "R_y_inner", "R_x_outer", "R_y_outer")
-_INFO_UNITS = dict({k: "m" for k in _LENGTHS}, K_inner="N/m^1.5", K_outer="N/m^1.5", K_n="N/m^1.5",
-                   cage_speed="rad/s", ball_spin="rad/s", ball_spin_relative="rad/s", omega="rad/s",
-                   ftf="Hz", bpfo="Hz", bpfi="Hz", bsf="Hz", rolling_speed="m/s", e_prime="Pa",
-                   ball_mass="kg", free_contact_angle_deg="deg")
+    p.add_argument("--json", action="store_true", help="print JSON (with a units map) instead of a table")
 
 
 def run(args):
-    b = load_bearing(args.bearing)
-    info = bearing_info(b, args.omega, args.hertz)
+    b = bearing_from_args(args)
+    info = bearing_info(b, omega_from_args(args), args.hertz)
     if args.json:
-        print(json.dumps(to_jsonable(info), indent=2))
+        print(json.dumps(to_jsonable(with_units(info, INFO_UNITS)), indent=2))
         return
-    rows = [(k, f"{v:.6g} {_INFO_UNITS.get(k, '')}".rstrip() if isinstance(v, float) else v)
-            for k, v in info.items() if k != "source"]
-    print_table(rows)
+    print_table([(k, v, INFO_UNITS.get(k)) for k, v in info.items() if k != "source"])
     print(f"source: {info['source']}")

@@ -1,4 +1,4 @@
-"""``simulate --bearing B``: dynamic simulation with the reference engine or the Exudyn element."""
+"""``simulate [BEARING]``: dynamic simulation with the reference engine or the Exudyn element."""
 from __future__ import annotations
 
 import argparse
@@ -9,47 +9,90 @@ from ..model.scenario import Scenario
 from ..outputs.jsonio import to_jsonable
 from ..physics.hertz import METHODS
 from ..simulate import simulate
-from .common import BEARING_HELP, finite_float, print_table
+from .common import (add_bearing_argument, add_lubricant_argument, add_speed_arguments, bearing_from_args,
+                     finite_float, lubricant_from_args, omega_from_args, print_table)
+
+#: Simulated time [s] without --t-end and --ramp.
+DEFAULT_T_END = 0.02
 
 
 def add_parser(sub):
-    p = sub.add_parser("simulate", help="dynamic simulation (numba DEM reference engine or Exudyn element)")
-    p.add_argument("--bearing", default="6208", help=BEARING_HELP)
-    p.add_argument("--engine", default="reference", choices=("reference", "exudyn"))
+    p = sub.add_parser("simulate", help="dynamic simulation (numba DEM reference engine or Exudyn element)",
+                       description="Dynamic simulation of a bearing ball by ball; prints the summary over the "
+                                   "steady phase of a --ramp protocol (else over the last quarter of the run) "
+                                   "and its window.")
+    add_bearing_argument(p, default="6208")
+    p.add_argument("--engine", default="reference", choices=("reference", "exudyn"),
+                   help="numba DEM reference core, or the same scene in Exudyn with the bearing element")
     p.add_argument("--Fr", type=finite_float, default=3000.0, help="radial load [N]")
     p.add_argument("--Fa", type=finite_float, default=0.0, help="axial load [N]")
-    p.add_argument("--Pd", type=finite_float, help="diametral clearance [m]")
-    p.add_argument("--omega", type=finite_float, default=500.0, help="inner-ring speed [rad/s]")
-    p.add_argument("--t-end", type=finite_float, default=0.02, help="simulated time [s]")
+    p.add_argument("--Pd", type=finite_float, help="diametral clearance [m] (negative: preload, e.g. -12.6e-6); "
+                                                    "default: the bearing's own")
+    add_speed_arguments(p, default=500.0)
+    add_lubricant_argument(p)
+    p.add_argument("--t-end", type=finite_float,
+                   help=f"simulated time [s] (default: the sum of the --ramp durations, else {DEFAULT_T_END:g})")
     p.add_argument("--ramp", type=finite_float, nargs=3, metavar=("UP", "STEADY", "DOWN"),
-                    help="speed protocol [s]: ramp-up, steady and slow-down durations (start from rest)")
+                   help="speed protocol [s]: ramp-up, steady and slow-down durations (from rest; "
+                        "default: none, the run starts at speed)")
     p.add_argument("--dt", type=finite_float, default=1e-6, help="time step [s]")
     p.add_argument("--sample-dt", type=finite_float, default=1e-4, help="output interval [s]")
-    p.add_argument("--integrator", choices=("verlet", "rk4"), default="verlet")
-    p.add_argument("--friction", choices=("history", "regularized", "none"), default="history")
+    p.add_argument("--integrator", choices=("verlet", "rk4"), default="verlet",
+                   help="explicit integrator (rk4 needs a history-free --friction)")
+    p.add_argument("--friction", choices=("history", "regularized", "none"), default="history",
+                   help="tangential force: Cundall-Strack spring with contact history, regularised Coulomb, none")
     p.add_argument("--tangential", choices=("explicit", "implicit"), default="explicit",
-                    help="update of the Cundall-Strack spring")
-    p.add_argument("--hertz", choices=METHODS, default="exact")
-    p.add_argument("--film", choices=("hd", "mk"), default="hd")
+                   help="update of the Cundall-Strack spring")
+    p.add_argument("--hertz", choices=METHODS, default="exact", help="Hertz fidelity level")
+    p.add_argument("--film", choices=("hd", "mk"), default="hd",
+                   help="film model: Hamrock-Dowson or Masjedi-Khonsari reading")
     p.add_argument("--cage", action=argparse.BooleanOptionalAction, default=True, help="torus cage on/off")
     p.add_argument("--lubrication", action=argparse.BooleanOptionalAction, default=True,
-                    help="Lambda-switched damping and friction on/off")
-    p.add_argument("--initial", choices=("analytic", "rest"), default="analytic")
-    p.add_argument("--out", metavar="DIR", help="write run.npz, run.json and run.png into DIR")
-    p.add_argument("--progress", action=argparse.BooleanOptionalAction, default=None)
-    p.add_argument("--json", action="store_true", help="print the summary as JSON")
+                   help="Lambda-switched damping and friction on/off")
+    p.add_argument("--initial", choices=("analytic", "rest"), default="analytic",
+                   help="start from the quasi-static state at speed, or from rest (--ramp with UP > 0: rest)")
+    p.add_argument("--out", metavar="DIR", help="write run.npz, run.json, run.png and run.csv into DIR")
+    p.add_argument("--progress", action=argparse.BooleanOptionalAction, default=None,
+                   help="progress on stderr (default: for runs over 2 million steps)")
+    p.add_argument("--json", action="store_true", help="print the summary as JSON (with its units map)")
 
 
-def run(args):
-    kw = dict(Fr=args.Fr, Fa=args.Fa, omega=args.omega, t_end=args.t_end, Pd=args.Pd, dt=args.dt,
+def scenario_from_args(args) -> Scenario:
+    """The Scenario of the arguments: --ramp sets the protocol and, without --t-end, the run length."""
+    t_end = args.t_end
+    kw = dict(Fr=args.Fr, Fa=args.Fa, omega=omega_from_args(args), Pd=args.Pd, dt=args.dt,
               sample_dt=args.sample_dt, integrator=args.integrator, friction=args.friction,
               tangential=args.tangential, hertz=args.hertz, film=args.film, cage=args.cage,
               lubrication=args.lubrication, initial=args.initial)
     if args.ramp:
-        kw.update(t_ramp_up=args.ramp[0], t_steady=args.ramp[1], t_ramp_down=args.ramp[2])
-        if args.initial == "analytic" and args.ramp[0] > 0:
+        up, steady, down = args.ramp
+        kw.update(t_ramp_up=up, t_steady=steady, t_ramp_down=down)
+        if args.initial == "analytic" and up > 0:
             kw["initial"] = "rest"
-    run = simulate(args.bearing, Scenario(**kw), engine=args.engine, progress=args.progress)
+        if t_end is None:
+            t_end = up + steady + down
+    kw["t_end"] = DEFAULT_T_END if t_end is None else t_end
+    return Scenario(**kw)
+
+
+def _table(summary):
+    units = summary["units"]
+    w = summary["window"]
+    rows = [("window", f"{w['t0']:.6g} - {w['t1']:.6g} s, {w['phase']} ({w['rule']}, {w['samples']} samples)")]
+    rows += [(k, v, units.get(k)) for k, v in summary.items()
+             if not isinstance(v, (dict, list)) and k not in ("window",)]
+    rows += [(f"regime_fraction.{k}", v) for k, v in summary["regime_fraction"].items()]
+    for name, ph in summary.get("phases", {}).items():
+        rows.append((f"phase {name}", f"{ph['t0']:.4g} - {ph['t1']:.4g} s: omega {ph['omega']:.4g} rad/s, cage "
+                                      f"{ph['cage_speed']:.4g} rad/s, ball spin {ph['ball_spin']:.4g} rad/s, "
+                                      f"q_max inner/outer {ph['q_max_inner']:.0f}/{ph['q_max_outer']:.0f} N"))
+    return rows
+
+
+def run(args):
+    sc = scenario_from_args(args)
+    run = simulate(bearing_from_args(args), sc, engine=args.engine, lubricant=lubricant_from_args(args),
+                   progress=args.progress)
     summary = run.summary()
     if args.out:
         npz, js = run.save(args.out)
@@ -58,6 +101,4 @@ def run(args):
     if args.json:
         print(json.dumps(to_jsonable(summary), indent=2))
         return
-    rows = [(k, v) for k, v in summary.items() if not isinstance(v, (dict, list))]
-    rows += [(f"regime_fraction.{k}", v) for k, v in summary["regime_fraction"].items()]
-    print_table(rows)
+    print_table(_table(summary))

@@ -7,14 +7,17 @@ import math
 
 import numpy as np
 
-from ..data import InputError, load_bearing
+from ..data import InputError
+from ..model.load_range import check_load_range
 from ..outputs.jsonio import to_jsonable
 from ..outputs.plotting import plot_static
+from ..outputs.units import REGIME_CODES, STATIC_UNITS, with_units
 from ..physics.hertz import METHODS
 from ..physics.load_distribution import StaticSolution, load_zone_parameter, stribeck_solution
 from ..solvers.analytic import lubrication_map
 from ..solvers.quasistatic import solve_quasistatic
-from .common import BEARING_HELP, finite_float
+from .common import (add_bearing_argument, add_lubricant_argument, add_speed_arguments, bearing_from_args,
+                     finite_float, lubricant_from_args, omega_from_args)
 
 HELP = ("zero-speed special case of 'quasistatic': 5-DOF inner-ring equilibrium without centrifugal or "
         "gyroscopic loads, rigid rings; the tilt is held at zero unless --tilt free (its reaction moment is "
@@ -24,34 +27,40 @@ HELP = ("zero-speed special case of 'quasistatic': 5-DOF inner-ring equilibrium 
 def add_parser(sub):
     p = sub.add_parser("static", help="load distribution and lubrication map (zero-speed quasi-static)",
                        description=HELP)
-    p.add_argument("bearing", help=BEARING_HELP)
+    add_bearing_argument(p)
     p.add_argument("--Fr", type=finite_float, required=True, help="radial load [N] on the inner ring")
     p.add_argument("--Fa", type=finite_float, default=0.0, help="axial load [N] on the inner ring")
     p.add_argument("--Mx", type=finite_float, default=0.0, help="moment [N m] about x (needs --tilt free)")
     p.add_argument("--My", type=finite_float, default=0.0, help="moment [N m] about y (needs --tilt free)")
     p.add_argument("--tilt", choices=("fixed", "free"), default="fixed",
                    help="inner-ring tilt held at zero as in the classical (Harris) load distribution and the DEM "
-                        "engines, with the reaction moment reported (default), or free")
-    p.add_argument("--Pd", type=finite_float, help="diametral clearance [m] (negative: preload); "
+                        "engines, with the reaction moment reported (the default), or free")
+    p.add_argument("--Pd", type=finite_float, help="diametral clearance [m] (negative: preload, e.g. -12.6e-6); "
                                                     "default: the bearing's own")
-    p.add_argument("--omega", type=finite_float, help="inner-ring speed [rad/s] for the lubrication map only")
+    add_speed_arguments(p, what="none: no lubrication map; the speed sets the lubrication map only")
+    add_lubricant_argument(p)
     p.add_argument("--film", choices=("hd", "mk"), default="hd",
-                    help="film model: Hamrock-Dowson (default) or Masjedi-Khonsari reading")
+                   help="film model: Hamrock-Dowson or Masjedi-Khonsari reading")
     p.add_argument("--hertz", choices=METHODS, default="exact", help="Hertz fidelity level")
-    p.add_argument("--phase", type=finite_float, default=0.0, help="azimuth of ball 0 [rad]")
+    p.add_argument("--phase", type=finite_float, default=0.0, help="azimuth of ball 0 [rad], taken modulo 2 pi")
     p.add_argument("--plot", metavar="FILE.png", help="save Q(psi) and Lambda(psi) plot (+ CSV beside)")
-    p.add_argument("--json", action="store_true", help="print JSON")
+    p.add_argument("--json", action="store_true", help="print JSON (with units and regime_codes) instead of a table")
 
 
-def static_result(b, fr, fa, mx=0.0, my=0.0, tilt="fixed", omega=None, film="hd", hertz="exact", phase=0.0):
+def static_result(b, fr, fa, mx=0.0, my=0.0, tilt="fixed", omega=None, film="hd", hertz="exact", phase=0.0,
+                  lubricant=None):
     """The dict of ``static`` (keys of :func:`exudyn_bearing.solvers.analytic.static_analysis`, plus the
-    tilt, the held DOFs and their reactions)."""
+    tilt, the held DOFs and their reactions). ``phase`` is taken modulo 2 pi; loads beyond the elastic
+    contact model (:mod:`exudyn_bearing.model.load_range`) raise InputError."""
     for name, v in (("radial_load", fr), ("axial_load", fa)):
         if v < 0.0:
             raise InputError(f"{name}: must be >= 0 (the bearing carries +x radial and +z axial load on the "
                              f"inner ring), got {v}")
     if tilt == "fixed" and (mx != 0.0 or my != 0.0):
         raise InputError("Mx: a moment load needs the free tilt (--tilt free)")
+    phase = math.remainder(phase, 2.0 * math.pi)  # the same balls; a huge phase loses their spacing in cos/sin
+    names = ("radial_load", "axial_load", "diametral_clearance")
+    check_load_range(b, fr, fa, hertz, names=names, phase=phase)  # before the solve: far-off loads do not converge
     fixed = {"tilt_x": 0.0, "tilt_y": 0.0} if tilt == "fixed" else {}
     s = solve_quasistatic(b, fr, fa, mx, my, omega=0.0, fixed=fixed, hertz_method=hertz, phase=phase,
                           stiffness=False)
@@ -66,8 +75,11 @@ def static_result(b, fr, fa, mx=0.0, my=0.0, tilt="fixed", omega=None, film="hd"
                          bl["delta_outer"], bl["alpha_inner"], u[:3].copy(), float(u[0]), float(u[2]), eps,
                          hertz_method=hertz,
                          reaction_moment=np.array([s.reactions.get("tilt_x", 0.0), s.reactions.get("tilt_y", 0.0)]))
+    if mx != 0.0 or my != 0.0:
+        check_load_range(b, fr, fa, hertz, names=names, solution=sol)
     res = {"bearing": b.name, "model": "zero-speed quasi-static (quasistatic at omega = 0, rigid rings)",
-           "Fr": fr, "Fa": fa, "Mx": mx, "My": my, "Pd": pd, "hertz_method": hertz, "psi": sol.psi, "q": q,
+           "Fr": fr, "Fa": fa, "Mx": mx, "My": my, "Pd": pd, "hertz_method": hertz, "phase": phase, "psi": sol.psi,
+           "q": q,
            "q_max": sol.q_max, "overlap": sol.overlap, "overlap_inner": sol.overlap_inner,
            "overlap_outer": sol.overlap_outer, "contact_angle": sol.contact_angle, "displacement": u[:3],
            "delta_r": sol.delta_r, "delta_a": sol.delta_a, "tilt_x": float(u[3]), "tilt_y": float(u[4]),
@@ -84,25 +96,30 @@ def static_result(b, fr, fa, mx=0.0, my=0.0, tilt="fixed", omega=None, film="hd"
     if omega is not None:
         res["omega"] = float(omega)
         res["film"] = film
-        res.update(lubrication_map(sol, omega, 0.0, None, film))
+        res.update(lubrication_map(sol, omega, 0.0, lubricant, film))
     return res
 
 
 def run(args):
-    b = load_bearing(args.bearing)
+    b = bearing_from_args(args)
     if args.Pd is not None:
         b = b.with_clearance(args.Pd)
-    res = static_result(b, args.Fr, args.Fa, args.Mx, args.My, args.tilt, args.omega, args.film, args.hertz,
-                        args.phase)
+    omega = omega_from_args(args)
+    res = static_result(b, args.Fr, args.Fa, args.Mx, args.My, args.tilt, omega, args.film, args.hertz,
+                        args.phase, lubricant_from_args(args))
     if args.plot:
         png, csv = plot_static(res, args.plot)
         res["plot"] = str(png)
         res["data"] = str(csv)
     if args.json:
-        print(json.dumps(to_jsonable(res), indent=2))
+        out = with_units(res, STATIC_UNITS)
+        if omega is not None:
+            out["regime_codes"] = REGIME_CODES
+        print(json.dumps(to_jsonable(out), indent=2))
         return
     print(f"{b.name}: Fr = {res['Fr']:g} N, Fa = {res['Fa']:g} N, Pd = {res['Pd'] * 1e6:.2f} um, "
-          f"Hertz {res['hertz_method']} (zero-speed quasi-static, tilt {args.tilt})")
+          f"Hertz {res['hertz_method']} (zero-speed quasi-static, tilt {args.tilt})"
+          + (f", omega = {omega:g} rad/s" if omega is not None else ""))
     print(f"q_max = {res['q_max']:.1f} N (continuous Stribeck {res.get('q_max_stribeck', float('nan')):.1f} N), "
           f"eps = {res['eps']:.4f}, delta_r = {res['delta_r'] * 1e6:.3f} um, "
           f"delta_a = {res['delta_a'] * 1e6:.3f} um, tilt_y = {res['tilt_y'] * 1e3:.4f} mrad")
@@ -110,18 +127,17 @@ def run(args):
         print(f"{name} held ({why}): reaction {res['reactions'][name]:.4g} {'N m' if 'tilt' in name else 'N'}"
               + (" (--tilt free releases it)" if why == "fixed" else ""))
     head = f"{'ball':>4} {'psi deg':>8} {'Q N':>9} {'delta um':>9} {'alpha deg':>9}"
-    if args.omega is not None:
+    if omega is not None:
         head += f" {'h_in um':>8} {'L_in':>6} {'h_out um':>8} {'L_out':>6} {'regime out':>10}"
     print(head)
-    names = ("boundary", "mixed", "full_film")
     for j in range(len(res["q"])):
         line = (f"{j:>4} {math.degrees(res['psi'][j]):8.1f} {res['q'][j]:9.1f} "
                 f"{res['overlap'][j] * 1e6:9.3f} {math.degrees(res['contact_angle'][j]):9.2f}")
-        if args.omega is not None:
-            reg = int(res["regime_outer"][j])
+        if omega is not None:
+            reg = str(int(res["regime_outer"][j]))
             line += (f" {res['h_min_inner'][j] * 1e6:8.3f} {res['lambda_inner'][j]:6.2f}"
                      f" {res['h_min_outer'][j] * 1e6:8.3f} {res['lambda_outer'][j]:6.2f}"
-                     f" {names[reg] if reg >= 0 else 'no contact':>10}")
+                     f" {REGIME_CODES[reg]:>10}")
         print(line)
     if args.plot:
         print(f"plot: {res['plot']}  data: {res['data']}")

@@ -23,7 +23,8 @@ from .common import BEARING_HELP, finite_float, print_table
 
 def add_parser(sub):
     p = sub.add_parser("vibration", help="linear vibration models of a bearing")
-    models = p.add_subparsers(dest="model", required=True, parser_class=type(p))
+    models = p.add_subparsers(dest="model", required=True, parser_class=type(p), metavar="MODEL",
+                              help="the vibration model ('MODEL --help' for its options)")
     t = models.add_parser("three-dof", help="3-DOF outer ring / ball / inner ring model (El Had et al. 2014)")
     t.add_argument("--source-parameters", action="store_true",
                    help="the source's printed values instead of values derived from the bearing")

@@ -9,13 +9,13 @@ Modules: :mod:`.errors` (InputError and the checks), :mod:`.materials`,
 construction), :mod:`.catalog` (``catalog.json``, look-up by name or file).
 """
 from .bearings import MAX_FREE_CONTACT_ANGLE, MAX_PRELOAD_INTERFERENCE, BallBearing
-from .catalog import (catalog, default_lubricant, get_bearing, get_traction_model, load_bearing, lubricants,
-                      materials, traction_models)
+from .catalog import (catalog, default_lubricant, get_bearing, get_traction_model, load_bearing, load_lubricant,
+                      lubricants, materials, traction_models)
 from .errors import InputError
 from .lubricants import Lubricant
 from .materials import Material
 from .traction import PARAMETER_NAMES as TRACTION_PARAMETERS, TRACTION_KINDS, TractionModel
 
 __all__ = ["InputError", "Material", "Lubricant", "BallBearing", "catalog", "materials", "lubricants",
-           "get_bearing", "load_bearing", "default_lubricant",
+           "get_bearing", "load_bearing", "load_lubricant", "default_lubricant",
            "TractionModel", "TRACTION_KINDS", "TRACTION_PARAMETERS", "traction_models", "get_traction_model", "MAX_FREE_CONTACT_ANGLE", "MAX_PRELOAD_INTERFERENCE"]

@@ -34,7 +34,7 @@ import dataclasses
 import math
 from dataclasses import dataclass, field
 
-from .errors import InputError, check_finite, check_positive
+from .errors import InputError, check_finite, check_integer, check_positive, check_text
 from .materials import Material
 
 __all__ = ["BallBearing", "MAX_FREE_CONTACT_ANGLE", "MAX_PRELOAD_INTERFERENCE"]
@@ -90,12 +90,10 @@ class BallBearing:
     outer_diameter: float | None = None
 
     def __post_init__(self):
-        z = self.n_balls
-        if isinstance(z, bool) or not isinstance(z, (int,)) and not (isinstance(z, float) and float(z).is_integer()):
-            raise InputError(f"n_balls: must be an integer, got {z!r}")
-        if int(z) < 3:
+        z = check_integer("n_balls", self.n_balls)
+        if z < 3:
             raise InputError(f"n_balls: at least 3 balls are needed, got {z}")
-        object.__setattr__(self, "n_balls", int(z))
+        object.__setattr__(self, "n_balls", z)
         rb = check_positive("ball_radius", self.ball_radius)
         ri = check_positive("inner_race_radius", self.inner_race_radius)
         ro = check_positive("outer_race_radius", self.outer_race_radius)
@@ -106,6 +104,15 @@ class BallBearing:
             raise InputError(f"free_contact_angle: must lie in [0, pi/2) rad, got {a0}")
         if not isinstance(self.material, Material):
             raise InputError(f"material: expected a Material, got {type(self.material).__name__}")
+        check_text("name", self.name)
+        check_text("source", self.source)
+        # plain floats from here on (numpy scalars and ints are numbers too)
+        for key, v in (("ball_radius", rb), ("inner_race_radius", ri), ("outer_race_radius", ro),
+                       ("inner_groove_radius", rci), ("outer_groove_radius", rco), ("free_contact_angle", a0)):
+            object.__setattr__(self, key, v)
+        for key in ("cage_ball_radius", "bore", "outer_diameter"):
+            if getattr(self, key) is not None:
+                object.__setattr__(self, key, check_positive(key, getattr(self, key)))
         if ro <= ri:
             raise InputError(f"outer_race_radius: must exceed inner_race_radius ({ri}), got {ro}")
         if rci <= rb:
@@ -144,9 +151,52 @@ class BallBearing:
             if rz >= 0.5 * (ro - ri):
                 raise InputError(
                     f"cage_ball_radius: {rz} does not fit between the races (gap {ro - ri})")
-        for name in ("bore", "outer_diameter"):
-            if getattr(self, name) is not None:
-                check_positive(name, getattr(self, name))
+
+    @classmethod
+    def from_dimensions(cls, n_balls, ball_diameter, pitch_diameter, inner_conformity, outer_conformity,
+                        diametral_clearance=0.0, free_contact_angle=0.0, material: Material | None = None,
+                        cage_ball_radius=None, name: str = "custom", source: str = "", bore=None,
+                        outer_diameter=None) -> "BallBearing":
+        """A bearing from the dimensions of a data sheet.
+
+        Parameters
+        ----------
+        n_balls : int
+            Z.
+        ball_diameter, pitch_diameter : float
+            D and d_m [m].
+        inner_conformity, outer_conformity : float
+            f_i = R_ci / D and f_o = R_co / D [-], above 0.5 (typically 0.51-0.54).
+        diametral_clearance : float
+            P_d [m] (negative: preload).
+        free_contact_angle : float
+            alpha_0 [rad] (0 for deep-groove bearings).
+        material, cage_ball_radius, name, source, bore, outer_diameter
+            As in the class.
+
+        The race radii follow as R_i = d_m/2 - D/2 - P_d/4 and
+        R_o = d_m/2 + D/2 + P_d/4 (the radial construction of the module
+        docstring, also for alpha_0 > 0), the groove radii as f D.
+
+        >>> b = BallBearing.from_dimensions(9, 12.6e-3, 60.6e-3, 0.52, 0.52, cage_ball_radius=4.19e-3)
+        >>> round(b.inner_race_radius * 1e3, 6), round(b.outer_groove_radius * 1e3, 6)
+        (24.0, 6.552)
+        """
+        d = check_positive("ball_diameter", ball_diameter)
+        dm = check_positive("pitch_diameter", pitch_diameter)
+        if not d < dm:
+            raise InputError(f"ball_diameter: must be smaller than pitch_diameter ({dm}), got {d}")
+        fi = check_finite("inner_conformity", inner_conformity)
+        fo = check_finite("outer_conformity", outer_conformity)
+        for key, f in (("inner_conformity", fi), ("outer_conformity", fo)):
+            if not f > 0.5:
+                raise InputError(f"{key}: must exceed 0.5 (groove radius f D above the ball radius D/2), got {f}")
+        pd = check_finite("diametral_clearance", diametral_clearance)
+        return cls(n_balls=n_balls, ball_radius=0.5 * d, inner_race_radius=0.5 * dm - 0.5 * d - 0.25 * pd,
+                   outer_race_radius=0.5 * dm + 0.5 * d + 0.25 * pd, inner_groove_radius=fi * d,
+                   outer_groove_radius=fo * d, cage_ball_radius=cage_ball_radius,
+                   free_contact_angle=free_contact_angle, material=Material() if material is None else material,
+                   name=name, source=source, bore=bore, outer_diameter=outer_diameter)
 
     # -- derived quantities -------------------------------------------------
     @property

@@ -4,7 +4,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from .errors import InputError, check_finite, check_nonnegative, check_positive
+from .errors import InputError, check_finite, check_nonnegative, check_positive, check_text
 
 __all__ = ["Lubricant"]
 
@@ -45,19 +45,22 @@ class Lubricant:
     source: str = "PHYSICS.md sec. 4-5"
 
     def __post_init__(self):
-        check_positive("viscosity", self.viscosity)
-        check_nonnegative("pressure_viscosity", self.pressure_viscosity)
-        check_nonnegative("roughness_race", self.roughness_race)
-        check_nonnegative("roughness_ball", self.roughness_ball)
-        check_positive("roughness_factor", self.roughness_factor)
+        values = {}
+        for key, check in (("viscosity", check_positive), ("pressure_viscosity", check_nonnegative),
+                           ("roughness_race", check_nonnegative), ("roughness_ball", check_nonnegative),
+                           ("roughness_factor", check_positive), ("lambda_mixed", check_nonnegative),
+                           ("lambda_full_film", check_finite), ("mu_boundary", check_nonnegative),
+                           ("mu_full_film", check_nonnegative)):
+            values[key] = check(key, getattr(self, key))
+        check_text("name", self.name)
+        check_text("source", self.source)
+        for key, v in values.items():  # plain floats from here on (numpy scalars, ints)
+            object.__setattr__(self, key, v)
         if self.composite_roughness <= 0.0:
             raise InputError("roughness_race: race and ball roughness are both zero; Lambda is undefined")
-        l1 = check_nonnegative("lambda_mixed", self.lambda_mixed)
-        l3 = check_finite("lambda_full_film", self.lambda_full_film)
+        l1, l3 = values["lambda_mixed"], values["lambda_full_film"]
         if l3 <= l1:
             raise InputError(f"lambda_full_film: must exceed lambda_mixed ({l1}), got {l3}")
-        check_nonnegative("mu_boundary", self.mu_boundary)
-        check_nonnegative("mu_full_film", self.mu_full_film)
 
     @property
     def composite_roughness(self) -> float:

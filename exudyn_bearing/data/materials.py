@@ -3,7 +3,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .errors import InputError, check_finite, check_nonnegative, check_positive
+from .errors import InputError, check_finite, check_nonnegative, check_positive, check_text
 
 __all__ = ["Material"]
 
@@ -39,15 +39,20 @@ class Material:
     source: str = "PHYSICS.md sec. 2"
 
     def __post_init__(self):
-        check_positive("youngs_modulus", self.youngs_modulus)
-        nu = check_finite("poisson_ratio", self.poisson_ratio)
+        values = {"youngs_modulus": check_positive("youngs_modulus", self.youngs_modulus),
+                  "poisson_ratio": check_finite("poisson_ratio", self.poisson_ratio),
+                  "density": check_positive("density", self.density),
+                  "hysteretic_damping": check_nonnegative("hysteretic_damping", self.hysteretic_damping)}
+        nu = values["poisson_ratio"]
         if not -1.0 < nu < 0.5:
             raise InputError(f"poisson_ratio: must lie in (-1, 0.5), got {nu}")
-        check_positive("density", self.density)
-        check_nonnegative("hysteretic_damping", self.hysteretic_damping)
-        te = check_finite("thermal_expansion", self.thermal_expansion)
+        te = values["thermal_expansion"] = check_finite("thermal_expansion", self.thermal_expansion)
         if not 0.0 <= te < 1e-4:
             raise InputError(f"thermal_expansion: must lie in [0, 1e-4) 1/K, got {te}")
+        check_text("name", self.name)
+        check_text("source", self.source)
+        for key, v in values.items():  # plain floats from here on (numpy scalars, ints)
+            object.__setattr__(self, key, v)
 
     @property
     def shear_modulus(self) -> float:

@@ -13,6 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..data import InputError, get_traction_model
+from ..data.errors import check_bool, check_number
 from ..physics.ehl import film_model_code
 from ..physics.hertz import method_code
 from .motion import omega_profile
@@ -166,14 +167,22 @@ class Scenario:
     sample_dt: float = 1e-4
 
     def __post_init__(self):
+        # numbers as plain floats (numpy scalars are numbers; strings and booleans are not)
         for name in ("Fr", "Fa", "omega", "t_end", "t_ramp_up", "t_ramp_down", "mu_dry",
-                     "regularizing_speed", "guide_clearance", "dt", "sample_dt"):
-            v = getattr(self, name)
-            if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
+                     "regularizing_speed", "guide_clearance", "dt", "sample_dt", "tangential_stiffness_ratio"):
+            v = check_number(name, getattr(self, name))
+            if not math.isfinite(v):
                 raise InputError(f"{name}: must be a finite number, got {v!r}")
-        ts = self.t_steady
-        if not isinstance(ts, (int, float)) or math.isnan(ts) or ts < 0:
+            object.__setattr__(self, name, v)
+        ts = check_number("t_steady", self.t_steady)
+        if math.isnan(ts) or ts < 0:
             raise InputError(f"t_steady: must be >= 0 (inf allowed), got {ts!r}")
+        object.__setattr__(self, "t_steady", ts)
+        for name in ("Pd", "ring_mass"):
+            if getattr(self, name) is not None:
+                object.__setattr__(self, name, check_number(name, getattr(self, name)))
+        for name in ("cage", "lubrication"):
+            object.__setattr__(self, name, check_bool(name, getattr(self, name)))
         for name in ("Fr", "Fa", "t_ramp_up", "t_ramp_down", "mu_dry"):
             if getattr(self, name) < 0:
                 raise InputError(f"{name}: must be >= 0, got {getattr(self, name)}")
@@ -182,6 +191,9 @@ class Scenario:
                 raise InputError(f"{name}: must be > 0, got {getattr(self, name)}")
         if self.sample_dt < self.dt:
             raise InputError(f"sample_dt: must be >= dt ({self.dt}), got {self.sample_dt}")
+        if self.t_end < self.sample_dt:
+            raise InputError(f"t_end: must be >= sample_dt ({self.sample_dt:g} s) so that the run has a sample, "
+                             f"got {self.t_end:g}")
         if self.dt > 1e-4:
             raise InputError(f"dt: {self.dt} s is far above any stable step of a Hertz contact")
         if not 2.0 / 3.0 - 1e-12 <= self.tangential_stiffness_ratio <= 1.0:

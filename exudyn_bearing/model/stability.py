@@ -17,11 +17,13 @@ from ..data import BallBearing, InputError, Lubricant, default_lubricant
 from ..physics import hertz, kinematics
 from ..physics.friction import sphere_tangential_mass
 from ..physics.hertz import material_reduced_modulus
-from ..physics.load_distribution import race_stiffness, static_equilibrium
+from ..physics.load_distribution import race_stiffness
+from .load_range import check_load_range
 from .scenario import Scenario
 
-__all__ = ["SimulationError", "StepSizeWarning", "StableStep", "STABILITY_SAFETY", "explicit_step_factor",
-           "stable_step", "step_warning", "cage_load_check", "ring_contact_stiffness", "ring_stable_step"]
+__all__ = ["SimulationError", "StepSizeWarning", "StableStep", "STABILITY_SAFETY", "START_UP_CAGE_LOAD",
+           "STEADY_CAGE_LOAD", "CAGE_BLOW_UP_RATIO", "explicit_step_factor", "expected_cage_load", "stable_step",
+           "step_warning", "cage_load_check", "ring_contact_stiffness", "ring_stable_step"]
 
 
 class SimulationError(RuntimeError):
@@ -37,6 +39,27 @@ class StepSizeWarning(UserWarning):
 #: 500 rad/s with the implicit tangential spring blows up at 0.93 of the
 #: linearised normal limit; validation/bench_reference.py measures it).
 STABILITY_SAFETY = 0.85
+
+#: Ball / cage-ball contact load [fraction of the largest ball load] the
+#: a-priori estimate assumes where the scene loads the cage: start-up and
+#: slow-down, starts from rest, and loaded balls at unequal contact angles
+#: (they roll at different kinematic speeds and push the cage until they
+#: slide, mu Q). Measured (validation/cage_step_checks.py, step_limits.py):
+#: up to 72 N at 2 us in the 6208 protocol (5 % of Q), 257 N for the 7208
+#: under F_r = F_a (19 %), 180 N for the 6208 under F_r = 3000 N, F_a = 500 N.
+START_UP_CAGE_LOAD = 0.1
+#: The same for steady runs from the analytic state whose loaded balls all
+#: have one contact angle (nothing drives the cage): 0.1 % of the ball load.
+#: Measured at 2 us (validation/step_limits.py): the 6208 at 3000 N and
+#: 500 rad/s reaches 1.2 N (0.085 %), other steady scenes 0.2-7 N, most of it
+#: in the first milliseconds; the engines check the loads a run reached
+#: (:func:`cage_load_check`).
+STEADY_CAGE_LOAD = 1e-3
+#: Ratio of the step to the cage contacts' estimate from which runs may blow
+#: up (validation/step_limits.py: the 7208 blew up at 1.60, the 6208 protocol
+#: at 1.81 with the implicit and 2.07 with the explicit spring; runs at 1.28,
+#: 1.29 and 1.55 only chattered, and so did the explicit 6208 protocol at 1.81).
+CAGE_BLOW_UP_RATIO = 1.6
 
 
 def explicit_step_factor(zeta=0.0, integrator="verlet"):
@@ -77,14 +100,54 @@ class StableStep:
     friction: float
     cage: float
     limited_by: str
+    #: ball / cage-ball contact load [N] the cage limit was taken at, and why
+    cage_load: float = math.nan
+    cage_basis: str = ""
+
+
+def _static_solution(b: BallBearing, scenario: Scenario):
+    """Quasi-static solution under the scenario's F_r, F_a (None for an
+    unloaded bearing with clearance, which has no equilibrium to solve);
+    InputError for loads outside the elastic contact model
+    (:func:`~exudyn_bearing.model.load_range.check_load_range`)."""
+    return check_load_range(b, scenario.Fr, scenario.Fa, scenario.hertz)
 
 
 def _static_ball_loads(b: BallBearing, scenario: Scenario) -> np.ndarray:
-    """Quasi-static ball loads [N] under the scenario's F_r, F_a (zeros for an
-    unloaded bearing with clearance, which has no equilibrium to solve)."""
-    if scenario.Fr > 0 or scenario.Fa > 0 or b.diametral_clearance < 0:
-        return static_equilibrium(b, scenario.Fr, scenario.Fa, hertz_method=scenario.hertz).q
-    return np.zeros(b.n_balls)
+    """Quasi-static ball loads [N] under the scenario's F_r, F_a (zeros without an equilibrium)."""
+    sol = _static_solution(b, scenario)
+    return np.zeros(b.n_balls) if sol is None else sol.q
+
+
+def expected_cage_load(bearing: BallBearing, scenario: Scenario, solution=None) -> tuple[float, str]:
+    """(fraction of the ball load, reason): the ball / cage-ball contact load
+    the a-priori stable step assumes for the scene.
+
+    :data:`STEADY_CAGE_LOAD` for a run that starts from the analytic state
+    at its speed (``initial="analytic"``, no start-up ramp), ends before any
+    slow-down and whose loaded balls share one contact angle (their
+    kinematic cage speeds agree within 1e-6); :data:`START_UP_CAGE_LOAD`
+    otherwise. ``solution``: the scene's quasi-static solution if known.
+    """
+    s = scenario
+    reasons = []
+    if s.t_ramp_up > 0.0:
+        reasons.append("start-up")
+    elif s.initial != "analytic":
+        reasons.append("start from rest")
+    if s.t_end > s.t_ramp_up + s.t_steady:
+        reasons.append("slow-down")
+    if reasons:
+        return START_UP_CAGE_LOAD, " and ".join(reasons)
+    b = bearing if s.Pd is None else bearing.with_clearance(s.Pd)
+    sol = _static_solution(b, s) if solution is None else solution
+    if sol is not None:
+        loaded = sol.q > 0.0
+        if loaded.any():
+            wc = kinematics.cage_speed(1.0, 0.0, b.ball_radius, b.pitch_radius, sol.contact_angle[loaded])
+            if np.ptp(wc) > 1e-6 * np.max(np.abs(wc)):
+                return START_UP_CAGE_LOAD, "loaded balls at unequal contact angles"
+    return STEADY_CAGE_LOAD, "steady run from the analytic state"
 
 
 def stable_step(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant | None = None,
@@ -104,19 +167,30 @@ def stable_step(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant |
     regularised-friction damping
     (dt < 2 m_eff / c resp. 2.83 m_eff / c, c = 2 mu Q / v_reg) and the
     critically damped ball / cage-ball contacts (two per cage ball, f at
-    zeta = 1: 0.83 for Verlet) at ``cage_load`` [N] (default a tenth of the
-    ball load, the order of the start-up and slow-down loads of the 6208;
-    the engines check the loads a run reaches, :func:`cage_load_check`).
-    Above the cage limit a run need not blow up: the cage loads grow about
-    twofold and chatter (validation/REPORT.md). The implicit tangential
-    spring sets no limit.
+    zeta = 1: 0.83 for Verlet) at ``cage_load`` [N] (default
+    :func:`expected_cage_load`: a tenth of the ball load in start-up,
+    slow-down, from rest or at unequal contact angles, 0.1 % in steady runs
+    from the analytic state; the engines check the loads a run reaches,
+    :func:`cage_load_check`).
+
+    What happens above each limit (validation/step_limits.py): above the
+    normal limit the run blows up; above the tangential (explicit spring)
+    or regularised-friction limit the friction forces may chatter at their
+    Coulomb cap (slip and frictional power wrong; the explicit spring did at
+    1.26 times its limit, the regularised friction, whose estimate takes
+    mu_boundary, at 3.7 times but not at 2.2 times); above the cage limit the
+    cage loads chatter at about twice their value, and from about
+    :data:`CAGE_BLOW_UP_RATIO` times it runs may blow up. The implicit
+    tangential spring sets no limit.
     """
     b = bearing if scenario.Pd is None else bearing.with_clearance(scenario.Pd)
     lub = default_lubricant() if lubricant is None else lubricant
     mb = b.ball_mass
     wc = float(kinematics.cage_speed(scenario.omega, 0.0, b.ball_radius, b.pitch_radius, b.free_contact_angle))
     q_cf = float(kinematics.centrifugal_force(mb, b.pitch_radius, wc))
-    q = max(float(_static_ball_loads(b, scenario).max()) + q_cf, 10.0)
+    sol = _static_solution(b, scenario)
+    q_static = 0.0 if sol is None else float(sol.q.max())
+    q = max(q_static + q_cf, 10.0)
     ki, ko, _kn = race_stiffness(b, b.free_contact_angle, scenario.hertz)
     kt_i = float(hertz.tangent_stiffness(ki, q))
     kt_o = float(hertz.tangent_stiffness(ko, q))
@@ -130,26 +204,57 @@ def stable_step(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant |
     elif scenario.friction == "regularized" and mu > 0:
         dt_f = factor * sphere_tangential_mass(mb) / (2.0 * mu * q / scenario.regularizing_speed)
     dt_c = math.inf
+    load_c, basis = math.nan, ""
     if scenario.cage and b.has_cage:
         mz = b.cage_ball_mass
         em = material_reduced_modulus(b.material)
         kbz = float(hertz.sphere_sphere_stiffness(b.ball_radius, b.cage_ball_radius, em))
-        kc = float(hertz.tangent_stiffness(kbz, 0.1 * q if cage_load is None else max(float(cage_load), 1e-3)))
+        if cage_load is None:
+            fraction, basis = expected_cage_load(b, scenario.replace(Pd=None), sol)
+            load_c = fraction * q
+        else:
+            load_c, basis = max(float(cage_load), 1e-3), "given"
+        kc = float(hertz.tangent_stiffness(kbz, load_c))
         dt_c = explicit_step_factor(1.0, scenario.integrator) / math.sqrt(2.0 * kc * (mb + mz) / (mb * mz))
     parts = {"normal": dt_n, "tangential": dt_t, "friction": dt_f, "cage": dt_c}
     name = min(parts, key=parts.get)
-    return StableStep(STABILITY_SAFETY * parts[name], dt_n, dt_t, dt_f, dt_c, name)
+    return StableStep(STABILITY_SAFETY * parts[name], dt_n, dt_t, dt_f, dt_c, name, load_c, basis)
 
 
 def step_warning(label: str, dt: float, stable: StableStep) -> str | None:
     """The warning text for a step ``dt`` above the estimate ``stable.dt``
-    (``label`` names the step, e.g. "dt = 5e-06 s"), else None."""
-    if dt <= stable.dt:
+    (``label`` names the step, e.g. "dt = 5e-06 s"), else None.
+
+    Names every limit the step exceeds (each ``STABILITY_SAFETY`` times the
+    linearised one) and what follows from it: the normal contacts blow up;
+    the tangential springs and the regularised friction may chatter at
+    their Coulomb cap; the cage loads may chatter and, from
+    :data:`CAGE_BLOW_UP_RATIO` times their limit, the run may blow up
+    (measured in validation/step_limits.py)."""
+    if not dt > stable.dt:
         return None
-    what = ("the cage loads may be unreliable in start-up and slow-down (the loads a run reaches are checked at "
-            "its end)" if stable.limited_by == "cage" else "the run may blow up")
-    return (f"{label} exceeds the stable-step estimate {stable.dt:.3g} s (limited by the {stable.limited_by} "
-            f"contact stiffness); {what}")
+    limits = {k: STABILITY_SAFETY * getattr(stable, k) for k in ("normal", "tangential", "friction", "cage")}
+    over = [k for k, v in limits.items() if dt > v]
+    names = {"normal": "normal contacts of the balls", "tangential": "explicit tangential (Cundall-Strack) springs",
+             "friction": "regularised friction", "cage": "ball / cage-ball contacts"}
+    extra = {k: "" for k in names}
+    if math.isfinite(stable.cage_load):
+        extra["cage"] = f" at {stable.cage_load:.3g} N, {stable.cage_basis}"
+    listed = [f"the {names[k]} ({limits[k]:.3g} s{extra[k]})" for k in over]
+    text = (f"{label} exceeds the stable step of " + ", ".join(listed[:-1]) + (" and " if len(listed) > 1 else "")
+            + listed[-1] + ". ")
+    blow = [k for k in over if k == "normal" or (k == "cage" and dt >= CAGE_BLOW_UP_RATIO * limits[k])]
+    if blow:
+        text += "The run " + ("will" if "normal" in blow else "may") + " blow up (" + " and ".join(
+            "normal contacts" if k == "normal" else f"cage contacts, dt >= {CAGE_BLOW_UP_RATIO:g} times their limit"
+            for k in blow) + "). "
+    if "tangential" in over or "friction" in over:
+        text += ("The friction forces may chatter at their Coulomb cap: slip and frictional power wrong"
+                 + (" (tangential='implicit' lifts the springs' limit)" if "tangential" in over else "") + ". ")
+    if "cage" in over and "cage" not in blow:
+        text += ("The cage loads may chatter at about twice their value (ball loads and speeds are not "
+                 "affected; the loads the run reaches are checked at its end). ")
+    return text + "Reduce the step."
 
 
 def cage_load_check(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant | None, max_cage_load: float,
@@ -195,7 +300,7 @@ def ring_stable_step(bearing: BallBearing, scenario: Scenario, ring_mass: float,
 
     2/omega with omega^2 = :func:`ring_contact_stiffness` / m_ring. No safety
     factor: the 81 g ring of the 6208 test scene at F_r = 3000 N gets
-    22.8 us; the fast mode runs at 20 us, is 59 % off at 25 us and blows up
+    22.8 us; the fast mode runs at 20 us, puts Q_max 5.6 times too high at 25 us and blows up
     at 30 us (validation/fast_mode_checks.py). For a ring on a rigid body
     with several bearings the element uses the body's mass matrix and all
     its bearings (``BallBearingElement.ringStableStep``).

@@ -7,7 +7,7 @@ from pathlib import Path
 import numpy as np
 
 __all__ = ["plot_static", "plot_run", "plot_speeds", "plot_srr", "plot_film_by_phase",
-           "plot_quasi_static", "save_csv", "save_figure", "pyplot"]
+           "plot_quasi_static", "save_csv", "save_figure", "pyplot", "loaded_ball_mask", "label_regime_lines"]
 
 
 def pyplot():
@@ -120,10 +120,31 @@ def plot_static(res: dict, png) -> tuple[Path, Path]:
     return png, save_figure(fig, png, cols, dpi=120).with_suffix(".csv")
 
 
+def loaded_ball_mask(run) -> np.ndarray:
+    """(n, Z) True where a ball carries load at both races (it is in the loaded
+    zone); False for balls held by the centrifugal force alone or out of contact."""
+    return (run.contact("load", "inner") > 0.0) & (run.contact("load", "outer") > 0.0)
+
+
+def label_regime_lines(ax, x=178.0, fontsize=8, ha="right"):
+    """Dashed lines at Lambda = 1 and 3 with the regimes they separate, text ending at ``x``."""
+    for y, text in ((1.0, "boundary | mixed"), (3.0, "mixed | full film")):
+        ax.axhline(y, color="k", lw=0.7, ls="--")
+        ax.text(x, y, text, va="bottom", ha=ha, fontsize=fontsize)
+
+
+def _legend_above(ax, ncol=2):
+    """A legend in the band above the axes, where it covers no data."""
+    ax.legend(fontsize=8, loc="lower left", bbox_to_anchor=(0.0, 1.01), ncol=ncol, frameon=False,
+              borderaxespad=0.0, handlelength=1.8)
+
+
 def plot_run(run, png) -> Path:
     """Overview of a simulation: speeds, largest ball loads, Lambda and h_min
-    against azimuth (coloured by time). Writes the PNG and a CSV of the time
-    series beside it; returns the PNG path."""
+    of the outer contacts of the balls in the loaded zone against azimuth
+    (coloured by time; balls held by the centrifugal force alone are left
+    out). Writes the PNG and a CSV of the time series beside it; returns the
+    PNG path."""
     plt = _pyplot()
     png = Path(png)
     png.parent.mkdir(parents=True, exist_ok=True)
@@ -135,7 +156,8 @@ def plot_run(run, png) -> Path:
     spin = run.ball_spin_series().mean(axis=1)
     q_in = run.contact("load", "inner").max(axis=1)
     q_out = run.contact("load", "outer").max(axis=1)
-    fig, ax = plt.subplots(2, 2, figsize=(12, 8))
+    fig, ax = plt.subplots(2, 2, figsize=(12, 8.6))
+    fig.subplots_adjust(left=0.07, right=0.9, top=0.88, bottom=0.07, hspace=0.42, wspace=0.22)
     a = ax[0, 0]
     a.plot(t, omega, label="inner ring omega")
     a.plot(t, spin, label="ball |omega| (mean)")
@@ -148,29 +170,32 @@ def plot_run(run, png) -> Path:
                   color="k", ls=":", lw=0.8, label="kinematic ball spin")
     a.set_xlabel("t [s]")
     a.set_ylabel("angular speed [rad/s]")
-    a.legend(fontsize=8)
+    _legend_above(a)
     a.grid(alpha=0.3)
     a = ax[0, 1]
-    a.plot(t, q_in, label="max inner load")
-    a.plot(t, q_out, label="max outer load")
+    a.plot(t, q_in, label="largest inner ball load")
+    a.plot(t, q_out, label="largest outer ball load")
     a.set_xlabel("t [s]")
     a.set_ylabel("ball load [N]")
-    a.legend(fontsize=8)
+    _legend_above(a)
     a.grid(alpha=0.3)
     psi = np.degrees(run.azimuth())
     tt = np.broadcast_to(t[:, None], psi.shape)
-    for a, name, label in ((ax[1, 0], "lambda", "film parameter Lambda (outer)"),
-                           (ax[1, 1], "h_min", "h_min outer [um]")):
+    loaded = loaded_ball_mask(run)
+    for a, name, label in ((ax[1, 0], "lambda", "film parameter Lambda, outer contact [-]"),
+                           (ax[1, 1], "h_min", "h_min, outer contact [um]")):
         y = run.contact(name, "outer") * (1e6 if name == "h_min" else 1.0)
-        sc = a.scatter(psi.ravel(), y.ravel(), c=tt.ravel(), s=4, cmap="viridis")
+        sc = a.scatter(psi[loaded], y[loaded], c=tt[loaded], s=4, cmap="viridis", vmin=t[0], vmax=t[-1])
         a.set_xlabel("azimuth psi [deg]")
         a.set_ylabel(label)
         a.set_xlim(-180, 180)
         a.grid(alpha=0.3)
-    if name == "h_min":
-        fig.colorbar(sc, ax=ax[1, :], label="t [s]")
-    ax[1, 0].axhline(1.0, color="k", lw=0.7, ls="--")
-    ax[1, 0].axhline(3.0, color="k", lw=0.7, ls="--")
+        a.set_title("balls in the loaded zone (outside: centrifugal load only, omitted)", fontsize=8, loc="left")
+        if not loaded.any():
+            a.text(0.5, 0.5, "no ball carries load at both races", transform=a.transAxes, ha="center")
+    label_regime_lines(ax[1, 0])
+    cax = fig.add_axes([0.92, 0.07, 0.015, 0.33])
+    fig.colorbar(sc, cax=cax, label="t [s]")
     fig.suptitle(f"{b.name}: Fr = {s.Fr:g} N, Fa = {s.Fa:g} N, omega = {s.omega:g} rad/s, "
                  f"{run.engine} engine, {s.integrator}, dt = {s.dt:g} s")
     save_figure(fig, png, {"t_s": t, "omega_rad_s": omega, "cage_speed_rad_s": cage, "ball_spin_mean_rad_s": spin,
@@ -249,16 +274,17 @@ def plot_film_by_phase(run, png, race="outer") -> Path:
     png.parent.mkdir(parents=True, exist_ok=True)
     phase = np.broadcast_to(_phases(run)[:, None], run.azimuth().shape)
     psi = np.degrees(run.azimuth())
-    h = run.contact("h_min", race) * 1e6
-    lam = run.contact("lambda", race)
+    loaded = loaded_ball_mask(run)
+    h = np.where(loaded, run.contact("h_min", race) * 1e6, np.nan)
+    lam = np.where(loaded, run.contact("lambda", race), np.nan)
     fig, ax = plt.subplots(1, 2, figsize=(11, 4.2))
     for code, name in enumerate(PHASE_NAMES[:3]):
-        sel = phase == code
+        sel = (phase == code) & loaded
         if sel.any():
             ax[0].plot(psi[sel], h[sel], ".", ms=2, label=name)
             ax[1].plot(psi[sel], lam[sel], ".", ms=2, label=name)
-    for y in (1.0, 3.0):
-        ax[1].axhline(y, color="k", lw=0.7, ls="--")
+    label_regime_lines(ax[1])
+    fig.suptitle("balls in the loaded zone (balls under centrifugal load only omitted)", fontsize=9)
     ax[0].set_ylabel(f"h_min {race} [um]")
     ax[1].set_ylabel(f"Lambda {race} [-]")
     for a in ax:

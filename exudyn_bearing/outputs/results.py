@@ -23,17 +23,43 @@ from pathlib import Path
 import numpy as np
 
 from ..data import Lubricant, load_bearing
-from ..model.layout import DIAG_FIELDS, GLOBAL_FIELDS
+from ..model.layout import DIAG_FIELDS, GLOBAL_FIELDS, GLOBAL_UNITS
 from ..model.record import RunRecord
 from ..model.scenario import Scenario
-from .contact_summary import contact_summary
+from ..physics.damping import REGIME_NAMES
+from .contact_summary import CONTACT_SUMMARY_UNITS, contact_summary
 from .jsonio import to_jsonable
 
-__all__ = ["Results", "SUMMARY_KEYS"]
+__all__ = ["Results", "SUMMARY_KEYS", "SUMMARY_UNITS", "PHASE_NAMES", "protocol_phases"]
 
 #: Keys every engine's summary has.
-SUMMARY_KEYS = ("q_max_inner", "q_max_outer", "cage_speed", "ball_spin", "lambda_outer_psi0",
-                "lambda_inner_psi0", "regime_fraction", "steps", "dt", "wall_s")
+SUMMARY_KEYS = ("q_max_inner", "q_max_outer", "q_max_inner_mean", "q_max_outer_mean", "cage_speed", "ball_spin",
+                "lambda_outer_psi0", "lambda_inner_psi0", "regime_fraction", "window", "steps", "dt", "wall_s",
+                "units")
+
+#: Unit of every scalar summary entry (speeds are angular speeds in rad/s).
+SUMMARY_UNITS = {
+    "Fr": "N", "Fa": "N", "Pd": "m", "omega": "rad/s", "q_max_inner": "N", "q_max_outer": "N",
+    "q_max_inner_mean": "N", "q_max_outer_mean": "N", "cage_speed": "rad/s", "ball_spin": "rad/s",
+    "lambda_outer_psi0": "-", "lambda_inner_psi0": "-", "regime_fraction": "-", "srr_mean": "-",
+    "ring_displacement": "m", "friction_torque": GLOBAL_UNITS["ring_torque"],
+    "friction_power": GLOBAL_UNITS["friction_power"], **CONTACT_SUMMARY_UNITS, "steps": "-", "dt": "s", "t_end": "s", "wall_s": "s", "stable_dt": "s",
+    "window.t0": "s", "window.t1": "s"}
+
+#: Protocol phases (Scenario: start-up ramp, steady phase, slow-down ramp, rest).
+PHASE_NAMES = ("start-up", "steady", "slow-down", "rest")
+
+
+def protocol_phases(scenario: Scenario, t_end: float) -> list[tuple[str, float, float]]:
+    """The protocol phases that lie in [0, t_end]: (name, t0, t1) [s] each."""
+    s = scenario
+    edges = (0.0, s.t_ramp_up, s.t_ramp_up + s.t_steady, s.t_ramp_up + s.t_steady + s.t_ramp_down, math.inf)
+    out = []
+    for k, name in enumerate(PHASE_NAMES):
+        t0, t1 = edges[k], min(edges[k + 1], t_end)
+        if t1 > t0:
+            out.append((name, t0, t1))
+    return out
 
 
 class Results:
@@ -108,16 +134,79 @@ class Results:
         return np.argmin(np.abs(self.azimuth()), axis=1)
 
     # -- summary -------------------------------------------------------
-    def summary(self, fraction: float = 0.25, t_window=None) -> dict:
-        """Scalar results over the last quarter of the run (PHYSICS.md sec. 8 keys),
-        or over ``t_window = (t0, t1)``.
+    def has_protocol(self) -> bool:
+        """True when the run changes speed (a start-up ramp or a slow-down within the run)."""
+        t_end = float(self.t[-1]) if len(self.t) else float(self.scenario.t_end)
+        return len(protocol_phases(self.scenario, t_end)) > 1
 
-        q_max_inner/outer: mean of the largest ball load [N]; cage_speed,
-        ball_spin: mean [rad/s]; lambda_{outer,inner}_psi0: mean Lambda of the
-        contact nearest psi = 0; regime_fraction: share of loaded contacts
-        (both races) in boundary / mixed / full film; steps, dt, wall_s.
+    def summary_window(self, fraction: float | None = None, t_window=None) -> tuple[slice, dict]:
+        """(slice, description) of the samples :meth:`summary` averages over.
+
+        ``t_window = (t0, t1)`` when given; else the last ``fraction`` of the
+        run when given; else, for a protocol with a steady phase in the run,
+        the second half of that phase (after the start-up transient, before
+        the slow-down); else the last quarter of the run. The description
+        names the times of its first and last sample, the protocol phases it
+        covers and the rule that chose it.
         """
-        w = self.window(fraction, t_window)
+        t = self.t
+        if len(t) == 0:
+            raise ValueError("t_end: the run has no samples (t_end below sample_dt)")
+        rule = None
+        if t_window is not None:
+            w, rule = self.window(t_window=t_window), f"t_window = ({t_window[0]:g}, {t_window[1]:g}) s"
+        elif fraction is None and self.has_protocol():
+            steady = [(a, b) for name, a, b in protocol_phases(self.scenario, float(t[-1]) + 1e-12)
+                      if name == "steady"]
+            if steady:
+                a, b = steady[0]
+                idx = np.nonzero((t >= 0.5 * (a + b)) & (t <= b))[0]
+                if idx.size >= 2:
+                    w, rule = slice(int(idx[0]), int(idx[-1]) + 1), "second half of the steady phase"
+        if rule is None:
+            f = 0.25 if fraction is None else fraction
+            w, rule = self.window(f), f"last {100 * f:g} % of the run"
+        tw = t[w]
+        eps = 0.5 * self.scenario.dt
+        phases = [name for name, a, b in protocol_phases(self.scenario, math.inf) if tw[-1] > a + eps and tw[0] < b - eps]
+        return w, {"t0": float(tw[0]), "t1": float(tw[-1]), "samples": int(len(tw)),
+                   "phase": ", ".join(phases), "rule": rule}
+
+    def _phase_summaries(self) -> dict:
+        """Per protocol phase in the run: times, mean speeds and the largest ball loads."""
+        out = {}
+        t = self.t
+        cage, spin = self.cage_speed_series(), self.ball_spin_series().mean(axis=1)
+        omega = self.global_series("omega")
+        load_i, load_o = self.contact("load", "inner"), self.contact("load", "outer")
+        for name, a, b in protocol_phases(self.scenario, math.inf):
+            sel = (t > a) & (t <= b) if a > 0 else (t <= b)
+            if not sel.any():
+                continue
+            out[name] = {"t0": float(a), "t1": float(min(b, t[-1])), "omega": float(np.mean(omega[sel])),
+                         "cage_speed": float(np.mean(cage[sel])), "ball_spin": float(np.mean(spin[sel])),
+                         "q_max_inner": float(load_i[sel].max()), "q_max_outer": float(load_o[sel].max())}
+        return out
+
+    def summary(self, fraction: float | None = None, t_window=None) -> dict:
+        """Scalar results over a window of the run (PHYSICS.md sec. 8 keys).
+
+        The window (:meth:`summary_window`, described under ``window``): the
+        second half of the steady phase of a protocol, else the last quarter
+        of the run, or the last ``fraction`` or ``t_window = (t0, t1)`` when
+        given.
+
+        q_max_inner/outer: the largest ball load in the window [N] (the Q_max
+        of Harris and the DEM papers: the load of the ball at psi = 0);
+        q_max_inner/outer_mean: the time mean of the largest ball load of each
+        sample [N] (below q_max as the balls pass psi = 0); cage_speed,
+        ball_spin: mean angular speeds [rad/s]; lambda_{outer,inner}_psi0:
+        mean Lambda of the contact nearest psi = 0; regime_fraction: share of
+        loaded contacts (both races) in boundary / mixed / full film; phases
+        (protocols only): per phase mean speeds and largest loads; units: the
+        unit of every entry; steps, dt, wall_s.
+        """
+        w, window = self.summary_window(fraction, t_window)
         b = self.bearing
         load_i = self.contact("load", "inner")[w]
         load_o = self.contact("load", "outer")[w]
@@ -128,8 +217,7 @@ class Results:
         reg = np.stack([self.contact("regime", "inner")[w], self.contact("regime", "outer")[w]])
         loaded = reg >= 0
         n_loaded = max(int(loaded.sum()), 1)
-        frac = {name: float(np.sum(reg == code)) / n_loaded
-                for code, name in enumerate(("boundary", "mixed", "full_film"))}
+        frac = {name: float(np.sum(reg == code)) / n_loaded for code, name in enumerate(REGIME_NAMES)}
         srr = np.stack([self.contact("srr", "inner")[w], self.contact("srr", "outer")[w]])
         omega = float(np.mean(self.global_series("omega")[w]))
 
@@ -143,9 +231,12 @@ class Results:
             "Fr": self.scenario.Fr,
             "Fa": self.scenario.Fa,
             "Pd": b.diametral_clearance,
+            "window": window,
             "omega": omega,
-            "q_max_inner": float(np.mean(load_i.max(axis=1))),
-            "q_max_outer": float(np.mean(load_o.max(axis=1))),
+            "q_max_inner": float(load_i.max()),
+            "q_max_outer": float(load_o.max()),
+            "q_max_inner_mean": float(np.mean(load_i.max(axis=1))),
+            "q_max_outer_mean": float(np.mean(load_o.max(axis=1))),
             "cage_speed": float(np.mean(self.cage_speed_series()[w])),
             "ball_spin": float(np.mean(self.ball_spin_series()[w])),
             "lambda_outer_psi0": nanmean(lam_o),
@@ -157,7 +248,7 @@ class Results:
             "friction_power": float(np.mean(self.global_series("friction_power")[w])),
             "steps": self.steps,
             "dt": self.scenario.dt,
-            "t_end": float(self.t[-1]) if len(self.t) else 0.0,
+            "t_end": float(self.t[-1]),
             "wall_s": self.wall_s,
             "stable_dt": self.stable_dt,
             "integrator": self.scenario.integrator,
@@ -169,6 +260,9 @@ class Results:
             "traction_level": self.scenario.traction_level,
         }
         out.update(contact_summary(self.data, w, omega, b))
+        if self.has_protocol():
+            out["phases"] = self._phase_summaries()
+        out["units"] = dict(SUMMARY_UNITS)
         return out
 
     # -- persistence ---------------------------------------------------

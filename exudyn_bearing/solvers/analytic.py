@@ -11,6 +11,7 @@ import math
 import numpy as np
 
 from ..data import BallBearing, InputError, Lubricant, default_lubricant
+from ..model.load_range import check_load_range
 from ..physics import damping, ehl, friction, hertz, kinematics
 from ..physics.geometry import raceway_radii
 from ..physics.load_distribution import (StaticSolution, race_stiffness, static_equilibrium,
@@ -168,7 +169,11 @@ def static_analysis(bearing: BallBearing, radial_load: float, axial_load: float 
     (the ``static`` and ``quasistatic`` commands); a nonzero ``moment``
     here is refused.
 
-    Returns a dict with ``psi`` [rad], ``q`` [N], ``q_max`` [N],
+    ``phase`` (azimuth of ball 0) is taken modulo 2 pi. Loads whose contact
+    pressure exceeds the elastic range (:mod:`exudyn_bearing.model.load_range`)
+    raise InputError.
+
+    Returns a dict with ``phase`` [rad], ``psi`` [rad], ``q`` [N], ``q_max`` [N],
     ``overlap`` [m], ``contact_angle`` [rad] (per ball), ``delta_r``,
     ``delta_a`` [m], ``eps`` [-], the continuous Stribeck ``q_max_stribeck``
     and ``eps_stribeck``, and with ``omega`` the per-ball keys
@@ -180,13 +185,21 @@ def static_analysis(bearing: BallBearing, radial_load: float, axial_load: float 
         raise InputError("moment: static_analysis holds the inner ring's tilt at zero (translation-only "
                          "distribution); moment loads need the free tilt of "
                          "exudyn_bearing.solve_quasistatic(..., Mx=..., My=...)")
-    sol = static_equilibrium(bearing, radial_load, axial_load, phase=phase, hertz_method=hertz_method)
+    phase = float(phase)
+    if not math.isfinite(phase):
+        raise InputError(f"phase: must be finite, got {phase}")
+    phase = math.remainder(phase, 2.0 * math.pi)  # the same balls; a huge phase loses their spacing in cos/sin
+    sol = check_load_range(bearing, radial_load, axial_load, hertz_method, phase=phase,
+                           names=("radial_load", "axial_load", "diametral_clearance"))
+    if sol is None:  # unloaded, with clearance
+        sol = static_equilibrium(bearing, radial_load, axial_load, phase=phase, hertz_method=hertz_method)
     res = {
         "bearing": bearing.name,
         "Fr": sol.radial_load,
         "Fa": sol.axial_load,
         "Pd": bearing.diametral_clearance,
         "hertz_method": sol.hertz_method,
+        "phase": phase,
         "psi": sol.psi,
         "q": sol.q,
         "q_max": sol.q_max,

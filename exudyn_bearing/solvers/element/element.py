@@ -80,6 +80,7 @@ import warnings
 
 import numpy as np
 
+from ..._jit import announce_compilation
 from ...data import InputError, Lubricant, default_lubricant, load_bearing
 from ...data.errors import check_finite, check_positive
 from ...model import layout as L
@@ -157,6 +158,7 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin):
                  mode="bodies", subSteps=1, contactLaw="hertz", powerLaw=(0.0, 1.5, 0.0), tractionLevel="point",
                  traction="lambda_dem", nStrips=8, nAcross=1, tractionRegularizingSrr=0.01, ringGrowth=False,
                  temperatures=None, control="auto", initialState=None, show=False):
+        announce_compilation(forces, EK.fast_step if mode == "fast" else EK.element_rhs)
         self.mbs = mbs
         self.bearing = b = load_bearing(bearing)
         self.lubricant = default_lubricant() if lubricant is None else lubricant
@@ -180,7 +182,8 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin):
                                      contact_law=contactLaw, power_law=powerLaw, traction_level=tractionLevel,
                                      traction=traction, n_strips=nStrips, n_across=nAcross,
                                      traction_regularizing_srr=tractionRegularizingSrr, ring_growth=ringGrowth,
-                                     temperatures=temperatures, control=control)
+                                     temperatures=temperatures, control=control,
+                                     t_end=max(0.05, sampleInterval, stepSize))  # the run's end is the solver's
         except InputError as exc:
             name, _, rest = str(exc).partition(":")
             raise InputError(f"{OPTION_NAMES.get(name, name)}:{rest}") from None

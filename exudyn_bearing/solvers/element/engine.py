@@ -12,7 +12,8 @@ import time
 from ...data import InputError, Lubricant, load_bearing
 from ...model.initial_state import initial_state, ring_mass_estimate
 from ...model.scenario import Scenario
-from ...model.stability import SimulationError
+from ...model.stability import SimulationError, stable_step
+from .console import filter_exudyn_notes
 from .element import BallBearingElement
 
 __all__ = ["ExudynEngine", "SOLVERS", "solve_dynamic"]
@@ -37,27 +38,22 @@ def _element_error(exc):
 
 def solve_dynamic(mbs, settings, solverType=None, quiet=True):
     """``mbs.SolveDynamic`` with ``settings`` (solver: ``solverType``, default
-    the one in the settings); ``quiet`` keeps Exudyn's solver notes off stdout
-    (which must stay clean for --json) and restores the setting afterwards.
+    the one in the settings) inside :func:`~.console.filter_exudyn_notes`:
+    ``quiet`` keeps all of Exudyn's solver output off stdout (which must stay
+    clean for --json); otherwise its known-benign notes are dropped.
 
     A blow-up of the bearing element raises
     :class:`~exudyn_bearing.model.stability.SimulationError` and bad input it
     detects during the solve :class:`~exudyn_bearing.data.InputError`, not
     the ModelError Exudyn wraps them in."""
-    import exudyn as exu
-
-    printing = exu.config.printToConsole
-    if quiet:
-        exu.config.printToConsole = False
-    try:
-        return mbs.SolveDynamic(settings, solverType=solverType or settings.timeIntegration.solverType)
-    except Exception as exc:
-        err = _element_error(exc.__cause__ or exc.__context__)
-        if err is None:
-            raise
-        raise err from None
-    finally:
-        exu.config.printToConsole = printing
+    with filter_exudyn_notes(quiet=quiet):
+        try:
+            return mbs.SolveDynamic(settings, solverType=solverType or settings.timeIntegration.solverType)
+        except Exception as exc:
+            err = _element_error(exc.__cause__ or exc.__context__)
+            if err is None:
+                raise
+            raise err from None
 
 
 class ExudynEngine:
@@ -100,6 +96,8 @@ class ExudynEngine:
             tractionLevel=s.traction_level, traction=s.traction, nStrips=s.n_strips, nAcross=s.n_across,
             tractionRegularizingSrr=s.traction_regularizing_srr, ringGrowth=s.ring_growth,
             temperatures=s.temperatures, control=s.control, initialState=start)
+        # the element knows loads and switches only: its step estimate takes the protocol from the scenario
+        self.element.stable = stable_step(b, s, self.element.lubricant)
         mbs.Assemble()
         self.stable = self.element.stable
 

@@ -141,11 +141,13 @@ class UserFunctionsMixin:
         clock = self._clock
         run, sysd, new_run = self._run, self._sys, self._new_run
         asarray = np.asarray
+        perf_counter = time.perf_counter
         step = _entry_point(EK.fast_step, (asarray(np.zeros(1)), asarray(np.zeros(1)), ref, params, table, kind,
                                            rdata, 1, 0.0, 0.0, 0.0, work, rings0, rings, rings_sub, hist, hz, fr,
                                            glob, diag, cload, False, out))
 
         def force_uf_fast(mbs, t, itemNumber, q, q_t):
+            t0 = perf_counter()
             for r, f in speeds:
                 rdata[r, spin] = f(t)
             # Exudyn's vectors become contiguous float64 arrays (one compiled signature)
@@ -171,6 +173,7 @@ class UserFunctionsMixin:
                 if want:
                     self._sample(t_end, rings_sub)
                     clock[2] = self._next_sample
+                self._wall += perf_counter() - t0
                 return out
             # a new SolveDynamic starts at or before the last time (a run that starts later continues this one)
             if sysd.get("dynamicSolver") is not run[0] or t <= run[1] + 1e-12:
@@ -191,6 +194,7 @@ class UserFunctionsMixin:
             # no time advance: the last reactions at the current ring poses
             step(q, q_t, ref, params, table, kind, rdata, 0, clock[1], t, t, work, rings0, rings, rings_sub, hist,
                  hz, fr, glob, diag, cload, False, out)
+            self._wall += perf_counter() - t0
             return out
 
         return force_uf_fast

@@ -14,6 +14,7 @@ import warnings
 
 import numpy as np
 
+from ..._jit import announce_compilation
 from ...data import InputError, Lubricant, default_lubricant, load_bearing
 from ...model.initial_state import initial_state
 from ...model.layout import NDIAG, NGLOBAL
@@ -47,6 +48,7 @@ class ReferenceEngine:
     name = "reference"
 
     def __init__(self, bearing, scenario: Scenario, lubricant: Lubricant | None = None, start: dict | None = None):
+        announce_compilation(evaluate, run_verlet if scenario.integrator == "verlet" else run_rk4)
         b = load_bearing(bearing)
         if scenario.Pd is not None:
             b = b.with_clearance(scenario.Pd)
@@ -94,11 +96,11 @@ class ReferenceEngine:
             "wb": np.zeros((n_samples, z, 3)), "xc": np.zeros((n_samples, z, 3)),
             "vc": np.zeros((n_samples, z, 3)), "ring": np.zeros((n_samples, 6)),
         }
+        integrate = run_verlet if s.integrator == "verlet" else run_rk4
         # forces at t = 0 (Verlet needs them on entry)
         evaluate(0.0, p, self.table, xb, vb, wb, xc, vc, ring, ring_poses(), hist, hz, fb, tb, fc,
                     np.zeros((2, 6)), fring, np.zeros(NGLOBAL), np.zeros((z, 2, NDIAG)), np.zeros((z, 2)),
                     False)
-        integrate = run_verlet if s.integrator == "verlet" else run_rk4
         if progress is None:
             progress = n_steps > 2_000_000
         chunk = chunk_steps or max(every, (max(n_steps // 50, 1) // every + 1) * every)
