@@ -6,13 +6,16 @@ whose message starts with the name of the offending parameter.
 
 Modules: :mod:`.errors` (InputError and the checks), :mod:`.materials`,
 :mod:`.lubricants`, :mod:`.bearings` (BallBearing and its groove
-construction), :mod:`.catalog` (``catalog.json``, look-up by name or file).
+construction), :mod:`.catalog` (``catalog.json``, look-up by name or file),
+:mod:`.defects` (Defect: localized spalls on a race or a ball).
 """
 from .bearings import MAX_FREE_CONTACT_ANGLE, MAX_PRELOAD_INTERFERENCE, BallBearing
 from .catalog import catalog, default_lubricant, get_bearing, load_bearing, lubricants, materials
+from .defects import Defect
 from .errors import InputError
 from .lubricants import Lubricant
 from .materials import Material
 
 __all__ = ["InputError", "Material", "Lubricant", "BallBearing", "catalog", "materials", "lubricants",
-           "get_bearing", "load_bearing", "default_lubricant", "MAX_FREE_CONTACT_ANGLE", "MAX_PRELOAD_INTERFERENCE"]
+           "get_bearing", "load_bearing", "default_lubricant", "MAX_FREE_CONTACT_ANGLE", "MAX_PRELOAD_INTERFERENCE",
+           "Defect"]
