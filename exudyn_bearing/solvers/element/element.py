@@ -45,6 +45,14 @@ bodies' mass matrices and the contact stiffness of all bearings on them at
 their ``initialLoad``; a larger step warns). See validation/REPORT.md for
 the measured limits.
 
+Defects and signals (both modes): ``defects`` (:class:`exudyn_bearing.data.Defect`
+objects or dicts) puts localized spalls into the contact model; an
+inner-race spall turns with the ring body's rotation, or with the integrated
+``innerRingSpeed`` of a mass-point ring; a ball spall turns with its ball's
+body frame, advanced at the committed evaluations like the Cundall-Strack
+history. ``signalInterval`` records the housing force and the inner-ring
+acceleration and speed as series (VelocityVerlet; ``results().signal(name)``).
+
 Solvers, both modes: VelocityVerlet (recommended; one force evaluation per
 step, so the Cundall-Strack history is exactly the reference engine's) and
 RK44 with ``friction="regularized"`` (history-free; the fast mode advances
@@ -76,12 +84,13 @@ from . import kernels as EK
 from .items import ItemsMixin
 from .markers import RING_REGISTRY, initial_ring_pose, ring_from_marker, ring_mobility
 from .sensors import SensorsMixin
+from .signals import SignalsMixin
 from .userfunctions import UserFunctionsMixin
 
 __all__ = ["BallBearingElement"]
 
 
-class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin):
+class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMixin):
     """A DEM ball bearing inside an Exudyn model (see the module docstring).
 
     Attributes
@@ -109,7 +118,8 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin):
                  film="hd", guideClearance=50e-6, muDry=0.1, regularizingSpeed=0.1,
                  tangentialStiffnessRatio=2.0 / 3.0, stepSize=1e-6, innerRingSpeed=None, outerRingSpeed=None,
                  initialOmega=0.0, initialLoad=(0.0, 0.0), initial="analytic", sampleInterval=1e-4,
-                 mode="bodies", subSteps=1, contactLaw="hertz", powerLaw=(0.0, 1.5, 0.0), show=False):
+                 mode="bodies", subSteps=1, contactLaw="hertz", powerLaw=(0.0, 1.5, 0.0), defects=(),
+                 signalInterval=None, show=False):
         self.mbs = mbs
         self.bearing = b = load_bearing(bearing)
         self.lubricant = default_lubricant() if lubricant is None else lubricant
@@ -124,7 +134,7 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin):
                                  regularizing_speed=regularizingSpeed,
                                  tangential_stiffness_ratio=tangentialStiffnessRatio, dt=stepSize,
                                  sample_dt=max(sampleInterval, stepSize), initial=initial, contact_law=contactLaw,
-                                 power_law=tuple(powerLaw))
+                                 power_law=tuple(powerLaw), defects=tuple(defects), signal_dt=signalInterval)
         if cage and not b.has_cage:
             raise InputError(f"cage: bearing {b.name} has no cage balls; use cage=False")
         self.params = scene_parameters(b, self.scenario, self.lubricant)
@@ -238,6 +248,9 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin):
         exu = self._exu
         ss = exu.SimulationSettings()
         h = float(stepSize or self.scenario.dt * (self.subSteps if self.mode == "fast" else 1))
+        if self._sig is not None and solverType != "VelocityVerlet":
+            raise InputError(f"solverType: the element records signals (signalInterval) with VelocityVerlet only "
+                             f"(one force evaluation per step), got {solverType!r}")
         if self.mode == "fast":
             self._check_fast_step(h, stacklevel=3)
         else:

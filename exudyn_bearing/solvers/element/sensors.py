@@ -88,6 +88,7 @@ class SensorsMixin:
             size = int(np.prod(shape))
             data[name] = rows[:, k:k + size].reshape((len(rows), *shape))
             k += size
+        self._signal_data(data)
         steps = self._evaluations if steps is None else steps
         msg = cage_load_check(self.bearing, self.scenario, self.lubricant,
                               float(data["cage_load"].max(initial=0.0)), self.scenario.dt)

@@ -38,6 +38,8 @@ class UserFunctionsMixin:
         t0 = time.perf_counter()
         for r, f in self._speeds:
             self._ring_data[r, EK.RD_SPIN] = f(t)
+        if self._track_angle:
+            self._spin_angles(t)
         # Cundall-Strack history: commit the last trial state when time advances
         if t > self._t_trial:
             if self._t_trial >= 0.0:
@@ -69,6 +71,8 @@ class UserFunctionsMixin:
         hist, hz, fr, glob, diag, cload, out = (self._hist, self._hz, self._fr, self._glob, self._diag,
                                                 self._cage_load, self._out)
         speeds, dt_sub, max_overlap, spin = self._speeds, self._dt_sub, self._max_overlap, EK.RD_SPIN
+        spin_angles = self._spin_angles if self._track_angle else None
+        signal_sample = self._signal_sample if self._sig is not None else None
         clock = self._clock  # [t of the last Exudyn evaluation (nan: none yet), tau, next sample, step checked]
         asarray = np.asarray
         step = _entry_point(EK.fast_step, (asarray(np.zeros(1)), asarray(np.zeros(1)), ref, params, table, kind,
@@ -78,6 +82,8 @@ class UserFunctionsMixin:
         def force_uf_fast(mbs, t, itemNumber, q, q_t):
             for r, f in speeds:
                 rdata[r, spin] = f(t)
+            if spin_angles is not None:
+                spin_angles(t)
             # Exudyn's vectors become contiguous float64 arrays (one compiled signature)
             q = asarray(q, float)
             q_t = asarray(q_t, float)
@@ -100,6 +106,8 @@ class UserFunctionsMixin:
                 if want:
                     self._sample(t_end, rings_sub)
                     clock[2] = self._next_sample
+                if signal_sample is not None:
+                    signal_sample(t)
                 return out
             if t_int != t_int:
                 # first evaluation: forces at the initial state, nothing to integrate yet
@@ -125,6 +133,8 @@ class UserFunctionsMixin:
                 self._check_worst(worst, t)
             if want:
                 self._sample(t, self._rings)
+            if self._sig is not None:
+                self._signal_sample(t)
         self._evaluations += 1
         self._wall += time.perf_counter() - t0
         return self._out
