@@ -8,6 +8,8 @@ Sub-commands (``--json`` for scripts, tables otherwise):
 * ``simulate --bearing B --Fr N --omega W --engine reference --t-end T
   [--out DIR] [--json]``: dynamic simulation; summary keys of
   :meth:`exudyn_bearing.outputs.results.Results.summary`.
+* ``dataset OUT [--rpm ...] [--load ...] [--size L W H ...] [--t-end T]``:
+  labelled healthy and defective signals (:mod:`exudyn_bearing.datasets`).
 
 BEARING is a catalogue name (6208, 7208, 6004, ACBB-120) or a JSON file with
 the geometry (format of ``exudyn_bearing/data/catalog.json``). Bad input
@@ -19,13 +21,13 @@ import sys
 
 from ..data import InputError
 from ..model.stability import SimulationError
-from . import info, simulate, static
+from . import dataset, info, simulate, static
 from .common import Parser
 
 __all__ = ["main"]
 
 #: Sub-commands: name -> module with ``add_parser(subparsers)`` and ``run(args)``.
-COMMANDS = {"info": info, "static": static, "simulate": simulate}
+COMMANDS = {"info": info, "static": static, "simulate": simulate, "dataset": dataset}
 
 
 def _parser() -> Parser:
