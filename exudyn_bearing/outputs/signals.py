@@ -59,7 +59,10 @@ from ..physics import kinematics
 
 __all__ = ["spectrum", "bandpass", "envelope", "select_band", "envelope_spectrum", "EnvelopeSpectrum",
            "order_track", "order_spectrum", "strongest_line", "defect_lines", "run_defect_frequencies",
-           "plot_defect_spectrum", "DEFECT_LINES"]
+           "plot_defect_spectrum", "DEFECT_LINES", "defect_range", "envelope_signature", "FAULT_FREQUENCY"]
+
+#: Defect frequency of each fault kind (``run_defect_frequencies`` keys).
+FAULT_FREQUENCY = {"outer": "bpfo", "inner": "bpfi", "ball": "2bsf"}
 
 #: Defect-frequency keys marked on plots, with their labels.
 DEFECT_LINES = {"ftf": "FTF", "bpfo": "BPFO", "bpfi": "BPFI", "2bsf": "2 BSF"}
@@ -215,9 +218,11 @@ class EnvelopeSpectrum:
         return strongest_line(self.f, self.amplitude, f_range)
 
     def at(self, f0, rel_tol=0.01):
-        """Largest amplitude within f0 (1 +- rel_tol) [unit of x]."""
+        """Largest amplitude within f0 (1 +- rel_tol), at least at the
+        frequency nearest f0 [unit of x]."""
         sel = (self.f >= f0 * (1.0 - rel_tol)) & (self.f <= f0 * (1.0 + rel_tol))
-        return float(self.amplitude[sel].max()) if sel.any() else 0.0
+        sel[int(np.argmin(np.abs(self.f - f0)))] = True
+        return float(self.amplitude[sel].max())
 
 
 def envelope_spectrum(x, fs, band=None, f_min=None, method="energy", pad=4, window="hann", order=4, squared=False):
@@ -343,39 +348,74 @@ def run_defect_frequencies(results, fraction=0.5) -> dict:
     return f
 
 
+def defect_range(freqs: dict, margin=0.25):
+    """Frequency range [Hz] of the fault lines: (1 - margin) times the lowest
+    to (1 + margin) times the highest of BPFO, BPFI and 2 BSF. Its strongest
+    envelope line tells which of the three faults a spectrum points at; it
+    leaves out the slower modulation lines (shaft speed, FTF and their
+    first harmonics), which a narrow load zone makes about as strong as the
+    fault line itself (McFadden & Smith [1]_)."""
+    fs_ = [freqs[k] for k in ("bpfo", "bpfi", "2bsf")]
+    return (1.0 - margin) * min(fs_), (1.0 + margin) * max(fs_)
+
+
+def envelope_signature(results, name="outer_fx", skip=0.1, band=None, **kw) -> dict:
+    """Envelope analysis of a run's signal ``name`` without its first ``skip``
+    seconds (the start-up transient).
+
+    Returns a dict: ``freqs`` (:func:`run_defect_frequencies`), ``envelope``
+    (:class:`EnvelopeSpectrum`, band from :func:`select_band` unless given;
+    ``kw`` go to :func:`envelope_spectrum`), ``range`` (:func:`defect_range`),
+    ``line`` (frequency, amplitude) of the strongest line in that range, and
+    ``at`` the envelope amplitude at FTF, BPFO, BPFI and 2 BSF (largest value
+    within 1 % of each).
+    """
+    t = results.signal_t
+    x = results.signal(name)[t > skip]
+    fs = 1.0 / float(np.median(np.diff(t)))
+    freqs = run_defect_frequencies(results)
+    es = envelope_spectrum(x, fs, band=band, **kw)
+    rng = defect_range(freqs)
+    return {"freqs": freqs, "envelope": es, "range": rng, "line": es.line(rng), "fs": fs,
+            "at": {k: es.at(freqs[k]) for k in DEFECT_LINES}}
+
+
 def defect_lines(freqs: dict, f_max, harmonics=3, sidebands=1):
-    """Lines to mark on a spectrum: (label, frequency [Hz], kind) for FTF,
-    BPFO, BPFI and 2 BSF and their harmonics up to ``harmonics`` (kind
-    "line"), and their sidebands (kind "sideband"): BPFI harmonics +- k times
-    the shaft frequency and 2 BSF harmonics +- k FTF, k = 1..``sidebands``
+    """Lines to mark on a spectrum: (label, frequency [Hz], kind, key) for
+    FTF, BPFO, BPFI and 2 BSF (``key`` in ``DEFECT_LINES``) and their
+    harmonics up to ``harmonics`` (kind "line", labels like ``2xBPFO``), and
+    their sidebands (kind "sideband"): BPFI harmonics +- k times the shaft
+    frequency (``fr``) and 2 BSF harmonics +- k FTF, k = 1..``sidebands``
     (the modulation of inner-race and ball impacts by the load zone they
     pass, McFadden & Smith [1]_); only lines below ``f_max``."""
     out = []
     for key, label in DEFECT_LINES.items():
         if key not in freqs:
             continue
-        f0 = freqs[key]
+        mod_key = {"bpfi": "shaft", "2bsf": "ftf"}.get(key)
+        mod = freqs.get(mod_key) if mod_key else None
         for h in range(1, int(harmonics) + 1):
-            fh = h * f0
+            fh = h * freqs[key]
+            name = label.replace(" ", "") if h == 1 else f"{h}x{label.replace(' ', '')}"
             if fh <= f_max:
-                out.append((label if h == 1 else f"{h} {label}", fh, "line"))
-            mod = {"bpfi": freqs.get("shaft"), "2bsf": freqs.get("ftf")}.get(key)
+                out.append((name, fh, "line", key))
             if mod:
                 for k in range(1, int(sidebands) + 1):
                     for sgn in (-1, 1):
-                        fs_ = fh + sgn * k * mod
-                        if 0.0 < fs_ <= f_max:
-                            out.append((f"{h if h > 1 else ''}{label} {'+-'[sgn < 0]}{k if k > 1 else ''}"
-                                        f"{'fr' if key == 'bpfi' else 'FTF'}", fs_, "sideband"))
+                        fsb = fh + sgn * k * mod
+                        if 0.0 < fsb <= f_max:
+                            tag = f"{k if k > 1 else ''}{'fr' if key == 'bpfi' else 'FTF'}"
+                            out.append((f"{name}{'-' if sgn < 0 else '+'}{tag}", fsb, "sideband", key))
     return out
 
 
-_COLORS = {"FTF": "tab:gray", "BPFO": "tab:red", "BPFI": "tab:blue", "2 BSF": "tab:green"}
+_COLORS = {"ftf": "tab:gray", "bpfo": "tab:red", "bpfi": "tab:blue", "2bsf": "tab:green"}
 
 
 def plot_defect_spectrum(panels, png, freqs: dict, f_max=None, harmonics=3, sidebands=1, title=None,
                          ylabel="amplitude"):
-    """Spectra with the defect frequencies, harmonics and sidebands marked.
+    """Spectra with the defect frequencies, harmonics (dashed) and sidebands
+    (dotted) marked (:func:`defect_lines`).
 
     Parameters
     ----------
@@ -404,17 +444,15 @@ def plot_defect_spectrum(panels, png, freqs: dict, f_max=None, harmonics=3, side
     columns = {}
     for ax, (label, f, amp) in zip(axes[:, 0], panels):
         f = np.asarray(f)
+        amp = np.asarray(amp)
         sel = f <= f_max
-        ax.plot(f[sel], np.asarray(amp)[sel], lw=0.8, color="k")
-        top = float(np.max(np.asarray(amp)[sel])) if sel.any() else 1.0
-        for name, fl, kind in lines:
-            base = name.split(" ")[-1] if kind == "line" else None
-            key = next((lab for lab in _COLORS if name.endswith(lab) or name.startswith(lab)
-                        or (" " + lab) in name), "FTF")
-            color = _COLORS.get(base, _COLORS.get(key, "tab:gray"))
+        ax.plot(f[sel], amp[sel], lw=0.8, color="k")
+        top = float(np.max(amp[sel])) if sel.any() else 1.0
+        for name, fl, kind, key in lines:
+            color = _COLORS[key]
             if kind == "line":
                 ax.axvline(fl, color=color, lw=0.9, ls="--", alpha=0.8)
-                ax.text(fl, top * 1.02, name, rotation=90, fontsize=6, color=color, ha="right", va="top")
+                ax.text(fl, top, name, rotation=90, fontsize=6, color=color, ha="right", va="top")
             else:
                 ax.axvline(fl, color=color, lw=0.6, ls=":", alpha=0.6)
         ax.set_ylabel(ylabel)
@@ -422,8 +460,9 @@ def plot_defect_spectrum(panels, png, freqs: dict, f_max=None, harmonics=3, side
         ax.grid(alpha=0.3)
         key = "".join(c if c.isalnum() else "_" for c in label)
         columns[f"f_{key}"] = f[sel]
-        columns[f"a_{key}"] = np.asarray(amp)[sel]
-    axes[-1, 0].set_xlabel("frequency [Hz]")
+        columns[f"a_{key}"] = amp[sel]
+    axes[-1, 0].set_xlabel("frequency [Hz] (dashed: FTF grey, BPFO red, BPFI blue, 2 BSF green and harmonics; "
+                           "dotted: sidebands)")
     axes[-1, 0].set_xlim(0.0, f_max)
     if title:
         fig.suptitle(title, fontsize=10)
