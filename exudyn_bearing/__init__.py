@@ -9,8 +9,8 @@ Layers (each imports only the ones above it in this list): :mod:`.data`
 >>> run = eb.simulate("6208", eb.Scenario(Fr=3000, omega=500, t_end=0.004, dt=2e-6))  # doctest: +SKIP
 >>> run.plot("6208.png"); print(run.summary())                                        # doctest: +SKIP
 """
-from .data import (BallBearing, InputError, Lubricant, Material, catalog, get_bearing, load_bearing, lubricants,
-                   materials)
+from .data import (BallBearing, Defect, InputError, Lubricant, Material, catalog, get_bearing, load_bearing,
+                   lubricants, materials)
 from .model.scenario import Scenario
 from .model.stability import SimulationError, StepSizeWarning
 from .outputs.results import Results
@@ -18,5 +18,5 @@ from .simulate import CreateBallBearing, simulate
 
 __version__ = "0.1.0"
 
-__all__ = ["CreateBallBearing", "BallBearing", "InputError", "Lubricant", "Material", "Results", "Scenario", "SimulationError", "StepSizeWarning",
+__all__ = ["CreateBallBearing", "BallBearing", "Defect", "InputError", "Lubricant", "Material", "Results", "Scenario", "SimulationError", "StepSizeWarning",
            "catalog", "get_bearing", "load_bearing", "lubricants", "materials", "simulate"]

@@ -410,3 +410,31 @@ def test_dataset_cli(tmp_path, capsys):
     assert rows[0]["fault"] == "inner" and (tmp_path / "index.csv").exists()
     assert main(["dataset", str(tmp_path), "--faults", "inner", "--size", "1e-3", "1e-3", "5e-3"]) == 2
     assert capsys.readouterr().err.startswith("exudyn-bearing: error: depth:")
+
+
+# -- README -----------------------------------------------------------------------------------------------
+def _readme_block(start):
+    text = (ROOT / "README.md").read_text()
+    i = text.index(start)
+    return text[i:text.index("```\n", i)]
+
+
+def test_readme_defect_example_runs_as_printed(capsys):
+    code = _readme_block("import exudyn_bearing as eb\nfrom exudyn_bearing.outputs import signals")
+    scope = {}
+    _quiet(exec, compile(code, "README.md", "exec"), scope)
+    f, _a = scope["es"].line((80.0, 200.0))
+    assert f == pytest.approx(S.run_defect_frequencies(scope["run"])["bpfo"], rel=0.01)
+    assert "(" in capsys.readouterr().out
+
+
+def test_readme_dataset_command_runs(tmp_path):
+    from exudyn_bearing.cli import main
+
+    line = _readme_block("python -m exudyn_bearing dataset").splitlines()[0]
+    args = line.split()[3:]  # after "python -m exudyn_bearing"
+    assert args[:2] == ["dataset", "out/ds"] and "--t-end" in args
+    args[1] = str(tmp_path)
+    args[args.index("--t-end") + 1] = "0.003"  # shortened: the grid as printed, 3 ms per case
+    assert _quiet(main, args + ["--workers", "1"]) == 0
+    assert len(read_index(tmp_path)) == 16
