@@ -53,6 +53,15 @@ RPM, LOAD, FS = 1797.0, 1000.0, 48000.0
 HEALTHY_THRESHOLD = 0.01
 
 
+def contact_state(run, fraction=0.5):
+    """Largest outer-contact overlap [m] and its contact ellipse semi-axes a, b [m] (mean over the last
+    ``fraction`` of the samples)."""
+    w = run.window(fraction)
+    j = np.argmax(run.contact("load", "outer")[w], axis=1)
+    rows = np.arange(len(j))
+    return tuple(float(np.mean(run.contact(k, "outer")[w][rows, j])) for k in ("overlap", "a", "b"))
+
+
 def run_cases(t_end=1.0, engine="reference", cases=CASES, **scenario):
     """Results of each case (name -> Results)."""
     runs = {}
@@ -81,6 +90,15 @@ def analyse(runs, signal="outer_fx", skip=0.1):
             row["defect_Hz"] = f0
             row["line_error"] = s["line"][0] / f0 - 1.0
             row["defect_amplitude"] = s["at"][FAULT_FREQUENCY[name]]
+            # the next strongest line in the range (more than 3 % away) and the load-zone modulation line
+            es = s["envelope"]
+            sel = (es.f >= s["range"][0]) & (es.f <= s["range"][1]) & (np.abs(es.f / s["line"][0] - 1.0) > 0.03)
+            i = np.argmax(np.where(sel, es.amplitude, -np.inf))
+            row["runner_up_Hz"], row["runner_up_ratio"] = float(es.f[i]), float(es.amplitude[i] / s["line"][1])
+            mod = {"inner": "shaft", "ball": "ftf"}.get(name)
+            if mod:
+                row["modulation_line"] = mod
+                row["modulation_ratio"] = es.at(s["freqs"][mod]) / s["line"][1]
         out[name] = row
     faulty = [out[n]["defect_amplitude"] for n in out if n in FAULT_FREQUENCY]
     if "healthy" in out and faulty:
@@ -144,20 +162,32 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--t-end", type=float, default=1.0, help="simulated time per case [s]")
     ap.add_argument("--engine", default="reference", choices=ENGINES)
+    ap.add_argument("--Pd", type=float, help="diametral clearance [m] instead of the catalogue's 0")
     ap.add_argument("--out", default=str(Path(__file__).parent / "out" / "defects_6205"))
     args = ap.parse_args(argv)
-    runs = run_cases(args.t_end, args.engine)
+    runs = run_cases(args.t_end, args.engine, **({} if args.Pd is None else {"Pd": args.Pd}))
     sig, table = analyse(runs)
     plot_all(runs, sig, args.out)
     f = table["outer"]["freqs"] if "outer" in table else next(iter(table.values()))["freqs"]
     print(f"6205 at {RPM:g} rpm (shaft {f['shaft']:.2f} Hz), Fr = {LOAD:g} N, {args.engine} engine, "
           f"T = {args.t_end:g} s: FTF {f['ftf']:.2f}, BPFO {f['bpfo']:.2f}, BPFI {f['bpfi']:.2f}, "
           f"2 BSF {f['2bsf']:.2f} Hz (contact angle {np.degrees(f['contact_angle']):.2f} deg)")
+    from exudyn_bearing.model.initial_state import ring_mass_estimate
+
+    b = next(iter(runs.values())).bearing
+    if "healthy" in runs:
+        delta, a, b_ = contact_state(runs["healthy"])
+        print(f"healthy: most loaded outer contact overlap {1e6 * delta:.2f} um, contact ellipse a = {1e3 * a:.3f} mm "
+              f"across, b = {1e3 * b_:.3f} mm along the rolling direction; inner ring {1e3 * ring_mass_estimate(b):.1f} g, "
+              f"P_d = {1e6 * b.diametral_clearance:.1f} um")
     for name, row in table.items():
         extra = ""
         if "defect_Hz" in row:
             extra = (f", defect frequency {row['defect_Hz']:.2f} Hz: error {100 * row['line_error']:+.2f} %, "
-                     f"amplitude there {row['defect_amplitude']:.3g} N")
+                     f"amplitude there {row['defect_amplitude']:.3g} N; next line {row['runner_up_Hz']:.2f} Hz at "
+                     f"{row['runner_up_ratio']:.3f} of it")
+            if "modulation_line" in row:
+                extra += f", {row['modulation_line']} line at {row['modulation_ratio']:.3f} of it"
         else:
             extra = (f", largest at BPFO/BPFI/2BSF {row['largest_at_defect_frequencies']:.3g} N = "
                      f"{row['ratio_to_weakest_fault_line']:.2e} of the weakest fault line (threshold "
@@ -167,7 +197,7 @@ def main(argv=None):
               f"({row['line_amplitude']:.3g} N){extra}; wall {runs[name].wall_s:.2f} s")
     out = Path(args.out)
     (out / "defects_6205.json").write_text(json.dumps(to_jsonable(
-        {"engine": args.engine, "t_end": args.t_end, "rpm": RPM, "load_N": LOAD, "fs_Hz": FS,
+        {"engine": args.engine, "t_end": args.t_end, "rpm": RPM, "load_N": LOAD, "fs_Hz": FS, "Pd": args.Pd,
          "cases": table, "wall_s": {n: r.wall_s for n, r in runs.items()}}), indent=2))
     print("figures:", out)
 
