@@ -249,17 +249,18 @@ def test_defect_impacts_where_the_kinematics_put_them():
         assert ti - before == pytest.approx(0.5 / f["bsf"], rel=0.03)
 
 
-@pytest.mark.parametrize("fault", ["inner", "ball"])
-def test_element_sees_the_same_defect_impacts(fault):
-    # the Exudyn element (mass-point inner ring with the prescribed spin; balls as Exudyn nodes) on the
-    # same scene: the spall passages start at the same steps and the signals agree
+@pytest.mark.parametrize("fault, mode", [("inner", "bodies"), ("ball", "bodies"), ("ball", "fast")])
+def test_element_sees_the_same_defect_impacts(fault, mode):
+    # the Exudyn element (mass-point inner ring with the prescribed spin; balls as Exudyn nodes, or
+    # integrated inside the element in the fast mode) on the same scene: the spall passages start at the
+    # same steps and the signals agree
     from exudyn_bearing.solvers.element.engine import ExudynEngine
 
     fs = 48000.0
     sc = eb.Scenario(Fr=1000.0, omega=W1797, t_end=0.02, dt=1 / fs / 4, sample_dt=1 / fs / 4, signal_dt=1 / fs,
                      tangential="implicit", defects=fault_defects(fault))
     ref = _quiet(eb.simulate, "6205", sc)
-    exu = Results(_quiet(ExudynEngine("6205", sc).run))
+    exu = Results(_quiet(ExudynEngine("6205", sc, mode=mode).run))
     for race in ("inner", "outer"):
         for j in range(9):
             a, b_ = _drop_onsets(ref, race, j), _drop_onsets(exu, race, j)
@@ -278,6 +279,39 @@ def test_element_sees_the_same_defect_impacts(fault):
         x, y = ref.signal(name)[:n], exu.signal(name)[:n]
         assert np.max(np.abs(x - y)[early]) < 0.01 * np.ptp(x), name
         assert np.sqrt(np.mean((x - y) ** 2)) < 0.1 * np.std(x), name
+
+
+def test_inner_race_spall_turns_with_a_rigid_shaft():
+    # the README's rigid shaft (Lie-group node) on a 6208 element with an inner-race spall: the ring frame
+    # is the body's, so the balls meet the spall where their azimuth equals the shaft's turned angle
+    import exudyn as exu
+    from exudyn.utilities import InertiaCylinder, LoadForceVector, MarkerBodyRigid, ObjectGround
+
+    from exudyn_bearing.solvers.element.engine import solve_dynamic
+
+    sc_ = exu.SystemContainer()
+    mbs = sc_.AddSystem()
+    shaft = mbs.CreateRigidBody(inertia=InertiaCylinder(7850.0, 0.25, 0.02, axis=2),
+                                nodeType=exu.NodeType.RotationRotationVector, initialAngularVelocity=[0, 0, 500.0])
+    m_shaft = mbs.AddMarker(MarkerBodyRigid(bodyNumber=shaft, localPosition=[0, 0, 0]))
+    m_house = mbs.AddMarker(MarkerBodyRigid(bodyNumber=mbs.AddObject(ObjectGround()), localPosition=[0, 0, 0]))
+    mbs.AddLoad(LoadForceVector(markerNumber=m_shaft, loadVector=[3000.0, 0, 0]))
+    spall = Defect("inner", 0.0, 1e-3, 2e-3, 1e-4)
+    bearing = eb.CreateBallBearing(mbs, "6208", markerInnerRing=m_shaft, markerOuterRing=m_house,
+                                   initialOmega=500.0, initialLoad=(3000.0, 0.0), stepSize=3.5e-6,
+                                   tangential="implicit", sampleInterval=3.5e-6, defects=(spall,))
+    mbs.SetNodeParameter(mbs.GetObject(shaft)["nodeNumber"], "initialCoordinates",
+                         [*bearing.initialRingDisplacement, 0, 0, 0])
+    mbs.Assemble()
+    _quiet(solve_dynamic, mbs, bearing.SimulationSettings(endTime=0.012))
+    r = bearing.results()
+    omega = r.global_series("omega")
+    theta = np.concatenate([[omega[0] * r.t[0]], omega[0] * r.t[0] + np.cumsum(0.5 * (omega[1:] + omega[:-1])
+                                                                                * np.diff(r.t))])
+    hit = r.contact("defect_drop", "inner") > 0
+    rel = (r.azimuth() - theta[:, None] + math.pi) % (2 * math.pi) - math.pi
+    assert hit.sum() >= 10
+    assert np.all(np.abs(rel[hit]) <= 0.5e-3 / eb.catalog["6208"].inner_race_radius + 2e-3)
 
 
 # -- envelope analysis of the four cases (issue #13, item 3) -----------------------------------------

@@ -10,6 +10,7 @@ import warnings
 import numpy as np
 
 from ...model.contact import forces
+from ...model.layout import H_E1
 from ...model.stability import StepSizeWarning, step_warning
 from . import kernels as EK
 
@@ -110,10 +111,13 @@ class UserFunctionsMixin:
                     signal_sample(t)
                 return out
             if t_int != t_int:
-                # first evaluation: forces at the initial state, nothing to integrate yet
+                # first evaluation: forces at the initial state, nothing to integrate yet (the balls' body
+                # frames start the first sub-step unturned, as in the reference engine)
                 EK.ring_poses_from(q, q_t, ref, kind, rdata, rings)
+                frames = hist[:, H_E1:].copy()
                 forces(params, table, work[0], work[1], work[2], work[3], work[4], rings, hist, hist, dt_sub, hz,
                          work[5], work[6], work[7], fr, glob, diag, cload, False)
+                hist[:, H_E1:] = frames
                 rings0[:] = rings
                 clock[0] = clock[1] = t
             elif t < t_int - 1e-15:
