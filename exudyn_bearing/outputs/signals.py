@@ -54,7 +54,6 @@ from pathlib import Path
 
 import numpy as np
 
-from ..model.layout import SIGNAL_FIELDS
 from ..physics import kinematics
 
 __all__ = ["spectrum", "bandpass", "envelope", "select_band", "envelope_spectrum", "EnvelopeSpectrum",
@@ -467,11 +466,3 @@ def plot_defect_spectrum(panels, png, freqs: dict, f_max=None, harmonics=3, side
     if title:
         fig.suptitle(title, fontsize=10)
     return save_figure(fig, png, columns, trim=True)
-
-
-def signal_index(name: str) -> int:
-    """Column of a signal name in the signal rows (``SIGNAL_FIELDS``)."""
-    try:
-        return SIGNAL_FIELDS.index(name)
-    except ValueError:
-        raise ValueError(f"name: unknown signal {name!r} (valid: {', '.join(SIGNAL_FIELDS)})") from None
