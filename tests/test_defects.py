@@ -281,6 +281,28 @@ def test_element_sees_the_same_defect_impacts(fault, mode):
         assert np.sqrt(np.mean((x - y) ** 2)) < 0.1 * np.std(x), name
 
 
+def test_element_signal_inputs():
+    import exudyn as exu
+    from exudyn.utilities import MarkerBodyRigid, MarkerNodePosition, NodePoint, ObjectGround, ObjectMassPoint
+
+    def element(**kw):
+        mbs = exu.SystemContainer().AddSystem()
+        node = mbs.AddNode(NodePoint(referenceCoordinates=[0.0, 0.0, 0.0]))
+        mbs.AddObject(ObjectMassPoint(mass=0.02, nodeNumber=node))
+        m_in = mbs.AddMarker(MarkerNodePosition(nodeNumber=node))
+        m_out = mbs.AddMarker(MarkerBodyRigid(bodyNumber=mbs.AddObject(ObjectGround()), localPosition=[0, 0, 0]))
+        return eb.CreateBallBearing(mbs, "6205", m_in, m_out, stepSize=5e-6, innerRingSpeed=lambda t: 100.0,
+                                    initialOmega=100.0, **kw)
+
+    with pytest.raises(InputError, match="^signal_dt:.*integer multiple"):
+        element(signalInterval=1.2e-5)
+    with pytest.raises(InputError, match="^signalInterval:.*Exudyn step"):
+        element(signalInterval=1.5e-5, mode="fast", subSteps=2)
+    el = element(signalInterval=2e-5, defects=fault_defects("inner"))
+    with pytest.raises(InputError, match="^solverType:"):
+        el.SimulationSettings(0.01, solverType="RK44")
+
+
 def test_inner_race_spall_turns_with_a_rigid_shaft():
     # the README's rigid shaft (Lie-group node) on a 6208 element with an inner-race spall: the ring frame
     # is the body's, so the balls meet the spall where their azimuth equals the shaft's turned angle
