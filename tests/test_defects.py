@@ -298,9 +298,9 @@ def test_element_signal_inputs():
         element(signalInterval=1.2e-5)
     with pytest.raises(InputError, match="^signalInterval:.*Exudyn step"):
         element(signalInterval=1.5e-5, mode="fast", subSteps=2)
-    el = element(signalInterval=2e-5, defects=fault_defects("inner"))
-    with pytest.raises(InputError, match="^solverType:"):
-        el.SimulationSettings(0.01, solverType="RK44")
+    for kw in (dict(signalInterval=2e-5, defects=fault_defects("inner")), dict(defects=fault_defects("ball"))):
+        with pytest.raises(InputError, match="^solverType:"):
+            element(**kw).SimulationSettings(0.01, solverType="RK44")
 
 
 def test_inner_race_spall_turns_with_a_rigid_shaft():

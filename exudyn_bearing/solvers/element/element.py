@@ -248,9 +248,10 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
         exu = self._exu
         ss = exu.SimulationSettings()
         h = float(stepSize or self.scenario.dt * (self.subSteps if self.mode == "fast" else 1))
-        if self._sig is not None and solverType != "VelocityVerlet":
-            raise InputError(f"solverType: the element records signals (signalInterval) with VelocityVerlet only "
-                             f"(one force evaluation per step), got {solverType!r}")
+        if solverType != "VelocityVerlet" and (self._sig is not None
+                                               or any(d.race == "ball" for d in self.scenario.defects)):
+            raise InputError(f"solverType: signals (signalInterval) and ball defects need VelocityVerlet (one force "
+                             f"evaluation per step), got {solverType!r}")
         if self.mode == "fast":
             self._check_fast_step(h, stacklevel=3)
         else:
