@@ -90,7 +90,8 @@ class ExudynEngine:
             guideClearance=s.guide_clearance, muDry=s.mu_dry, regularizingSpeed=s.regularizing_speed,
             tangentialStiffnessRatio=s.tangential_stiffness_ratio, stepSize=s.dt, innerRingSpeed=s.omega_at,
             initialOmega=s.omega, initialLoad=(s.Fr, s.Fa), initial=s.initial, sampleInterval=s.sample_dt,
-            mode=mode, subSteps=sub_steps, contactLaw=s.contact_law, powerLaw=s.power_law)
+            mode=mode, subSteps=sub_steps, contactLaw=s.contact_law, powerLaw=s.power_law, defects=s.defects,
+            signalInterval=s.signal_dt)
         # the reference engine's initial spin follows omega(0); the element took initialOmega
         # the element knows loads and switches only: its step estimate takes the protocol from the scenario
         self.element.stable = stable_step(b, s, self.element.lubricant)
