@@ -101,7 +101,7 @@ def test_scenario_defect_and_signal_inputs():
         eb.Scenario(defects=[{k: v for k, v in d.items() if k != "depth"}])
     with pytest.raises(InputError, match="^integrator:"):
         eb.Scenario(defects=[dict(d, race="ball")], integrator="rk4", friction="regularized")
-    with pytest.raises(InputError, match="^signalInterval:.*integer multiple"):
+    with pytest.raises(InputError, match="^signal_dt:.*integer multiple"):
         eb.Scenario(dt=5e-6, signal_dt=1.2e-5)
     with pytest.raises(InputError, match="^signal_dt:"):
         eb.Scenario(dt=5e-6, signal_dt=2e-5, integrator="rk4", friction="regularized")
