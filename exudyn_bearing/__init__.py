@@ -9,7 +9,7 @@ Layers (each imports only the ones above it in this list): :mod:`.data`
 >>> run = eb.simulate("6208", eb.Scenario(Fr=3000, omega=500, t_end=0.004, dt=2e-6))  # doctest: +SKIP
 >>> run.plot("6208.png"); print(run.summary())                                        # doctest: +SKIP
 """
-from .data import (BallBearing, InputError, Lubricant, Material, catalog, get_bearing, load_bearing, load_lubricant,
+from .data import (BallBearing, Defect, InputError, Lubricant, Material, catalog, get_bearing, load_bearing, load_lubricant,
                    lubricants, materials)
 from .model.scenario import Scenario
 from .model.stability import SimulationError, StepSizeWarning
@@ -20,6 +20,6 @@ from .solvers.quasistatic import QuasiStaticSolution, solve_quasistatic
 
 __version__ = "0.1.0"
 
-__all__ = ["CreateBallBearing", "filter_exudyn_notes", "BallBearing", "InputError", "Lubricant", "Material", "Results",
+__all__ = ["CreateBallBearing", "filter_exudyn_notes", "BallBearing", "Defect", "InputError", "Lubricant", "Material", "Results",
            "Scenario", "SimulationError", "StepSizeWarning", "catalog", "get_bearing", "load_bearing", "load_lubricant",
            "lubricants", "materials", "simulate", "solve_quasistatic", "QuasiStaticSolution"]

@@ -133,8 +133,9 @@ def run_case(name: str, spec: dict, out_dir: str) -> str:
     ``spec``: ``bearing`` (name, JSON path or dict), ``scenario`` (Scenario
     keyword arguments), optional ``engine`` ('reference' or 'exudyn') and
     ``lubricant`` (Lubricant keyword arguments). The NPZ holds the last half
-    of the sampled series needed for azimuth plots; the JSON the summary, the
-    spec and its :func:`spec_hash`.
+    of the sampled series needed for azimuth plots (and the whole signal
+    series ``signal_t``, ``signal`` when the scenario records them); the JSON
+    the summary, the spec and its :func:`spec_hash`.
     """
     out = Path(out_dir)
     key = spec_hash(spec)
@@ -148,6 +149,8 @@ def run_case(name: str, spec: dict, out_dir: str) -> str:
     for race in ("inner", "outer"):
         for field in ("load", "overlap", "contact_angle", "h_min", "lambda", "regime", "srr", "u_r"):
             arrays[f"{field}_{race}"] = run.contact(field, race)[w]
+    if "signal" in run.data:  # condition-monitoring signals (Scenario.signal_dt), whole: datasets.py
+        arrays.update(signal_t=run.data["signal_t"], signal=run.data["signal"])
     buf = io.BytesIO()
     np.savez_compressed(buf, **arrays)
     _atomic_write_bytes(out / f"{name}.npz", buf.getvalue())

@@ -2,6 +2,7 @@
 shaped like catalog.json, lubricants by name or file, and types checked on
 construction (strings, booleans, numpy numbers) with errors naming the field."""
 import json
+import re
 import math
 from pathlib import Path
 
@@ -68,7 +69,9 @@ def test_catalogue_shaped_files_are_accepted(tmp_path):
     f.write_text(CATALOG_JSON.read_text())
     same_geometry(load_bearing(f"{f}#7208"), eb.catalog["7208"])
     same_geometry(load_bearing(str(f), name="6004"), eb.catalog["6004"])
-    with pytest.raises(InputError, match=r"^bearing: .* holds 4 entries under 'bearings' \(6208, 7208, 6004, ACBB-120\)"):
+    names = ", ".join(eb.catalog)
+    with pytest.raises(InputError, match=rf"^bearing: .* holds {len(eb.catalog)} entries under 'bearings' "
+                                         rf"\({re.escape(names)}\)"):
         load_bearing(str(f))
     with pytest.raises(InputError, match=r"^bearing: no '6309' in"):
         load_bearing(f"{f}#6309")

@@ -17,6 +17,8 @@ Sub-commands (``--json`` for scripts, with a ``units`` map; tables otherwise):
 * ``vibration three-dof [--source-parameters] [--json]``: eigenvalues,
   natural frequencies, damping ratios and mode shapes of the 3-DOF
   outer ring / ball / inner ring model.
+* ``dataset OUT [--rpm ...] [--load ...] [--size L W H ...] [--t-end T]``:
+  labelled healthy and defective signals (:mod:`exudyn_bearing.datasets`).
 
 BEARING is a catalogue name (6208, 7208, 6004, ACBB-120) or a JSON file
 (:mod:`exudyn_bearing.data.catalog`: one bearing by race radii or dimensions,
@@ -29,7 +31,7 @@ import sys
 
 from ..data import InputError
 from ..model.stability import SimulationError
-from . import info, quasistatic, simulate, static, vibration
+from . import dataset, info, quasistatic, simulate, static, vibration
 from .common import Parser
 
 __all__ = ["main"]
@@ -42,7 +44,7 @@ DESCRIPTION = ("Rolling-element ball bearings: data sheet (info), load distribut
 
 #: Sub-commands: name -> module with ``add_parser(subparsers)`` and ``run(args)``.
 COMMANDS = {"info": info, "static": static, "quasistatic": quasistatic, "simulate": simulate,
-            "vibration": vibration}
+            "vibration": vibration, "dataset": dataset}
 
 
 def _parser() -> Parser:

@@ -6,11 +6,13 @@ whose message starts with the name of the offending parameter.
 
 Modules: :mod:`.errors` (InputError and the checks), :mod:`.materials`,
 :mod:`.lubricants`, :mod:`.traction` (traction models), :mod:`.bearings` (BallBearing and its groove
-construction), :mod:`.catalog` (``catalog.json``, look-up by name or file).
+construction), :mod:`.catalog` (``catalog.json``, look-up by name or file),
+:mod:`.defects` (Defect: localized spalls on a race or a ball).
 """
 from .bearings import MAX_FREE_CONTACT_ANGLE, MAX_PRELOAD_INTERFERENCE, BallBearing
 from .catalog import (catalog, default_lubricant, get_bearing, get_traction_model, load_bearing, load_lubricant,
                       lubricants, materials, traction_models)
+from .defects import Defect
 from .errors import InputError
 from .lubricants import Lubricant
 from .materials import Material
@@ -18,4 +20,5 @@ from .traction import PARAMETER_NAMES as TRACTION_PARAMETERS, TRACTION_KINDS, Tr
 
 __all__ = ["InputError", "Material", "Lubricant", "BallBearing", "catalog", "materials", "lubricants",
            "get_bearing", "load_bearing", "load_lubricant", "default_lubricant",
-           "TractionModel", "TRACTION_KINDS", "TRACTION_PARAMETERS", "traction_models", "get_traction_model", "MAX_FREE_CONTACT_ANGLE", "MAX_PRELOAD_INTERFERENCE"]
+           "TractionModel", "TRACTION_KINDS", "TRACTION_PARAMETERS", "traction_models", "get_traction_model", "MAX_FREE_CONTACT_ANGLE", "MAX_PRELOAD_INTERFERENCE",
+           "Defect"]

@@ -15,7 +15,13 @@ counting: ``exudyn_bearing._jit.kernel``):
   :func:`_tangential_force`;
 * :func:`_pair_contact`: ball / cage ball (or ball / ball without cage),
   frictionless Hertz spheres with critical damping;
-* :func:`_guide_contact`: cage ball / its guide torus on the outer ring.
+* :func:`_guide_contact`: cage ball / its guide torus on the outer ring;
+* :func:`_defect_drop`: the drop of a ball / raceway contact into the
+  localized defects of the scene (spalls on the races or on the ball,
+  :mod:`exudyn_bearing.physics.defects`), subtracted from the overlap;
+  :func:`_turn_ball_frame` turns the body frame of a ball that carries a
+  defect. A scene without defects (``P_NDEF`` 0) takes one branch per
+  contact past them.
 
 The physics relations are the scalar kernels of :mod:`exudyn_bearing.physics`.
 Inputs (all float64, world frame):
@@ -25,9 +31,11 @@ Inputs (all float64, world frame):
 * ``xb, vb, wb`` (Z, 3): ball centres, velocities, angular velocities;
   ``xc, vc`` (Z, 3): cage balls (cage ball k sits between balls k and k+1);
 * ``rings`` (2, RING_N): pose of the inner (0) and outer (1) ring (:mod:`.layout`, ``R_*``);
-* ``hist`` (Z, 2, 3): Cundall-Strack tangential displacement of the inner
-  (0) and outer (1) contact of every ball at the last committed time,
-  ``dt_hist`` the time since then, ``hist_out`` where the updated state goes;
+* ``hist`` (Z, HIST_N, 3): contact history at the last committed time
+  (layout ``H_*``): the Cundall-Strack tangential displacement of the inner
+  (0) and outer (1) contact of every ball and, for balls with a defect, the
+  ball's body frame; ``dt_hist`` the time since then, ``hist_out`` where the
+  updated state goes;
 * ``hz`` (Z, 2, 4): cache of R_y/R_x, k, F, E per contact.
 
 Outputs: ``fb, tb`` (Z, 3) force and moment on the balls, ``fc`` (Z, 3) on
@@ -42,10 +50,12 @@ import math
 import numpy as np
 
 from .._jit import kernel
+from .motion import rotate_frame
 from ..physics.damping import (_damping_critical, _damping_fluid, _damping_hysteretic, damping_coefficient,
                                lubrication_regime)
 from ..data.traction import N_TRACTION_PARAMS
 from ..physics.contact_slip import _contact_traction
+from ..physics.defects import _spall_drop_k
 from ..physics.ehl import _film_central_hd, _film_thickness
 from ..physics.traction import EHL as TRACTION_EHL
 from ..physics.friction import (_implicit_tangential_stiffness, _regularized_coulomb, _sphere_tangential_mass,
@@ -54,8 +64,9 @@ from ..physics.geometry import _groove_geometry, _raceway_radii_cos
 from ..physics.hertz import _curvature_sum_radius, _kfe_fast, _semi_axes, _stiffness
 from .layout import (D_POWER, D_ROLL, D_SPIN, D_SPIN_MOMENT, P_GROWTH_I, P_GROWTH_O, P_N_ACROSS, P_N_STRIPS,
                      P_RD_I, P_RD_O, P_TRACTION_CODE, P_TRACTION_LEVEL, P_TRACTION_PARAMS)
-from .layout import (D_A, D_ANGLE, D_B, D_FRICTION, D_HMIN, D_LAMBDA, D_LOAD, D_MU, D_OVERLAP, D_PMAX, D_REGIME,
-                     D_SLIP, D_SRR, D_UR, FRIC_HISTORY, FRIC_REGULARIZED, G_OMEGA, G_OUTER_FX, G_OUTER_FY,
+from .layout import (D_A, D_ANGLE, D_B, D_DEFECT, D_FRICTION, D_HMIN, D_LAMBDA, D_LOAD, D_MU, D_OVERLAP, D_PMAX,
+                     D_REGIME, D_SLIP, D_SRR, D_UR, DEF_BALL, DEF_N, DF_ACROSS, DF_BALL, DF_DEPTH, DF_DIR, DF_EDGE,
+                     DF_HL, DF_HW, DF_POS, DF_RACE, FRIC_HISTORY, H_E1, H_E2, P_DEF0, P_NDEF, R_ANGLE, FRIC_REGULARIZED, G_OMEGA, G_OUTER_FX, G_OUTER_FY,
                      G_OUTER_FZ, G_OUTER_TORQUE, G_POWER, G_RING_FX, G_RING_FY, G_RING_FZ, G_RING_TORQUE, G_WORST,
                      P_ALPHA_E, P_CAGE, P_DT, P_EPRIME, P_ETA, P_FILM, P_FRIC, P_HERTZ, P_K_BB, P_K_BZ, P_K_GUIDE,
                      P_KT_IMPLICIT, P_KT_RATIO, P_L1, P_L3, P_LAW, P_LAW_D, P_LAW_K, P_LAW_N, P_LUB, P_MB, P_MU_B,
@@ -286,10 +297,10 @@ def _ellipse_traction(p, rx, kappa, a_ax, b_ax, f_n, sx, sy, sz, mx, my, mz, h_m
 
 
 @kernel(inline="always")
-def _open_contact(hist_out, diag, j, race, delta, ca, sa, want):
+def _open_contact(hist_out, diag, j, race, delta, ca, sa, drop, want):
     """A ball / raceway contact without overlap: its tangential spring is
-    reset; diagnostics zero, the gap, the contact angle, no film (NaN) and
-    regime -1."""
+    reset; diagnostics zero, the gap, the contact angle, the defect drop, no
+    film (NaN) and regime -1."""
     hist_out[j, race, 0] = 0.0
     hist_out[j, race, 1] = 0.0
     hist_out[j, race, 2] = 0.0
@@ -297,11 +308,89 @@ def _open_contact(hist_out, diag, j, race, delta, ca, sa, want):
         for k in range(diag.shape[2]):
             diag[j, race, k] = 0.0
         diag[j, race, D_OVERLAP] = delta
+        diag[j, race, D_DEFECT] = drop
         diag[j, race, D_ANGLE] = math.atan2(sa, ca)
         diag[j, race, D_HMIN] = np.nan
         diag[j, race, D_LAMBDA] = np.nan
         diag[j, race, D_REGIME] = -1.0
         diag[j, race, D_MU] = np.nan
+
+
+@kernel(inline="always")
+def _defect_drop(p, hist_out, rings, j, race, rotated, cx, cy, nlx, nly, nlz, ca, sa, r_contact, rb, rc, inner):
+    """Drop [m] of ball j's contact with race ``race`` into the scene's
+    defects (:func:`exudyn_bearing.physics.defects.spall_drop`; the deepest
+    where several overlap), in the ring frame (c: ball centre, n_l: normal).
+
+    Race spall: s = r_contact times the azimuth of the contact relative to
+    the spall centre (ring-frame azimuth minus the ring's ``R_ANGLE``), w =
+    R_c times the contact angle relative to the spall's. Ball spall: its
+    centre direction d = c1 e1 + c2 e2 + c3 e1 x e2 from the ball's body
+    frame in ``hist_out``; with theta the angle between d and the contact
+    direction n, s = R_b atan2(d . e_psi, cos theta) along the orbital
+    direction e_psi, w = R_b atan2(d . (n x e_psi), cos theta) across; a
+    spall facing away (cos theta <= 0) is not in contact."""
+    drop = 0.0
+    have_radii = False
+    rx = 0.0
+    ry = 0.0
+    for k in range(int(p[P_NDEF])):
+        base = P_DEF0 + k * DEF_N
+        kind = int(p[base + DF_RACE])
+        hl = p[base + DF_HL]
+        if kind == race:
+            dpsi = math.atan2(cy, cx) - rings[race, R_ANGLE] - p[base + DF_POS]
+            dpsi -= 2.0 * math.pi * math.floor((dpsi + math.pi) / (2.0 * math.pi))
+            s = r_contact * dpsi
+            if s >= hl or s <= -hl:
+                continue
+            w = rc * (math.atan2(sa, ca) - p[base + DF_ACROSS])
+        elif kind == DEF_BALL and int(p[base + DF_BALL]) == j and hist_out.shape[1] > H_E2:
+            e1x, e1y, e1z = hist_out[j, H_E1, 0], hist_out[j, H_E1, 1], hist_out[j, H_E1, 2]
+            e2x, e2y, e2z = hist_out[j, H_E2, 0], hist_out[j, H_E2, 1], hist_out[j, H_E2, 2]
+            e3x, e3y, e3z = _cross(e1x, e1y, e1z, e2x, e2y, e2z)
+            c1, c2, c3 = p[base + DF_DIR], p[base + DF_DIR + 1], p[base + DF_DIR + 2]
+            dx = c1 * e1x + c2 * e2x + c3 * e3x
+            dy = c1 * e1y + c2 * e2y + c3 * e3y
+            dz = c1 * e1z + c2 * e2z + c3 * e3z
+            if rotated:  # into the ring frame, d_l = A^T d
+                dx, dy, dz = (rings[race, 6] * dx + rings[race, 9] * dy + rings[race, 12] * dz,
+                              rings[race, 7] * dx + rings[race, 10] * dy + rings[race, 13] * dz,
+                              rings[race, 8] * dx + rings[race, 11] * dy + rings[race, 14] * dz)
+            cos_t = dx * nlx + dy * nly + dz * nlz
+            r_xy = math.sqrt(cx * cx + cy * cy)
+            if cos_t <= 0.0 or r_xy == 0.0:
+                continue
+            tx = -cy / r_xy
+            ty = cx / r_xy
+            s = rb * math.atan2(dx * tx + dy * ty, cos_t)
+            if s >= hl or s <= -hl:
+                continue
+            ax, ay, az = _cross(nlx, nly, nlz, tx, ty, 0.0)
+            w = rb * math.atan2(dx * ax + dy * ay + dz * az, cos_t)
+        else:
+            continue
+        if not have_radii:
+            rx, ry = _raceway_radii_cos(rb, rc, r_contact, ca, inner)
+            have_radii = True
+        e = _spall_drop_k(s, w, hl, p[base + DF_HW], p[base + DF_DEPTH], p[base + DF_EDGE], rx, ry)
+        if e > drop:
+            drop = e
+    return drop
+
+
+@kernel(inline="always")
+def _turn_ball_frame(p, hist, hist_out, dt_hist, wb, j):
+    """If ball j carries a defect, turn its body frame (hist rows H_E1, H_E2)
+    from the committed state by its angular velocity over ``dt_hist`` into
+    ``hist_out`` (:func:`exudyn_bearing.model.motion.rotate_frame`)."""
+    if hist.shape[1] <= H_E2:
+        return
+    for k in range(int(p[P_NDEF])):
+        base = P_DEF0 + k * DEF_N
+        if int(p[base + DF_RACE]) == DEF_BALL and int(p[base + DF_BALL]) == j:
+            rotate_frame(hist, hist_out, j, H_E1, H_E2, wb[j, 0], wb[j, 1], wb[j, 2], dt_hist)
+            return
 
 
 @kernel(inline="always")
@@ -324,8 +413,13 @@ def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist,
         rho += growth * w_ax * w_ax
     dxw, dyw, dzw, cx, cy, cz, rotated = _ring_frame(rings, race, xb[j, 0], xb[j, 1], xb[j, 2])
     delta, nlx, nly, nlz, ca, sa, r_contact = _groove_geometry(cx, cy, cz, rho, zg, rc, rb, inner)
+    drop = 0.0
+    if p[P_NDEF] > 0.0 and delta > 0.0:
+        drop = _defect_drop(p, hist_out, rings, j, race, rotated, cx, cy, nlx, nly, nlz, ca, sa, r_contact, rb, rc,
+                            inner)
+        delta -= drop
     if delta <= 0.0:
-        _open_contact(hist_out, diag, j, race, delta, ca, sa, want)
+        _open_contact(hist_out, diag, j, race, delta, ca, sa, drop, want)
         return 0.0, 0.0
     # contact normal in the world frame, n = A n_local
     if rotated:
@@ -408,6 +502,7 @@ def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist,
         diag[j, race, D_SLIP] = slip
         diag[j, race, D_SRR] = slip / u_r if u_r > 0.0 else 0.0
         diag[j, race, D_FRICTION] = math.sqrt(ftx * ftx + fty * fty + ftz * ftz)
+        diag[j, race, D_DEFECT] = drop
         diag[j, race, D_SPIN] = spin
         diag[j, race, D_ROLL] = roll
         diag[j, race, D_POWER] = power
@@ -515,7 +610,10 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb,
     fr[:, :] = 0.0
     power_sum = 0.0
     worst = 0.0
+    defects = p[P_NDEF] > 0.0
     for j in range(z):
+        if defects:
+            _turn_ball_frame(p, hist, hist_out, dt_hist, wb, j)
         for race in range(2):
             ratio, power = _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist, hz, fb,
                                          tb, fr, diag, want)

@@ -10,8 +10,9 @@ import numpy as np
 from ..data import BallBearing, InputError
 from ..physics import kinematics
 from ..physics.load_distribution import static_equilibrium
+from .layout import H_E1, H_E2, HIST_N
 
-__all__ = ["initial_state", "ring_mass_estimate", "state_from_ball_kinematics"]
+__all__ = ["initial_state", "initial_history", "ring_mass_estimate", "state_from_ball_kinematics"]
 
 
 def ring_mass_estimate(bearing: BallBearing) -> float:
@@ -72,7 +73,7 @@ def initial_state(bearing: BallBearing, scenario, start: dict | None = None) -> 
         vc[:, 0] = -wc * xc[:, 1]
         vc[:, 1] = wc * xc[:, 0]
     return {"xb": xb, "vb": vb, "wb": wb, "xc": xc, "vc": vc, "ring": ring,
-            "hist": np.zeros((z, 2, 3)), "hz": np.zeros((z, 2, 4)), "static": sol,
+            "hist": initial_history(z), "hz": np.zeros((z, 2, 4)), "static": sol,
             "max_overlap": float(np.max(sol.overlap_outer))}
 
 
@@ -108,5 +109,17 @@ def state_from_ball_kinematics(bearing: BallBearing, psi, center_r, center_z, or
     ring = np.zeros(6)
     ring[:3] = np.asarray(ring_displacement, float)[:3]
     return {"xb": xb, "vb": vb, "wb": wb, "xc": xc, "vc": vc, "ring": ring,
-            "hist": np.zeros((z, 2, 3)), "hz": np.zeros((z, 2, 4)), "static": static,
+            "hist": initial_history(z), "hz": np.zeros((z, 2, 4)), "static": static,
             "max_overlap": float(max_overlap)}
+
+
+def initial_history(z: int, axes=None) -> np.ndarray:
+    """Contact history (Z, HIST_N, 3) at t = 0 (layout ``H_*``): tangential
+    springs relaxed, every ball's body frame e1, e2 along the first two
+    columns of ``axes`` (the outer ring's rotation matrix; default the
+    identity: x and y of the outer-ring frame)."""
+    hist = np.zeros((z, HIST_N, 3))
+    a = np.eye(3) if axes is None else np.asarray(axes, float)
+    hist[:, H_E1] = a[:, 0]
+    hist[:, H_E2] = a[:, 1]
+    return hist

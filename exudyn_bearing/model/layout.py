@@ -7,6 +7,11 @@ The kernels take flat float64 arrays; this module names their entries:
   filled by :func:`exudyn_bearing.model.parameters.scene_parameters`;
 * the **ring pose rows** ``rings`` (2, :data:`RING_N`): inner (0) and outer
   (1) ring, columns ``R_*``;
+* the **contact history** ``hist`` (Z, :data:`HIST_N`, 3): per ball the
+  Cundall-Strack springs of its two contacts and the orientation of the
+  ball (rows ``H_*``);
+* the **signal rows** (n, :data:`NSIGNAL`) of the condition-monitoring
+  signals, columns named in :data:`SIGNAL_FIELDS`, units in :data:`SIGNAL_UNITS`;
 * the **contact diagnostics** ``diag`` (Z, 2, :data:`NDIAG`), race 0 inner /
   1 outer, columns ``D_*`` named in :data:`DIAG_FIELDS`, and the **global
   diagnostics** ``glob`` (:data:`NGLOBAL`), named in :data:`GLOBAL_FIELDS`;
@@ -28,7 +33,8 @@ from ..data.traction import N_TRACTION_PARAMS
 
 __all__ = ["ParameterEntry", "PARAMETERS", "N_PARAMS", "RING_N", "DIAG_FIELDS", "DIAG_UNITS", "NDIAG",
            "GLOBAL_FIELDS", "GLOBAL_UNITS", "NGLOBAL", "FRIC_HISTORY", "FRIC_REGULARIZED", "FRIC_NONE",
-           "LAW_HERTZ", "LAW_POWER", "describe_parameters"]
+           "LAW_HERTZ", "LAW_POWER", "describe_parameters", "MAX_DEFECTS", "DEFECT_FIELDS", "DEF_N",
+           "DEF_INNER", "DEF_OUTER", "DEF_BALL", "HIST_N", "SIGNAL_FIELDS", "SIGNAL_UNITS", "NSIGNAL"]
 
 
 class ParameterEntry(NamedTuple):
@@ -104,6 +110,33 @@ P_LAW = _entry("contact_law", "code", "ball / raceway contact law LAW_*")
 P_LAW_K = _entry("power_law_k", "N/m^n", "power-law stiffness k of F = k delta^n + d d(delta)/dt")
 P_LAW_N = _entry("power_law_n", "-", "power-law exponent n")
 P_LAW_D = _entry("power_law_d", "N s/m", "power-law damping d")
+# -- localized defects (data.Defect; physics.defects) ----------------------
+P_NDEF = _entry("n_defects", "-", "number of filled defect slots (0: no defect, the kernel skips the defect code)")
+#: Most defects a scene can hold (the fixed number of defect slots).
+MAX_DEFECTS = 8
+#: Entries of one defect slot: (name, unit, meaning); slot k starts at
+#: ``P_DEF0 + k * DEF_N``, its entries at the offsets ``DF_*``.
+DEFECT_FIELDS = (
+    ("race", "code", "surface: DEF_INNER, DEF_OUTER or DEF_BALL"),
+    ("position", "rad", "race: azimuth of the spall centre in the ring frame"),
+    ("across", "rad", "race: contact angle at which the spall is centred across the groove (free contact angle)"),
+    ("half_length", "m", "half the spall length along the rolling direction"),
+    ("half_width", "m", "half the spall width across the rolling direction"),
+    ("depth", "m", "spall depth"),
+    ("edge_radius", "m", "edge radius (0: sharp edges)"),
+    ("ball", "-", "ball: index of the defective ball"),
+    ("dir_x", "-", "ball: spall centre direction in the ball's body frame (hist rows H_E1, H_E2 at t = 0), x"),
+    ("dir_y", "-", "ball: spall centre direction in the ball's body frame, y"),
+    ("dir_z", "-", "ball: spall centre direction in the ball's body frame, z"),
+)
+DF_RACE, DF_POS, DF_ACROSS, DF_HL, DF_HW, DF_DEPTH, DF_EDGE, DF_BALL, DF_DIR = 0, 1, 2, 3, 4, 5, 6, 7, 8
+DEF_N = len(DEFECT_FIELDS)
+P_DEF0 = len(_ENTRIES)
+for _k in range(MAX_DEFECTS):
+    for _name, _unit, _meaning in DEFECT_FIELDS:
+        _entry(f"defect{_k}_{_name}", _unit, f"defect slot {_k}: {_meaning}")
+#: Defect surface codes: the race codes equal the race (ring) indices.
+DEF_INNER, DEF_OUTER, DEF_BALL = 0, 1, 2
 
 # -- ellipse traction and ring growth (high-speed dynamics) ---------------
 P_TRACTION_LEVEL = _entry("traction_level", "switch", "tangential force: point-contact law (0) or over the Hertz "
@@ -136,18 +169,37 @@ LAW_HERTZ, LAW_POWER = 0, 1
 # -- ring pose rows ----------------------------------------------------------
 #: Columns of a ring pose row (world frame): centre (3) [m], velocity (3)
 #: [m/s], rotation matrix row-major (9; the bearing axis is the ring's local
-#: z, the third column), angular velocity (3) [rad/s].
-R_POS, R_VEL, R_ROT, R_OMEGA = 0, 3, 6, 15
+#: z, the third column), angular velocity (3) [rad/s], and the angle [rad]
+#: the ring has turned about its axis beyond its rotation matrix: the
+#: integrated prescribed spin of a ring whose matrix does not turn (the
+#: reference engine's inner ring, a point-mass ring of the Exudyn element);
+#: 0 for a ring whose matrix carries its rotation. Ring-frame azimuths (of
+#: race defects) are measured in the matrix's frame minus this angle; only
+#: the defect code reads it.
+R_POS, R_VEL, R_ROT, R_OMEGA, R_ANGLE = 0, 3, 6, 15, 18
 #: Length of a ring pose row.
-RING_N = 18
+RING_N = 19
+
+# -- contact history -----------------------------------------------------------
+#: Rows of the per-ball contact history ``hist`` (Z, HIST_N, 3), world frame:
+#: the Cundall-Strack tangential displacement [m] of the inner (0) and outer
+#: (1) contact, then two orthonormal axes e1, e2 of the ball's body frame
+#: (unit vectors; e1 = x and e2 = y of the outer-ring frame at t = 0),
+#: turned with the ball's angular velocity by the contact kernel when the
+#: scene has a ball defect (its only reader). A hist of 2 rows (no body frame)
+#: is accepted by the kernel and then ignores ball defects.
+H_INNER, H_OUTER, H_E1, H_E2 = 0, 1, 2, 3
+HIST_N = 4
 
 # -- diagnostics ---------------------------------------------------------------
 #: Fields of the per-contact diagnostics, in order.
+#: ``overlap`` is the overlap the contact law sees (the geometric overlap
+#: minus ``defect_drop``, the drop of the contact into a localized defect).
 DIAG_FIELDS = ("load", "overlap", "contact_angle", "a", "b", "p_max", "u_r", "h_min",
-               "lambda", "regime", "mu", "slip_speed", "srr", "friction_force", "spin", "roll", "dissipation",
-               "spin_moment")
+               "lambda", "regime", "mu", "slip_speed", "srr", "friction_force", "defect_drop", "spin", "roll",
+               "dissipation", "spin_moment")
 (D_LOAD, D_OVERLAP, D_ANGLE, D_A, D_B, D_PMAX, D_UR, D_HMIN, D_LAMBDA, D_REGIME, D_MU, D_SLIP, D_SRR,
- D_FRICTION, D_SPIN, D_ROLL, D_POWER, D_SPIN_MOMENT) = range(len(DIAG_FIELDS))
+ D_FRICTION, D_DEFECT, D_SPIN, D_ROLL, D_POWER, D_SPIN_MOMENT) = range(len(DIAG_FIELDS))
 #: Units of the per-contact diagnostics (regime: 0 boundary, 1 mixed, 2 full film, -1 no contact).
 #: ``spin`` and ``roll``: the ball's angular velocity relative to the race
 #: along the contact normal and along the in-plane tangent e_y = e_x x n
@@ -156,7 +208,7 @@ DIAG_FIELDS = ("load", "overlap", "contact_angle", "a", "b", "p_max", "u_r", "h_
 #: traction moment on the ball about the contact normal (ellipse level).
 DIAG_UNITS = {"load": "N", "overlap": "m", "contact_angle": "rad", "a": "m", "b": "m", "p_max": "Pa",
               "u_r": "m/s", "h_min": "m", "lambda": "-", "regime": "code", "mu": "-", "slip_speed": "m/s",
-              "srr": "-", "friction_force": "N", "spin": "rad/s", "roll": "rad/s",
+              "srr": "-", "friction_force": "N", "defect_drop": "m", "spin": "rad/s", "roll": "rad/s",
               "dissipation": "W", "spin_moment": "N m"}
 NDIAG = len(DIAG_FIELDS)
 #: Global diagnostics per sample, in order: inner-ring speed, force of the
@@ -171,6 +223,19 @@ GLOBAL_UNITS = {"omega": "rad/s", "ring_fx": "N", "ring_fy": "N", "ring_fz": "N"
                 "friction_power": "W", "max_overlap_ratio": "-", "outer_fx": "N", "outer_fy": "N", "outer_fz": "N",
                 "outer_torque": "N m"}
 NGLOBAL = len(GLOBAL_FIELDS)
+
+# -- condition-monitoring signals --------------------------------------------
+#: Columns of a signal row (``RunRecord.data["signal"]``, times in
+#: ``data["signal_t"]``): each the mean over the force evaluations of one
+#: sample interval ``Scenario.signal_dt`` (the evaluations at times t with
+#: t_k - signal_dt < t <= t_k for the row at t_k): the force of balls and
+#: cage balls on the outer ring (the housing force), the acceleration of the
+#: inner ring's centre, and the inner ring's speed about its axis; world
+#: frame (the outer-ring frame in the reference engine's scene).
+SIGNAL_FIELDS = ("outer_fx", "outer_fy", "outer_fz", "inner_ax", "inner_ay", "inner_az", "omega")
+SIGNAL_UNITS = {"outer_fx": "N", "outer_fy": "N", "outer_fz": "N", "inner_ax": "m/s^2", "inner_ay": "m/s^2",
+                "inner_az": "m/s^2", "omega": "rad/s"}
+NSIGNAL = len(SIGNAL_FIELDS)
 
 
 def describe_parameters(p) -> dict:

@@ -7,7 +7,7 @@ import math
 
 import numpy as np
 
-from ..data import BallBearing, Lubricant, get_traction_model
+from ..data import BallBearing, InputError, Lubricant, get_traction_model
 from ..data.traction import PARAMETER_NAMES
 from ..physics import hertz
 from ..physics.contact_slip import deformed_contact_radius
@@ -18,7 +18,7 @@ from .initial_state import ring_mass_estimate
 from .operating_geometry import operating_geometry
 from .scenario import FRICTION_MODELS, Scenario
 
-__all__ = ["scene_parameters", "traction_vector", "dynamic_traction_model"]
+__all__ = ["scene_parameters", "fill_defects", "traction_vector", "dynamic_traction_model"]
 
 
 def scene_parameters(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant) -> np.ndarray:
@@ -79,6 +79,7 @@ def scene_parameters(bearing: BallBearing, scenario: Scenario, lubricant: Lubric
     p[L.P_LAW_K], p[L.P_LAW_N], p[L.P_LAW_D] = (float(x) for x in s.power_law)
     _set_traction(p, b, s)
     _set_operating_geometry(p, b, s)
+    fill_defects(p, b, s.defects)
     return p
 
 
@@ -127,3 +128,38 @@ def _set_operating_geometry(p, b, s):
         # u(omega) = u(1 rad/s) omega^2 for a rotating disc without a fit
         p[L.P_GROWTH_I] = operating_geometry(b, omega_inner=1.0).inner_ring_growth
         p[L.P_GROWTH_O] = operating_geometry(b, omega_outer=1.0).outer_ring_growth
+
+
+
+def fill_defects(p: np.ndarray, bearing: BallBearing, defects) -> None:
+    """Defect slots of the parameter vector (layout ``P_DEF0``, ``DF_*``):
+    each :class:`~exudyn_bearing.data.Defect` checked against the bearing.
+
+    A race spall is centred across the groove on the free contact angle. A
+    ball spall gets its direction in the ball's body frame, which is the
+    outer-ring frame at t = 0 (layout ``H_E1``, ``H_E2``): on the rolling
+    circle of ball j (azimuth psi_j = 2 pi j / Z, the initial state's),
+    cos(position) u_o + sin(position) e_psi, with u_o the direction of the
+    outer contact at the free contact angle alpha_0, (cos alpha_0 e_r, sin
+    alpha_0) in (r, z), and e_psi the orbital direction."""
+    defects = tuple(defects)
+    if len(defects) > L.MAX_DEFECTS:
+        raise InputError(f"defects: at most {L.MAX_DEFECTS} defects per scene, got {len(defects)}")
+    p[L.P_NDEF] = len(defects)
+    a0 = bearing.free_contact_angle
+    for k, d in enumerate(defects):
+        d.check(bearing)
+        base = L.P_DEF0 + k * L.DEF_N
+        p[base + L.DF_RACE] = {"inner": L.DEF_INNER, "outer": L.DEF_OUTER, "ball": L.DEF_BALL}[d.race]
+        p[base + L.DF_POS] = d.position
+        p[base + L.DF_ACROSS] = a0
+        p[base + L.DF_HL] = d.half_length
+        p[base + L.DF_HW] = d.half_width
+        p[base + L.DF_DEPTH] = d.depth
+        p[base + L.DF_EDGE] = d.edge_radius
+        p[base + L.DF_BALL] = d.ball
+        if d.race == "ball":
+            psi = 2.0 * math.pi * d.ball / bearing.n_balls
+            u_o = np.array([math.cos(a0) * math.cos(psi), math.cos(a0) * math.sin(psi), math.sin(a0)])
+            e_psi = np.array([-math.sin(psi), math.cos(psi), 0.0])
+            p[base + L.DF_DIR:base + L.DF_DIR + 3] = math.cos(d.position) * u_o + math.sin(d.position) * e_psi

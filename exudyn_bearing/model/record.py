@@ -14,7 +14,8 @@ class RunRecord:
 
     ``data`` holds the sampled arrays (``t``, ``glob``, ``diag``,
     ``cage_load``, ``xb``, ``vb``, ``wb``, ``xc``, ``vc``, ``ring``; layouts in
-    :mod:`exudyn_bearing.model.layout`), ``steps`` the time steps taken,
+    :mod:`exudyn_bearing.model.layout`) and, when the scenario asked for
+    signals, ``signal_t`` and ``signal`` (``SIGNAL_FIELDS``), ``steps`` the time steps taken,
     ``wall_s`` the wall time of the integration [s], ``engine`` the solver's
     name, ``stable_dt`` its stable-step estimate [s], ``static`` the
     quasi-static solution the run started from (None if not known).

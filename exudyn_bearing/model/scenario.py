@@ -14,8 +14,10 @@ import numpy as np
 
 from ..data import InputError, get_traction_model
 from ..data.errors import check_bool, check_number
+from ..data.defects import as_defect
 from ..physics.ehl import film_model_code
 from ..physics.hertz import method_code
+from .layout import MAX_DEFECTS
 from .motion import omega_profile
 
 __all__ = ["Scenario", "FRICTION_MODELS", "INTEGRATORS", "TRACTION_LEVELS", "INITIAL_STATES", "CONTROLS"]
@@ -130,6 +132,19 @@ class Scenario:
         Time step [s] (default 1 us, the DEM papers' step).
     sample_dt : float
         Output interval [s].
+    defects : tuple of Defect (or dicts of their fields)
+        Localized defects (spalls) on the races or balls
+        (:class:`exudyn_bearing.data.Defect`, at most ``MAX_DEFECTS``);
+        empty (default): a healthy bearing, and the kernels skip the defect
+        code. Ball defects need ``integrator='verlet'`` (the ball orientation
+        is advanced once per step).
+    signal_dt : float or None
+        Sample interval [s] of the condition-monitoring signals (housing
+        force, inner-ring acceleration and speed; layout
+        ``model.layout.SIGNAL_FIELDS``), an integer multiple of ``dt``
+        (48 kHz: ``signal_dt=1/48000, dt=signal_dt/4``); each sample is the
+        mean over its interval's steps. None (default): no signals. Needs
+        ``integrator='verlet'``.
     """
 
     Fr: float = 3000.0
@@ -165,6 +180,8 @@ class Scenario:
     integrator: str = "verlet"
     dt: float = 1e-6
     sample_dt: float = 1e-4
+    defects: tuple = ()
+    signal_dt: float | None = None
 
     def __post_init__(self):
         # numbers as plain floats (numpy scalars are numbers; strings and booleans are not)
@@ -265,6 +282,32 @@ class Scenario:
             raise InputError(f"ring_mass: must be > 0, got {self.ring_mass}")
         if self.Pd is not None and not math.isfinite(self.Pd):
             raise InputError(f"Pd: must be finite, got {self.Pd}")
+        if isinstance(self.defects, (str, bytes, dict)) or not hasattr(self.defects, "__iter__"):
+            raise InputError(f"defects: expected a sequence of Defect objects or dicts, got {self.defects!r}")
+        defects = tuple(as_defect(d) for d in self.defects)
+        if len(defects) > MAX_DEFECTS:
+            raise InputError(f"defects: at most {MAX_DEFECTS} defects per scene, got {len(defects)}")
+        object.__setattr__(self, "defects", defects)
+        if self.integrator != "verlet" and any(d.race == "ball" for d in defects):
+            raise InputError("integrator: a ball defect needs integrator='verlet' (the ball orientation is "
+                             f"advanced once per step), got {self.integrator!r}")
+        if self.signal_dt is not None:
+            sd = self.signal_dt
+            if isinstance(sd, bool) or not isinstance(sd, (int, float)) or not math.isfinite(sd) or sd <= 0:
+                raise InputError(f"signal_dt: must be a number > 0 (or None), got {sd!r}")
+            ratio = sd / self.dt
+            if ratio < 1.0 - 1e-9 or abs(ratio - round(ratio)) > 1e-9 * ratio:
+                raise InputError(f"signal_dt: must be an integer multiple of dt = {self.dt:.6g} s, got {sd:.6g} s "
+                                 f"(ratio {ratio:.6g}); e.g. dt = signal_dt / {max(1, math.ceil(ratio))}")
+            if self.integrator != "verlet":
+                raise InputError("signal_dt: signals are recorded by integrator='verlet' (one force evaluation "
+                                 f"per step), got {self.integrator!r}")
+            object.__setattr__(self, "signal_dt", float(sd))
+
+    @property
+    def signal_every(self) -> int:
+        """Steps per signal sample (0: no signals)."""
+        return 0 if self.signal_dt is None else int(round(self.signal_dt / self.dt))
 
     def omega_at(self, t):
         """Prescribed inner-ring speed omega(t) [rad/s] of the protocol (the

@@ -11,7 +11,11 @@ Arrays (n = samples, Z balls, race 0 inner / 1 outer):
   b, p_max, u_r, h_min, Lambda, regime, mu, slip speed, slide-to-roll
   ratio, friction force (``DIAG_FIELDS``);
 * ``cage_load`` (n, Z, 2): ball / cage-ball contact forces (or ball / ball);
-* ``xb, vb, wb, xc, vc`` (n, Z, 3): balls and cage balls; ``ring`` (n, 6).
+* ``xb, vb, wb, xc, vc`` (n, Z, 3): balls and cage balls; ``ring`` (n, 6);
+* with ``Scenario.signal_dt``: ``signal_t`` (m,) [s] and ``signal`` (m,
+  NSIGNAL), the condition-monitoring signals (``SIGNAL_FIELDS``: housing
+  force, inner-ring acceleration and speed; ``signal(name)``), processed
+  by :mod:`.signals`.
 """
 from __future__ import annotations
 
@@ -23,7 +27,7 @@ from pathlib import Path
 import numpy as np
 
 from ..data import Lubricant, load_bearing
-from ..model.layout import DIAG_FIELDS, GLOBAL_FIELDS, GLOBAL_UNITS
+from ..model.layout import DIAG_FIELDS, GLOBAL_FIELDS, GLOBAL_UNITS, SIGNAL_FIELDS
 from ..model.record import RunRecord
 from ..model.scenario import Scenario
 from ..physics.damping import REGIME_NAMES
@@ -90,6 +94,21 @@ class Results:
 
     def global_series(self, name: str) -> np.ndarray:
         return self.data["glob"][:, GLOBAL_FIELDS.index(name)]
+
+    @property
+    def signal_t(self) -> np.ndarray:
+        """Times [s] of the condition-monitoring signal samples (``Scenario.signal_dt``)."""
+        if "signal_t" not in self.data:
+            raise ValueError("signal_dt: this run recorded no signals (set Scenario.signal_dt)")
+        return self.data["signal_t"]
+
+    def signal(self, name: str) -> np.ndarray:
+        """Condition-monitoring signal (m,) of a ``SIGNAL_FIELDS`` entry
+        (outer_fx/fy/fz [N], inner_ax/ay/az [m/s^2], omega [rad/s])."""
+        t = self.signal_t
+        if name not in SIGNAL_FIELDS:
+            raise ValueError(f"name: unknown signal {name!r} (valid: {', '.join(SIGNAL_FIELDS)})")
+        return self.data["signal"][:len(t), SIGNAL_FIELDS.index(name)]
 
     def azimuth(self) -> np.ndarray:
         """Ball azimuth psi (n, Z) [rad] from the load direction, in (-pi, pi]."""
@@ -273,6 +292,7 @@ class Results:
         npz = d / f"{stem}.npz"
         js = d / f"{stem}.json"
         np.savez_compressed(npz, diag_fields=np.array(DIAG_FIELDS), global_fields=np.array(GLOBAL_FIELDS),
+                            **({"signal_fields": np.array(SIGNAL_FIELDS)} if "signal" in self.data else {}),
                             **self.data)
         summary = self.summary()
         summary["meta"] = {"bearing": self.bearing.to_dict(),
@@ -287,7 +307,7 @@ class Results:
         npz = Path(npz)
         meta = json.loads(npz.with_suffix(".json").read_text())
         with np.load(npz) as f:
-            data = {k: f[k] for k in f.files if k not in ("diag_fields", "global_fields")}
+            data = {k: f[k] for k in f.files if k not in ("diag_fields", "global_fields", "signal_fields")}
         bearing = load_bearing(meta["meta"]["bearing"])
         scenario = Scenario(**{k: (math.inf if v is None and k == "t_steady" else v)
                                for k, v in meta["meta"]["scenario"].items()})

@@ -45,6 +45,14 @@ bodies' mass matrices and the contact stiffness of all bearings on them at
 their ``initialLoad``; a larger step warns). See validation/REPORT.md for
 the measured limits.
 
+Defects and signals (both modes): ``defects`` (:class:`exudyn_bearing.data.Defect`
+objects or dicts) puts localized spalls into the contact model; an
+inner-race spall turns with the ring body's rotation, or with the integrated
+``innerRingSpeed`` of a mass-point ring; a ball spall turns with its ball's
+body frame, advanced at the committed evaluations like the Cundall-Strack
+history. ``signalInterval`` records the housing force and the inner-ring
+acceleration and speed as series (VelocityVerlet; ``results().signal(name)``).
+
 Solvers, both modes: VelocityVerlet (recommended; one force evaluation per
 step, so the Cundall-Strack history is exactly the reference engine's) and
 RK44 with ``friction="regularized"`` (history-free; the fast mode advances
@@ -95,6 +103,7 @@ from . import kernels as EK
 from .items import ItemsMixin
 from .markers import RING_REGISTRY, initial_ring_pose, ring_from_marker, ring_mobility
 from .sensors import SensorsMixin
+from .signals import SignalsMixin
 from .userfunctions import IMPLICIT_SOLVERS, UserFunctionsMixin, implicit_solver_error
 
 __all__ = ["BallBearingElement", "OPTION_NAMES"]
@@ -106,7 +115,7 @@ OPTION_NAMES = {"Fr": "initialLoad", "Fa": "initialLoad", "omega": "initialOmega
                 "tangential_stiffness_ratio": "tangentialStiffnessRatio", "contact_law": "contactLaw",
                 "power_law": "powerLaw", "traction_level": "tractionLevel", "n_strips": "nStrips",
                 "n_across": "nAcross", "traction_regularizing_srr": "tractionRegularizingSrr",
-                "ring_growth": "ringGrowth"}
+                "ring_growth": "ringGrowth", "signal_dt": "signalInterval"}
 
 
 def _initial_load(load):
@@ -122,7 +131,7 @@ def _initial_load(load):
     return check_finite("initialLoad", pair[0]), check_finite("initialLoad", pair[1])
 
 
-class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin):
+class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMixin):
     """A DEM ball bearing inside an Exudyn model (see the module docstring).
 
     Attributes
@@ -157,7 +166,8 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin):
                  initialOmega=0.0, initialLoad=(0.0, 0.0), initial="analytic", sampleInterval=1e-4,
                  mode="bodies", subSteps=1, contactLaw="hertz", powerLaw=(0.0, 1.5, 0.0), tractionLevel="point",
                  traction="lambda_dem", nStrips=8, nAcross=1, tractionRegularizingSrr=0.01, ringGrowth=False,
-                 temperatures=None, control="auto", initialState=None, show=False):
+                 temperatures=None, control="auto", initialState=None, defects=(),
+                 signalInterval=None, show=False):
         announce_compilation(forces, EK.fast_step if mode == "fast" else EK.element_rhs)
         self.mbs = mbs
         self.bearing = b = load_bearing(bearing)
@@ -183,6 +193,7 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin):
                                      traction=traction, n_strips=nStrips, n_across=nAcross,
                                      traction_regularizing_srr=tractionRegularizingSrr, ring_growth=ringGrowth,
                                      temperatures=temperatures, control=control,
+                                     defects=tuple(defects), signal_dt=signalInterval,
                                      t_end=max(0.05, sampleInterval, stepSize))  # the run's end is the solver's
         except InputError as exc:
             name, _, rest = str(exc).partition(":")
@@ -316,6 +327,10 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin):
             check_positive("stepSize", stepSize)
         ss = exu.SimulationSettings()
         h = float(stepSize or self.scenario.dt * (self.subSteps if self.mode == "fast" else 1))
+        if solverType != "VelocityVerlet" and (self._sig is not None
+                                               or any(d.race == "ball" for d in self.scenario.defects)):
+            raise InputError(f"solverType: signals (signalInterval) and ball defects need VelocityVerlet (one force "
+                             f"evaluation per step), got {solverType!r}")
         if self.mode == "fast":
             self._check_fast_step(h, stacklevel=3)
         else:

@@ -95,7 +95,8 @@ class ExudynEngine:
             mode=mode, subSteps=sub_steps, contactLaw=s.contact_law, powerLaw=s.power_law,
             tractionLevel=s.traction_level, traction=s.traction, nStrips=s.n_strips, nAcross=s.n_across,
             tractionRegularizingSrr=s.traction_regularizing_srr, ringGrowth=s.ring_growth,
-            temperatures=s.temperatures, control=s.control, initialState=start)
+            temperatures=s.temperatures, control=s.control, initialState=start,
+            defects=s.defects, signalInterval=s.signal_dt)
         # the element knows loads and switches only: its step estimate takes the protocol from the scenario
         self.element.stable = stable_step(b, s, self.element.lubricant)
         mbs.Assemble()

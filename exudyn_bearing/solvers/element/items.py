@@ -10,6 +10,7 @@ import numpy as np
 from ...model import layout as L
 from ...model.motion import ring_poses
 from . import kernels as EK
+from .markers import initial_ring_pose
 
 __all__ = ["ItemsMixin"]
 
@@ -69,8 +70,8 @@ class ItemsMixin:
             self._ring_data[r, EK.RD_LOCAL:EK.RD_LOCAL + 3] = local
             self._ring_data[r, EK.RD_FIXED:EK.RD_FIXED + 12] = fixed
         self.ref = np.concatenate(ref)
-        self._hist = np.zeros((z, 2, 3))
-        self._hist_trial = np.zeros((z, 2, 3))
+        outer_axes = initial_ring_pose(mbs, *self.rings_spec[1])[1]
+        self._setup_defects_and_signals(outer_axes, float(self.scenario.dt) * (self.subSteps if fast else 1))
         self._t_commit = 0.0
         self._t_trial = -math.inf  # body mode: the latest time evaluated (-inf: none yet)
         # runs: [the Exudyn solver object of the current SolveDynamic, time of its first evaluation (inf: none)]

@@ -18,7 +18,7 @@ import numpy as np
 
 from ..._jit import kernel
 from ...model.contact import forces
-from ...model.layout import NDIAG, NGLOBAL, P_CAGE, P_IB, P_MB, P_MZ, RING_N
+from ...model.layout import NDIAG, NGLOBAL, NSIGNAL, P_CAGE, P_IB, P_MB, P_MZ, P_NDEF, R_ANGLE, RING_N
 from ...model.motion import kick_drift
 
 #: Ring couplings: fixed in space (ground), node with position coordinates
@@ -73,19 +73,22 @@ def _g_xyz(a0, a1):
 
 
 @kernel
-def ring_pose(kind, rq, rqt, local, fixed, spin, rings, r):
-    """Row r of ``rings`` (centre, velocity, rotation matrix, angular velocity).
+def ring_pose(kind, rq, rqt, local, fixed, spin, angle, rings, r):
+    """Row r of ``rings`` (centre, velocity, rotation matrix, angular velocity,
+    spin angle beyond the matrix).
 
     ``rq``, ``rqt`` (6,): total coordinates and velocities of the ring node
     (position, Tait-Bryan angles; point nodes use the first three);
     ``local`` (3,): ring centre in the body frame (rigid nodes); ``fixed``
     (12,): position (fixed ring) or offset (point ring) and rotation matrix
     of fixed and point rings; ``spin``: their prescribed spin about the ring
-    axis [rad/s].
+    axis [rad/s], ``angle`` its integral [rad] (layout ``R_ANGLE``; rigid
+    rings carry their rotation in the matrix and get 0).
     """
     for k in range(RING_N):
         rings[r, k] = 0.0
     if kind == RING_FIXED or kind == RING_POINT:
+        rings[r, R_ANGLE] = angle
         for d in range(3):
             rings[r, d] = fixed[d]
         for k in range(9):
@@ -123,8 +126,9 @@ def ring_pose(kind, rq, rqt, local, fixed, spin, rings, r):
 
 #: Columns of the per-ring data row: node coordinate offset in the object
 #: (-1: none), local position (3), fixed/offset position and rotation (12),
-#: prescribed spin.
-RD_OFF, RD_LOCAL, RD_FIXED, RD_SPIN, RD_N = 0, 1, 4, 16, 17
+#: prescribed spin [rad/s] and its integral, the spin angle [rad] (kept by
+#: the element when the scene has defects).
+RD_OFF, RD_LOCAL, RD_FIXED, RD_SPIN, RD_ANGLE, RD_N = 0, 1, 4, 16, 17, 18
 
 
 @kernel
@@ -218,7 +222,7 @@ def ring_poses_from(q, q_t, ref, ring_kind, ring_data, rings):
                 rq[d] = ref[off + d] + q[off + d]
                 rqt[d] = q_t[off + d]
         ring_pose(ring_kind[r], rq, rqt, ring_data[r, RD_LOCAL:RD_LOCAL + 3],
-                  ring_data[r, RD_FIXED:RD_FIXED + 12], ring_data[r, RD_SPIN], rings, r)
+                  ring_data[r, RD_FIXED:RD_FIXED + 12], ring_data[r, RD_SPIN], ring_data[r, RD_ANGLE], rings, r)
 
 
 @kernel
@@ -239,7 +243,10 @@ def advance_balls(n_sub, tau, t, t_end, p, table, work, rings0, rings1, rings, h
     the sum of the sub-step impulses the balls received (momentum exchange
     consistent between the two integrators, no lag). ``rings0`` is left at
     the pose of the last evaluation. Diagnostics of the last sub-step when
-    ``want``. Returns the largest overlap / R_b."""
+    ``want``. With defects in the scene, each ring's spin angle (``R_ANGLE``)
+    is extrapolated from t with its spin about its axis, so that ring-frame
+    azimuths move within the window as the matrix held at t does not.
+    Returns the largest overlap / R_b."""
     xb = work[0]
     vb = work[1]
     wb = work[2]
@@ -273,6 +280,9 @@ def advance_balls(n_sub, tau, t, t_end, p, table, work, rings0, rings1, rings, h
             else:
                 for k in range(3):
                     rings[r, k] = rings1[r, k] + (s - t) * rings1[r, 3 + k]
+            if p[P_NDEF] > 0.0:
+                rings[r, R_ANGLE] = rings1[r, R_ANGLE] + (s - t) * (
+                    rings1[r, 8] * rings1[r, 15] + rings1[r, 11] * rings1[r, 16] + rings1[r, 14] * rings1[r, 17])
         w = forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist, dt, hz, fb, tb, fc, fr, glob, diag,
                    cage_load, want and i == n_sub - 1)
         if w > worst:
@@ -306,6 +316,59 @@ def fast_step(q, q_t, ref, p, table, ring_kind, ring_data, n_sub, tau, t, t_end,
     ring_generalized_forces(q, ref, ring_kind, ring_data, rings, fr, out)
     return worst
 
+
+#: Entries of the element's signal state (:func:`signal_step`): sample
+#: interval [s], end of the current window [s], time of the last evaluation
+#: [s] (-inf: none yet), its inner-ring centre velocity (3) [m/s],
+#: outer-ring force (3) [N] and inner-ring speed [rad/s], the window's sums
+#: (NSIGNAL) and their count.
+SIG_INTERVAL, SIG_NEXT, SIG_TPREV, SIG_V, SIG_F, SIG_W, SIG_SUM = 0, 1, 2, 3, 6, 9, 10
+SIG_COUNT = SIG_SUM + NSIGNAL
+SIG_N = SIG_COUNT + 1
+
+
+@kernel
+def signal_step(t, rings, fr, sig, row):
+    """Condition-monitoring signals of the element at a force evaluation at t
+    (layout ``SIGNAL_FIELDS``, the same means as the reference engine's).
+
+    When t has advanced past the last evaluation t_p, that evaluation is
+    complete: its outer-ring force, its inner-ring speed and its inner-ring
+    acceleration (v(t) - v(t_p)) / (t - t_p) join the sums of the window
+    (t_k - interval, t_k] that contains t_p; with velocity Verlet, where an
+    evaluation sees the half-step velocity, this difference quotient is
+    exactly the acceleration the solver gave the ring at t_p (the ring's
+    mass and every force on it, not only the bearing's). When t_p closes the
+    window, ``row`` gets (t_k, the means) and the function returns True: a
+    sample is one evaluation late, with its own time. Evaluations repeated at
+    the same t replace the last one."""
+    eps = 1e-6 * sig[SIG_INTERVAL]
+    tp = sig[SIG_TPREV]
+    emitted = False
+    if t > tp and tp > -1e300:
+        nxt = sig[SIG_NEXT]
+        if tp > nxt - sig[SIG_INTERVAL] + eps:
+            h = t - tp
+            for d in range(3):
+                sig[SIG_SUM + d] += sig[SIG_F + d]
+                sig[SIG_SUM + 3 + d] += (rings[0, 3 + d] - sig[SIG_V + d]) / h
+            sig[SIG_SUM + 6] += sig[SIG_W]
+            sig[SIG_COUNT] += 1.0
+        if tp >= nxt - eps:
+            n = sig[SIG_COUNT]
+            row[0] = nxt
+            for c in range(NSIGNAL):
+                row[1 + c] = sig[SIG_SUM + c] / n if n > 0.0 else np.nan
+                sig[SIG_SUM + c] = 0.0
+            sig[SIG_COUNT] = 0.0
+            sig[SIG_NEXT] = nxt + sig[SIG_INTERVAL]
+            emitted = True
+    sig[SIG_TPREV] = t
+    for d in range(3):
+        sig[SIG_V + d] = rings[0, 3 + d]
+        sig[SIG_F + d] = fr[1, d]
+    sig[SIG_W] = rings[0, 8] * rings[0, 15] + rings[0, 11] * rings[0, 16] + rings[0, 14] * rings[0, 17]
+    return emitted
 
 
 def sample_layout(z):

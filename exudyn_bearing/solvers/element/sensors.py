@@ -88,6 +88,7 @@ class SensorsMixin:
             size = int(np.prod(shape))
             data[name] = rows[:, k:k + size].reshape((len(rows), *shape))
             k += size
+        self._signal_data(data)
         if steps is None:  # force evaluations (body mode) or Exudyn steps (fast mode) of the run
             steps = self._clock[4] if self.mode == "fast" else self._evaluations
         msg = cage_load_check(self.bearing, self.scenario, self.lubricant,

@@ -11,6 +11,7 @@ import numpy as np
 
 from ...data import InputError
 from ...model.contact import forces
+from ...model.layout import H_E1
 from ...model.stability import SimulationError, StepSizeWarning, step_warning
 from . import kernels as EK
 
@@ -76,8 +77,7 @@ class UserFunctionsMixin:
 
     def _restart(self, t):
         """Reset the element to its initial state for a run starting at t."""
-        self._hist[:] = 0.0
-        self._hist_trial[:] = 0.0
+        self._reset_defects_and_signals(t)
         self._hz[:] = 0.0
         self._t_commit = t
         self._t_trial = -math.inf
@@ -106,6 +106,8 @@ class UserFunctionsMixin:
             self._new_run(t, self._t_trial)
         for r, f in self._speeds:
             self._ring_data[r, EK.RD_SPIN] = f(t)
+        if self._track_angle:
+            self._spin_angles(t)
         # Cundall-Strack history: commit the last trial state when time advances
         if t > self._t_trial:
             if self._t_trial > -math.inf:
@@ -137,6 +139,8 @@ class UserFunctionsMixin:
         hist, hz, fr, glob, diag, cload, out = (self._hist, self._hz, self._fr, self._glob, self._diag,
                                                 self._cage_load, self._out)
         speeds, dt_sub, max_overlap, spin = self._speeds, self._dt_sub, self._max_overlap, EK.RD_SPIN
+        spin_angles = self._spin_angles if self._track_angle else None
+        signal_sample = self._signal_sample if self._sig is not None else None
         # [t of the last Exudyn evaluation (nan: none yet), tau, next sample, step checked, Exudyn steps]
         clock = self._clock
         run, sysd, new_run = self._run, self._sys, self._new_run
@@ -150,6 +154,8 @@ class UserFunctionsMixin:
             t0 = perf_counter()
             for r, f in speeds:
                 rdata[r, spin] = f(t)
+            if spin_angles is not None:
+                spin_angles(t)
             # Exudyn's vectors become contiguous float64 arrays (one compiled signature)
             q = asarray(q, float)
             q_t = asarray(q_t, float)
@@ -173,6 +179,8 @@ class UserFunctionsMixin:
                 if want:
                     self._sample(t_end, rings_sub)
                     clock[2] = self._next_sample
+                if signal_sample is not None:
+                    signal_sample(t)
                 self._wall += perf_counter() - t0
                 return out
             # a new SolveDynamic starts at or before the last time (a run that starts later continues this one)
@@ -180,10 +188,13 @@ class UserFunctionsMixin:
                 new_run(t, t_int)
                 t_int = clock[0]
             if t_int != t_int:
-                # first evaluation: forces at the initial state, nothing to integrate yet
+                # first evaluation: forces at the initial state, nothing to integrate yet (the balls' body
+                # frames start the first sub-step unturned, as in the reference engine)
                 EK.ring_poses_from(q, q_t, ref, kind, rdata, rings)
+                frames = hist[:, H_E1:].copy()
                 forces(params, table, work[0], work[1], work[2], work[3], work[4], rings, hist, hist, dt_sub, hz,
                          work[5], work[6], work[7], fr, glob, diag, cload, False)
+                hist[:, H_E1:] = frames
                 rings0[:] = rings
                 clock[0] = clock[1] = t
             elif t < t_int - 1e-15:
@@ -206,6 +217,8 @@ class UserFunctionsMixin:
                 self._check_worst(worst, t)
             if want:
                 self._sample(t, self._rings)
+            if self._sig is not None:
+                self._signal_sample(t)
         self._evaluations += 1
         self._wall += time.perf_counter() - t0
         return self._out

@@ -17,7 +17,7 @@ import numpy as np
 from ..._jit import announce_compilation
 from ...data import InputError, Lubricant, default_lubricant, load_bearing
 from ...model.initial_state import initial_state
-from ...model.layout import NDIAG, NGLOBAL
+from ...model.layout import H_E1, NDIAG, NGLOBAL, NSIGNAL
 from ...model.motion import ring_poses
 from ...model.parameters import scene_parameters
 from ...model.record import RunRecord
@@ -96,11 +96,16 @@ class ReferenceEngine:
             "wb": np.zeros((n_samples, z, 3)), "xc": np.zeros((n_samples, z, 3)),
             "vc": np.zeros((n_samples, z, 3)), "ring": np.zeros((n_samples, 6)),
         }
-        integrate = run_verlet if s.integrator == "verlet" else run_rk4
-        # forces at t = 0 (Verlet needs them on entry)
+        sig_every = s.signal_every
+        s_sig = np.zeros((n_steps // sig_every if sig_every else 0, 1 + NSIGNAL))
+        sig_acc = np.zeros(NSIGNAL + 1)
+        # forces at t = 0 (Verlet needs them on entry); the ball body frames start the first step unturned
+        frames = hist[:, H_E1:].copy()
         evaluate(0.0, p, self.table, xb, vb, wb, xc, vc, ring, ring_poses(), hist, hz, fb, tb, fc,
                     np.zeros((2, 6)), fring, np.zeros(NGLOBAL), np.zeros((z, 2, NDIAG)), np.zeros((z, 2)),
                     False)
+        hist[:, H_E1:] = frames
+        integrate = run_verlet if s.integrator == "verlet" else run_rk4
         if progress is None:
             progress = n_steps > 2_000_000
         chunk = chunk_steps or max(every, (max(n_steps // 50, 1) // every + 1) * every)
@@ -109,7 +114,8 @@ class ReferenceEngine:
         # compile (or load from the cache) before the clock starts: wall_s is the integration alone
         integrate(0, 0.0, p, self.table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring, every, 0,
                   buf["t"][:0], buf["glob"][:0], buf["diag"][:0], buf["cage_load"][:0], buf["xb"][:0],
-                  buf["vb"][:0], buf["wb"][:0], buf["xc"][:0], buf["vc"][:0], buf["ring"][:0])
+                  buf["vb"][:0], buf["wb"][:0], buf["xc"][:0], buf["vc"][:0], buf["ring"][:0],
+                  sig_every, sig_acc, s_sig)
         wall0 = time.perf_counter()
         last_print = wall0
         while done < n_steps:
@@ -118,7 +124,8 @@ class ReferenceEngine:
             steps, ns, status = integrate(
                 m, done * s.dt, p, self.table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring,
                 every, done, buf["t"][sl], buf["glob"][sl], buf["diag"][sl], buf["cage_load"][sl],
-                buf["xb"][sl], buf["vb"][sl], buf["wb"][sl], buf["xc"][sl], buf["vc"][sl], buf["ring"][sl])
+                buf["xb"][sl], buf["vb"][sl], buf["wb"][sl], buf["xc"][sl], buf["vc"][sl], buf["ring"][sl],
+                sig_every, sig_acc, s_sig)
             done += steps
             k_samp += ns
             if status != 0:
@@ -140,6 +147,10 @@ class ReferenceEngine:
             print(file=sys.stderr)
         for k in buf:
             buf[k] = buf[k][:k_samp]
+        if sig_every:
+            n_sig = int(sig_acc[NSIGNAL])
+            buf["signal_t"] = s_sig[:n_sig, 0].copy()
+            buf["signal"] = s_sig[:n_sig, 1:].copy()
         msg = cage_load_check(self.bearing, s, self.lubricant, float(buf["cage_load"].max(initial=0.0)), s.dt)
         if msg:
             warnings.warn(msg, StepSizeWarning, stacklevel=2)

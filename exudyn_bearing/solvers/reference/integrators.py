@@ -8,6 +8,13 @@ State: ``xb, vb, wb`` (Z, 3) ball centre, velocity, angular velocity;
 fixed frame); ``hist`` (Z, 2, 3) Cundall-Strack displacements; ``hz``
 (Z, 2, 4) the Hertz cache of the contact kernel. Sample buffers ``s_*`` get
 one row per sample.
+
+Condition-monitoring signals (velocity Verlet): every ``sig_every`` steps
+(counted from step 0; 0: none) one row of ``s_sig`` (n, 1 + NSIGNAL): the
+time and the means over the interval's force evaluations of the layout's
+``SIGNAL_FIELDS`` (outer-ring force, inner-ring acceleration = ring force /
+ring mass, inner-ring speed). ``sig_acc`` (NSIGNAL + 1,) carries the running
+sums and, in its last entry, the number of rows written, across calls.
 """
 from __future__ import annotations
 
@@ -17,9 +24,9 @@ import numpy as np
 
 from ..._jit import kernel
 from ...model.contact import forces
-from ...model.layout import (P_AXIAL_FREE, P_CAGE, P_DT, P_FA, P_FR, P_IB, P_MAX_OVERLAP, P_MB, P_MR, P_MZ,
-                             P_T_DOWN, P_T_STEADY, P_T_UP, P_W_MAX)
-from ...model.motion import kick_drift, omega_profile, ring_poses
+from ...model.layout import (NSIGNAL, P_AXIAL_FREE, P_CAGE, P_DT, P_FA, P_FR, P_IB, P_MAX_OVERLAP, P_MB, P_MR,
+                             P_MZ, P_NDEF, P_T_DOWN, P_T_STEADY, P_T_UP, P_W_MAX, R_ANGLE)
+from ...model.motion import kick_drift, omega_profile, ring_poses, spin_angle
 
 __all__ = ["run_verlet", "run_rk4", "evaluate"]
 
@@ -27,10 +34,14 @@ __all__ = ["run_verlet", "run_rk4", "evaluate"]
 @kernel
 def _set_inner_ring(t, p, ring, rings):
     """Reference engine: the inner ring translates (state ``ring``: position,
-    velocity) and spins at the protocol speed; the outer ring stays fixed."""
+    velocity) and spins at the protocol speed; the outer ring stays fixed.
+    Its rotation matrix stays the identity; with defects in the scene its
+    spin angle (the protocol's integral) goes to ``R_ANGLE``."""
     for d in range(6):
         rings[0, d] = ring[d]
     rings[0, 17] = omega_profile(t, p[P_W_MAX], p[P_T_UP], p[P_T_STEADY], p[P_T_DOWN])
+    if p[P_NDEF] > 0.0:
+        rings[0, R_ANGLE] = spin_angle(t, p[P_W_MAX], p[P_T_UP], p[P_T_STEADY], p[P_T_DOWN])
 
 
 @kernel
@@ -69,14 +80,36 @@ def _store(k, t, glob, diag, cage_load, xb, vb, wb, xc, vc, ring,
 
 
 @kernel
+def _signal_step(k_step, t, p, rings, fr, fring, sig_every, sig_acc, s_sig):
+    """Add this evaluation to the running signal sums; every ``sig_every``-th
+    step write their means with the time into the next row of ``s_sig``."""
+    inv_mr = 1.0 / p[P_MR]
+    for d in range(3):
+        sig_acc[d] += fr[1, d]
+        sig_acc[3 + d] += fring[d] * inv_mr
+    sig_acc[6] += rings[0, 17]
+    if k_step % sig_every == 0:
+        row = int(sig_acc[NSIGNAL])
+        if row < s_sig.shape[0]:
+            s_sig[row, 0] = t
+            for c in range(NSIGNAL):
+                s_sig[row, 1 + c] = sig_acc[c] / sig_every
+            sig_acc[NSIGNAL] = row + 1
+        for c in range(NSIGNAL):
+            sig_acc[c] = 0.0
+
+
+@kernel
 def run_verlet(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring,
-               sample_every, step0, s_t, s_glob, s_diag, s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring):
+               sample_every, step0, s_t, s_glob, s_diag, s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring,
+               sig_every, sig_acc, s_sig):
     """Velocity-Verlet (the DEM papers' scheme) for ``n_steps`` steps from t0.
 
     Forces must hold the values at t0 on entry; damping and friction see the
     half-step velocity. Every ``sample_every``-th step (counted from
     ``step0``) the state and diagnostics go to the next row of the s_*
-    buffers. Returns (steps done, samples written, status): status 0 ok,
+    buffers; with ``sig_every`` > 0 the signals go to ``s_sig`` (module
+    docstring). Returns (steps done, samples written, status): status 0 ok,
     1 non-finite state, 2 runaway overlap (> P_MAX_OVERLAP R_b).
     """
     dt = p[P_DT]
@@ -106,6 +139,8 @@ def run_verlet(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb
         worst = forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist, dt, hz, fb, tb, fc, fr, glob, diag,
                        cage_load, want)
         _inner_ring_force(p, fr, fring)
+        if sig_every > 0:
+            _signal_step(step0 + step + 1, t, p, rings, fr, fring, sig_every, sig_acc, s_sig)
         for j in range(z):
             for d in range(3):
                 vb[j, d] += h * fb[j, d] * inv_mb
@@ -164,9 +199,11 @@ def _rk_set(y0x, y0v, y0w, y0xc, y0vc, y0r, kx, kv, kw, kxc, kvc, kr, stage, f,
 
 @kernel
 def run_rk4(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring,
-            sample_every, step0, s_t, s_glob, s_diag, s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring):
+            sample_every, step0, s_t, s_glob, s_diag, s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring,
+            sig_every, sig_acc, s_sig):
     """Classical fourth-order Runge-Kutta, for history-free scenes (same
-    interface and status codes as :func:`run_verlet`)."""
+    interface and status codes as :func:`run_verlet`; it records no signals
+    and keeps no ball orientation: Scenario allows neither with rk4)."""
     dt = p[P_DT]
     z = xb.shape[0]
     glob = np.zeros(s_glob.shape[1])

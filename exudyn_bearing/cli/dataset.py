@@ -1,0 +1,40 @@
+"""``dataset OUT``: labelled healthy / defective signals over a grid of speeds, loads and defect sizes."""
+from __future__ import annotations
+
+import json
+from collections import Counter
+
+from ..datasets import FAULTS, build_dataset
+from ..outputs.jsonio import to_jsonable
+from .common import BEARING_HELP, finite_float, print_table
+
+
+def add_parser(sub):
+    p = sub.add_parser("dataset", help="labelled condition-monitoring signals (NPZ per case, index.csv), resumable")
+    p.add_argument("out", metavar="OUT", help="output folder (an interrupted run resumes there)")
+    p.add_argument("--bearing", default="6205", help=BEARING_HELP)
+    p.add_argument("--rpm", type=finite_float, nargs="+", default=[1797.0], help="inner-ring speeds [1/min]")
+    p.add_argument("--load", type=finite_float, nargs="+", default=[1000.0], help="radial loads [N]")
+    p.add_argument("--size", type=finite_float, nargs=3, action="append", metavar=("LENGTH", "WIDTH", "DEPTH"),
+                   help="defect size [m] (repeat for several; default 1e-3 1.5e-3 1e-4)")
+    p.add_argument("--faults", nargs="+", choices=FAULTS, default=list(FAULTS),
+                   help="cases per grid point: healthy and the spall locations")
+    p.add_argument("--fs", type=finite_float, default=48000.0, help="signal sample rate [Hz]")
+    p.add_argument("--steps-per-sample", type=int, default=4, help="time steps per signal sample")
+    p.add_argument("--t-end", type=finite_float, default=0.5, help="simulated time per case [s]")
+    p.add_argument("--workers", type=int, help="local processes (default: all cores)")
+    p.add_argument("--progress", action="store_true", help="progress line on stderr")
+    p.add_argument("--json", action="store_true", help="print the index rows as JSON")
+
+
+def run(args):
+    rows = build_dataset(args.out, bearing=args.bearing, speeds_rpm=tuple(args.rpm), loads=tuple(args.load),
+                         sizes=tuple(tuple(s) for s in (args.size or [(1e-3, 1.5e-3, 1e-4)])),
+                         faults=tuple(args.faults), fs=args.fs, t_end=args.t_end,
+                         steps_per_sample=args.steps_per_sample, workers=args.workers, progress=args.progress)
+    if args.json:
+        print(json.dumps(to_jsonable(rows), indent=2))
+        return
+    counts = Counter(r["fault"] for r in rows)
+    print_table([("cases", len(rows)), *((f"cases.{f}", counts[f]) for f in FAULTS if counts[f]),
+                 ("index", f"{args.out}/index.csv")])
