@@ -76,7 +76,8 @@ def quasistatic_start(bearing, scenario: Scenario, lubricant: Lubricant | None =
     sol = solve_quasistatic(b, Fr=scenario.Fr, Fa=scenario.Fa, omega=scenario.omega_at(0.0), control=scenario.control,
                             traction=dynamic_traction_model(scenario), lubricant=lubricant, ring_growth=scenario.ring_growth,
                             temperatures=scenario.temperatures, fixed={"tilt_x": 0.0, "tilt_y": 0.0},
-                            hertz_method=scenario.hertz, n_strips=max(scenario.n_strips, 16), stiffness=False)
+                            hertz_method=scenario.hertz, n_strips=scenario.n_strips, n_across=scenario.n_across,
+                            stiffness=False)
     start = sol.dynamic_start(b)
     start["static"] = sol
     return start

@@ -5,7 +5,8 @@ import argparse
 import json
 from pathlib import Path
 
-from ..model.scenario import Scenario
+from ..data import traction_models
+from ..model.scenario import CONTROLS, INITIAL_STATES, TRACTION_LEVELS, Scenario
 from ..outputs.jsonio import to_jsonable
 from ..physics.hertz import METHODS
 from ..simulate import simulate
@@ -49,8 +50,21 @@ def add_parser(sub):
     p.add_argument("--cage", action=argparse.BooleanOptionalAction, default=True, help="torus cage on/off")
     p.add_argument("--lubrication", action=argparse.BooleanOptionalAction, default=True,
                    help="Lambda-switched damping and friction on/off")
-    p.add_argument("--initial", choices=("analytic", "rest"), default="analytic",
-                   help="start from the quasi-static state at speed, or from rest (--ramp with UP > 0: rest)")
+    p.add_argument("--initial", choices=INITIAL_STATES, default="analytic",
+                   help="start from the analytic load distribution at kinematic speeds, from rest (--ramp with "
+                        "UP > 0: rest), or from the quasi-static solver's solution (ball positions, contact angles, "
+                        "orbital and ball speeds by --control)")
+    p.add_argument("--control", choices=CONTROLS, default="auto",
+                   help="kinematics of the quasi-static start: race control (auto by Jones' criterion, outer, "
+                        "inner), minimum energy (Gupta), or traction equilibrium")
+    p.add_argument("--traction-level", choices=TRACTION_LEVELS, default="point",
+                   help="tangential force: point-contact law (--friction) or traction integrated over the Hertz "
+                        "ellipse (slip from rolling, spin and curvature; --traction model)")
+    p.add_argument("--traction", default="lambda_dem",
+                   help="traction model of the ellipse level (catalogue: " + ", ".join(traction_models) + ")")
+    p.add_argument("--strips", type=int, default=8, help="strips of the ellipse integration")
+    p.add_argument("--ring-growth", action=argparse.BooleanOptionalAction, default=False,
+                   help="groove geometry follows the ring speed (centrifugal growth of the rotating ring)")
     p.add_argument("--out", metavar="DIR", help="write run.npz, run.json, run.png and run.csv into DIR")
     p.add_argument("--progress", action=argparse.BooleanOptionalAction, default=None,
                    help="progress on stderr (default: for runs over 2 million steps)")
@@ -63,7 +77,9 @@ def scenario_from_args(args) -> Scenario:
     kw = dict(Fr=args.Fr, Fa=args.Fa, omega=omega_from_args(args), Pd=args.Pd, dt=args.dt,
               sample_dt=args.sample_dt, integrator=args.integrator, friction=args.friction,
               tangential=args.tangential, hertz=args.hertz, film=args.film, cage=args.cage,
-              lubrication=args.lubrication, initial=args.initial)
+              lubrication=args.lubrication, initial=args.initial, control=args.control,
+              traction_level=args.traction_level, traction=args.traction, n_strips=args.strips,
+              ring_growth=args.ring_growth)
     if args.ramp:
         up, steady, down = args.ramp
         kw.update(t_ramp_up=up, t_steady=steady, t_ramp_down=down)

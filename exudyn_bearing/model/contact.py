@@ -280,11 +280,14 @@ def _ellipse_traction(p, rx, kappa, a_ax, b_ax, f_n, sx, sy, sz, mx, my, mz, h_m
     (:func:`~exudyn_bearing.physics.contact_slip._contact_traction`, the
     quasi-static solver's relation): slip v0, v_t at the centre along e_x,
     e_y, spin w_n = -spin about e_z = -n, curvature-induced slip c2 =
-    roll / (2 R_d), rolling speed |m . e_x|. Returns the force on the ball
+    roll / (2 R_d), rolling speed |m . e_x| (at least the regularising speed
+    ``P_VREG``, so that a slide-to-roll traction law stays finite at
+    start-up). Returns the force on the ball
     (world), the moment on it about e_z, and the dissipation [W]."""
     v0 = sx * exx + sy * exy + sz * exz
     v_t = sx * eyx + sy * eyy + sz * eyz
-    u_roll = abs(mx * exx + my * exy + mz * exz)
+    # rolling speed of the slide-to-roll ratio, at least the regularising speed (start-up from rest)
+    u_roll = max(abs(mx * exx + my * exy + mz * exz), p[P_VREG])
     r_d = p[P_RD_I] if inner else p[P_RD_O]
     code = int(p[P_TRACTION_CODE])
     h_c = 0.0
@@ -439,9 +442,11 @@ def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist,
     else:
         major = minor = 0.0
     # contact point: middle of the overlap (n points from the groove centre to the
-    # ball centre; the groove surface p + R_c n lies beyond the ball centre along n)
+    # ball centre; the groove surface p + R_c n lies beyond the ball centre along n);
+    # the ellipse level takes the slip on the undeformed ball surface, X = c + R_b n,
+    # as the quasi-static solver's kinematics do (Harris & Kotzalas)
     ddot, sx, sy, sz, slip, u_r, mx, my, mz, lx, ly, lz, px, py, pz = _surface_kinematics(
-        rings, race, xb, vb, wb, j, dxw, dyw, dzw, cx, cy, nx, ny, nz, rb - 0.5 * delta)
+        rings, race, xb, vb, wb, j, dxw, dyw, dzw, cx, cy, nx, ny, nz, rb if ellipse else rb - 0.5 * delta)
     h, lam, regime, c_n, mu = _lubrication(p, u_r, q_el, rx, kappa, major, c_hyst)
     f_n = q_el + c_n * ddot
     if f_n < 0.0:

@@ -21,7 +21,7 @@ from ..physics.load_distribution import race_stiffness
 from .load_range import check_load_range
 from .scenario import Scenario
 
-__all__ = ["SimulationError", "StepSizeWarning", "StableStep", "STABILITY_SAFETY", "START_UP_CAGE_LOAD",
+__all__ = ["ellipse_traction_damping", "SimulationError", "StepSizeWarning", "StableStep", "STABILITY_SAFETY", "START_UP_CAGE_LOAD",
            "STEADY_CAGE_LOAD", "CAGE_BLOW_UP_RATIO", "explicit_step_factor", "expected_cage_load", "stable_step",
            "step_warning", "cage_load_check", "ring_contact_stiffness", "ring_stable_step"]
 
@@ -166,6 +166,9 @@ def stable_step(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant |
     chatters, which validation/bench_reference.py shows in the slip), the
     regularised-friction damping
     (dt < 2 m_eff / c resp. 2.83 m_eff / c, c = 2 mu Q / v_reg) and the
+    traction over the ellipse (``traction_level="ellipse"``: its linear
+    slope at small slip acts as a viscous damper,
+    :func:`ellipse_traction_damping`, counted as the friction limit), the
     critically damped ball / cage-ball contacts (two per cage ball, f at
     zeta = 1: 0.83 for Verlet) at ``cage_load`` [N] (default
     :func:`expected_cage_load`: a tenth of the ball load in start-up,
@@ -203,6 +206,9 @@ def stable_step(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant |
         dt_t = factor / math.sqrt(scenario.tangential_stiffness_ratio * (kt_i + kt_o) * 2.5 / mb)
     elif scenario.friction == "regularized" and mu > 0:
         dt_f = factor * sphere_tangential_mass(mb) / (2.0 * mu * q / scenario.regularizing_speed)
+    if scenario.traction_level == "ellipse":
+        dt_t = math.inf  # no tangential spring at the ellipse level
+        dt_f = factor * sphere_tangential_mass(mb) / ellipse_traction_damping(b, scenario, lub, q)
     dt_c = math.inf
     load_c, basis = math.nan, ""
     if scenario.cage and b.has_cage:
@@ -219,6 +225,38 @@ def stable_step(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant |
     parts = {"normal": dt_n, "tangential": dt_t, "friction": dt_f, "cage": dt_c}
     name = min(parts, key=parts.get)
     return StableStep(STABILITY_SAFETY * parts[name], dt_n, dt_t, dt_f, dt_c, name, load_c, basis)
+
+
+def ellipse_traction_damping(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant, load: float) -> float:
+    """Viscous coefficient [N s/m] of the ellipse-level traction of a ball on
+    both races for a small uniform slip: c = 2 Q mu'(0) / u, the traction
+    slope mu'(0) taken as the secant mu(s)/s at s = 1e-3 of the scenario's
+    (regularised) traction model at the inner contact (pressure p_max, Hamrock
+    & Dowson films at the kinematic rolling speed u, at least the
+    ``regularizing_speed`` the kernel uses as the least rolling speed). The
+    explicit step must stay below 2 m_t / c (velocity Verlet), m_t the
+    sphere's tangential mass."""
+    from ..physics import ehl
+    from ..physics.geometry import raceway_radii
+    from ..physics.traction import traction_coefficient
+    from .parameters import dynamic_traction_model
+
+    b = bearing
+    a0 = b.free_contact_angle
+    u_i, _u_o = kinematics.rolling_speeds(scenario.omega, 0.0, b.ball_radius, b.pitch_radius, a0)
+    u = max(float(u_i), scenario.regularizing_speed)
+    em = material_reduced_modulus(b.material)
+    rx, ry = raceway_radii(b.ball_radius, b.inner_groove_radius, b.pitch_radius - b.ball_radius * math.cos(a0), a0,
+                           True)
+    hc = hertz.hertz_contact(rx, ry, em, load=load, method=scenario.hertz)
+    kappa = max(float(hc.kappa), 1.0 / float(hc.kappa))
+    hm = float(ehl.film_thickness_hamrock_dowson(u, load, rx, kappa, em, lubricant.viscosity,
+                                                 lubricant.pressure_viscosity))
+    hcen = float(ehl.film_thickness_central_hamrock_dowson(u, load, rx, kappa, em, lubricant.viscosity,
+                                                           lubricant.pressure_viscosity))
+    s = 1e-3
+    mu = float(traction_coefficient(dynamic_traction_model(scenario), s * u, u, float(hc.p_max), hcen, hm))
+    return max(2.0 * load * (mu / s) / u, 1e-12)
 
 
 def step_warning(label: str, dt: float, stable: StableStep) -> str | None:
