@@ -15,10 +15,11 @@ from .model.scenario import Scenario
 from .model.stability import SimulationError, StepSizeWarning
 from .outputs.results import Results
 from .simulate import CreateBallBearing, simulate
-from .solvers.quasistatic import QuasiStaticSolution, solve_quasistatic
+from .model.coefficients import BearingCoefficients
+from .solvers.quasistatic import QuasiStaticSolution, bearing_coefficients, solve_quasistatic
 
 __version__ = "0.1.0"
 
 __all__ = ["CreateBallBearing", "BallBearing", "InputError", "Lubricant", "Material", "Results", "Scenario", "SimulationError", "StepSizeWarning",
            "catalog", "get_bearing", "load_bearing", "lubricants", "materials", "simulate",
-           "solve_quasistatic", "QuasiStaticSolution"]
+           "solve_quasistatic", "QuasiStaticSolution", "bearing_coefficients", "BearingCoefficients"]

@@ -14,6 +14,10 @@ Sub-commands (``--json`` for scripts, tables otherwise):
 * ``simulate --bearing B --Fr N --omega W --engine reference --t-end T
   [--out DIR] [--json]``: dynamic simulation; summary keys of
   :meth:`exudyn_bearing.outputs.results.Results.summary`.
+* ``stiffness BEARING [--Fr N] [--Fa N] [--omega W | --rpm N | --speeds W.. |
+  --rpms N..] [--phases N] [--json] [--plot FILE.png]``: linearised 5x5
+  stiffness and damping (x, y, axial, tilt x, tilt y) from the quasi-static
+  solver, or a table over speeds.
 * ``vibration three-dof [--source-parameters] [--json]``: eigenvalues,
   natural frequencies, damping ratios and mode shapes of the 3-DOF
   outer ring / ball / inner ring model.
@@ -28,14 +32,14 @@ import sys
 
 from ..data import InputError
 from ..model.stability import SimulationError
-from . import info, quasistatic, simulate, static, vibration
+from . import info, quasistatic, simulate, static, stiffness, vibration
 from .common import Parser
 
 __all__ = ["main"]
 
 #: Sub-commands: name -> module with ``add_parser(subparsers)`` and ``run(args)``.
 COMMANDS = {"info": info, "static": static, "quasistatic": quasistatic, "simulate": simulate,
-            "vibration": vibration}
+            "stiffness": stiffness, "vibration": vibration}
 
 
 def _parser() -> Parser:
