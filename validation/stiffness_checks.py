@@ -239,7 +239,7 @@ def three_dof_comparison():
         "c_xx": float(s.damping[0, 0]), "c_yy": float(s.damping[1, 1]),
         "effective_balls": kxx / k_ball["three_dof_hertz"],
         "stiffness": s.stiffness, "damping": s.damping,
-        "ring": {"mass": m, "inertia_diametral": i_d},
+        "ring": {"mass": m, "inertia_diametral": i_d, "radius": ring["radius"]},
         "full_modes": [{"f_n_hz": float(f), "zeta": float(z), "shape_abs": np.abs(sh).tolist()}
                        for f, z, sh in zip(full.natural_frequencies, full.damping_ratios, full.mode_shapes)],
         "three_dof_modes": [{"f_n_hz": float(f), "zeta": float(z), "shape_abs": np.abs(sh).tolist()}
