@@ -263,3 +263,19 @@ def test_three_dof_ball_link_and_bearing_stiffness():
     assert s.stiffness[0, 0] == pytest.approx(k_sum, rel=1e-6)
     k_ball = 1.0 / (1.0 / dv["inner"]["k_hertz"] + 1.0 / dv["outer"]["k_hertz"])
     assert 1.5 < s.stiffness[0, 0] / k_ball < 2.5
+
+
+def test_readme_stiffness_example_runs():
+    """The README's example of "Bearing stiffness for rotordynamics" runs as printed; its k_xx at rest
+    equals the solver's phase-averaged K_xx."""
+    from pathlib import Path
+
+    text = (Path(__file__).resolve().parents[1] / "README.md").read_text()
+    start = text.index('```python\nimport exudyn_bearing as eb\nc = eb.bearing_coefficients')
+    code = text[start + len("```python\n"):text.index("```\n", start + 10)]
+    scope = {}
+    exec(compile(code, "README.md", "exec"), scope)
+    c = scope["c"]
+    z = eb.catalog["6208"].n_balls
+    k0 = np.mean([solve_quasistatic("6208", 3000.0, phase=2 * math.pi / z * m / 3).stiffness[0, 0] for m in range(3)])
+    assert c.stiffness[0, 0, 0] == pytest.approx(k0, rel=1e-9)
