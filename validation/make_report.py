@@ -567,7 +567,7 @@ def section_stiffness():
               "secant column re-solves them at F_a. At 100 and 500 rad/s DEM and matrix agree within "
               + f"{100 * max(max(abs(v) for v in r['relative_difference'].values()) for r in d['stiffness'] if r['omega'] < 3000):.2f} %. "
               "At 3000 rad/s the radial stiffness agrees; the DEM's axial stiffness depends on its friction: "
-              + "; ".join(f"{r['case']}: {r['dem']['k_zz']:.4g} N/m" for r in fast)
+              + "; ".join(f"friction {r['friction']}, dF_a {r['dFa']:g} N: {r['dem']['k_zz']:.4g} N/m" for r in fast)
               + f" against the matrix's {fast[0]['quasistatic']['k_zz']:.4g} N/m. Without friction the DEM reproduces "
               "the matrix; with it, its axial stiffness depends on the increment, so its tangential contact forces "
               "(Cundall-Strack springs, Coulomb friction) take part in the axial balance at this speed, which the "
