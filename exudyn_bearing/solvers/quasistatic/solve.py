@@ -47,9 +47,9 @@ from ...physics.geometry import _raceway_radii_cos
 from ...physics.load_distribution import check_axial_load
 from . import kinematics as km
 from .balls import B_CR, B_CZ, B_DI, B_DO, B_NIR, B_NIZ, B_NOR, B_NOZ, B_QI, B_QO
+from .damping import condensed_matrices, contact_damping
 from .geometry import operating_geometry
 from .ring import DOF_NAMES, LOAD_NAMES, RingProblem, solve_ring
-from .damping import condensed_matrices, contact_damping
 from .solution import QuasiStaticSolution
 from .stiffness import stiffness_matrix
 
