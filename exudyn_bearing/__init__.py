@@ -15,11 +15,13 @@ from .model.scenario import Scenario
 from .model.stability import SimulationError, StepSizeWarning
 from .outputs.results import Results
 from .simulate import CreateBallBearing, simulate
+from .model.coefficients import BearingCoefficients
 from .solvers.element.console import filter_exudyn_notes
-from .solvers.quasistatic import QuasiStaticSolution, solve_quasistatic
+from .solvers.quasistatic import QuasiStaticSolution, bearing_coefficients, solve_quasistatic
 
 __version__ = "0.1.0"
 
-__all__ = ["CreateBallBearing", "filter_exudyn_notes", "BallBearing", "Defect", "InputError", "Lubricant", "Material", "Results",
-           "Scenario", "SimulationError", "StepSizeWarning", "catalog", "get_bearing", "load_bearing", "load_lubricant",
-           "lubricants", "materials", "simulate", "solve_quasistatic", "QuasiStaticSolution"]
+__all__ = ["CreateBallBearing", "filter_exudyn_notes", "BallBearing", "Defect", "InputError", "Lubricant", "Material",
+           "Results", "Scenario", "SimulationError", "StepSizeWarning", "catalog", "get_bearing", "load_bearing",
+           "load_lubricant", "lubricants", "materials", "simulate", "solve_quasistatic", "QuasiStaticSolution",
+           "bearing_coefficients", "BearingCoefficients"]

@@ -14,6 +14,10 @@ Sub-commands (``--json`` for scripts, with a ``units`` map; tables otherwise):
 * ``simulate [BEARING] --Fr N [--omega W | --rpm N] [--ramp UP STEADY DOWN]
   [--t-end T] [--engine reference|exudyn] [--out DIR]``: dynamic simulation;
   summary keys of :meth:`exudyn_bearing.outputs.results.Results.summary`.
+* ``stiffness BEARING [--Fr N] [--Fa N] [--omega W | --rpm N | --speeds W.. |
+  --rpms N..] [--phases N] [--json] [--plot FILE.png]``: linearised 5x5
+  stiffness and damping (x, y, axial, tilt x, tilt y) from the quasi-static
+  solver, or a table over speeds.
 * ``vibration three-dof [--source-parameters] [--json]``: eigenvalues,
   natural frequencies, damping ratios and mode shapes of the 3-DOF
   outer ring / ball / inner ring model.
@@ -31,7 +35,7 @@ import sys
 
 from ..data import InputError
 from ..model.stability import SimulationError
-from . import dataset, info, quasistatic, simulate, static, vibration
+from . import dataset, info, quasistatic, simulate, static, stiffness, vibration
 from .common import Parser
 
 __all__ = ["main"]
@@ -44,7 +48,7 @@ DESCRIPTION = ("Rolling-element ball bearings: data sheet (info), load distribut
 
 #: Sub-commands: name -> module with ``add_parser(subparsers)`` and ``run(args)``.
 COMMANDS = {"info": info, "static": static, "quasistatic": quasistatic, "simulate": simulate,
-            "vibration": vibration, "dataset": dataset}
+            "stiffness": stiffness, "vibration": vibration, "dataset": dataset}
 
 
 def _parser() -> Parser:

@@ -30,6 +30,13 @@ UNITS = {
     "ball_thermal_growth": "m", "fit_pressure": "Pa", "operating_clearance": "m", "axial_play": "m",
     "control_used": "race control per ball (outer, inner, min-energy, none)",
     "stiffness": "N/m, N/rad, N m/m, N m/rad (order delta_x, delta_y, delta_a, tilt_x, tilt_y)",
+    "damping": "N s/m, N s/rad, N s, N m s/rad (order delta_x, delta_y, delta_a, tilt_x, tilt_y)",
+    "h_min_inner": "m", "h_min_outer": "m",
+    "c_normal_inner": "N s/m (normal damping of the contact model at the contact)", "c_normal_outer": "N s/m",
+    "c_hysteretic_inner": "N s/m", "c_hysteretic_outer": "N s/m",
+    "c_squeeze_inner": "N s/m (NaN without film)", "c_squeeze_outer": "N s/m (NaN without film)",
+    "film_parameter_inner": "-", "film_parameter_outer": "-",
+    "regime_inner": "code (0 boundary, 1 mixed, 2 full film, -1 no contact)", "regime_outer": "code",
     "reactions": "N or N m", "residual": "N or N m", "loads": "N or N m", "omega": "rad/s", "omega_outer": "rad/s",
 }
 
@@ -58,6 +65,7 @@ class QuasiStaticSolution:
     geometry: dict               #: operating geometry (growth, clearance, fit)
     stiffness: np.ndarray        #: (5, 5) = -d(balls' generalized force)/du
     stiffness_check: dict        #: step and convergence of the central differences
+    damping: np.ndarray | None = None  #: (5, 5) = -d(balls' generalized force)/du' (:mod:`.damping`)
     minimum_checks: list = field(default_factory=list)  #: per-ball minimum-energy checks
     contact_geometry: np.ndarray | None = None  #: packed per-ball contact data (kinematics.GEO_FIELDS)
     kinematics: np.ndarray | None = None        #: per-ball (omega_m, w_r, w_z) [rad/s], pivot slip v_t [m/s]
@@ -112,6 +120,8 @@ class QuasiStaticSolution:
         d.update(self.geometry)
         d["stiffness"] = self.stiffness
         d["stiffness_check"] = self.stiffness_check
+        if self.damping is not None:
+            d["damping"] = self.damping
         d["residual"] = dict(zip(("Fx", "Fy", "Fa", "Mx", "My"), map(float, self.residual)))
         d["held_dofs"] = dict(self.held)
         d["reactions"] = dict(self.reactions)

@@ -14,7 +14,9 @@ energy):
    kinematics, from the race-control solution, until the speeds change by
    less than 1e-7 (the minimiser's resolution);
 5. slip, traction and dissipation of every contact, the stiffness matrix
-   (:mod:`.stiffness`) and the checks (shoulder, convergence, minimum).
+   (:mod:`.stiffness`), the contacts' normal damping and the equivalent
+   damping matrix (:mod:`.damping`) and the checks (shoulder, convergence,
+   minimum).
 
 Choices where the sources leave room (also in docs/theory/quasistatic.md):
 balls are independent (each its own orbital speed: no cage, as the
@@ -46,6 +48,7 @@ from ...physics.load_distribution import check_axial_load
 from . import kinematics as km
 from .balls import B_CR, B_CZ, B_DI, B_DO, B_NIR, B_NIZ, B_NOR, B_NOZ, B_QI, B_QO
 from ...model.operating_geometry import operating_geometry
+from .damping import condensed_matrices, contact_damping
 from .ring import DOF_NAMES, LOAD_NAMES, RingProblem, solve_ring
 from .solution import QuasiStaticSolution
 from .stiffness import stiffness_matrix
@@ -88,7 +91,7 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
                       control="auto", traction="lambda_dem", lubricant: Lubricant | str | None = None,
                       ring_growth=True, fit=0.0, temperatures=None, fixed=None, hertz_method="exact",
                       phase=0.0, n_strips=32, n_across=4, shoulder_angle=MAX_FREE_CONTACT_ANGLE,
-                      stiffness=True) -> QuasiStaticSolution:
+                      stiffness=True, start=None) -> QuasiStaticSolution:
     """Quasi-static equilibrium of a ball bearing with free inner-ring DOFs, speed effects and kinematics.
 
     Parameters
@@ -127,7 +130,13 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
     shoulder_angle : float
         Largest angle from the groove bottom that a contact ellipse may reach [rad].
     stiffness : bool
-        Compute the 5x5 stiffness matrix.
+        Compute the 5x5 stiffness matrix and the equivalent damping matrix
+        (:mod:`.damping`).
+    start : QuasiStaticSolution, optional
+        A solution of the same bearing at a nearby operating point (e.g. the
+        previous speed of a sweep): its ring pose and its ball speeds, scaled
+        by the ratio of the ring speeds, start the iteration (a failed warm
+        ring solve is retried from the bracketed start).
 
     Returns
     -------
@@ -221,6 +230,16 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
     controls = np.array(["outer"] * z, dtype=object)
     checks = [None] * z
     cold = True
+    if start is not None:
+        if not isinstance(start, QuasiStaticSolution):
+            raise InputError(f"start: expected a QuasiStaticSolution, got {type(start).__name__}")
+        if start.bearing_name != b.name or np.asarray(start.balls["psi"]).size != z:
+            raise InputError(f"start: a solution of {start.bearing_name} cannot start {b.name}")
+        u = np.where(free, start.displacement, values)
+        cold = False
+        w_start = start.omega - start.omega_outer
+        if moving and start.kinematics is not None and w_start != 0.0:
+            kin = np.array(start.kinematics, float) * ((w_i - w_o) / w_start)
     it_total = 0
     phases = ["race"] + ([control] if control in ("min-energy", "equilibrium") and moving else [])
     prob = balls = geo = cs = None
@@ -288,10 +307,20 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
                              f"{checks[bad[0]]['residual']:.2g}); the traction model may be too steep or too weak "
                              "to hold the ball: try more regularisation, or control='min-energy'")
     _check_shoulders(b, geom, balls, cs, loads, prob, shoulder_angle)
+    # normal damping of every contact (the contact model's, at its load and film) and the 5x5 matrices
+    out.update(contact_damping(balls, cs["a_i"], cs["a_o"], out["h_min_inner"], out["h_min_outer"], geom.r_b,
+                               b.material.hysteretic_damping, lub))
     if stiffness:
         kmat, kcheck = stiffness_matrix(prob, u, balls)
+        k_cond, cmat = condensed_matrices(psi, geom, u, balls, prob.m_w2, prob.fto, prob.fti,
+                                          out["c_normal_inner"], out["c_normal_outer"])
+        w = np.array([1.0, 1.0, 1.0, 1.0 / prob.arm, 1.0 / prob.arm])
+        kw = kmat * np.outer(w, w)
+        kcheck["condensed_difference"] = float(np.abs(k_cond * np.outer(w, w) - kw).max()
+                                               / max(np.abs(kw).max(), 1e-300))
     else:
         kmat, kcheck = np.full((5, 5), np.nan), {}
+        cmat = np.full((5, 5), np.nan)
     resid = prob.residual(u)[0]
     reactions = {k: float(-resid[DOF_NAMES.index(k)]) for k in held}
     rho_i, z_i = b.inner_groove_center
@@ -304,7 +333,7 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
     return QuasiStaticSolution(
         bearing_name=b.name, loads=loads, omega=w_i, omega_outer=w_o, control=control, traction=model.name,
         lubricant=lub.name, displacement=u, residual=resid, free=free, held=held, reactions=reactions, balls=out,
-        geometry=geometry, stiffness=kmat, stiffness_check=kcheck,
+        geometry=geometry, stiffness=kmat, stiffness_check=kcheck, damping=cmat,
         minimum_checks=[c for c in checks] if control in ("min-energy", "equilibrium") else [], iterations=it_total,
         n_strips=n_strips, n_across=n_across, wall_s=time.perf_counter() - t0,
         contact_geometry=geo, kinematics=kin, traction_model=model)

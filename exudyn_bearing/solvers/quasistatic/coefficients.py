@@ -1,0 +1,130 @@
+"""Linearised bearing coefficients over a speed range from the quasi-static
+solver: the 5x5 stiffness (:mod:`.stiffness`) and equivalent damping
+(:mod:`.damping`) at each speed, as a
+:class:`~exudyn_bearing.model.coefficients.BearingCoefficients` record (the
+input of rotordynamics exports such as :mod:`exudyn_bearing.outputs.ross`).
+
+Each speed is solved from the solution at the previous speed (ring pose and
+ball speeds scaled with the speed: ``solve_quasistatic(..., start=)``).
+
+The stiffness and damping of a bearing vary with the position of the ball
+set (period: one ball pitch 2 pi/Z of the cage); ``n_phases`` > 1 averages
+them over that many evenly spaced ball-set positions (the time average a
+linear time-invariant rotor model sees), 1 takes the balls at psi_j = phase
++ 2 pi j/Z. The spread over the phases is returned in ``operating_point``.
+
+Axes and signs are those of :mod:`exudyn_bearing.model.coefficients`
+(x the radial load direction, z the bearing axis, K = -dF/dq and
+C = -dF/dq' of the force on the shaft); the quasi-static solver's DOFs
+(delta_x, delta_y, delta_a, tilt_x, tilt_y) are the inner ring's pose against
+the outer ring, in that order, so no mapping is needed.
+Theory notes: docs/theory/vibration.md, "Linearised bearing".
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ...data import InputError, load_bearing
+from ...model.coefficients import BearingCoefficients
+from .solve import solve_quasistatic
+
+__all__ = ["bearing_coefficients", "METHOD"]
+
+#: Description stored in the record's ``method``.
+METHOD = ("quasi-static 5-DOF equilibrium (exudyn_bearing.solve_quasistatic): stiffness by central differences "
+          "of the balls' force on the inner ring; damping: normal damping of the contact model (hysteretic, "
+          "squeeze film, Lambda-switched) condensed over each ball's two contacts in series")
+
+
+def _speeds(speeds):
+    try:
+        s = np.array(speeds, dtype=float).reshape(-1)
+    except (TypeError, ValueError):
+        raise InputError(f"speeds: expected numbers [rad/s], got {speeds!r}") from None
+    if s.size == 0:
+        raise InputError("speeds: at least one speed is needed")
+    if not np.all(np.isfinite(s)) or np.any(s < 0.0):
+        raise InputError("speeds: must be finite and >= 0 [rad/s]")
+    if s.size > 1 and np.any(np.diff(s) <= 0.0):
+        raise InputError("speeds: must be strictly increasing")
+    return s
+
+
+def bearing_coefficients(bearing, speeds, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, n_phases=1, phase=0.0,
+                         **options) -> BearingCoefficients:
+    """Stiffness and damping of a bearing at each speed (module docstring).
+
+    Parameters
+    ----------
+    bearing : BallBearing or str
+        Geometry (catalogue name or JSON file), with its clearance.
+    speeds : array
+        Inner-ring speeds [rad/s], >= 0, strictly increasing.
+    Fr, Fy, Fa, Mx, My : float
+        Loads on the inner ring [N, N m] (:func:`~.solve.solve_quasistatic`).
+    n_phases : int
+        Ball-set positions averaged over one ball pitch (1: none).
+    phase : float
+        Azimuth of ball 0 [rad] of the first position.
+    **options
+        Passed to :func:`~.solve.solve_quasistatic` (``control``,
+        ``traction``, ``lubricant``, ``ring_growth``, ``fit``,
+        ``temperatures``, ``fixed``, ``hertz_method``, ``omega_outer``, ...).
+
+    Returns
+    -------
+    BearingCoefficients
+        ``speeds``, ``stiffness`` and ``damping`` (n, 5, 5), ``method`` and
+        ``operating_point`` (bearing, loads, clearance, solver options, the
+        ring displacement at each speed, the largest relative spread of K
+        and C over the phases, the solver's stiffness checks).
+
+    Examples
+    --------
+    >>> import exudyn_bearing as eb
+    >>> c = eb.bearing_coefficients("6208", [100.0, 500.0], Fr=3000.0)
+    >>> [round(float(k) / 1e8, 3) for k in c.stiffness[:, 0, 0]]   # k_xx [1e8 N/m]
+    [1.814, 1.817]
+    """
+    s = _speeds(speeds)
+    b = load_bearing(bearing)
+    if isinstance(n_phases, bool) or not isinstance(n_phases, (int, np.integer)) or not 1 <= n_phases <= 64:
+        raise InputError(f"n_phases: expected an integer in [1, 64], got {n_phases!r}")
+    for bad in ("omega", "phase", "start", "stiffness"):
+        if bad in options:
+            raise InputError(f"{bad}: set by bearing_coefficients, not an option")
+    phases = float(phase) + 2.0 * math.pi / b.n_balls * np.arange(n_phases) / n_phases
+    n = s.size
+    kk = np.zeros((n, 5, 5))
+    cc = np.zeros((n, 5, 5))
+    disp = np.zeros((n, 5))
+    spread_k = np.zeros(n)
+    spread_c = np.zeros(n)
+    checks = []
+    prev = [None] * n_phases
+    for i, w in enumerate(s):
+        ks, cs = [], []
+        for m, ph in enumerate(phases):
+            sol = solve_quasistatic(b, Fr, Fa, Mx, My, Fy=Fy, omega=float(w), phase=float(ph), start=prev[m],
+                                    **options)
+            prev[m] = sol
+            ks.append(sol.stiffness)
+            cs.append(sol.damping)
+            if m == 0:
+                disp[i] = sol.displacement
+                checks.append({k: sol.stiffness_check[k] for k in
+                               ("relative_change_half_step", "asymmetry", "condensed_difference")})
+        ks, cs = np.array(ks), np.array(cs)
+        kk[i], cc[i] = ks.mean(axis=0), cs.mean(axis=0)
+        spread_k[i] = float(np.ptp(ks, axis=0).max() / max(np.abs(kk[i]).max(), 1e-300))
+        spread_c[i] = float(np.ptp(cs, axis=0).max() / max(np.abs(cc[i]).max(), 1e-300))
+    op = {"bearing": b.name, "Fr": float(Fr), "Fy": float(Fy), "Fa": float(Fa), "Mx": float(Mx), "My": float(My),
+          "diametral_clearance": b.diametral_clearance, "n_phases": int(n_phases), "phase": float(phase),
+          "options": {k: (v if isinstance(v, (int, float, str, bool, dict, type(None))) else str(v))
+                      for k, v in options.items()},
+          "displacement": disp.tolist(), "displacement_axes": ["delta_x", "delta_y", "delta_a", "tilt_x", "tilt_y"],
+          "phase_spread_stiffness": spread_k.tolist(), "phase_spread_damping": spread_c.tolist(),
+          "stiffness_checks": checks}
+    return BearingCoefficients(s, kk, cc, op, METHOD)
