@@ -273,7 +273,7 @@ def _contact_frame(rings, r, wb, j, dxw, dyw, dzw, nx, ny, nz):
     return (wx * nx + wy * ny + wz * nz, wx * eyx + wy * eyy + wz * eyz, exx, exy, exz, eyx, eyy, eyz)
 
 
-@kernel(inline="always")
+@kernel(no_runtime=True)
 def _ellipse_traction(p, rx, kappa, a_ax, b_ax, f_n, sx, sy, sz, mx, my, mz, h_min, spin, roll, inner,
                       exx, exy, exz, eyx, eyy, eyz):
     """Traction of a ball / raceway contact integrated over its Hertz ellipse
@@ -283,7 +283,9 @@ def _ellipse_traction(p, rx, kappa, a_ax, b_ax, f_n, sx, sy, sz, mx, my, mz, h_m
     roll / (2 R_d), rolling speed |m . e_x| (at least the regularising speed
     ``P_VREG``, so that a slide-to-roll traction law stays finite at
     start-up). Returns the force on the ball
-    (world), the moment on it about e_z, and the dissipation [W]."""
+    (world), the moment on it about e_z, and the dissipation [W]. Called,
+    not inlined: the point level's hot loop stays as small as without it.
+    """
     v0 = sx * exx + sy * exy + sz * exz
     v_t = sx * eyx + sy * eyy + sz * eyz
     # rolling speed of the slide-to-roll ratio, at least the regularising speed (start-up from rest)
@@ -452,15 +454,21 @@ def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist,
     if f_n < 0.0:
         f_n = 0.0
     spin = roll = m_z = 0.0
-    if ellipse or want:
-        spin, roll, exx, exy, exz, eyx, eyy, eyz = _contact_frame(rings, race, wb, j, dxw, dyw, dzw, nx, ny, nz)
     if ellipse:
+        spin, roll, exx, exy, exz, eyx, eyy, eyz = _contact_frame(rings, race, wb, j, dxw, dyw, dzw, nx, ny, nz)
         if ry >= rx:
             a_ax, b_ax = major, minor
         else:
             a_ax, b_ax = minor, major
         ftx, fty, ftz, m_z, power = _ellipse_traction(p, rx, kappa, a_ax, b_ax, f_n, sx, sy, sz, mx, my, mz, h,
                                                       spin, roll, inner, exx, exy, exz, eyx, eyy, eyz)
+        # the spin moment m_z about e_z = -n: on the ball, and its reaction on the ring
+        tb[j, 0] -= m_z * nx
+        tb[j, 1] -= m_z * ny
+        tb[j, 2] -= m_z * nz
+        fr[race, 3] += m_z * nx
+        fr[race, 4] += m_z * ny
+        fr[race, 5] += m_z * nz
         hist_out[j, race, 0] = 0.0
         hist_out[j, race, 1] = 0.0
         hist_out[j, race, 2] = 0.0
@@ -473,10 +481,9 @@ def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist,
     fb[j, 1] += -f_n * ny + fty
     fb[j, 2] += -f_n * nz + ftz
     mx_, my_, mz_ = _cross(lx, ly, lz, ftx, fty, ftz)
-    # (the ellipse level's spin moment m_z acts about e_z = -n)
-    tb[j, 0] += mx_ - m_z * nx
-    tb[j, 1] += my_ - m_z * ny
-    tb[j, 2] += mz_ - m_z * nz
+    tb[j, 0] += mx_
+    tb[j, 1] += my_
+    tb[j, 2] += mz_
     # reaction on the ring, at the contact point
     frx = f_n * nx - ftx
     fry = f_n * ny - fty
@@ -485,10 +492,12 @@ def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist,
     fr[race, 1] += fry
     fr[race, 2] += frz
     mx_, my_, mz_ = _cross(px, py, pz, frx, fry, frz)
-    fr[race, 3] += mx_ + m_z * nx
-    fr[race, 4] += my_ + m_z * ny
-    fr[race, 5] += mz_ + m_z * nz
+    fr[race, 3] += mx_
+    fr[race, 4] += my_
+    fr[race, 5] += mz_
     if want:
+        if not ellipse:
+            spin, roll, _x, _y, _z, _u, _v, _w = _contact_frame(rings, race, wb, j, dxw, dyw, dzw, nx, ny, nz)
         if ry >= rx:
             a_ax, b_ax = major, minor
         else:
