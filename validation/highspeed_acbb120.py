@@ -161,7 +161,7 @@ def run_6208_axial():
     out = {}
     for level in ("point", "ellipse"):
         for initial in ("analytic", "rest"):
-            sc = eb.Scenario(Fr=0.0, Fa=3000.0, omega=500.0, t_end=0.1, dt=2e-6, tangential="implicit",
+            sc = eb.Scenario(Fr=0.0, Fa=3000.0, omega=500.0, t_end=0.1, dt=1.5e-6, tangential="implicit",
                              traction_level=level, initial=initial, sample_dt=1e-3)
             s = eb.simulate("6208", sc).summary(t_window=(0.08, 0.1))
             out[f"{level}, {initial}"] = {k: s[k] for k in ("cage_speed", "ball_spin", "beta", "dissipation_inner",
@@ -179,7 +179,7 @@ def run_6208_axial():
 def run_6208_papers():
     out = {}
     for level in ("point", "ellipse"):
-        sc = eb.Scenario(Fr=3000.0, omega=500.0, t_end=0.05, dt=2e-6, tangential="implicit", traction_level=level,
+        sc = eb.Scenario(Fr=3000.0, omega=500.0, t_end=0.05, dt=1.5e-6, tangential="implicit", traction_level=level,
                          sample_dt=1e-4)
         s = eb.simulate("6208", sc).summary(t_window=(0.025, 0.05))
         out[level] = {k: s[k] for k in ("q_max_inner", "q_max_outer", "cage_speed", "ball_spin", "lambda_outer_psi0",

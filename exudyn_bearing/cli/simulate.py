@@ -62,7 +62,7 @@ def add_parser(sub):
                         "ellipse (slip from rolling, spin and curvature; --traction model)")
     p.add_argument("--traction", default="lambda_dem",
                    help="traction model of the ellipse level (catalogue: " + ", ".join(traction_models) + ")")
-    p.add_argument("--strips", type=int, default=8, help="strips of the ellipse integration")
+    p.add_argument("--strips", type=int, default=16, help="strips of the ellipse integration")
     p.add_argument("--ring-growth", action=argparse.BooleanOptionalAction, default=False,
                    help="groove geometry follows the ring speed (centrifugal growth of the rotating ring)")
     p.add_argument("--out", metavar="DIR", help="write run.npz, run.json, run.png and run.csv into DIR")

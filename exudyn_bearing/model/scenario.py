@@ -170,7 +170,7 @@ class Scenario:
     ring_mass: float | None = None
     traction_level: str = "point"
     traction: str = "lambda_dem"
-    n_strips: int = 8
+    n_strips: int = 16
     n_across: int = 1
     traction_regularizing_srr: float = 0.01
     ring_growth: bool = False

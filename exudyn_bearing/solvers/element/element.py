@@ -165,7 +165,7 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
                  tangentialStiffnessRatio=2.0 / 3.0, stepSize=1e-6, innerRingSpeed=None, outerRingSpeed=None,
                  initialOmega=0.0, initialLoad=(0.0, 0.0), initial="analytic", sampleInterval=1e-4,
                  mode="bodies", subSteps=1, contactLaw="hertz", powerLaw=(0.0, 1.5, 0.0), tractionLevel="point",
-                 traction="lambda_dem", nStrips=8, nAcross=1, tractionRegularizingSrr=0.01, ringGrowth=False,
+                 traction="lambda_dem", nStrips=16, nAcross=1, tractionRegularizingSrr=0.01, ringGrowth=False,
                  temperatures=None, control="auto", initialState=None, defects=(),
                  signalInterval=None, show=False):
         announce_compilation(forces, EK.fast_step if mode == "fast" else EK.element_rhs)
