@@ -4,7 +4,7 @@ Runs the reference core and the Exudyn element on the same scene (analytic
 start, torus cage, dt = 0.5 us) and draws the ball loads
 and contact angles of the outer contacts against azimuth over the last half
 of the run, with the discrete quasi-static solution (fixed outer ring,
-combined load; PHYSICS.md sec. 8: the Stribeck law with
+combined load; docs/theory/reference_cases.md: the Stribeck law with
 eps = (1 + delta_a tan(alpha)/delta_r)/2). Writes bearing_7208.png with a
 CSV beside it and prints both summaries.
 

@@ -2,7 +2,7 @@
 500 rad/s (start-up ramp, steady phase, slow-down) under F_r = 3000 N, P_d = 0.
 
 Writes into ``--out`` (default scenarios/out/papers_6208): the run (NPZ +
-JSON summary) and the figures of PHYSICS.md sec. 8, each PNG with a CSV:
+JSON summary) and the figures of docs/theory/reference_cases.md, each PNG with a CSV:
 speeds against time, slide-to-roll ratio of one ball, h_min and Lambda of the
 outer contact against azimuth by phase, and the overview.
 

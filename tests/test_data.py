@@ -15,7 +15,7 @@ def test_catalogue_has_the_physics_md_bearings():
 
 
 def test_6208_derived_values(b6208):
-    # PHYSICS.md sec. 2: r_p = (R_i + R_o)/2, P_d = 0 as built, f = 0.52, B = 0.04
+    # docs/theory/geometry.md: r_p = (R_i + R_o)/2, P_d = 0 as built, f = 0.52, B = 0.04
     assert b6208.pitch_radius == pytest.approx(30.3e-3)
     assert b6208.diametral_clearance == pytest.approx(0.0, abs=1e-12)
     assert b6208.inner_conformity == pytest.approx(0.52)
@@ -26,7 +26,7 @@ def test_6208_derived_values(b6208):
 
 
 def test_6208_cage_pocket_clearance(b6208):
-    # PHYSICS.md sec. 2: 2 r_p sin(pi/(2Z)) = 10.52 mm vs R_b + R_z = 10.49 mm: about 30 um
+    # docs/theory/geometry.md: 2 r_p sin(pi/(2Z)) = 10.52 mm vs R_b + R_z = 10.49 mm: about 30 um
     spacing = 2 * b6208.pitch_radius * math.sin(math.pi / 18)
     assert spacing == pytest.approx(10.52e-3, abs=5e-6)
     assert 25e-6 < b6208.cage_pocket_clearance < 35e-6
@@ -116,7 +116,7 @@ def test_rejected_lubricant(kw, name):
 
 
 def test_lubricant_defaults_give_the_papers_roughness():
-    # PHYSICS.md sec. 5: Lambda = h_min / 3.75e-7 m
+    # docs/theory/lubrication.md#film-thickness: Lambda = h_min / 3.75e-7 m
     assert Lubricant().composite_roughness == pytest.approx(3.75e-7)
 
 

@@ -19,7 +19,7 @@ def test_agm_elliptic_integrals_match_scipy():
 
 
 def test_6208_inner_contact_exact_values():
-    # PHYSICS.md sec. 3: R_y/R_x = 32.8, k = 9.37, E = 1.018, F = 3.63
+    # docs/theory/hertz.md: R_y/R_x = 32.8, k = 9.37, E = 1.018, F = 3.63
     rx, ry = raceway_radii(6.3e-3, 6.552e-3, 24e-3, 0.0, True)
     assert ry / rx == pytest.approx(32.8, abs=0.05)
     k, f, e = hertz.ellipticity(rx, ry, "exact")
@@ -47,7 +47,7 @@ def test_circular_contact_limit_is_sphere_on_sphere():
 
 
 def test_sphere_sphere_closed_form():
-    # PHYSICS.md sec. 3: for equal steels K = 4 G sqrt(R_eq) / (3 (1 - nu))
+    # docs/theory/hertz.md: for equal steels K = 4 G sqrt(R_eq) / (3 (1 - nu))
     e, nu = 210e9, 0.3
     g = e / (2 * (1 + nu))
     r1, r2 = 6.3e-3, 4.19e-3
@@ -110,7 +110,7 @@ def test_fits_within_their_stated_error_of_exact(method):
 
 
 def test_simplified_f_typo_would_make_k_thirty_percent_too_stiff():
-    # PHYSICS.md sec. 3: printed F = 1 + (pi/2-1) ln a_r gives 2.99 at the 6208 inner
+    # docs/theory/hertz.md: printed F = 1 + (pi/2-1) ln a_r gives 2.99 at the 6208 inner
     # contact and K about 30 % too stiff; the corrected pi/2 + ... gives 3.56.
     rx, ry = raceway_radii(6.3e-3, 6.552e-3, 24e-3, 0.0, True)
     k, f, e = hertz.ellipticity(rx, ry, "simplified")

@@ -11,7 +11,7 @@ RB, RP = 6.3e-3, 30.3e-3
 
 
 def test_6208_speeds_at_500_rad_s():
-    # PHYSICS.md sec. 8: ball spin omega R_i/(2 R_b) = 952.38 rad/s, cage 198.0 rad/s
+    # docs/theory/reference_cases.md: ball spin omega R_i/(2 R_b) = 952.38 rad/s, cage 198.0 rad/s
     assert kin.ball_spin_absolute(500.0, 0.0, RB, RP) == pytest.approx(952.38, abs=0.005)
     assert kin.ball_spin_absolute(500.0, 0.0, RB, RP) == pytest.approx(500 * 24e-3 / (2 * RB), rel=1e-12)
     assert kin.cage_speed(500.0, 0.0, RB, RP) == pytest.approx(198.0, abs=0.05)

@@ -1,4 +1,4 @@
-"""Quasi-static load distribution against the Stribeck/Harris numbers of PHYSICS.md sec. 8."""
+"""Quasi-static load distribution against the Stribeck/Harris numbers of docs/theory/reference_cases.md."""
 import math
 
 import numpy as np
@@ -19,7 +19,7 @@ def test_load_integrals_against_harris_table():
 
 
 def test_continuous_q_max_6208():
-    # PHYSICS.md sec. 8: Q_max = F_r/(Z J_r(0.5)) = 1457 N at 3000 N
+    # docs/theory/reference_cases.md: Q_max = F_r/(Z J_r(0.5)) = 1457 N at 3000 N
     assert ld.stribeck_solution(9, 3000.0).q_max == pytest.approx(1457, abs=0.5)
 
 
@@ -37,13 +37,13 @@ def test_discrete_solution_follows_the_stribeck_law(b6208, fr):
 
 
 def test_discrete_q_max_6208_3000N(b6208):
-    # PHYSICS.md sec. 8: nine discrete balls with one at psi = 0 give about 1462 N
+    # docs/theory/reference_cases.md: nine discrete balls with one at psi = 0 give about 1462 N
     assert ld.static_equilibrium(b6208, 3000.0).q_max == pytest.approx(1462, abs=1.0)
 
 
 @pytest.mark.parametrize("pd, eps", [(-12.6e-6, 0.685), (0.0, 0.5), (12.6e-6, 0.4)])
 def test_clearance_cases_eps(b6208, pd, eps):
-    # PHYSICS.md sec. 8: eps = 0.685, 0.5, 0.4 at P_d = -12.6, 0, +12.6 um, F_r = 3000 N
+    # docs/theory/reference_cases.md: eps = 0.685, 0.5, 0.4 at P_d = -12.6, 0, +12.6 um, F_r = 3000 N
     s = ld.static_equilibrium(b6208.with_clearance(pd), 3000.0)
     assert s.eps == pytest.approx(eps, abs=0.005)
     # delta_psi = delta_r cos psi - P_d/2
@@ -56,7 +56,7 @@ def test_q_max_grows_with_clearance(b6208):
 
 
 def test_load_vanishes_at_plus_minus_90_deg(b6208):
-    # PHYSICS.md sec. 8: Q and delta vanish at psi = +-pi/2 for P_d = 0
+    # docs/theory/reference_cases.md: Q and delta vanish at psi = +-pi/2 for P_d = 0
     # (eight balls put one ball at each of psi = +-90 deg symmetrically)
     s = ld.static_equilibrium(b6208.replace(n_balls=8), 3000.0)
     for psi in (math.pi / 2, 3 * math.pi / 2):
@@ -93,7 +93,7 @@ def test_clearance_without_load_carries_nothing(b6208):
 
 
 def test_7208_combined_load_follows_the_eps_law(b7208):
-    # PHYSICS.md sec. 8: the same Q_psi law with eps = (1 + delta_a tan(alpha)/delta_r)/2
+    # docs/theory/reference_cases.md: the same Q_psi law with eps = (1 + delta_a tan(alpha)/delta_r)/2
     s = ld.static_equilibrium(b7208, 3000.0, 3000.0)
     a = s.contact_angle[0]
     eps = 0.5 * (1 + s.delta_a * math.tan(a) / s.delta_r)
@@ -134,7 +134,7 @@ def test_fitted_hertz_changes_the_distribution_by_its_stiffness_error(b6208):
     assert s2.delta_r != pytest.approx(s0.delta_r, rel=1e-4)
 
 
-# -- lubrication map: slopes of PHYSICS.md sec. 8 --------------------------------
+# -- lubrication map: slopes of docs/theory/reference_cases.md --------------------------------
 def test_lambda_slope_against_omega(b6208):
     w = np.arange(100.0, 1701.0, 200.0)
     lam = [static_analysis(b6208, 3000.0, omega=x)["lambda_outer"][0] for x in w]
@@ -149,7 +149,7 @@ def test_lambda_and_load_slopes_against_q_max(b6208):
     res = [static_analysis(b6208, x, omega=500.0) for x in fr]
     qmax = np.array([r["q_max"] for r in res])
     lam = np.array([r["lambda_outer"][0] for r in res])
-    # PHYSICS.md sec. 8: slope of Lambda_out against Q_max near -0.073; of F_r against Q_max near 1
+    # docs/theory/reference_cases.md: slope of Lambda_out against Q_max near -0.073; of F_r against Q_max near 1
     assert np.polyfit(np.log(qmax), np.log(lam), 1)[0] == pytest.approx(-0.073, abs=2e-3)
     assert np.polyfit(np.log(qmax), np.log(fr), 1)[0] == pytest.approx(1.0, abs=1e-3)
 
@@ -158,7 +158,7 @@ def test_lubrication_map_6208_500_rad_s(b6208):
     r = static_analysis(b6208, 3000.0, omega=500.0)
     loaded = r["q"] > 0
     lam_out = r["lambda_outer"][loaded]
-    # PHYSICS.md sec. 8: outer contacts mixed, h_min lowest at psi = 0, Lambda_in < Lambda_out
+    # docs/theory/reference_cases.md: outer contacts mixed, h_min lowest at psi = 0, Lambda_in < Lambda_out
     assert np.all((lam_out > 1) & (lam_out <= 3))
     assert np.nanargmin(r["h_min_outer"]) == 0 and np.nanargmin(r["h_min_inner"]) == 0
     assert np.all(r["lambda_inner"][loaded] < lam_out)

@@ -8,7 +8,7 @@ from exudyn_bearing.physics import damping, ehl, friction
 
 E_PRIME = 210e9 / 0.91
 ETA, XI = 0.04, 2.3e-8
-# 6208 outer contact at psi = 0 (PHYSICS.md sec. 5, 8)
+# 6208 outer contact at psi = 0 (docs/theory/lubrication.md#film-thickness, 8)
 RX_OUT, KAPPA_OUT, U_R = 7.6099e-3, 7.2486, 7.2475
 
 
@@ -17,7 +17,7 @@ def _slope(x, y):
 
 
 def test_hamrock_dowson_exponents():
-    # h_min ~ U^0.68 W^-0.073 (Hamrock & Dowson 1977; PHYSICS.md sec. 8 slopes)
+    # h_min ~ U^0.68 W^-0.073 (Hamrock & Dowson 1977; docs/theory/reference_cases.md slopes)
     u = np.geomspace(0.5, 20, 9)
     q = np.geomspace(100, 5000, 9)
     assert _slope(u, ehl.film_thickness_hamrock_dowson(u, 1457.0, RX_OUT, KAPPA_OUT, E_PRIME, ETA, XI)) \
@@ -27,7 +27,7 @@ def test_hamrock_dowson_exponents():
 
 
 def test_masjedi_khonsari_reading_exponents():
-    # PHYSICS.md sec. 5: U^(0.711 k^-0.023), W^(-0.09 k^-0.15). The load exponent was
+    # docs/theory/lubrication.md#film-thickness: U^(0.711 k^-0.023), W^(-0.09 k^-0.15). The load exponent was
     # -0.09 k^+0.15 before: the printed "a k - b" pattern of all three exponents reads as
     # a k^-b, so the W exponent is -0.09 k^-0.15 (docs/theory/lubrication.md#masjedi-khonsari-reading)
     u = np.geomspace(0.5, 20, 9)
@@ -51,7 +51,7 @@ def test_hamrock_dowson_value_against_hand_calculation():
 
 
 def test_6208_outer_contact_is_mixed_at_500_rad_s():
-    # PHYSICS.md sec. 8: Lambda_out about 2.15 .. 3 (mixed) at 500 rad/s, F_r = 3000 N
+    # docs/theory/reference_cases.md: Lambda_out about 2.15 .. 3 (mixed) at 500 rad/s, F_r = 3000 N
     h = ehl.film_thickness_hamrock_dowson(U_R, 1462.0, RX_OUT, KAPPA_OUT, E_PRIME, ETA, XI)
     lam = ehl.film_parameter(h, 3.75e-7)
     assert 2.0 < lam < 3.0
@@ -84,7 +84,7 @@ def test_regime_boundaries():
 
 
 def test_friction_coefficient_stribeck_fit():
-    # PHYSICS.md sec. 4: 0.1 below 1, linear to 0.01 at 3, 0.01 above
+    # docs/theory/lubrication.md#normal-damping: 0.1 below 1, linear to 0.01 at 3, 0.01 above
     lam = np.array([0.2, 1.0, 1.5, 2.0, 3.0, 7.0])
     np.testing.assert_allclose(friction.friction_coefficient(lam, 0.1, 0.01, 1.0, 3.0),
                                [0.1, 0.1, 0.0775, 0.055, 0.01, 0.01], rtol=1e-12)

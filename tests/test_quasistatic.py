@@ -81,7 +81,7 @@ def test_low_speed_reproduces_the_discrete_harris_solution(name, fr, fa, omega):
 
 
 def test_6208_radial_q_max_published():
-    # PHYSICS.md sec. 8: nine discrete balls at F_r = 3000 N, P_d = 0: about 1462 N; load free of tilt by symmetry
+    # docs/theory/reference_cases.md: nine discrete balls at F_r = 3000 N, P_d = 0: about 1462 N; load free of tilt by symmetry
     s = solve_quasistatic("6208", 3000.0)
     assert s.q_max_inner == pytest.approx(1462, abs=1.0)
     assert s.held == {"delta_a": "symmetry", "tilt_x": "symmetry", "tilt_y": "symmetry"}
@@ -170,7 +170,7 @@ def test_outer_race_control_spin_axis_follows_harris():
 
 
 def test_pure_rolling_kinematics_of_a_deep_groove_bearing():
-    # 6208 at 500 rad/s, light load: cage 198.0 rad/s, ball spin 952.38 rad/s (PHYSICS.md sec. 8)
+    # 6208 at 500 rad/s, light load: cage 198.0 rad/s, ball spin 952.38 rad/s (docs/theory/reference_cases.md)
     s = solve_quasistatic("6208", 100.0, omega=500.0, ring_growth=False, stiffness=False)
     assert s.balls["orbital_speed"][0] == pytest.approx(198.0, rel=2e-3)
     assert s.balls["ball_speed_absolute"][0] == pytest.approx(952.38, rel=2e-3)

@@ -1,4 +1,4 @@
-"""Numba DEM reference engine against the analytic solutions of PHYSICS.md sec. 8.
+"""Numba DEM reference engine against the analytic solutions of docs/theory/reference_cases.md.
 
 Short runs only (a few thousand steps each); long runs live in validation/.
 """
@@ -28,7 +28,7 @@ def run(bearing="6208", **kw):
 @pytest.mark.parametrize("fr, pd", [(3000.0, -12.6e-6), (3000.0, 0.0), (3000.0, 12.6e-6),
                                     (1000.0, 0.0), (2000.0, 0.0)])
 def test_quasi_static_loads_match_the_discrete_analytic_solution(fr, pd):
-    # DEM papers' Appendix A (PHYSICS.md sec. 8): omega = 1 rad/s; Q(psi) and delta(psi)
+    # DEM papers' Appendix A (docs/theory/reference_cases.md): omega = 1 rad/s; Q(psi) and delta(psi)
     # within 2 % of the discrete analytic solution at the loaded balls
     r = eb.simulate("6208", eb.Scenario.quasi_static(fr, Pd=pd, t_end=0.004, sample_dt=2e-4, **FAST))
     psi = r.azimuth()[-1]
@@ -48,7 +48,7 @@ def steady500():
 
 
 def test_kinematics_at_500_rad_s(steady500):
-    # PHYSICS.md sec. 8: ball spin 952.38 rad/s, cage 198.0 rad/s within 0.5 %
+    # docs/theory/reference_cases.md: ball spin 952.38 rad/s, cage 198.0 rad/s within 0.5 %
     s = steady500.summary()
     assert s["ball_spin"] == pytest.approx(952.38, rel=5e-3)
     assert s["cage_speed"] == pytest.approx(198.0, rel=5e-3)
@@ -82,7 +82,7 @@ def test_defect_frequencies_from_ball_passage(steady500):
 
 
 def test_lubrication_at_500_rad_s(steady500):
-    # PHYSICS.md sec. 8: outer contacts mixed, Lambda_out between about 2.15 and 3
+    # docs/theory/reference_cases.md: outer contacts mixed, Lambda_out between about 2.15 and 3
     # (2.12 at the static psi = 0 load), h_min lowest near psi = 0,
     # inner contacts unloaded outside the loaded zone
     r = steady500
@@ -103,7 +103,7 @@ def test_lubrication_at_500_rad_s(steady500):
 
 
 def test_centrifugal_load_at_1700_rad_s():
-    # PHYSICS.md sec. 8: centrifugal load raises the outer Q_max above the static
+    # docs/theory/reference_cases.md: centrifugal load raises the outer Q_max above the static
     # 1462 N while the inner stays near it; the difference is m r_p omega_c^2
     r = run(Fr=3000.0, omega=1700.0, t_end=0.012, sample_dt=2e-5)
     s = r.summary()

@@ -20,7 +20,7 @@ def _stresses(u_fun, r, nu, e):
 
 
 def test_thin_ring_limit():
-    # PHYSICS.md sec. 9 / Timoshenko & Goodier sec. 32: a thin rotating ring grows by rho omega^2 r^3 / E
+    # docs/theory/quasistatic.md / Timoshenko & Goodier sec. 32: a thin rotating ring grows by rho omega^2 r^3 / E
     r, w = 67e-3, 2618.0
     thin = rg.thin_ring_displacement(r, w, STEEL["density"], STEEL["youngs_modulus"])
     disc = rg.rotating_disc_displacement(r, 0.9999 * r, r, w, *STEEL.values())

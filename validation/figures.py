@@ -1,4 +1,4 @@
-"""The papers' figures and tables, item by item (PHYSICS.md sec. 8), as evidence.
+"""The papers' figures and tables, item by item (docs/theory/reference_cases.md), as evidence.
 
 Every item writes PNG figures with a CSV of the data beside them into
 ``--out`` (default validation/out/figures) and its measured numbers into
@@ -304,7 +304,7 @@ def item6(out, workers):
         a = rec["arrays"]
         psi = a["psi"][-1]
         # compare each ball with the Stribeck law Q(psi) = Q_max [1 - (1 - cos psi)/(2 eps)]^1.5
-        # of the discrete quasi-static solution (PHYSICS.md sec. 8, 7208 eps law) at its own azimuth
+        # of the discrete quasi-static solution (docs/theory/reference_cases.md, 7208 eps law) at its own azimuth
         st = static_equilibrium(bearings[bval], 3000.0, 3000.0)
         law = stribeck_load(psi, st.q_max, st.eps)
         q = a["load_inner"][-1]

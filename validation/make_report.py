@@ -301,7 +301,7 @@ def section_peer():
 
 def section_figures():
     d = load("figures/figures.json")
-    lines = ["## The papers' figures (PHYSICS.md sec. 8)", "",
+    lines = ["## The papers' figures (docs/theory/reference_cases.md)", "",
              "Command: `python validation/figures.py` (figures and their CSV in `out/figures/`, shown below; "
              "sweeps through the sweep runner). Step 5 us, implicit tangential spring, unless said.", ""]
     if "item1" in d:
@@ -337,7 +337,7 @@ def section_figures():
                   "steady phase and not during start-up and slow-down (figure item2_srr_ball0.png).", ""]
         lines += figure("figures/item2_speeds_both_engines.png", "Shaft, mean ball spin and cage speed through the "
                         "protocol, reference core solid and Exudyn element dashed, with the kinematic ball spin "
-                        "952.38 rad/s of PHYSICS.md sec. 8.")
+                        "952.38 rad/s of docs/theory/reference_cases.md.")
         lines += figure("figures/item2_srr_ball0.png", "Slide-to-roll ratio of ball 0 at its inner and outer "
                         "contact (log scale): small in the steady phase, orders of magnitude larger in start-up and "
                         "slow-down.")
@@ -348,7 +348,7 @@ def section_figures():
         v = d["item3"]
         lines += ["### 3. Load sweep 750 ... 7500 N (six loads, 500 rad/s)", "",
                   f"- slope of ln Lambda_out(psi = 0) against ln Q_max: **{v['slope_lambda_vs_qmax']:.4f} +- "
-                  f"{v['se_slope_lambda']:.4f}** (standard error; PHYSICS.md: near -0.073)",
+                  f"{v['se_slope_lambda']:.4f}** (standard error; expected near -0.073, the W exponent of Hamrock-Dowson)",
                   f"- slope of ln F_r against ln Q_max: **{v['slope_fr_vs_qmax']:.4f} +- {v['se_slope_fr']:.4f}** "
                   "(near 1; the centrifugal force on the outer race pulls it above 1)",
                   f"- engine {v['engine']}, dt {v['dt'] * 1e6:g} us, total wall {v['wall_s']:.2f} s", ""]
@@ -380,7 +380,7 @@ def section_figures():
             lines.append(f"| {f} / {r['engine']} | {r['slope_lambda_outer']:.4f} +- {r['se_outer']:.4f} | "
                          f"{r['slope_lambda_inner']:.4f} +- {r['se_inner']:.4f} | {r['lambda_in_below_out']} | "
                          f"{r['wall_s']:.2f} |")
-        lines += ["", "PHYSICS.md expects the U exponent of the film model: 0.68 for Hamrock-Dowson (the source "
+        lines += ["", "Expected: the U exponent of the film model, 0.68 for Hamrock-Dowson (the source "
                   "fits 0.6797) and 0.711 k^-0.023 for the Masjedi-Khonsari reading, which is 0.679 at the outer "
                   "contact's k = 7.25; the source reports 0.7105 for MK, which our reading of the garbled formula "
                   "does not reproduce.", "",

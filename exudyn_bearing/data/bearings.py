@@ -5,7 +5,7 @@ validated on construction: an impossible value raises :class:`InputError`
 whose message starts with the name of the offending parameter.
 
 Catalogue entries (``catalog["6208"]`` ...) are read from ``catalog.json``
-beside this file; each carries its ``source``. See PHYSICS.md sec. 2.
+beside this file; each carries its ``source``. See docs/theory/geometry.md.
 
 Groove construction
 -------------------
@@ -21,9 +21,9 @@ diametral clearance (measured along the contact line)::
     p_o = (r_p, 0) - (R_co - R_b - P_d/4) n        outer groove centre
     p_i = (r_p, 0) + (R_ci - R_b - P_d/4) n        inner groove centre
 
-For ``alpha_0 = 0`` this gives the deep-groove values of PHYSICS.md sec. 2,
+For ``alpha_0 = 0`` this gives the deep-groove values of docs/theory/geometry.md,
 ``rho_i = R_i + R_ci`` and ``rho_o = R_o - R_co``. For ``alpha_0 > 0``
-(angular contact, PHYSICS.md's 7208 construction) ``R_i`` and ``R_o`` are
+(angular contact, the 7208 construction of docs/theory/geometry.md#groove-construction) ``R_i`` and ``R_o`` are
 the race radii of the equivalent radial construction. The inner groove
 centre lies at ``+z`` and the outer one at ``-z``, so the bearing carries an
 axial force on the inner ring along ``+z`` (inner ring displaced along ``+z``).
@@ -53,7 +53,7 @@ MAX_PRELOAD_INTERFERENCE = 0.01
 
 @dataclass(frozen=True)
 class BallBearing:
-    """Geometry of a ball bearing [PHYSICS.md sec. 2].
+    """Geometry of a ball bearing [docs/theory/geometry.md].
 
     Parameters
     ----------

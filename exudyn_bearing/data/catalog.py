@@ -1,7 +1,7 @@
 """The catalogue: materials, lubricants, traction models and bearings of
 ``catalog.json``, and bearing and lubricant look-up by name, JSON file or dict.
 
-Each entry of ``catalog.json`` carries its ``source``. See PHYSICS.md sec. 2.
+Each entry of ``catalog.json`` carries its ``source``. See docs/theory/geometry.md.
 
 A bearing is given in one of two forms (lengths in metres,
 ``free_contact_angle`` in degrees, ``material`` a material name or a dict of
@@ -242,5 +242,5 @@ def load_lubricant(spec=None, name: str | None = None) -> Lubricant:
 
 
 def default_lubricant() -> Lubricant:
-    """The DEM papers' lubricant (PHYSICS.md sec. 5)."""
+    """The DEM papers' lubricant (docs/theory/lubrication.md#film-thickness)."""
     return lubricants["guessasma2018"]

@@ -11,7 +11,7 @@ __all__ = ["Lubricant"]
 
 @dataclass(frozen=True)
 class Lubricant:
-    """Lubricant, surface roughness and the regime switch [PHYSICS.md sec. 4-5].
+    """Lubricant, surface roughness and the regime switch [docs/theory/lubrication.md].
 
     Parameters
     ----------
@@ -23,7 +23,7 @@ class Lubricant:
         RMS roughness sigma_1, sigma_2 [m]. Defaults 3e-7 and 0.
     roughness_factor : float
         Factor c in Lambda = h_min / (c sqrt(sigma_1^2 + sigma_2^2)).
-        Default 1.25 (the DEM papers' definition, PHYSICS.md sec. 5).
+        Default 1.25 (the DEM papers' definition, docs/theory/lubrication.md#film-thickness).
     lambda_mixed, lambda_full_film : float
         Film-parameter breakpoints: boundary for Lambda <= lambda_mixed,
         full film for Lambda > lambda_full_film. Defaults 1 and 3.
@@ -42,7 +42,7 @@ class Lubricant:
     mu_boundary: float = 0.1
     mu_full_film: float = 0.01
     name: str = "guessasma2018"
-    source: str = "PHYSICS.md sec. 4-5"
+    source: str = "docs/theory/lubrication.md"
 
     def __post_init__(self):
         values = {}

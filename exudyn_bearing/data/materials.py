@@ -10,7 +10,7 @@ __all__ = ["Material"]
 
 @dataclass(frozen=True)
 class Material:
-    """Elastic solid [PHYSICS.md sec. 2].
+    """Elastic solid [docs/theory/geometry.md].
 
     Parameters
     ----------
@@ -21,7 +21,7 @@ class Material:
     density : float
         rho [kg/m^3]. Default 7850.
     hysteretic_damping : float
-        Hunt-Crossley coefficient alpha_e [s/m] of PHYSICS.md sec. 4.
+        Hunt-Crossley coefficient alpha_e [s/m] of docs/theory/lubrication.md#normal-damping.
         Default 0.08 (steel).
     thermal_expansion : float
         Linear thermal expansion coefficient [1/K]. Default 12.5e-6, the
@@ -36,7 +36,7 @@ class Material:
     hysteretic_damping: float = 0.08
     thermal_expansion: float = 12.5e-6
     name: str = "steel"
-    source: str = "PHYSICS.md sec. 2"
+    source: str = "docs/theory/geometry.md"
 
     def __post_init__(self):
         values = {"youngs_modulus": check_positive("youngs_modulus", self.youngs_modulus),

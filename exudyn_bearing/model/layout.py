@@ -161,7 +161,7 @@ N_PARAMS = len(PARAMETERS)
 #: history), regularised Coulomb on the slip velocity (history-free), none.
 FRIC_HISTORY, FRIC_REGULARIZED, FRIC_NONE = 0, 1, 2
 #: Ball / raceway contact laws: elliptic Hertz with the Lambda-switched
-#: lubrication of PHYSICS.md (default), or the power law k delta^n + d
+#: lubrication of docs/theory/lubrication.md (default), or the power law k delta^n + d
 #: d(delta)/dt with constant mu of Exudyn's ObjectContactSphereTorus (for
 #: the peer check against exudyn.machines.CreateBallBearing).
 LAW_HERTZ, LAW_POWER = 0, 1

@@ -37,7 +37,7 @@ INTEGRATORS = ("verlet", "rk4")
 
 @dataclass(frozen=True)
 class Scenario:
-    """What happens to the bearing (PHYSICS.md sec. 7).
+    """What happens to the bearing (docs/theory/dynamics.md).
 
     Parameters
     ----------
@@ -63,7 +63,7 @@ class Scenario:
     mu_dry : float
         Friction coefficient when ``lubrication`` is False.
     friction : {"history", "regularized", "none"}
-        Tangential force model (PHYSICS.md sec. 6).
+        Tangential force model (docs/theory/tangential.md).
     regularizing_speed : float
         Slip speed [m/s] below which regularised friction is linear.
     tangential_stiffness_ratio : float
@@ -92,8 +92,8 @@ class Scenario:
     traction_level : {"point", "ellipse"}
         Tangential force of the ball / raceway contacts: ``"point"`` (the
         point-contact law chosen by ``friction``: Cundall-Strack spring or
-        regularised Coulomb with mu(Lambda) or ``mu_dry``, PHYSICS of the DEM
-        papers) or ``"ellipse"``: the slip field over the Hertz ellipse
+        regularised Coulomb with mu(Lambda) or ``mu_dry``, the DEM
+        papers' laws) or ``"ellipse"``: the slip field over the Hertz ellipse
         (rolling, spin about the normal, curvature-induced slip) integrated
         over ``n_strips`` strips with the traction model ``traction``,
         giving the tangential force and the spin moment about the contact
@@ -214,7 +214,7 @@ class Scenario:
         if self.dt > 1e-4:
             raise InputError(f"dt: {self.dt} s is far above any stable step of a Hertz contact")
         if not 2.0 / 3.0 - 1e-12 <= self.tangential_stiffness_ratio <= 1.0:
-            raise InputError("tangential_stiffness_ratio: must lie in [2/3, 1] (PHYSICS.md sec. 6), "
+            raise InputError("tangential_stiffness_ratio: must lie in [2/3, 1] (docs/theory/tangential.md), "
                              f"got {self.tangential_stiffness_ratio}")
         if self.friction not in FRICTION_MODELS:
             raise InputError(f"friction: unknown model {self.friction!r} (valid: {', '.join(FRICTION_MODELS)})")

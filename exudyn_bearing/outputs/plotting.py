@@ -218,7 +218,7 @@ PHASE_NAMES = ("start-up", "steady", "slow-down", "rest")
 
 def plot_speeds(run, png, ball=0) -> Path:
     """Shaft and ball angular speed against time with the kinematic ball-spin
-    line (PHYSICS.md sec. 8, 952.38 rad/s at 500 rad/s), and the cage speed."""
+    line (docs/theory/reference_cases.md, 952.38 rad/s at 500 rad/s), and the cage speed."""
     from ..physics import kinematics
 
     plt = _pyplot()

@@ -208,7 +208,7 @@ class Results:
         return out
 
     def summary(self, fraction: float | None = None, t_window=None) -> dict:
-        """Scalar results over a window of the run (PHYSICS.md sec. 8 keys).
+        """Scalar results over a window of the run (docs/theory/reference_cases.md keys).
 
         The window (:meth:`summary_window`, described under ``window``): the
         second half of the steady phase of a protocol, else the last quarter

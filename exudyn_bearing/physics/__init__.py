@@ -1,4 +1,4 @@
-"""Physics relations of PHYSICS.md: one pure function per relation, SI units.
+"""Physics relations of docs/theory/: one pure function per relation, SI units.
 
 Modules: :mod:`hertz` (elliptic and sphere contact), :mod:`geometry`
 (ball in a torus groove), :mod:`ehl` (film thickness, film parameter),

@@ -1,6 +1,6 @@
 """Normal damping of a lubricated contact, switched by the film parameter.
 
-PHYSICS.md sec. 4. F_n = K delta^(3/2) + C_n(Lambda) v_n, with
+docs/theory/lubrication.md#normal-damping. F_n = K delta^(3/2) + C_n(Lambda) v_n, with
 
 * hysteretic (asperity) damping C_hyst = (3/2) alpha_e K delta^(3/2)
   (Hunt & Crossley [1]_; alpha_e = 0.08 s/m for steel);
@@ -44,7 +44,7 @@ REGIME_NAMES = ("boundary", "mixed", "full_film")
 @vectorize(["int64(float64, float64, float64)"], cache=True)
 def lubrication_regime(film_parameter, lambda_mixed, lambda_full_film):
     """Regime code of a contact: 0 boundary (Lambda <= lambda_mixed),
-    1 mixed (<= lambda_full_film), 2 full film (PHYSICS.md sec. 4).
+    1 mixed (<= lambda_full_film), 2 full film (docs/theory/lubrication.md#normal-damping).
 
     Examples
     --------
@@ -83,7 +83,7 @@ _damping_fluid = kernel(damping_fluid)
 
 @vectorize(["float64(float64, float64, float64, float64, float64)"], cache=True)
 def damping_coefficient(film_parameter, c_hyst, c_fluid, lambda_mixed, lambda_full_film):
-    """Normal damping C_n(Lambda) [N s/m] of PHYSICS.md sec. 4 (table).
+    """Normal damping C_n(Lambda) [N s/m] of docs/theory/lubrication.md#normal-damping (table).
 
     Examples
     --------
@@ -99,7 +99,7 @@ def damping_coefficient(film_parameter, c_hyst, c_fluid, lambda_mixed, lambda_fu
 
 
 def damping_critical(effective_mass, tangent_stiffness):
-    """Critical damping C = 2 sqrt(m_eff k_t) [N s/m] (PHYSICS.md sec. 4,
+    """Critical damping C = 2 sqrt(m_eff k_t) [N s/m] (docs/theory/lubrication.md#normal-damping,
     ball / cage-ball and cage-ball / guide contacts); k_t = dQ/d delta."""
     return 2.0 * np.sqrt(effective_mass * np.maximum(tangent_stiffness, 0.0))
 

@@ -1,6 +1,6 @@
 """Elastohydrodynamic film thickness and the film parameter Lambda.
 
-PHYSICS.md sec. 5. Dimensionless groups with the rolling (entrainment)
+docs/theory/lubrication.md#film-thickness. Dimensionless groups with the rolling (entrainment)
 speed u_r [m/s], the effective radius in the rolling direction R_x [m], the
 effective modulus E' [Pa], viscosity eta [Pa s], pressure-viscosity
 coefficient xi [m^2/N] and contact load Q [N]:
@@ -59,7 +59,7 @@ def film_thickness_hamrock_dowson(u_r, load, r_x, kappa, e_prime, eta, xi):
     """Minimum film thickness h_min [m], Hamrock & Dowson [1]_.
 
     h_min = 3.63 U^0.68 G^0.49 W^-0.073 (1 - exp(-0.68 k)) R_x
-    (PHYSICS.md sec. 5, the default film model).
+    (docs/theory/lubrication.md#film-thickness, the default film model).
 
     Parameters
     ----------
@@ -85,7 +85,7 @@ def film_thickness_hamrock_dowson(u_r, load, r_x, kappa, e_prime, eta, xi):
 
     Examples
     --------
-    6208 outer contact at 500 rad/s, Q = 1457 N (PHYSICS.md sec. 8 expects
+    6208 outer contact at 500 rad/s, Q = 1457 N (docs/theory/reference_cases.md expects
     Lambda_out about 2.15, i.e. h_min about 0.8 um):
 
     >>> h = film_thickness_hamrock_dowson(7.2475, 1457.0, 7.61e-3, 7.29, 230.77e9, 0.04, 2.3e-8)
@@ -188,7 +188,7 @@ def film_thickness(u_r, load, r_x, kappa, e_prime, eta, xi, film="hd"):
 def film_parameter(h_min, composite_roughness):
     """Film parameter Lambda = h_min / (c sqrt(sigma_1^2 + sigma_2^2)) [-].
 
-    PHYSICS.md sec. 5 [3]_: with c = 1.25, sigma_race = 3e-7 m and smooth
+    docs/theory/lubrication.md#film-thickness [3]_: with c = 1.25, sigma_race = 3e-7 m and smooth
     balls the denominator is 3.75e-7 m (``Lubricant.composite_roughness``).
 
     Examples

@@ -1,6 +1,6 @@
 """Friction coefficient of a lubricated contact and regularised Coulomb friction.
 
-PHYSICS.md sec. 4 and 6. mu(Lambda) is the Stribeck-curve fit of the DEM
+docs/theory/lubrication.md#normal-damping, docs/theory/lubrication.md#film-thickness, docs/theory/tangential.md. mu(Lambda) is the Stribeck-curve fit of the DEM
 papers [1]_: mu_boundary (0.1) for Lambda <= lambda_mixed (1), falling
 linearly to mu_full_film (0.01) at lambda_full_film (3), constant beyond.
 
@@ -22,7 +22,7 @@ __all__ = ["friction_coefficient", "regularized_coulomb", "sphere_tangential_mas
 @vectorize(["float64(float64, float64, float64, float64, float64)"], cache=True)
 def friction_coefficient(film_parameter, mu_boundary, mu_full_film,
                          lambda_mixed, lambda_full_film):
-    """mu(Lambda) [-], linear between the breakpoints (PHYSICS.md sec. 4).
+    """mu(Lambda) [-], linear between the breakpoints (docs/theory/lubrication.md#normal-damping).
 
     Examples
     --------
@@ -41,7 +41,7 @@ def regularized_coulomb(slip_speed, normal_force, mu, regularizing_speed):
     """History-free friction force magnitude [N]: mu F_n min(|v|/v_reg, 1).
 
     A linear ramp below the regularising speed v_reg [m/s] (as Exudyn's
-    ``frictionProportionalZone``); PHYSICS.md sec. 6's cheaper alternative
+    ``frictionProportionalZone``); docs/theory/tangential.md's cheaper alternative
     to the Cundall-Strack spring. The force opposes the slip velocity.
     """
     return mu * np.maximum(normal_force, 0.0) * np.minimum(np.abs(slip_speed) / regularizing_speed, 1.0)
@@ -54,7 +54,7 @@ def sphere_tangential_mass(mass):
     """Effective mass [kg] of a free solid sphere for a tangential force at
     its surface: 1/m_t = 1/m + R^2/I with I = 2/5 m R^2, so m_t = m / 3.5
     (rigid-body dynamics of the sphere; the inertia the Cundall-Strack spring
-    of PHYSICS.md sec. 6 acts on)."""
+    of docs/theory/tangential.md acts on)."""
     return mass / 3.5
 
 
@@ -64,7 +64,7 @@ _sphere_tangential_mass = kernel(sphere_tangential_mass)
 def implicit_tangential_stiffness(stiffness, dt, tangential_mass):
     """Step-consistent tangential spring K_t / (1 + K_t dt^2 / m_t) [N/m].
 
-    The Cundall-Strack spring (PHYSICS.md sec. 6) evaluated with the spring
+    The Cundall-Strack spring (docs/theory/tangential.md) evaluated with the spring
     displacement of the end of the step (backward Euler on the contact-point
     mass m_t): bounded by m_t / dt^2, so the spring sets no step limit, and
     equal to K_t as dt -> 0 (``Scenario(tangential="implicit")``).

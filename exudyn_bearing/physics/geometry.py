@@ -1,6 +1,6 @@
 """Ball centre in a torus groove: overlap, normal, contact angle, radii.
 
-PHYSICS.md sec. 2-3. A raceway is a torus about the ring's z axis whose
+docs/theory/geometry.md, docs/theory/hertz.md. A raceway is a torus about the ring's z axis whose
 tube (radius R_c) is the groove; its tube-centre circle has radius ``rho``
 and lies at axial position ``z_g``. With ``p`` the point of that circle
 nearest to the ball centre ``c``, the overlap is
@@ -13,7 +13,7 @@ plane, signed so that both contacts of a ball loaded along the designed
 contact line have the same positive alpha:
 alpha = atan2(s n_z, s n_r) with s = +1 on the outer race, -1 on the inner.
 
-Principal radii (PHYSICS.md sec. 3, Harris & Kotzalas ch. 2): raceway in the
+Principal radii (docs/theory/hertz.md, Harris & Kotzalas ch. 2): raceway in the
 rolling direction R_2x = r_c / cos(alpha), r_c the distance of the contact
 point from the axis (convex on the inner race, concave on the outer), across
 the rolling direction the groove R_c (concave); effective radii
@@ -45,7 +45,7 @@ _raceway_radii_cos = kernel(_radii_from_cos)
 
 
 def raceway_radii(r_ball, r_groove, r_contact, contact_angle, inner):
-    """Effective radii R_x, R_y [m] of a ball on a raceway (PHYSICS.md sec. 3).
+    """Effective radii R_x, R_y [m] of a ball on a raceway (docs/theory/hertz.md).
 
     R_2x = r_c / cos(alpha); inner (convex): R_x = R_b R_2x/(R_2x + R_b);
     outer (concave): R_x = R_b R_2x/(R_2x - R_b); R_y = R_b R_c/(R_c - R_b).
@@ -65,7 +65,7 @@ def raceway_radii(r_ball, r_groove, r_contact, contact_angle, inner):
 
     Examples
     --------
-    6208 inner contact at alpha = 0 (PHYSICS.md: R_y/R_x = 32.8):
+    6208 inner contact at alpha = 0 (docs/theory/hertz.md: R_y/R_x = 32.8):
 
     >>> rx, ry = raceway_radii(6.3e-3, 6.552e-3, 24e-3, 0.0, True)
     >>> round(float(ry / rx), 1)

@@ -1,6 +1,6 @@
 """Elliptic Hertz point contact (ball / raceway) and sphere / sphere contact.
 
-PHYSICS.md sec. 3. Three interchangeable fidelity levels for the ellipticity
+docs/theory/hertz.md. Three interchangeable fidelity levels for the ellipticity
 k = a/b and the complete elliptic integrals F (first kind) and E (second kind):
 
 * ``"exact"`` (level 1): k solved from the exact Hertz relation with complete
@@ -26,7 +26,7 @@ its F fit gives 1.528 instead of pi/2.)
 Scalar kernels (``_name``) are ``numba.njit(cache=True)`` and shared by both
 simulation engines; the public functions broadcast over numpy arrays.
 
-Nomenclature (PHYSICS.md -> argument): R_x -> ``r_x``, R_y -> ``r_y``,
+Nomenclature (docs/theory/hertz.md -> argument): R_x -> ``r_x``, R_y -> ``r_y``,
 E' -> ``e_prime``, Q -> ``load``, delta -> ``overlap``, k -> ``kappa``,
 F -> ``ell_f``, E -> ``ell_e``.
 
@@ -86,7 +86,7 @@ def method_code(method) -> int:
 def reduced_modulus(e1, nu1, e2=None, nu2=None):
     """Effective modulus E' = 2 / ((1 - nu1^2)/E1 + (1 - nu2^2)/E2) [Pa].
 
-    Hamrock & Dowson's definition [1]_ (PHYSICS.md sec. 3); for two equal
+    Hamrock & Dowson's definition [1]_ (docs/theory/hertz.md); for two equal
     materials E' = E / (1 - nu^2), which is twice Johnson's E* [4]_.
     ``e2, nu2`` default to ``e1, nu1``.
 
@@ -279,7 +279,7 @@ def _curvature_sum_radius(r_x, r_y):
 
 @kernel
 def _stiffness(kappa, ell_f, ell_e, r, e_prime):
-    """K = pi k E' sqrt(2 E R / (9 F^3)) [N/m^1.5] (PHYSICS.md sec. 3)."""
+    """K = pi k E' sqrt(2 E R / (9 F^3)) [N/m^1.5] (docs/theory/hertz.md)."""
     return math.pi * kappa * e_prime * math.sqrt(2.0 * ell_e * r / (9.0 * ell_f ** 3))
 
 
@@ -340,7 +340,7 @@ def ellipticity(r_x, r_y, method="exact"):
     r_x, r_y : float or ndarray
         Effective radii in and across the rolling direction [m].
     method : {"exact", "hamrock_brewe", "simplified"}
-        Fidelity level (PHYSICS.md sec. 3) [1]_ [3]_.
+        Fidelity level (docs/theory/hertz.md) [1]_ [3]_.
 
     Returns
     -------
@@ -349,7 +349,7 @@ def ellipticity(r_x, r_y, method="exact"):
 
     Examples
     --------
-    6208 inner contact, R_y/R_x = 32.8 (PHYSICS.md sec. 3: k = 9.37, F = 3.63):
+    6208 inner contact, R_y/R_x = 32.8 (docs/theory/hertz.md: k = 9.37, F = 3.63):
 
     >>> k, f, e = ellipticity(4.990e-3, 163.8e-3)
     >>> round(float(k), 2), round(float(f), 2), round(float(e), 3)
@@ -364,7 +364,7 @@ def ellipticity(r_x, r_y, method="exact"):
 
 
 def curvature_sum_radius(r_x, r_y):
-    """R = R_x R_y / (R_x + R_y) [m] (PHYSICS.md sec. 3)."""
+    """R = R_x R_y / (R_x + R_y) [m] (docs/theory/hertz.md)."""
     return np.asarray(r_x) * r_y / (np.asarray(r_x) + r_y)
 
 
@@ -372,7 +372,7 @@ def hertz_stiffness(r_x, r_y, e_prime, method="exact"):
     """Hertz load-deflection constant K of Q = K delta^(3/2) [N/m^1.5].
 
     K = pi k E' sqrt(2 E R / (9 F^3)) (Hamrock & Brewe [1]_, Harris [2]_;
-    PHYSICS.md sec. 3 with the corrected constant).
+    docs/theory/hertz.md with the corrected constant).
 
     Parameters
     ----------
@@ -395,7 +395,7 @@ def contact_ellipse(r_x, r_y, e_prime, load, method="exact"):
     """Semi-axes a (across rolling), b (along rolling) [m] and p_max [Pa].
 
     a = (6 k^2 E Q R/(pi E'))^(1/3), b = (6 E Q R/(pi k E'))^(1/3),
-    p_max = 3 Q/(2 pi a b) [1]_ (PHYSICS.md sec. 3).
+    p_max = 3 Q/(2 pi a b) [1]_ (docs/theory/hertz.md).
     """
     c = hertz_contact(r_x, r_y, e_prime, load=load, method=method)
     return c.a, c.b, c.p_max
@@ -405,8 +405,8 @@ def hertz_contact(r_x, r_y, e_prime, load=None, overlap=None, method="exact") ->
     """Elliptic Hertz contact for a given load or a given overlap.
 
     Exactly one of ``load`` [N] and ``overlap`` [m] is given; non-positive
-    values mean no contact (zero load, zero ellipse). Formulas of PHYSICS.md
-    sec. 3 [1]_ [2]_; ``method`` selects the fidelity level.
+    values mean no contact (zero load, zero ellipse). Formulas of
+    docs/theory/hertz.md [1]_ [2]_; ``method`` selects the fidelity level.
 
     Returns
     -------
@@ -436,7 +436,7 @@ def sphere_sphere_stiffness(r1, r2, e_prime):
     """Hertz constant of two spheres, Q = K delta^(3/2) [N/m^1.5].
 
     K = (4/3) E* sqrt(R_eq), E* = E'/2, R_eq = r1 r2 / (r1 + r2)
-    (Johnson [4]_ eq. 4.22; PHYSICS.md sec. 3). For equal steels this is
+    (Johnson [4]_ eq. 4.22; docs/theory/hertz.md). For equal steels this is
     4 G sqrt(R_eq) / (3 (1 - nu)). Scalars or numpy arrays; jitted as
     ``_sphere_sphere_stiffness`` for the engines.
     """
@@ -451,7 +451,7 @@ def tangent_stiffness(stiffness, load):
     the load Q [N/m].
 
     From Q = K delta^(3/2): dQ/d delta = 1.5 K delta^(1/2) = 1.5 K^(2/3) Q^(1/3)
-    (Harris & Kotzalas [2]_, load-deflection relation; PHYSICS.md sec. 3).
+    (Harris & Kotzalas [2]_, load-deflection relation; docs/theory/hertz.md).
     Used for the stable-step estimate. Scalars or numpy arrays; loads below
     zero count as zero.
     """

@@ -1,6 +1,6 @@
 """Rolling kinematics of a ball bearing (pure rolling, race control).
 
-PHYSICS.md sec. 8 and Harris & Kotzalas [1]_ ch. 8, for any contact angle
+docs/theory/reference_cases.md and Harris & Kotzalas [1]_ ch. 8, for any contact angle
 alpha and either ring rotating. With gamma = R_b cos(alpha) / r_p (that is
 D cos(alpha)/d_m):
 
@@ -11,7 +11,7 @@ D cos(alpha)/d_m):
 * absolute ball angular speed, rolling axis perpendicular to the contact
   line: |omega_R a + omega_c e_z|, a = (-sin alpha, cos alpha) in (r, z);
   for alpha = 0 and a fixed outer ring it equals omega_i R_i / (2 R_b)
-  (PHYSICS.md sec. 8: 952.38 rad/s at 500 rad/s for the 6208).
+  (docs/theory/reference_cases.md: 952.38 rad/s at 500 rad/s for the 6208).
 * defect frequencies [Hz], f = omega / (2 pi):
   FTF = |f_c|, BPFO = Z |f_c - f_o|, BPFI = Z |f_i - f_c|,
   BSF = (r_p / (2 R_b)) (1 - gamma^2) |f_i - f_o| (once per ball revolution).
@@ -50,7 +50,7 @@ def cage_speed(omega_inner, omega_outer, ball_radius, pitch_radius, contact_angl
 
     Examples
     --------
-    6208 at 500 rad/s (PHYSICS.md sec. 8: 198.0 rad/s):
+    6208 at 500 rad/s (docs/theory/reference_cases.md: 198.0 rad/s):
 
     >>> round(float(cage_speed(500.0, 0.0, 6.3e-3, 30.3e-3)), 1)
     198.0
@@ -147,7 +147,7 @@ def centrifugal_force(ball_mass, pitch_radius, cage_speed):
 
     It presses the ball on the outer race, so at speed the outer contact
     carries about F_c more than the inner (Harris & Kotzalas [1]_, high-speed
-    operation; PHYSICS.md sec. 8, the 1700 rad/s case).
+    operation; docs/theory/reference_cases.md, the 1700 rad/s case).
 
     Examples
     --------

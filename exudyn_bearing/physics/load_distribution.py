@@ -1,6 +1,6 @@
 """Quasi-static load distribution among the balls (Stribeck / Harris).
 
-PHYSICS.md sec. 8. Two levels:
+docs/theory/reference_cases.md. Two levels:
 
 * The continuous Stribeck-Sjovall integrals: with the loaded-zone parameter
   eps, Q(psi) = Q_max [1 - (1 - cos psi)/(2 eps)]^(3/2) and
@@ -84,7 +84,7 @@ def load_zone_parameter(delta_r, diametral_clearance=0.0, delta_a=0.0, contact_a
     eps = (1/2) (1 + (delta_a sin alpha - P_d/2) / (delta_r cos alpha)), which
     gives (1 - P_d/(2 delta_r))/2 for a radial bearing and
     (1 + delta_a tan(alpha)/delta_r)/2 for angular contact without clearance
-    (PHYSICS.md sec. 8, Harris [1]_ eq. 7.25 and 7.43).
+    (docs/theory/reference_cases.md, Harris [1]_ eq. 7.25 and 7.43).
     """
     return 0.5 * (1.0 + (delta_a * np.sin(contact_angle) - 0.5 * diametral_clearance)
                   / (delta_r * np.cos(contact_angle)))
@@ -210,7 +210,7 @@ def stribeck_solution(n_balls, radial_load, axial_load=0.0, contact_angle=0.0,
     """Q_max and eps of the continuous Stribeck/Harris distribution.
 
     Radial bearing (alpha = 0, F_a = 0): give ``eps`` (0.5 for P_d = 0);
-    Q_max = F_r / (Z J_r(eps)) (PHYSICS.md sec. 8: 1457 N for the 6208 at
+    Q_max = F_r / (Z J_r(eps)) (docs/theory/reference_cases.md: 1457 N for the 6208 at
     F_r = 3000 N). Combined load at fixed alpha: eps solves
     F_r tan(alpha) / F_a = J_r(eps) / J_a(eps), then
     Q_max = F_a / (Z J_a sin alpha) (Harris [1]_ eq. 7.41-7.42).
@@ -341,7 +341,7 @@ def static_equilibrium(bearing: BallBearing, radial_load: float, axial_load: flo
 
     Examples
     --------
-    6208 at F_r = 3000 N, P_d = 0 (PHYSICS.md sec. 8: about 1462 N for nine
+    6208 at F_r = 3000 N, P_d = 0 (docs/theory/reference_cases.md: about 1462 N for nine
     discrete balls, 1457 N from the continuous integral):
 
     >>> from exudyn_bearing import catalog

@@ -107,7 +107,7 @@ def lubrication_map(solution: StaticSolution, omega_inner: float, omega_outer: f
     Pure-rolling speeds of :func:`~exudyn_bearing.physics.kinematics.rolling_speeds`
     at each ball's contact angle, the ball loads of a quasi-static solution,
     Hertz at the solution's fidelity level, film model ``film`` ('hd' or 'mk').
-    No time integration (PHYSICS.md sec. 4-5).
+    No time integration (docs/theory/lubrication.md).
 
     Returns
     -------

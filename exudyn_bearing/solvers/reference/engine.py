@@ -1,8 +1,8 @@
 """Driver of the numba DEM reference engine: scene set-up, chunked
 integration with progress, the sampled record.
 
-The engine simulates a complete ball bearing ball by ball (PHYSICS.md
-sec. 2-7): Z balls and Z cage balls with 6 DOF, the inner ring translating
+The engine simulates a complete ball bearing ball by ball
+(docs/theory/dynamics.md): Z balls and Z cage balls with 6 DOF, the inner ring translating
 freely under the applied loads and spun at the prescribed omega(t), the outer
 ring fixed. It does not import exudyn.
 """
