@@ -10,7 +10,7 @@ import re
 from ..data import InputError, catalog, load_bearing, load_lubricant, lubricants
 
 __all__ = ["Parser", "HelpFormatter", "finite_float", "print_table", "BEARING_HELP", "add_bearing_argument",
-           "bearing_from_args", "add_speed_arguments", "omega_from_args", "add_lubricant_argument",
+           "bearing_from_args", "bearing_spec_from_args", "add_speed_arguments", "omega_from_args", "add_lubricant_argument",
            "lubricant_from_args", "RPM_TO_RAD_S"]
 
 #: Help text of a bearing argument.
@@ -77,12 +77,17 @@ def add_bearing_argument(p, default: str | None = None):
     p.set_defaults(bearing_default=default)
 
 
-def bearing_from_args(args):
-    """The BallBearing the arguments name (positional, --bearing or the default)."""
+def bearing_spec_from_args(args) -> str:
+    """The bearing the arguments name (positional, --bearing or the default), as given."""
     given = [v for v in (args.bearing, getattr(args, "bearing_option", None)) if v is not None]
     if len(given) == 2 and given[0] != given[1]:
         raise InputError(f"bearing: given twice ({given[0]!r} and --bearing {given[1]!r})")
-    return load_bearing(given[0] if given else args.bearing_default)
+    return given[0] if given else args.bearing_default
+
+
+def bearing_from_args(args):
+    """The BallBearing the arguments name (positional, --bearing or the default)."""
+    return load_bearing(bearing_spec_from_args(args))
 
 
 def add_speed_arguments(p, default: float | None = None, what: str = ""):

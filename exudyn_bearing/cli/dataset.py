@@ -6,13 +6,13 @@ from collections import Counter
 
 from ..datasets import FAULTS, build_dataset
 from ..outputs.jsonio import to_jsonable
-from .common import BEARING_HELP, finite_float, print_table
+from .common import add_bearing_argument, bearing_spec_from_args, finite_float, print_table
 
 
 def add_parser(sub):
     p = sub.add_parser("dataset", help="labelled condition-monitoring signals (NPZ per case, index.csv), resumable")
     p.add_argument("out", metavar="OUT", help="output folder (an interrupted run resumes there)")
-    p.add_argument("--bearing", default="6205", help=BEARING_HELP)
+    add_bearing_argument(p, default="6205")
     p.add_argument("--rpm", type=finite_float, nargs="+", default=[1797.0], help="inner-ring speeds [1/min]")
     p.add_argument("--load", type=finite_float, nargs="+", default=[1000.0], help="radial loads [N]")
     p.add_argument("--size", type=finite_float, nargs=3, action="append", metavar=("LENGTH", "WIDTH", "DEPTH"),
@@ -28,7 +28,7 @@ def add_parser(sub):
 
 
 def run(args):
-    rows = build_dataset(args.out, bearing=args.bearing, speeds_rpm=tuple(args.rpm), loads=tuple(args.load),
+    rows = build_dataset(args.out, bearing=bearing_spec_from_args(args), speeds_rpm=tuple(args.rpm), loads=tuple(args.load),
                          sizes=tuple(tuple(s) for s in (args.size or [(1e-3, 1.5e-3, 1e-4)])),
                          faults=tuple(args.faults), fs=args.fs, t_end=args.t_end,
                          steps_per_sample=args.steps_per_sample, workers=args.workers, progress=args.progress)

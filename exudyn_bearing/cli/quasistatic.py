@@ -6,20 +6,20 @@ import json
 import math
 from pathlib import Path
 
-from ..data import InputError, load_bearing, lubricants, traction_models
+from ..data import InputError, lubricants, traction_models
 from ..outputs.jsonio import to_jsonable
 from ..outputs.plotting_quasistatic import plot_loads_angles, plot_slip
 from ..physics.hertz import METHODS
 from ..solvers.quasistatic import solve_quasistatic
 from ..solvers.quasistatic.kinematics import CONTROLS
 from ..solvers.quasistatic.ring import DOF_NAMES
-from .common import BEARING_HELP, finite_float
+from .common import add_bearing_argument, bearing_from_args, finite_float
 
 
 def add_parser(sub):
     p = sub.add_parser("quasistatic", help="quasi-static equilibrium at speed: 5-DOF inner ring, ball kinematics "
                                            "(race control or minimum energy), slip, dissipation, stiffness")
-    p.add_argument("bearing", help=BEARING_HELP)
+    add_bearing_argument(p)
     p.add_argument("--Fr", type=finite_float, default=0.0, help="radial load [N] on the inner ring along +x")
     p.add_argument("--Fy", type=finite_float, default=0.0, help="radial load [N] along +y")
     p.add_argument("--Fa", type=finite_float, default=0.0, help="axial load [N] along +z")
@@ -63,7 +63,7 @@ def parse_fixed(items):
 
 
 def run(args):
-    b = load_bearing(args.bearing)
+    b = bearing_from_args(args)
     if args.Pd is not None:
         b = b.with_clearance(args.Pd)
     omega = args.omega if args.omega is not None else (args.rpm * math.pi / 30.0 if args.rpm is not None else 0.0)

@@ -18,13 +18,13 @@ import math
 
 import numpy as np
 
-from ..data import InputError, load_bearing, lubricants, traction_models
+from ..data import InputError, lubricants, traction_models
 from ..model.coefficients import AXES, DAMPING_UNITS, STIFFNESS_UNITS
 from ..outputs.jsonio import to_jsonable
 from ..outputs.plotting import save_figure
 from ..solvers.quasistatic import bearing_coefficients, solve_quasistatic
 from ..solvers.quasistatic.kinematics import CONTROLS
-from .common import BEARING_HELP, finite_float
+from .common import add_bearing_argument, bearing_from_args, finite_float
 
 RPM = 2.0 * math.pi / 60.0
 
@@ -32,7 +32,7 @@ RPM = 2.0 * math.pi / 60.0
 def add_parser(sub):
     p = sub.add_parser("stiffness", help="linearised 5x5 stiffness and damping of a bearing at an operating point "
                                          "(quasi-static solver), or a table over speeds")
-    p.add_argument("bearing", help=BEARING_HELP)
+    add_bearing_argument(p)
     p.add_argument("--Fr", type=finite_float, default=0.0, help="radial load [N] on the inner ring along +x")
     p.add_argument("--Fy", type=finite_float, default=0.0, help="radial load [N] along +y")
     p.add_argument("--Fa", type=finite_float, default=0.0, help="axial load [N] along +z")
@@ -105,7 +105,7 @@ def run(args):
         raise InputError(f"phases: expected an integer in [1, 64], got {args.phases}")
     if args.plot and args.speeds is None and args.rpms is None:
         raise InputError("plot: draws a table over speeds; give --speeds or --rpms")
-    b = load_bearing(args.bearing)
+    b = bearing_from_args(args)
     if args.Pd is not None:
         b = b.with_clearance(args.Pd)
     opts = dict(control=args.control, traction=args.traction, lubricant=args.lubricant,

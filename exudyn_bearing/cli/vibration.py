@@ -18,7 +18,7 @@ import numpy as np
 
 from ..outputs.jsonio import to_jsonable
 from ..solvers.vibration import three_dof
-from .common import BEARING_HELP, finite_float, print_table
+from .common import add_bearing_argument, bearing_spec_from_args, finite_float, print_table
 
 
 def add_parser(sub):
@@ -31,7 +31,7 @@ def add_parser(sub):
     for name, values in three_dof.READINGS.items():
         t.add_argument(f"--{name.replace('_', '-')}", choices=values, default=values[0],
                        help=f"reading of the source (with --source-parameters; default {values[0]})")
-    t.add_argument("--bearing", default="6004", help=BEARING_HELP + " (derived parameters; default 6004)")
+    add_bearing_argument(t, default="6004")
     t.add_argument("--Fr", type=finite_float, default=500.0, help="radial load [N] (default 500)")
     speed = t.add_mutually_exclusive_group()
     speed.add_argument("--rpm", type=finite_float, help="inner-ring speed [rpm] (default 3000)")
@@ -51,7 +51,7 @@ def _parameters(args):
         omega = args.omega
     else:
         omega = (3000.0 if args.rpm is None else args.rpm) * 2.0 * math.pi / 60.0
-    return three_dof.derived_parameters(args.bearing, radial_load=args.Fr, omega=omega,
+    return three_dof.derived_parameters(bearing_spec_from_args(args), radial_load=args.Fr, omega=omega,
                                         diametral_clearance=args.Pd, link=args.link,
                                         film_damping=args.film_damping)
 
