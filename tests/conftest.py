@@ -1,5 +1,7 @@
+import importlib.util
 import os
 import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -56,3 +58,17 @@ def b6208():
 @pytest.fixture
 def b7208():
     return catalog["7208"]
+
+
+@pytest.fixture(scope="session")
+def load_script():
+    """Import a script of the repository (e.g. ``load_script("scenarios/papers_6208.py")``) as a module, with its
+    folder on sys.path so that it finds its neighbours."""
+    def load(relative):
+        path = ROOT / relative
+        spec = importlib.util.spec_from_file_location(path.stem, path)
+        mod = importlib.util.module_from_spec(spec)
+        sys.path.insert(0, str(path.parent))
+        spec.loader.exec_module(mod)
+        return mod
+    return load

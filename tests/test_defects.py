@@ -1,9 +1,7 @@
 """Localized defects, condition-monitoring signals, their processing and the dataset generator (issue #13)."""
-import importlib.util
 import json
 import math
 import os
-import sys
 import warnings
 from pathlib import Path
 
@@ -25,14 +23,6 @@ from exudyn_bearing.physics.geometry import raceway_radii
 
 ROOT = Path(__file__).resolve().parents[1]
 W1797 = 1797.0 * math.pi / 30.0
-
-
-def _load(path):
-    spec = importlib.util.spec_from_file_location(path.stem, path)
-    mod = importlib.util.module_from_spec(spec)
-    sys.path.insert(0, str(path.parent))
-    spec.loader.exec_module(mod)
-    return mod
 
 
 def _quiet(fn, *a, **kw):
@@ -338,8 +328,8 @@ def test_inner_race_spall_turns_with_a_rigid_shaft():
 
 # -- envelope analysis of the four cases (issue #13, item 3) -----------------------------------------
 @pytest.fixture(scope="module")
-def four_cases():
-    mod = _load(ROOT / "scenarios" / "defects_6205.py")
+def four_cases(load_script):
+    mod = load_script("scenarios/defects_6205.py")
     runs = mod.run_cases(t_end=0.5)
     return mod, runs, mod.analyse(runs)[1]
 
@@ -363,8 +353,8 @@ def test_healthy_envelope_has_no_defect_lines(four_cases):
     assert h["ratio_to_weakest_fault_line"] < mod.HEALTHY_THRESHOLD
 
 
-def test_scenario_script_writes_its_figures(tmp_path, capsys):
-    mod = _load(ROOT / "scenarios" / "defects_6205.py")
+def test_scenario_script_writes_its_figures(tmp_path, capsys, load_script):
+    mod = load_script("scenarios/defects_6205.py")
     mod.main(["--t-end", "0.12", "--out", str(tmp_path)])
     for name in ("time_signals", "spectra", "envelope_spectra"):
         assert (tmp_path / f"{name}.png").stat().st_size > 0 and (tmp_path / f"{name}.csv").exists()

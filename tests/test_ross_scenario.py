@@ -1,8 +1,6 @@
 """scenarios/ross_rotor_6208.py: the same rotor in ROSS on our 6208 coefficients and on ROSS's
 BallBearingElement. Needs the optional extra (pip install -e ".[ross]")."""
-import importlib.util
 import math
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -15,21 +13,13 @@ import exudyn_bearing as eb  # noqa: E402
 ROOT = Path(__file__).resolve().parents[1]
 
 
-def _load(path):
-    spec = importlib.util.spec_from_file_location(path.stem, path)
-    mod = importlib.util.module_from_spec(spec)
-    sys.path.insert(0, str(path.parent))
-    spec.loader.exec_module(mod)
-    return mod
-
-
-def test_ross_rotor_scenario(tmp_path):
+def test_ross_rotor_scenario(tmp_path, load_script):
     """Both rotors build and solve; independent numbers: ROSS's element follows the fit it documents,
     k_yy = 13e6 Z^(2/3) D^(1/3) F^(1/3) cos^(5/3) alpha; our exported coefficients are the quasi-static
     solver's at the same load, with the load direction on ROSS's y; each first lateral mode lies between
     Dunkerley's lower bound and the smaller of the rigid-bearing and rigid-rotor frequencies; and in each
     plane the rotor with the stiffer bearing has the higher first mode."""
-    mod = _load(ROOT / "scenarios" / "ross_rotor_6208.py")
+    mod = load_script("scenarios/ross_rotor_6208.py")
     res = mod.main(["--speeds", "3", "--no-critical", "--out", str(tmp_path)])
     b = eb.catalog["6208"]
     f = res["load_per_bearing"]

@@ -1,6 +1,4 @@
 """The scenario scripts and saved runs keep working (short versions of the real runs)."""
-import importlib.util
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -12,14 +10,6 @@ from exudyn_bearing.outputs.results import Results
 ROOT = Path(__file__).resolve().parents[1]
 
 
-def _load(path):
-    spec = importlib.util.spec_from_file_location(path.stem, path)
-    mod = importlib.util.module_from_spec(spec)
-    sys.path.insert(0, str(path.parent))
-    spec.loader.exec_module(mod)
-    return mod
-
-
 def test_saved_run_loads_back(tmp_path):
     r = eb.simulate("6208", eb.Scenario(t_end=0.002, dt=5e-6, sample_dt=2e-4))
     npz, js = r.save(tmp_path)
@@ -29,16 +19,16 @@ def test_saved_run_loads_back(tmp_path):
     np.testing.assert_array_equal(back.data["diag"], r.data["diag"])
 
 
-def test_papers_scenario_script(tmp_path, capsys):
-    mod = _load(ROOT / "scenarios" / "papers_6208.py")
+def test_papers_scenario_script(tmp_path, capsys, load_script):
+    mod = load_script("scenarios/papers_6208.py")
     mod.main(["--up", "0.005", "--steady", "0.01", "--down", "0.005", "--out", str(tmp_path)])
     for name in ("overview.png", "speeds.png", "srr_ball0.png", "film_outer.png", "run.npz", "run.json"):
         assert (tmp_path / name).stat().st_size > 0
     assert "steady phase: cage" in capsys.readouterr().out
 
 
-def test_rotor_scenario_script(tmp_path, capsys):
-    mod = _load(ROOT / "scenarios" / "rotor_two_6208.py")
+def test_rotor_scenario_script(tmp_path, capsys, load_script):
+    mod = load_script("scenarios/rotor_two_6208.py")
     # a short run to 30 rad/s (the speed limiter takes the last 1 % in about 25 ms)
     mod.main(["--t-end", "0.04", "--omega", "30", "--out", str(tmp_path)])
     assert (tmp_path / "rotor.png").stat().st_size > 0 and (tmp_path / "bearing_A.npz").exists()
@@ -54,8 +44,8 @@ def test_rotor_scenario_script(tmp_path, capsys):
     assert "full clearance" not in mod.__doc__
 
 
-def test_7208_scenario_script(tmp_path, capsys):
-    mod = _load(ROOT / "scenarios" / "bearing_7208.py")
+def test_7208_scenario_script(tmp_path, capsys, load_script):
+    mod = load_script("scenarios/bearing_7208.py")
     mod.main(["--t-end", "0.002", "--out", str(tmp_path)])
     out = capsys.readouterr().out
     assert "reference:" in out and "exudyn" in out and (tmp_path / "bearing_7208.png").exists()

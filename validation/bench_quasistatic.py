@@ -10,7 +10,6 @@ validation/out/bench_quasistatic.json.
 """
 import json
 import math
-import time
 from pathlib import Path
 
 import numpy as np
@@ -20,18 +19,11 @@ from exudyn_bearing.data import traction_models
 from exudyn_bearing.physics.contact_slip import _contact_traction
 from exudyn_bearing.solvers.quasistatic import solve_quasistatic
 
+from _bench import median_wall  # validation/_bench.py (the script's folder is on sys.path)
+
 OUT = Path(__file__).resolve().parent / "out"
 W = 25000 * math.pi / 30
 ACBB = dict(traction="ester_curve_illustrative", lubricant="MIL-L-23699_492K")
-
-
-def median_wall(fn, repeat):
-    walls = []
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        fn()
-        walls.append(time.perf_counter() - t0)
-    return float(np.median(walls)), walls
 
 
 @kernel(no_runtime=True)  # as the DEM contact kernel is compiled

@@ -11,25 +11,17 @@ the 7208 at F_r = 1000 N, F_a = 3000 N (free tilts), and 20-speed tables 0 ... 2
 """
 import json
 import math
-import time
 from pathlib import Path
 
 import numpy as np
 
 from exudyn_bearing.solvers.quasistatic import bearing_coefficients, solve_quasistatic
 
+from _bench import median_wall  # validation/_bench.py (the script's folder is on sys.path)
+
 OUT = Path(__file__).resolve().parent / "out"
 TARGETS = {"matrix_6208_s": 0.2, "matrix_7208_s": 0.2, "table20_6208_s": 5.0, "table20_6208_3phases_s": 5.0,
            "table20_acbb120_s": 5.0}
-
-
-def median_wall(fn, repeat):
-    walls = []
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        fn()
-        walls.append(time.perf_counter() - t0)
-    return float(np.median(walls)), walls
 
 
 def main():

@@ -10,8 +10,8 @@ import re
 from ..data import InputError, catalog, load_bearing, load_lubricant, lubricants
 
 __all__ = ["Parser", "HelpFormatter", "finite_float", "print_table", "BEARING_HELP", "add_bearing_argument",
-           "bearing_from_args", "bearing_spec_from_args", "add_speed_arguments", "omega_from_args", "add_lubricant_argument",
-           "lubricant_from_args", "RPM_TO_RAD_S"]
+           "bearing_from_args", "bearing_spec_from_args", "add_load_arguments", "add_speed_arguments",
+           "omega_from_args", "add_lubricant_argument", "lubricant_from_args", "RPM_TO_RAD_S"]
 
 #: Help text of a bearing argument.
 BEARING_HELP = (f"catalogue name ({', '.join(catalog)}) or a JSON file: one bearing (race radii as in "
@@ -88,6 +88,17 @@ def bearing_spec_from_args(args) -> str:
 def bearing_from_args(args):
     """The BallBearing the arguments name (positional, --bearing or the default)."""
     return load_bearing(bearing_spec_from_args(args))
+
+
+def add_load_arguments(p):
+    """Loads on the inner ring in five DOFs and the clearance (quasistatic, stiffness)."""
+    p.add_argument("--Fr", type=finite_float, default=0.0, help="radial load [N] on the inner ring along +x")
+    p.add_argument("--Fy", type=finite_float, default=0.0, help="radial load [N] along +y")
+    p.add_argument("--Fa", type=finite_float, default=0.0, help="axial load [N] along +z")
+    p.add_argument("--Mx", type=finite_float, default=0.0, help="moment [N m] about x")
+    p.add_argument("--My", type=finite_float, default=0.0, help="moment [N m] about y")
+    p.add_argument("--Pd", type=finite_float, help="diametral clearance [m] (negative: preload); default: the "
+                                                   "bearing's")
 
 
 def add_speed_arguments(p, default: float | None = None, what: str = ""):

@@ -13,19 +13,14 @@ from ..physics.hertz import METHODS
 from ..solvers.quasistatic import solve_quasistatic
 from ..solvers.quasistatic.kinematics import CONTROLS
 from ..solvers.quasistatic.ring import DOF_NAMES
-from .common import add_bearing_argument, bearing_from_args, finite_float
+from .common import add_bearing_argument, add_load_arguments, bearing_from_args, finite_float
 
 
 def add_parser(sub):
     p = sub.add_parser("quasistatic", help="quasi-static equilibrium at speed: 5-DOF inner ring, ball kinematics "
                                            "(race control or minimum energy), slip, dissipation, stiffness")
     add_bearing_argument(p)
-    p.add_argument("--Fr", type=finite_float, default=0.0, help="radial load [N] on the inner ring along +x")
-    p.add_argument("--Fy", type=finite_float, default=0.0, help="radial load [N] along +y")
-    p.add_argument("--Fa", type=finite_float, default=0.0, help="axial load [N] along +z")
-    p.add_argument("--Mx", type=finite_float, default=0.0, help="moment [N m] about x")
-    p.add_argument("--My", type=finite_float, default=0.0, help="moment [N m] about y")
-    p.add_argument("--Pd", type=finite_float, help="diametral clearance [m] (negative: preload); default: the bearing's")
+    add_load_arguments(p)
     speed = p.add_mutually_exclusive_group()
     speed.add_argument("--omega", type=finite_float, help="inner-ring speed [rad/s]")
     speed.add_argument("--rpm", type=finite_float, help="inner-ring speed [1/min]")

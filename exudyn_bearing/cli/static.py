@@ -13,8 +13,8 @@ from ..outputs.jsonio import to_jsonable
 from ..outputs.plotting import plot_static
 from ..outputs.units import REGIME_CODES, STATIC_UNITS, with_units
 from ..physics.hertz import METHODS
-from ..physics.load_distribution import StaticSolution, load_zone_parameter, stribeck_solution
-from ..solvers.analytic import lubrication_map
+from ..physics.load_distribution import StaticSolution, load_zone_parameter
+from ..solvers.analytic import stribeck_and_lubrication
 from ..solvers.quasistatic import solve_quasistatic
 from .common import (add_bearing_argument, add_lubricant_argument, add_speed_arguments, bearing_from_args,
                      finite_float, lubricant_from_args, omega_from_args)
@@ -85,18 +85,7 @@ def static_result(b, fr, fa, mx=0.0, my=0.0, tilt="fixed", omega=None, film="hd"
            "delta_r": sol.delta_r, "delta_a": sol.delta_a, "tilt_x": float(u[3]), "tilt_y": float(u[4]),
            "eps": eps, "tilt": tilt, "held_dofs": dict(s.held), "reactions": dict(s.reactions),
            "reaction_moment": sol.reaction_moment}
-    if (fr > 0.0 or fa > 0.0) and tilt == "fixed":
-        try:
-            st = stribeck_solution(b.n_balls, fr, fa, b.free_contact_angle,
-                                   eps=eps if fa == 0.0 and math.isfinite(eps) else None)
-            res["q_max_stribeck"] = st.q_max
-            res["eps_stribeck"] = st.eps
-        except InputError:
-            pass
-    if omega is not None:
-        res["omega"] = float(omega)
-        res["film"] = film
-        res.update(lubrication_map(sol, omega, 0.0, lubricant, film))
+    res.update(stribeck_and_lubrication(sol, omega, film, lubricant, stribeck=tilt == "fixed"))
     return res
 
 

@@ -24,7 +24,7 @@ from ..outputs.jsonio import to_jsonable
 from ..outputs.plotting import save_figure
 from ..solvers.quasistatic import bearing_coefficients, solve_quasistatic
 from ..solvers.quasistatic.kinematics import CONTROLS
-from .common import add_bearing_argument, bearing_from_args, finite_float
+from .common import add_bearing_argument, add_load_arguments, bearing_from_args, finite_float
 
 RPM = 2.0 * math.pi / 60.0
 
@@ -33,13 +33,7 @@ def add_parser(sub):
     p = sub.add_parser("stiffness", help="linearised 5x5 stiffness and damping of a bearing at an operating point "
                                          "(quasi-static solver), or a table over speeds")
     add_bearing_argument(p)
-    p.add_argument("--Fr", type=finite_float, default=0.0, help="radial load [N] on the inner ring along +x")
-    p.add_argument("--Fy", type=finite_float, default=0.0, help="radial load [N] along +y")
-    p.add_argument("--Fa", type=finite_float, default=0.0, help="axial load [N] along +z")
-    p.add_argument("--Mx", type=finite_float, default=0.0, help="moment [N m] about x")
-    p.add_argument("--My", type=finite_float, default=0.0, help="moment [N m] about y")
-    p.add_argument("--Pd", type=finite_float, help="diametral clearance [m] (negative: preload); default: the "
-                                                   "bearing's")
+    add_load_arguments(p)
     speed = p.add_mutually_exclusive_group()
     speed.add_argument("--omega", type=finite_float, help="inner-ring speed [rad/s] (default 0)")
     speed.add_argument("--rpm", type=finite_float, help="inner-ring speed [1/min]")

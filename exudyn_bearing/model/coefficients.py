@@ -27,7 +27,7 @@ import numpy as np
 
 from ..data import InputError
 
-__all__ = ["BearingCoefficients", "AXES", "STIFFNESS_UNITS", "DAMPING_UNITS"]
+__all__ = ["BearingCoefficients", "AXES", "STIFFNESS_UNITS", "DAMPING_UNITS", "speed_array"]
 
 #: Coordinate order of the 5x5 matrices.
 AXES = ("x", "y", "axial", "tilt_x", "tilt_y")
@@ -57,6 +57,21 @@ def _unit_table(suffix):
 STIFFNESS_UNITS = _unit_table(False)
 #: Unit of each entry of the damping matrix.
 DAMPING_UNITS = _unit_table(True)
+
+
+def speed_array(speeds) -> np.ndarray:
+    """``speeds`` [rad/s] as a 1-D float array; InputError unless finite, >= 0 and strictly increasing."""
+    try:
+        s = np.array(speeds, dtype=float).reshape(-1)
+    except (TypeError, ValueError):
+        raise InputError(f"speeds: expected numbers [rad/s], got {speeds!r}") from None
+    if s.size == 0:
+        raise InputError("speeds: at least one speed is needed")
+    if not np.all(np.isfinite(s)) or np.any(s < 0.0):
+        raise InputError("speeds: must be finite and >= 0 [rad/s]")
+    if s.size > 1 and np.any(np.diff(s) <= 0.0):
+        raise InputError("speeds: must be strictly increasing")
+    return s
 
 
 @dataclass(frozen=True)
@@ -92,18 +107,12 @@ class BearingCoefficients:
     method: str = ""
 
     def __post_init__(self):
+        s = speed_array(self.speeds)
         try:
-            s = np.array(self.speeds, dtype=float).reshape(-1)
             k = np.array(self.stiffness, dtype=float)
             c = np.array(self.damping, dtype=float)
         except (TypeError, ValueError) as exc:
-            raise InputError(f"speeds: coefficients must be numeric arrays ({exc})") from None
-        if s.size == 0:
-            raise InputError("speeds: at least one speed is needed")
-        if not np.all(np.isfinite(s)) or np.any(s < 0.0):
-            raise InputError("speeds: must be finite and >= 0 [rad/s]")
-        if s.size > 1 and np.any(np.diff(s) <= 0.0):
-            raise InputError("speeds: must be strictly increasing")
+            raise InputError(f"stiffness: coefficients must be numeric arrays ({exc})") from None
         for name, a in (("stiffness", k), ("damping", c)):
             if a.shape != (s.size, 5, 5):
                 raise InputError(f"{name}: expected shape ({s.size}, 5, 5) (one 5x5 matrix per speed, axes "

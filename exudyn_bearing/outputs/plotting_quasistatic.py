@@ -15,18 +15,27 @@ def _azimuth_deg(psi):
     return d, np.argsort(d)
 
 
+def _two_panels(png):
+    """A figure of two panels side by side, and the PNG path with its folder made."""
+    png = Path(png)
+    png.parent.mkdir(parents=True, exist_ok=True)
+    fig, ax = _pyplot().subplots(1, 2, figsize=(11.5, 4.3))
+    return fig, ax, png
+
+
+def _as_dicts(solutions: dict):
+    """(label, dict) pairs of QuasiStaticSolutions or their ``to_dict()``."""
+    return [(label, s.to_dict() if hasattr(s, "to_dict") else s) for label, s in solutions.items()]
+
+
 def plot_loads_angles(solutions: dict, png) -> Path:
     """Contact loads and contact angles of both races against azimuth, one line style per solution.
 
     ``solutions`` maps a label to a QuasiStaticSolution (or its ``to_dict()``).
     """
-    plt = _pyplot()
-    png = Path(png)
-    png.parent.mkdir(parents=True, exist_ok=True)
-    fig, ax = plt.subplots(1, 2, figsize=(11.5, 4.3))
+    fig, ax, png = _two_panels(png)
     cols = {}
-    for i, (label, s) in enumerate(solutions.items()):
-        d = s.to_dict() if hasattr(s, "to_dict") else s
+    for i, (label, d) in enumerate(_as_dicts(solutions)):
         az, order = _azimuth_deg(np.radians(d["psi"]))
         for race, ls in (("inner", "-o"), ("outer", "--s")):
             ax[0].plot(az[order], np.asarray(d[f"q_{race}"])[order], ls, color=f"C{i}", ms=4, label=f"{label}: {race}")
@@ -42,13 +51,9 @@ def plot_loads_angles(solutions: dict, png) -> Path:
 
 def plot_slip(solutions: dict, png, ball=0) -> Path:
     """Rolling-direction slip along the major axis of both contacts of one ball, per solution."""
-    plt = _pyplot()
-    png = Path(png)
-    png.parent.mkdir(parents=True, exist_ok=True)
-    fig, ax = plt.subplots(1, 2, figsize=(11.5, 4.3))
+    fig, ax, png = _two_panels(png)
     cols = {}
-    for i, (label, s) in enumerate(solutions.items()):
-        d = s.to_dict() if hasattr(s, "to_dict") else s
+    for i, (label, d) in enumerate(_as_dicts(solutions)):
         y = np.asarray(d["slip_y"])
         for k, race in enumerate(("outer", "inner")):
             v = np.asarray(d[f"slip_{race}"])[ball]

@@ -17,7 +17,7 @@ from ..physics.geometry import raceway_radii
 from ..physics.load_distribution import (StaticSolution, race_stiffness, static_equilibrium,
                                         stribeck_solution)
 
-__all__ = ["bearing_info", "lubrication_map", "static_analysis"]
+__all__ = ["bearing_info", "lubrication_map", "static_analysis", "stribeck_and_lubrication"]
 
 
 def _check_speed(name, value):
@@ -214,10 +214,22 @@ def static_analysis(bearing: BallBearing, radial_load: float, axial_load: float 
         "tilt": "held at zero",
         "reaction_moment": sol.reaction_moment,
     }
-    if sol.radial_load > 0.0 or sol.axial_load > 0.0:
+    res.update(stribeck_and_lubrication(sol, omega, film, lubricant))
+    return res
+
+
+def stribeck_and_lubrication(sol: StaticSolution, omega: float | None = None, film: str = "hd",
+                             lubricant: Lubricant | None = None, stribeck: bool = True) -> dict:
+    """The keys a static result adds to its load distribution ``sol``: the
+    continuous Stribeck ``q_max_stribeck`` [N] and ``eps_stribeck`` [-] of
+    the same loads (where the loads are nonzero, ``stribeck`` is on and the
+    continuous solution exists), and with ``omega`` [rad/s] the keys
+    ``omega``, ``film`` and those of :func:`lubrication_map`."""
+    res = {}
+    b = sol.bearing
+    if stribeck and (sol.radial_load > 0.0 or sol.axial_load > 0.0):
         try:
-            st = stribeck_solution(bearing.n_balls, sol.radial_load, sol.axial_load,
-                                   bearing.free_contact_angle,
+            st = stribeck_solution(b.n_balls, sol.radial_load, sol.axial_load, b.free_contact_angle,
                                    eps=sol.eps if sol.axial_load == 0.0 and math.isfinite(sol.eps) else None)
             res["q_max_stribeck"] = st.q_max
             res["eps_stribeck"] = st.eps

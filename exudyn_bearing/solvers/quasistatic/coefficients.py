@@ -27,7 +27,7 @@ import math
 import numpy as np
 
 from ...data import InputError, load_bearing
-from ...model.coefficients import BearingCoefficients
+from ...model.coefficients import BearingCoefficients, speed_array
 from .solve import solve_quasistatic
 
 __all__ = ["bearing_coefficients", "METHOD"]
@@ -36,20 +36,6 @@ __all__ = ["bearing_coefficients", "METHOD"]
 METHOD = ("quasi-static 5-DOF equilibrium (exudyn_bearing.solve_quasistatic): stiffness by central differences "
           "of the balls' force on the inner ring; damping: normal damping of the contact model (hysteretic, "
           "squeeze film, Lambda-switched) condensed over each ball's two contacts in series")
-
-
-def _speeds(speeds):
-    try:
-        s = np.array(speeds, dtype=float).reshape(-1)
-    except (TypeError, ValueError):
-        raise InputError(f"speeds: expected numbers [rad/s], got {speeds!r}") from None
-    if s.size == 0:
-        raise InputError("speeds: at least one speed is needed")
-    if not np.all(np.isfinite(s)) or np.any(s < 0.0):
-        raise InputError("speeds: must be finite and >= 0 [rad/s]")
-    if s.size > 1 and np.any(np.diff(s) <= 0.0):
-        raise InputError("speeds: must be strictly increasing")
-    return s
 
 
 def bearing_coefficients(bearing, speeds, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, n_phases=1, phase=0.0,
@@ -88,7 +74,7 @@ def bearing_coefficients(bearing, speeds, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=
     >>> [round(float(k) / 1e8, 3) for k in c.stiffness[:, 0, 0]]   # k_xx [1e8 N/m]
     [1.814, 1.817]
     """
-    s = _speeds(speeds)
+    s = speed_array(speeds)
     b = load_bearing(bearing)
     if isinstance(n_phases, bool) or not isinstance(n_phases, (int, np.integer)) or not 1 <= n_phases <= 64:
         raise InputError(f"n_phases: expected an integer in [1, 64], got {n_phases!r}")

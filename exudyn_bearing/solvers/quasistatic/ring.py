@@ -88,29 +88,26 @@ def _start(prob, u, free, bearing):
             u[2] = sgn * root
     fr = math.hypot(loads[0], loads[1])
     if (free[0] or free[1]) and fr > 0.0:
-        ex, ey = loads[0] / fr, loads[1] / fr
-
-        def fx(s):
-            v = u.copy()
-            v[0], v[1] = s * ex, s * ey
-            r = prob.residual(v)[0]
-            return r[0] * ex + r[1] * ey
-        root = _bracket_root(fx, 0.0, size, limit)
-        if root is not None:
-            u[0], u[1] = root * ex, root * ey
+        _root_along(prob, u, (0, 1), (loads[0] / fr, loads[1] / fr), size, limit)
     mm = math.hypot(loads[3], loads[4])
     if (free[3] or free[4]) and mm > 0.0:
-        mx, my = loads[3] / mm, loads[4] / mm
-
-        def fm(t):
-            v = u.copy()
-            v[3], v[4] = t * mx, t * my
-            r = prob.residual(v)[0]
-            return r[3] * mx + r[4] * my
-        root = _bracket_root(fm, 0.0, size / prob.arm, limit / prob.arm)
-        if root is not None:
-            u[3], u[4] = root * mx, root * my
+        _root_along(prob, u, (3, 4), (loads[3] / mm, loads[4] / mm), size / prob.arm, limit / prob.arm)
     return u
+
+
+def _root_along(prob, u, dofs, e, size, limit):
+    """Move the pose ``u`` (in place) along the unit direction ``e`` of the two DOFs ``dofs`` (x, y or the two
+    tilts) to where the residual's component along ``e`` vanishes, if a bracket within ``limit`` holds a root."""
+    i, j = dofs
+
+    def f(s):
+        v = u.copy()
+        v[i], v[j] = s * e[0], s * e[1]
+        r = prob.residual(v)[0]
+        return r[i] * e[0] + r[j] * e[1]
+    root = _bracket_root(f, 0.0, size, limit)
+    if root is not None:
+        u[i], u[j] = root * e[0], root * e[1]
 
 
 def solve_ring(prob: RingProblem, free, held, u_start, bearing, tol=1e-10, cold=True):
