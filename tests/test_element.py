@@ -360,6 +360,23 @@ def _two_runs(mode, continuation):
 
 
 @pytest.mark.parametrize("mode", ["bodies", "fast"])
+def test_results_before_any_sample_say_why(mode):
+    # a run shorter than sampleInterval has no sample: the error names sampleInterval instead of
+    # telling the user to run SolveDynamic, which they did (issue #14, item 3 in the element)
+    SC, mbs, m_in, m_out, b = _rotor_scene()
+    el = CreateBallBearing(mbs, b, m_in, m_out, initialOmega=500.0, initialLoad=(3000.0, 0.0), stepSize=5e-6,
+                           tangential="implicit", sampleInterval=1e-3, mode=mode)
+    mbs.Assemble()
+    with pytest.raises(RuntimeError, match="no samples yet; run mbs.SolveDynamic"):
+        el.record()
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", eb.StepSizeWarning)
+        solve_dynamic(mbs, el.SimulationSettings(2e-4))
+    with pytest.raises(RuntimeError, match="before its first sample, sampleInterval = 0.001 s"):
+        el.results()
+
+
+@pytest.mark.parametrize("mode", ["bodies", "fast"])
 def test_a_second_solve_from_the_start_repeats_the_first(mode):
     # Exudyn restarts a second SolveDynamic at t = 0 from the initial state: the element
     # restarts with it (samples, contact history, the fast mode's balls), so the second run

@@ -694,8 +694,8 @@ def section_stiffness():
     d = load("stiffness_checks.json")
     bs = load("bench_stiffness.json")
     lines = ["## Linearised bearing stiffness and damping (quasi-static solver)", "",
-             "Command: `python validation/stiffness_checks.py` (figures `out/stiffness_dem_check.png`, "
-             "`out/stiffness_decay_500.png`, each with its CSV). Matrices: `solve_quasistatic(...).stiffness` "
+             "Command: `python validation/stiffness_checks.py` (figures below, each with its CSV in "
+             "validation/out). Matrices: `solve_quasistatic(...).stiffness` "
              "(central differences) and `.damping` (the contact model's normal damping condensed over each ball's "
              "two contacts in series); theory: docs/theory/vibration.md, sec. 8.", "",
              f"**Stiffness against the DEM** (6208, F_r = 3000 N; reference engine, dt = {d['increments']['dt'] * 1e6:g} "
@@ -737,6 +737,10 @@ def section_stiffness():
               "DEM's frequencies are lower because the condensation neglects the balls' inertia (friction off: "
               f"{100 * (1 - min(r['omega_ratio'] for r in none)):.1f} % at most) and, with friction, the balls' "
               "rolling inertia that the tangential forces couple to the ring.", ""]
+    lines += figure("stiffness_dem_check.png", "Relative difference of the DEM's radial (left) and axial (right) "
+                    "stiffness from the quasi-static matrix for each case and increment, with the 5 % target band.")
+    lines += figure("stiffness_decay_500.png", "Free decay of the kicked inner ring at 500 rad/s in the DEM (kicked "
+                    "minus unkicked run) against the envelope of the matrix's damping ratio.")
     t = d["three_dof"]
     op = t["operating_point"]
     r_ring = t["ring"].get("radius", 0.011)

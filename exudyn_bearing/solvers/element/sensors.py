@@ -81,6 +81,11 @@ class SensorsMixin:
         element also has ``results()``, the same wrapped in
         :class:`~exudyn_bearing.outputs.results.Results`."""
         if not self._sample_t:
+            ran = (self._clock[4] if self.mode == "fast" else self._evaluations) > 0
+            if ran:
+                raise RuntimeError(f"results: the run ended before its first sample, sampleInterval = "
+                                   f"{self.sampleInterval:g} s after its start: run longer than sampleInterval "
+                                   f"(endTime) or give CreateBallBearing a smaller sampleInterval")
             raise RuntimeError("results: no samples yet; run mbs.SolveDynamic first")
         rows = np.array(self._sample_rows)
         data, k = {"t": np.array(self._sample_t)}, 0
