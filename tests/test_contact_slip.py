@@ -14,7 +14,36 @@ COULOMB = TractionModel("constant", {"mu": MU, "regularizing_srr": 0.0})
 
 def test_pure_rolling_transmits_nothing():
     r = contact_traction(A, B, Q, 0.0, 0.0, 0.0, model=COULOMB, n_strips=16, n_across=3)
-    assert r == (0.0, 0.0, 0.0, 0.0, 0.0)
+    assert r == (0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
+
+
+@pytest.mark.parametrize("model", [COULOMB, TractionModel("constant", {"mu": MU, "regularizing_srr": 0.02}),
+                                   TractionModel("curve", {"A": -0.02, "B": 2.0, "C": 40.0, "D": 0.02})])
+@pytest.mark.parametrize("n_strips, n_across", [(1, 1), (16, 1), (9, 4)])
+def test_applied_resultant_takes_exactly_the_dissipation(model, n_strips, n_across):
+    # tau . v summed over the points = F_x v0 + F_y v_t + M_z w_n + M_y omega_roll (an identity of
+    # the slip field v_x = v0 - w_n y + c2 y^2, v_y = v_t + w_n x with c2 = omega_roll / (2 R_d)), and
+    # tau . v = -mu p |v| dA: the force and the two moments applied to the bodies take exactly P
+    r_d, roll = 6.4e-3, 900.0
+    c2 = roll / (2.0 * r_d)
+    v0, wn, vt = 0.03, 40.0, -0.01
+    r = contact_traction(A, B, Q, v0, wn, c2, v_t=vt, u_roll=15.0, model=model, n_strips=n_strips,
+                         n_across=n_across, r_d=r_d)
+    work = r.force_x * v0 + r.force_y * vt + r.moment_z * wn + r.moment_y * roll
+    assert r.dissipation > 0.0
+    assert -work == pytest.approx(r.dissipation, rel=1e-12)
+    # without the curvature moment the forces would take less than the dissipation (the old defect);
+    # one strip samples the slip at y = 0 only, where the curvature slip vanishes
+    if n_strips > 1:
+        assert -(work - r.moment_y * roll) < r.dissipation
+
+
+def test_curvature_moment_of_a_fully_sliding_coulomb_contact():
+    # curvature slip alone, far larger than any other slip (c2 y^2 >= 0 everywhere: v_x > 0): tau_x = -mu p,
+    # M_y = -mu int p y^2/(2 R_d) dA = -mu Q a^2 / (10 R_d) (int p y^2 dA = Q a^2 / 5 for Hertz pressure)
+    r_d, c2 = 6.4e-3, 1e4
+    r = contact_traction(A, B, Q, 1e-9, 0.0, c2, model=COULOMB, n_strips=4000, n_across=1, r_d=r_d)
+    assert r.moment_y == pytest.approx(-MU * Q * A * A / (10.0 * r_d), rel=1e-5)
 
 
 @pytest.mark.parametrize("n_strips, n_across", [(1, 1), (7, 2), (40, 5)])

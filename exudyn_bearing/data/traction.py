@@ -37,7 +37,13 @@ import numpy as np
 
 from .errors import InputError, check_finite
 
-__all__ = ["TractionModel", "TRACTION_KINDS", "PARAMETER_NAMES"]
+__all__ = ["TractionModel", "TRACTION_KINDS", "PARAMETER_NAMES", "DEFAULT_REGULARIZING_SRR", "regularized"]
+
+#: Slide-to-roll ratio below which a Coulomb-type law (``constant``,
+#: ``lambda``) without its own regularisation rises linearly, in every solver
+#: (quasi-static and both dynamic engines): a discontinuous law has neither a
+#: stable explicit step nor a smooth traction equilibrium.
+DEFAULT_REGULARIZING_SRR = 0.01
 
 #: Kinds of traction model, in the order of their integer codes.
 TRACTION_KINDS = ("constant", "curve", "ehl", "lambda")
@@ -170,3 +176,11 @@ class TractionModel:
         return {"kind": self.kind, "parameters": dict(self.parameters), "validity": self.validity,
                 "source": self.source}
 
+
+def regularized(model: TractionModel, regularizing_srr: float = DEFAULT_REGULARIZING_SRR) -> TractionModel:
+    """The model every solver uses: a Coulomb-type law (``constant``,
+    ``lambda``) whose own ``regularizing_srr`` is 0 gets ``regularizing_srr``
+    (0 keeps it discontinuous); other kinds unchanged."""
+    if "regularizing_srr" in PARAMETER_NAMES[model.kind] and model.parameters["regularizing_srr"] <= 0.0:
+        return model.replace(regularizing_srr=regularizing_srr)
+    return model

@@ -66,6 +66,7 @@ from .layout import (D_POWER, D_ROLL, D_SPIN, D_SPIN_MOMENT, P_GROWTH_I, P_GROWT
                      P_RD_I, P_RD_O, P_TRACTION_CODE, P_TRACTION_LEVEL, P_TRACTION_PARAMS)
 from .layout import (D_A, D_ANGLE, D_B, D_DEFECT, D_FRICTION, D_HMIN, D_LAMBDA, D_LOAD, D_MU, D_OVERLAP, D_PMAX,
                      D_REGIME, D_SLIP, D_SRR, D_UR, DEF_BALL, DEF_N, DF_ACROSS, DF_BALL, DF_DEPTH, DF_DIR, DF_EDGE,
+                     G_DAMP_POWER, G_DISS_WORK, G_DRIVE_POWER, G_DRIVE_WORK, G_KINETIC, P_IB,
                      DF_HL, DF_HW, DF_POS, DF_RACE, FRIC_HISTORY, H_E1, H_E2, P_DEF0, P_NDEF, R_ANGLE, FRIC_REGULARIZED, G_OMEGA, G_OUTER_FX, G_OUTER_FY,
                      G_OUTER_FZ, G_OUTER_TORQUE, G_POWER, G_RING_FX, G_RING_FY, G_RING_FZ, G_RING_TORQUE, G_WORST,
                      P_ALPHA_E, P_CAGE, P_DT, P_EPRIME, P_ETA, P_FILM, P_FRIC, P_HERTZ, P_K_BB, P_K_BZ, P_K_GUIDE,
@@ -73,7 +74,7 @@ from .layout import (D_A, D_ANGLE, D_B, D_DEFECT, D_FRICTION, D_HMIN, D_LAMBDA, 
                      P_MU_DRY, P_MU_F, P_MZ, P_RB, P_RCI, P_RCO, P_RGUIDE, P_RHO_I, P_RHO_O, P_RP, P_RZ, P_SIGMA,
                      P_VREG, P_XI, P_ZG_I, P_ZG_O)
 
-__all__ = ["forces"]
+__all__ = ["forces", "accumulate_energy"]
 
 
 @kernel(inline="always")
@@ -283,8 +284,10 @@ def _ellipse_traction(p, rx, kappa, a_ax, b_ax, f_n, sx, sy, sz, mx, my, mz, h_m
     roll / (2 R_d), rolling speed |m . e_x| (at least the regularising speed
     ``P_VREG``, so that a slide-to-roll traction law stays finite at
     start-up). Returns the force on the ball
-    (world), the moment on it about e_z, and the dissipation [W]. Called,
-    not inlined: the point level's hot loop stays as small as without it.
+    (world), the moment on it about e_z, the curvature moment about e_y
+    (:mod:`~exudyn_bearing.physics.contact_slip`: with it the applied forces
+    take exactly the dissipation from the bodies) and the dissipation [W].
+    Called, not inlined: the point level's hot loop stays as small as without it.
     """
     v0 = sx * exx + sy * exy + sz * exz
     v_t = sx * eyx + sy * eyy + sz * eyz
@@ -295,10 +298,10 @@ def _ellipse_traction(p, rx, kappa, a_ax, b_ax, f_n, sx, sy, sz, mx, my, mz, h_m
     h_c = 0.0
     if code == TRACTION_EHL:
         h_c = _film_central_hd(u_roll, f_n, rx, kappa, p[P_EPRIME], p[P_ETA], p[P_XI])
-    f_x, f_y, m_z, power, _qv = _contact_traction(
-        a_ax, b_ax, f_n, v0, -spin, roll / (2.0 * r_d), v_t, u_roll, h_c, h_min, code,
+    f_x, f_y, m_z, power, _qv, m_y = _contact_traction(
+        a_ax, b_ax, f_n, v0, -spin, roll / (2.0 * r_d), r_d, v_t, u_roll, h_c, h_min, code,
         p[P_TRACTION_PARAMS:P_TRACTION_PARAMS + N_TRACTION_PARAMS], int(p[P_N_STRIPS]), int(p[P_N_ACROSS]))
-    return (f_x * exx + f_y * eyx, f_x * exy + f_y * eyy, f_x * exz + f_y * eyz, m_z, power)
+    return (f_x * exx + f_y * eyx, f_x * exy + f_y * eyy, f_x * exz + f_y * eyz, m_z, m_y, power)
 
 
 @kernel(inline="always")
@@ -404,8 +407,8 @@ def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist,
 
     Adds the contact force and moment to ball j (fb, tb) and the reaction to
     the ring (fr); writes the spring to ``hist_out`` and, with ``want``, the
-    diagnostics. Returns (overlap / R_b, frictional power [W]); (0, 0) when
-    the contact is open."""
+    diagnostics. Returns (overlap / R_b, frictional power [W], dissipation of
+    the normal damping [W]); zeros when the contact is open."""
     inner = race == 0
     if inner:
         rho, zg, rc, growth = p[P_RHO_I], p[P_ZG_I], p[P_RCI], p[P_GROWTH_I]
@@ -425,7 +428,7 @@ def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist,
         delta -= drop
     if delta <= 0.0:
         _open_contact(hist_out, diag, j, race, delta, ca, sa, drop, want)
-        return 0.0, 0.0
+        return 0.0, 0.0, 0.0
     # contact normal in the world frame, n = A n_local
     if rotated:
         nx = rings[race, 6] * nlx + rings[race, 7] * nly + rings[race, 8] * nlz
@@ -460,15 +463,19 @@ def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist,
             a_ax, b_ax = major, minor
         else:
             a_ax, b_ax = minor, major
-        ftx, fty, ftz, m_z, power = _ellipse_traction(p, rx, kappa, a_ax, b_ax, f_n, sx, sy, sz, mx, my, mz, h,
-                                                      spin, roll, inner, exx, exy, exz, eyx, eyy, eyz)
-        # the spin moment m_z about e_z = -n: on the ball, and its reaction on the ring
-        tb[j, 0] -= m_z * nx
-        tb[j, 1] -= m_z * ny
-        tb[j, 2] -= m_z * nz
-        fr[race, 3] += m_z * nx
-        fr[race, 4] += m_z * ny
-        fr[race, 5] += m_z * nz
+        ftx, fty, ftz, m_z, m_y, power = _ellipse_traction(p, rx, kappa, a_ax, b_ax, f_n, sx, sy, sz, mx, my, mz,
+                                                           h, spin, roll, inner, exx, exy, exz, eyx, eyy, eyz)
+        # the spin moment m_z about e_z = -n and the curvature moment m_y about
+        # e_y: on the ball, and their reaction on the ring
+        mvx = m_y * eyx - m_z * nx
+        mvy = m_y * eyy - m_z * ny
+        mvz = m_y * eyz - m_z * nz
+        tb[j, 0] += mvx
+        tb[j, 1] += mvy
+        tb[j, 2] += mvz
+        fr[race, 3] -= mvx
+        fr[race, 4] -= mvy
+        fr[race, 5] -= mvz
         hist_out[j, race, 0] = 0.0
         hist_out[j, race, 1] = 0.0
         hist_out[j, race, 2] = 0.0
@@ -521,20 +528,22 @@ def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist,
         diag[j, race, D_ROLL] = roll
         diag[j, race, D_POWER] = power
         diag[j, race, D_SPIN_MOMENT] = m_z
-    return delta / rb, power
+    # dissipation of the normal damping: the applied normal force beyond the elastic one times the approach rate
+    return delta / rb, power, (f_n - q_el) * ddot
 
 
 @kernel(inline="always")
 def _pair_contact(ia, ib, xb, vb, fb, px_, pv_, pf_, r_sum, k_pair, m_pair):
     """Ball ia against sphere ib of (px_, pv_) (a cage ball, or the next ball
     without cage): frictionless Hertz with critical damping; adds the force
-    to fb[ia] and its reaction to pf_[ib]; returns the contact force [N]."""
+    to fb[ia] and its reaction to pf_[ib]; returns the contact force [N] and
+    the dissipation of its damping [W]."""
     dx = xb[ia, 0] - px_[ib, 0]
     dy = xb[ia, 1] - px_[ib, 1]
     dz = xb[ia, 2] - px_[ib, 2]
     d2 = dx * dx + dy * dy + dz * dz
     if not (d2 < r_sum * r_sum and d2 > 0.0):
-        return 0.0
+        return 0.0, 0.0
     dist = math.sqrt(d2)
     delta = r_sum - dist
     inv = 1.0 / dist
@@ -542,7 +551,8 @@ def _pair_contact(ia, ib, xb, vb, fb, px_, pv_, pf_, r_sum, k_pair, m_pair):
     sq = math.sqrt(delta)
     c = _damping_critical(m_pair, 1.5 * k_pair * sq)
     ddot = -((vb[ia, 0] - pv_[ib, 0]) * nx + (vb[ia, 1] - pv_[ib, 1]) * ny + (vb[ia, 2] - pv_[ib, 2]) * nz)
-    f = k_pair * delta * sq + c * ddot
+    f_el = k_pair * delta * sq
+    f = f_el + c * ddot
     if f < 0.0:
         f = 0.0
     fb[ia, 0] += f * nx
@@ -551,7 +561,7 @@ def _pair_contact(ia, ib, xb, vb, fb, px_, pv_, pf_, r_sum, k_pair, m_pair):
     pf_[ib, 0] -= f * nx
     pf_[ib, 1] -= f * ny
     pf_[ib, 2] -= f * nz
-    return f
+    return f, (f - f_el) * ddot
 
 
 @kernel(inline="always")
@@ -559,16 +569,17 @@ def _guide_contact(k, p, xc, vc, rings, fc, fr):
     """Cage ball k in its guide torus, fixed to the outer ring (ring 1): tube-
     centre circle r_p in the ring's radial plane, tube radius R_z + guide
     clearance; frictionless Hertz, R_eq = R_z, critical damping. Adds the
-    force to fc[k] and its reaction to fr[1]."""
+    force to fc[k] and its reaction to fr[1]; returns the dissipation of its
+    damping [W]."""
     rz = p[P_RZ]
     free = p[P_RGUIDE] - rz
     dxw, dyw, dzw, cx, cy, cz, _rot = _ring_frame(rings, 1, xc[k, 0], xc[k, 1], xc[k, 2])
     dr = math.sqrt(cx * cx + cy * cy) - p[P_RP]
     if dr * dr + cz * cz <= free * free:
-        return
+        return 0.0
     delta, nlx, nly, nlz, _ca, _sa, _rc = _groove_geometry(cx, cy, cz, p[P_RP], 0.0, p[P_RGUIDE], rz, False)
     if delta <= 0.0:
-        return
+        return 0.0
     nx = rings[1, 6] * nlx + rings[1, 7] * nly + rings[1, 8] * nlz
     ny = rings[1, 9] * nlx + rings[1, 10] * nly + rings[1, 11] * nlz
     nz = rings[1, 12] * nlx + rings[1, 13] * nly + rings[1, 14] * nlz
@@ -578,7 +589,8 @@ def _guide_contact(k, p, xc, vc, rings, fc, fr):
     sq = math.sqrt(delta)
     kst = p[P_K_GUIDE]
     c = _damping_critical(p[P_MZ], 1.5 * kst * sq)
-    f = kst * delta * sq + c * vn
+    f_el = kst * delta * sq
+    f = f_el + c * vn
     if f > 0.0:
         fc[k, 0] -= f * nx
         fc[k, 1] -= f * ny
@@ -590,6 +602,33 @@ def _guide_contact(k, p, xc, vc, rings, fc, fr):
         fr[1, 3] += mx_
         fr[1, 4] += my_
         fr[1, 5] += mz_
+        return (f - f_el) * vn
+    return 0.0
+
+
+@kernel(inline="always")
+def _drive_power(rings, fr):
+    """Power both rings put into the balls and cage balls [W]: minus the power
+    of their forces and moments on the rings (``fr``, about the ring centres)
+    at the rings' velocities and angular velocities."""
+    total = 0.0
+    for r in range(2):
+        total -= (fr[r, 0] * rings[r, 3] + fr[r, 1] * rings[r, 4] + fr[r, 2] * rings[r, 5]
+                  + fr[r, 3] * rings[r, 15] + fr[r, 4] * rings[r, 16] + fr[r, 5] * rings[r, 17])
+    return total
+
+
+@kernel(inline="always")
+def _kinetic_energy(p, vb, wb, vc):
+    """Kinetic energy of the balls (translation, rotation) and cage balls (translation) [J]."""
+    e = 0.0
+    for j in range(vb.shape[0]):
+        e += 0.5 * p[P_MB] * (vb[j, 0] ** 2 + vb[j, 1] ** 2 + vb[j, 2] ** 2)
+        e += 0.5 * p[P_IB] * (wb[j, 0] ** 2 + wb[j, 1] ** 2 + wb[j, 2] ** 2)
+    if p[P_CAGE] > 0.5:
+        for k in range(vb.shape[0]):
+            e += 0.5 * p[P_MZ] * (vc[k, 0] ** 2 + vc[k, 1] ** 2 + vc[k, 2] ** 2)
+    return e
 
 
 @kernel(inline="always")
@@ -623,17 +662,19 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb,
     fc[:, :] = 0.0
     fr[:, :] = 0.0
     power_sum = 0.0
+    damp_sum = 0.0
     worst = 0.0
     defects = p[P_NDEF] > 0.0
     for j in range(z):
         if defects:
             _turn_ball_frame(p, hist, hist_out, dt_hist, wb, j)
         for race in range(2):
-            ratio, power = _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist, hz, fb,
-                                         tb, fr, diag, want)
+            ratio, power, damp = _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist, hz,
+                                               fb, tb, fr, diag, want)
             if ratio > worst:
                 worst = ratio
             power_sum += power
+            damp_sum += damp
     # ball / cage-ball contacts (two per cage ball) or, without cage, ball / ball
     cage = p[P_CAGE] > 0.5
     if cage:
@@ -653,13 +694,27 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb,
         for m in range(n_pair):
             ia = k if m == 0 else k2          # ball
             ib = k if cage else k2            # cage ball k, or the next ball
-            f = _pair_contact(ia, ib, xb, vb, fb, px_, pv_, pf_, r_sum, k_pair, m_pair)
+            f, damp = _pair_contact(ia, ib, xb, vb, fb, px_, pv_, pf_, r_sum, k_pair, m_pair)
+            damp_sum += damp
             if want:
                 cage_load[k, m] = f
         if want and not cage:
             cage_load[k, 1] = 0.0
         if cage:
-            _guide_contact(k, p, xc, vc, rings, fc, fr)
+            damp_sum += _guide_contact(k, p, xc, vc, rings, fc, fr)
+    # the powers at every evaluation (the engines integrate them into drive_work and dissipated_work)
+    glob[G_POWER] = power_sum
+    glob[G_DAMP_POWER] = damp_sum
+    glob[G_DRIVE_POWER] = _drive_power(rings, fr)
     if want:
         _global_diagnostics(rings, fr, power_sum, worst, glob)
+        glob[G_KINETIC] = _kinetic_energy(p, vb, wb, vc)
     return worst
+
+
+@kernel(inline="always")
+def accumulate_energy(glob, dt):
+    """Add the powers of the last evaluation over ``dt`` to the run's
+    drive_work and dissipated_work (``glob``, kept by the engine for the whole run)."""
+    glob[G_DRIVE_WORK] += glob[G_DRIVE_POWER] * dt
+    glob[G_DISS_WORK] += (glob[G_POWER] + glob[G_DAMP_POWER]) * dt

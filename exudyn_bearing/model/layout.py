@@ -215,13 +215,27 @@ NDIAG = len(DIAG_FIELDS)
 #: balls on the inner ring and torque about its axis, total frictional power,
 #: largest overlap / R_b, force of balls and cage balls on the outer ring and
 #: torque about its axis.
+#: The energy fields: ``damping_power`` the dissipation of the normal
+#: damping of every contact (ball / race, ball / cage ball, cage ball /
+#: guide: the damping force times the approach rate); ``drive_power`` the
+#: power both rings put into the balls and cage balls (minus the power of
+#: the ball and cage-ball forces on the rings, translation and rotation);
+#: ``drive_work`` and ``dissipated_work`` their integrals over the run
+#: (drive_power; friction_power + damping_power), accumulated by the engine
+#: at every step; ``kinetic_energy`` of the balls (translation and rotation)
+#: and cage balls (translation) in the world frame. Over a window,
+#: drive_work = dissipated_work + kinetic_energy change + the change of the
+#: energy stored in the contacts (elastic overlap, tangential springs).
 GLOBAL_FIELDS = ("omega", "ring_fx", "ring_fy", "ring_fz", "ring_torque", "friction_power",
-                 "max_overlap_ratio", "outer_fx", "outer_fy", "outer_fz", "outer_torque")
+                 "max_overlap_ratio", "outer_fx", "outer_fy", "outer_fz", "outer_torque", "damping_power",
+                 "drive_power", "drive_work", "dissipated_work", "kinetic_energy")
 (G_OMEGA, G_RING_FX, G_RING_FY, G_RING_FZ, G_RING_TORQUE, G_POWER, G_WORST, G_OUTER_FX, G_OUTER_FY,
- G_OUTER_FZ, G_OUTER_TORQUE) = range(len(GLOBAL_FIELDS))
+ G_OUTER_FZ, G_OUTER_TORQUE, G_DAMP_POWER, G_DRIVE_POWER, G_DRIVE_WORK, G_DISS_WORK,
+ G_KINETIC) = range(len(GLOBAL_FIELDS))
 GLOBAL_UNITS = {"omega": "rad/s", "ring_fx": "N", "ring_fy": "N", "ring_fz": "N", "ring_torque": "N m",
                 "friction_power": "W", "max_overlap_ratio": "-", "outer_fx": "N", "outer_fy": "N", "outer_fz": "N",
-                "outer_torque": "N m"}
+                "outer_torque": "N m", "damping_power": "W", "drive_power": "W", "drive_work": "J",
+                "dissipated_work": "J", "kinetic_energy": "J"}
 NGLOBAL = len(GLOBAL_FIELDS)
 
 # -- condition-monitoring signals --------------------------------------------

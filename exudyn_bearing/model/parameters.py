@@ -8,7 +8,7 @@ import math
 import numpy as np
 
 from ..data import BallBearing, InputError, Lubricant, get_traction_model
-from ..data.traction import PARAMETER_NAMES
+from ..data.traction import regularized
 from ..physics import hertz
 from ..physics.contact_slip import deformed_contact_radius
 from ..physics.ehl import film_model_code
@@ -88,10 +88,7 @@ def dynamic_traction_model(scenario: Scenario):
     Coulomb-type law (``constant``, ``lambda``) without its own
     regularisation gets ``scenario.traction_regularizing_srr`` (a
     discontinuous law has no stable explicit step); others unchanged."""
-    model = get_traction_model(scenario.traction)
-    if "regularizing_srr" in PARAMETER_NAMES[model.kind] and model.parameters["regularizing_srr"] <= 0.0:
-        return model.replace(regularizing_srr=scenario.traction_regularizing_srr)
-    return model
+    return regularized(get_traction_model(scenario.traction), scenario.traction_regularizing_srr)
 
 
 def traction_vector(scenario: Scenario) -> np.ndarray:

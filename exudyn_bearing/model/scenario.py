@@ -15,6 +15,8 @@ import numpy as np
 from ..data import InputError, get_traction_model
 from ..data.errors import check_bool, check_number
 from ..data.defects import as_defect
+from ..data.traction import DEFAULT_REGULARIZING_SRR
+from ..physics.contact_slip import DEFAULT_N_ACROSS, DEFAULT_N_STRIPS
 from ..physics.ehl import film_model_code
 from ..physics.hertz import method_code
 from .layout import MAX_DEFECTS
@@ -170,9 +172,9 @@ class Scenario:
     ring_mass: float | None = None
     traction_level: str = "point"
     traction: str = "lambda_dem"
-    n_strips: int = 16
-    n_across: int = 1
-    traction_regularizing_srr: float = 0.01
+    n_strips: int = DEFAULT_N_STRIPS
+    n_across: int = DEFAULT_N_ACROSS
+    traction_regularizing_srr: float = DEFAULT_REGULARIZING_SRR
     ring_growth: bool = False
     temperatures: dict | None = None
     initial: str = "analytic"

@@ -40,8 +40,23 @@ taken on the major axis, the spin's cross-slip w_n x dropped); more points
 resolve the cross-slip. Totals on body 1:
 
     F_x, F_y = sum tau dA,   M_z = sum (x tau_y - y tau_x) dA   (about e_z at the centre)
+    M_y = sum tau_x z(y) dA,  z(y) = y^2 / (2 R_d)          (about e_y at the centre)
     P  = sum mu p |v| dA  >= 0   frictional dissipation [W]
     QV = sum p |v| dA            load-times-slip integral [N m/s] (Archard-type wear)
+
+M_y is the rolling-resistance moment of the curvature slip: the pressed
+surface is curved across the rolling direction (radius R_d), so a shear
+stress tau_x at y acts at the depth z(y) = y^2/(2 R_d) below the contact
+plane and turns about e_y. The curvature slip c2 y^2 is that depth times the
+relative rolling speed omega_roll = 2 R_d c2 about e_y, so the power the
+field takes from the relative motion of the two bodies is exactly
+
+    -P = F_x v0 + F_y v_t + M_z w_n + M_y omega_roll
+
+(point by point, tau . v = tau_x (v0 - w_n y + c2 y^2) + tau_y (v_t + w_n x)).
+A model that applies F_x, F_y and M_z but not M_y reports a dissipation the
+applied forces do not take from the bodies (drive power < dissipation):
+every caller applies the full resultant (F_x, F_y, M_y, M_z) to both bodies.
 
 Closed forms the integration reproduces (asserted in tests/test_contact_slip.py):
 pure rolling gives no force; uniform sliding with constant mu gives
@@ -53,8 +68,8 @@ placing the pure-rolling points at y = +-0.347 a the Coulomb force vanishes
 
 Compiled interface (for the dynamics engines)
 ---------------------------------------------
-``_contact_traction(a, b, load, v0, w_n, c2, v_t, u_roll, h_central, h_min,
-code, params, n_strips, n_across)`` -> ``(F_x, F_y, M_z, P, QV)``: scalar
+``_contact_traction(a, b, load, v0, w_n, c2, r_d, v_t, u_roll, h_central,
+h_min, code, params, n_strips, n_across)`` -> ``(F_x, F_y, M_z, P, QV, M_y)``: scalar
 float arguments, ``code`` and the strip counts int, ``params`` a float64
 array (:attr:`exudyn_bearing.data.TractionModel.vector`); it allocates
 nothing and evaluates the traction law (``physics.traction._traction_srr``,
@@ -68,12 +83,12 @@ the unit normal n from the groove's curvature centre to the ball centre,
 contact centre X = c + R_b n, rolling direction e_x and e_y = e_x x n (so
 e_z = -n): v0 = e_x . (v_ball(X) - v_race(X)) (surface velocities at X),
 w_n = -(w_b - w_r) . n, c2 = ((w_b - w_r) . e_y) / (2 R_d) with R_d from
-:func:`deformed_contact_radius`, v_t = e_y . (v_ball(X) - v_race(X)), and
+:func:`deformed_contact_radius` (``r_d``; 0 for a flat contact, M_y = 0), v_t = e_y . (v_ball(X) - v_race(X)), and
 u_roll = |e_x . (v_ball(X) + v_race(X))| / 2 with velocities relative to the
 contact point; :mod:`exudyn_bearing.solvers.quasistatic.kinematics` does
 this for the orbiting frame of a bearing ball. F_x, F_y act on the ball
 along e_x, e_y (the race gets the opposite); M_z acts on the ball about
-e_z = -n. Measured cost per call (``python validation/bench_quasistatic.py``,
+e_z = -n and M_y about e_y (the race gets the opposite moments). Measured cost per call (``python validation/bench_quasistatic.py``,
 compiled loop, shared 2-core machine): about 130 ns for Coulomb friction and
 210 ns for the traction curve at 8 strips x 1 point, 240 / 390 ns at 16
 strips, 650 ns for the EHL model at 8 strips.
@@ -102,24 +117,33 @@ from ..data import get_traction_model
 from .hertz import _ellipke
 from .traction import _inverse_rolling_speed, _traction_srr
 
-__all__ = ["contact_traction", "ContactTraction", "deformed_contact_radius", "spin_moment_coulomb",
+#: Strips along the major axis and points across each strip: the default of
+#: every solver (quasi-static, both dynamic engines), chosen by
+#: ``python validation/traction_convergence.py`` (dissipation within 1 % of a
+#: 64 x 8 integration and the spin-axis angle within 0.1 deg on its cases).
+DEFAULT_N_STRIPS = 32
+DEFAULT_N_ACROSS = 4
+
+__all__ = ["DEFAULT_N_STRIPS", "DEFAULT_N_ACROSS", "contact_traction", "ContactTraction", "deformed_contact_radius", "spin_moment_coulomb",
            "slip_profile", "pure_rolling_points"]
 
 
 @kernel(no_runtime=True)
-def _contact_traction(a, b, load, v0, w_n, c2, v_t, u_roll, h_central, h_min, code, params, n_strips, n_across):
+def _contact_traction(a, b, load, v0, w_n, c2, r_d, v_t, u_roll, h_central, h_min, code, params, n_strips,
+                       n_across):
     """Strip integration of the traction over a Hertz ellipse (module docstring).
 
-    Returns (F_x, F_y, M_z, P, QV) on body 1: forces [N], moment about e_z [N m],
-    dissipation [W], load-times-slip [N m/s].
+    Returns (F_x, F_y, M_z, P, QV, M_y) on body 1: forces [N], moment about e_z [N m],
+    dissipation [W], load-times-slip [N m/s], curvature moment about e_y [N m].
     """
     fx = 0.0
     fy = 0.0
     mz = 0.0
+    my2 = 0.0
     power = 0.0
     qv = 0.0
     if load <= 0.0 or a <= 0.0 or b <= 0.0 or n_strips < 1:
-        return fx, fy, mz, power, qv
+        return fx, fy, mz, power, qv, 0.0
     m = n_across if n_across > 0 else 1
     p0 = 1.5 * load / (math.pi * a * b)
     theta = math.pi / (m + 1)
@@ -135,7 +159,8 @@ def _contact_traction(a, b, load, v0, w_n, c2, v_t, u_roll, h_central, h_min, co
         wj = dv - (vr * vr * vr - vl * vl * vl) / 3.0  # int (1 - v^2) dv over the strip
         sm = math.sqrt(max(1.0 - vm * vm, 0.0))
         y = a * vm
-        vx = v0 - w_n * y + c2 * y * y
+        y2 = y * y
+        vx = v0 - w_n * y + c2 * y2
         ck = 1.0  # cos(0), sin(0): start of the node recurrence
         sk = 0.0
         for _k in range(m):
@@ -160,9 +185,11 @@ def _contact_traction(a, b, load, v0, w_n, c2, v_t, u_roll, h_central, h_min, co
             fx += tx
             fy += ty
             mz += x * ty - y * tx
+            my2 += tx * y2
             power += mu * dq * speed
             qv += dq * speed
-    return fx, fy, mz, power, qv
+    my = my2 / (2.0 * r_d) if r_d > 0.0 else 0.0
+    return fx, fy, mz, power, qv, my
 
 
 class ContactTraction(NamedTuple):
@@ -173,10 +200,11 @@ class ContactTraction(NamedTuple):
     moment_z: float    #: moment about the contact normal e_z at the centre [N m]
     dissipation: float  #: frictional power [W]
     qv: float          #: load-times-slip integral [N m/s]
+    moment_y: float = 0.0  #: curvature (rolling-resistance) moment about e_y at the centre [N m]
 
 
 def contact_traction(a, b, load, v0, spin, c2=0.0, v_t=0.0, u_roll=1.0, h_central=0.0, h_min=0.0,
-                     model="coulomb_0.1", n_strips=32, n_across=1) -> ContactTraction:
+                     model="coulomb_0.1", n_strips=32, n_across=1, r_d=0.0) -> ContactTraction:
     """Traction force, spin moment, dissipation and QV of one Hertz contact.
 
     Parameters
@@ -201,6 +229,10 @@ def contact_traction(a, b, load, v0, spin, c2=0.0, v_t=0.0, u_roll=1.0, h_centra
         Traction model or catalogue name (default Coulomb mu = 0.1).
     n_strips, n_across : int
         Strips along the major axis and points across each strip.
+    r_d : float
+        Radius of the pressed surface across the rolling direction [m]
+        (:func:`deformed_contact_radius`; c2 = omega_roll / (2 r_d)); sets the
+        curvature moment M_y. 0 (default): no curvature moment.
 
     Returns
     -------
@@ -215,8 +247,8 @@ def contact_traction(a, b, load, v0, spin, c2=0.0, v_t=0.0, u_roll=1.0, h_centra
     """
     m = get_traction_model(model)
     return ContactTraction(*_contact_traction(float(a), float(b), float(load), float(v0), float(spin), float(c2),
-                                              float(v_t), float(u_roll), float(h_central), float(h_min), m.code,
-                                              m.vector, int(n_strips), int(n_across)))
+                                              float(r_d), float(v_t), float(u_roll), float(h_central),
+                                              float(h_min), m.code, m.vector, int(n_strips), int(n_across)))
 
 
 def spin_moment_coulomb(mu, load, a, b):

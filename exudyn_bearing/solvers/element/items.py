@@ -73,6 +73,7 @@ class ItemsMixin:
         outer_axes = initial_ring_pose(mbs, *self.rings_spec[1])[1]
         self._setup_defects_and_signals(outer_axes, float(self.scenario.dt) * (self.subSteps if fast else 1))
         self._t_commit = 0.0
+        self._t_energy = 0.0  # body mode: the last time whose powers entered the energy integrals
         self._t_trial = -math.inf  # body mode: the latest time evaluated (-inf: none yet)
         # runs: [the Exudyn solver object of the current SolveDynamic, time of its first evaluation (inf: none)]
         self._run = [None, math.inf]

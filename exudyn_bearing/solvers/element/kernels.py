@@ -17,7 +17,7 @@ import math
 import numpy as np
 
 from ..._jit import kernel
-from ...model.contact import forces
+from ...model.contact import accumulate_energy, forces
 from ...model.layout import NDIAG, NGLOBAL, NSIGNAL, P_CAGE, P_IB, P_MB, P_MZ, P_NDEF, R_ANGLE, RING_N
 from ...model.motion import kick_drift
 
@@ -285,6 +285,7 @@ def advance_balls(n_sub, tau, t, t_end, p, table, work, rings0, rings1, rings, h
                     rings1[r, 8] * rings1[r, 15] + rings1[r, 11] * rings1[r, 16] + rings1[r, 14] * rings1[r, 17])
         w = forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist, dt, hz, fb, tb, fc, fr, glob, diag,
                    cage_load, want and i == n_sub - 1)
+        accumulate_energy(glob, dt)
         if w > worst:
             worst = w
         for r in range(2):

@@ -10,7 +10,7 @@ import warnings
 import numpy as np
 
 from ...data import InputError
-from ...model.contact import forces
+from ...model.contact import accumulate_energy, forces
 from ...model.layout import H_E1
 from ...model.stability import SimulationError, StepSizeWarning, step_warning
 from . import kernels as EK
@@ -70,6 +70,7 @@ class UserFunctionsMixin:
         run[1] = t
         if first:
             self._t_commit = t
+            self._t_energy = t
             return
         if abs(t - t_last) <= _T_EPS:
             return
@@ -81,6 +82,7 @@ class UserFunctionsMixin:
         self._hz[:] = 0.0
         self._t_commit = t
         self._t_trial = -math.inf
+        self._t_energy = t
         self._work[:] = self._work0
         self._sample_t.clear()
         self._sample_rows.clear()
@@ -119,6 +121,10 @@ class UserFunctionsMixin:
                                self.z, self.n_cage, self._ring_kind, self._ring_data, self._hist, self._hist_trial,
                                t - self._t_commit, self._hz, self._work, self._rings, self._fr, self._glob,
                                self._diag, self._cage_load, want, self._out)
+        if t > self._t_energy:
+            # the energy integrals: this evaluation's powers over the time since the last one that advanced
+            accumulate_energy(self._glob, t - self._t_energy)
+            self._t_energy = t
         return self._after_step(t, t0, worst, want, True)
 
     def _make_fast_uf(self):

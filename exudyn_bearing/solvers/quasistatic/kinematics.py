@@ -65,7 +65,8 @@ from ..._jit import kernel
 from ...physics.contact_slip import _contact_traction, pure_rolling_points, spin_moment_coulomb
 
 __all__ = ["CONTROLS", "GEO_FIELDS", "CONTACT_FIELDS", "race_control", "jones_outer_controls", "ball_contacts",
-           "minimum_energy", "traction_equilibrium", "dissipation_at_beta", "spin_axis_angle", "rolling_points"]
+           "minimum_energy", "traction_equilibrium", "dissipation_at_beta", "spin_axis_angle", "rolling_points",
+           "axial_torque_on_ball"]
 
 #: Kinematic hypotheses.
 CONTROLS = ("outer", "inner", "auto", "min-energy", "equilibrium")
@@ -75,7 +76,7 @@ GEO_FIELDS = ("omega_o", "omega_i", "c_r", "c_z", "no_r", "no_z", "ni_r", "ni_z"
 (G_WO, G_WI, G_CR, G_CZ, G_NOR, G_NOZ, G_NIR, G_NIZ, G_RB, G_RDO, G_RDI, G_AO, G_BO, G_QO, G_AI, G_BI, G_QI,
  G_HCO, G_HMO, G_HCI, G_HMI) = range(len(GEO_FIELDS))
 #: Per-contact results of :func:`ball_contacts` (row 0 outer, row 1 inner).
-CONTACT_FIELDS = ("v0", "w_n", "c2", "u", "spin", "roll", "f_x", "f_y", "m_z", "dissipation", "qv")
+CONTACT_FIELDS = ("v0", "w_n", "c2", "u", "spin", "roll", "f_x", "f_y", "m_z", "dissipation", "qv", "m_y")
 NC = len(CONTACT_FIELDS)
 
 
@@ -104,8 +105,8 @@ def _ball_contacts(omega_m, w_r, w_z, v_t, geo, code, params, n_strips, n_across
             wring, nr, nz, rd, a, b, q, hc, hm = (geo[G_WI], geo[G_NIR], geo[G_NIZ], geo[G_RDI], geo[G_AI],
                                                   geo[G_BI], geo[G_QI], geo[G_HCI], geo[G_HMI])
         v0, wn, c2, u, spin, roll = _slip_inputs(w_r, w_z, omega_m, wring, geo[G_CR], nr, nz, geo[G_RB], rd)
-        fx, fy, mz, p, qv = _contact_traction(a, b, q, v0, wn, c2, v_t, u, hc, hm, code, params, n_strips,
-                                              n_across)
+        fx, fy, mz, p, qv, my = _contact_traction(a, b, q, v0, wn, c2, rd, v_t, u, hc, hm, code, params, n_strips,
+                                                  n_across)
         out[k, 0] = v0
         out[k, 1] = wn
         out[k, 2] = c2
@@ -117,6 +118,7 @@ def _ball_contacts(omega_m, w_r, w_z, v_t, geo, code, params, n_strips, n_across
         out[k, 8] = mz
         out[k, 9] = p
         out[k, 10] = qv
+        out[k, 11] = my
         total += p
     return total
 
@@ -128,6 +130,15 @@ def ball_contacts(kin, geo, model, n_strips, n_across):
     _ball_contacts(float(kin[0]), float(kin[1]), float(kin[2]), v_t, geo, model.code, model.vector, n_strips,
                    n_across, out)
     return out
+
+
+def axial_torque_on_ball(contact, c_r, r_b, nr, nz):
+    """Torque about the bearing axis [N m] that one contact's traction exerts on the ball: the
+    rolling-direction force F_x at the contact radius c_r + R_b n_r, the spin moment M_z about
+    e_z = -n and the curvature moment M_y about t = (n_z, -n_r) (``contact`` a row of
+    :func:`ball_contacts`). Its reaction acts on the race, so it is the torque that drives the race:
+    in a steady orbit sum_k torque_k omega_k = the contacts' dissipation (the balls take no power)."""
+    return (contact[6] * (c_r + r_b * nr) - contact[8] * nz - contact[11] * nr)
 
 
 def spin_axis_angle(w_r, w_z):
@@ -230,10 +241,11 @@ def traction_equilibrium(geo, model, n_strips, n_across, start, inertia):
       [2]_); for given (omega_m, w_r, w_z) it fixes v_t (the root nearest
       zero: the traction rises from zero with the slip);
     * no net traction along the orbit (a cageless ball): F_x,o + F_x,i = 0;
-    * the in-plane moment: sum_k F_x,k R_b (-n_z, n_r) - M_z,k (n_r, n_z) =
-      (-J omega_m w_psi, 0) (the rolling-direction tractions at their levers
-      and the spin moments about the contact normals, r and z components,
-      turn the yaw component of the spin with the orbit).
+    * the in-plane moment: sum_k F_x,k R_b (-n_z, n_r) - M_z,k (n_r, n_z)
+      + M_y,k (n_z, -n_r) = (-J omega_m w_psi, 0) (the rolling-direction
+      tractions at their levers, the spin moments about the contact normals
+      and the curvature moments about t_k, r and z components, turn the yaw
+      component of the spin with the orbit).
 
     These are the ball's Newton-Euler equations in a steady orbit (all balls
     alike, as under thrust): a dynamic run with the same traction model
@@ -279,8 +291,8 @@ def traction_equilibrium(geo, model, n_strips, n_across, start, inertia):
         m_r = m_z = 0.0
         for k in range(2):
             nr, nz = normals[k]
-            m_r += -out[k, 6] * rb * nz - out[k, 8] * nr
-            m_z += out[k, 6] * rb * nr - out[k, 8] * nz
+            m_r += -out[k, 6] * rb * nz - out[k, 8] * nr + out[k, 11] * nz
+            m_z += out[k, 6] * rb * nr - out[k, 8] * nz - out[k, 11] * nr
         m_r += j_eff[0] * wm * v_t / rb          # = -(-J omega_m w_psi), w_psi = v_t / R_b
         return np.array([f_x, m_r / rb, m_z / rb]) / qref
 

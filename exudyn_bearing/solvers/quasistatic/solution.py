@@ -21,7 +21,12 @@ UNITS = {
     "rolling_point_outer": "m (x1, along the major axis from the centre)",
     "rolling_point_inner": "m (x2)", "dissipation_inner": "W (whole bearing)",
     "dissipation_outer": "W (whole bearing)", "dissipation_total": "W (whole bearing)",
-    "dissipation_inner_ball": "W", "dissipation_outer_ball": "W", "qv_inner_ball": "N m/s",
+    "dissipation_inner_ball": "W", "dissipation_outer_ball": "W",
+    "friction_torque": "N m (torque that drives the inner ring, whole bearing)",
+    "drive_power": "W (friction_torque omega + outer-ring torque omega_outer)",
+    "energy_residual": "- ((drive_power - dissipation_total) / drive_power; 0 in the traction equilibrium)",
+    "drive_torque_inner_ball": "N m (axial torque of the inner contact's traction on the ball)",
+    "drive_torque_outer_ball": "N m (axial torque of the outer contact's traction on the ball)", "qv_inner_ball": "N m/s",
     "qv_outer_ball": "N m/s", "qv_total": "N m/s (whole bearing)", "traction_drag": "N (sum of the rolling-direction traction on the ball: zero in a true steady state without cage)",
     "gyro_traction_inner": "- (traction / load the inner race must supply for the gyroscopic moment)",
     "gyro_traction_outer": "-", "h_central_inner": "m", "h_central_outer": "m", "u_roll_inner": "m/s",
@@ -90,6 +95,26 @@ class QuasiStaticSolution:
         return self.dissipation_inner + self.dissipation_outer
 
     @property
+    def friction_torque(self) -> float:
+        """Torque that drives the inner ring [N m] (whole bearing; positive when it must be driven):
+        the axial torque of the tractions of the inner contacts on the balls."""
+        return float(np.sum(self.balls["drive_torque_inner_ball"]))
+
+    @property
+    def drive_power(self) -> float:
+        """Power the turning rings put into the bearing [W]: friction_torque omega + outer torque omega_outer."""
+        return (self.friction_torque * self.omega
+                + float(np.sum(self.balls["drive_torque_outer_ball"])) * self.omega_outer)
+
+    @property
+    def energy_residual(self) -> float:
+        """(drive power - dissipation) / drive power [-]: zero to round-off when every ball is in its
+        steady traction equilibrium (control ``equilibrium``); a kinematic hypothesis (race control,
+        minimum energy) leaves a net traction on the ball and shows here. NaN without drive power."""
+        p = self.drive_power
+        return (p - self.dissipation_total) / p if p != 0.0 else float("nan")
+
+    @property
     def q_max_inner(self) -> float:
         return float(np.max(self.balls["q_inner"]))
 
@@ -116,6 +141,9 @@ class QuasiStaticSolution:
         d["dissipation_inner"] = self.dissipation_inner
         d["dissipation_outer"] = self.dissipation_outer
         d["dissipation_total"] = self.dissipation_total
+        d["friction_torque"] = self.friction_torque
+        d["drive_power"] = self.drive_power
+        d["energy_residual"] = self.energy_residual
         d["qv_total"] = float(np.sum(b["qv_inner_ball"]) + np.sum(b["qv_outer_ball"]))
         d.update(self.geometry)
         d["stiffness"] = self.stiffness

@@ -42,7 +42,9 @@ from ...data import (MAX_FREE_CONTACT_ANGLE, BallBearing, InputError, Lubricant,
 from ...physics import ehl
 from ...physics import hertz as _hz
 from ...physics import kinematics as _kin
-from ...physics.contact_slip import deformed_contact_radius
+from ...data.errors import check_finite
+from ...data.traction import DEFAULT_REGULARIZING_SRR, regularized
+from ...physics.contact_slip import DEFAULT_N_ACROSS, DEFAULT_N_STRIPS, deformed_contact_radius
 from ...physics.geometry import _raceway_radii_cos
 from ...physics.load_distribution import check_axial_load
 from . import kinematics as km
@@ -90,7 +92,8 @@ def _contact_state(geom, balls, e_prime, method):
 def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=0.0, omega_outer=0.0,
                       control="auto", traction="lambda_dem", lubricant: Lubricant | str | None = None,
                       ring_growth=True, fit=0.0, temperatures=None, fixed=None, hertz_method="exact",
-                      phase=0.0, n_strips=32, n_across=4, shoulder_angle=MAX_FREE_CONTACT_ANGLE,
+                      phase=0.0, n_strips=DEFAULT_N_STRIPS, n_across=DEFAULT_N_ACROSS,
+                      traction_regularizing_srr=DEFAULT_REGULARIZING_SRR, shoulder_angle=MAX_FREE_CONTACT_ANGLE,
                       stiffness=True, start=None) -> QuasiStaticSolution:
     """Quasi-static equilibrium of a ball bearing with free inner-ring DOFs, speed effects and kinematics.
 
@@ -126,7 +129,14 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
     phase : float
         Azimuth of ball 0 [rad].
     n_strips, n_across : int
-        Strip integration of slip and traction over each ellipse.
+        Strip integration of slip and traction over each ellipse (defaults:
+        :data:`~exudyn_bearing.physics.contact_slip.DEFAULT_N_STRIPS` x
+        ``DEFAULT_N_ACROSS``, the same in the dynamic engines).
+    traction_regularizing_srr : float
+        Slide-to-roll ratio below which a Coulomb-type traction law without
+        its own regularisation rises linearly (as in the dynamic engines:
+        :data:`~exudyn_bearing.data.traction.DEFAULT_REGULARIZING_SRR`; 0
+        keeps it discontinuous).
     shoulder_angle : float
         Largest angle from the groove bottom that a contact ellipse may reach [rad].
     stiffness : bool
@@ -157,7 +167,10 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
     w_o = _number("omega_outer", omega_outer)
     if control not in km.CONTROLS:
         raise InputError(f"control: must be one of {', '.join(km.CONTROLS)}, got {control!r}")
-    model = get_traction_model(traction)
+    srr = check_finite("traction_regularizing_srr", traction_regularizing_srr)
+    if not 0.0 <= srr <= 1.0:
+        raise InputError(f"traction_regularizing_srr: must lie in [0, 1], got {srr:g}")
+    model = regularized(get_traction_model(traction), srr)
     if lubricant is None:
         lub = default_lubricant()
     elif isinstance(lubricant, Lubricant):
@@ -412,7 +425,7 @@ def _ball_results(b, geom, psi, balls, cs, kin, geo, model, n_strips, n_across, 
     names = ("spin_roll_inner", "spin_roll_outer", "rolling_point_outer", "rolling_point_inner",
              "dissipation_inner_ball", "dissipation_outer_ball", "qv_inner_ball", "qv_outer_ball",
              "traction_drag", "gyro_traction_inner", "gyro_traction_outer", "h_central_inner", "h_central_outer", "h_min_inner",
-             "h_min_outer", "u_roll_inner", "u_roll_outer")
+             "h_min_outer", "u_roll_inner", "u_roll_outer", "drive_torque_inner_ball", "drive_torque_outer_ball")
     for n in names:
         out[n] = np.zeros(z)
     ys = -1.0 + (2.0 * np.arange(n_strips) + 1.0) / n_strips
@@ -437,6 +450,9 @@ def _ball_results(b, geom, psi, balls, cs, kin, geo, model, n_strips, n_across, 
         x1, x2 = km.rolling_points(c, geo[j])
         out["rolling_point_outer"][j], out["rolling_point_inner"][j] = x1, x2
         out["traction_drag"][j] = c[0, 6] + c[1, 6]
+        for k, tag, nr, nz in ((0, "outer", geo[j, km.G_NOR], geo[j, km.G_NOZ]),
+                               (1, "inner", geo[j, km.G_NIR], geo[j, km.G_NIZ])):
+            out[f"drive_torque_{tag}_ball"][j] = km.axial_torque_on_ball(c[k], geo[j, km.G_CR], geo[j, km.G_RB], nr, nz)
         # friction coefficient the hypothesis asks of each race to hold the gyroscopic moment
         out["gyro_traction_outer"][j] = abs(fto[j]) / balls[j, B_QO] if balls[j, B_QO] > 0 else 0.0
         out["gyro_traction_inner"][j] = abs(fti[j]) / balls[j, B_QI] if balls[j, B_QI] > 0 else 0.0

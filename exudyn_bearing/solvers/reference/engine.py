@@ -99,6 +99,7 @@ class ReferenceEngine:
         sig_every = s.signal_every
         s_sig = np.zeros((n_steps // sig_every if sig_every else 0, 1 + NSIGNAL))
         sig_acc = np.zeros(NSIGNAL + 1)
+        glob = np.zeros(NGLOBAL)  # the run's energy integrals accumulate here
         # forces at t = 0 (Verlet needs them on entry); the ball body frames start the first step unturned
         frames = hist[:, H_E1:].copy()
         evaluate(0.0, p, self.table, xb, vb, wb, xc, vc, ring, ring_poses(), hist, hz, fb, tb, fc,
@@ -115,7 +116,7 @@ class ReferenceEngine:
         integrate(0, 0.0, p, self.table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring, every, 0,
                   buf["t"][:0], buf["glob"][:0], buf["diag"][:0], buf["cage_load"][:0], buf["xb"][:0],
                   buf["vb"][:0], buf["wb"][:0], buf["xc"][:0], buf["vc"][:0], buf["ring"][:0],
-                  sig_every, sig_acc, s_sig)
+                  sig_every, sig_acc, s_sig, glob)
         wall0 = time.perf_counter()
         last_print = wall0
         while done < n_steps:
@@ -125,7 +126,7 @@ class ReferenceEngine:
                 m, done * s.dt, p, self.table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring,
                 every, done, buf["t"][sl], buf["glob"][sl], buf["diag"][sl], buf["cage_load"][sl],
                 buf["xb"][sl], buf["vb"][sl], buf["wb"][sl], buf["xc"][sl], buf["vc"][sl], buf["ring"][sl],
-                sig_every, sig_acc, s_sig)
+                sig_every, sig_acc, s_sig, glob)
             done += steps
             k_samp += ns
             if status != 0:

@@ -23,7 +23,7 @@ import math
 import numpy as np
 
 from ..._jit import kernel
-from ...model.contact import forces
+from ...model.contact import accumulate_energy, forces
 from ...model.layout import (NSIGNAL, P_AXIAL_FREE, P_CAGE, P_DT, P_FA, P_FR, P_IB, P_MAX_OVERLAP, P_MB, P_MR,
                              P_MZ, P_NDEF, P_T_DOWN, P_T_STEADY, P_T_UP, P_W_MAX, R_ANGLE)
 from ...model.motion import kick_drift, omega_profile, ring_poses, spin_angle
@@ -102,14 +102,16 @@ def _signal_step(k_step, t, p, rings, fr, fring, sig_every, sig_acc, s_sig):
 @kernel
 def run_verlet(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring,
                sample_every, step0, s_t, s_glob, s_diag, s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring,
-               sig_every, sig_acc, s_sig):
+               sig_every, sig_acc, s_sig, glob):
     """Velocity-Verlet (the DEM papers' scheme) for ``n_steps`` steps from t0.
 
     Forces must hold the values at t0 on entry; damping and friction see the
     half-step velocity. Every ``sample_every``-th step (counted from
     ``step0``) the state and diagnostics go to the next row of the s_*
     buffers; with ``sig_every`` > 0 the signals go to ``s_sig`` (module
-    docstring). Returns (steps done, samples written, status): status 0 ok,
+    docstring). ``glob`` (NGLOBAL) is kept by the caller for the whole run:
+    its drive_work and dissipated_work accumulate the powers of every step.
+    Returns (steps done, samples written, status): status 0 ok,
     1 non-finite state, 2 runaway overlap (> P_MAX_OVERLAP R_b).
     """
     dt = p[P_DT]
@@ -119,7 +121,6 @@ def run_verlet(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb
     inv_ib = 1.0 / p[P_IB]
     inv_mz = 1.0 / p[P_MZ] if p[P_CAGE] > 0.5 else 0.0
     inv_mr = 1.0 / p[P_MR]
-    glob = np.zeros(s_glob.shape[1])
     diag = np.zeros((z, 2, s_diag.shape[3]))
     cage_load = np.zeros((z, 2))
     rings = ring_poses()
@@ -139,6 +140,7 @@ def run_verlet(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb
         worst = forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist, dt, hz, fb, tb, fc, fr, glob, diag,
                        cage_load, want)
         _inner_ring_force(p, fr, fring)
+        accumulate_energy(glob, dt)
         if sig_every > 0:
             _signal_step(step0 + step + 1, t, p, rings, fr, fring, sig_every, sig_acc, s_sig)
         for j in range(z):
@@ -200,13 +202,13 @@ def _rk_set(y0x, y0v, y0w, y0xc, y0vc, y0r, kx, kv, kw, kxc, kvc, kr, stage, f,
 @kernel
 def run_rk4(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring,
             sample_every, step0, s_t, s_glob, s_diag, s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring,
-            sig_every, sig_acc, s_sig):
+            sig_every, sig_acc, s_sig, glob):
     """Classical fourth-order Runge-Kutta, for history-free scenes (same
     interface and status codes as :func:`run_verlet`; it records no signals
-    and keeps no ball orientation: Scenario allows neither with rk4)."""
+    and keeps no ball orientation: Scenario allows neither with rk4). The
+    energy integrals take the stage powers with the method's weights."""
     dt = p[P_DT]
     z = xb.shape[0]
-    glob = np.zeros(s_glob.shape[1])
     diag = np.zeros((z, 2, s_diag.shape[3]))
     cage_load = np.zeros((z, 2))
     rings = ring_poses()
@@ -234,17 +236,21 @@ def run_rk4(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, f
         y0r[:] = ring
         worst = _rk_stage(t, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc, fr, fring, glob, diag,
                           cage_load, kx, kv, kw, kxc, kvc, kr, 0)
+        accumulate_energy(glob, dt / 6.0)
         if worst > p[P_MAX_OVERLAP] or not math.isfinite(worst):
             return step, n_samp, 2
         _rk_set(y0x, y0v, y0w, y0xc, y0vc, y0r, kx, kv, kw, kxc, kvc, kr, 0, 0.5 * dt, xb, vb, wb, xc, vc, ring)
         _rk_stage(t + 0.5 * dt, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc, fr, fring, glob, diag,
                   cage_load, kx, kv, kw, kxc, kvc, kr, 1)
+        accumulate_energy(glob, dt / 3.0)
         _rk_set(y0x, y0v, y0w, y0xc, y0vc, y0r, kx, kv, kw, kxc, kvc, kr, 1, 0.5 * dt, xb, vb, wb, xc, vc, ring)
         _rk_stage(t + 0.5 * dt, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc, fr, fring, glob, diag,
                   cage_load, kx, kv, kw, kxc, kvc, kr, 2)
+        accumulate_energy(glob, dt / 3.0)
         _rk_set(y0x, y0v, y0w, y0xc, y0vc, y0r, kx, kv, kw, kxc, kvc, kr, 2, dt, xb, vb, wb, xc, vc, ring)
         _rk_stage(t + dt, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc, fr, fring, glob, diag,
                   cage_load, kx, kv, kw, kxc, kvc, kr, 3)
+        accumulate_energy(glob, dt / 6.0)
         c = dt / 6.0
         for j in range(z):
             for d in range(3):
