@@ -121,7 +121,7 @@ from .traction import _inverse_rolling_speed, _traction_srr
 #: every solver (quasi-static, both dynamic engines), chosen by
 #: ``python validation/traction_convergence.py`` (dissipation within 1 % of a
 #: 64 x 8 integration and the spin-axis angle within 0.1 deg on its cases).
-DEFAULT_N_STRIPS = 32
+DEFAULT_N_STRIPS = 16
 DEFAULT_N_ACROSS = 4
 
 __all__ = ["DEFAULT_N_STRIPS", "DEFAULT_N_ACROSS", "contact_traction", "ContactTraction", "deformed_contact_radius", "spin_moment_coulomb",
