@@ -1,8 +1,10 @@
 """High-speed dynamics with traction over the contact ellipse, against the quasi-static solutions.
 
 Scene: the ACBB-120 of Gupta (2020) (15 balls, cageless) at 25,000 rpm under
-22,240 N thrust, the inner ring growing with speed, traction integrated over
-each Hertz ellipse (16 strips) with two traction models of the catalogue:
+22,240 N thrust, its own oil (MIL-L-23699 at its test temperature, catalogue
+``MIL-L-23699_492K``), the inner ring growing with speed, traction integrated
+over each Hertz ellipse (the solvers' default strips x points across) with
+two traction models of the catalogue:
 the illustrative traction curve and the EHL model with shear thinning and a
 limiting shear stress (docs/theory/quasistatic.md). For each model:
 
@@ -41,11 +43,13 @@ from exudyn_bearing.model.layout import D_ANGLE, D_LOAD, D_POWER, D_ROLL, D_SPIN
 from exudyn_bearing.outputs.contact_summary import spin_axis_angles
 from exudyn_bearing.outputs.jsonio import to_jsonable
 from exudyn_bearing.outputs.plotting import pyplot, save_figure
+from exudyn_bearing.physics.contact_slip import DEFAULT_N_ACROSS, DEFAULT_N_STRIPS
 from exudyn_bearing.simulate import quasistatic_start
 from exudyn_bearing.solvers.element.engine import ExudynEngine
 from exudyn_bearing.solvers.reference import ReferenceEngine
 
 OUT = Path(__file__).resolve().parent / "out"
+LUBRICANT = "MIL-L-23699_492K"
 MODELS = ("ehl_mil_l_23699_492K", "ester_curve_illustrative")
 T_END, DT = 0.04, 2e-6
 KEYS = ("q_inner", "q_outer", "alpha_inner", "alpha_outer", "orbital_speed", "ball_speed", "beta",
@@ -54,7 +58,7 @@ KEYS = ("q_inner", "q_outer", "alpha_inner", "alpha_outer", "orbital_speed", "ba
 
 def acbb_scenario(traction, control):
     return eb.Scenario(Fa=22240.0, Fr=0.0, omega=2618.0, t_end=T_END, dt=DT, cage=False, traction_level="ellipse",
-                       traction=traction, n_strips=16, n_across=1, ring_growth=True, initial="quasistatic",
+                       traction=traction, ring_growth=True, initial="quasistatic",
                        control=control, sample_dt=5e-4)
 
 
@@ -108,7 +112,7 @@ def run_acbb():
         starts = {}
         for control in ("outer", "min-energy", "equilibrium"):
             t0 = time.perf_counter()
-            start = quasistatic_start("ACBB-120", acbb_scenario(model, control))
+            start = quasistatic_start("ACBB-120", acbb_scenario(model, control), eb.load_lubricant(LUBRICANT))
             starts[control] = start
             entry["quasistatic"][control] = dict(qs_values(start["static"]), wall_s=time.perf_counter() - t0)
         engines = (("reference", ReferenceEngine), ("exudyn", ExudynEngine)) if model == MODELS[0] else \
@@ -116,7 +120,8 @@ def run_acbb():
         for engine, cls in engines:
             for control in ("outer", "min-energy"):
                 t0 = time.perf_counter()
-                rec = cls("ACBB-120", acbb_scenario(model, control), start=starts[control]).run()
+                rec = cls("ACBB-120", acbb_scenario(model, control), eb.load_lubricant(LUBRICANT),
+                          start=starts[control]).run()
                 s = series(rec.data)
                 st = steady(s)
                 name = f"{engine}, {control} start"
@@ -153,7 +158,8 @@ def plot_histories(model, entry):
         a.set_ylabel(label)
         a.grid(alpha=0.3)
     ax[2].legend(fontsize=7, loc="upper right")
-    fig.suptitle(f"ACBB-120, 25,000 rpm, 22,240 N, traction {model}: dynamics from two quasi-static starts")
+    fig.suptitle(f"ACBB-120, 25,000 rpm, 22,240 N, {LUBRICANT}, traction {model} ({DEFAULT_N_STRIPS} x "
+                 f"{DEFAULT_N_ACROSS} points): dynamics from two quasi-static starts")
     save_figure(fig, OUT / f"highspeed_acbb120_{model}.png", cols, trim=True)
 
 
@@ -167,9 +173,7 @@ def run_6208_axial():
             out[f"{level}, {initial}"] = {k: s[k] for k in ("cage_speed", "ball_spin", "beta", "dissipation_inner",
                                                             "dissipation_outer")}
             print(f"6208 axial, {level}, {initial}: {out[f'{level}, {initial}']}", flush=True)
-    sol = eb.solve_quasistatic("6208", Fa=3000.0, omega=500.0, control="equilibrium",
-                               traction=eb.data.get_traction_model("lambda_dem").replace(regularizing_srr=0.01),
-                               n_strips=8, n_across=1, stiffness=False)
+    sol = eb.solve_quasistatic("6208", Fa=3000.0, omega=500.0, control="equilibrium", stiffness=False)
     out["quasistatic equilibrium"] = {"orbital_speed": float(sol.balls["orbital_speed"][0]),
                                       "ball_spin": float(sol.balls["ball_speed_absolute"][0]),
                                       "beta": float(np.degrees(sol.balls["beta"][0]))}
@@ -192,7 +196,8 @@ def main():
     OUT.mkdir(exist_ok=True)
     warnings.simplefilter("ignore")
     report = {"acbb120": run_acbb(), "6208_axial": run_6208_axial(), "6208_papers": run_6208_papers(),
-              "settings": {"t_end": T_END, "dt": DT, "n_strips": 16, "n_across": 1}}
+              "settings": {"t_end": T_END, "dt": DT, "lubricant": LUBRICANT, "n_strips": DEFAULT_N_STRIPS,
+                           "n_across": DEFAULT_N_ACROSS}}
     (OUT / "highspeed.json").write_text(json.dumps(to_jsonable(report), indent=1))
     print(f"written {OUT / 'highspeed.json'}")
 
