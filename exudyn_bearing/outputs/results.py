@@ -66,10 +66,15 @@ LOSSES_NOT_MODELLED = {
               "ball drag and churning", "cage-pocket friction"),
     "ellipse": ("EHL rolling resistance", "ball drag and churning", "cage-pocket friction"),
 }
-#: Note of a point-level summary on its losses.
-POINT_LEVEL_NOTE = ("point traction level: no rolling losses; the tangential Cundall-Strack spring stores energy, so "
-                    "friction_torque and friction_power are mostly its exchange with the balls (about zero in a pure "
-                    "rolling steady state); traction_level='ellipse' models sliding, spin and curvature losses")
+#: Note of a point-level summary on its losses, by friction law.
+POINT_LEVEL_NOTES = {
+    "history": ("point traction level: no rolling losses; the tangential Cundall-Strack spring stores energy, so "
+                "friction_torque and friction_power are mostly its exchange with the balls (about zero in a pure "
+                "rolling steady state); traction_level='ellipse' models sliding, spin and curvature losses"),
+    "regularized": ("point traction level: no rolling losses; the regularised Coulomb force at the contact centre "
+                    "acts on gross sliding only; traction_level='ellipse' models sliding, spin and curvature losses"),
+    "none": "point traction level without friction: no tangential losses at all, only the normal damping",
+}
 
 #: Unit of every scalar summary entry (speeds are angular speeds in rad/s).
 SUMMARY_UNITS = {
@@ -288,8 +293,20 @@ class Results:
         src["load_power"] = ("work of the applied loads on the inner ring's translation minus its kinetic energy"
                              if loads is not None else "unknown (element: the loads belong to the user's model)")
         out = energy_balance(dur, drive, loads, diss, float(ke[i0]), float(ke[i1]))
+        floor = self._loss_floor() * abs(float(np.mean(self.global_series("omega")[w])))
+        if out["energy_residual"] is None:
+            src["energy_residual"] = "no drive power or a window of one sample: no residual"
+        elif abs(out["drive_power"]) < floor:
+            src["energy_residual"] = (f"drive power below the loss floor {floor:.3g} W (LOSS_FLOOR_MU (|Fr| + |Fa|) r_p "
+                                      f"omega): the residual compares noise and means little")
+        else:
+            src["energy_residual"] = "(drive_power - dissipation - kinetic_energy_change / window length) / drive_power"
         out["energy_source"] = src
         return out
+
+    def _loss_floor(self) -> float:
+        """LOSS_FLOOR_MU (|Fr| + |Fa|) r_p [N m]: the smallest friction torque judged (:mod:`.window_checks`)."""
+        return LOSS_FLOOR_MU * (abs(self.scenario.Fr) + abs(self.scenario.Fa)) * self.bearing.pitch_radius
 
     def steadiness(self, w: slice, window: dict) -> dict:
         """Is the window ``w`` steady (:func:`~.window_checks.steadiness`)?
@@ -322,7 +339,7 @@ class Results:
         if norm > 0.0:
             for k, axis in enumerate("xyz"):
                 q[f"ring_displacement.{axis}"] = (ring[:, k], "relative", norm)
-        torque_floor = LOSS_FLOOR_MU * (abs(self.scenario.Fr) + abs(self.scenario.Fa)) * self.bearing.pitch_radius
+        torque_floor = self._loss_floor()
         omega = self.global_series("omega")[w]
         for name, x, floor in (("friction_torque", -self.global_series("ring_torque")[w], torque_floor),
                                ("dissipation", self.dissipation_series()[w],
@@ -498,7 +515,7 @@ class Results:
             "losses_not_modelled": list(LOSSES_NOT_MODELLED[level]),
         }
         if level == "point":
-            out["note"] = POINT_LEVEL_NOTE
+            out["note"] = POINT_LEVEL_NOTES[self.scenario.friction]
         out.update(contact_summary(self.data, w, omega, b))
         if self.has_protocol():
             out["phases"] = self._phase_summaries()

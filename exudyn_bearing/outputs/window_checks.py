@@ -18,9 +18,9 @@ __all__ = ["STEADY_BLOCKS", "MIN_STEADY_SAMPLES", "DRIFT_REL", "OSCILLATION_REL"
 
 #: Blocks the window is cut into for the oscillation measure: the standard
 #: deviation of the block means (after removing the linear trend) shows a
-#: slow oscillation that the linear trend misses; eight blocks of a 0.1 s
-#: window are 12.5 ms long, three and a half ball passes of the 6208 at
-#: 500 rad/s, so the passage of the balls itself mostly averages out.
+#: slow oscillation that the linear trend misses; eight blocks of the main
+#: job's 0.1 s window are 12.5 ms long, and the series are averaged over the
+#: ball passage first (:func:`passage_average`).
 STEADY_BLOCKS = 8
 #: Fewest samples in which steadiness is measured (two per block); a shorter
 #: window is reported as not steady, "too short to measure".
@@ -29,18 +29,19 @@ MIN_STEADY_SAMPLES = 2 * STEADY_BLOCKS
 #: the mean) of ball loads, speeds and the ring displacement: half the 1 %
 #: within which issue 18 compares a DEM steady state with the quasi-static
 #: equilibrium, so that a window that passes can be compared at that
-#: tolerance. The README main job's steady window drifts by 0.11 % (q_max),
-#: the 7208 run of issue 18 (0.05 s, no cage) by 5 % (q_max) and 2.5 % (cage).
+#: tolerance. The README main job's steady window drifts by 0.19 % (q_max),
+#: the 7208 run of issue 18 (0.05 s, no cage) by 4.3 % (q_max) and 2.0 % (cage)
+#: (``simulate ... --json``, ``steady.drift``).
 DRIFT_REL = 0.005
 #: Largest relative standard deviation of the detrended block means of ball
 #: loads, speeds and ring displacement: the 1 % comparison tolerance itself
 #: (the window mean is then known to about 1 %/sqrt(8)). The main job's
-#: largest is 0.43 % (q_max_inner: the ball passage), the 7208's 1.8 %.
+#: largest is 0.21 % (q_max_inner), the 7208's 0.7 %.
 OSCILLATION_REL = 0.01
 #: Largest drift of a contact angle [deg] (absolute: a radial deep-groove
 #: bearing runs at 0 deg, where a relative measure means nothing): half the
 #: 0.5 deg within which issue 18 compares the spin-axis angle beta. The 7208
-#: run of issue 18 drifts by 1.1 deg in alpha_inner over its last quarter.
+#: run of issue 18 drifts by 0.71 deg in alpha_inner over its last quarter.
 DRIFT_DEG = 0.25
 #: Largest standard deviation of the detrended block means of a contact
 #: angle [deg]: the 0.5 deg comparison tolerance of issue 18.
@@ -191,8 +192,8 @@ def q_max_at_psi0(psi, q, tolerance: float = PSI0_TOLERANCE) -> tuple[float | No
     loaded samples ("interpolated"): the deflection of a ball between rings
     displaced rigidly by delta_r (radial) and delta_a (axial) is
     delta_a sin(alpha) + delta_r cos(alpha) cos(psi - psi_0) minus the
-    clearance (Harris & Kotzalas, Essential Concepts of Bearing Technology,
-    5th ed., 2007, ch. 7), and Q = K delta^1.5, so Q^(2/3) = A + C cos(psi)
+    clearance (Harris & Kotzalas, Rolling Bearing Analysis, 5th ed., 2006,
+    vol. 1 ch. 7; docs/theory/load_distribution.md), and Q = K delta^1.5, so Q^(2/3) = A + C cos(psi)
     + S sin(psi), linear in (A, C, S): a least-squares fit, exact for the
     Stribeck shape Q0 cos(psi)^1.5 and for every load-zone factor; its peak
     Q0 = (A + sqrt(C^2 + S^2))^1.5 lies at psi_0 = atan2(S, C). Fewer than
