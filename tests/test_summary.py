@@ -254,3 +254,16 @@ def test_cli_prints_a_steady_line_naming_the_quantity():
     assert rows["steady"].startswith("NO: alpha_inner drifts")
     rows = {r[0]: r[1] for r in _table(_summary_no_warning(_record()))}
     assert rows["steady"].startswith("yes") and rows["q_max_method"] == "inner: ball at psi=0, outer: ball at psi=0"
+
+
+def test_saved_json_holds_the_checks_and_warns_once(tmp_path):
+    import json
+
+    r = _record(alpha_deg=lambda t: 40.0 + 40.0 * t)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        _npz, js = r.save(tmp_path)          # the summary written to the file does not warn again
+    assert not [w for w in caught if issubclass(w.category, SteadyStateWarning)]
+    d = json.loads(js.read_text())
+    assert d["steady"]["steady"] is False and d["steady"]["flagged"] == ["alpha_inner", "alpha_outer"]
+    assert d["q_max_method"]["inner"] == "ball at psi=0" and d["units"]["drive_power"] == "W"

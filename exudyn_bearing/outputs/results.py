@@ -538,7 +538,9 @@ class Results:
         np.savez_compressed(npz, diag_fields=np.array(DIAG_FIELDS), global_fields=np.array(GLOBAL_FIELDS),
                             **({"signal_fields": np.array(SIGNAL_FIELDS)} if "signal" in self.data else {}),
                             **self.data)
-        summary = self.summary()
+        with warnings.catch_warnings():  # the summary's own call has warned; the file holds its "steady" entry
+            warnings.simplefilter("ignore", SteadyStateWarning)
+            summary = self.summary()
         summary["meta"] = {"bearing": self.bearing.to_dict(),
                            "scenario": dataclasses.asdict(self.scenario),
                            "lubricant": dataclasses.asdict(self.lubricant)}
