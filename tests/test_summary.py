@@ -26,7 +26,7 @@ ENERGY_FIELDS = ("damping_power", "drive_work", "dissipated_work", "kinetic_ener
 
 def _record(n=401, t1=0.1, offset_deg=0.0, alpha_deg=lambda t: 0.0 * t, ring_x=lambda t: 2.5e-5 + 0.0 * t,
             spin=lambda t: SPIN + 0.0 * t, fields=GLOBAL_FIELDS, glob_extra=None, scenario=None, engine="reference",
-            cage_speed=CAGE):
+            cage_speed=CAGE, outer_unloaded_zone=0.0):
     """A 6208 record with Z = 9 balls orbiting at ``cage_speed`` from ``offset_deg``, loads Q0 cos(psi)^1.5 on
     both races, the given contact angle [deg], ring x displacement [m] and ball spin [rad/s] as functions of t."""
     b = eb.catalog["6208"]
@@ -47,7 +47,8 @@ def _record(n=401, t1=0.1, offset_deg=0.0, alpha_deg=lambda t: 0.0 * t, ring_x=l
     load = Q0 * np.clip(c, 0.0, None) ** 1.5
     diag = np.zeros((n, z, 2, len(DIAG_FIELDS)))
     for race in (0, 1):
-        diag[:, :, race, DIAG_FIELDS.index("load")] = load
+        diag[:, :, race, DIAG_FIELDS.index("load")] = load if race == 0 else np.where(load > 0, load,
+                                                                                     outer_unloaded_zone)
         diag[:, :, race, DIAG_FIELDS.index("contact_angle")] = np.radians(alpha_deg(t))[:, None]
         diag[:, :, race, DIAG_FIELDS.index("regime")] = np.where(load > 0, 1, -1)
         diag[:, :, race, DIAG_FIELDS.index("lambda")] = 2.0
@@ -160,6 +161,10 @@ def test_summary_q_max_says_how_it_was_obtained():
     s = _summary_no_warning(_record(offset_deg=20.0, cage_speed=0.0))
     assert s["q_max_method"] == {"inner": "interpolated", "outer": "interpolated"}
     assert s["q_max_inner"] == pytest.approx(Q0, rel=1e-9) and s["q_max_inner_mean"] == pytest.approx(Q0 * math.cos(math.radians(20.0)) ** 1.5)
+    # balls outside the loaded zone pressed on the outer race by a centrifugal force of 50 N: the outer
+    # distribution is fitted over the balls whose inner contact is loaded, and is again Q0
+    s = _summary_no_warning(_record(offset_deg=20.0, cage_speed=0.0, outer_unloaded_zone=50.0))
+    assert s["q_max_outer"] == pytest.approx(Q0, rel=1e-9)
     s = _summary_no_warning(_record())
     # a sample within PSI0_TOLERANCE (1 deg) of psi = 0: at most 1 - cos(1 deg)^1.5 = 2.3e-4 below Q0
     assert s["q_max_method"]["inner"] == "ball at psi=0" and Q0 * (1 - 2.3e-4) < s["q_max_inner"] <= Q0

@@ -455,7 +455,9 @@ class Results:
         load_o = self.contact("load", "outer")[w]
         psi = self.azimuth()[w]
         q_i, method_i, _ = q_max_at_psi0(psi, load_i)
-        q_o, method_o, _ = q_max_at_psi0(psi, load_o)
+        # the outer race's balls outside the loaded zone press on it by their centrifugal force alone: the
+        # outer distribution is taken where the inner contact of the ball is loaded
+        q_o, method_o, _ = q_max_at_psi0(psi, np.where(load_i > 0.0, load_o, 0.0) if np.any(load_i > 0.0) else load_o)
         idx = self.nearest_psi0()[w]
         rows = np.arange(len(idx))
         lam_i = self.contact("lambda", "inner")[w][rows, idx]
