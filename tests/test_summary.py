@@ -21,11 +21,20 @@ CAGE = 198.0         # rad/s
 SPIN = 950.0         # rad/s
 TORQUE = 0.04        # N m that drives the ring (the balls' torque on the ring is -TORQUE)
 POWER = 19.0         # W of friction
-ENERGY_FIELDS = ("damping_power", "drive_work", "dissipated_work", "kinetic_energy")
+#: the engines' energy fields (model.layout), taken out of the synthetic records unless a test puts them in
+ENERGY_FIELDS = ("damping_power", "drive_power", "drive_work", "dissipated_work", "kinetic_energy")
+BASE_FIELDS = tuple(f for f in GLOBAL_FIELDS if f not in ENERGY_FIELDS)
+WITH_ENERGY = BASE_FIELDS + ENERGY_FIELDS
+
+
+@pytest.fixture(autouse=True)
+def base_fields(monkeypatch):
+    """Records without the energy fields by default (the layout of the summary module patched to match)."""
+    monkeypatch.setattr(results_module, "GLOBAL_FIELDS", BASE_FIELDS)
 
 
 def _record(n=401, t1=0.1, offset_deg=0.0, alpha_deg=lambda t: 0.0 * t, ring_x=lambda t: 2.5e-5 + 0.0 * t,
-            spin=lambda t: SPIN + 0.0 * t, fields=GLOBAL_FIELDS, glob_extra=None, scenario=None, engine="reference",
+            spin=lambda t: SPIN + 0.0 * t, fields=BASE_FIELDS, glob_extra=None, scenario=None, engine="reference",
             cage_speed=CAGE, outer_unloaded_zone=0.0):
     """A 6208 record with Z = 9 balls orbiting at ``cage_speed`` from ``offset_deg``, loads Q0 cos(psi)^1.5 on
     both races, the given contact angle [deg], ring x displacement [m] and ball spin [rad/s] as functions of t."""
@@ -176,12 +185,10 @@ def _ball_spin_energy(b, w):
     return 0.5 * b.n_balls * 0.4 * m * b.ball_radius ** 2 * w ** 2
 
 
-def test_energy_balance_from_the_sampled_series(monkeypatch):
+def test_energy_balance_from_the_sampled_series():
     # drive TORQUE * OMEGA = 20 W, friction 19 W, the balls spin up by 40 rad/s per second: the fallback
     # path (no energy fields in the record) gives the hand balance
-    fields = tuple(f for f in GLOBAL_FIELDS if f not in ENERGY_FIELDS)
-    monkeypatch.setattr(results_module, "GLOBAL_FIELDS", fields)
-    r = _record(spin=lambda t: SPIN + 40.0 * t, fields=fields)
+    r = _record(spin=lambda t: SPIN + 40.0 * t)
     s = _summary_no_warning(r)
     w, win = r.summary_window()
     t0, t1 = win["t0"], win["t1"]
@@ -197,28 +204,41 @@ def test_energy_balance_from_the_sampled_series(monkeypatch):
 
 def test_energy_balance_from_the_engine_fields(monkeypatch):
     # the engine's cumulative drive_work and dissipated_work and its kinetic_energy, when recorded, win over
-    # the sampled series (set here to other values)
-    fields = GLOBAL_FIELDS + tuple(f for f in ENERGY_FIELDS if f not in GLOBAL_FIELDS)
-    monkeypatch.setattr(results_module, "GLOBAL_FIELDS", fields)
-    r = _record(fields=fields, glob_extra={"drive_work": lambda t: 30.0 * t, "dissipated_work": lambda t: 29.0 * t,
-                                           "kinetic_energy": lambda t: 0.2 + 5.0 * t,
-                                           "damping_power": lambda t: 10.0 + 0.0 * t})
+    # the sampled series (set here to other values); the load power is in the engine's drive power
+    monkeypatch.setattr(results_module, "GLOBAL_FIELDS", WITH_ENERGY)
+    r = _record(fields=WITH_ENERGY, glob_extra={"drive_work": lambda t: 30.0 * t,
+                                                "dissipated_work": lambda t: 29.0 * t,
+                                                "kinetic_energy": lambda t: 0.2 + 5.0 * t,
+                                                "drive_power": lambda t: 99.0 + 0.0 * t,
+                                                "damping_power": lambda t: 10.0 + 0.0 * t})
     s = _summary_no_warning(r)
     _, win = r.summary_window()
     length = win["t1"] - win["t0"]
     assert s["drive_power"] == pytest.approx(30.0, rel=1e-9) and s["dissipation"] == pytest.approx(29.0, rel=1e-9)
+    assert s["load_power"] is None and s["energy_source"]["load_power"].startswith("included")
     assert s["kinetic_energy_change"] == pytest.approx(5.0 * length, rel=1e-9)
     assert s["energy_residual"] == pytest.approx((30.0 - 29.0 - 5.0) / 30.0, rel=1e-9)
     assert s["energy_source"]["drive_power"].startswith("drive_work")
     assert r.kinetic_energy_series()[0] == pytest.approx(0.2)
 
 
-def test_damping_power_joins_the_sampled_dissipation(monkeypatch):
-    fields = GLOBAL_FIELDS + (() if "damping_power" in GLOBAL_FIELDS else ("damping_power",))
-    fields = tuple(f for f in fields if f not in ("drive_work", "dissipated_work", "kinetic_energy"))
+def test_sampled_drive_power_and_damping_join_without_the_cumulative_fields(monkeypatch):
+    fields = BASE_FIELDS + ("damping_power", "drive_power")
     monkeypatch.setattr(results_module, "GLOBAL_FIELDS", fields)
-    s = _summary_no_warning(_record(fields=fields, glob_extra={"damping_power": lambda t: 0.5 + 0.0 * t}))
+    s = _summary_no_warning(_record(fields=fields, glob_extra={"damping_power": lambda t: 0.5 + 0.0 * t,
+                                                               "drive_power": lambda t: 21.0 + 0.0 * t}))
     assert s["dissipation"] == pytest.approx(POWER + 0.5, rel=1e-12)
+    assert s["drive_power"] == pytest.approx(21.0, rel=1e-12) and s["load_power"] is None
+
+
+def test_load_power_is_the_work_of_the_radial_load_on_the_ring():
+    # the ring moves by 1 nm along the 3000 N load at constant speed over the window: 3e-6 J more drive
+    r0 = _record()
+    w, win = r0.summary_window()
+    t0, t1 = win["t0"], win["t1"]
+    s = _summary_no_warning(_record(ring_x=lambda t: 2.5e-5 + 1e-9 * (t - t0) / (t1 - t0)))
+    assert s["load_power"] == pytest.approx(3000.0 * 1e-9 / (t1 - t0), rel=1e-6)
+    assert s["drive_power"] == pytest.approx(TORQUE * OMEGA + s["load_power"], rel=1e-12)
 
 
 def test_element_record_has_no_load_power_but_the_same_keys():

@@ -97,11 +97,13 @@ SUMMARY_DESCRIPTIONS = {
                       "it includes the rate of the energy stored in the tangential springs",
     "dissipation_inner": "frictional power of the inner contacts of all balls, time mean (a part of friction_power)",
     "dissipation_outer": "frictional power of the outer contacts of all balls, time mean (a part of friction_power)",
-    "drive_power": "power put into the bearing over the window: the drive of the inner ring's spin (friction_torque "
-                   "times omega, mean) plus load_power when known",
-    "load_power": "net power the applied loads pass on through the inner ring's translation: their work minus the "
-                  "change of the ring's translational kinetic energy, over the window length (reference engine; "
-                  "None for the element, whose loads belong to the user's model)",
+    "drive_power": "power the rings put into the balls and cage balls over the window (translation and rotation of "
+                   "both rings: the engine's drive_work); without that field the drive of the inner ring's spin "
+                   "(-ring_torque times omega, mean) plus load_power when known",
+    "load_power": "without the engine's drive fields only: net power the applied loads pass on through the inner "
+                  "ring's translation, their work minus the change of the ring's translational kinetic energy over "
+                  "the window length (reference engine; None for the element, whose loads belong to the user's "
+                  "model, and None when drive_power already counts it)",
     "dissipation": "dissipated power over the window: frictional power plus the normal damping of all contacts "
                    "(energy_source says which terms were available)",
     "kinetic_energy_change": "kinetic energy of balls and cage balls (translation and rotation) at the window's end "
@@ -255,24 +257,45 @@ class Results:
         ``dissipated_work`` (end minus start over the window length) and its
         ``kinetic_energy`` when recorded; else the time means of the sampled
         -ring_torque * omega and :meth:`dissipation_series`, and
-        :meth:`kinetic_energy_series`. ``load_power``: reference engine only,
+        :meth:`kinetic_energy_series`. The engine's drive power counts both
+        rings, translation and rotation; the sampled fallback counts the inner
+        ring's spin and adds ``load_power`` (reference engine only):
         F_applied . (x_ring(t1) - x_ring(t0)) minus the change of the ring's
         translational kinetic energy, over the window length."""
         t = self.t[w]
         i0, i1 = w.start, w.stop - 1
         dur = float(t[-1] - t[0])
         src = {}
+        loads = None
         if self.has_global("drive_work") and dur > 0.0:
             g = self.global_series("drive_work")
             drive = float(g[i1] - g[i0]) / dur
-            src["drive_power"] = "drive_work (engine field), end minus start over the window length"
+            src["drive_power"] = ("drive_work (engine field: the power of both rings on the balls and cage balls, "
+                                  "translation and rotation), end minus start over the window length")
+        elif self.has_global("drive_power"):
+            drive = float(np.mean(self.global_series("drive_power")[w]))
+            src["drive_power"] = "time mean of the sampled drive_power (engine field: both rings, all motions)"
         else:
             drive = float(np.mean(-self.global_series("ring_torque")[w] * self.global_series("omega")[w]))
-            src["drive_power"] = "time mean of the sampled -ring_torque * omega"
+            src["drive_power"] = "time mean of the sampled -ring_torque * omega, plus load_power"
+            if self.engine == "reference" and dur > 0.0:
+                ring = self.data["ring"]
+                f = np.array([self.scenario.Fr, 0.0, self.scenario.Fa])
+                v0, v1 = ring[i0, 3:6], ring[i1, 3:6]
+                work = float(f @ (ring[i1, :3] - ring[i0, :3]) - 0.5 * self.model_parameters()[L.P_MR]
+                             * (v1 @ v1 - v0 @ v0))
+                loads = work / dur
+        if loads is not None:
+            src["load_power"] = "work of the applied loads on the inner ring's translation minus its kinetic energy"
+        elif src["drive_power"].startswith("time mean of the sampled -ring_torque"):
+            src["load_power"] = "unknown (element: the loads belong to the user's model)"
+        else:
+            src["load_power"] = "included in drive_power (the engine field counts the rings' translation)"
         if self.has_global("dissipated_work") and dur > 0.0:
             g = self.global_series("dissipated_work")
             diss = float(g[i1] - g[i0]) / dur
-            src["dissipation"] = "dissipated_work (engine field), end minus start over the window length"
+            src["dissipation"] = ("dissipated_work (engine field: friction_power + damping_power integrated), end "
+                                  "minus start over the window length")
         else:
             diss = float(np.mean(self.dissipation_series()[w]))
             src["dissipation"] = ("time mean of the sampled friction_power + damping_power"
@@ -282,16 +305,6 @@ class Results:
         ke = self.kinetic_energy_series()
         src["kinetic_energy_change"] = ("kinetic_energy (engine field)" if self.has_global("kinetic_energy") else
                                         "from the sampled ball and cage-ball velocities")
-        loads = None
-        if self.engine == "reference" and dur > 0.0:
-            ring = self.data["ring"]
-            f = np.array([self.scenario.Fr, 0.0, self.scenario.Fa])
-            v0, v1 = ring[i0, 3:6], ring[i1, 3:6]
-            work = float(f @ (ring[i1, :3] - ring[i0, :3]) - 0.5 * self.model_parameters()[L.P_MR]
-                         * (v1 @ v1 - v0 @ v0))
-            loads = work / dur
-        src["load_power"] = ("work of the applied loads on the inner ring's translation minus its kinetic energy"
-                             if loads is not None else "unknown (element: the loads belong to the user's model)")
         out = energy_balance(dur, drive, loads, diss, float(ke[i0]), float(ke[i1]))
         floor = self._loss_floor() * abs(float(np.mean(self.global_series("omega")[w])))
         if out["energy_residual"] is None:
