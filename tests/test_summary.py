@@ -244,6 +244,7 @@ def test_load_power_is_the_work_of_the_radial_load_on_the_ring():
 def test_element_record_has_no_load_power_but_the_same_keys():
     a, b = _summary_no_warning(_record()), _summary_no_warning(_record(engine="exudyn"))
     assert set(a) == set(b) and b["load_power"] is None and b["drive_power"] == pytest.approx(TORQUE * OMEGA)
+    assert set(results_module.SUMMARY_KEYS) <= set(a)
 
 
 # -- definitions, sign, lubricant and traction -------------------------------------------
