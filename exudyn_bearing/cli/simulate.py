@@ -94,9 +94,18 @@ def scenario_from_args(args) -> Scenario:
 def _table(summary):
     units = summary["units"]
     w = summary["window"]
-    rows = [("window", f"{w['t0']:.6g} - {w['t1']:.6g} s, {w['phase']} ({w['rule']}, {w['samples']} samples)")]
+    st = summary["steady"]
+    rows = [("window", f"{w['t0']:.6g} - {w['t1']:.6g} s, {w['phase']} ({w['rule']}, {w['samples']} samples)"),
+            ("steady", "yes (drift and oscillation within the thresholds of summary['steady'])" if st["steady"]
+             else f"NO: {st['reason']}")]
     rows += [(k, v, units.get(k)) for k, v in summary.items()
-             if not isinstance(v, (dict, list)) and k not in ("window",)]
+             if not isinstance(v, (dict, list)) and k not in ("window", "note")]
+    rows.append(("q_max_method", ", ".join(f"{race}: {m}" for race, m in summary["q_max_method"].items())))
+    rows += [(f"energy_source.{k}", v) for k, v in summary["energy_source"].items()]
+    rows += [("losses_modelled", "; ".join(summary["losses_modelled"])),
+             ("losses_not_modelled", "; ".join(summary["losses_not_modelled"]))]
+    if "note" in summary:
+        rows.append(("note", summary["note"]))
     rows += [(f"regime_fraction.{k}", v) for k, v in summary["regime_fraction"].items()]
     for name, ph in summary.get("phases", {}).items():
         rows.append((f"phase {name}", f"{ph['t0']:.4g} - {ph['t1']:.4g} s: omega {ph['omega']:.4g} rad/s, cage "

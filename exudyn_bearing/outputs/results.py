@@ -22,24 +22,59 @@ from __future__ import annotations
 import dataclasses
 import json
 import math
+import warnings
 from pathlib import Path
 
 import numpy as np
 
 from ..data import Lubricant, load_bearing
+from ..model import layout as L
 from ..model.layout import DIAG_FIELDS, GLOBAL_FIELDS, GLOBAL_UNITS, SIGNAL_FIELDS
+from ..model.parameters import scene_parameters
 from ..model.record import RunRecord
 from ..model.scenario import Scenario
 from ..physics.damping import REGIME_NAMES
 from .contact_summary import CONTACT_SUMMARY_UNITS, contact_summary
 from .jsonio import to_jsonable
+from .window_checks import (LOSS_FLOOR_MU, SPEED_FLOOR, SteadyStateWarning, energy_balance, q_max_at_psi0,
+                            steadiness)
 
-__all__ = ["Results", "SUMMARY_KEYS", "SUMMARY_UNITS", "PHASE_NAMES", "protocol_phases"]
+__all__ = ["Results", "SUMMARY_KEYS", "SUMMARY_UNITS", "SUMMARY_DESCRIPTIONS", "PHASE_NAMES", "LOSSES_MODELLED",
+           "LOSSES_NOT_MODELLED", "SteadyStateWarning", "protocol_phases"]
 
 #: Keys every engine's summary has.
-SUMMARY_KEYS = ("q_max_inner", "q_max_outer", "q_max_inner_mean", "q_max_outer_mean", "cage_speed", "ball_spin",
-                "lambda_outer_psi0", "lambda_inner_psi0", "regime_fraction", "window", "steps", "dt", "wall_s",
-                "units")
+SUMMARY_KEYS = ("q_max_inner", "q_max_outer", "q_max_method", "q_max_inner_mean", "q_max_outer_mean", "cage_speed",
+                "ball_spin", "lambda_outer_psi0", "lambda_inner_psi0", "regime_fraction", "window", "steady",
+                "friction_torque", "friction_power", "drive_power", "load_power", "dissipation",
+                "kinetic_energy_change", "energy_residual", "energy_source", "lubricant", "traction_model",
+                "traction_level", "losses_modelled", "losses_not_modelled", "steps", "dt", "wall_s", "units",
+                "descriptions")
+
+#: Losses each traction level models (docs/theory/dynamics.md, "Losses and the energy balance").
+LOSSES_MODELLED = {
+    "point": ("sliding friction at the contact centre (Cundall-Strack spring capped at mu(Lambda) Q, or "
+              "regularised Coulomb)", "normal damping of all contacts (hysteretic / squeeze film by Lambda; "
+                                      "critical damping of the cage contacts)"),
+    "ellipse": ("sliding (rolling-direction and transverse slip) integrated over the Hertz ellipse",
+                "spin (pivoting) friction over the ellipse", "curvature (Heathcote) slip over the ellipse",
+                "normal damping of all contacts (hysteretic / squeeze film by Lambda; critical damping of the "
+                "cage contacts)"),
+}
+#: Losses each traction level leaves out.
+LOSSES_NOT_MODELLED = {
+    "point": ("rolling losses: curvature (Heathcote) slip", "spin (pivoting) friction", "EHL rolling resistance",
+              "ball drag and churning", "cage-pocket friction"),
+    "ellipse": ("EHL rolling resistance", "ball drag and churning", "cage-pocket friction"),
+}
+#: Note of a point-level summary on its losses, by friction law.
+POINT_LEVEL_NOTES = {
+    "history": ("point traction level: no rolling losses; the tangential Cundall-Strack spring stores energy, so "
+                "friction_torque and friction_power are mostly its exchange with the balls (about zero in a pure "
+                "rolling steady state); traction_level='ellipse' models sliding, spin and curvature losses"),
+    "regularized": ("point traction level: no rolling losses; the regularised Coulomb force at the contact centre "
+                    "acts on gross sliding only; traction_level='ellipse' models sliding, spin and curvature losses"),
+    "none": "point traction level without friction: no tangential losses at all, only the normal damping",
+}
 
 #: Unit of every scalar summary entry (speeds are angular speeds in rad/s).
 SUMMARY_UNITS = {
@@ -48,7 +83,35 @@ SUMMARY_UNITS = {
     "lambda_outer_psi0": "-", "lambda_inner_psi0": "-", "regime_fraction": "-", "srr_mean": "-",
     "ring_displacement": "m", "friction_torque": GLOBAL_UNITS["ring_torque"],
     "friction_power": GLOBAL_UNITS["friction_power"], **CONTACT_SUMMARY_UNITS, "steps": "-", "dt": "s", "t_end": "s", "wall_s": "s", "stable_dt": "s",
-    "window.t0": "s", "window.t1": "s"}
+    "window.t0": "s", "window.t1": "s", "drive_power": "W", "load_power": "W", "dissipation": "W",
+    "kinetic_energy_change": "J", "energy_residual": "-"}
+
+#: What the loss and energy keys of the summary mean (docs/theory/dynamics.md,
+#: "Losses and the energy balance"); every summary carries it as ``descriptions``.
+SUMMARY_DESCRIPTIONS = {
+    "q_max_inner": "load of the ball at psi = 0 over the window, inner race (q_max_method: how it was obtained)",
+    "q_max_outer": "load of the ball at psi = 0 over the window, outer race (q_max_method: how it was obtained)",
+    "friction_torque": "torque that drives the inner ring about its axis, time mean: minus the torque of the balls "
+                       "on the ring; positive when the ring must be driven",
+    "friction_power": "frictional (tangential) power of all ball / raceway contacts, time mean; at the point level "
+                      "it includes the rate of the energy stored in the tangential springs",
+    "dissipation_inner": "frictional power of the inner contacts of all balls, time mean (a part of friction_power)",
+    "dissipation_outer": "frictional power of the outer contacts of all balls, time mean (a part of friction_power)",
+    "drive_power": "power the rings put into the balls and cage balls over the window (translation and rotation of "
+                   "both rings: the engine's drive_work); without that field the drive of the inner ring's spin "
+                   "(-ring_torque times omega, mean) plus load_power when known",
+    "load_power": "without the engine's drive fields only: net power the applied loads pass on through the inner "
+                  "ring's translation, their work minus the change of the ring's translational kinetic energy over "
+                  "the window length (reference engine; None for the element, whose loads belong to the user's "
+                  "model, and None when drive_power already counts it)",
+    "dissipation": "dissipated power over the window: frictional power plus the normal damping of all contacts "
+                   "(energy_source says which terms were available)",
+    "kinetic_energy_change": "kinetic energy of balls and cage balls (translation and rotation) at the window's end "
+                             "minus that at its start",
+    "energy_residual": "(drive_power - dissipation - kinetic_energy_change / window length) / drive_power; the "
+                       "elastic energy stored in the contacts is not counted (it returns in a steady window)",
+    "steady": "drift and oscillation of the reported quantities over the window against the thresholds named in it",
+}
 
 #: Protocol phases (Scenario: start-up ramp, steady phase, slow-down ramp, rest).
 PHASE_NAMES = ("start-up", "steady", "slow-down", "rest")
@@ -81,6 +144,7 @@ class Results:
         self.engine = record.engine
         self.stable_dt = record.stable_dt
         self.static = record.static
+        self._parameters = None
 
     # -- accessors -------------------------------------------------------
     @property
@@ -94,6 +158,39 @@ class Results:
 
     def global_series(self, name: str) -> np.ndarray:
         return self.data["glob"][:, GLOBAL_FIELDS.index(name)]
+
+    def has_global(self, name: str) -> bool:
+        """True when the run recorded the ``GLOBAL_FIELDS`` entry ``name`` (a
+        record of an engine without that field has fewer columns)."""
+        return name in GLOBAL_FIELDS and self.data["glob"].shape[1] > GLOBAL_FIELDS.index(name)
+
+    def model_parameters(self) -> np.ndarray:
+        """The scene's kernel parameter vector (:func:`~exudyn_bearing.model.parameters.scene_parameters`:
+        masses, switches; layout :mod:`exudyn_bearing.model.layout`)."""
+        if self._parameters is None:
+            self._parameters = scene_parameters(self.bearing, self.scenario, self.lubricant)
+        return self._parameters
+
+    def kinetic_energy_series(self) -> np.ndarray:
+        """Kinetic energy (n,) [J] of the balls and cage balls, translation and
+        rotation: the engine's ``kinetic_energy`` field when recorded, else from
+        the sampled velocities ``vb``, ``wb``, ``vc`` with the ball mass and
+        inertia and the cage-ball mass of the model parameters (the cage-ball
+        contacts are frictionless: a cage ball's spin, and its energy, never
+        change, and the reference engine does not integrate it)."""
+        if self.has_global("kinetic_energy"):
+            return self.global_series("kinetic_energy")
+        p, d = self.model_parameters(), self.data
+        ke = 0.5 * p[L.P_MB] * np.sum(d["vb"] ** 2, axis=(1, 2)) + 0.5 * p[L.P_IB] * np.sum(d["wb"] ** 2, axis=(1, 2))
+        if p[L.P_CAGE] > 0.5:
+            ke = ke + 0.5 * p[L.P_MZ] * np.sum(d["vc"] ** 2, axis=(1, 2))
+        return ke
+
+    def dissipation_series(self) -> np.ndarray:
+        """Dissipated power (n,) [W]: ``friction_power`` plus the engine's
+        ``damping_power`` when recorded."""
+        out = self.global_series("friction_power")
+        return out + self.global_series("damping_power") if self.has_global("damping_power") else out
 
     @property
     def signal_t(self) -> np.ndarray:
@@ -151,6 +248,136 @@ class Results:
     def nearest_psi0(self) -> np.ndarray:
         """Index of the ball nearest psi = 0 at every sample (n,)."""
         return np.argmin(np.abs(self.azimuth()), axis=1)
+
+    # -- checks of the summary window -----------------------------------
+    def energy(self, w: slice) -> dict:
+        """Energy balance of the samples ``w``
+        (:func:`~.window_checks.energy_balance`; ``energy_source`` names where
+        each term comes from). The engine's cumulative ``drive_work`` and
+        ``dissipated_work`` (end minus start over the window length) and its
+        ``kinetic_energy`` when recorded; else the time means of the sampled
+        -ring_torque * omega and :meth:`dissipation_series`, and
+        :meth:`kinetic_energy_series`. The engine's drive power counts both
+        rings, translation and rotation; the sampled fallback counts the inner
+        ring's spin and adds ``load_power`` (reference engine only):
+        F_applied . (x_ring(t1) - x_ring(t0)) minus the change of the ring's
+        translational kinetic energy, over the window length."""
+        t = self.t[w]
+        i0, i1 = w.start, w.stop - 1
+        dur = float(t[-1] - t[0])
+        src = {}
+        loads = None
+        if self.has_global("drive_work") and dur > 0.0:
+            g = self.global_series("drive_work")
+            drive = float(g[i1] - g[i0]) / dur
+            src["drive_power"] = ("drive_work (engine field: the power of both rings on the balls and cage balls, "
+                                  "translation and rotation), end minus start over the window length")
+        elif self.has_global("drive_power"):
+            drive = float(np.mean(self.global_series("drive_power")[w]))
+            src["drive_power"] = "time mean of the sampled drive_power (engine field: both rings, all motions)"
+        else:
+            drive = float(np.mean(-self.global_series("ring_torque")[w] * self.global_series("omega")[w]))
+            src["drive_power"] = "time mean of the sampled -ring_torque * omega, plus load_power"
+            if self.engine == "reference" and dur > 0.0:
+                ring = self.data["ring"]
+                f = np.array([self.scenario.Fr, 0.0, self.scenario.Fa])
+                v0, v1 = ring[i0, 3:6], ring[i1, 3:6]
+                work = float(f @ (ring[i1, :3] - ring[i0, :3]) - 0.5 * self.model_parameters()[L.P_MR]
+                             * (v1 @ v1 - v0 @ v0))
+                loads = work / dur
+        if loads is not None:
+            src["load_power"] = "work of the applied loads on the inner ring's translation minus its kinetic energy"
+        elif src["drive_power"].startswith("time mean of the sampled -ring_torque"):
+            src["load_power"] = "unknown (element: the loads belong to the user's model)"
+        else:
+            src["load_power"] = "included in drive_power (the engine field counts the rings' translation)"
+        if self.has_global("dissipated_work") and dur > 0.0:
+            g = self.global_series("dissipated_work")
+            diss = float(g[i1] - g[i0]) / dur
+            src["dissipation"] = ("dissipated_work (engine field: friction_power + damping_power integrated), end "
+                                  "minus start over the window length")
+        else:
+            diss = float(np.mean(self.dissipation_series()[w]))
+            src["dissipation"] = ("time mean of the sampled friction_power + damping_power"
+                                  if self.has_global("damping_power") else
+                                  "time mean of the sampled friction_power; the normal damping is not recorded by "
+                                  "this run and is left out")
+        ke = self.kinetic_energy_series()
+        src["kinetic_energy_change"] = ("kinetic_energy (engine field)" if self.has_global("kinetic_energy") else
+                                        "from the sampled ball and cage-ball velocities")
+        out = energy_balance(dur, drive, loads, diss, float(ke[i0]), float(ke[i1]))
+        floor = self._loss_floor() * abs(float(np.mean(self.global_series("omega")[w])))
+        if out["energy_residual"] is None:
+            src["energy_residual"] = "no drive power or a window of one sample: no residual"
+        elif abs(out["drive_power"]) < floor:
+            src["energy_residual"] = (f"drive power below the loss floor {floor:.3g} W (LOSS_FLOOR_MU (|Fr| + |Fa|) r_p "
+                                      f"omega): the residual compares noise and means little")
+        else:
+            src["energy_residual"] = "(drive_power - dissipation - kinetic_energy_change / window length) / drive_power"
+        out["energy_source"] = src
+        return out
+
+    def _loss_floor(self) -> float:
+        """LOSS_FLOOR_MU (|Fr| + |Fa|) r_p [N m]: the smallest friction torque judged (:mod:`.window_checks`)."""
+        return LOSS_FLOOR_MU * (abs(self.scenario.Fr) + abs(self.scenario.Fa)) * self.bearing.pitch_radius
+
+    def steadiness(self, w: slice, window: dict) -> dict:
+        """Is the window ``w`` steady (:func:`~.window_checks.steadiness`)?
+        Each series is first averaged over the passage period of the balls,
+        2 pi / (Z |cage speed|) (the outer ring at rest). Quantities: the
+        per-sample largest ball load of each race (q_max_*),
+        cage speed, mean ball spin, mean contact angle of each race over the
+        loaded contacts, the ring displacement (judged against the norm of
+        its mean), friction torque and dissipation (judged against at least
+        ``LOSS_FLOOR_MU (|Fr| + |Fa|) r_p`` and that times omega; judged only
+        when their mean is above that floor). A window
+        over the start-up or slow-down ramp is not steady by definition."""
+        t = self.t[w]
+        diag = self.data["diag"][w]
+        q = {}
+        for race, tag in ((0, "inner"), (1, "outer")):
+            load = diag[:, :, race, DIAG_FIELDS.index("load")]
+            if np.any(load > 0.0):
+                q[f"q_max_{tag}"] = (load.max(axis=1), "relative", abs(float(np.mean(load.max(axis=1)))))
+        omega_ref = abs(self.scenario.omega)
+        for name, x in (("cage_speed", self.cage_speed_series()[w]), ("ball_spin", self.ball_spin_series()[w].mean(1))):
+            q[name] = (x, "relative", max(abs(float(np.mean(x))), SPEED_FLOOR * omega_ref, 1e-300))
+        for race, tag in ((0, "inner"), (1, "outer")):
+            loaded = diag[:, :, race, DIAG_FIELDS.index("load")] > 0.0
+            ang = np.where(loaded, diag[:, :, race, DIAG_FIELDS.index("contact_angle")], 0.0).sum(axis=1)
+            n = loaded.sum(axis=1)
+            q[f"alpha_{tag}"] = (np.degrees(np.where(n > 0, ang / np.maximum(n, 1), np.nan)), "angle", None)
+        ring = self.data["ring"][w, :3]
+        norm = float(np.linalg.norm(ring.mean(axis=0)))
+        if norm > 0.0:
+            for k, axis in enumerate("xyz"):
+                q[f"ring_displacement.{axis}"] = (ring[:, k], "relative", norm)
+        torque_floor = self._loss_floor()
+        omega = self.global_series("omega")[w]
+        for name, x, floor in (("friction_torque", -self.global_series("ring_torque")[w], torque_floor),
+                               ("dissipation", self.dissipation_series()[w],
+                                torque_floor * abs(float(np.mean(omega))))):
+            mean = abs(float(np.mean(x)))
+            if max(mean, floor) > 0.0:
+                below = f"mean below the loss floor {floor:.3g} {SUMMARY_UNITS[name]}" if mean < floor else None
+                q[name] = (x, "loss", max(mean, floor), below)
+        ramps = [p for p in ("start-up", "slow-down") if p in window["phase"].split(", ")]
+        cage = abs(float(np.mean(q["cage_speed"][0])))
+        period = 2.0 * math.pi / (self.bearing.n_balls * cage) if cage > 0.0 else None
+        return steadiness(t, q, ramp=" and ".join(ramps) or None, period=period)
+
+    def traction_model_name(self) -> str:
+        """The tangential law in use: the catalogue traction model of the
+        ellipse level, or the point level's friction law and its mu."""
+        s = self.scenario
+        if s.traction_level == "ellipse":
+            return s.traction
+        if s.friction == "none":
+            return "none (frictionless)"
+        law = {"history": "Cundall-Strack spring capped at mu Q", "regularized": "regularised Coulomb"}[s.friction]
+        lam = s.lubrication and s.contact_law != "power"
+        mu = f"mu(Lambda) of lubricant {self.lubricant.name}" if lam else f"mu_dry = {s.mu_dry:g}"
+        return f"{law}, {mu}"
 
     # -- summary -------------------------------------------------------
     def has_protocol(self) -> bool:
@@ -215,20 +442,35 @@ class Results:
         of the run, or the last ``fraction`` or ``t_window = (t0, t1)`` when
         given.
 
-        q_max_inner/outer: the largest ball load in the window [N] (the Q_max
-        of Harris and the DEM papers: the load of the ball at psi = 0);
-        q_max_inner/outer_mean: the time mean of the largest ball load of each
-        sample [N] (below q_max as the balls pass psi = 0); cage_speed,
-        ball_spin: mean angular speeds [rad/s]; lambda_{outer,inner}_psi0:
-        mean Lambda of the contact nearest psi = 0; regime_fraction: share of
-        loaded contacts (both races) in boundary / mixed / full film; phases
-        (protocols only): per phase mean speeds and largest loads; units: the
-        unit of every entry; steps, dt, wall_s.
+        q_max_inner/outer: the load of the ball at psi = 0 [N] (the Q_max of
+        Harris and the DEM papers): the largest ball load of the window when
+        a loaded ball comes within 1 deg of psi = 0, else interpolated over
+        the window's ball positions (:func:`~.window_checks.q_max_at_psi0`;
+        ``q_max_method`` says which); q_max_inner/outer_mean: the time mean
+        of the largest ball load of each sample [N] (below q_max as the balls
+        pass psi = 0); cage_speed, ball_spin: mean angular speeds [rad/s];
+        lambda_{outer,inner}_psi0: mean Lambda of the contact nearest psi =
+        0; regime_fraction: share of loaded contacts (both races) in
+        boundary / mixed / full film; steady: is the window steady
+        (:meth:`steadiness`; a :class:`SteadyStateWarning` names the
+        quantities when not); friction_torque (positive when the inner ring
+        must be driven), friction_power and the energy balance (drive_power,
+        load_power, dissipation, kinetic_energy_change, energy_residual,
+        energy_source; :meth:`energy`); lubricant, traction_model,
+        traction_level, losses_modelled, losses_not_modelled (and a note at
+        the point level); phases (protocols only): per phase mean speeds and
+        largest loads; units and descriptions of the entries; steps, dt,
+        wall_s.
         """
         w, window = self.summary_window(fraction, t_window)
         b = self.bearing
         load_i = self.contact("load", "inner")[w]
         load_o = self.contact("load", "outer")[w]
+        psi = self.azimuth()[w]
+        q_i, method_i, _ = q_max_at_psi0(psi, load_i)
+        # the outer race's balls outside the loaded zone press on it by their centrifugal force alone: the
+        # outer distribution is taken where the inner contact of the ball is loaded
+        q_o, method_o, _ = q_max_at_psi0(psi, np.where(load_i > 0.0, load_o, 0.0) if np.any(load_i > 0.0) else load_o)
         idx = self.nearest_psi0()[w]
         rows = np.arange(len(idx))
         lam_i = self.contact("lambda", "inner")[w][rows, idx]
@@ -239,11 +481,13 @@ class Results:
         frac = {name: float(np.sum(reg == code)) / n_loaded for code, name in enumerate(REGIME_NAMES)}
         srr = np.stack([self.contact("srr", "inner")[w], self.contact("srr", "outer")[w]])
         omega = float(np.mean(self.global_series("omega")[w]))
+        level = self.scenario.traction_level
 
         def nanmean(x):
             x = np.asarray(x, float)
             return float(np.nanmean(x)) if np.any(np.isfinite(x)) else None
 
+        steady = self.steadiness(w, window)
         out = {
             "engine": self.engine,
             "bearing": b.name,
@@ -251,9 +495,11 @@ class Results:
             "Fa": self.scenario.Fa,
             "Pd": b.diametral_clearance,
             "window": window,
+            "steady": steady,
             "omega": omega,
-            "q_max_inner": float(load_i.max()),
-            "q_max_outer": float(load_o.max()),
+            "q_max_inner": q_i,
+            "q_max_outer": q_o,
+            "q_max_method": {"inner": method_i, "outer": method_o},
             "q_max_inner_mean": float(np.mean(load_i.max(axis=1))),
             "q_max_outer_mean": float(np.mean(load_o.max(axis=1))),
             "cage_speed": float(np.mean(self.cage_speed_series()[w])),
@@ -263,8 +509,9 @@ class Results:
             "regime_fraction": frac,
             "srr_mean": float(np.mean(srr[loaded])) if loaded.any() else None,
             "ring_displacement": [float(x) for x in np.mean(self.data["ring"][w, :3], axis=0)],
-            "friction_torque": float(np.mean(self.global_series("ring_torque")[w])),
+            "friction_torque": -float(np.mean(self.global_series("ring_torque")[w])),
             "friction_power": float(np.mean(self.global_series("friction_power")[w])),
+            **self.energy(w),
             "steps": self.steps,
             "dt": self.scenario.dt,
             "t_end": float(self.t[-1]),
@@ -276,12 +523,24 @@ class Results:
             "film": self.scenario.film,
             "cage": bool(self.scenario.cage and b.has_cage),
             "lubrication": self.scenario.lubrication,
-            "traction_level": self.scenario.traction_level,
+            "lubricant": self.lubricant.name,
+            "traction_model": self.traction_model_name(),
+            "traction_level": level,
+            "losses_modelled": list(LOSSES_MODELLED[level]),
+            "losses_not_modelled": list(LOSSES_NOT_MODELLED[level]),
         }
+        if level == "point":
+            out["note"] = POINT_LEVEL_NOTES[self.scenario.friction]
         out.update(contact_summary(self.data, w, omega, b))
         if self.has_protocol():
             out["phases"] = self._phase_summaries()
         out["units"] = dict(SUMMARY_UNITS)
+        out["descriptions"] = dict(SUMMARY_DESCRIPTIONS)
+        if not steady["steady"]:
+            reasons = steady["reason"].split("; ")
+            more = f"; and {len(reasons) - 3} more (summary['steady'])" if len(reasons) > 3 else ""
+            warnings.warn(f"summary window {window['t0']:.6g} - {window['t1']:.6g} s of the {self.engine} run is not "
+                          f"steady: {'; '.join(reasons[:3])}{more}", SteadyStateWarning, stacklevel=2)
         return out
 
     # -- persistence ---------------------------------------------------
@@ -294,7 +553,9 @@ class Results:
         np.savez_compressed(npz, diag_fields=np.array(DIAG_FIELDS), global_fields=np.array(GLOBAL_FIELDS),
                             **({"signal_fields": np.array(SIGNAL_FIELDS)} if "signal" in self.data else {}),
                             **self.data)
-        summary = self.summary()
+        with warnings.catch_warnings():  # the summary's own call has warned; the file holds its "steady" entry
+            warnings.simplefilter("ignore", SteadyStateWarning)
+            summary = self.summary()
         summary["meta"] = {"bearing": self.bearing.to_dict(),
                            "scenario": dataclasses.asdict(self.scenario),
                            "lubricant": dataclasses.asdict(self.lubricant)}
