@@ -13,7 +13,7 @@ from .data import (BallBearing, Defect, InputError, Lubricant, Material, catalog
                    lubricants, materials)
 from .model.scenario import Scenario
 from .model.stability import SimulationError, StepSizeWarning
-from .outputs.results import Results
+from .outputs.results import Results, SteadyStateWarning
 from .simulate import CreateBallBearing, simulate
 from .model.coefficients import BearingCoefficients
 from .solvers.element.console import filter_exudyn_notes
@@ -22,6 +22,6 @@ from .solvers.quasistatic import QuasiStaticSolution, bearing_coefficients, solv
 __version__ = "0.1.0"
 
 __all__ = ["CreateBallBearing", "filter_exudyn_notes", "BallBearing", "Defect", "InputError", "Lubricant", "Material",
-           "Results", "Scenario", "SimulationError", "StepSizeWarning", "catalog", "get_bearing", "load_bearing",
+           "Results", "Scenario", "SimulationError", "SteadyStateWarning", "StepSizeWarning", "catalog", "get_bearing", "load_bearing",
            "load_lubricant", "lubricants", "materials", "simulate", "solve_quasistatic", "QuasiStaticSolution",
            "bearing_coefficients", "BearingCoefficients"]
