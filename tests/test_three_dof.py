@@ -477,3 +477,14 @@ def test_eigenvalues_beyond_double_precision_are_refused():
     # a heavily but resolvably overdamped one passes: roots -c/m and -k/c to 1e-6 (span 1e10)
     r = linear.modal_analysis([[1e-3]], [[1e4]], [[1e2]])
     assert sorted(abs(r.eigenvalues)) == pytest.approx([1e-2, 1e7], rel=1e-6)
+
+
+def test_readme_three_dof_commands_run(capsys):
+    from pathlib import Path
+
+    text = (Path(__file__).resolve().parents[1] / "README.md").read_text()
+    lines = [x for x in text.splitlines() if x.startswith("python -m exudyn_bearing vibration three-dof")]
+    assert len(lines) == 2
+    for line in lines:
+        assert main(line.split("python -m exudyn_bearing ", 1)[1].split()) == 0
+    assert "derived: 7208, Fr = 500 N, Fa = 1000 N" in capsys.readouterr().out

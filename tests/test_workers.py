@@ -23,17 +23,21 @@ ROOT = Path(__file__).resolve().parents[1]
 linux = pytest.mark.skipif(not sys.platform.startswith("linux"), reason="reads /proc")
 
 
-def _children(pid):
-    """Pids of the running children of ``pid`` (Linux /proc)."""
-    out = []
+def _descendants(pid):
+    """Pids of the running descendants of ``pid`` (Linux /proc)."""
+    children = {}
     for d in Path("/proc").iterdir():
         if d.name.isdigit():
             try:
                 fields = (d / "stat").read_text().rsplit(")", 1)[1].split()
             except OSError:
                 continue
-            if int(fields[1]) == pid and fields[0] != "Z":
-                out.append(int(d.name))
+            children.setdefault(int(fields[1]), []).append(int(d.name))
+    out, todo = [], [pid]
+    while todo:
+        kids = children.get(todo.pop(), [])
+        out += kids
+        todo += kids
     return out
 
 
@@ -54,7 +58,7 @@ def _start(argv, tmp_path):
     deadline = time.monotonic() + 120
     while len(workers) < 2 and time.monotonic() < deadline and proc.poll() is None:
         time.sleep(0.2)
-        workers = _children(proc.pid)
+        workers = _descendants(proc.pid)
     return proc, workers
 
 
@@ -197,3 +201,45 @@ def test_refine_must_be_a_small_integer(tmp_path):
     res = sw.run_sweep({"c": spec}, tmp_path, workers=1, progress=False)
     assert res["c"]["error"]["type"] == "InputError" and res["c"]["error"]["message"].startswith("refine")
     assert math.isfinite(res["c"]["wall_case_s"])
+
+
+@linux
+@pytest.mark.parametrize("sig", [signal.SIGTERM, signal.SIGINT])
+def test_a_signal_to_the_parent_stops_the_workers(tmp_path, sig):
+    # six long cases on two workers: the parent alone is signalled while the first two
+    # run; no worker may survive it, no queued case may start, the index lists them pending
+    script = textwrap.dedent(f"""
+        import sys
+        from exudyn_bearing.sweep import SweepInterrupted, run_sweep
+        cases = {{f"c{{i}}": dict(bearing="6208", scenario=dict(Fr=1000.0 + i, t_end=30.0, dt=5e-6,
+                  tangential="implicit", sample_dt=1e-2)) for i in range(6)}}
+        try:
+            run_sweep(cases, {str(tmp_path)!r}, workers=2, progress=False)
+        except SweepInterrupted:
+            sys.exit(43)
+        except KeyboardInterrupt:
+            sys.exit(42)
+    """)
+    proc = subprocess.Popen([sys.executable, "-c", script])
+    workers = []
+    try:
+        deadline = time.monotonic() + 120
+        while len(workers) < 2 and time.monotonic() < deadline and proc.poll() is None:
+            time.sleep(0.2)
+            workers = _descendants(proc.pid)
+        assert len(workers) >= 2, "the sweep did not start its workers"
+        time.sleep(1.0)
+        workers = _descendants(proc.pid)
+        proc.send_signal(sig)
+        rc = proc.wait(60)
+        assert rc == 43  # SweepInterrupted for both (a KeyboardInterrupt)
+        time.sleep(0.5)
+        assert [p for p in workers if _alive(p)] == []
+        index = json.loads((tmp_path / "index.json").read_text())
+        assert index["counts"]["pending"] == 6
+        assert not list(tmp_path.glob("c*.json"))
+    finally:
+        for p in [proc.pid, *workers]:
+            if _alive(p):
+                os.kill(p, signal.SIGKILL)
+        proc.wait(10)
