@@ -48,6 +48,9 @@ def run(args):
         print(f"exudyn-bearing: {exc}: {counts.get('done', 0)} of {sum(counts.values())} cases done in {args.out}; "
               "the same command resumes", file=sys.stderr)
         raise SystemExit(exc.exit_status) from None
+    except KeyboardInterrupt:  # before the sweep started
+        print("exudyn-bearing: dataset stopped by SIGINT before its first case", file=sys.stderr)
+        raise SystemExit(130) from None
     failed = _sweep_counts(args.out).get("failed", 0)
     if args.json:
         print(json.dumps(to_jsonable(rows), indent=2))
