@@ -33,10 +33,11 @@ import numpy as np
 from .data import Defect, InputError, load_bearing
 from .model.layout import SIGNAL_FIELDS
 from .model.scenario import Scenario
+from .model.stability import stable_step
 from .physics import kinematics
 from .sweep import run_sweep
 
-__all__ = ["FAULTS", "LABELS", "INDEX_COLUMNS", "fault_defects", "signal_scenario", "dataset_cases",
+__all__ = ["FAULTS", "LABELS", "INDEX_COLUMNS", "REFINE", "fault_defects", "signal_scenario", "dataset_cases",
            "build_dataset", "read_index", "load_case_signals"]
 
 #: Fault kinds of a dataset, in label order.
@@ -46,7 +47,10 @@ LABELS = {f: i for i, f in enumerate(FAULTS)}
 #: Columns of ``index.csv``.
 INDEX_COLUMNS = ("name", "file", "fault", "label", "bearing", "rpm", "load_N", "length_m", "width_m", "depth_m",
                  "fs_Hz", "t_end_s", "n_samples", "shaft_Hz", "ftf_Hz", "bpfo_Hz", "bpfi_Hz", "bsf_Hz",
-                 "contact_angle_rad", "wall_s")
+                 "contact_angle_rad", "dt_s", "wall_s")
+#: Times a case that blows up or finds its step unstable is run again at half the step
+#: (``refine`` of :func:`exudyn_bearing.sweep.run_case`).
+REFINE = 2
 
 
 def fault_defects(fault, length=1e-3, width=1.5e-3, depth=1e-4, position=None, ball=0, edge="sharp",
@@ -101,7 +105,15 @@ def dataset_cases(bearing="6205", speeds_rpm=(1797.0,), loads=(1000.0,), sizes=(
     """Sweep cases (name -> spec for :func:`exudyn_bearing.sweep.run_sweep`) of
     the grid: every fault at every speed and load, the defective ones at
     every size (length, width, depth) [m], the healthy one once. Each spec
-    carries its ``labels``."""
+    carries its ``labels``.
+
+    The step of a case is signal_dt / n with n the larger of
+    ``steps_per_sample`` and what the case's own stable step
+    (:func:`exudyn_bearing.model.stability.stable_step`) needs (unless
+    ``scenario`` sets ``dt``); a case that blows up all the same (a large
+    spall's impacts) or finds its step unstable during the run (the cage
+    loads it reached) runs again at half the step, up to ``REFINE`` times
+    (``refine`` of :func:`exudyn_bearing.sweep.run_case`)."""
     b = load_bearing(bearing)
     cases = {}
     for fault in faults:
@@ -116,12 +128,17 @@ def dataset_cases(bearing="6205", speeds_rpm=(1797.0,), loads=(1000.0,), sizes=(
                                          **geometry, **scenario)
                     for d in sc.defects:
                         d.check(b)
+                    if "dt" not in scenario:  # the case's own stable step, if below the one asked for
+                        n = math.ceil(sc.signal_dt / stable_step(b, sc).dt * (1.0 - 1e-12))
+                        if n > steps_per_sample:
+                            sc = signal_scenario(fault, rpm, load, fs=fs, t_end=t_end, steps_per_sample=n,
+                                                 **geometry, **scenario)
                     labels = {"fault": fault, "label": LABELS[fault], "rpm": float(rpm), "load_N": float(load),
                               "length_m": size[0], "width_m": size[1], "depth_m": size[2], "fs_Hz": float(fs),
                               "t_end_s": float(t_end)}
                     cases[_case_name(fault, rpm, load, size)] = dict(
                         bearing=bearing if isinstance(bearing, str) else b.to_dict(), scenario=_scenario_dict(sc),
-                        labels=labels)
+                        labels=labels, refine=REFINE)
     return cases
 
 
@@ -143,16 +160,20 @@ def build_dataset(out_dir, bearing="6205", speeds_rpm=(1797.0,), loads=(1000.0,)
                   faults=FAULTS, fs=48000.0, t_end=0.5, steps_per_sample=4, workers=None, scheduler=None,
                   progress=True, **scenario) -> list:
     """Simulate the dataset grid (:func:`dataset_cases`) into ``out_dir`` and
-    write ``index.csv``; returns its rows (dicts, ``INDEX_COLUMNS``).
+    write ``index.csv``; returns its rows (dicts, ``INDEX_COLUMNS``), one
+    per finished case.
 
-    Resumable: cases whose files exist are not run again (run the same call
-    after an interruption). ``workers``, ``scheduler``, ``progress``: see
-    :func:`exudyn_bearing.sweep.run_sweep`.
+    A case that fails is recorded as in a sweep (``<case>.error.json``, the
+    sweep's ``index.json`` with its error, the list on stderr) and has no
+    row; the index of the others is written all the same, and the next call
+    runs the failed cases again. Resumable: cases whose files exist are not
+    run again (run the same call after an interruption). ``workers``,
+    ``scheduler``, ``progress``: see :func:`exudyn_bearing.sweep.run_sweep`.
     """
     cases = dataset_cases(bearing, speeds_rpm, loads, sizes, faults, fs, t_end, steps_per_sample, **scenario)
     records = run_sweep(cases, out_dir, workers=workers, scheduler=scheduler, progress=progress)
     b = load_bearing(bearing)
-    rows = [_index_row(name, rec, b) for name, rec in records.items()]
+    rows = [_index_row(name, rec, b) for name, rec in records.items() if rec.get("status") == "done"]
     write_index(out_dir, rows)
     return rows
 
@@ -169,7 +190,8 @@ def _index_row(name, rec, bearing) -> dict:
             "width_m": lab["width_m"], "depth_m": lab["depth_m"], "fs_Hz": lab["fs_Hz"],
             "t_end_s": lab["t_end_s"], "n_samples": int(len(arr["signal_t"])),
             "shaft_Hz": omega / (2.0 * math.pi), "ftf_Hz": f["ftf"], "bpfo_Hz": f["bpfo"], "bpfi_Hz": f["bpfi"],
-            "bsf_Hz": f["bsf"], "contact_angle_rad": alpha, "wall_s": rec.get("wall_case_s")}
+            "bsf_Hz": f["bsf"], "contact_angle_rad": alpha,
+            "dt_s": rec.get("dt", rec["spec"]["scenario"].get("dt")), "wall_s": rec.get("wall_case_s")}
 
 
 def write_index(out_dir, rows) -> Path:

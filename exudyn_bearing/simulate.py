@@ -5,6 +5,7 @@ chosen engine and returns :class:`~exudyn_bearing.outputs.results.Results`;
 from __future__ import annotations
 
 from .data import BallBearing, InputError, Lubricant, load_bearing, load_lubricant
+from .model.memory import check_sample_memory
 from .model.scenario import Scenario
 from .outputs.results import Results
 from .solvers.element import BallBearingElement as _ElementBase
@@ -48,6 +49,7 @@ def simulate(bearing, scenario: Scenario | None = None, engine: str = "reference
     lubricant = None if lubricant is None else load_lubricant(lubricant)
     if engine not in ENGINES:
         raise InputError(f"engine: unknown engine {engine!r} (valid: {', '.join(ENGINES)})")
+    check_sample_memory(bearing, scenario)  # before any work: the sampled series must fit in memory
     start = quasistatic_start(bearing, scenario, lubricant) if scenario.initial == "quasistatic" else None
     if engine == "reference":
         from .solvers.reference import ReferenceEngine

@@ -9,11 +9,11 @@ rename, with the usual permissions of the process umask, 0644 under umask
 
 ``<name>.npz``, ``<name>.json``
     A finished case: the arrays, and the record ``{"name", "status": "done",
-    "spec", "spec_hash", "summary", "wall_case_s"}`` (written last: its
-    presence marks the case as done).
+    "spec", "spec_hash", "summary", "wall_case_s", "warnings", "dt",
+    "retries"}`` (written last: its presence marks the case as done).
 ``<name>.error.json``
     A failed case: ``{"name", "status": "failed", "spec", "spec_hash",
-    "error": {"type", "message"}, "traceback", "wall_case_s"}``. It does not
+    "error": {"type", "message"}, "traceback", "wall_case_s", "warnings"}``. It does not
     mark the case as done: the next run tries the case again (and removes the
     error record when the case then succeeds).
 ``index.json``, ``index.csv``
@@ -31,11 +31,16 @@ spelled out) counts as changed; ``3000`` for ``3000.0`` does not.
 
 A case that raises is recorded and the sweep goes on with the others; the
 failures are listed on stderr at the end and in the index, and their
-records come back with ``"status": "failed"``. Ctrl-C or SIGTERM stop the
-sweep: queued cases are cancelled, the worker processes terminated, the
-index written with the unfinished cases ``pending``, and
-:class:`SweepInterrupted` (a KeyboardInterrupt) raised. A progress line on
-stderr counts the finished cases.
+records come back with ``"status": "failed"``. The warnings of a case
+(``{"type", "message"}`` in its record) are printed on stderr with its name
+when it finishes. Ctrl-C or SIGTERM stop the sweep: queued cases are
+cancelled, the worker processes terminated, the index written with the
+unfinished cases ``pending``, and :class:`SweepInterrupted` (a
+KeyboardInterrupt with the signal and the conventional exit status 130 or
+143) raised. The workers end with the sweep's process even when it is
+killed (SIGKILL): a death signal on Linux (``prctl(PR_SET_PDEATHSIG)``), a
+watchdog thread elsewhere. A progress line on stderr counts the finished
+cases.
 
 ::
 
@@ -57,6 +62,7 @@ import threading
 import time
 import traceback
 import uuid
+import warnings
 from concurrent.futures import ProcessPoolExecutor, as_completed
 from pathlib import Path
 
@@ -64,6 +70,7 @@ import numpy as np
 
 from .data import InputError, Lubricant, catalog, load_bearing
 from .model.scenario import Scenario
+from .model.stability import SimulationError, StepSizeWarning
 from .outputs.jsonio import to_jsonable
 from .simulate import simulate
 
@@ -75,7 +82,17 @@ INDEX = ("index.json", "index.csv")
 
 class SweepInterrupted(KeyboardInterrupt):
     """The sweep was stopped (Ctrl-C or SIGTERM); finished cases are kept and
-    a later run resumes."""
+    a later run resumes. ``signum``: the signal (``signal.SIGINT`` or
+    ``signal.SIGTERM``); ``exit_status``: the conventional status of a
+    process it stops, 128 + signum (130, 143)."""
+
+    def __init__(self, message="sweep stopped", signum=signal.SIGINT):
+        super().__init__(message)
+        self.signum = int(signum)
+
+    @property
+    def exit_status(self) -> int:
+        return 128 + self.signum
 
 
 def _atomic_write_bytes(path: Path, data: bytes) -> None:
@@ -131,18 +148,50 @@ def run_case(name: str, spec: dict, out_dir: str) -> str:
     the case raises; :func:`run_sweep` records that instead).
 
     ``spec``: ``bearing`` (name, JSON path or dict), ``scenario`` (Scenario
-    keyword arguments), optional ``engine`` ('reference' or 'exudyn') and
-    ``lubricant`` (Lubricant keyword arguments). The NPZ holds the last half
+    keyword arguments), optional ``engine`` ('reference' or 'exudyn'),
+    ``lubricant`` (Lubricant keyword arguments) and ``refine`` (default 0):
+    how many times a run that blows up (SimulationError) or warns that its
+    step was unstable (StepSizeWarning, e.g. the cage loads it reached) is
+    run again at half the step; the record holds the step of the kept run
+    (``dt``), the ``retries`` (step and reason) and the kept run's
+    ``warnings``. The NPZ holds the last half
     of the sampled series needed for azimuth plots (and the whole signal
     series ``signal_t``, ``signal`` when the scenario records them); the JSON
     the summary, the spec and its :func:`spec_hash`.
     """
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        return _run_case(name, spec, out_dir, caught)
+
+
+def _run_case(name, spec, out_dir, caught) -> str:
+    """:func:`run_case` with the warnings caught so far in the list ``caught``
+    (its record lists them under ``warnings``)."""
     out = Path(out_dir)
     key = spec_hash(spec)
     lub = Lubricant(**spec["lubricant"]) if spec.get("lubricant") else None
+    refine = spec.get("refine", 0)
+    if not (isinstance(refine, int) and not isinstance(refine, bool) and 0 <= refine <= 6):
+        raise InputError(f"refine: must be an integer in [0, 6] (times the step may be halved), got {refine!r}")
+    bearing = load_bearing(spec["bearing"])
+    sc = Scenario(**spec["scenario"])
+    retries = []
     t0 = time.perf_counter()
-    run = simulate(load_bearing(spec["bearing"]), Scenario(**spec["scenario"]),
-                   engine=spec.get("engine", "reference"), lubricant=lub)
+    while True:
+        mark = len(caught)
+        try:
+            run = simulate(bearing, sc, engine=spec.get("engine", "reference"), lubricant=lub)
+            why = next((str(w.message) for w in caught[mark:] if issubclass(w.category, StepSizeWarning)), None)
+        except SimulationError as exc:
+            if len(retries) == refine:
+                raise
+            why = str(exc)
+        if why is None or len(retries) == refine:
+            break
+        # a blow-up or a step the run found unstable: again at half the step (signals stay an integer multiple)
+        retries.append({"dt": sc.dt, "reason": why})
+        del caught[mark:]
+        sc = sc.replace(dt=0.5 * sc.dt)
     wall = time.perf_counter() - t0
     w = run.window(0.5)
     arrays = {"t": run.t[w], "psi": run.azimuth()[w], "omega": run.global_series("omega")[w]}
@@ -155,7 +204,7 @@ def run_case(name: str, spec: dict, out_dir: str) -> str:
     np.savez_compressed(buf, **arrays)
     _atomic_write_bytes(out / f"{name}.npz", buf.getvalue())
     record = {"name": name, "status": "done", "spec": spec, "spec_hash": key, "summary": run.summary(),
-              "wall_case_s": wall}
+              "wall_case_s": wall, "warnings": _warning_list(caught), "dt": sc.dt, "retries": retries}
     # the JSON goes last: its presence marks the case as done
     _write_json(out / f"{name}.json", record)
     try:
@@ -163,6 +212,16 @@ def run_case(name: str, spec: dict, out_dir: str) -> str:
     except FileNotFoundError:
         pass
     return name
+
+
+def _warning_list(caught) -> list:
+    """The distinct warnings of a case as ``{"type", "message"}`` dicts, in order."""
+    out = []
+    for w in caught:
+        item = {"type": w.category.__name__, "message": str(w.message)}
+        if item not in out:
+            out.append(item)
+    return out
 
 
 def _error_record(name, spec, exc, wall):
@@ -173,15 +232,19 @@ def _error_record(name, spec, exc, wall):
 
 def _run_case_recorded(name: str, spec: dict, out_dir: str):
     """:func:`run_case`; an exception becomes ``<name>.error.json``.
-    Returns (name, None) or (name, error record)."""
+    Returns (name, None, warnings) or (name, error record, warnings), the
+    warnings of the case as in its record."""
     t0 = time.perf_counter()
-    try:
-        run_case(name, spec, out_dir)
-        return name, None
-    except Exception as exc:  # noqa: BLE001 - every failure of a case is recorded, the sweep goes on
-        rec = _error_record(name, spec, exc, time.perf_counter() - t0)
-        _write_json(Path(out_dir) / f"{name}.error.json", rec)
-        return name, rec
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        try:
+            _run_case(name, spec, out_dir, caught)
+            return name, None, _warning_list(caught)
+        except Exception as exc:  # noqa: BLE001 - every failure of a case is recorded, the sweep goes on
+            rec = _error_record(name, spec, exc, time.perf_counter() - t0)
+            rec["warnings"] = _warning_list(caught)
+            _write_json(Path(out_dir) / f"{name}.error.json", rec)
+            return name, rec, rec["warnings"]
 
 
 def load_case(out_dir, name: str) -> dict:
@@ -250,7 +313,7 @@ class _StopOnSignal:
         self._installed = False
         if threading.current_thread() is threading.main_thread():
             def handler(signum, frame):
-                raise SweepInterrupted(f"sweep stopped by signal {signal.Signals(signum).name}")
+                raise SweepInterrupted(f"sweep stopped by {signal.Signals(signum).name}", signum)
 
             self._old = signal.signal(signal.SIGTERM, handler)
             self._installed = True
@@ -262,10 +325,60 @@ class _StopOnSignal:
         return False
 
 
-def _ignore_sigint():
-    """Worker initialiser: Ctrl-C reaches the whole process group; the parent
-    alone handles it and terminates the workers."""
+#: Seconds between two looks of a worker's watchdog at its parent.
+WATCHDOG_INTERVAL = 0.5
+_PR_SET_PDEATHSIG = 1  # linux/prctl.h
+
+
+def _die_with_parent() -> bool:
+    """Ask the kernel to SIGKILL this process when its parent dies (Linux
+    ``prctl(PR_SET_PDEATHSIG)``); False where that is not available."""
+    if not sys.platform.startswith("linux"):
+        return False
+    try:
+        import ctypes
+
+        libc = ctypes.CDLL(None, use_errno=True)
+        return libc.prctl(_PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0) == 0
+    except (OSError, AttributeError):
+        return False
+
+
+def _parent_gone(parent: int, ppid: int) -> bool:
+    """This process was re-parented (its parent ``ppid`` at start died) or the
+    sweep's process ``parent`` no longer exists."""
+    if os.getppid() != ppid:
+        return True
+    try:
+        os.kill(parent, 0)
+    except ProcessLookupError:
+        return True
+    except OSError:  # exists, another user's: not ours to judge
+        pass
+    return False
+
+
+def _watch_parent(parent: int, ppid: int) -> None:
+    """Watchdog thread of a worker (the fallback where no death signal is
+    set): end the process once its parent is gone."""
+    while not _parent_gone(parent, ppid):
+        time.sleep(WATCHDOG_INTERVAL)
+    os._exit(1)
+
+
+def _worker_init(parent: int):
+    """Worker initialiser: end with the sweep's process ``parent`` (a death
+    signal on Linux, a watchdog thread as fallback), leave Ctrl-C to the
+    parent (it reaches the whole process group; the parent terminates the
+    workers) and take SIGTERM with its default action (the parent's handler
+    is inherited at fork)."""
     signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+    ppid = os.getppid()
+    _die_with_parent()
+    if _parent_gone(parent, ppid):  # the parent died before the death signal was set
+        os._exit(1)
+    threading.Thread(target=_watch_parent, args=(parent, ppid), name="sweep-parent-watchdog", daemon=True).start()
 
 
 def _terminate_pool(pool: ProcessPoolExecutor) -> None:
@@ -327,10 +440,12 @@ def run_sweep(cases: dict, out_dir, workers: int | None = None, scheduler: str |
         print(f"[sweep] {len(changed)} case(s) changed their spec since their record and run again: "
               + ", ".join(changed[:10]) + (" ..." if len(changed) > 10 else ""), file=stream)
 
-    def finished(name, err):
+    def finished(name, err, warns=()):
         status[name] = "failed" if err else "done"
         if err:
             errors[name] = err
+        for w in warns:  # named, on a line of its own (over the progress line)
+            print(f"\r[sweep] {name}: {w['type']}: {w['message']}", file=stream, flush=True)
         if progress:
             _progress(len(status), total, t0, stream, len(errors))
 
@@ -347,6 +462,10 @@ def run_sweep(cases: dict, out_dir, workers: int | None = None, scheduler: str |
                     finished(*_run_case_recorded(n, cases[n], str(out)))
             else:
                 _run_pool(cases, todo, out, workers or os.cpu_count(), finished)
+    except SweepInterrupted:
+        raise
+    except KeyboardInterrupt:
+        raise SweepInterrupted("sweep stopped by SIGINT", signal.SIGINT) from None
     finally:
         if progress:
             print(file=stream)
@@ -360,7 +479,7 @@ def run_sweep(cases: dict, out_dir, workers: int | None = None, scheduler: str |
 
 
 def _run_pool(cases, todo, out, workers, finished):
-    pool = ProcessPoolExecutor(max_workers=workers, initializer=_ignore_sigint)
+    pool = ProcessPoolExecutor(max_workers=workers, initializer=_worker_init, initargs=(os.getpid(),))
     try:
         futures = {pool.submit(_run_case_recorded, n, cases[n], str(out)): n for n in todo}
         for fut in as_completed(futures):

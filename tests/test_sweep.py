@@ -1,14 +1,10 @@
-"""Sweep runner: parallel cases, atomic per-case files, resume by spec, failure records, signals, Dask."""
+"""Sweep runner: parallel cases, atomic per-case files, resume by spec, failure records, Dask (signals and worker
+processes: test_workers.py)."""
 import csv
 import json
 import os
 import signal
 import stat
-import subprocess
-import sys
-import textwrap
-import time
-from pathlib import Path
 
 import pytest
 
@@ -130,74 +126,6 @@ def test_files_have_the_usual_permissions(tmp_path):
     assert names == ["bad.error.json", *INDEX, "ok.json", "ok.npz"]
     for p in tmp_path.iterdir():
         assert stat.S_IMODE(p.stat().st_mode) == 0o644, p.name
-
-
-def _descendants(pid):
-    """Pids of the running descendants of ``pid`` (Linux /proc)."""
-    children = {}
-    for d in Path("/proc").iterdir():
-        if d.name.isdigit():
-            try:
-                fields = (d / "stat").read_text().rsplit(")", 1)[1].split()
-            except OSError:
-                continue
-            children.setdefault(int(fields[1]), []).append(int(d.name))
-    out, todo = [], [pid]
-    while todo:
-        kids = children.get(todo.pop(), [])
-        out += kids
-        todo += kids
-    return out
-
-
-def _alive(pid):
-    try:
-        state = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0]
-    except OSError:
-        return False
-    return state != "Z"
-
-
-@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="reads /proc")
-@pytest.mark.parametrize("sig", [signal.SIGTERM, signal.SIGINT])
-def test_a_signal_to_the_parent_stops_the_workers(tmp_path, sig):
-    # six long cases on two workers: the parent alone is signalled while the first two
-    # run; no worker may survive it, no queued case may start, the index lists them pending
-    script = textwrap.dedent(f"""
-        import sys
-        from exudyn_bearing.sweep import SweepInterrupted, run_sweep
-        cases = {{f"c{{i}}": dict(bearing="6208", scenario=dict(Fr=1000.0 + i, t_end=30.0, dt=5e-6,
-                  tangential="implicit", sample_dt=1e-2)) for i in range(6)}}
-        try:
-            run_sweep(cases, {str(tmp_path)!r}, workers=2, progress=False)
-        except SweepInterrupted:
-            sys.exit(43)
-        except KeyboardInterrupt:
-            sys.exit(42)
-    """)
-    proc = subprocess.Popen([sys.executable, "-c", script])
-    workers = []
-    try:
-        deadline = time.monotonic() + 120
-        while len(workers) < 2 and time.monotonic() < deadline and proc.poll() is None:
-            time.sleep(0.2)
-            workers = _descendants(proc.pid)
-        assert len(workers) >= 2, "the sweep did not start its workers"
-        time.sleep(1.0)
-        workers = _descendants(proc.pid)
-        proc.send_signal(sig)
-        rc = proc.wait(60)
-        assert rc == (43 if sig == signal.SIGTERM else 42)
-        time.sleep(0.5)
-        assert [p for p in workers if _alive(p)] == []
-        index = json.loads((tmp_path / "index.json").read_text())
-        assert index["counts"]["pending"] == 6
-        assert not list(tmp_path.glob("c*.json"))
-    finally:
-        for p in [proc.pid, *workers]:
-            if _alive(p):
-                os.kill(p, signal.SIGKILL)
-        proc.wait(10)
 
 
 def test_sweep_interrupted_is_a_keyboard_interrupt_and_the_handler_is_restored(tmp_path):

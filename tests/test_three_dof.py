@@ -397,3 +397,94 @@ def test_cli_three_dof_derived_table_and_errors(capsys):
     with pytest.raises(SystemExit) as exc:
         main(["vibration", "three-dof", "--rpm", "100", "--omega", "10"])
     assert exc.value.code == 2
+
+
+# -- every catalogue bearing: ring sections from the bearing, the real cause in errors ----------------------
+SKF = {"6004": (20e-3, 42e-3, 12e-3), "6205": (25e-3, 52e-3, 15e-3), "6208": (40e-3, 80e-3, 18e-3)}
+
+
+@pytest.mark.parametrize("name", sorted(SKF))
+def test_ring_section_estimate_is_close_to_the_published_dimensions(name):
+    # SKF catalogue boundary dimensions d x D x B; the estimate from ball and pitch diameter alone
+    # (D_w = 0.3 (D - d), B = (D - d)/2): bore and outside diameter within 4 %, width within 20 % (the published
+    # D_w / (D - d) are 0.289, 0.294, 0.315, which put the 6205's bore 3.2 % off; B / ((D - d)/2) 1.09, 1.11, 0.90)
+    import dataclasses
+
+    b = dataclasses.replace(catalog[name], bore=None, outer_diameter=None, name="unnamed")
+    dims, source = td.ring_dimensions(b)
+    d, big_d, width = SKF[name]
+    assert dims.bore == pytest.approx(d, rel=0.04) and dims.outer_diameter == pytest.approx(big_d, rel=0.04)
+    assert dims.width == pytest.approx(width, rel=0.20)
+    assert all(v.startswith("estimate") for v in source.values())
+    # by name the published values themselves
+    pub, source = td.ring_dimensions(name)
+    assert (pub.bore, pub.outer_diameter, pub.width) == (d, big_d, width)
+
+
+def test_6208_outer_ring_stiffness_from_its_own_section():
+    # 6208 (SKF 40 x 80 x 18 mm): outer ring between the race bottom R_o (36.6 mm with the default 12.5 um
+    # clearance) and D/2 = 40 mm, 18 mm wide; Hoppe n = 2 with the whole ring mass:
+    # k = 2 pi n^2 (n^2 - 1)^2 / (1 + n^2) E I / R^3 = 14.4 pi E I / R^3
+    p = td.derived_parameters("6208")
+    r_o = catalog["6208"].with_clearance(12.5e-6).outer_race_radius
+    assert r_o == pytest.approx(36.6e-3, abs=10e-6)
+    t, width = 40e-3 - r_o, 18e-3
+    r = 0.5 * (40e-3 + r_o)
+    i = width * t ** 3 / 12.0
+    assert p.k_outer_ring == pytest.approx(14.4 * math.pi * 210e9 * i / r ** 3, rel=1e-12)
+    assert p.derivation["dimensions_source"]["outer_diameter"] == "catalogue (SKF): 6208"
+
+
+@pytest.mark.parametrize("argv", [["6205"], ["6208"], ["7208", "--Fa", "1000"], ["ACBB-120", "--Fa", "3000"],
+                                  ["6208", "--outer-diameter", "0.082", "--width", "0.02"]])
+def test_cli_three_dof_runs_for_every_catalogue_bearing(argv, capsys):
+    assert main(["vibration", "three-dof", *argv, "--json"]) == 0
+    d = json.loads(capsys.readouterr().out)
+    assert d["label"].startswith(f"derived: {argv[0]}") and len(d["natural_frequencies"]) == 6
+    assert all(z > 0 for z in d["damping_ratios"])
+
+
+def test_angular_contact_links_act_along_the_contact_normal():
+    # the contact spring along the normal at alpha seen on the radial line: k cos^2(alpha)
+    p = td.derived_parameters("7208", axial_load=1000.0)
+    d = p.derivation
+    alpha = d["contact_angle"]
+    assert math.degrees(alpha) > 30.0
+    for race, k in (("inner", p.k_inner_contact), ("outer", p.k_outer_contact)):
+        c = d["contacts"][race]
+        assert k == pytest.approx(math.cos(alpha) ** 2 / (1.0 / c["k_hertz"] + 1.0 / c["k_film"]), rel=1e-12)
+
+
+@pytest.mark.parametrize("argv, start, words", [
+    (["--source-parameters", "--bearing", "6208"], "source_parameters", ("--bearing",)),
+    (["--source-parameters", "--Fr", "800"], "source_parameters", ("--Fr",)),
+    (["--Fr", "1e5"], "radial_load", ("4.2 GPa", "elastic")),
+    (["--rpm", "1"], "omega", ("film", "--film-damping contact_model")),
+    (["6208", "--outer-diameter", "0.07"], "outer_diameter", ("outer race", "6208")),
+    (["7208"], "axial_load", ("F_a >",))])
+def test_cli_three_dof_names_the_real_cause(argv, start, words, capsys):
+    assert main(["vibration", "three-dof", *argv]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith(f"exudyn-bearing: error: {start}:")
+    assert all(w in err[0] for w in words) and "zero eigenvalue" not in err[0]
+
+
+def test_eigenvalues_beyond_double_precision_are_refused():
+    # one mass m = 1e-3 kg on k = 1e8 N/m with c = 1e11 N s/m: roots about -c/m = -1e14 and -k/c = -1e-3 1/s,
+    # a span of 1e17 that double precision cannot resolve; the stiffness is regular (not a rigid-body mode)
+    with pytest.raises(InputError, match="^damping: the eigenvalues span"):
+        linear.modal_analysis([[1e-3]], [[1e11]], [[1e8]])
+    # a heavily but resolvably overdamped one passes: roots -c/m and -k/c to 1e-6 (span 1e10)
+    r = linear.modal_analysis([[1e-3]], [[1e4]], [[1e2]])
+    assert sorted(abs(r.eigenvalues)) == pytest.approx([1e-2, 1e7], rel=1e-6)
+
+
+def test_readme_three_dof_commands_run(capsys):
+    from pathlib import Path
+
+    text = (Path(__file__).resolve().parents[1] / "README.md").read_text()
+    lines = [x for x in text.splitlines() if x.startswith("python -m exudyn_bearing vibration three-dof")]
+    assert len(lines) == 2
+    for line in lines:
+        assert main(line.split("python -m exudyn_bearing ", 1)[1].split()) == 0
+    assert "derived: 7208, Fr = 500 N, Fa = 1000 N" in capsys.readouterr().out

@@ -1,10 +1,19 @@
-"""``dataset OUT``: labelled healthy / defective signals over a grid of speeds, loads and defect sizes."""
+"""``dataset OUT``: labelled healthy / defective signals over a grid of speeds, loads and defect sizes.
+
+Exit status 0 when every case finished, 3 when some failed (listed on
+stderr and in OUT/index.json; the index.csv of the others is written, and
+the same command runs the failed ones again), 130 after Ctrl-C and 143
+after SIGTERM (one line on stderr; the same command resumes).
+"""
 from __future__ import annotations
 
 import json
+import sys
 from collections import Counter
+from pathlib import Path
 
 from ..datasets import FAULTS, build_dataset
+from ..sweep import INDEX, SweepInterrupted
 from ..outputs.jsonio import to_jsonable
 from .common import add_bearing_argument, bearing_spec_from_args, finite_float, print_table
 
@@ -20,7 +29,8 @@ def add_parser(sub):
     p.add_argument("--faults", nargs="+", choices=FAULTS, default=list(FAULTS),
                    help="cases per grid point: healthy and the spall locations")
     p.add_argument("--fs", type=finite_float, default=48000.0, help="signal sample rate [Hz]")
-    p.add_argument("--steps-per-sample", type=int, default=4, help="time steps per signal sample")
+    p.add_argument("--steps-per-sample", type=int, default=4,
+                   help="time steps per signal sample, at least (a case whose stable step needs more takes more)")
     p.add_argument("--t-end", type=finite_float, default=0.5, help="simulated time per case [s]")
     p.add_argument("--workers", type=int, help="local processes (default: all cores)")
     p.add_argument("--progress", action="store_true", help="progress line on stderr")
@@ -28,13 +38,34 @@ def add_parser(sub):
 
 
 def run(args):
-    rows = build_dataset(args.out, bearing=bearing_spec_from_args(args), speeds_rpm=tuple(args.rpm), loads=tuple(args.load),
-                         sizes=tuple(tuple(s) for s in (args.size or [(1e-3, 1.5e-3, 1e-4)])),
-                         faults=tuple(args.faults), fs=args.fs, t_end=args.t_end,
-                         steps_per_sample=args.steps_per_sample, workers=args.workers, progress=args.progress)
+    try:
+        rows = build_dataset(args.out, bearing=bearing_spec_from_args(args), speeds_rpm=tuple(args.rpm),
+                             loads=tuple(args.load), sizes=tuple(tuple(s) for s in (args.size or [(1e-3, 1.5e-3, 1e-4)])),
+                             faults=tuple(args.faults), fs=args.fs, t_end=args.t_end,
+                             steps_per_sample=args.steps_per_sample, workers=args.workers, progress=args.progress)
+    except SweepInterrupted as exc:
+        counts = _sweep_counts(args.out)
+        print(f"exudyn-bearing: {exc}: {counts.get('done', 0)} of {sum(counts.values())} cases done in {args.out}; "
+              "the same command resumes", file=sys.stderr)
+        raise SystemExit(exc.exit_status) from None
+    except KeyboardInterrupt:  # before the sweep started
+        print("exudyn-bearing: dataset stopped by SIGINT before its first case", file=sys.stderr)
+        raise SystemExit(130) from None
+    failed = _sweep_counts(args.out).get("failed", 0)
     if args.json:
         print(json.dumps(to_jsonable(rows), indent=2))
-        return
-    counts = Counter(r["fault"] for r in rows)
-    print_table([("cases", len(rows)), *((f"cases.{f}", counts[f]) for f in FAULTS if counts[f]),
-                 ("index", f"{args.out}/index.csv")])
+    else:
+        counts = Counter(r["fault"] for r in rows)
+        print_table([("cases", len(rows)), *((f"cases.{f}", counts[f]) for f in FAULTS if counts[f]),
+                     *([("cases.failed", f"{failed} (see {args.out}/{INDEX[0]})")] if failed else []),
+                     ("index", f"{args.out}/index.csv")])
+    if failed:
+        raise SystemExit(3)
+
+
+def _sweep_counts(out) -> dict:
+    """Case counts by status of the sweep index in ``out`` (empty if unreadable)."""
+    try:
+        return json.loads((Path(out) / INDEX[0]).read_text())["counts"]
+    except (OSError, ValueError, KeyError, TypeError):
+        return {}

@@ -278,8 +278,8 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
             u, resid, balls = solve_ring(prob, free, values, u, b, cold=cold)
             cold = False
             cs = _contact_state(geom, balls, e_prime, method)
-            if not moving:
-                kin[:] = 0.0
+            if not moving:  # no race turns relative to the other: the balls turn with both rings as one body
+                kin[:] = (w_i, 0.0, 0.0, 0.0)
                 break
             new = kin.copy()
             geo = np.zeros((z, len(km.GEO_FIELDS)))

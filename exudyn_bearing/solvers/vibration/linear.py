@@ -41,8 +41,13 @@ import scipy.linalg as sla
 
 from ...data import InputError
 
-__all__ = ["ModalResult", "check_matrices", "state_matrix", "modal_analysis", "frequency_response",
+__all__ = ["EIGENVALUE_SPAN", "ModalResult", "check_matrices", "state_matrix", "modal_analysis", "frequency_response",
            "time_response", "mechanical_energy"]
+
+
+#: Largest ratio of the largest to the smallest |eigenvalue| that :func:`modal_analysis`
+#: accepts: rounding (about 1e-16 of the largest) stays below 1e-4 of the smallest.
+EIGENVALUE_SPAN = 1e12
 
 
 def check_matrices(mass, damping, stiffness):
@@ -136,8 +141,14 @@ def modal_analysis(mass, damping, stiffness) -> ModalResult:
     """Eigenvalues, natural frequencies, damping ratios and mode shapes of
     M q'' + C q' + K q = 0 (module docstring) with ``scipy.linalg.eig``.
 
-    Raises InputError if the system has a zero eigenvalue (a rigid-body or
-    unconnected coordinate), whose damping ratio is undefined.
+    Raises InputError if the system has a zero eigenvalue (a singular
+    stiffness matrix: a rigid-body or unconnected coordinate), whose damping
+    ratio is undefined, or if its eigenvalues span more than
+    :data:`EIGENVALUE_SPAN` (|lambda| largest / smallest): the rounding
+    error of the largest, about 1e-16 |lambda_max|, then exceeds 1e-4 of the
+    smallest, whose value (and sign of its real part) the double-precision
+    eigen-solver no longer resolves (e.g. a damping so large against the
+    stiffness that slow creep modes k/c sit next to fast ones c/m).
 
     Examples
     --------
@@ -150,11 +161,18 @@ def modal_analysis(mass, damping, stiffness) -> ModalResult:
     """
     a = state_matrix(mass, damping, stiffness)
     n = a.shape[0] // 2
-    lam, vec = sla.eig(a)
-    mag = np.abs(lam)
-    if mag.min() <= 1e-12 * max(mag.max(), 1e-300):
+    k = np.asarray(stiffness, dtype=float)
+    sv = np.linalg.svd(k, compute_uv=False)
+    if sv.min() <= 1e-12 * max(sv.max(), 1e-300):
         raise InputError("stiffness: the system has a zero eigenvalue (a rigid-body mode or a coordinate "
                          "without stiffness); ground every body through some spring")
+    lam, vec = sla.eig(a)
+    mag = np.abs(lam)
+    span = mag.max() / mag.min() if mag.min() > mag.max() * 1e-300 else np.inf
+    if span > EIGENVALUE_SPAN:
+        raise InputError(f"damping: the eigenvalues span {span:.2g} (|lambda| {mag.min():.3g} to {mag.max():.3g} 1/s), "
+                         f"more than the {EIGENVALUE_SPAN:.0e} double precision resolves: the slow ones are "
+                         "rounding noise (damping far too large or too small against the stiffness and masses)")
     # conjugate pairs together, the positive imaginary part first
     order = np.lexsort((-lam.imag, np.round(mag / mag.max(), 12)))
     lam, vec, mag = lam[order], vec[:, order], mag[order]

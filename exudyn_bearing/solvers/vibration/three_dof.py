@@ -43,7 +43,9 @@ for the comparison of its eigenvalues only.
 
 :func:`derived_parameters`: every value from the bearing and an operating
 point. Rings: rectangular sections between race bottom and bore or outside
-diameter, stiffness k = M omega_2^2 with M = 2 pi R mu, the whole ring
+diameter over the ring width (:func:`ring_dimensions`: the bearing's data,
+the catalogue's published dimensions, or an estimate from the ball and
+pitch diameters), stiffness k = M omega_2^2 with M = 2 pi R mu, the whole ring
 (:func:`~exudyn_bearing.physics.ring_vibration.ring_flexural_frequency`).
 Ball: mass 4/3 pi R_b^3 rho. Ball-race links: the Hertz tangent stiffness
 dQ/d delta at the load Q of the most loaded ball (discrete quasi-static
@@ -81,13 +83,15 @@ import numpy as np
 from ...data import BallBearing, InputError, Lubricant, default_lubricant, load_bearing
 from ...physics import damping, ehl, hertz, kinematics
 from ...physics.geometry import raceway_radii
-from ...physics.load_distribution import race_stiffness, static_equilibrium
+from ...model.load_range import check_load_range
+from ...physics.load_distribution import race_stiffness
 from ...physics.ring_vibration import (rectangular_ring_section, ring_flexural_frequency,
                                        ring_modal_stiffness)
 from ...physics.short_bearing import film_coefficients, film_eccentricity
 from . import linear
 
 __all__ = ["ThreeDofParameters", "ThreeDofResult", "READINGS", "DOFS", "SKF_6004", "RingDimensions",
+           "CATALOGUE_DIMENSIONS", "BALL_TO_SECTION", "ring_dimensions",
            "source_parameters", "derived_parameters", "source_printed_system", "source_state_matrix",
            "SOURCE_EIGENVALUES", "assemble", "analyse", "frequency_response", "ball_pass_force",
            "ball_pass_response", "bpfo"]
@@ -130,6 +134,54 @@ class RingDimensions:
 
 #: SKF 6004: 20 x 42 x 12 mm [4]_.
 SKF_6004 = RingDimensions(bore=20e-3, outer_diameter=42e-3, width=12e-3)
+
+#: Published boundary dimensions (bore x outside diameter x width) of the
+#: catalogue's bearings by name: SKF 6004 20 x 42 x 12 mm, 6205 25 x 52 x
+#: 15 mm, 6208 and 7208 40 x 80 x 18 mm (SKF [4]_; ISO 15 dimension series
+#: 02 for the 62xx and 72xx, 10 for the 60xx).
+CATALOGUE_DIMENSIONS = {
+    "6004": SKF_6004,
+    "6205": RingDimensions(bore=25e-3, outer_diameter=52e-3, width=15e-3),
+    "6208": RingDimensions(bore=40e-3, outer_diameter=80e-3, width=18e-3),
+    "7208": RingDimensions(bore=40e-3, outer_diameter=80e-3, width=18e-3),
+}
+#: Estimate of the section where no dimension is known: ball diameter D_w =
+#: BALL_TO_SECTION (D - d) and width B = (D - d) / 2, centred on the pitch
+#: diameter (D + d = 2 d_m). The proportions of the published bearings: D_w / (D - d) =
+#: 0.289 (6004), 0.294 (6205), 0.315 (6208), 0.295 (ACBB-120, Gupta 2020: 120 x
+#: 190 mm); B / ((D - d) / 2) = 1.09, 1.11, 0.90.
+BALL_TO_SECTION = 0.3
+
+
+def ring_dimensions(bearing) -> tuple[RingDimensions, dict]:
+    """Bore, outside diameter and width of a bearing's rings, and where each
+    comes from: the bearing's own ``bore`` / ``outer_diameter`` (data file),
+    else :data:`CATALOGUE_DIMENSIONS` by name, else the estimate of
+    :data:`BALL_TO_SECTION` from the ball and pitch diameters (module
+    docstring).
+
+    Examples
+    --------
+    >>> d, src = ring_dimensions("6208")
+    >>> round(d.outer_diameter * 1e3), src["outer_diameter"]
+    (80, 'catalogue (SKF): 6208')
+    """
+    b = bearing if isinstance(bearing, BallBearing) else load_bearing(bearing)
+    table = CATALOGUE_DIMENSIONS.get(b.name)
+    section = 2.0 * b.ball_radius / BALL_TO_SECTION  # D - d
+    estimate = {"bore": 2.0 * b.pitch_radius - 0.5 * section, "outer_diameter": 2.0 * b.pitch_radius + 0.5 * section,
+                "width": 0.5 * section}
+    values, source = {}, {}
+    for key in ("bore", "outer_diameter", "width"):
+        own = getattr(b, key, None)
+        if own is not None:
+            values[key], source[key] = float(own), f"bearing data: {b.name}"
+        elif table is not None:
+            values[key], source[key] = getattr(table, key), f"catalogue (SKF): {b.name}"
+        else:
+            values[key] = estimate[key]
+            source[key] = (f"estimate: D_w = {BALL_TO_SECTION:g} (D - d), B = (D - d)/2 about the pitch diameter")
+    return RingDimensions(**values), source
 
 
 @dataclass(frozen=True)
@@ -286,8 +338,8 @@ def _ring_section(radius_a, radius_b, width, material):
 
 def derived_parameters(bearing="6004", radial_load=500.0, omega=2.0 * math.pi * 50.0,
                        diametral_clearance=12.5e-6, lubricant: Lubricant | None = None,
-                       dimensions: RingDimensions = SKF_6004, link="series", film_damping="short_bearing",
-                       hertz_method="exact", film="hd") -> ThreeDofParameters:
+                       dimensions: RingDimensions | None = None, link="series", film_damping="short_bearing",
+                       hertz_method="exact", film="hd", axial_load=0.0) -> ThreeDofParameters:
     """Physically derived 3-DOF parameters at an operating point (module
     docstring).
 
@@ -306,8 +358,10 @@ def derived_parameters(bearing="6004", radial_load=500.0, omega=2.0 * math.pi * 
         the middle of SKF's Normal clearance group for the 6004 (5-20 um [4]_).
     lubricant : Lubricant
         Default the catalogue's lubricant (eta = 0.04 Pa s).
-    dimensions : RingDimensions
-        Bore, outside diameter and width; default SKF 6004.
+    dimensions : RingDimensions, optional
+        Bore, outside diameter and width of the rings; default those of the
+        bearing (:func:`ring_dimensions`: its data, the catalogue, or an
+        estimate; the source of each is in ``derivation``).
     link : {"series", "hertz", "film"}
         Ball-race spring: Hertz and film in series (default), or one of them.
     film_damping : {"short_bearing", "contact_model"}
@@ -318,6 +372,11 @@ def derived_parameters(bearing="6004", radial_load=500.0, omega=2.0 * math.pi * 
         damping_coefficient`), for comparison.
     hertz_method, film : str
         Hertz fidelity level and film-thickness model ("hd" or "mk").
+    axial_load : float
+        F_a [N] (>= 0); an angular-contact bearing needs one that holds the
+        radial load. The contact springs and dampers act along the contact
+        normal at the angle alpha of the most loaded ball; the model's
+        radial line sees them times cos^2 alpha.
 
     Returns
     -------
@@ -338,22 +397,31 @@ def derived_parameters(bearing="6004", radial_load=500.0, omega=2.0 * math.pi * 
     if not (math.isfinite(pd) and pd > 0.0):
         raise InputError(f"diametral_clearance: must be finite and > 0 [m] (the film model needs a "
                          f"clearance), got {diametral_clearance!r}")
-    if not isinstance(dimensions, RingDimensions):
+    fa = float(axial_load)
+    if not (math.isfinite(fa) and fa >= 0.0):
+        raise InputError(f"axial_load: must be finite and >= 0 [N], got {axial_load!r}")
+    if dimensions is None:
+        dimensions, dim_source = ring_dimensions(b)
+    elif isinstance(dimensions, RingDimensions):
+        dim_source = dict.fromkeys(("bore", "outer_diameter", "width"), "given")
+    else:
         raise InputError(f"dimensions: expected a RingDimensions, got {type(dimensions).__name__}")
     b = b.with_clearance(pd)
     lub = default_lubricant() if lubricant is None else lubricant
     if 0.5 * dimensions.bore >= b.inner_race_radius:
-        raise InputError(f"dimensions: bore radius {0.5 * dimensions.bore} m reaches the inner race "
-                         f"({b.inner_race_radius} m)")
+        raise InputError(f"bore: {dimensions.bore * 1e3:.4g} mm ({dim_source['bore']}) is not smaller than the inner "
+                         f"race diameter of {b.name}, {2e3 * b.inner_race_radius:.4g} mm: give the bore of this "
+                         "bearing")
     if 0.5 * dimensions.outer_diameter <= b.outer_race_radius:
-        raise InputError(f"dimensions: outside radius {0.5 * dimensions.outer_diameter} m lies inside the "
-                         f"outer race ({b.outer_race_radius} m)")
+        raise InputError(f"outer_diameter: {dimensions.outer_diameter * 1e3:.4g} mm ({dim_source['outer_diameter']}) "
+                         f"is not larger than the outer race diameter of {b.name}, {2e3 * b.outer_race_radius:.4g} "
+                         "mm: give the outside diameter of this bearing")
     mat = b.material
     outer = _ring_section(b.outer_race_radius, 0.5 * dimensions.outer_diameter, dimensions.width, mat)
     inner = _ring_section(0.5 * dimensions.bore, b.inner_race_radius, dimensions.width, mat)
 
-    # load of the most loaded ball (discrete quasi-static solution)
-    sol = static_equilibrium(b, fr, 0.0, hertz_method=hertz_method)
+    # load of the most loaded ball (discrete quasi-static solution, within the elastic contact model's range)
+    sol = check_load_range(b, fr, fa, hertz_method, names=("radial_load", "axial_load", "diametral_clearance"))
     j = int(np.argmax(sol.q))
     q = float(sol.q[j])
     alpha = float(sol.contact_angle[j])
@@ -376,7 +444,7 @@ def derived_parameters(bearing="6004", radial_load=500.0, omega=2.0 * math.pi * 
         eps = float(film_eccentricity(h, c_radial))
         k_film, c_film = (float(x) for x in film_coefficients(eps, load, c_radial, w))
         k_hertz = float(hertz.tangent_stiffness(kh, load))
-        k_link = {"series": 1.0 / (1.0 / k_hertz + 1.0 / k_film), "hertz": k_hertz, "film": k_film}[link]
+        k_link = {"series": 1.0 / (1.0 / k_hertz + 1.0 / k_film), "hertz": k_hertz, "film": k_film}[link] * ca * ca
         # the contact model's normal damping at this load and film, for comparison
         overlap = (load / kh) ** (2.0 / 3.0)
         semi_major = float(hertz.contact_ellipse(rx, ry, e_prime, load, hertz_method)[0])
@@ -389,18 +457,19 @@ def derived_parameters(bearing="6004", radial_load=500.0, omega=2.0 * math.pi * 
                           "R_x": float(rx), "kappa": kappa, "h_min": h, "eccentricity": eps,
                           "k_film": k_film, "c_film": c_film, "k_link": k_link, "film_parameter": lam,
                           "c_hysteretic": c_hyst, "c_squeeze": c_fluid, "c_contact_model": c_contact,
-                          "c_link": c_film if film_damping == "short_bearing" else c_contact}
-    derivation = {"bearing": b.name, "radial_load": fr, "omega": w, "diametral_clearance": pd,
+                          "c_link": (c_film if film_damping == "short_bearing" else c_contact) * ca * ca}
+    derivation = {"bearing": b.name, "radial_load": fr, "axial_load": fa, "radial_projection": ca * ca, "omega": w, "diametral_clearance": pd,
                   "radial_clearance": c_radial, "contact_angle": alpha, "q_max": q, "centrifugal_force": f_c,
                   "cage_speed": wc, "ball_mass": b.ball_mass, "outer_ring": outer, "inner_ring": inner,
-                  "contacts": contacts, "dimensions": asdict(dimensions), "lubricant": lub.name,
+                  "contacts": contacts, "dimensions": asdict(dimensions), "dimensions_source": dim_source,
+                  "lubricant": lub.name,
                   "viscosity": lub.viscosity, "film_model": film, "hertz_method": hertz_method}
     return ThreeDofParameters(
         mass_outer=outer["mass"], mass_ball=b.ball_mass, mass_inner=inner["mass"],
         k_outer_ring=outer["stiffness"], k_inner_ring=inner["stiffness"],
         k_outer_contact=contacts["outer"]["k_link"], k_inner_contact=contacts["inner"]["k_link"],
         c_outer_contact=contacts["outer"]["c_link"], c_inner_contact=contacts["inner"]["c_link"],
-        damping_row="symmetric", label=f"derived: {b.name}, Fr = {fr:g} N, omega = {w:g} rad/s",
+        damping_row="symmetric", label=f"derived: {b.name}, Fr = {fr:g} N" + (f", Fa = {fa:g} N" if fa else "") + f", omega = {w:g} rad/s",
         reading={"link": link, "film_damping": film_damping, "film_prefactor": "corrected (4 / W_bar)",
                  "damping_row": "symmetric",
                  "film_normalisation": "C = C_bar W / (c omega), omega the shaft speed, c = P_d / 2"},
@@ -463,7 +532,21 @@ def analyse(p: ThreeDofParameters) -> ThreeDofResult:
     [20000, -20000]
     """
     m, c, k = assemble(p)
-    return ThreeDofResult(p, m, c, k, linear.modal_analysis(m, c, k))
+    try:
+        modal = linear.modal_analysis(m, c, k)
+    except InputError as exc:
+        d = p.derivation
+        if not (str(exc).startswith("damping:") and d.get("contacts")):
+            raise
+        race = max(d["contacts"], key=lambda r: d["contacts"][r]["c_link"])
+        ct = d["contacts"][race]
+        raise InputError(
+            f"omega: at {d['omega']:.4g} rad/s and {d['radial_load']:g} N the {race} film is {ct['h_min'] * 1e9:.3g} nm "
+            f"thick in a {d['radial_clearance'] * 1e6:.3g} um radial clearance (eccentricity {ct['eccentricity']:.6f}), "
+            f"which gives a ball-race damper of {ct['c_link']:.3g} N s/m against springs of {ct['k_link']:.3g} N/m; "
+            + str(exc)[len("damping: "):] + ": raise the speed, or use the contact model's damping "
+            "(film_damping='contact_model', --film-damping contact_model)") from None
+    return ThreeDofResult(p, m, c, k, modal)
 
 
 def frequency_response(p: ThreeDofParameters, frequencies):

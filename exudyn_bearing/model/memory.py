@@ -1,0 +1,110 @@
+"""Memory of a dynamic run's sampled series, checked before the run starts.
+
+Both engines keep every sample in memory (arrays of :mod:`.layout`, float64):
+per state sample the time, the global diagnostics, the contact diagnostics
+and cage loads of every ball, five ball/cage vectors per ball and the ring
+row; per signal sample (``Scenario.signal_dt``) the time and
+``NSIGNAL`` signals. :func:`check_sample_memory` refuses a scenario whose
+samples would not fit in :data:`MEMORY_FRACTION` of the memory available
+now (``MemAvailable`` of ``/proc/meminfo`` on Linux, the free physical
+pages elsewhere, :data:`FALLBACK_BUDGET` where neither is known) and names
+the ``sample_dt`` that fits, instead of failing with numpy's "Unable to
+allocate" after the start-up work.
+"""
+from __future__ import annotations
+
+import math
+import os
+
+from ..data import InputError, load_bearing
+from .layout import NDIAG, NGLOBAL, NSIGNAL
+
+__all__ = ["MEMORY_FRACTION", "FALLBACK_BUDGET", "sample_bytes", "signal_bytes", "available_memory",
+           "memory_budget", "check_sample_memory"]
+
+#: Share of the available memory the samples of one run may take (the rest: the
+#: interpreter, the engines' work arrays, the Results' derived series and other processes).
+MEMORY_FRACTION = 0.5
+#: Budget [bytes] where the available memory cannot be read (4 GiB).
+FALLBACK_BUDGET = 4 * 2 ** 30
+_FLOAT = 8  # bytes of a float64
+
+
+def sample_bytes(n_balls: int) -> int:
+    """Bytes of one state sample of a bearing with ``n_balls`` balls: t, glob
+    (NGLOBAL), diag (Z, 2, NDIAG), cage_load (Z, 2), xb, vb, wb, xc, vc (Z, 3
+    each), ring (6)."""
+    z = int(n_balls)
+    return _FLOAT * (1 + NGLOBAL + z * 2 * NDIAG + z * 2 + 5 * z * 3 + 6)
+
+
+def signal_bytes() -> int:
+    """Bytes of one signal sample: its time and the NSIGNAL signals."""
+    return _FLOAT * (1 + NSIGNAL)
+
+
+def _counts(scenario) -> tuple[int, int]:
+    """(state samples, signal samples) of a scenario, as the engines count them."""
+    n_steps = int(round(scenario.t_end / scenario.dt))
+    every = max(1, int(round(scenario.sample_dt / scenario.dt)))
+    sig_every = scenario.signal_every
+    return n_steps // every, (n_steps // sig_every if sig_every else 0)
+
+
+def available_memory() -> int | None:
+    """Memory available to a new allocation now [bytes], or None if unknown."""
+    try:
+        with open("/proc/meminfo") as f:
+            for line in f:
+                if line.startswith("MemAvailable:"):
+                    return int(line.split()[1]) * 1024
+    except (OSError, ValueError, IndexError):
+        pass
+    try:
+        return int(os.sysconf("SC_AVPHYS_PAGES")) * int(os.sysconf("SC_PAGE_SIZE"))
+    except (AttributeError, ValueError, OSError):
+        return None
+
+
+def memory_budget() -> int:
+    """Bytes the samples of one run may take: MEMORY_FRACTION of the available memory."""
+    avail = available_memory()
+    return FALLBACK_BUDGET if avail is None else int(MEMORY_FRACTION * avail)
+
+
+def _gib(n: float) -> str:
+    return f"{n / 2 ** 30:.3g} GiB" if n >= 2 ** 30 else f"{n / 2 ** 20:.3g} MiB"
+
+
+def _round_up(x: float) -> float:
+    """``x`` rounded up to two significant digits."""
+    e = math.floor(math.log10(x)) - 1
+    return math.ceil(x / 10.0 ** e * (1.0 - 1e-12)) * 10.0 ** e
+
+
+def check_sample_memory(bearing, scenario, budget: int | None = None) -> int:
+    """Bytes the sampled series of ``scenario`` on ``bearing`` will take;
+    InputError naming ``sample_dt`` (with the value that fits) or
+    ``signal_dt`` and ``t_end`` when they exceed ``budget`` [bytes]
+    (default :func:`memory_budget`)."""
+    b = load_bearing(bearing)
+    default = budget is None
+    budget = memory_budget() if default else int(budget)
+    n_state, n_signal = _counts(scenario)
+    per = sample_bytes(b.n_balls)
+    state, signal = n_state * per, n_signal * signal_bytes()
+    need = state + signal
+    if need <= budget:
+        return need
+    where = f"the memory budget {_gib(budget)}" + (f" ({MEMORY_FRACTION:g} of the memory available now)"
+                                                    if default else "")
+    head = (f"t_end = {scenario.t_end:.6g} s sampled every sample_dt = {scenario.sample_dt:.3g} s: "
+            f"{n_state:.3g} samples of {b.n_balls} balls")
+    if signal:
+        head += (f" ({_gib(state)}) and {n_signal:.3g} signal samples every signal_dt = {scenario.signal_dt:.3g} s "
+                 f"({_gib(signal)})")
+    head += f" need {_gib(need)}, more than {where}"
+    if signal >= budget:
+        raise InputError(f"signal_dt: {head}: use a larger signal_dt or a shorter t_end")
+    fit = _round_up(max(scenario.t_end * per / (budget - signal), scenario.sample_dt))
+    raise InputError(f"sample_dt: {head}: use sample_dt >= {fit:.2g} s (--sample-dt {fit:.2g}) or a shorter t_end")

@@ -1,0 +1,245 @@
+"""Sweep and dataset robustness: workers end with their parent, signals give one line and the conventional exit
+status, a failing case does not break a dataset, warnings name their case, unstable steps are refined."""
+import json
+import math
+import os
+import signal
+import subprocess
+import sys
+import textwrap
+import time
+import warnings
+from pathlib import Path
+
+import pytest
+
+from exudyn_bearing import StepSizeWarning, load_bearing
+from exudyn_bearing import sweep as sw
+from exudyn_bearing.datasets import build_dataset, dataset_cases, read_index
+from exudyn_bearing.model.scenario import Scenario
+from exudyn_bearing.model.stability import SimulationError, stable_step
+
+ROOT = Path(__file__).resolve().parents[1]
+linux = pytest.mark.skipif(not sys.platform.startswith("linux"), reason="reads /proc")
+
+
+def _descendants(pid):
+    """Pids of the running descendants of ``pid`` (Linux /proc)."""
+    children = {}
+    for d in Path("/proc").iterdir():
+        if d.name.isdigit():
+            try:
+                fields = (d / "stat").read_text().rsplit(")", 1)[1].split()
+            except OSError:
+                continue
+            children.setdefault(int(fields[1]), []).append(int(d.name))
+    out, todo = [], [pid]
+    while todo:
+        kids = children.get(todo.pop(), [])
+        out += kids
+        todo += kids
+    return out
+
+
+def _alive(pid):
+    try:
+        state = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0]
+    except OSError:
+        return False
+    return state != "Z"
+
+
+def _start(argv, tmp_path):
+    """Start ``argv`` (a Python command line) and wait (at most 120 s) until it runs two workers."""
+    env = dict(os.environ, PYTHONPATH=str(ROOT))
+    proc = subprocess.Popen([sys.executable, *argv], cwd=tmp_path, env=env, stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, text=True)
+    workers = []
+    deadline = time.monotonic() + 120
+    while len(workers) < 2 and time.monotonic() < deadline and proc.poll() is None:
+        time.sleep(0.2)
+        workers = _descendants(proc.pid)
+    return proc, workers
+
+
+def _cleanup(proc, workers):
+    for p in [proc.pid, *workers]:
+        if _alive(p):
+            os.kill(p, signal.SIGKILL)
+    proc.wait(10)
+
+
+# a dataset that runs long enough to be signalled: two cases of 20 s each on two workers
+DATASET = ["-m", "exudyn_bearing", "dataset", "ds", "--faults", "healthy", "outer", "--t-end", "20", "--workers", "2"]
+SWEEP = textwrap.dedent("""
+    from exudyn_bearing.sweep import run_sweep
+    cases = {f"c{i}": dict(bearing="6208", scenario=dict(Fr=1000.0 + i, t_end=30.0, dt=5e-6,
+             tangential="implicit", sample_dt=1e-2)) for i in range(4)}
+    run_sweep(cases, "out", workers=2, progress=False)
+""")
+
+
+@linux
+@pytest.mark.parametrize("argv", [DATASET, ["-c", SWEEP]], ids=["dataset", "sweep"])
+def test_workers_end_when_the_parent_is_killed(tmp_path, argv):
+    proc, workers = _start(argv, tmp_path)
+    try:
+        assert len(workers) >= 2, "the run did not start its workers"
+        proc.kill()  # SIGKILL: no handler runs in the parent
+        proc.wait(10)
+        deadline = time.monotonic() + 5.0
+        while any(_alive(p) for p in workers) and time.monotonic() < deadline:
+            time.sleep(0.1)
+        assert [p for p in workers if _alive(p)] == []
+    finally:
+        _cleanup(proc, workers)
+
+
+@linux
+@pytest.mark.parametrize("sig, status", [(signal.SIGTERM, 143), (signal.SIGINT, 130)])
+def test_a_signal_stops_a_dataset_with_one_line_and_the_conventional_status(tmp_path, sig, status):
+    proc, workers = _start(DATASET, tmp_path)
+    try:
+        assert len(workers) >= 2, "the run did not start its workers"
+        time.sleep(0.5)
+        proc.send_signal(sig)
+        _out, err = proc.communicate(timeout=60)
+        assert proc.returncode == status
+        lines = [line for line in err.splitlines() if line.strip() and not line.startswith("exudyn_bearing: compiling")]
+        assert len(lines) == 1 and "Traceback" not in err, err
+        assert signal.Signals(sig).name in lines[0] and "resumes" in lines[0]
+        assert [p for p in workers if _alive(p)] == []
+        assert json.loads((tmp_path / "ds" / "index.json").read_text())["counts"]["pending"] == 2
+    finally:
+        _cleanup(proc, workers)
+
+
+# -- datasets: failures, per-case step, refinement ---------------------------------------------------------
+KW = dict(speeds_rpm=(1797.0,), loads=(1000.0,), sizes=((1e-3, 1.5e-3, 1e-4),), t_end=0.002, workers=1,
+          progress=False)
+
+
+def _failing_outer(real):
+    """simulate() that blows up on every outer-race case and runs the others."""
+    def fake(bearing, scenario, **kw):
+        if scenario.defects and scenario.defects[0].race == "outer":
+            raise SimulationError("dt: the state became non-finite at t = 1e-3 s (test)")
+        return real(bearing, scenario, **kw)
+    return fake
+
+
+def test_a_failing_case_leaves_the_index_of_the_others(tmp_path, monkeypatch, capsys):
+    monkeypatch.setattr(sw, "simulate", _failing_outer(sw.simulate))
+    rows = build_dataset(tmp_path, faults=("healthy", "outer"), **KW)
+    assert [r["fault"] for r in rows] == ["healthy"]
+    assert [r["fault"] for r in read_index(tmp_path)] == ["healthy"]
+    index = json.loads((tmp_path / "index.json").read_text())
+    assert index["counts"] == {"done": 1, "failed": 1, "pending": 0}
+    (name,) = index["failed"]
+    err = json.loads((tmp_path / f"{name}.error.json").read_text())
+    # every attempt blew up: the error of the last one, after REFINE halvings of the step
+    assert err["error"]["type"] == "SimulationError"
+    assert name in capsys.readouterr().err
+
+
+def test_cli_exit_status_3_when_a_case_failed(tmp_path, monkeypatch, capsys):
+    from exudyn_bearing.cli import main
+
+    monkeypatch.setattr(sw, "simulate", _failing_outer(sw.simulate))
+    with pytest.raises(SystemExit) as e:
+        main(["dataset", str(tmp_path), "--faults", "healthy", "outer", "--t-end", "0.002", "--workers", "1"])
+    assert e.value.code == 3
+    out = capsys.readouterr().out
+    assert "cases.failed" in out and (tmp_path / "index.csv").exists()
+
+
+def test_each_case_takes_its_own_stable_step():
+    # at 4000 N the 6205's stable step is below the 5.2 us of 4 steps per 48 kHz sample: that case takes more
+    b = load_bearing("6205")
+    cases = dataset_cases("6205", loads=(500.0, 4000.0), faults=("healthy",), t_end=0.01)
+    steps = {}
+    for name, spec in cases.items():
+        sc = Scenario(**spec["scenario"])
+        n = sc.signal_dt / sc.dt
+        assert n == pytest.approx(round(n), rel=1e-12)  # an integer number of steps per signal sample
+        assert sc.dt <= stable_step(b, sc).dt
+        steps[spec["labels"]["load_N"]] = round(n)
+    assert steps[500.0] == 4 and steps[4000.0] > 4
+
+
+def test_a_blow_up_or_an_unstable_step_is_refined(tmp_path, monkeypatch, capsys):
+    real = sw.simulate
+    seen = []
+
+    def fake(bearing, scenario, **kw):
+        seen.append(scenario.dt)
+        if len(seen) == 1:
+            raise SimulationError("dt: the state became non-finite (test)")
+        if len(seen) == 2:
+            warnings.warn("dt: the ball / cage-ball contacts reached 40 N (test)", StepSizeWarning)
+        return real(bearing, scenario, **kw)
+
+    monkeypatch.setattr(sw, "simulate", fake)
+    spec = dict(bearing="6208", scenario=dict(Fr=1000.0, omega=500.0, t_end=0.001, dt=4e-6, sample_dt=1e-4,
+                                              tangential="implicit"), refine=2)
+    res = sw.run_sweep({"c": spec}, tmp_path, workers=1, progress=False)
+    assert seen == [4e-6, 2e-6, 1e-6]
+    rec = res["c"]
+    assert rec["dt"] == 1e-6 and rec["summary"]["steps"] == 1000
+    assert [r["dt"] for r in rec["retries"]] == [4e-6, 2e-6] and "cage" in rec["retries"][1]["reason"]
+    assert rec["warnings"] == []  # the kept run's
+    # without refine the warning stays, in the record and on stderr with the case's name
+    seen.clear()
+    seen.append(None)
+    res = sw.run_sweep({"d": {**spec, "refine": 0}}, tmp_path, workers=1, progress=False)
+    assert res["d"]["warnings"][0]["type"] == "StepSizeWarning" and res["d"]["dt"] == 4e-6
+    assert "[sweep] d: StepSizeWarning: dt: the ball / cage-ball" in capsys.readouterr().err
+
+
+def test_refine_must_be_a_small_integer(tmp_path):
+    spec = dict(bearing="6208", scenario=dict(Fr=1000.0, t_end=0.001), refine=-1)
+    res = sw.run_sweep({"c": spec}, tmp_path, workers=1, progress=False)
+    assert res["c"]["error"]["type"] == "InputError" and res["c"]["error"]["message"].startswith("refine")
+    assert math.isfinite(res["c"]["wall_case_s"])
+
+
+@linux
+@pytest.mark.parametrize("sig", [signal.SIGTERM, signal.SIGINT])
+def test_a_signal_to_the_parent_stops_the_workers(tmp_path, sig):
+    # six long cases on two workers: the parent alone is signalled while the first two
+    # run; no worker may survive it, no queued case may start, the index lists them pending
+    script = textwrap.dedent(f"""
+        import sys
+        from exudyn_bearing.sweep import SweepInterrupted, run_sweep
+        cases = {{f"c{{i}}": dict(bearing="6208", scenario=dict(Fr=1000.0 + i, t_end=30.0, dt=5e-6,
+                  tangential="implicit", sample_dt=1e-2)) for i in range(6)}}
+        try:
+            run_sweep(cases, {str(tmp_path)!r}, workers=2, progress=False)
+        except SweepInterrupted:
+            sys.exit(43)
+        except KeyboardInterrupt:
+            sys.exit(42)
+    """)
+    proc = subprocess.Popen([sys.executable, "-c", script])
+    workers = []
+    try:
+        deadline = time.monotonic() + 120
+        while len(workers) < 2 and time.monotonic() < deadline and proc.poll() is None:
+            time.sleep(0.2)
+            workers = _descendants(proc.pid)
+        assert len(workers) >= 2, "the sweep did not start its workers"
+        time.sleep(1.0)
+        workers = _descendants(proc.pid)
+        proc.send_signal(sig)
+        rc = proc.wait(60)
+        assert rc == 43  # SweepInterrupted for both (a KeyboardInterrupt)
+        time.sleep(0.5)
+        assert [p for p in workers if _alive(p)] == []
+        index = json.loads((tmp_path / "index.json").read_text())
+        assert index["counts"]["pending"] == 6
+        assert not list(tmp_path.glob("c*.json"))
+    finally:
+        for p in [proc.pid, *workers]:
+            if _alive(p):
+                os.kill(p, signal.SIGKILL)
+        proc.wait(10)
