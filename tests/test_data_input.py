@@ -102,7 +102,7 @@ def test_single_bearing_file_round_trips(tmp_path):
     (dict(material={"youngs_modulus": "2.1e11"}), r"^youngs_modulus: expected a number"),
     (dict(material={"youngs_modulus": 2.1e11, "colour": "red"}), r"^colour: unknown material parameter"),
     (dict(material="unobtainium"), r"^material: unknown material 'unobtainium'"),
-    (dict(free_contact_angle="40"), r"^free_contact_angle: expected a number"),
+    (dict(free_contact_angle_deg="40"), r"^free_contact_angle_deg: expected a number"),
     (dict(name=6208), r"^name: expected a string"),
 ])
 def test_bearing_dicts_with_wrong_types_name_the_field(change, match):

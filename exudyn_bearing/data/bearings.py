@@ -37,7 +37,8 @@ from dataclasses import dataclass, field
 from .errors import InputError, check_finite, check_integer, check_positive, check_text
 from .materials import Material
 
-__all__ = ["BallBearing", "MAX_FREE_CONTACT_ANGLE", "MAX_PRELOAD_INTERFERENCE"]
+__all__ = ["BallBearing", "MAX_FREE_CONTACT_ANGLE", "MAX_PRELOAD_INTERFERENCE", "free_contact_angle_from_degrees",
+           "check_free_contact_angle"]
 
 #: Largest free contact angle accepted [rad]. A ball whose free contact angle
 #: (rings shifted axially until the ball touches both grooves) exceeds it is
@@ -49,6 +50,43 @@ MAX_FREE_CONTACT_ANGLE = math.radians(60.0)
 #: Largest preload interference -P_d/2 accepted, as a fraction of the ball
 #: radius. Hertz theory needs overlaps small against the radii.
 MAX_PRELOAD_INTERFERENCE = 0.01
+
+#: Smallest nonzero free contact angle accepted in degrees [deg]: a value
+#: below pi/2 given in degrees is far more likely an angle in radians (angular-
+#: contact bearings have 15-40 deg; deep-groove bearings 0).
+MIN_FREE_CONTACT_ANGLE_DEG = 0.5 * math.pi
+
+
+def check_free_contact_angle(a0, name: str = "free_contact_angle") -> float:
+    """``a0`` [rad] as a float in [0, MAX_FREE_CONTACT_ANGLE], else InputError
+    naming ``name``; a value that reads as degrees (1.6 to 90) says so.
+
+    Angles are in radians everywhere in Python and under the key
+    ``free_contact_angle`` of a bearing file; ``free_contact_angle_deg``
+    (files, :meth:`BallBearing.to_dict`) carries degrees."""
+    a0 = check_finite(name, a0)
+    if 0.5 * math.pi <= a0 <= 90.0:
+        raise InputError(f"{name}: {a0:g} rad is not a free contact angle; angles are in radians "
+                         f"({a0:g} deg is {math.radians(a0):.6g} rad; a bearing file may give "
+                         f"free_contact_angle_deg instead)")
+    if not 0.0 <= a0 <= MAX_FREE_CONTACT_ANGLE:
+        raise InputError(f"{name}: must lie in [0, {MAX_FREE_CONTACT_ANGLE:.6g}] rad (0 to "
+                         f"{math.degrees(MAX_FREE_CONTACT_ANGLE):.0f} deg), got {a0:g}")
+    return a0
+
+
+def free_contact_angle_from_degrees(deg, name: str = "free_contact_angle_deg") -> float:
+    """The free contact angle [rad] of a value in degrees (``free_contact_angle_deg``
+    of a bearing file); a nonzero value below pi/2 reads as radians and is
+    refused, naming ``name``."""
+    v = check_finite(name, deg)
+    if 0.0 < v < MIN_FREE_CONTACT_ANGLE_DEG:
+        raise InputError(f"{name}: {v:g} deg looks like an angle in radians ({v:g} rad = "
+                         f"{math.degrees(v):.4g} deg); give degrees here, or the key free_contact_angle "
+                         "in radians")
+    if not 0.0 <= v <= math.degrees(MAX_FREE_CONTACT_ANGLE):
+        raise InputError(f"{name}: must lie in [0, {math.degrees(MAX_FREE_CONTACT_ANGLE):.0f}] deg, got {v:g}")
+    return math.radians(v)
 
 
 @dataclass(frozen=True)
@@ -70,7 +108,10 @@ class BallBearing:
         R_z [m] of the torus-cage balls between neighbouring balls; None for
         a cageless bearing.
     free_contact_angle : float
-        alpha_0 [rad] at which the groove centres are placed (0 for deep groove).
+        alpha_0 [rad] at which the groove centres are placed (0 for deep
+        groove), at most ``MAX_FREE_CONTACT_ANGLE``; a value that reads as
+        degrees is refused. Bearing files give it in radians under this
+        key or in degrees as ``free_contact_angle_deg``.
     material : Material
         Material of balls and rings.
     """
@@ -99,9 +140,7 @@ class BallBearing:
         ro = check_positive("outer_race_radius", self.outer_race_radius)
         rci = check_positive("inner_groove_radius", self.inner_groove_radius)
         rco = check_positive("outer_groove_radius", self.outer_groove_radius)
-        a0 = check_finite("free_contact_angle", self.free_contact_angle)
-        if not 0.0 <= a0 < 0.5 * math.pi:
-            raise InputError(f"free_contact_angle: must lie in [0, pi/2) rad, got {a0}")
+        a0 = check_free_contact_angle(self.free_contact_angle)
         if not isinstance(self.material, Material):
             raise InputError(f"material: expected a Material, got {type(self.material).__name__}")
         check_text("name", self.name)
@@ -305,8 +344,9 @@ class BallBearing:
         return self.replace(outer_race_radius=ro)
 
     def to_dict(self) -> dict:
-        """Plain JSON-able dict (the format of ``catalog.json``; angles in deg)."""
+        """Plain JSON-able dict (the format of ``catalog.json``; the angle in
+        degrees as ``free_contact_angle_deg``)."""
         d = {f.name: getattr(self, f.name) for f in dataclasses.fields(self)}
-        d["free_contact_angle"] = math.degrees(self.free_contact_angle)
+        d["free_contact_angle_deg"] = math.degrees(d.pop("free_contact_angle"))
         d["material"] = dataclasses.asdict(self.material)
         return d

@@ -3,8 +3,10 @@
 
 Each entry of ``catalog.json`` carries its ``source``. See docs/theory/geometry.md.
 
-A bearing is given in one of two forms (lengths in metres,
-``free_contact_angle`` in degrees, ``material`` a material name or a dict of
+A bearing is given in one of two forms (lengths in metres, the free contact
+angle as ``free_contact_angle_deg`` in degrees or ``free_contact_angle`` in
+radians as in Python, not both; a value that reads in the other unit is
+refused), ``material`` a material name or a dict of
 :class:`~.materials.Material` fields, optional ``name``, ``source``,
 ``cage_ball_radius``, ``bore``, ``outer_diameter``):
 
@@ -26,13 +28,12 @@ from __future__ import annotations
 
 import dataclasses
 import json
-import math
 from importlib import resources
 from pathlib import Path
 from typing import Mapping
 
-from .bearings import BallBearing
-from .errors import InputError, check_finite, check_keys
+from .bearings import BallBearing, free_contact_angle_from_degrees
+from .errors import InputError, check_keys
 from .lubricants import Lubricant
 from .materials import Material
 from .traction import TractionModel
@@ -41,10 +42,10 @@ __all__ = ["catalog", "materials", "lubricants", "traction_models", "get_bearing
            "default_lubricant", "get_traction_model", "BEARING_KEYS", "DIMENSION_KEYS"]
 
 #: Keys of a bearing in the race-radii form (the fields of BallBearing).
-BEARING_KEYS = tuple(f.name for f in dataclasses.fields(BallBearing))
+BEARING_KEYS = tuple(f.name for f in dataclasses.fields(BallBearing)) + ("free_contact_angle_deg",)
 #: Keys of a bearing in the dimensions form (:meth:`BallBearing.from_dimensions`).
 DIMENSION_KEYS = ("n_balls", "ball_diameter", "pitch_diameter", "inner_conformity", "outer_conformity",
-                  "diametral_clearance", "free_contact_angle", "material", "cage_ball_radius", "name", "source",
+                  "diametral_clearance", "free_contact_angle", "free_contact_angle_deg", "material", "cage_ball_radius", "name", "source",
                   "bore", "outer_diameter")
 _MATERIAL_KEYS = tuple(f.name for f in dataclasses.fields(Material))
 _LUBRICANT_KEYS = tuple(f.name for f in dataclasses.fields(Lubricant))
@@ -121,7 +122,11 @@ def _bearing_from_dict(name: str, d: Mapping, extra_materials: Mapping | None = 
     for key in required:
         if key not in d:
             raise InputError(f"{key}: missing")
-    d["free_contact_angle"] = math.radians(check_finite("free_contact_angle", d.get("free_contact_angle", 0.0)))
+    if "free_contact_angle_deg" in d:
+        if "free_contact_angle" in d:
+            raise InputError("free_contact_angle: given both in radians (free_contact_angle) and in degrees "
+                             "(free_contact_angle_deg); give one")
+        d["free_contact_angle"] = free_contact_angle_from_degrees(d.pop("free_contact_angle_deg"))
     d.setdefault("name", name)
     if dimensions:
         return BallBearing.from_dimensions(material=mat, **d)
