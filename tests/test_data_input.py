@@ -41,7 +41,7 @@ def test_from_dimensions_reproduces_the_catalogue(name, f, alpha_deg, rz):
 def test_from_dimensions_clearance_and_bad_dimensions():
     b = BallBearing.from_dimensions(9, 12.6e-3, 60.6e-3, 0.52, 0.52, diametral_clearance=12.6e-6)
     assert b.diametral_clearance == pytest.approx(12.6e-6) and b.pitch_diameter == pytest.approx(60.6e-3)
-    with pytest.raises(InputError, match=r"^inner_conformity: must exceed 0.5"):
+    with pytest.raises(InputError, match=r"^inner_conformity: must lie in \(0.5, 0.6\]"):
         BallBearing.from_dimensions(9, 12.6e-3, 60.6e-3, 0.49, 0.52)
     with pytest.raises(InputError, match=r"^ball_diameter: must be smaller than pitch_diameter"):
         BallBearing.from_dimensions(9, 70e-3, 60.6e-3, 0.52, 0.52)

@@ -58,3 +58,68 @@ def test_to_dict_round_trips_through_a_file_in_degrees(tmp_path):
     f = tmp_path / "b.json"
     f.write_text(json.dumps(d))
     assert load_bearing(str(f)).free_contact_angle == eb.catalog["7208"].free_contact_angle
+
+
+# -- 19.3 unit mistakes named -------------------------------------------------------------------------------
+def test_a_bearing_file_in_mm_is_refused_naming_metres(tmp_path):
+    mm = {k: (v * 1e3 if k.endswith("radius") and v is not None else v)
+          for k, v in eb.catalog["6208"].to_dict().items()}
+    f = tmp_path / "mm.json"
+    f.write_text(json.dumps(mm))
+    with pytest.raises(InputError, match=r"^ball_radius: 6.3 m is not plausible .*; lengths are in metres: "
+                                         r"6.3 mm is 0.0063 m"):
+        load_bearing(str(f))
+    with pytest.raises(InputError, match=r"^ball_diameter: 12.7 m .* lengths are in metres: 12.7 mm is 0.0127 m"):
+        BallBearing.from_dimensions(9, 12.7, 60.6, 0.52, 0.52)
+
+
+@pytest.mark.parametrize("f, match", [
+    (52.0, r"^inner_conformity: 52 is a percentage; .* 52 % is 0.52"),
+    (0.7, r"^inner_conformity: must lie in \(0.5, 0.6\]"),
+    (0.5, r"^inner_conformity: must lie in \(0.5, 0.6\]"),
+])
+def test_conformity_outside_half_to_0_6_is_refused(f, match):
+    with pytest.raises(InputError, match=match):
+        BallBearing.from_dimensions(9, 12.6e-3, 60.6e-3, f, 0.52)
+
+
+def test_groove_radius_beyond_conformity_0_6_is_refused():
+    # race-radii form: R_ci = 0.7 D = 8.82 mm for D = 12.6 mm
+    with pytest.raises(InputError, match=r"^inner_groove_radius: 0.00882 m is 0.7 ball diameters"):
+        eb.catalog["6208"].replace(inner_groove_radius=8.82e-3)
+
+
+@pytest.mark.parametrize("kw, match", [
+    (dict(youngs_modulus=210e3), r"^youngs_modulus: 210000 Pa .*Young's modulus is in Pa: 210000 MPa is 2.1e\+11 Pa"),
+    (dict(youngs_modulus=210.0), r"^youngs_modulus: 210 Pa .*: 210 GPa is 2.1e\+11 Pa"),
+    (dict(density=7.85), r"^density: 7.85 kg/m\^3 .*: 7.85 g/cm\^3 is 7850 kg/m\^3"),
+])
+def test_material_unit_mistakes_are_named(kw, match):
+    with pytest.raises(InputError, match=match):
+        eb.Material(**kw)
+
+
+@pytest.mark.parametrize("kw, match", [
+    (dict(viscosity=40.0), r"^viscosity: 40 Pa s .*: 40 mPa s \(cP\) is 0.04 Pa s"),
+    (dict(pressure_viscosity=23.0), r"^pressure_viscosity: 23 1/Pa .*: 23 1/GPa is 2.3e-08 1/Pa"),
+    (dict(roughness_race=0.3), r"^roughness_race: 0.3 m .*: 0.3 um is 3e-07 m"),
+])
+def test_lubricant_unit_mistakes_are_named(kw, match):
+    with pytest.raises(InputError, match=match):
+        eb.Lubricant(**kw)
+
+
+def test_temperatures_in_celsius_are_refused_everywhere():
+    msg = r"^temperatures.inner: 20 K is not plausible .*temperatures are in kelvin: 20 degC is 293.15 K"
+    with pytest.raises(InputError, match=msg):
+        eb.Scenario(temperatures={"inner": 20.0, "outer": 80.0, "ball": 20.0})
+    with pytest.raises(InputError, match=msg):
+        eb.solve_quasistatic("6208", Fr=3000.0, temperatures={"inner": 20.0, "outer": 80.0, "ball": 20.0})
+    assert eb.Scenario(temperatures={"inner": 353.15}).temperatures == {"inner": 353.15}
+
+
+def test_cli_temperature_in_celsius_exits_2(capsys):
+    from exudyn_bearing.cli import main
+    assert main(["quasistatic", "6208", "--Fr", "3000", "--temperature", "20", "80", "20"]) == 2
+    err = capsys.readouterr().err
+    assert "temperatures.inner: 20 K" in err and "20 degC is 293.15 K" in err

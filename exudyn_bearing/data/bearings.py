@@ -34,7 +34,8 @@ import dataclasses
 import math
 from dataclasses import dataclass, field
 
-from .errors import InputError, check_finite, check_integer, check_positive, check_text
+from .errors import (LENGTH_MISTAKES, InputError, check_finite, check_integer, check_plausible, check_positive,
+                     check_text)
 from .materials import Material
 
 __all__ = ["BallBearing", "MAX_FREE_CONTACT_ANGLE", "MAX_PRELOAD_INTERFERENCE", "free_contact_angle_from_degrees",
@@ -50,6 +51,36 @@ MAX_FREE_CONTACT_ANGLE = math.radians(60.0)
 #: Largest preload interference -P_d/2 accepted, as a fraction of the ball
 #: radius. Hertz theory needs overlaps small against the radii.
 MAX_PRELOAD_INTERFERENCE = 0.01
+
+#: Ball diameters accepted [m]: 0.2 mm (miniature bearings) to 200 mm (large
+#: slewing bearings); a value outside is a unit mistake (mm, cm, um).
+BALL_DIAMETER_RANGE = (2e-4, 0.2)
+#: Conformities f = R_c / D accepted: above 0.5 (the groove must be larger
+#: than the ball) up to 0.6; ball bearings have 0.505-0.58 (Harris & Kotzalas,
+#: Rolling Bearing Analysis, 5th ed., 2006, on osculation).
+MAX_CONFORMITY = 0.6
+
+
+def check_ball_diameter(name, value, factor=1.0) -> float:
+    """A ball diameter (``factor`` 1) or radius (0.5) [m] within
+    :data:`BALL_DIAMETER_RANGE`, else InputError naming ``name`` and the
+    likely unit mistake ("lengths are in metres: 12.7 mm is 0.0127 m")."""
+    v = check_positive(name, value)
+    return check_plausible(name, v, factor * BALL_DIAMETER_RANGE[0], factor * BALL_DIAMETER_RANGE[1], "m",
+                           "lengths are in metres", LENGTH_MISTAKES)
+
+
+def check_conformity(name, value) -> float:
+    """A groove conformity f = R_c / D in (0.5, MAX_CONFORMITY], else
+    InputError naming ``name`` (a percentage says so)."""
+    f = check_finite(name, value)
+    if 0.5 < f <= MAX_CONFORMITY + 1e-12:
+        return f
+    if 50.0 < f <= 100.0 * MAX_CONFORMITY:
+        raise InputError(f"{name}: {f:g} is a percentage; the conformity is the ratio f = groove radius / ball "
+                         f"diameter: {f:g} % is {f / 100:g}")
+    raise InputError(f"{name}: must lie in (0.5, {MAX_CONFORMITY:g}] (groove radius f D above the ball radius D/2; "
+                     f"ball bearings have 0.505-0.58), got {f:g}")
 
 #: Smallest nonzero free contact angle accepted in degrees [deg]: a value
 #: below pi/2 given in degrees is far more likely an angle in radians (angular-
@@ -135,7 +166,7 @@ class BallBearing:
         if z < 3:
             raise InputError(f"n_balls: at least 3 balls are needed, got {z}")
         object.__setattr__(self, "n_balls", z)
-        rb = check_positive("ball_radius", self.ball_radius)
+        rb = check_ball_diameter("ball_radius", self.ball_radius, 0.5)
         ri = check_positive("inner_race_radius", self.inner_race_radius)
         ro = check_positive("outer_race_radius", self.outer_race_radius)
         rci = check_positive("inner_groove_radius", self.inner_groove_radius)
@@ -160,6 +191,11 @@ class BallBearing:
         if rco <= rb:
             raise InputError(
                 f"outer_groove_radius: the ball (R_b = {rb}) must be smaller than the groove, got {rco}")
+        for key, r_c in (("inner_groove_radius", rci), ("outer_groove_radius", rco)):
+            if r_c > (2.0 * MAX_CONFORMITY + 1e-12) * rb:
+                raise InputError(f"{key}: {r_c:g} m is {r_c / (2.0 * rb):.4g} ball diameters; a groove radius "
+                                 f"lies between 0.5 and {MAX_CONFORMITY:g} D (conformity), here "
+                                 f"{MAX_CONFORMITY * 2.0 * rb:.4g} m at most")
         pd = self.diametral_clearance
         if pd < 0.0 and -0.5 * pd > MAX_PRELOAD_INTERFERENCE * rb:
             raise InputError(
@@ -205,7 +241,7 @@ class BallBearing:
         ball_diameter, pitch_diameter : float
             D and d_m [m].
         inner_conformity, outer_conformity : float
-            f_i = R_ci / D and f_o = R_co / D [-], above 0.5 (typically 0.51-0.54).
+            f_i = R_ci / D and f_o = R_co / D [-], in (0.5, 0.6] (typically 0.51-0.54).
         diametral_clearance : float
             P_d [m] (negative: preload).
         free_contact_angle : float
@@ -221,15 +257,12 @@ class BallBearing:
         >>> round(b.inner_race_radius * 1e3, 6), round(b.outer_groove_radius * 1e3, 6)
         (24.0, 6.552)
         """
-        d = check_positive("ball_diameter", ball_diameter)
+        d = check_ball_diameter("ball_diameter", ball_diameter)
         dm = check_positive("pitch_diameter", pitch_diameter)
         if not d < dm:
             raise InputError(f"ball_diameter: must be smaller than pitch_diameter ({dm}), got {d}")
-        fi = check_finite("inner_conformity", inner_conformity)
-        fo = check_finite("outer_conformity", outer_conformity)
-        for key, f in (("inner_conformity", fi), ("outer_conformity", fo)):
-            if not f > 0.5:
-                raise InputError(f"{key}: must exceed 0.5 (groove radius f D above the ball radius D/2), got {f}")
+        fi = check_conformity("inner_conformity", inner_conformity)
+        fo = check_conformity("outer_conformity", outer_conformity)
         pd = check_finite("diametral_clearance", diametral_clearance)
         return cls(n_balls=n_balls, ball_radius=0.5 * d, inner_race_radius=0.5 * dm - 0.5 * d - 0.25 * pd,
                    outer_race_radius=0.5 * dm + 0.5 * d + 0.25 * pd, inner_groove_radius=fi * d,

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..data import InputError, get_traction_model
-from ..data.errors import check_bool, check_number
+from ..data.errors import check_bool, check_number, check_temperatures
 from ..data.defects import as_defect
 from ..physics.ehl import film_model_code
 from ..physics.hertz import method_code
@@ -262,14 +262,7 @@ class Scenario:
             raise InputError("contact_law: the peer power law has no Hertz ellipse; use traction_level='point'")
         if not isinstance(self.ring_growth, (bool, np.bool_)):
             raise InputError(f"ring_growth: must be True or False, got {self.ring_growth!r}")
-        if self.temperatures is not None:
-            if not isinstance(self.temperatures, dict):
-                raise InputError(f"temperatures: expected a dict of inner, outer, ball [K], got {self.temperatures!r}")
-            for k, v in self.temperatures.items():
-                if k not in ("inner", "outer", "ball"):
-                    raise InputError(f"temperatures: unknown part {k!r} (valid: inner, outer, ball)")
-                if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v) or v <= 0:
-                    raise InputError(f"temperatures.{k}: must be an absolute temperature > 0 K, got {v!r}")
+        object.__setattr__(self, "temperatures", check_temperatures(self.temperatures))
         try:
             method_code(self.hertz)
         except ValueError as exc:
