@@ -8,8 +8,14 @@ from .data import BallBearing, InputError, Lubricant, load_bearing, load_lubrica
 from .model.scenario import Scenario
 from .outputs.results import Results
 from .solvers.element import BallBearingElement as _ElementBase
+from .solvers.element.element import element_scenario
 
-__all__ = ["simulate", "ENGINES", "CreateBallBearing", "BallBearingElement", "quasistatic_start"]
+__all__ = ["simulate", "ENGINES", "CreateBallBearing", "BallBearingElement", "quasistatic_start", "spec_inputs",
+           "SPEC_KEYS"]
+
+#: Keys of a case spec (sweeps, datasets): see :func:`spec_inputs`; ``labels`` is
+#: metadata a dataset carries into its records.
+SPEC_KEYS = ("bearing", "scenario", "engine", "lubricant", "labels")
 
 #: Engines that :func:`simulate` knows.
 ENGINES = ("reference", "exudyn")
@@ -56,6 +62,33 @@ def simulate(bearing, scenario: Scenario | None = None, engine: str = "reference
     from .solvers.element.engine import ExudynEngine
 
     return Results(ExudynEngine(bearing, scenario, lubricant, start=start).run(progress=progress))
+
+
+def spec_inputs(spec) -> dict:
+    """The validated keyword arguments of :func:`simulate` for a case spec
+    (the one validation path of sweeps and datasets): ``bearing`` (catalogue
+    name, JSON file or dict), ``scenario`` (dict of Scenario fields or a
+    Scenario), optional ``engine`` and ``lubricant`` (catalogue name, JSON
+    file, dict of Lubricant fields or a Lubricant), ``labels`` (metadata,
+    not read here). An unknown key of the
+    spec or of its scenario raises InputError naming it.
+
+    >>> sorted(spec_inputs({"bearing": "6208", "scenario": {"Fr": 3000.0}, "lubricant": "MIL-L-23699_492K"}))
+    ['bearing', 'engine', 'lubricant', 'scenario']
+    """
+    from .data.errors import check_keys
+
+    if not isinstance(spec, dict):
+        raise InputError(f"spec: expected a dict with keys {', '.join(SPEC_KEYS)}, got {spec!r}")
+    check_keys("spec key", spec, SPEC_KEYS)
+    if "bearing" not in spec:
+        raise InputError("bearing: missing in the spec")
+    engine = spec.get("engine", "reference")
+    if engine not in ENGINES:
+        raise InputError(f"engine: unknown engine {engine!r} (valid: {', '.join(ENGINES)})")
+    lub = spec.get("lubricant")
+    return {"bearing": load_bearing(spec["bearing"]), "scenario": Scenario.from_dict(spec.get("scenario", {})),
+            "engine": engine, "lubricant": None if lub is None else load_lubricant(lub)}
 
 
 def quasistatic_start(bearing, scenario: Scenario, lubricant: Lubricant | None = None) -> dict:
@@ -119,11 +152,7 @@ def CreateBallBearing(mbs, bearing: BallBearing | str, markerInnerRing, markerOu
         Holds ``items`` and ``sensors``; ``results()`` after the solve.
     """
     if options.get("initial") == "quasistatic" and options.get("initialState") is None:
-        load = options.get("initialLoad", (0.0, 0.0))
-        fr, fa = (float(load), 0.0) if isinstance(load, (int, float)) else (float(load[0]), float(load[1]))
-        sc = Scenario(Fr=fr, Fa=fa, omega=float(options.get("initialOmega", 0.0)),
-                      control=options.get("control", "auto"), traction=options.get("traction", "lambda_dem"),
-                      ring_growth=bool(options.get("ringGrowth", False)), temperatures=options.get("temperatures"),
-                      hertz=options.get("hertzModel", "exact"))
+        # the element's own option checks (messages name the options), then its quasi-static start
+        sc = element_scenario(bearing, **options)
         options["initialState"] = quasistatic_start(bearing, sc, options.get("lubricant"))
     return BallBearingElement(mbs, bearing, markerInnerRing, markerOuterRing, **options)

@@ -123,3 +123,68 @@ def test_cli_temperature_in_celsius_exits_2(capsys):
     assert main(["quasistatic", "6208", "--Fr", "3000", "--temperature", "20", "80", "20"]) == 2
     err = capsys.readouterr().err
     assert "temperatures.inner: 20 K" in err and "20 degC is 293.15 K" in err
+
+
+# -- 19.10 one validation path for API, CLI, files and sweeps -------------------------------------------------
+@pytest.mark.parametrize("kw, match", [
+    (dict(Fr=True), r"^Fr: expected a number, got True \(bool\)"),
+    (dict(Fr="3000"), r"^Fr: expected a number, got '3000' \(str\)"),
+    (dict(Fr=3000.0, shoulder_angle=float("nan")), r"^shoulder_angle: must be finite"),
+    (dict(Fr=3000.0, ring_growth="no"), r"^ring_growth: must be True or False"),
+    (dict(Fr=3000.0, n_strips=8.5), r"^n_strips: expected an integer"),
+    (dict(Fr=3000.0, lubricant="no-such-oil"), r"^lubricant: unknown lubricant 'no-such-oil'"),
+])
+def test_solve_quasistatic_refuses_what_the_data_layer_refuses(kw, match):
+    with pytest.raises(InputError, match=match):
+        eb.solve_quasistatic("6208", **kw)
+
+
+def test_one_defect_is_a_sequence_of_one():
+    d = eb.Defect("outer", position=0.0, length=1e-3, width=1e-3, depth=1e-4)
+    assert eb.Scenario(defects=d).defects == (d,)
+    assert eb.Scenario(defects=d.to_dict()).defects == (d,)
+    with pytest.raises(InputError, match=r"^defects: expected a Defect"):
+        eb.Scenario(defects="outer")
+
+
+def test_element_options_take_a_lubricant_name_and_one_defect():
+    from exudyn_bearing.solvers.element.element import element_scenario
+    d = eb.Defect("outer", position=0.0, length=1e-3, width=1e-3, depth=1e-4)
+    assert element_scenario(defects=d).defects == (d,)
+    with pytest.raises(InputError, match=r"^initialLoad: expected a number, got '3000'"):
+        element_scenario(initialLoad=("3000", 0.0))
+    with pytest.raises(InputError, match=r"^ringGrowth: must be True or False, got 1"):
+        element_scenario(ringGrowth=1)
+    with pytest.raises(InputError, match=r"^initalLoad: unknown option of the bearing element"):
+        element_scenario(initalLoad=3000.0)
+    assert eb.load_lubricant("MIL-L-23699_492K") is eb.lubricants["MIL-L-23699_492K"]
+
+
+def test_sweep_specs_go_through_one_check():
+    from exudyn_bearing.simulate import spec_inputs
+    kw = spec_inputs({"bearing": "6208", "scenario": {"Fr": 3000.0}, "lubricant": "MIL-L-23699_492K"})
+    assert kw["lubricant"] is eb.lubricants["MIL-L-23699_492K"] and kw["scenario"].Fr == 3000.0
+    assert spec_inputs({"bearing": "6208", "lubricant": {"viscosity": 0.03}})["lubricant"].viscosity == 0.03
+    with pytest.raises(InputError, match=r"^lubricnt: unknown spec key"):
+        spec_inputs({"bearing": "6208", "lubricnt": "MIL-L-23699_492K"})
+    with pytest.raises(InputError, match=r"^Frr: unknown scenario field"):
+        spec_inputs({"bearing": "6208", "scenario": {"Frr": 3000.0}})
+
+
+# -- 19.11 errors that name the parameter the user gave --------------------------------------------------------
+def test_quasistatic_speed_that_closes_the_clearance_names_omega():
+    with pytest.raises(InputError, match=r"^omega: the operating interference .*\(centrifugal ring growth"):
+        eb.solve_quasistatic("6208", Fr=3000.0, omega=1e7)
+
+
+def test_held_displacement_in_the_wrong_unit_names_the_dof():
+    with pytest.raises(InputError, match=r"^fixed.delta_x: 1 m moves the inner ring by more than 0.1 R_b"):
+        eb.solve_quasistatic("6208", Fr=3000.0, fixed={"delta_x": 1.0})
+
+
+def test_a_held_radial_displacement_is_held():
+    # x held at 10 um, 6208 under 3000 N (free: 24.8 um): the ring stays at 10 um and the reaction carries
+    # the rest of the load, in the direction of +x (the balls push back less than 3000 N)
+    s = eb.solve_quasistatic("6208", Fr=3000.0, fixed={"delta_x": 10e-6}, stiffness=False)
+    assert s.displacement[0] == 10e-6
+    assert s.reactions["delta_x"] < 0.0

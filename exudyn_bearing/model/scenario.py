@@ -13,8 +13,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..data import InputError, get_traction_model
-from ..data.errors import check_bool, check_number, check_temperatures
-from ..data.defects import as_defect
+from ..data.errors import check_bool, check_keys, check_number, check_temperatures
+from ..data.defects import Defect, as_defect
 from ..physics.ehl import film_model_code
 from ..physics.hertz import method_code
 from .layout import MAX_DEFECTS
@@ -132,7 +132,7 @@ class Scenario:
         Time step [s] (default 1 us, the DEM papers' step).
     sample_dt : float
         Output interval [s].
-    defects : tuple of Defect (or dicts of their fields)
+    defects : tuple of Defect (or dicts of their fields), or one of them
         Localized defects (spalls) on the races or balls
         (:class:`exudyn_bearing.data.Defect`, at most ``MAX_DEFECTS``);
         empty (default): a healthy bearing, and the kernels skip the defect
@@ -275,9 +275,13 @@ class Scenario:
             raise InputError(f"ring_mass: must be > 0, got {self.ring_mass}")
         if self.Pd is not None and not math.isfinite(self.Pd):
             raise InputError(f"Pd: must be finite, got {self.Pd}")
-        if isinstance(self.defects, (str, bytes, dict)) or not hasattr(self.defects, "__iter__"):
-            raise InputError(f"defects: expected a sequence of Defect objects or dicts, got {self.defects!r}")
-        defects = tuple(as_defect(d) for d in self.defects)
+        defects = self.defects
+        if isinstance(defects, (Defect, dict)):  # one defect: a sequence of one
+            defects = (defects,)
+        if isinstance(defects, (str, bytes)) or not hasattr(defects, "__iter__"):
+            raise InputError(f"defects: expected a Defect, a dict of its fields or a sequence of them, got "
+                             f"{defects!r}")
+        defects = tuple(as_defect(d) for d in defects)
         if len(defects) > MAX_DEFECTS:
             raise InputError(f"defects: at most {MAX_DEFECTS} defects per scene, got {len(defects)}")
         object.__setattr__(self, "defects", defects)
@@ -310,6 +314,17 @@ class Scenario:
 
     def replace(self, **changes) -> "Scenario":
         return dataclasses.replace(self, **changes)
+
+    @classmethod
+    def from_dict(cls, d) -> "Scenario":
+        """A Scenario from a dict of its fields (sweep specs, JSON); an
+        unknown key raises InputError naming it, with the valid ones."""
+        if isinstance(d, Scenario):
+            return d
+        if not isinstance(d, dict):
+            raise InputError(f"scenario: expected a dict of Scenario fields, got {d!r}")
+        check_keys("scenario field", d, [f.name for f in dataclasses.fields(cls)])
+        return cls(**d)
 
     @classmethod
     def papers_protocol(cls, omega=500.0, t_ramp_up=0.02, t_steady=0.06, t_ramp_down=0.02, **kw):
