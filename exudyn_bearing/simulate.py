@@ -4,7 +4,8 @@ chosen engine and returns :class:`~exudyn_bearing.outputs.results.Results`;
 :func:`CreateBallBearing` adds the bearing element to an Exudyn model."""
 from __future__ import annotations
 
-from .data import BallBearing, InputError, Lubricant, load_bearing, load_lubricant
+from .data import BallBearing, InputError, Lubricant, default_traction, load_bearing, load_lubricant
+from .model.load_range import check_run_pressures
 from .model.scenario import Scenario
 from .outputs.results import Results
 from .solvers.element import BallBearingElement as _ElementBase
@@ -34,7 +35,9 @@ def simulate(bearing, scenario: Scenario | None = None, engine: str = "reference
         The numba DEM reference core, or the same scene built in Exudyn with
         the bearing element (:mod:`exudyn_bearing.solvers.element`).
     lubricant : Lubricant or str, optional
-        Lubricant, catalogue name or JSON file (default: the DEM papers').
+        Lubricant, catalogue name, JSON file or dict (default: the bearing's,
+        :func:`exudyn_bearing.data.default_lubricant`; the scenario's traction
+        model likewise defaults to the bearing's).
     progress : bool or None
         Progress on stderr (None: for long runs).
 
@@ -51,17 +54,47 @@ def simulate(bearing, scenario: Scenario | None = None, engine: str = "reference
     198
     """
     scenario = Scenario() if scenario is None else scenario
-    lubricant = None if lubricant is None else load_lubricant(lubricant)
     if engine not in ENGINES:
         raise InputError(f"engine: unknown engine {engine!r} (valid: {', '.join(ENGINES)})")
+    bearing = load_bearing(bearing)
+    scenario, lubricant = with_bearing_defaults(bearing, scenario, lubricant)
     start = quasistatic_start(bearing, scenario, lubricant) if scenario.initial == "quasistatic" else None
     if engine == "reference":
         from .solvers.reference import ReferenceEngine
 
-        return Results(ReferenceEngine(bearing, scenario, lubricant, start=start).run(progress=progress))
-    from .solvers.element.engine import ExudynEngine
+        record = ReferenceEngine(bearing, scenario, lubricant, start=start).run(progress=progress)
+    else:
+        from .solvers.element.engine import ExudynEngine
 
-    return Results(ExudynEngine(bearing, scenario, lubricant, start=start).run(progress=progress))
+        record = ExudynEngine(bearing, scenario, lubricant, start=start).run(progress=progress)
+    check_record_pressures(record)
+    return Results(record)
+
+
+def check_record_pressures(record) -> None:
+    """The elastic-contact limit on the pressures a run sampled
+    (:func:`~exudyn_bearing.model.load_range.check_run_pressures`: an error
+    for sustained excess, naming ``omega`` when the applied loads alone are
+    within the limit, a warning for a brief one)."""
+    from .model.layout import D_PMAX
+
+    diag = record.data.get("diag")
+    if diag is None or len(diag) == 0:
+        return
+    check_run_pressures(diag[:, :, :, D_PMAX], record.data["t"], "omega")
+
+
+def with_bearing_defaults(bearing: BallBearing, scenario: Scenario, lubricant=None):
+    """(scenario, lubricant) with what they leave open taken from the bearing:
+    the lubricant (a Lubricant, catalogue name, JSON file or dict; None: the
+    bearing's, :func:`exudyn_bearing.data.default_lubricant`) and the
+    scenario's traction model (None: the bearing's,
+    :func:`exudyn_bearing.data.default_traction`). The run's record carries
+    both names (``lubricant.name``, ``scenario.traction``)."""
+    lub = load_lubricant(lubricant, bearing=bearing)
+    if scenario.traction is None:
+        scenario = scenario.replace(traction=default_traction(bearing))
+    return scenario, lub
 
 
 def spec_inputs(spec) -> dict:
@@ -104,6 +137,7 @@ def quasistatic_start(bearing, scenario: Scenario, lubricant: Lubricant | None =
     from .solvers.quasistatic import solve_quasistatic
 
     b = load_bearing(bearing)
+    scenario, lubricant = with_bearing_defaults(b, scenario, lubricant)
     if scenario.Pd is not None:
         b = b.with_clearance(scenario.Pd)
     sol = solve_quasistatic(b, Fr=scenario.Fr, Fa=scenario.Fa, omega=scenario.omega_at(0.0), control=scenario.control,
@@ -123,8 +157,12 @@ class BallBearingElement(_ElementBase):
     ``results()``: the run's :class:`~exudyn_bearing.outputs.results.Results`."""
 
     def results(self, wall_s=None, steps=None) -> Results:
-        """The sampled series of the run (``record()`` wrapped in Results)."""
-        return Results(self.record(wall_s=wall_s, steps=steps))
+        """The sampled series of the run (``record()`` wrapped in Results);
+        sustained contact pressures above the elastic limit raise InputError
+        (:func:`check_record_pressures`)."""
+        record = self.record(wall_s=wall_s, steps=steps)
+        check_record_pressures(record)
+        return Results(record)
 
 
 def CreateBallBearing(mbs, bearing: BallBearing | str, markerInnerRing, markerOuterRing, **options):

@@ -57,7 +57,7 @@ def static_result(b, fr, fa, mx=0.0, my=0.0, tilt="fixed", omega=None, film="hd"
             raise InputError(f"{name}: must be >= 0 (the bearing carries +x radial and +z axial load on the "
                              f"inner ring), got {v}")
     if tilt == "fixed" and (mx != 0.0 or my != 0.0):
-        raise InputError("Mx: a moment load needs the free tilt (--tilt free)")
+        raise InputError(f"{'Mx' if mx != 0.0 else 'My'}: a moment load needs the free tilt (--tilt free)")
     phase = math.remainder(phase, 2.0 * math.pi)  # the same balls; a huge phase loses their spacing in cos/sin
     names = ("radial_load", "axial_load", "diametral_clearance")
     check_load_range(b, fr, fa, hertz, names=names, phase=phase)  # before the solve: far-off loads do not converge

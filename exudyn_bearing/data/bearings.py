@@ -145,6 +145,12 @@ class BallBearing:
         key or in degrees as ``free_contact_angle_deg``.
     material : Material
         Material of balls and rings.
+    lubricant, traction : str or None
+        Catalogue names of the bearing's default lubricant and traction
+        model (``exudyn_bearing.data.lubricants``, ``traction_models``), used
+        by every solver when none is given; None: the DEM papers' oil
+        ``guessasma2018`` and their mu(Lambda) ``lambda_dem``
+        (:func:`~exudyn_bearing.data.catalog.default_lubricant`).
     """
 
     n_balls: int
@@ -160,6 +166,8 @@ class BallBearing:
     source: str = ""
     bore: float | None = None
     outer_diameter: float | None = None
+    lubricant: str | None = None
+    traction: str | None = None
 
     def __post_init__(self):
         z = check_integer("n_balls", self.n_balls)
@@ -176,6 +184,9 @@ class BallBearing:
             raise InputError(f"material: expected a Material, got {type(self.material).__name__}")
         check_text("name", self.name)
         check_text("source", self.source)
+        for key in ("lubricant", "traction"):
+            if getattr(self, key) is not None:
+                check_text(key, getattr(self, key))
         # plain floats from here on (numpy scalars and ints are numbers too)
         for key, v in (("ball_radius", rb), ("inner_race_radius", ri), ("outer_race_radius", ro),
                        ("inner_groove_radius", rci), ("outer_groove_radius", rco), ("free_contact_angle", a0)):
@@ -231,7 +242,7 @@ class BallBearing:
     def from_dimensions(cls, n_balls, ball_diameter, pitch_diameter, inner_conformity, outer_conformity,
                         diametral_clearance=0.0, free_contact_angle=0.0, material: Material | None = None,
                         cage_ball_radius=None, name: str = "custom", source: str = "", bore=None,
-                        outer_diameter=None) -> "BallBearing":
+                        outer_diameter=None, lubricant=None, traction=None) -> "BallBearing":
         """A bearing from the dimensions of a data sheet.
 
         Parameters
@@ -246,7 +257,7 @@ class BallBearing:
             P_d [m] (negative: preload).
         free_contact_angle : float
             alpha_0 [rad] (0 for deep-groove bearings).
-        material, cage_ball_radius, name, source, bore, outer_diameter
+        material, cage_ball_radius, name, source, bore, outer_diameter, lubricant, traction
             As in the class.
 
         The race radii follow as R_i = d_m/2 - D/2 - P_d/4 and
@@ -268,7 +279,8 @@ class BallBearing:
                    outer_race_radius=0.5 * dm + 0.5 * d + 0.25 * pd, inner_groove_radius=fi * d,
                    outer_groove_radius=fo * d, cage_ball_radius=cage_ball_radius,
                    free_contact_angle=free_contact_angle, material=Material() if material is None else material,
-                   name=name, source=source, bore=bore, outer_diameter=outer_diameter)
+                   name=name, source=source, bore=bore, outer_diameter=outer_diameter, lubricant=lubricant,
+                   traction=traction)
 
     # -- derived quantities -------------------------------------------------
     @property

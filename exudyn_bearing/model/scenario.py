@@ -100,10 +100,13 @@ class Scenario:
         normal (:func:`exudyn_bearing.physics.contact_slip._contact_traction`;
         the quasi-static solver's relation). ``friction``,
         ``tangential`` and ``mu_dry`` then do not apply.
-    traction : str
+    traction : str or None
         Traction model of the ellipse level, a name of
-        ``exudyn_bearing.data.traction_models`` (default ``"lambda_dem"``:
-        the DEM papers' mu(Lambda)).
+        ``exudyn_bearing.data.traction_models``; None (default): the
+        bearing's (:func:`exudyn_bearing.data.default_traction`: the ACBB-120's
+        EHL model of its oil, the DEM papers' mu(Lambda) ``"lambda_dem"`` for
+        the others), filled in by :func:`exudyn_bearing.simulate` and the
+        element.
     n_strips, n_across : int
         Strips along the major axis and points across each strip of the
         ellipse integration (accuracy against cost: validation/work_precision.py).
@@ -117,6 +120,7 @@ class Scenario:
         centrifugal growth of a rotating ring (rotating annular disc,
         :mod:`exudyn_bearing.physics.ring_growth`, the quasi-static solver's
         relation) moves its groove outward in proportion to omega^2.
+        Default True, as in the quasi-static solver (README, "Defaults").
     temperatures : dict or None
         ``{"inner", "outer", "ball"}`` temperatures [K] for the uniform
         thermal growth of rings and balls (from 293.15 K).
@@ -169,11 +173,11 @@ class Scenario:
     guide_clearance: float = 50e-6
     ring_mass: float | None = None
     traction_level: str = "point"
-    traction: str = "lambda_dem"
+    traction: str | None = None
     n_strips: int = 16
     n_across: int = 1
     traction_regularizing_srr: float = 0.01
-    ring_growth: bool = False
+    ring_growth: bool = True
     temperatures: dict | None = None
     initial: str = "analytic"
     control: str = "auto"
@@ -206,13 +210,14 @@ class Scenario:
         for name in ("t_end", "dt", "sample_dt", "regularizing_speed", "guide_clearance"):
             if getattr(self, name) <= 0:
                 raise InputError(f"{name}: must be > 0, got {getattr(self, name)}")
+        if self.dt > 1e-4:  # first: a huge dt is the mistake, not the sample interval below it
+            raise InputError(f"dt: {self.dt:g} s is far above any stable step of a Hertz contact (at most 1e-4 s; "
+                             "typical 1e-6 to 8e-6 s)")
         if self.sample_dt < self.dt:
             raise InputError(f"sample_dt: must be >= dt ({self.dt}), got {self.sample_dt}")
         if self.t_end < self.sample_dt:
             raise InputError(f"t_end: must be >= sample_dt ({self.sample_dt:g} s) so that the run has a sample, "
                              f"got {self.t_end:g}")
-        if self.dt > 1e-4:
-            raise InputError(f"dt: {self.dt} s is far above any stable step of a Hertz contact")
         if not 2.0 / 3.0 - 1e-12 <= self.tangential_stiffness_ratio <= 1.0:
             raise InputError("tangential_stiffness_ratio: must lie in [2/3, 1] (docs/theory/tangential.md), "
                              f"got {self.tangential_stiffness_ratio}")

@@ -90,7 +90,7 @@ import warnings
 import numpy as np
 
 from ..._jit import announce_compilation
-from ...data import InputError, Lubricant, load_bearing, load_lubricant
+from ...data import InputError, Lubricant, default_traction, load_bearing, load_lubricant
 from ...data.errors import check_finite, check_positive
 from ...model import layout as L
 from ...model.contact import forces
@@ -135,9 +135,10 @@ def rename_option_error(exc: InputError) -> InputError:
     return InputError(f"{OPTION_NAMES.get(head, head)}{dot}{tail}:{rest}")
 
 
-def _scenario_from_options(o: dict) -> Scenario:
-    """The Scenario of the element's options ``o`` (all of them, by name): model switches are validated
-    there, their messages renamed to the options; loads come from the model."""
+def _scenario_from_options(o: dict, bearing) -> Scenario:
+    """The Scenario of the element's options ``o`` (all of them, by name) on ``bearing``: model switches are
+    validated there, their messages renamed to the options; loads come from the model; the traction model
+    defaults to the bearing's."""
     fr, fa = _initial_load(o["initialLoad"])
     step = check_positive("stepSize", o["stepSize"])
     sample = check_positive("sampleInterval", o["sampleInterval"])
@@ -148,7 +149,8 @@ def _scenario_from_options(o: dict) -> Scenario:
                         regularizing_speed=o["regularizingSpeed"],
                         tangential_stiffness_ratio=o["tangentialStiffnessRatio"], dt=step,
                         sample_dt=max(sample, step), initial=o["initial"], contact_law=o["contactLaw"],
-                        power_law=o["powerLaw"], traction_level=o["tractionLevel"], traction=o["traction"],
+                        power_law=o["powerLaw"], traction_level=o["tractionLevel"],
+                        traction=o["traction"] if o["traction"] is not None else default_traction(bearing),
                         n_strips=o["nStrips"], n_across=o["nAcross"],
                         traction_regularizing_srr=o["tractionRegularizingSrr"], ring_growth=o["ringGrowth"],
                         temperatures=o["temperatures"], control=o["control"], defects=o["defects"],
@@ -169,7 +171,7 @@ def element_scenario(bearing=None, **options) -> Scenario:
         raise InputError(f"{unknown[0]}: unknown option of the bearing element (valid: {', '.join(names)})")
     o = {n: sig.parameters[n].default for n in names}
     o.update(options)
-    return _scenario_from_options(o)
+    return _scenario_from_options(o, None if bearing is None else load_bearing(bearing))
 
 
 class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMixin):
@@ -206,19 +208,19 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
                  tangentialStiffnessRatio=2.0 / 3.0, stepSize=1e-6, innerRingSpeed=None, outerRingSpeed=None,
                  initialOmega=0.0, initialLoad=(0.0, 0.0), initial="analytic", sampleInterval=1e-4,
                  mode="bodies", subSteps=1, contactLaw="hertz", powerLaw=(0.0, 1.5, 0.0), tractionLevel="point",
-                 traction="lambda_dem", nStrips=16, nAcross=1, tractionRegularizingSrr=0.01, ringGrowth=False,
+                 traction=None, nStrips=16, nAcross=1, tractionRegularizingSrr=0.01, ringGrowth=True,
                  temperatures=None, control="auto", initialState=None, defects=(),
                  signalInterval=None, show=False):
         announce_compilation(forces, EK.fast_step if mode == "fast" else EK.element_rhs)
         self.mbs = mbs
         self.bearing = b = load_bearing(bearing)
-        self.lubricant = load_lubricant(lubricant)
+        self.lubricant = load_lubricant(lubricant, bearing=b)   # None: the bearing's
         for name, f in (("innerRingSpeed", innerRingSpeed), ("outerRingSpeed", outerRingSpeed)):
             if f is not None and not callable(f):
                 raise InputError(f"{name}: must be a function of time t [s] returning rad/s")
         self.speed = (innerRingSpeed, outerRingSpeed)
         self._initial_state = initialState
-        self.scenario = _scenario_from_options(dict(locals()))
+        self.scenario = _scenario_from_options(dict(locals()), b)
         sampleInterval = check_positive("sampleInterval", sampleInterval)
         if cage and not b.has_cage:
             raise InputError(f"cage: bearing {b.name} has no cage balls; use cage=False")

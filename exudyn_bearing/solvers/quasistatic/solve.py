@@ -116,7 +116,7 @@ def _contact_state(geom, balls, e_prime, method):
 
 
 def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=0.0, omega_outer=0.0,
-                      control="auto", traction="lambda_dem", lubricant: Lubricant | str | None = None,
+                      control="auto", traction=None, lubricant: Lubricant | str | None = None,
                       ring_growth=True, fit=0.0, temperatures=None, fixed=None, hertz_method="exact",
                       phase=0.0, n_strips=32, n_across=4, shoulder_angle=MAX_FREE_CONTACT_ANGLE,
                       stiffness=True, start=None) -> QuasiStaticSolution:
@@ -136,10 +136,12 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
     control : {"auto", "outer", "inner", "min-energy"}
         Ball kinematics: race control (Jones; ``auto`` by his spin-moment
         criterion) or minimum frictional dissipation (Gupta).
-    traction : str or TractionModel
-        Traction model for slip, dissipation and the minimum energy.
+    traction : str or TractionModel, optional
+        Traction model for slip, dissipation and the minimum energy
+        (default: the bearing's, :func:`exudyn_bearing.data.default_traction`).
     lubricant : Lubricant or str, optional
-        For the film thicknesses (default: the DEM papers' oil).
+        For the film thicknesses: a Lubricant, catalogue name, JSON file or
+        dict (default: the bearing's, :func:`exudyn_bearing.data.default_lubricant`).
     ring_growth : bool
         Centrifugal growth of the rotating rings (False: rigid rings).
     fit : float
@@ -185,8 +187,8 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
     w_o = check_finite("omega_outer", omega_outer)
     if control not in km.CONTROLS:
         raise InputError(f"control: must be one of {', '.join(km.CONTROLS)}, got {control!r}")
-    model = get_traction_model(traction)
-    lub = load_lubricant(lubricant)
+    model = get_traction_model(traction, b)       # None: the bearing's (catalogue), else the DEM papers'
+    lub = load_lubricant(lubricant, bearing=b)
     n_strips, n_across = check_integer("n_strips", n_strips), check_integer("n_across", n_across)
     if not 1 <= n_strips <= 4096:
         raise InputError(f"n_strips: must lie in [1, 4096], got {n_strips}")
