@@ -5,7 +5,7 @@ chosen engine and returns :class:`~exudyn_bearing.outputs.results.Results`;
 from __future__ import annotations
 
 from .data import BallBearing, InputError, Lubricant, default_traction, load_bearing, load_lubricant
-from .model.load_range import check_run_pressures
+from .model.load_range import check_load_range, check_run_pressures
 from .model.scenario import Scenario
 from .outputs.results import Results
 from .solvers.element import BallBearingElement as _ElementBase
@@ -58,6 +58,9 @@ def simulate(bearing, scenario: Scenario | None = None, engine: str = "reference
         raise InputError(f"engine: unknown engine {engine!r} (valid: {', '.join(ENGINES)})")
     bearing = load_bearing(bearing)
     scenario, lubricant = with_bearing_defaults(bearing, scenario, lubricant)
+    # the applied loads within the elastic contact model before the engines (and their compilation) start
+    check_load_range(bearing if scenario.Pd is None else bearing.with_clearance(scenario.Pd), scenario.Fr,
+                     scenario.Fa, scenario.hertz)
     start = quasistatic_start(bearing, scenario, lubricant) if scenario.initial == "quasistatic" else None
     if engine == "reference":
         from .solvers.reference import ReferenceEngine

@@ -52,7 +52,10 @@ COMMANDS = {"info": info, "static": static, "quasistatic": quasistatic, "simulat
 
 
 def _parser() -> Parser:
+    from .. import __version__
+
     p = Parser(prog="exudyn-bearing", description=DESCRIPTION)
+    p.add_argument("--version", action="version", version=f"exudyn-bearing {__version__}")
     sub = p.add_subparsers(dest="command", required=True, parser_class=Parser, metavar="COMMAND",
                            help="one of the sub-commands below ('COMMAND --help' for its options)")
     for module in COMMANDS.values():

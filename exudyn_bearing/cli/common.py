@@ -223,13 +223,13 @@ def explained(bearing=None):
 ROUND_OFF = {"m": 1e-15, "um": 1e-9, "N": 1e-9, "N m": 1e-9}
 
 
-def format_value(v, unit: str = ""):
+def format_value(v, unit: str = "", digits: int = 6):
     """A float for a table: 6 significant digits, round-off below
     :data:`ROUND_OFF` of its unit (a length of 6.9e-18 m) shown as 0."""
     if isinstance(v, float):
         if abs(v) < ROUND_OFF.get(unit, 0.0):
             v = 0.0
-        return f"{v + 0.0:.6g}"
+        return f"{v + 0.0:.{digits}g}"
     return v
 
 

@@ -128,7 +128,7 @@ def run(args):
           f"delta_a = {res['delta_a'] * 1e6:.3f} um, tilt_y = {res['tilt_y'] * 1e3:.4f} mrad")
     for name, why in res["held_dofs"].items():
         unit = "N m" if "tilt" in name else "N"
-        print(f"{name} held ({why}): reaction {format_value(res['reactions'][name] + 0.0, unit)} {unit}"
+        print(f"{name} held ({why}): reaction {format_value(res['reactions'][name], unit, 4)} {unit}"
               + (" (--tilt free releases it)" if why == "fixed" and "tilt" in name else ""))
     head = f"{'ball':>4} {'psi deg':>8} {'Q N':>9} {'delta um':>9} {'alpha deg':>9}"
     if omega is not None:
