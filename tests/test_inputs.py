@@ -4,6 +4,7 @@ and errors that name the parameter the user gave."""
 import json
 import math
 
+import numpy as np
 import pytest
 
 import exudyn_bearing as eb
@@ -188,3 +189,159 @@ def test_a_held_radial_displacement_is_held():
     s = eb.solve_quasistatic("6208", Fr=3000.0, fixed={"delta_x": 10e-6}, stiffness=False)
     assert s.displacement[0] == 10e-6
     assert s.reactions["delta_x"] < 0.0
+
+
+def _cli(capsys, *argv):
+    from exudyn_bearing.cli import main
+    try:
+        rc = main(list(argv))
+    except SystemExit as exc:
+        rc = exc.code
+    out = capsys.readouterr()
+    return rc, out.out, out.err
+
+
+@pytest.mark.parametrize("argv, start", [
+    (["static", "6208", "--Fr", "3000", "--My", "5"], "My: a moment load needs the free tilt"),
+    (["simulate", "6208", "--dt", "3"], "dt: 3 s is far above any stable step"),
+    (["quasistatic", "6208", "--Fr", "3000", "--omega", "1e7"], "omega: the operating interference"),
+    (["quasistatic", "6208", "--Fr", "3000", "--fix", "delta_x=1"], "--fix delta_x: 1 m moves the inner ring"),
+    (["quasistatic", "6208", "--Fr", "3000", "--My", "5"], "My: a moment load needs the free tilt"),
+])
+def test_cli_errors_name_the_parameter_given(capsys, argv, start):
+    rc, _out, err = _cli(capsys, *argv)
+    assert rc == 2 and err.strip().splitlines()[-1].startswith(f"exudyn-bearing: error: {start}")
+
+
+# -- 19.2 the elastic-contact limit in every command ------------------------------------------------------------
+@pytest.mark.parametrize("argv", [
+    ["quasistatic", "6208", "--Fr", "1e5"],
+    ["stiffness", "6208", "--Fr", "1e5"],
+    ["vibration", "three-dof", "--bearing", "6004", "--Fr", "50000"],
+])
+def test_every_command_refuses_pressures_above_the_elastic_limit(capsys, argv):
+    # 6208: 21.8 kN radial reach 4.2 GPa (model/load_range.py); 1e5 N give 6.98 GPa. 6004: 5.6 kN.
+    rc, _out, err = _cli(capsys, *argv)
+    assert rc == 2 and "above 4.2 GPa" in err and err.startswith("exudyn-bearing: error: Fr:")
+
+
+def test_a_run_whose_sampled_pressure_exceeds_the_limit_fails_or_warns():
+    from exudyn_bearing.model.load_range import ContactPressureWarning, check_run_pressures
+    t = np.arange(20) * 1e-4
+    p = np.full((20, 9, 2), 2.0e9)           # (samples, balls, races inner / outer)
+    check_run_pressures(p, t)                # below 4.2 GPa: nothing
+    sustained = p.copy()
+    sustained[5:, 3, 1] = 5.0e9              # outer race of ball 3 from sample 5 on: the speed's loads
+    with pytest.raises(InputError, match=r"^omega: the run reached a contact pressure of 5 GPa at the outer race "
+                                         r"of ball 3, above 4.2 GPa"):
+        check_run_pressures(sustained, t)
+    brief = p.copy()
+    brief[7, 2, 0] = 5.0e9                   # one sample of 20 (5 %): an impact
+    with pytest.warns(ContactPressureWarning, match=r"inner race of ball 2.*t = 0.0007 s"):
+        check_run_pressures(brief, t)
+
+
+# -- 19.12 angular-contact bearings under combined load: tilt held by default, --fix everywhere ---------------
+def test_a_lone_angular_contact_bearing_points_to_fix_delta_a(capsys):
+    for cmd in ("static", "quasistatic", "stiffness"):
+        rc, _out, err = _cli(capsys, cmd, "7208", "--Fr", "3000", "--Fa", "2000")
+        assert rc == 2 and "--fix delta_a=0" in err, cmd
+        rc, out, err = _cli(capsys, cmd, "7208", "--Fr", "3000", "--Fa", "2000", "--fix", "delta_a=0", "--json")
+        assert rc == 0, (cmd, err)
+
+
+def test_the_three_commands_hold_the_tilt_and_agree_at_zero_speed(capsys):
+    # 7208 at F_a = 3500 N: quasistatic and stiffness failed "over the shoulder" with a free tilt while static
+    # held it; with one default (held) they solve the same equilibrium: static = quasistatic at zero speed
+    rc, out, _ = _cli(capsys, "static", "7208", "--Fr", "3000", "--Fa", "3500", "--json")
+    st = json.loads(out)
+    rc2, out2, _ = _cli(capsys, "quasistatic", "7208", "--Fr", "3000", "--Fa", "3500", "--json")
+    qs = json.loads(out2)
+    assert rc == rc2 == 0
+    assert qs["held_dofs"]["tilt_x"] == qs["held_dofs"]["tilt_y"] == "fixed" and qs["tilt_y"] == 0.0
+    # the same solver at zero speed and zero ring growth: equal to round-off
+    assert max(qs["q_inner"]) == pytest.approx(st["q_max"], rel=1e-9)
+    rc3, out3, err3 = _cli(capsys, "stiffness", "7208", "--Fr", "3000", "--Fa", "3500", "--rpm", "6000", "--json")
+    assert rc3 == 0, err3
+    assert json.loads(out3)["held_dofs"]["tilt_y"] == "fixed"
+
+
+# -- 18.3 one set of defaults; bearings carry their lubricant and traction model --------------------------------
+def test_catalogue_bearings_name_their_lubricant_and_traction():
+    from exudyn_bearing.data import default_lubricant, default_traction
+    acbb = eb.catalog["ACBB-120"]
+    assert default_lubricant(acbb).name == "MIL-L-23699_492K" and default_traction(acbb) == "ehl_mil_l_23699_492K"
+    for name in ("6208", "7208", "6004", "6205"):
+        assert default_lubricant(eb.catalog[name]).name == "guessasma2018", name
+        assert default_traction(eb.catalog[name]) == "lambda_dem", name
+    s = eb.solve_quasistatic("ACBB-120", Fa=22240.0, stiffness=False)
+    assert (s.lubricant, s.traction) == ("MIL-L-23699_492K", "ehl_mil_l_23699_492K")
+    with pytest.raises(InputError, match=r"^lubricant: unknown lubricant 'olive'"):
+        load_bearing(dict(DIMS_6208, lubricant="olive"))
+
+
+def test_every_solver_has_the_same_physical_defaults():
+    import inspect
+
+    from exudyn_bearing.cli.common import RING_GROWTH
+    from exudyn_bearing.solvers.element import BallBearingElement
+    qs = inspect.signature(eb.solve_quasistatic).parameters
+    el = inspect.signature(BallBearingElement.__init__).parameters
+    sc = eb.Scenario()
+    assert qs["ring_growth"].default is sc.ring_growth is el["ringGrowth"].default is RING_GROWTH is True
+    assert qs["traction"].default is sc.traction is el["traction"].default is None        # None: the bearing's
+    assert qs["hertz_method"].default == sc.hertz == el["hertzModel"].default == "exact"
+    assert sc.film == el["film"].default == "hd"
+
+
+def test_simulate_takes_the_bearings_lubricant_and_traction():
+    from exudyn_bearing.simulate import with_bearing_defaults
+    sc, lub = with_bearing_defaults(eb.catalog["ACBB-120"], eb.Scenario(traction_level="ellipse"))
+    assert (lub.name, sc.traction) == ("MIL-L-23699_492K", "ehl_mil_l_23699_492K")
+    sc, lub = with_bearing_defaults(eb.catalog["6208"], eb.Scenario(), "MIL-L-23699_492K")
+    assert (lub.name, sc.traction) == ("MIL-L-23699_492K", "lambda_dem")
+
+
+@pytest.mark.parametrize("cmd", ["static", "quasistatic", "stiffness"])
+def test_headers_and_json_name_lubricant_and_traction(capsys, cmd):
+    rc, out, _ = _cli(capsys, cmd, "ACBB-120", "--Fr", "0", "--Fa", "22240", "--json")
+    d = json.loads(out)
+    assert rc == 0 and d["lubricant"] == "MIL-L-23699_492K"
+    assert d["traction"] == (None if cmd == "static" else "ehl_mil_l_23699_492K")
+    rc, out, _ = _cli(capsys, cmd, "ACBB-120", "--Fr", "0", "--Fa", "22240")
+    assert rc == 0 and "lubricant MIL-L-23699_492K" in out
+
+
+# -- 19.13 output ----------------------------------------------------------------------------------------------
+def test_quasistatic_table_has_units_gpa_and_ball_speed(capsys):
+    rc, out, _ = _cli(capsys, "quasistatic", "6208", "--Fr", "3000", "--omega", "500")
+    lines = out.splitlines()
+    head = next(i for i, line in enumerate(lines) if line.startswith("ball"))
+    assert "w_ball" in lines[head] and "[GPa]" in lines[head + 1] and "[rad/s]" in lines[head + 1]
+    row0 = lines[head + 2].split()
+    # ball 0 of the 6208 at 3000 N: p_max at the inner race 2.17 GPa (static: 2.169 GPa), printed in GPa
+    assert 2.0 < float(row0[6]) < 2.3 and "G" not in lines[head + 2]
+
+
+def test_static_free_tilt_prints_no_nan(capsys):
+    rc, out, _ = _cli(capsys, "static", "6208", "--Fr", "3000", "--Fa", "1000", "--tilt", "free")
+    assert rc == 0 and "nan" not in out and "continuous Stribeck not applicable" in out
+
+
+def test_round_off_prints_as_zero_and_version(capsys):
+    from exudyn_bearing.cli.common import format_value
+    assert format_value(6.93889e-18, "m") == "0" and format_value(-7.1e-15, "N m", 4) == "0"
+    assert format_value(2.5e-6, "m") == "2.5e-06"
+    rc, out, _ = _cli(capsys, "--version")
+    assert rc == 0 and out.strip() == f"exudyn-bearing {eb.__version__}"
+
+
+def test_readme_b3_has_the_6208_geometry():
+    b3 = BallBearing.from_dimensions(n_balls=9, ball_diameter=12.6e-3, pitch_diameter=60.6e-3,
+                                     inner_conformity=0.52, outer_conformity=0.52, diametral_clearance=0.0,
+                                     free_contact_angle=0.0, cage_ball_radius=4.19e-3)
+    b = eb.catalog["6208"]
+    for key in ("ball_radius", "inner_race_radius", "outer_race_radius", "inner_groove_radius",
+                "outer_groove_radius", "cage_ball_radius", "free_contact_angle", "n_balls"):
+        assert abs(getattr(b3, key) - getattr(b, key)) <= 1e-18, key
+    assert b3.material.youngs_modulus == b.material.youngs_modulus
