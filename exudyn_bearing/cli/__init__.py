@@ -55,7 +55,8 @@ def _parser() -> Parser:
     from .. import __version__
 
     p = Parser(prog="exudyn-bearing", description=DESCRIPTION)
-    p.add_argument("--version", action="version", version=f"exudyn-bearing {__version__}")
+    p.add_argument("--version", action="version", version=f"exudyn-bearing {__version__}", default=None,
+                   help="print the version and exit")
     sub = p.add_subparsers(dest="command", required=True, parser_class=Parser, metavar="COMMAND",
                            help="one of the sub-commands below ('COMMAND --help' for its options)")
     for module in COMMANDS.values():
