@@ -90,24 +90,18 @@ def test_groove_radius_beyond_conformity_0_6_is_refused():
         eb.catalog["6208"].replace(inner_groove_radius=8.82e-3)
 
 
-@pytest.mark.parametrize("kw, match", [
-    (dict(youngs_modulus=210e3), r"^youngs_modulus: 210000 Pa .*Young's modulus is in Pa: 210000 MPa is 2.1e\+11 Pa"),
-    (dict(youngs_modulus=210.0), r"^youngs_modulus: 210 Pa .*: 210 GPa is 2.1e\+11 Pa"),
-    (dict(density=7.85), r"^density: 7.85 kg/m\^3 .*: 7.85 g/cm\^3 is 7850 kg/m\^3"),
+@pytest.mark.parametrize("cls, kw, match", [
+    (eb.Material, dict(youngs_modulus=210e3),
+     r"^youngs_modulus: 210000 Pa .*Young's modulus is in Pa: 210000 MPa is 2.1e\+11 Pa"),
+    (eb.Material, dict(youngs_modulus=210.0), r"^youngs_modulus: 210 Pa .*: 210 GPa is 2.1e\+11 Pa"),
+    (eb.Material, dict(density=7.85), r"^density: 7.85 kg/m\^3 .*: 7.85 g/cm\^3 is 7850 kg/m\^3"),
+    (eb.Lubricant, dict(viscosity=40.0), r"^viscosity: 40 Pa s .*: 40 mPa s \(cP\) is 0.04 Pa s"),
+    (eb.Lubricant, dict(pressure_viscosity=23.0), r"^pressure_viscosity: 23 1/Pa .*: 23 1/GPa is 2.3e-08 1/Pa"),
+    (eb.Lubricant, dict(roughness_race=0.3), r"^roughness_race: 0.3 m .*: 0.3 um is 3e-07 m"),
 ])
-def test_material_unit_mistakes_are_named(kw, match):
+def test_material_and_lubricant_unit_mistakes_are_named(cls, kw, match):
     with pytest.raises(InputError, match=match):
-        eb.Material(**kw)
-
-
-@pytest.mark.parametrize("kw, match", [
-    (dict(viscosity=40.0), r"^viscosity: 40 Pa s .*: 40 mPa s \(cP\) is 0.04 Pa s"),
-    (dict(pressure_viscosity=23.0), r"^pressure_viscosity: 23 1/Pa .*: 23 1/GPa is 2.3e-08 1/Pa"),
-    (dict(roughness_race=0.3), r"^roughness_race: 0.3 m .*: 0.3 um is 3e-07 m"),
-])
-def test_lubricant_unit_mistakes_are_named(kw, match):
-    with pytest.raises(InputError, match=match):
-        eb.Lubricant(**kw)
+        cls(**kw)
 
 
 def test_temperatures_in_celsius_are_refused_everywhere():
