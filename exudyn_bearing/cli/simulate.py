@@ -116,7 +116,8 @@ def run(args):
     summary = run.summary()
     # the lubricant and traction model in use (the bearing's unless given), unless the summary names them
     summary.setdefault("lubricant", run.lubricant.name)
-    summary.setdefault("traction", run.scenario.traction)
+    summary.setdefault("traction", run.scenario.traction if run.scenario.traction_level == "ellipse" else
+                       f"point-contact law ({run.scenario.friction}, mu(Lambda) of the lubricant)")
     summary.setdefault("ring_growth", run.scenario.ring_growth)
     if args.out:
         npz, js = run.save(args.out)
