@@ -339,3 +339,11 @@ def test_readme_b3_has_the_6208_geometry():
                 "outer_groove_radius", "cage_ball_radius", "free_contact_angle", "n_balls"):
         assert abs(getattr(b3, key) - getattr(b, key)) <= 1e-18, key
     assert b3.material.youngs_modulus == b.material.youngs_modulus
+
+
+def test_simulate_names_its_lubricant_and_traction(capsys):
+    rc, out, err = _cli(capsys, "simulate", "6208", "--t-end", "0.0004", "--dt", "2e-6", "--json")
+    d = json.loads(out)
+    assert rc == 0, err
+    assert d["lubricant"] == "guessasma2018" and d["ring_growth"] is True
+    assert d["traction"].startswith("point-contact law (history, mu(Lambda)")

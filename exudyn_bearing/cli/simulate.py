@@ -116,9 +116,11 @@ def run(args):
     summary = run.summary()
     # the lubricant and traction model in use (the bearing's unless given), unless the summary names them
     summary.setdefault("lubricant", run.lubricant.name)
-    summary.setdefault("traction", run.scenario.traction if run.scenario.traction_level == "ellipse" else
-                       f"point-contact law ({run.scenario.friction}, mu(Lambda) of the lubricant)")
-    summary.setdefault("ring_growth", run.scenario.ring_growth)
+    sc = run.scenario
+    mu = "mu(Lambda) of the lubricant" if sc.lubrication else f"mu_dry = {sc.mu_dry:g}"
+    summary.setdefault("traction", sc.traction if sc.traction_level == "ellipse" else
+                       f"point-contact law ({sc.friction}, {mu})" if sc.friction != "none" else "none (friction off)")
+    summary.setdefault("ring_growth", sc.ring_growth)
     if args.out:
         npz, js = run.save(args.out)
         png = run.plot(Path(args.out) / "run.png")
