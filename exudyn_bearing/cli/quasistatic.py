@@ -15,7 +15,7 @@ from ..solvers.quasistatic import solve_quasistatic
 from ..solvers.quasistatic.kinematics import CONTROLS
 from .common import (add_bearing_argument, add_hold_arguments, add_lubricant_argument, add_load_arguments,
                      add_ring_growth_argument, add_traction_argument, bearing_from_args, explained, finite_float,
-                     fixed_from_args, lubricant_from_args, solver_header, traction_from_args)
+                     fixed_from_args, format_value, lubricant_from_args, solver_header, traction_from_args)
 
 
 def add_parser(sub):
@@ -79,7 +79,11 @@ def run(args):
             d[k] = d[k].tolist()
         print(json.dumps(to_jsonable(d), indent=2))
         return
-    print(s.summary())
+    lines = s.summary().splitlines()
+    print("\n".join(lines[:len(lines) - len(s.held)]))  # the held DOFs' lines below, round-off shown as 0
+    for name, why in s.held.items():
+        unit = "N m" if name.startswith("tilt") else "N"
+        print(f"{name} held ({why}); reaction {format_value(s.reactions.get(name, 0.0), unit)} {unit}")
     print(solver_header(lub, traction, args.ring_growth))
     print_ball_table(s.balls)
     if args.plot:
