@@ -18,7 +18,7 @@ import numpy as np
 
 from ..outputs.jsonio import to_jsonable
 from ..solvers.vibration import three_dof
-from .common import add_bearing_argument, bearing_from_args, bearing_spec_from_args, finite_float, print_table
+from .common import add_bearing_argument, bearing_spec_from_args, finite_float, print_table
 
 
 def add_parser(sub):
@@ -51,8 +51,6 @@ def _parameters(args):
         omega = args.omega
     else:
         omega = (3000.0 if args.rpm is None else args.rpm) * 2.0 * math.pi / 60.0
-    from ..model.load_range import check_load_range  # the elastic-contact limit, as in every command
-    check_load_range(bearing_from_args(args).with_clearance(args.Pd), args.Fr, names=("Fr", "Fa", "Pd"))
     return three_dof.derived_parameters(bearing_spec_from_args(args), radial_load=args.Fr, omega=omega,
                                         diametral_clearance=args.Pd, link=args.link,
                                         film_damping=args.film_damping)

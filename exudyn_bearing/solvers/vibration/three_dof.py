@@ -341,7 +341,7 @@ def derived_parameters(bearing="6004", radial_load=500.0, omega=2.0 * math.pi * 
     if not isinstance(dimensions, RingDimensions):
         raise InputError(f"dimensions: expected a RingDimensions, got {type(dimensions).__name__}")
     b = b.with_clearance(pd)
-    lub = default_lubricant(b) if lubricant is None else lubricant
+    lub = default_lubricant() if lubricant is None else lubricant
     if 0.5 * dimensions.bore >= b.inner_race_radius:
         raise InputError(f"dimensions: bore radius {0.5 * dimensions.bore} m reaches the inner race "
                          f"({b.inner_race_radius} m)")
