@@ -4,13 +4,20 @@ chosen engine and returns :class:`~exudyn_bearing.outputs.results.Results`;
 :func:`CreateBallBearing` adds the bearing element to an Exudyn model."""
 from __future__ import annotations
 
-from .data import BallBearing, InputError, Lubricant, load_bearing, load_lubricant
+from .data import BallBearing, InputError, Lubricant, default_traction, load_bearing, load_lubricant
+from .model.load_range import check_load_range, check_run_pressures
 from .model.memory import check_sample_memory
 from .model.scenario import Scenario
 from .outputs.results import Results
 from .solvers.element import BallBearingElement as _ElementBase
+from .solvers.element.element import element_scenario
 
-__all__ = ["simulate", "ENGINES", "CreateBallBearing", "BallBearingElement", "quasistatic_start"]
+__all__ = ["simulate", "ENGINES", "CreateBallBearing", "BallBearingElement", "quasistatic_start", "spec_inputs",
+           "SPEC_KEYS"]
+
+#: Keys of a case spec (sweeps, datasets): see :func:`spec_inputs`; ``labels`` is
+#: metadata a dataset carries into its records.
+SPEC_KEYS = ("bearing", "scenario", "engine", "lubricant", "labels")
 
 #: Engines that :func:`simulate` knows.
 ENGINES = ("reference", "exudyn")
@@ -29,7 +36,9 @@ def simulate(bearing, scenario: Scenario | None = None, engine: str = "reference
         The numba DEM reference core, or the same scene built in Exudyn with
         the bearing element (:mod:`exudyn_bearing.solvers.element`).
     lubricant : Lubricant or str, optional
-        Lubricant, catalogue name or JSON file (default: the DEM papers').
+        Lubricant, catalogue name, JSON file or dict (default: the bearing's,
+        :func:`exudyn_bearing.data.default_lubricant`; the scenario's traction
+        model likewise defaults to the bearing's).
     progress : bool or None
         Progress on stderr (None: for long runs).
 
@@ -46,18 +55,78 @@ def simulate(bearing, scenario: Scenario | None = None, engine: str = "reference
     198
     """
     scenario = Scenario() if scenario is None else scenario
-    lubricant = None if lubricant is None else load_lubricant(lubricant)
     if engine not in ENGINES:
         raise InputError(f"engine: unknown engine {engine!r} (valid: {', '.join(ENGINES)})")
+    bearing = load_bearing(bearing)
+    scenario, lubricant = with_bearing_defaults(bearing, scenario, lubricant)
     check_sample_memory(bearing, scenario)  # before any work: the sampled series must fit in memory
+    # the applied loads within the elastic contact model before the engines (and their compilation) start
+    check_load_range(bearing if scenario.Pd is None else bearing.with_clearance(scenario.Pd), scenario.Fr,
+                     scenario.Fa, scenario.hertz)
     start = quasistatic_start(bearing, scenario, lubricant) if scenario.initial == "quasistatic" else None
     if engine == "reference":
         from .solvers.reference import ReferenceEngine
 
-        return Results(ReferenceEngine(bearing, scenario, lubricant, start=start).run(progress=progress))
-    from .solvers.element.engine import ExudynEngine
+        record = ReferenceEngine(bearing, scenario, lubricant, start=start).run(progress=progress)
+    else:
+        from .solvers.element.engine import ExudynEngine
 
-    return Results(ExudynEngine(bearing, scenario, lubricant, start=start).run(progress=progress))
+        record = ExudynEngine(bearing, scenario, lubricant, start=start).run(progress=progress)
+    check_record_pressures(record)
+    return Results(record)
+
+
+def check_record_pressures(record) -> None:
+    """The elastic-contact limit on the pressures a run sampled
+    (:func:`~exudyn_bearing.model.load_range.check_run_pressures`: an error
+    for sustained excess, naming ``omega`` when the applied loads alone are
+    within the limit, a warning for a brief one)."""
+    from .model.layout import D_PMAX
+
+    diag = record.data.get("diag")
+    if diag is None or len(diag) == 0:
+        return
+    check_run_pressures(diag[:, :, :, D_PMAX], record.data["t"], "omega")
+
+
+def with_bearing_defaults(bearing: BallBearing, scenario: Scenario, lubricant=None):
+    """(scenario, lubricant) with what they leave open taken from the bearing:
+    the lubricant (a Lubricant, catalogue name, JSON file or dict; None: the
+    bearing's, :func:`exudyn_bearing.data.default_lubricant`) and the
+    scenario's traction model (None: the bearing's,
+    :func:`exudyn_bearing.data.default_traction`). The run's record carries
+    both names (``lubricant.name``, ``scenario.traction``)."""
+    lub = load_lubricant(lubricant, bearing=bearing)
+    if scenario.traction is None:
+        scenario = scenario.replace(traction=default_traction(bearing))
+    return scenario, lub
+
+
+def spec_inputs(spec) -> dict:
+    """The validated keyword arguments of :func:`simulate` for a case spec
+    (the one validation path of sweeps and datasets): ``bearing`` (catalogue
+    name, JSON file or dict), ``scenario`` (dict of Scenario fields or a
+    Scenario), optional ``engine`` and ``lubricant`` (catalogue name, JSON
+    file, dict of Lubricant fields or a Lubricant), ``labels`` (metadata,
+    not read here). An unknown key of the
+    spec or of its scenario raises InputError naming it.
+
+    >>> sorted(spec_inputs({"bearing": "6208", "scenario": {"Fr": 3000.0}, "lubricant": "MIL-L-23699_492K"}))
+    ['bearing', 'engine', 'lubricant', 'scenario']
+    """
+    from .data.errors import check_keys
+
+    if not isinstance(spec, dict):
+        raise InputError(f"spec: expected a dict with keys {', '.join(SPEC_KEYS)}, got {spec!r}")
+    check_keys("spec key", spec, SPEC_KEYS)
+    if "bearing" not in spec:
+        raise InputError("bearing: missing in the spec")
+    engine = spec.get("engine", "reference")
+    if engine not in ENGINES:
+        raise InputError(f"engine: unknown engine {engine!r} (valid: {', '.join(ENGINES)})")
+    lub = spec.get("lubricant")
+    return {"bearing": load_bearing(spec["bearing"]), "scenario": Scenario.from_dict(spec.get("scenario", {})),
+            "engine": engine, "lubricant": None if lub is None else load_lubricant(lub)}
 
 
 def quasistatic_start(bearing, scenario: Scenario, lubricant: Lubricant | None = None) -> dict:
@@ -73,6 +142,7 @@ def quasistatic_start(bearing, scenario: Scenario, lubricant: Lubricant | None =
     from .solvers.quasistatic import solve_quasistatic
 
     b = load_bearing(bearing)
+    scenario, lubricant = with_bearing_defaults(b, scenario, lubricant)
     if scenario.Pd is not None:
         b = b.with_clearance(scenario.Pd)
     sol = solve_quasistatic(b, Fr=scenario.Fr, Fa=scenario.Fa, omega=scenario.omega_at(0.0), control=scenario.control,
@@ -92,8 +162,12 @@ class BallBearingElement(_ElementBase):
     ``results()``: the run's :class:`~exudyn_bearing.outputs.results.Results`."""
 
     def results(self, wall_s=None, steps=None) -> Results:
-        """The sampled series of the run (``record()`` wrapped in Results)."""
-        return Results(self.record(wall_s=wall_s, steps=steps))
+        """The sampled series of the run (``record()`` wrapped in Results);
+        sustained contact pressures above the elastic limit raise InputError
+        (:func:`check_record_pressures`)."""
+        record = self.record(wall_s=wall_s, steps=steps)
+        check_record_pressures(record)
+        return Results(record)
 
 
 def CreateBallBearing(mbs, bearing: BallBearing | str, markerInnerRing, markerOuterRing, **options):
@@ -121,11 +195,7 @@ def CreateBallBearing(mbs, bearing: BallBearing | str, markerInnerRing, markerOu
         Holds ``items`` and ``sensors``; ``results()`` after the solve.
     """
     if options.get("initial") == "quasistatic" and options.get("initialState") is None:
-        load = options.get("initialLoad", (0.0, 0.0))
-        fr, fa = (float(load), 0.0) if isinstance(load, (int, float)) else (float(load[0]), float(load[1]))
-        sc = Scenario(Fr=fr, Fa=fa, omega=float(options.get("initialOmega", 0.0)),
-                      control=options.get("control", "auto"), traction=options.get("traction", "lambda_dem"),
-                      ring_growth=bool(options.get("ringGrowth", False)), temperatures=options.get("temperatures"),
-                      hertz=options.get("hertzModel", "exact"))
+        # the element's own option checks (messages name the options), then its quasi-static start
+        sc = element_scenario(bearing, **options)
         options["initialState"] = quasistatic_start(bearing, sc, options.get("lubricant"))
     return BallBearingElement(mbs, bearing, markerInnerRing, markerOuterRing, **options)

@@ -68,11 +68,10 @@ from pathlib import Path
 
 import numpy as np
 
-from .data import InputError, Lubricant, catalog, load_bearing
-from .model.scenario import Scenario
+from .data import InputError, catalog
 from .model.stability import SimulationError, StepSizeWarning
 from .outputs.jsonio import to_jsonable
-from .simulate import simulate
+from .simulate import simulate, spec_inputs
 
 __all__ = ["run_sweep", "run_case", "load_case", "spec_hash", "SweepInterrupted", "INDEX"]
 
@@ -169,18 +168,18 @@ def _run_case(name, spec, out_dir, caught) -> str:
     (its record lists them under ``warnings``)."""
     out = Path(out_dir)
     key = spec_hash(spec)
-    lub = Lubricant(**spec["lubricant"]) if spec.get("lubricant") else None
     refine = spec.get("refine", 0)
     if not (isinstance(refine, int) and not isinstance(refine, bool) and 0 <= refine <= 6):
         raise InputError(f"refine: must be an integer in [0, 6] (times the step may be halved), got {refine!r}")
-    bearing = load_bearing(spec["bearing"])
-    sc = Scenario(**spec["scenario"])
+    # the one validation path of API, CLI, files and sweeps (unknown keys refused, lubricant by name/file/dict)
+    inputs = spec_inputs({k: v for k, v in spec.items() if k != "refine"})
+    bearing, sc, engine, lub = inputs["bearing"], inputs["scenario"], inputs["engine"], inputs["lubricant"]
     retries = []
     t0 = time.perf_counter()
     while True:
         mark = len(caught)
         try:
-            run = simulate(bearing, sc, engine=spec.get("engine", "reference"), lubricant=lub)
+            run = simulate(bearing, sc, engine=engine, lubricant=lub)
             why = next((str(w.message) for w in caught[mark:] if issubclass(w.category, StepSizeWarning)), None)
         except SimulationError as exc:
             if len(retries) == refine:

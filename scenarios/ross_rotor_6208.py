@@ -67,12 +67,9 @@ below is printed by it or stored in results.json):
     python scenarios/ross_rotor_6208.py [--speeds 22] [--extra-load 1000] [--out DIR]
 """
 import argparse
-import contextlib
-import io
 import json
 import math
 import time
-import warnings
 from pathlib import Path
 
 import numpy as np
@@ -90,11 +87,9 @@ G = 9.81
 
 
 def import_ross():
-    with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(io.StringIO()), \
-            warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        import ross
-    return ross
+    from exudyn_bearing.outputs.ross import import_ross as quiet_import
+
+    return quiet_import()
 
 
 def rotor_parts(rs):

@@ -41,7 +41,7 @@ def test_from_dimensions_reproduces_the_catalogue(name, f, alpha_deg, rz):
 def test_from_dimensions_clearance_and_bad_dimensions():
     b = BallBearing.from_dimensions(9, 12.6e-3, 60.6e-3, 0.52, 0.52, diametral_clearance=12.6e-6)
     assert b.diametral_clearance == pytest.approx(12.6e-6) and b.pitch_diameter == pytest.approx(60.6e-3)
-    with pytest.raises(InputError, match=r"^inner_conformity: must exceed 0.5"):
+    with pytest.raises(InputError, match=r"^inner_conformity: must lie in \(0.5, 0.6\]"):
         BallBearing.from_dimensions(9, 12.6e-3, 60.6e-3, 0.49, 0.52)
     with pytest.raises(InputError, match=r"^ball_diameter: must be smaller than pitch_diameter"):
         BallBearing.from_dimensions(9, 70e-3, 60.6e-3, 0.52, 0.52)
@@ -102,7 +102,7 @@ def test_single_bearing_file_round_trips(tmp_path):
     (dict(material={"youngs_modulus": "2.1e11"}), r"^youngs_modulus: expected a number"),
     (dict(material={"youngs_modulus": 2.1e11, "colour": "red"}), r"^colour: unknown material parameter"),
     (dict(material="unobtainium"), r"^material: unknown material 'unobtainium'"),
-    (dict(free_contact_angle="40"), r"^free_contact_angle: expected a number"),
+    (dict(free_contact_angle_deg="40"), r"^free_contact_angle_deg: expected a number"),
     (dict(name=6208), r"^name: expected a string"),
 ])
 def test_bearing_dicts_with_wrong_types_name_the_field(change, match):

@@ -124,8 +124,8 @@ def test_make_report_publishes_a_figure_small(tmp_path, monkeypatch):
 
 
 def test_the_repository_cites_its_own_theory_document():
-    # the project's theory is docs/theory/ (no file cites the former private specification,
-    # docs/theory/physics_md_map.md records the mapping), and every cited page exists
+    # the project's theory is docs/theory/ (no file cites the former private specification), and every
+    # cited page exists
     import re
     import subprocess
 

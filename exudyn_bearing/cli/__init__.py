@@ -3,19 +3,21 @@
 Sub-commands (``--json`` for scripts, with a ``units`` map; tables otherwise):
 
 * ``info BEARING [--omega W | --rpm N]``: geometry, Hertz constants, kinematics.
-* ``static BEARING --Fr N [--Fa N] [--tilt fixed|free] [--Pd M] [--omega W |
-  --rpm N] [--lubricant L] [--film hd|mk] [--plot FILE.png]``: the zero-speed
-  special case of ``quasistatic`` (load distribution, held DOFs with their
-  reactions) and the lubrication map.
+* ``static BEARING --Fr N [--Fa N] [--tilt fixed|free] [--fix DOF=V] [--Pd M]
+  [--omega W | --rpm N] [--lubricant L] [--film hd|mk] [--plot FILE.png]``:
+  the zero-speed special case of ``quasistatic`` (load distribution, held
+  DOFs with their reactions) and the lubrication map.
 * ``quasistatic BEARING [--Fr N] [--Fa N] [--Mx NM] [--My NM] [--omega W |
   --rpm N] [--control outer|inner|auto|min-energy] [--traction NAME]
-  [--ring-growth | --no-ring-growth] [--fit M] [--json] [--plot FILE.png]``:
-  5-DOF equilibrium at speed, ball kinematics, slip, dissipation, stiffness.
+  [--lubricant L] [--ring-growth | --no-ring-growth] [--tilt fixed|free]
+  [--fix DOF=V] [--fit M] [--json] [--plot FILE.png]``: 5-DOF equilibrium at
+  speed, ball kinematics, slip, dissipation, stiffness.
 * ``simulate [BEARING] --Fr N [--omega W | --rpm N] [--ramp UP STEADY DOWN]
   [--t-end T] [--engine reference|exudyn] [--out DIR]``: dynamic simulation;
   summary keys of :meth:`exudyn_bearing.outputs.results.Results.summary`.
 * ``stiffness BEARING [--Fr N] [--Fa N] [--omega W | --rpm N | --speeds W.. |
-  --rpms N..] [--phases N] [--json] [--plot FILE.png]``: linearised 5x5
+  --rpms N..] [--phases N] [--tilt fixed|free] [--fix DOF=V] [--json]
+  [--plot FILE.png]``: linearised 5x5
   stiffness and damping (x, y, axial, tilt x, tilt y) from the quasi-static
   solver, or a table over speeds.
 * ``vibration three-dof [--source-parameters] [--json]``: eigenvalues,
@@ -24,7 +26,12 @@ Sub-commands (``--json`` for scripts, with a ``units`` map; tables otherwise):
 * ``dataset OUT [--rpm ...] [--load ...] [--size L W H ...] [--t-end T]``:
   labelled healthy and defective signals (:mod:`exudyn_bearing.datasets`).
 
-BEARING is a catalogue name (6208, 7208, 6004, ACBB-120) or a JSON file
+``static``, ``quasistatic`` and ``stiffness`` hold the inner-ring tilt at
+zero unless ``--tilt free``; the lubricant and traction model default to the
+bearing's, ring growth is on (README, "Defaults"); ``--version`` prints the
+version.
+
+BEARING is a catalogue name (6208, 7208, 6004, 6205, ACBB-120) or a JSON file
 (:mod:`exudyn_bearing.data.catalog`: one bearing by race radii or dimensions,
 or a catalogue-shaped file). Shared options live in :mod:`.common`. Bad
 input exits with status 2 and a one-line message naming the parameter.
@@ -52,7 +59,11 @@ COMMANDS = {"info": info, "static": static, "quasistatic": quasistatic, "simulat
 
 
 def _parser() -> Parser:
+    from .. import __version__
+
     p = Parser(prog="exudyn-bearing", description=DESCRIPTION)
+    p.add_argument("--version", action="version", version=f"exudyn-bearing {__version__}", default=None,
+                   help="print the version and exit")
     sub = p.add_subparsers(dest="command", required=True, parser_class=Parser, metavar="COMMAND",
                            help="one of the sub-commands below ('COMMAND --help' for its options)")
     for module in COMMANDS.values():

@@ -6,12 +6,21 @@ from __future__ import annotations
 import argparse
 import math
 import re
+from contextlib import contextmanager
 
-from ..data import InputError, catalog, load_bearing, load_lubricant, lubricants
+from ..data import InputError, catalog, default_traction, load_bearing, load_lubricant, lubricants, traction_models
+from ..physics.contact_slip import DEFAULT_N_ACROSS, DEFAULT_N_STRIPS
+from ..solvers.quasistatic.ring import DOF_NAMES
 
 __all__ = ["Parser", "HelpFormatter", "finite_float", "print_table", "BEARING_HELP", "add_bearing_argument",
            "bearing_from_args", "bearing_spec_from_args", "add_load_arguments", "add_speed_arguments",
-           "omega_from_args", "add_lubricant_argument", "lubricant_from_args", "RPM_TO_RAD_S"]
+           "omega_from_args", "add_lubricant_argument", "lubricant_from_args", "RPM_TO_RAD_S", "add_traction_argument",
+           "traction_from_args", "add_ring_growth_argument", "RING_GROWTH", "add_hold_arguments", "parse_fixed",
+           "fixed_from_args", "explained", "solver_header", "format_value"]
+
+#: Default of --ring-growth in every command that has a speed (quasistatic, stiffness, simulate), as in
+#: Scenario and solve_quasistatic (README, "Defaults").
+RING_GROWTH = True
 
 #: Help text of a bearing argument.
 BEARING_HELP = (f"catalogue name ({', '.join(catalog)}) or a JSON file: one bearing (race radii as in "
@@ -120,15 +129,127 @@ def omega_from_args(args):
     return args.omega if args.omega is not None else args.omega_default
 
 
-def add_lubricant_argument(p):
-    """``--lubricant NAME|FILE.json``; read it with :func:`lubricant_from_args`."""
-    p.add_argument("--lubricant", metavar="NAME|FILE.json", default=next(iter(lubricants)),
-                   help=f"catalogue lubricant ({', '.join(lubricants)}) or a JSON file with the Lubricant "
-                        "fields (or a catalogue-shaped file, FILE.json#NAME)")
+def add_strip_arguments(p):
+    """``--strips`` and ``--points-across`` of the traction integration over each contact ellipse, with the
+    defaults every solver shares (:data:`exudyn_bearing.physics.contact_slip.DEFAULT_N_STRIPS`)."""
+    p.add_argument("--strips", type=int, default=DEFAULT_N_STRIPS,
+                   help=f"strips along the major axis of each contact ellipse (default {DEFAULT_N_STRIPS})")
+    p.add_argument("--points-across", type=int, default=DEFAULT_N_ACROSS,
+                   help=f"points across each strip (default {DEFAULT_N_ACROSS}; 1: classical strip theory)")
 
 
-def lubricant_from_args(args):
-    return load_lubricant(args.lubricant)
+def add_lubricant_argument(p, what: str = ""):
+    """``--lubricant NAME|FILE.json`` (default: the bearing's); read it with :func:`lubricant_from_args`."""
+    p.add_argument("--lubricant", metavar="NAME|FILE.json", default=None,
+                   help=f"{what}catalogue lubricant ({', '.join(lubricants)}) or a JSON file with the Lubricant "
+                        "fields (or a catalogue-shaped file, FILE.json#NAME); default: the bearing's (catalogue: "
+                        "ACBB-120 MIL-L-23699_492K, the others the DEM papers' guessasma2018)")
+
+
+def lubricant_from_args(args, bearing=None):
+    """The Lubricant of --lubricant, else the bearing's."""
+    return load_lubricant(args.lubricant, bearing=bearing)
+
+
+def add_traction_argument(p, what: str = "traction model"):
+    """``--traction NAME`` (default: the bearing's); read it with :func:`traction_from_args`."""
+    p.add_argument("--traction", default=None, metavar="NAME",
+                   help=f"{what} ({', '.join(traction_models)}); default: the bearing's (catalogue: ACBB-120 "
+                        "ehl_mil_l_23699_492K, the others the DEM papers' lambda_dem)")
+
+
+def traction_from_args(args, bearing=None) -> str:
+    """Name of the traction model of --traction, else the bearing's."""
+    return args.traction if args.traction is not None else default_traction(bearing)
+
+
+def add_ring_growth_argument(p):
+    """``--ring-growth / --no-ring-growth`` with the default of every solver (:data:`RING_GROWTH`)."""
+    p.add_argument("--ring-growth", action=argparse.BooleanOptionalAction, default=RING_GROWTH,
+                   help="centrifugal growth of the rotating rings (default on, in every solver)")
+
+
+def add_hold_arguments(p):
+    """``--tilt fixed|free`` and ``--fix DOF=VALUE`` (static, quasistatic, stiffness); read them with
+    :func:`fixed_from_args`."""
+    p.add_argument("--tilt", choices=("fixed", "free"), default="fixed",
+                   help="inner-ring tilt held at zero (the default of static, quasistatic and stiffness: the "
+                        "classical load distribution and the dynamic engines' translating ring; the reaction moment "
+                        "is reported), or free (moment loads need it)")
+    p.add_argument("--fix", action="append", default=[], metavar="DOF=VALUE",
+                   help=f"hold a DOF ({', '.join(DOF_NAMES)}) at a value [m or rad]; its reaction is reported "
+                        "(e.g. --fix delta_a=0: a lone angular-contact bearing held axially, as in a pair)")
+
+
+def parse_fixed(items) -> dict:
+    """``["delta_a=0", ...]`` -> ``{"delta_a": 0.0}``; InputError naming ``fix``."""
+    fixed = {}
+    for item in items:
+        name, sep, value = item.partition("=")
+        if not sep:
+            raise InputError(f"fix: expected DOF=VALUE, got {item!r}")
+        try:
+            v = float(value)
+        except ValueError:
+            raise InputError(f"fix {name.strip()}: expected a number, got {value!r}") from None
+        fixed[name.strip()] = v
+    return fixed
+
+
+def fixed_from_args(args) -> dict:
+    """The held DOFs of ``--tilt`` and ``--fix`` (``--fix tilt_x=...`` overrides ``--tilt fixed``); a moment
+    load about a held tilt raises InputError naming the moment."""
+    fixed = {"tilt_x": 0.0, "tilt_y": 0.0} if args.tilt == "fixed" else {}
+    fixed.update(parse_fixed(args.fix))
+    for moment, tilt in (("Mx", "tilt_x"), ("My", "tilt_y")):
+        if getattr(args, moment, 0.0) != 0.0 and tilt in fixed:
+            raise InputError(f"{moment}: a moment load needs the free tilt (--tilt free); {tilt} is held")
+    return fixed
+
+
+#: Message starts of a lone angular-contact bearing that cannot locate or carry its inner ring axially.
+_AXIAL = ("Fa:", "axial_load:")
+
+
+@contextmanager
+def explained(bearing=None):
+    """InputErrors of the block in the CLI's words: ``fixed.DOF`` becomes
+    ``--fix DOF``, and a lone angular-contact bearing that cannot carry its
+    loads points to ``--fix delta_a=...``."""
+    try:
+        yield
+    except InputError as exc:
+        msg = str(exc)
+        if msg.startswith("fixed."):
+            msg = "--fix " + msg[len("fixed."):]
+        angular = bearing is not None and bearing.free_contact_angle > 0.0
+        if angular and (msg.startswith(_AXIAL) or "over the shoulder" in msg) and "--fix delta_a" not in msg:
+            msg += ("; a bearing of a pair is held axially by its partner: --fix delta_a=0 (or the axial "
+                    "displacement [m] of the pair) holds the inner ring and reports the axial reaction")
+        raise InputError(msg) from None
+
+
+#: Magnitudes printed as 0 in tables: round-off of solvers whose inputs are about 1e-3 m and 1 N or larger.
+ROUND_OFF = {"m": 1e-15, "um": 1e-9, "N": 1e-9, "N m": 1e-9}
+
+
+def format_value(v, unit: str = "", digits: int = 6):
+    """A float for a table: 6 significant digits, round-off below
+    :data:`ROUND_OFF` of its unit (a length of 6.9e-18 m) shown as 0."""
+    if isinstance(v, float):
+        if abs(v) < ROUND_OFF.get(unit, 0.0):
+            v = 0.0
+        return f"{v + 0.0:.{digits}g}"
+    return v
+
+
+def solver_header(lubricant, traction: str | None, ring_growth: bool | None = None) -> str:
+    """One header line naming the lubricant and traction model in use (and the ring growth)."""
+    parts = [f"lubricant {lubricant.name}", f"traction {traction}" if traction else "no traction model (zero "
+             "speed: no slip)"]
+    if ring_growth is not None:
+        parts.append(f"ring growth {'on' if ring_growth else 'off'}")
+    return ", ".join(parts)
 
 
 def print_table(rows):
@@ -137,6 +258,5 @@ def print_table(rows):
     for r in rows:
         k, v = r[0], r[1]
         unit = r[2] if len(r) > 2 and r[2] not in (None, "", "-") else ""
-        if isinstance(v, float):
-            v = f"{v:.6g}"
+        v = format_value(v, unit)
         print(f"{k:<{width}}  {v}{'  ' + unit if unit else ''}".rstrip())

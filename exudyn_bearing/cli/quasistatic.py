@@ -1,19 +1,21 @@
 """``quasistatic BEARING``: 5-DOF inner-ring equilibrium at speed, ball kinematics, slip and dissipation."""
 from __future__ import annotations
 
-import argparse
 import json
 import math
 from pathlib import Path
 
-from ..data import InputError, lubricants, traction_models
+import numpy as np
+
+from ..model.load_range import check_pressures
 from ..outputs.jsonio import to_jsonable
 from ..outputs.plotting_quasistatic import plot_loads_angles, plot_slip
 from ..physics.hertz import METHODS
 from ..solvers.quasistatic import solve_quasistatic
 from ..solvers.quasistatic.kinematics import CONTROLS
-from ..solvers.quasistatic.ring import DOF_NAMES
-from .common import add_bearing_argument, add_load_arguments, bearing_from_args, finite_float
+from .common import (add_strip_arguments, add_bearing_argument, add_hold_arguments, add_lubricant_argument, add_load_arguments,
+                     add_ring_growth_argument, add_traction_argument, bearing_from_args, explained, finite_float,
+                     fixed_from_args, format_value, lubricant_from_args, solver_header, traction_from_args)
 
 
 def add_parser(sub):
@@ -27,34 +29,27 @@ def add_parser(sub):
     p.add_argument("--omega-outer", type=finite_float, default=0.0, help="outer-ring speed [rad/s] (default fixed)")
     p.add_argument("--control", choices=CONTROLS, default="auto",
                    help="ball kinematics: race control (outer, inner, auto = Jones' criterion) or min-energy (Gupta)")
-    p.add_argument("--traction", default="lambda_dem", help=f"traction model ({', '.join(traction_models)})")
-    p.add_argument("--lubricant", default=None, help=f"lubricant for the films ({', '.join(lubricants)})")
-    p.add_argument("--ring-growth", action=argparse.BooleanOptionalAction, default=True,
-                   help="centrifugal growth of the rotating rings (default on)")
+    add_traction_argument(p)
+    add_lubricant_argument(p, "lubricant for the films: ")
+    add_ring_growth_argument(p)
     p.add_argument("--fit", type=finite_float, default=0.0, help="diametral interference of the inner ring on a "
                                                                  "solid shaft [m]")
     p.add_argument("--temperature", type=finite_float, nargs=3, metavar=("T_INNER", "T_OUTER", "T_BALL"),
                    help="part temperatures [K] for uniform thermal growth (default 293.15 K)")
-    p.add_argument("--fix", action="append", default=[], metavar="DOF=VALUE",
-                   help=f"hold a DOF ({', '.join(DOF_NAMES)}) at a value [m or rad]; its reaction is reported")
+    add_hold_arguments(p)
     p.add_argument("--hertz", choices=METHODS, default="exact", help="Hertz fidelity level")
-    p.add_argument("--strips", type=int, default=32, help="strips along each contact ellipse")
+    add_strip_arguments(p)
     p.add_argument("--plot", metavar="FILE.png", help="loads and contact angles against azimuth (+ CSV, and "
                                                       "FILE_slip.png with the slip along ball 0's contacts)")
     p.add_argument("--json", action="store_true", help="print JSON")
 
 
-def parse_fixed(items):
-    fixed = {}
-    for item in items:
-        name, sep, value = item.partition("=")
-        if not sep:
-            raise InputError(f"fix: expected DOF=VALUE, got {item!r}")
-        try:
-            fixed[name.strip()] = float(value)
-        except ValueError:
-            raise InputError(f"fix: {name.strip()}: expected a number, got {value!r}") from None
-    return fixed
+def check_solution_pressures(s, what: str):
+    """The elastic-contact limit on a quasi-static solution (model.load_range.check_pressures), naming the
+    largest applied load."""
+    names = ("Fr", "Fy", "Fa", "Mx", "My")
+    k = int(np.argmax(np.abs(s.loads)))
+    check_pressures(s.balls["p_max_inner"], s.balls["p_max_outer"], names[k], what)
 
 
 def run(args):
@@ -63,11 +58,17 @@ def run(args):
         b = b.with_clearance(args.Pd)
     omega = args.omega if args.omega is not None else (args.rpm * math.pi / 30.0 if args.rpm is not None else 0.0)
     temps = dict(zip(("inner", "outer", "ball"), args.temperature)) if args.temperature else None
-    s = solve_quasistatic(b, args.Fr, args.Fa, args.Mx, args.My, Fy=args.Fy, omega=omega,
-                          omega_outer=args.omega_outer, control=args.control, traction=args.traction,
-                          lubricant=args.lubricant, ring_growth=args.ring_growth, fit=args.fit, temperatures=temps,
-                          fixed=parse_fixed(args.fix), hertz_method=args.hertz, n_strips=args.strips)
+    lub = lubricant_from_args(args, b)
+    traction = traction_from_args(args, b)
+    with explained(b):
+        s = solve_quasistatic(b, args.Fr, args.Fa, args.Mx, args.My, Fy=args.Fy, omega=omega,
+                              omega_outer=args.omega_outer, control=args.control, traction=traction,
+                              lubricant=lub, ring_growth=args.ring_growth, fit=args.fit, temperatures=temps,
+                              fixed=fixed_from_args(args), hertz_method=args.hertz, n_strips=args.strips, n_across=args.points_across)
+    check_solution_pressures(s, f"F_r = {args.Fr:g} N, F_a = {args.Fa:g} N at omega = {omega:g} rad/s")
     d = s.to_dict()
+    d["ring_growth"] = args.ring_growth
+    d["tilt"] = args.tilt
     if args.plot:
         png = plot_loads_angles({b.name: s}, args.plot)
         d["plot"] = str(png)
@@ -78,15 +79,40 @@ def run(args):
             d[k] = d[k].tolist()
         print(json.dumps(to_jsonable(d), indent=2))
         return
-    print(s.summary())
-    bl = s.balls
-    print(f"{'ball':>4} {'psi':>6} {'Q_in N':>9} {'Q_out N':>9} {'a_in':>6} {'a_out':>6} {'pmax_in':>8} "
-          f"{'w_m':>8} {'beta':>6} {'sr_in':>7} {'sr_out':>7} {'P_in W':>8} {'P_out W':>8}")
-    for j in range(len(bl["psi"])):
-        print(f"{j:>4} {math.degrees(bl['psi'][j]):6.1f} {bl['q_inner'][j]:9.1f} {bl['q_outer'][j]:9.1f} "
-              f"{math.degrees(bl['alpha_inner'][j]):6.2f} {math.degrees(bl['alpha_outer'][j]):6.2f} "
-              f"{bl['p_max_inner'][j] / 1e9:7.3f}G {bl['orbital_speed'][j]:8.2f} {math.degrees(bl['beta'][j]):6.2f} "
-              f"{bl['spin_roll_inner'][j]:7.4f} {bl['spin_roll_outer'][j]:7.4f} "
-              f"{bl['dissipation_inner_ball'][j]:8.3g} {bl['dissipation_outer_ball'][j]:8.3g}")
+    lines = s.summary().splitlines()
+    print("\n".join(lines[:len(lines) - len(s.held)]))  # the held DOFs' lines below, round-off shown as 0
+    for name, why in s.held.items():
+        unit = "N m" if name.startswith("tilt") else "N"
+        print(f"{name} held ({why}); reaction {format_value(s.reactions.get(name, 0.0), unit)} {unit}")
+    print(solver_header(lub, traction, args.ring_growth))
+    print_ball_table(s.balls)
     if args.plot:
         print(f"plot: {d['plot']}")
+
+
+#: Columns of the ball table: (header, width, unit) and the value of ball j.
+_COLUMNS = (
+    ("psi", "deg", 6, lambda bl, j: f"{math.degrees(bl['psi'][j]):.1f}"),
+    ("Q_in", "N", 8, lambda bl, j: f"{bl['q_inner'][j]:.1f}"),
+    ("Q_out", "N", 8, lambda bl, j: f"{bl['q_outer'][j]:.1f}"),
+    ("alpha_in", "deg", 8, lambda bl, j: f"{math.degrees(bl['alpha_inner'][j]):.2f}"),
+    ("alpha_out", "deg", 9, lambda bl, j: f"{math.degrees(bl['alpha_outer'][j]):.2f}"),
+    ("pmax_in", "GPa", 7, lambda bl, j: f"{bl['p_max_inner'][j] / 1e9:.3f}"),
+    ("pmax_out", "GPa", 8, lambda bl, j: f"{bl['p_max_outer'][j] / 1e9:.3f}"),
+    ("w_orbit", "rad/s", 8, lambda bl, j: f"{bl['orbital_speed'][j]:.2f}"),
+    ("w_ball", "rad/s", 8, lambda bl, j: f"{bl['ball_speed'][j]:.2f}"),
+    ("beta", "deg", 6, lambda bl, j: f"{math.degrees(bl['beta'][j]):.2f}"),
+    ("sr_in", "-", 7, lambda bl, j: f"{bl['spin_roll_inner'][j]:.4f}"),
+    ("sr_out", "-", 7, lambda bl, j: f"{bl['spin_roll_outer'][j]:.4f}"),
+    ("P_in", "W", 8, lambda bl, j: f"{bl['dissipation_inner_ball'][j]:.3g}"),
+    ("P_out", "W", 8, lambda bl, j: f"{bl['dissipation_outer_ball'][j]:.3g}"),
+)
+
+
+def print_ball_table(bl):
+    """Per-ball table with a unit line under the header (w_orbit: orbital speed, w_ball: ball speed about its
+    own spin axis relative to the orbit frame, sr: spin-to-roll ratio, P: dissipation)."""
+    print(f"{'ball':>4} " + " ".join(f"{h:>{w}}" for h, _u, w, _f in _COLUMNS))
+    print(f"{'':>4} " + " ".join(f"{'[' + u + ']':>{w}}" for _h, u, w, _f in _COLUMNS))
+    for j in range(len(bl["psi"])):
+        print(f"{j:>4} " + " ".join(f"{f(bl, j):>{w}}" for _h, _u, w, f in _COLUMNS))

@@ -3,15 +3,16 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 from pathlib import Path
 
-from ..data import traction_models
 from ..model.scenario import CONTROLS, INITIAL_STATES, TRACTION_LEVELS, Scenario
 from ..outputs.jsonio import to_jsonable
 from ..physics.hertz import METHODS
 from ..simulate import simulate
-from .common import (add_bearing_argument, add_lubricant_argument, add_speed_arguments, bearing_from_args,
-                     finite_float, lubricant_from_args, omega_from_args, print_table)
+from .common import (add_strip_arguments, add_bearing_argument, add_lubricant_argument, add_ring_growth_argument, add_speed_arguments,
+                     add_traction_argument, bearing_from_args, finite_float, lubricant_from_args, omega_from_args,
+                     print_table)
 
 #: Simulated time [s] without --t-end and --ramp.
 DEFAULT_T_END = 0.02
@@ -60,11 +61,9 @@ def add_parser(sub):
     p.add_argument("--traction-level", choices=TRACTION_LEVELS, default="point",
                    help="tangential force: point-contact law (--friction) or traction integrated over the Hertz "
                         "ellipse (slip from rolling, spin and curvature; --traction model)")
-    p.add_argument("--traction", default="lambda_dem",
-                   help="traction model of the ellipse level (catalogue: " + ", ".join(traction_models) + ")")
-    p.add_argument("--strips", type=int, default=16, help="strips of the ellipse integration")
-    p.add_argument("--ring-growth", action=argparse.BooleanOptionalAction, default=False,
-                   help="groove geometry follows the ring speed (centrifugal growth of the rotating ring)")
+    add_traction_argument(p, "traction model of the ellipse level")
+    add_strip_arguments(p)
+    add_ring_growth_argument(p)
     p.add_argument("--out", metavar="DIR", help="write run.npz, run.json, run.png and run.csv into DIR")
     p.add_argument("--progress", action=argparse.BooleanOptionalAction, default=None,
                    help="progress on stderr (default: for runs over 2 million steps)")
@@ -78,7 +77,7 @@ def scenario_from_args(args) -> Scenario:
               sample_dt=args.sample_dt, integrator=args.integrator, friction=args.friction,
               tangential=args.tangential, hertz=args.hertz, film=args.film, cage=args.cage,
               lubrication=args.lubrication, initial=args.initial, control=args.control,
-              traction_level=args.traction_level, traction=args.traction, n_strips=args.strips,
+              traction_level=args.traction_level, traction=args.traction, n_strips=args.strips, n_across=args.points_across,
               ring_growth=args.ring_growth)
     if args.ramp:
         up, steady, down = args.ramp
@@ -91,7 +90,9 @@ def scenario_from_args(args) -> Scenario:
     return Scenario(**kw)
 
 
-def _table(summary):
+def _table(summary, t_end=None):
+    """Rows of the summary table; ``t_end``: the run length asked for, shown with the last sample's time
+    when the sample interval (a whole number of steps) does not end on it."""
     units = summary["units"]
     w = summary["window"]
     st = summary["steady"]
@@ -100,6 +101,9 @@ def _table(summary):
              else f"NO: {st['reason']}")]
     rows += [(k, v, units.get(k)) for k, v in summary.items()
              if not isinstance(v, (dict, list)) and k not in ("window", "note")]
+    if t_end is not None and "t_end" in summary and not math.isclose(summary["t_end"], t_end, rel_tol=1e-9):
+        rows = [(k, f"{t_end:g} s (last sample at {summary['t_end']:.6g} s)", None) if k == "t_end" else r
+                for r in rows for k in (r[0],)]
     rows.append(("q_max_method", ", ".join(f"{race}: {m}" for race, m in summary["q_max_method"].items())))
     rows += [(f"energy_source.{k}", v) for k, v in summary["energy_source"].items()]
     rows += [("losses_modelled", "; ".join(summary["losses_modelled"])),
@@ -116,9 +120,16 @@ def _table(summary):
 
 def run(args):
     sc = scenario_from_args(args)
-    run = simulate(bearing_from_args(args), sc, engine=args.engine, lubricant=lubricant_from_args(args),
-                   progress=args.progress)
+    b = bearing_from_args(args)
+    run = simulate(b, sc, engine=args.engine, lubricant=lubricant_from_args(args, b), progress=args.progress)
     summary = run.summary()
+    # the lubricant and traction model in use (the bearing's unless given), unless the summary names them
+    summary.setdefault("lubricant", run.lubricant.name)
+    sc = run.scenario
+    mu = "mu(Lambda) of the lubricant" if sc.lubrication else f"mu_dry = {sc.mu_dry:g}"
+    summary.setdefault("traction", sc.traction if sc.traction_level == "ellipse" else
+                       f"point-contact law ({sc.friction}, {mu})" if sc.friction != "none" else "none (friction off)")
+    summary.setdefault("ring_growth", sc.ring_growth)
     if args.out:
         npz, js = run.save(args.out)
         png = run.plot(Path(args.out) / "run.png")
@@ -126,4 +137,4 @@ def run(args):
     if args.json:
         print(json.dumps(to_jsonable(summary), indent=2))
         return
-    print_table(_table(summary))
+    print_table(_table(summary, sc.t_end))

@@ -7,7 +7,7 @@ import math
 
 import numpy as np
 
-from ..data import InputError
+from ..data import InputError, load_lubricant
 from ..model.load_range import check_load_range
 from ..outputs.jsonio import to_jsonable
 from ..outputs.plotting import plot_static
@@ -16,8 +16,9 @@ from ..physics.hertz import METHODS
 from ..physics.load_distribution import StaticSolution, load_zone_parameter
 from ..solvers.analytic import stribeck_and_lubrication
 from ..solvers.quasistatic import solve_quasistatic
-from .common import (add_bearing_argument, add_lubricant_argument, add_speed_arguments, bearing_from_args,
-                     finite_float, lubricant_from_args, omega_from_args)
+from .common import (add_bearing_argument, add_hold_arguments, add_lubricant_argument, add_speed_arguments,
+                     bearing_from_args, explained, finite_float, fixed_from_args, format_value, lubricant_from_args,
+                     omega_from_args)
 
 HELP = ("zero-speed special case of 'quasistatic': 5-DOF inner-ring equilibrium without centrifugal or "
         "gyroscopic loads, rigid rings; the tilt is held at zero unless --tilt free (its reaction moment is "
@@ -32,9 +33,7 @@ def add_parser(sub):
     p.add_argument("--Fa", type=finite_float, default=0.0, help="axial load [N] on the inner ring")
     p.add_argument("--Mx", type=finite_float, default=0.0, help="moment [N m] about x (needs --tilt free)")
     p.add_argument("--My", type=finite_float, default=0.0, help="moment [N m] about y (needs --tilt free)")
-    p.add_argument("--tilt", choices=("fixed", "free"), default="fixed",
-                   help="inner-ring tilt held at zero as in the classical (Harris) load distribution and the DEM "
-                        "engines, with the reaction moment reported (the default), or free")
+    add_hold_arguments(p)
     p.add_argument("--Pd", type=finite_float, help="diametral clearance [m] (negative: preload, e.g. -12.6e-6); "
                                                     "default: the bearing's own")
     add_speed_arguments(p, what="none: no lubrication map; the speed sets the lubrication map only")
@@ -48,20 +47,25 @@ def add_parser(sub):
 
 
 def static_result(b, fr, fa, mx=0.0, my=0.0, tilt="fixed", omega=None, film="hd", hertz="exact", phase=0.0,
-                  lubricant=None):
+                  lubricant=None, fixed=None):
     """The dict of ``static`` (keys of :func:`exudyn_bearing.solvers.analytic.static_analysis`, plus the
-    tilt, the held DOFs and their reactions). ``phase`` is taken modulo 2 pi; loads beyond the elastic
-    contact model (:mod:`exudyn_bearing.model.load_range`) raise InputError."""
+    tilt, the held DOFs and their reactions). ``fixed``: held DOFs (default: the tilts at zero with
+    ``tilt="fixed"``). ``phase`` is taken modulo 2 pi; loads beyond the elastic contact model
+    (:mod:`exudyn_bearing.model.load_range`) raise InputError."""
     for name, v in (("radial_load", fr), ("axial_load", fa)):
         if v < 0.0:
             raise InputError(f"{name}: must be >= 0 (the bearing carries +x radial and +z axial load on the "
                              f"inner ring), got {v}")
-    if tilt == "fixed" and (mx != 0.0 or my != 0.0):
-        raise InputError("Mx: a moment load needs the free tilt (--tilt free)")
+    if fixed is None:
+        fixed = {"tilt_x": 0.0, "tilt_y": 0.0} if tilt == "fixed" else {}
+    for moment, t in (("Mx", "tilt_x"), ("My", "tilt_y")):
+        if (mx if moment == "Mx" else my) != 0.0 and t in fixed:
+            raise InputError(f"{moment}: a moment load needs the free tilt (--tilt free)")
     phase = math.remainder(phase, 2.0 * math.pi)  # the same balls; a huge phase loses their spacing in cos/sin
     names = ("radial_load", "axial_load", "diametral_clearance")
-    check_load_range(b, fr, fa, hertz, names=names, phase=phase)  # before the solve: far-off loads do not converge
-    fixed = {"tilt_x": 0.0, "tilt_y": 0.0} if tilt == "fixed" else {}
+    translating = set(fixed) <= {"tilt_x", "tilt_y"}  # the classical distribution: only the tilts held
+    if translating:
+        check_load_range(b, fr, fa, hertz, names=names, phase=phase)  # before the solve: far-off loads do not converge
     s = solve_quasistatic(b, fr, fa, mx, my, omega=0.0, fixed=fixed, hertz_method=hertz, phase=phase,
                           stiffness=False)
     bl = s.balls
@@ -75,7 +79,7 @@ def static_result(b, fr, fa, mx=0.0, my=0.0, tilt="fixed", omega=None, film="hd"
                          bl["delta_outer"], bl["alpha_inner"], u[:3].copy(), float(u[0]), float(u[2]), eps,
                          hertz_method=hertz,
                          reaction_moment=np.array([s.reactions.get("tilt_x", 0.0), s.reactions.get("tilt_y", 0.0)]))
-    if mx != 0.0 or my != 0.0:
+    if mx != 0.0 or my != 0.0 or not translating:
         check_load_range(b, fr, fa, hertz, names=names, solution=sol)
     res = {"bearing": b.name, "model": "zero-speed quasi-static (quasistatic at omega = 0, rigid rings)",
            "Fr": fr, "Fa": fa, "Mx": mx, "My": my, "Pd": pd, "hertz_method": hertz, "phase": phase, "psi": sol.psi,
@@ -85,7 +89,11 @@ def static_result(b, fr, fa, mx=0.0, my=0.0, tilt="fixed", omega=None, film="hd"
            "delta_r": sol.delta_r, "delta_a": sol.delta_a, "tilt_x": float(u[3]), "tilt_y": float(u[4]),
            "eps": eps, "tilt": tilt, "held_dofs": dict(s.held), "reactions": dict(s.reactions),
            "reaction_moment": sol.reaction_moment}
-    res.update(stribeck_and_lubrication(sol, omega, film, lubricant, stribeck=tilt == "fixed"))
+    lub = load_lubricant(lubricant, bearing=b)
+    res["lubricant"] = lub.name
+    res["traction"] = None  # zero speed: no slip, no traction model
+    res.update(stribeck_and_lubrication(sol, omega, film, lub, stribeck=translating and fixed == {"tilt_x": 0.0,
+                                                                                                  "tilt_y": 0.0}))
     return res
 
 
@@ -94,8 +102,9 @@ def run(args):
     if args.Pd is not None:
         b = b.with_clearance(args.Pd)
     omega = omega_from_args(args)
-    res = static_result(b, args.Fr, args.Fa, args.Mx, args.My, args.tilt, omega, args.film, args.hertz,
-                        args.phase, lubricant_from_args(args))
+    with explained(b):
+        res = static_result(b, args.Fr, args.Fa, args.Mx, args.My, args.tilt, omega, args.film, args.hertz,
+                            args.phase, lubricant_from_args(args, b), fixed_from_args(args))
     if args.plot:
         png, csv = plot_static(res, args.plot)
         res["plot"] = str(png)
@@ -109,12 +118,18 @@ def run(args):
     print(f"{b.name}: Fr = {res['Fr']:g} N, Fa = {res['Fa']:g} N, Pd = {res['Pd'] * 1e6:.2f} um, "
           f"Hertz {res['hertz_method']} (zero-speed quasi-static, tilt {args.tilt})"
           + (f", omega = {omega:g} rad/s" if omega is not None else ""))
-    print(f"q_max = {res['q_max']:.1f} N (continuous Stribeck {res.get('q_max_stribeck', float('nan')):.1f} N), "
+    print(f"lubricant {res['lubricant']}" + (" (lubrication map)" if omega is not None else " (no speed: no "
+                                               "lubrication map)") + ", no traction model (zero speed: no slip)")
+    stribeck = (f"continuous Stribeck {res['q_max_stribeck']:.1f} N" if "q_max_stribeck" in res else
+                "continuous Stribeck not applicable: " + ("tilt free" if args.tilt == "free" else "held DOFs"
+                                                          if args.fix else "no continuous solution"))
+    print(f"q_max = {res['q_max']:.1f} N ({stribeck}), "
           f"eps = {res['eps']:.4f}, delta_r = {res['delta_r'] * 1e6:.3f} um, "
           f"delta_a = {res['delta_a'] * 1e6:.3f} um, tilt_y = {res['tilt_y'] * 1e3:.4f} mrad")
     for name, why in res["held_dofs"].items():
-        print(f"{name} held ({why}): reaction {res['reactions'][name]:.4g} {'N m' if 'tilt' in name else 'N'}"
-              + (" (--tilt free releases it)" if why == "fixed" else ""))
+        unit = "N m" if "tilt" in name else "N"
+        print(f"{name} held ({why}): reaction {format_value(res['reactions'][name], unit, 4)} {unit}"
+              + (" (--tilt free releases it)" if why == "fixed" and "tilt" in name else ""))
     head = f"{'ball':>4} {'psi deg':>8} {'Q N':>9} {'delta um':>9} {'alpha deg':>9}"
     if omega is not None:
         head += f" {'h_in um':>8} {'L_in':>6} {'h_out um':>8} {'L_out':>6} {'regime out':>10}"

@@ -12,19 +12,21 @@ contacts' normal damping. Several speeds (``--speeds`` in rad/s or ``--rpms``):
 """
 from __future__ import annotations
 
-import argparse
 import json
 import math
 
 import numpy as np
 
-from ..data import InputError, lubricants, traction_models
+from ..data import InputError
 from ..model.coefficients import AXES, DAMPING_UNITS, STIFFNESS_UNITS
 from ..outputs.jsonio import to_jsonable
 from ..outputs.plotting import save_figure
 from ..solvers.quasistatic import bearing_coefficients, solve_quasistatic
 from ..solvers.quasistatic.kinematics import CONTROLS
-from .common import add_bearing_argument, add_load_arguments, bearing_from_args, finite_float
+from .common import (add_bearing_argument, add_hold_arguments, add_lubricant_argument, add_load_arguments,
+                     add_ring_growth_argument, add_traction_argument, bearing_from_args, explained, finite_float,
+                     fixed_from_args, lubricant_from_args, solver_header, traction_from_args)
+from .quasistatic import check_solution_pressures
 
 RPM = 2.0 * math.pi / 60.0
 
@@ -46,11 +48,10 @@ def add_parser(sub):
                         "psi = 2 pi j / Z)")
     p.add_argument("--control", choices=CONTROLS, default="auto",
                    help="ball kinematics: race control (outer, inner, auto = Jones' criterion) or min-energy")
-    p.add_argument("--traction", default="lambda_dem", help=f"traction model ({', '.join(traction_models)})")
-    p.add_argument("--lubricant", default=None, help=f"lubricant ({', '.join(lubricants)}); default the DEM "
-                                                     f"papers' oil")
-    p.add_argument("--ring-growth", action=argparse.BooleanOptionalAction, default=True,
-                   help="centrifugal growth of the rotating rings (default on)")
+    add_traction_argument(p)
+    add_lubricant_argument(p)
+    add_ring_growth_argument(p)
+    add_hold_arguments(p)
     p.add_argument("--plot", metavar="FILE.png", help="with a table: entries against speed (+ CSV beside)")
     p.add_argument("--json", action="store_true", help="print JSON")
 
@@ -102,22 +103,30 @@ def run(args):
     b = bearing_from_args(args)
     if args.Pd is not None:
         b = b.with_clearance(args.Pd)
-    opts = dict(control=args.control, traction=args.traction, lubricant=args.lubricant,
-                ring_growth=args.ring_growth)
+    lub, traction = lubricant_from_args(args, b), traction_from_args(args, b)
+    opts = dict(control=args.control, traction=traction, lubricant=lub, ring_growth=args.ring_growth,
+                fixed=fixed_from_args(args))
     loads = dict(Fr=args.Fr, Fa=args.Fa, Mx=args.Mx, My=args.My, Fy=args.Fy)
+    what = f"F_r = {args.Fr:g} N, F_a = {args.Fa:g} N at omega = %g rad/s"
+    header = solver_header(lub, traction, args.ring_growth)
     if args.speeds is not None or args.rpms is not None:
         speeds = np.array(args.speeds) if args.speeds is not None else np.array(args.rpms) * RPM
-        c = bearing_coefficients(b, speeds, n_phases=args.phases, **loads, **opts)
+        with explained(b):
+            c = bearing_coefficients(b, speeds, n_phases=args.phases, **loads, **opts)
+            # the elastic-contact limit at the lowest and the highest speed (inner and outer contacts peak there)
+            for w in {float(speeds[0]), float(speeds[-1])}:
+                check_solution_pressures(solve_quasistatic(b, omega=w, stiffness=False, **loads, **opts), what % w)
         d = c.to_dict()
         d["rpm"] = c.rpm().tolist()
         d["units"]["rpm"] = "1/min"
+        d.update(lubricant=lub.name, traction=traction, ring_growth=args.ring_growth, tilt=args.tilt)
         if args.plot:
             d["plot"] = str(_plot(c, args.plot))
         if args.json:
             print(json.dumps(to_jsonable(d), indent=2))
             return
         print(f"{b.name}: Fr = {args.Fr:g} N, Fa = {args.Fa:g} N, P_d = {b.diametral_clearance * 1e6:g} um, "
-              f"{args.phases} phase(s)")
+              f"{args.phases} phase(s); {header}")
         print(f"{'rpm':>9} {'k_xx N/m':>11} {'k_yy N/m':>11} {'k_xy N/m':>11} {'k_zz N/m':>11} "
               f"{'c_xx Ns/m':>10} {'c_yy Ns/m':>10} {'c_zz Ns/m':>10}")
         for i, r in enumerate(c.rpm()):
@@ -128,19 +137,21 @@ def run(args):
             print(f"plot: {d['plot']}")
         return
     omega = args.omega if args.omega is not None else (args.rpm * RPM if args.rpm is not None else 0.0)
-    if args.phases != 1:
-        c = bearing_coefficients(b, [omega], n_phases=args.phases, **loads, **opts)
-        kmat, cmat = c.stiffness[0], c.damping[0]
-    else:
-        c = None
-    s = solve_quasistatic(b, omega=omega, **loads, **opts)
+    with explained(b):
+        if args.phases != 1:
+            c = bearing_coefficients(b, [omega], n_phases=args.phases, **loads, **opts)
+            kmat, cmat = c.stiffness[0], c.damping[0]
+        else:
+            c = None
+        s = solve_quasistatic(b, omega=omega, **loads, **opts)
+    check_solution_pressures(s, what % omega)
     if c is None:
         kmat, cmat = s.stiffness, s.damping
     kmat, cmat = np.asarray(kmat) + 0.0, np.asarray(cmat) + 0.0   # no signed zeros in the output
     d = {"bearing": b.name, "loads": {"Fr": args.Fr, "Fy": args.Fy, "Fa": args.Fa, "Mx": args.Mx, "My": args.My},
          "omega": omega, "rpm": omega / RPM, "diametral_clearance": b.diametral_clearance, "phases": args.phases,
-         "control": args.control, "traction": args.traction, "lubricant": s.lubricant,
-         "ring_growth": args.ring_growth, "axes": list(AXES), "stiffness": kmat, "damping": cmat,
+         "control": args.control, "traction": s.traction, "lubricant": s.lubricant,
+         "ring_growth": args.ring_growth, "tilt": args.tilt, "axes": list(AXES), "stiffness": kmat, "damping": cmat,
          "displacement": s.displacement, "held_dofs": dict(s.held),
          "c_normal_inner": s.balls["c_normal_inner"], "c_normal_outer": s.balls["c_normal_outer"],
          "stiffness_check": s.stiffness_check, "units": _units()}
@@ -149,5 +160,6 @@ def run(args):
         return
     print(f"{b.name}: Fr = {args.Fr:g} N, Fa = {args.Fa:g} N, omega = {omega:g} rad/s ({omega / RPM:g} rpm), "
           f"P_d = {b.diametral_clearance * 1e6:g} um" + (f", mean of {args.phases} phases" if c else ""))
+    print(header)
     _print_matrix("stiffness K = -dF/dq", kmat, STIFFNESS_UNITS)
     _print_matrix("damping C = -dF/dq'", cmat, DAMPING_UNITS)

@@ -10,7 +10,7 @@ construction), :mod:`.catalog` (``catalog.json``, look-up by name or file),
 :mod:`.defects` (Defect: localized spalls on a race or a ball).
 """
 from .bearings import MAX_FREE_CONTACT_ANGLE, MAX_PRELOAD_INTERFERENCE, BallBearing
-from .catalog import (catalog, default_lubricant, get_bearing, get_traction_model, load_bearing, load_lubricant,
+from .catalog import (catalog, default_lubricant, default_traction, get_bearing, get_traction_model, load_bearing, load_lubricant,
                       lubricants, materials, traction_models)
 from .defects import Defect
 from .errors import InputError
@@ -19,6 +19,6 @@ from .materials import Material
 from .traction import PARAMETER_NAMES as TRACTION_PARAMETERS, TRACTION_KINDS, TractionModel
 
 __all__ = ["InputError", "Material", "Lubricant", "BallBearing", "catalog", "materials", "lubricants",
-           "get_bearing", "load_bearing", "load_lubricant", "default_lubricant",
+           "get_bearing", "load_bearing", "load_lubricant", "default_lubricant", "default_traction",
            "TractionModel", "TRACTION_KINDS", "TRACTION_PARAMETERS", "traction_models", "get_traction_model", "MAX_FREE_CONTACT_ANGLE", "MAX_PRELOAD_INTERFERENCE",
            "Defect"]

@@ -34,10 +34,12 @@ import dataclasses
 import math
 from dataclasses import dataclass, field
 
-from .errors import InputError, check_finite, check_integer, check_positive, check_text
+from .errors import (LENGTH_MISTAKES, InputError, check_finite, check_integer, check_plausible, check_positive,
+                     check_text)
 from .materials import Material
 
-__all__ = ["BallBearing", "MAX_FREE_CONTACT_ANGLE", "MAX_PRELOAD_INTERFERENCE"]
+__all__ = ["BallBearing", "MAX_FREE_CONTACT_ANGLE", "MAX_PRELOAD_INTERFERENCE", "free_contact_angle_from_degrees",
+           "check_free_contact_angle"]
 
 #: Largest free contact angle accepted [rad]. A ball whose free contact angle
 #: (rings shifted axially until the ball touches both grooves) exceeds it is
@@ -49,6 +51,73 @@ MAX_FREE_CONTACT_ANGLE = math.radians(60.0)
 #: Largest preload interference -P_d/2 accepted, as a fraction of the ball
 #: radius. Hertz theory needs overlaps small against the radii.
 MAX_PRELOAD_INTERFERENCE = 0.01
+
+#: Ball diameters accepted [m]: 0.2 mm (miniature bearings) to 200 mm (large
+#: slewing bearings); a value outside is a unit mistake (mm, cm, um).
+BALL_DIAMETER_RANGE = (2e-4, 0.2)
+#: Conformities f = R_c / D accepted: above 0.5 (the groove must be larger
+#: than the ball) up to 0.6; ball bearings have 0.505-0.58 (Harris & Kotzalas,
+#: Rolling Bearing Analysis, 5th ed., 2006, on osculation).
+MAX_CONFORMITY = 0.6
+
+
+def check_ball_diameter(name, value, factor=1.0) -> float:
+    """A ball diameter (``factor`` 1) or radius (0.5) [m] within
+    :data:`BALL_DIAMETER_RANGE`, else InputError naming ``name`` and the
+    likely unit mistake ("lengths are in metres: 12.7 mm is 0.0127 m")."""
+    v = check_positive(name, value)
+    return check_plausible(name, v, factor * BALL_DIAMETER_RANGE[0], factor * BALL_DIAMETER_RANGE[1], "m",
+                           "lengths are in metres", LENGTH_MISTAKES)
+
+
+def check_conformity(name, value) -> float:
+    """A groove conformity f = R_c / D in (0.5, MAX_CONFORMITY], else
+    InputError naming ``name`` (a percentage says so)."""
+    f = check_finite(name, value)
+    if 0.5 < f <= MAX_CONFORMITY + 1e-12:
+        return f
+    if 50.0 < f <= 100.0 * MAX_CONFORMITY:
+        raise InputError(f"{name}: {f:g} is a percentage; the conformity is the ratio f = groove radius / ball "
+                         f"diameter: {f:g} % is {f / 100:g}")
+    raise InputError(f"{name}: must lie in (0.5, {MAX_CONFORMITY:g}] (groove radius f D above the ball radius D/2; "
+                     f"ball bearings have 0.505-0.58), got {f:g}")
+
+#: Smallest nonzero free contact angle accepted in degrees [deg]: a value
+#: below pi/2 given in degrees is far more likely an angle in radians (angular-
+#: contact bearings have 15-40 deg; deep-groove bearings 0).
+MIN_FREE_CONTACT_ANGLE_DEG = 0.5 * math.pi
+
+
+def check_free_contact_angle(a0, name: str = "free_contact_angle") -> float:
+    """``a0`` [rad] as a float in [0, MAX_FREE_CONTACT_ANGLE], else InputError
+    naming ``name``; a value that reads as degrees (1.6 to 90) says so.
+
+    Angles are in radians everywhere in Python and under the key
+    ``free_contact_angle`` of a bearing file; ``free_contact_angle_deg``
+    (files, :meth:`BallBearing.to_dict`) carries degrees."""
+    a0 = check_finite(name, a0)
+    if 0.5 * math.pi <= a0 <= 90.0:
+        raise InputError(f"{name}: {a0:g} rad is not a free contact angle; angles are in radians "
+                         f"({a0:g} deg is {math.radians(a0):.6g} rad; a bearing file may give "
+                         f"free_contact_angle_deg instead)")
+    if not 0.0 <= a0 <= MAX_FREE_CONTACT_ANGLE:
+        raise InputError(f"{name}: must lie in [0, {MAX_FREE_CONTACT_ANGLE:.6g}] rad (0 to "
+                         f"{math.degrees(MAX_FREE_CONTACT_ANGLE):.0f} deg), got {a0:g}")
+    return a0
+
+
+def free_contact_angle_from_degrees(deg, name: str = "free_contact_angle_deg") -> float:
+    """The free contact angle [rad] of a value in degrees (``free_contact_angle_deg``
+    of a bearing file); a nonzero value below pi/2 reads as radians and is
+    refused, naming ``name``."""
+    v = check_finite(name, deg)
+    if 0.0 < v < MIN_FREE_CONTACT_ANGLE_DEG:
+        raise InputError(f"{name}: {v:g} deg looks like an angle in radians ({v:g} rad = "
+                         f"{math.degrees(v):.4g} deg); give degrees here, or the key free_contact_angle "
+                         "in radians")
+    if not 0.0 <= v <= math.degrees(MAX_FREE_CONTACT_ANGLE):
+        raise InputError(f"{name}: must lie in [0, {math.degrees(MAX_FREE_CONTACT_ANGLE):.0f}] deg, got {v:g}")
+    return math.radians(v)
 
 
 @dataclass(frozen=True)
@@ -70,9 +139,18 @@ class BallBearing:
         R_z [m] of the torus-cage balls between neighbouring balls; None for
         a cageless bearing.
     free_contact_angle : float
-        alpha_0 [rad] at which the groove centres are placed (0 for deep groove).
+        alpha_0 [rad] at which the groove centres are placed (0 for deep
+        groove), at most ``MAX_FREE_CONTACT_ANGLE``; a value that reads as
+        degrees is refused. Bearing files give it in radians under this
+        key or in degrees as ``free_contact_angle_deg``.
     material : Material
         Material of balls and rings.
+    lubricant, traction : str or None
+        Catalogue names of the bearing's default lubricant and traction
+        model (``exudyn_bearing.data.lubricants``, ``traction_models``), used
+        by every solver when none is given; None: the DEM papers' oil
+        ``guessasma2018`` and their mu(Lambda) ``lambda_dem``
+        (:func:`~exudyn_bearing.data.catalog.default_lubricant`).
     """
 
     n_balls: int
@@ -88,24 +166,27 @@ class BallBearing:
     source: str = ""
     bore: float | None = None
     outer_diameter: float | None = None
+    lubricant: str | None = None
+    traction: str | None = None
 
     def __post_init__(self):
         z = check_integer("n_balls", self.n_balls)
         if z < 3:
             raise InputError(f"n_balls: at least 3 balls are needed, got {z}")
         object.__setattr__(self, "n_balls", z)
-        rb = check_positive("ball_radius", self.ball_radius)
+        rb = check_ball_diameter("ball_radius", self.ball_radius, 0.5)
         ri = check_positive("inner_race_radius", self.inner_race_radius)
         ro = check_positive("outer_race_radius", self.outer_race_radius)
         rci = check_positive("inner_groove_radius", self.inner_groove_radius)
         rco = check_positive("outer_groove_radius", self.outer_groove_radius)
-        a0 = check_finite("free_contact_angle", self.free_contact_angle)
-        if not 0.0 <= a0 < 0.5 * math.pi:
-            raise InputError(f"free_contact_angle: must lie in [0, pi/2) rad, got {a0}")
+        a0 = check_free_contact_angle(self.free_contact_angle)
         if not isinstance(self.material, Material):
             raise InputError(f"material: expected a Material, got {type(self.material).__name__}")
         check_text("name", self.name)
         check_text("source", self.source)
+        for key in ("lubricant", "traction"):
+            if getattr(self, key) is not None:
+                check_text(key, getattr(self, key))
         # plain floats from here on (numpy scalars and ints are numbers too)
         for key, v in (("ball_radius", rb), ("inner_race_radius", ri), ("outer_race_radius", ro),
                        ("inner_groove_radius", rci), ("outer_groove_radius", rco), ("free_contact_angle", a0)):
@@ -121,6 +202,11 @@ class BallBearing:
         if rco <= rb:
             raise InputError(
                 f"outer_groove_radius: the ball (R_b = {rb}) must be smaller than the groove, got {rco}")
+        for key, r_c in (("inner_groove_radius", rci), ("outer_groove_radius", rco)):
+            if r_c > (2.0 * MAX_CONFORMITY + 1e-12) * rb:
+                raise InputError(f"{key}: {r_c:g} m is {r_c / (2.0 * rb):.4g} ball diameters; a groove radius "
+                                 f"lies between 0.5 and {MAX_CONFORMITY:g} D (conformity), here "
+                                 f"{MAX_CONFORMITY * 2.0 * rb:.4g} m at most")
         pd = self.diametral_clearance
         if pd < 0.0 and -0.5 * pd > MAX_PRELOAD_INTERFERENCE * rb:
             raise InputError(
@@ -156,7 +242,7 @@ class BallBearing:
     def from_dimensions(cls, n_balls, ball_diameter, pitch_diameter, inner_conformity, outer_conformity,
                         diametral_clearance=0.0, free_contact_angle=0.0, material: Material | None = None,
                         cage_ball_radius=None, name: str = "custom", source: str = "", bore=None,
-                        outer_diameter=None) -> "BallBearing":
+                        outer_diameter=None, lubricant=None, traction=None) -> "BallBearing":
         """A bearing from the dimensions of a data sheet.
 
         Parameters
@@ -166,12 +252,12 @@ class BallBearing:
         ball_diameter, pitch_diameter : float
             D and d_m [m].
         inner_conformity, outer_conformity : float
-            f_i = R_ci / D and f_o = R_co / D [-], above 0.5 (typically 0.51-0.54).
+            f_i = R_ci / D and f_o = R_co / D [-], in (0.5, 0.6] (typically 0.51-0.54).
         diametral_clearance : float
             P_d [m] (negative: preload).
         free_contact_angle : float
             alpha_0 [rad] (0 for deep-groove bearings).
-        material, cage_ball_radius, name, source, bore, outer_diameter
+        material, cage_ball_radius, name, source, bore, outer_diameter, lubricant, traction
             As in the class.
 
         The race radii follow as R_i = d_m/2 - D/2 - P_d/4 and
@@ -182,21 +268,19 @@ class BallBearing:
         >>> round(b.inner_race_radius * 1e3, 6), round(b.outer_groove_radius * 1e3, 6)
         (24.0, 6.552)
         """
-        d = check_positive("ball_diameter", ball_diameter)
+        d = check_ball_diameter("ball_diameter", ball_diameter)
         dm = check_positive("pitch_diameter", pitch_diameter)
         if not d < dm:
             raise InputError(f"ball_diameter: must be smaller than pitch_diameter ({dm}), got {d}")
-        fi = check_finite("inner_conformity", inner_conformity)
-        fo = check_finite("outer_conformity", outer_conformity)
-        for key, f in (("inner_conformity", fi), ("outer_conformity", fo)):
-            if not f > 0.5:
-                raise InputError(f"{key}: must exceed 0.5 (groove radius f D above the ball radius D/2), got {f}")
+        fi = check_conformity("inner_conformity", inner_conformity)
+        fo = check_conformity("outer_conformity", outer_conformity)
         pd = check_finite("diametral_clearance", diametral_clearance)
         return cls(n_balls=n_balls, ball_radius=0.5 * d, inner_race_radius=0.5 * dm - 0.5 * d - 0.25 * pd,
                    outer_race_radius=0.5 * dm + 0.5 * d + 0.25 * pd, inner_groove_radius=fi * d,
                    outer_groove_radius=fo * d, cage_ball_radius=cage_ball_radius,
                    free_contact_angle=free_contact_angle, material=Material() if material is None else material,
-                   name=name, source=source, bore=bore, outer_diameter=outer_diameter)
+                   name=name, source=source, bore=bore, outer_diameter=outer_diameter, lubricant=lubricant,
+                   traction=traction)
 
     # -- derived quantities -------------------------------------------------
     @property
@@ -305,8 +389,9 @@ class BallBearing:
         return self.replace(outer_race_radius=ro)
 
     def to_dict(self) -> dict:
-        """Plain JSON-able dict (the format of ``catalog.json``; angles in deg)."""
+        """Plain JSON-able dict (the format of ``catalog.json``; the angle in
+        degrees as ``free_contact_angle_deg``)."""
         d = {f.name: getattr(self, f.name) for f in dataclasses.fields(self)}
-        d["free_contact_angle"] = math.degrees(self.free_contact_angle)
+        d["free_contact_angle_deg"] = math.degrees(d.pop("free_contact_angle"))
         d["material"] = dataclasses.asdict(self.material)
         return d

@@ -3,8 +3,10 @@
 
 Each entry of ``catalog.json`` carries its ``source``. See docs/theory/geometry.md.
 
-A bearing is given in one of two forms (lengths in metres,
-``free_contact_angle`` in degrees, ``material`` a material name or a dict of
+A bearing is given in one of two forms (lengths in metres, the free contact
+angle as ``free_contact_angle_deg`` in degrees or ``free_contact_angle`` in
+radians as in Python, not both; a value that reads in the other unit is
+refused), ``material`` a material name or a dict of
 :class:`~.materials.Material` fields, optional ``name``, ``source``,
 ``cage_ball_radius``, ``bore``, ``outer_diameter``):
 
@@ -26,26 +28,26 @@ from __future__ import annotations
 
 import dataclasses
 import json
-import math
 from importlib import resources
 from pathlib import Path
 from typing import Mapping
 
-from .bearings import BallBearing
-from .errors import InputError, check_finite, check_keys
+from .bearings import BallBearing, free_contact_angle_from_degrees
+from .errors import InputError, check_keys
 from .lubricants import Lubricant
 from .materials import Material
 from .traction import TractionModel
 
 __all__ = ["catalog", "materials", "lubricants", "traction_models", "get_bearing", "load_bearing", "load_lubricant",
-           "default_lubricant", "get_traction_model", "BEARING_KEYS", "DIMENSION_KEYS"]
+           "default_lubricant", "default_traction", "get_traction_model", "BEARING_KEYS", "DIMENSION_KEYS",
+           "PAPERS_LUBRICANT", "PAPERS_TRACTION"]
 
 #: Keys of a bearing in the race-radii form (the fields of BallBearing).
-BEARING_KEYS = tuple(f.name for f in dataclasses.fields(BallBearing))
+BEARING_KEYS = tuple(f.name for f in dataclasses.fields(BallBearing)) + ("free_contact_angle_deg",)
 #: Keys of a bearing in the dimensions form (:meth:`BallBearing.from_dimensions`).
 DIMENSION_KEYS = ("n_balls", "ball_diameter", "pitch_diameter", "inner_conformity", "outer_conformity",
-                  "diametral_clearance", "free_contact_angle", "material", "cage_ball_radius", "name", "source",
-                  "bore", "outer_diameter")
+                  "diametral_clearance", "free_contact_angle", "free_contact_angle_deg", "material", "cage_ball_radius", "name", "source",
+                  "bore", "outer_diameter", "lubricant", "traction")
 _MATERIAL_KEYS = tuple(f.name for f in dataclasses.fields(Material))
 _LUBRICANT_KEYS = tuple(f.name for f in dataclasses.fields(Lubricant))
 
@@ -64,9 +66,22 @@ traction_models: Mapping[str, TractionModel] = {
     k: TractionModel(name=k, **v) for k, v in _RAW.get("traction_models", {}).items()}
 
 
-def get_traction_model(spec) -> TractionModel:
+#: The DEM papers' lubricant and traction model: the defaults of a bearing that names none.
+PAPERS_LUBRICANT, PAPERS_TRACTION = "guessasma2018", "lambda_dem"
+
+
+def default_traction(bearing=None) -> str:
+    """Name of the default traction model of ``bearing`` (its ``traction``),
+    else the DEM papers' mu(Lambda), ``lambda_dem``."""
+    return getattr(bearing, "traction", None) or PAPERS_TRACTION
+
+
+def get_traction_model(spec, bearing=None) -> TractionModel:
     """A traction model by catalogue name (or a TractionModel passed through);
-    an unknown name lists the valid ones."""
+    None: the default of ``bearing`` (:func:`default_traction`). An unknown
+    name lists the valid ones."""
+    if spec is None:
+        spec = default_traction(bearing)
     if isinstance(spec, TractionModel):
         return spec
     try:
@@ -121,8 +136,16 @@ def _bearing_from_dict(name: str, d: Mapping, extra_materials: Mapping | None = 
     for key in required:
         if key not in d:
             raise InputError(f"{key}: missing")
-    d["free_contact_angle"] = math.radians(check_finite("free_contact_angle", d.get("free_contact_angle", 0.0)))
+    if "free_contact_angle_deg" in d:
+        if "free_contact_angle" in d:
+            raise InputError("free_contact_angle: given both in radians (free_contact_angle) and in degrees "
+                             "(free_contact_angle_deg); give one")
+        d["free_contact_angle"] = free_contact_angle_from_degrees(d.pop("free_contact_angle_deg"))
     d.setdefault("name", name)
+    if d.get("lubricant") is not None and d["lubricant"] not in lubricants:
+        raise InputError(f"lubricant: unknown lubricant {d['lubricant']!r} (catalogue: {', '.join(lubricants)})")
+    if d.get("traction") is not None:
+        get_traction_model(d["traction"])
     if dimensions:
         return BallBearing.from_dimensions(material=mat, **d)
     return BallBearing(material=mat, **d)
@@ -212,13 +235,14 @@ def _bearing_from_mapping(d: Mapping, name, source: str, default_name: str) -> B
     return _bearing_from_dict(str(d.get("name", default_name)), d)
 
 
-def load_lubricant(spec=None, name: str | None = None) -> Lubricant:
-    """A Lubricant from a catalogue name (default: the DEM papers'), a JSON
-    file path or a dict: one lubricant's fields (:class:`~.lubricants.Lubricant`),
-    or a catalogue-shaped ``{"lubricants": {...}}`` whose only entry, or the
-    one named by ``name`` or after ``#``, is used."""
+def load_lubricant(spec=None, name: str | None = None, bearing=None) -> Lubricant:
+    """A Lubricant from a catalogue name, a JSON file path or a dict: one
+    lubricant's fields (:class:`~.lubricants.Lubricant`), or a
+    catalogue-shaped ``{"lubricants": {...}}`` whose only entry, or the one
+    named by ``name`` or after ``#``, is used. None: the default lubricant of
+    ``bearing`` (:func:`default_lubricant`)."""
     if spec is None:
-        return default_lubricant()
+        return default_lubricant(bearing)
     if isinstance(spec, Lubricant):
         return spec
     if isinstance(spec, Mapping):
@@ -241,6 +265,12 @@ def load_lubricant(spec=None, name: str | None = None) -> Lubricant:
     return _lubricant_from_dict(str(d.pop("name", default_name)), d)
 
 
-def default_lubricant() -> Lubricant:
-    """The DEM papers' lubricant (docs/theory/lubrication.md#film-thickness)."""
-    return lubricants["guessasma2018"]
+def default_lubricant(bearing=None) -> Lubricant:
+    """The lubricant ``bearing`` names (its ``lubricant``, a catalogue name),
+    else the DEM papers' (``guessasma2018``, docs/theory/lubrication.md#film-thickness)."""
+    name = getattr(bearing, "lubricant", None) or PAPERS_LUBRICANT
+    try:
+        return lubricants[name]
+    except KeyError:
+        raise InputError(f"lubricant: bearing {bearing.name} names the unknown lubricant {name!r} "
+                         f"(catalogue: {', '.join(lubricants)})") from None

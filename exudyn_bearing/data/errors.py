@@ -12,7 +12,13 @@ import numbers
 import numpy as np
 
 __all__ = ["InputError", "check_number", "check_finite", "check_positive", "check_nonnegative", "check_integer",
-           "check_bool", "check_text", "check_keys"]
+           "check_bool", "check_text", "check_keys", "check_plausible", "check_temperature", "check_temperatures",
+           "LENGTH_MISTAKES", "KELVIN"]
+
+#: 0 degC in kelvin.
+KELVIN = 273.15
+#: Lengths typed in mm, cm or um where metres belong: (value -> metres, unit typed).
+LENGTH_MISTAKES = ((1e-3, "mm"), (1e-2, "cm"), (1e-6, "um"))
 
 
 class InputError(ValueError):
@@ -93,3 +99,49 @@ def check_keys(what: str, given, valid) -> None:
     unknown = sorted(set(given) - set(valid))
     if unknown:
         raise InputError(f"{unknown[0]}: unknown {what} (valid: {', '.join(sorted(valid))})")
+
+
+def check_plausible(name: str, value, lo: float, hi: float, unit: str, rule: str, mistakes=()) -> float:
+    """``value`` as a float if it lies in the plausible range ``[lo, hi]``
+    (in ``unit``), else InputError naming ``name``. ``mistakes``: pairs
+    (factor or function, unit typed) of likely unit mistakes; the first that
+    brings the value into the range is named in the message after ``rule``,
+    e.g. ``"ball_diameter: 12.7 m is not plausible for a ball bearing (2e-4 to
+    0.2 m); lengths are in metres: 12.7 mm is 0.0127 m"``."""
+    v = check_finite(name, value)
+    if lo <= v <= hi:
+        return v
+    for convert, typed in mistakes:
+        w = convert(v) if callable(convert) else v * convert
+        if lo <= w <= hi:
+            raise InputError(f"{name}: {v:g} {unit} is not plausible ({lo:g} to {hi:g} {unit}); {rule}: "
+                             f"{v:g} {typed} is {w:.6g} {unit}")
+    raise InputError(f"{name}: {v:g} {unit} is not plausible ({lo:g} to {hi:g} {unit}); {rule}")
+
+
+#: Temperatures accepted [K]: -123 degC to 527 degC. The thermal expansion of
+#: the catalogue materials is a room-temperature value, and a value below
+#: 150 K is far more likely a temperature typed in degrees Celsius.
+TEMPERATURE_RANGE = (150.0, 800.0)
+
+
+def check_temperature(name: str, value) -> float:
+    """An absolute temperature [K] in :data:`TEMPERATURE_RANGE`, else InputError
+    naming ``name`` (``"temperatures are in kelvin: 20 degC is 293.15 K"``)."""
+    lo, hi = TEMPERATURE_RANGE
+    return check_plausible(name, value, lo, hi, "K", "temperatures are in kelvin",
+                           ((lambda t: t + KELVIN, "degC"),))
+
+
+def check_temperatures(temperatures) -> dict | None:
+    """The part temperatures ``{"inner", "outer", "ball"}`` [K] of a scenario or
+    a quasi-static solve, each checked by :func:`check_temperature` (None
+    passes through)."""
+    if temperatures is None:
+        return None
+    if not isinstance(temperatures, dict):
+        raise InputError(f"temperatures: expected a dict of inner, outer, ball [K], got {temperatures!r}")
+    for k in temperatures:
+        if k not in ("inner", "outer", "ball"):
+            raise InputError(f"temperatures: unknown part {k!r} (valid: inner, outer, ball)")
+    return {k: check_temperature(f"temperatures.{k}", v) for k, v in temperatures.items()}

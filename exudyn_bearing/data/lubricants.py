@@ -4,9 +4,23 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from .errors import InputError, check_finite, check_nonnegative, check_positive, check_text
+from .errors import (LENGTH_MISTAKES, InputError, check_finite, check_nonnegative, check_plausible, check_positive,
+                     check_text)
 
-__all__ = ["Lubricant"]
+__all__ = ["Lubricant", "PLAUSIBLE"]
+
+#: Plausible ranges of a lubricant's values and the unit mistakes they catch:
+#: (field, low, high, unit, rule, mistakes). Viscosities of bearing oils at
+#: operating temperature: about 1 mPa s (jet oils hot) to 1 Pa s (cold gear
+#: oils); pressure-viscosity coefficients 0.5e-8 to 4e-8 1/Pa; roughness up to
+#: a few um rms.
+PLAUSIBLE = (
+    ("viscosity", 1e-5, 10.0, "Pa s", "viscosity is in Pa s", ((1e-3, "mPa s (cP)"),)),
+    ("pressure_viscosity", 0.0, 1e-7, "1/Pa", "the pressure-viscosity coefficient is in 1/Pa (m^2/N)",
+     ((1e-9, "1/GPa"), (1e-6, "1/MPa"))),
+    ("roughness_race", 0.0, 1e-5, "m", "roughness is in metres", LENGTH_MISTAKES),
+    ("roughness_ball", 0.0, 1e-5, "m", "roughness is in metres", LENGTH_MISTAKES),
+)
 
 
 @dataclass(frozen=True)
@@ -52,6 +66,8 @@ class Lubricant:
                            ("lambda_full_film", check_finite), ("mu_boundary", check_nonnegative),
                            ("mu_full_film", check_nonnegative)):
             values[key] = check(key, getattr(self, key))
+        for key, lo, hi, unit, rule, mistakes in PLAUSIBLE:
+            values[key] = check_plausible(key, values[key], lo, hi, unit, rule, mistakes)
         check_text("name", self.name)
         check_text("source", self.source)
         for key, v in values.items():  # plain floats from here on (numpy scalars, ints)

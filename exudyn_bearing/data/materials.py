@@ -3,9 +3,16 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .errors import InputError, check_finite, check_nonnegative, check_positive, check_text
+from .errors import InputError, check_finite, check_nonnegative, check_plausible, check_positive, check_text
 
-__all__ = ["Material"]
+__all__ = ["Material", "YOUNGS_MODULUS_RANGE", "DENSITY_RANGE"]
+
+#: Young's moduli accepted [Pa]: engineering polymers (about 1 GPa) to
+#: diamond (about 1.2e12 Pa); a value outside is a unit mistake (MPa, GPa).
+YOUNGS_MODULUS_RANGE = (1e9, 1.2e12)
+#: Densities accepted [kg/m^3]: polymers (about 900) to tungsten carbide
+#: (about 15,600), with margin; a value outside is a unit mistake (g/cm^3).
+DENSITY_RANGE = (500.0, 25000.0)
 
 
 @dataclass(frozen=True)
@@ -39,9 +46,13 @@ class Material:
     source: str = "docs/theory/geometry.md"
 
     def __post_init__(self):
-        values = {"youngs_modulus": check_positive("youngs_modulus", self.youngs_modulus),
+        e = check_positive("youngs_modulus", self.youngs_modulus)
+        rho = check_positive("density", self.density)
+        values = {"youngs_modulus": check_plausible("youngs_modulus", e, *YOUNGS_MODULUS_RANGE, "Pa",
+                                                    "Young's modulus is in Pa", ((1e6, "MPa"), (1e9, "GPa"))),
                   "poisson_ratio": check_finite("poisson_ratio", self.poisson_ratio),
-                  "density": check_positive("density", self.density),
+                  "density": check_plausible("density", rho, *DENSITY_RANGE, "kg/m^3", "density is in kg/m^3",
+                                             ((1e3, "g/cm^3"),)),
                   "hysteretic_damping": check_nonnegative("hysteretic_damping", self.hysteretic_damping)}
         nu = values["poisson_ratio"]
         if not -1.0 < nu < 0.5:

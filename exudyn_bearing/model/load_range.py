@@ -17,12 +17,15 @@ import math
 
 import numpy as np
 
+import warnings
+
 from ..data import BallBearing, InputError
 from ..physics import hertz
 from ..physics.geometry import raceway_radii
 from ..physics.load_distribution import StaticSolution, static_equilibrium
 
-__all__ = ["MAX_CONTACT_PRESSURE", "contact_pressures", "check_load_range"]
+__all__ = ["MAX_CONTACT_PRESSURE", "contact_pressures", "check_load_range", "pressure_excess", "check_pressures",
+           "check_run_pressures", "ContactPressureWarning", "SUSTAINED_FRACTION"]
 
 #: Largest accepted Hertz pressure [Pa] (ISO 76: 4200 MPa, the contact stress of
 #: the static load rating of ball bearings other than self-aligning).
@@ -98,3 +101,69 @@ def _pressure_at(b: BallBearing, q: float, alpha: float, hertz_method: str) -> f
                                inner)
         worst = max(worst, float(hertz.hertz_contact(rx, ry, em, load=q, method=hertz_method).p_max))
     return worst
+
+
+class ContactPressureWarning(UserWarning):
+    """A dynamic run reached contact pressures above the elastic limit for a
+    short time (impacts, a transient); sustained excess is an error."""
+
+
+#: Share of a run's samples above the limit (or its last sample) from which
+#: :func:`check_run_pressures` refuses the run instead of warning.
+SUSTAINED_FRACTION = 0.1
+
+
+def pressure_excess(p_inner, p_outer, limit: float = MAX_CONTACT_PRESSURE):
+    """(p_max [Pa], race, ball) of the highest contact pressure when it exceeds
+    ``limit``, else None. ``p_inner``, ``p_outer``: p_max per ball (or any
+    array whose last axis is the ball)."""
+    p_i = np.nan_to_num(np.asarray(p_inner, float), nan=0.0)
+    p_o = np.nan_to_num(np.asarray(p_outer, float), nan=0.0)
+    worst_i, worst_o = float(np.max(p_i, initial=0.0)), float(np.max(p_o, initial=0.0))
+    worst = max(worst_i, worst_o)
+    if worst <= limit:
+        return None
+    race, p = ("inner", p_i) if worst_i >= worst_o else ("outer", p_o)
+    ball = int(np.unravel_index(int(np.argmax(p)), p.shape)[-1])
+    return worst, race, ball
+
+
+def _limit_text(worst, race, ball, limit):
+    return (f"a contact pressure of {worst / 1e9:.3g} GPa at the {race} race of ball {ball}, above "
+            f"{limit / 1e9:g} GPa, the limit of the elastic contact model (ISO 76 static load rating)")
+
+
+def check_pressures(p_inner, p_outer, name: str, what: str, limit: float = MAX_CONTACT_PRESSURE) -> None:
+    """InputError starting with ``name`` (the load or speed to change) when a
+    contact pressure of a solution (p_max per ball at the inner and outer
+    race, e.g. a quasi-static solution's) exceeds ``limit``; ``what``
+    describes the case ("F_r = 1e5 N at 500 rad/s")."""
+    excess = pressure_excess(p_inner, p_outer, limit)
+    if excess is not None:
+        raise InputError(f"{name}: {what} gives {_limit_text(*excess, limit)}: reduce the load or the speed")
+
+
+def check_run_pressures(p_max, t, name: str = "omega", limit: float = MAX_CONTACT_PRESSURE) -> None:
+    """The contact pressures a dynamic run sampled, ``p_max`` (samples, balls,
+    2 races: inner, outer) at times ``t``: InputError starting with ``name``
+    when the limit is exceeded at the last sample or in at least
+    :data:`SUSTAINED_FRACTION` of the samples (loads the speed brings:
+    centrifugal force, ring growth), a :class:`ContactPressureWarning` when
+    it is exceeded only briefly (impacts, transients); both name the contact,
+    the time and the limit."""
+    p = np.asarray(p_max, float)
+    if p.size == 0:
+        return
+    over = np.nanmax(p.reshape(p.shape[0], -1), axis=1) > limit
+    if not over.any():
+        return
+    k = int(np.nanargmax(np.nanmax(p.reshape(p.shape[0], -1), axis=1)))
+    worst, race, ball = pressure_excess(p[k, :, 0], p[k, :, 1], limit)
+    share = float(over.mean())
+    text = (f"the run reached {_limit_text(worst, race, ball, limit)} at t = {float(t[k]):.6g} s "
+            f"({share:.0%} of the samples above it)")
+    if over[-1] or share >= SUSTAINED_FRACTION:
+        raise InputError(f"{name}: {text}; the loads this speed brings (centrifugal force, ring growth) or the "
+                         "applied loads leave the elastic contact model: reduce the speed or the load")
+    warnings.warn(f"{name}: {text}, briefly (an impact or a transient); the contact model is elastic",
+                  ContactPressureWarning, stacklevel=3)

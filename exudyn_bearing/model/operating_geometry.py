@@ -24,6 +24,7 @@ import math
 from dataclasses import dataclass
 
 from ..data import BallBearing, InputError
+from ..data.errors import check_temperatures
 from ..physics import ring_growth as rg
 
 __all__ = ["OperatingGeometry", "operating_geometry", "REFERENCE_TEMPERATURE"]
@@ -63,13 +64,6 @@ class OperatingGeometry:
         return 2.0 * (self.groove_distance - math.hypot(self.rho_i - self.rho_o, self.z_i - self.z_o))
 
 
-def _temperature(name, value):
-    t = float(value)
-    if not math.isfinite(t) or t <= 0.0:
-        raise InputError(f"{name}: must be a finite absolute temperature > 0 K, got {value!r}")
-    return t
-
-
 def operating_geometry(bearing: BallBearing, omega_inner=0.0, omega_outer=0.0, ring_growth=True, fit=0.0,
                        temperatures=None) -> OperatingGeometry:
     """Grooves and ball at speed, fit and temperature (module docstring).
@@ -95,10 +89,7 @@ def operating_geometry(bearing: BallBearing, omega_inner=0.0, omega_outer=0.0, r
     if not math.isfinite(fit) or fit < 0.0:
         raise InputError(f"fit: the diametral interference must be >= 0 m, got {fit!r}")
     temps = {"inner": REFERENCE_TEMPERATURE, "outer": REFERENCE_TEMPERATURE, "ball": REFERENCE_TEMPERATURE}
-    for k, v in (temperatures or {}).items():
-        if k not in temps:
-            raise InputError(f"temperatures: unknown part {k!r} (valid: inner, outer, ball)")
-        temps[k] = _temperature(f"temperatures.{k}", v)
+    temps.update(check_temperatures(temperatures) or {})
     bore = 0.5 * b.bore if b.bore is not None else b.inner_race_radius - 0.65 * b.ball_radius
     outside = 0.5 * b.outer_diameter if b.outer_diameter is not None else b.outer_race_radius + 0.65 * b.ball_radius
     if not 0.0 < bore < b.inner_race_radius:

@@ -13,8 +13,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..data import InputError, get_traction_model
-from ..data.errors import check_bool, check_number
-from ..data.defects import as_defect
+from ..data.errors import check_bool, check_keys, check_number, check_temperatures
+from ..data.defects import Defect, as_defect
 from ..data.traction import DEFAULT_REGULARIZING_SRR
 from ..physics.contact_slip import DEFAULT_N_ACROSS, DEFAULT_N_STRIPS
 from ..physics.ehl import film_model_code
@@ -102,10 +102,13 @@ class Scenario:
         normal (:func:`exudyn_bearing.physics.contact_slip._contact_traction`;
         the quasi-static solver's relation). ``friction``,
         ``tangential`` and ``mu_dry`` then do not apply.
-    traction : str
+    traction : str or None
         Traction model of the ellipse level, a name of
-        ``exudyn_bearing.data.traction_models`` (default ``"lambda_dem"``:
-        the DEM papers' mu(Lambda)).
+        ``exudyn_bearing.data.traction_models``; None (default): the
+        bearing's (:func:`exudyn_bearing.data.default_traction`: the ACBB-120's
+        EHL model of its oil, the DEM papers' mu(Lambda) ``"lambda_dem"`` for
+        the others), filled in by :func:`exudyn_bearing.simulate` and the
+        element.
     n_strips, n_across : int
         Strips along the major axis and points across each strip of the
         ellipse integration (accuracy against cost: validation/work_precision.py).
@@ -119,6 +122,7 @@ class Scenario:
         centrifugal growth of a rotating ring (rotating annular disc,
         :mod:`exudyn_bearing.physics.ring_growth`, the quasi-static solver's
         relation) moves its groove outward in proportion to omega^2.
+        Default True, as in the quasi-static solver (README, "Defaults").
     temperatures : dict or None
         ``{"inner", "outer", "ball"}`` temperatures [K] for the uniform
         thermal growth of rings and balls (from 293.15 K).
@@ -134,7 +138,7 @@ class Scenario:
         Time step [s] (default 1 us, the DEM papers' step).
     sample_dt : float
         Output interval [s].
-    defects : tuple of Defect (or dicts of their fields)
+    defects : tuple of Defect (or dicts of their fields), or one of them
         Localized defects (spalls) on the races or balls
         (:class:`exudyn_bearing.data.Defect`, at most ``MAX_DEFECTS``);
         empty (default): a healthy bearing, and the kernels skip the defect
@@ -171,11 +175,11 @@ class Scenario:
     guide_clearance: float = 50e-6
     ring_mass: float | None = None
     traction_level: str = "point"
-    traction: str = "lambda_dem"
+    traction: str | None = None
     n_strips: int = DEFAULT_N_STRIPS
     n_across: int = DEFAULT_N_ACROSS
     traction_regularizing_srr: float = DEFAULT_REGULARIZING_SRR
-    ring_growth: bool = False
+    ring_growth: bool = True
     temperatures: dict | None = None
     initial: str = "analytic"
     control: str = "auto"
@@ -208,13 +212,14 @@ class Scenario:
         for name in ("t_end", "dt", "sample_dt", "regularizing_speed", "guide_clearance"):
             if getattr(self, name) <= 0:
                 raise InputError(f"{name}: must be > 0, got {getattr(self, name)}")
+        if self.dt > 1e-4:  # first: a huge dt is the mistake, not the sample interval below it
+            raise InputError(f"dt: {self.dt:g} s is far above any stable step of a Hertz contact (at most 1e-4 s; "
+                             "typical 1e-6 to 8e-6 s)")
         if self.sample_dt < self.dt:
             raise InputError(f"sample_dt: must be >= dt ({self.dt}), got {self.sample_dt}")
         if self.t_end < self.sample_dt:
             raise InputError(f"t_end: must be >= sample_dt ({self.sample_dt:g} s) so that the run has a sample, "
                              f"got {self.t_end:g}")
-        if self.dt > 1e-4:
-            raise InputError(f"dt: {self.dt} s is far above any stable step of a Hertz contact")
         if not 2.0 / 3.0 - 1e-12 <= self.tangential_stiffness_ratio <= 1.0:
             raise InputError("tangential_stiffness_ratio: must lie in [2/3, 1] (docs/theory/tangential.md), "
                              f"got {self.tangential_stiffness_ratio}")
@@ -264,14 +269,7 @@ class Scenario:
             raise InputError("contact_law: the peer power law has no Hertz ellipse; use traction_level='point'")
         if not isinstance(self.ring_growth, (bool, np.bool_)):
             raise InputError(f"ring_growth: must be True or False, got {self.ring_growth!r}")
-        if self.temperatures is not None:
-            if not isinstance(self.temperatures, dict):
-                raise InputError(f"temperatures: expected a dict of inner, outer, ball [K], got {self.temperatures!r}")
-            for k, v in self.temperatures.items():
-                if k not in ("inner", "outer", "ball"):
-                    raise InputError(f"temperatures: unknown part {k!r} (valid: inner, outer, ball)")
-                if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v) or v <= 0:
-                    raise InputError(f"temperatures.{k}: must be an absolute temperature > 0 K, got {v!r}")
+        object.__setattr__(self, "temperatures", check_temperatures(self.temperatures))
         try:
             method_code(self.hertz)
         except ValueError as exc:
@@ -284,9 +282,13 @@ class Scenario:
             raise InputError(f"ring_mass: must be > 0, got {self.ring_mass}")
         if self.Pd is not None and not math.isfinite(self.Pd):
             raise InputError(f"Pd: must be finite, got {self.Pd}")
-        if isinstance(self.defects, (str, bytes, dict)) or not hasattr(self.defects, "__iter__"):
-            raise InputError(f"defects: expected a sequence of Defect objects or dicts, got {self.defects!r}")
-        defects = tuple(as_defect(d) for d in self.defects)
+        defects = self.defects
+        if isinstance(defects, (Defect, dict)):  # one defect: a sequence of one
+            defects = (defects,)
+        if isinstance(defects, (str, bytes)) or not hasattr(defects, "__iter__"):
+            raise InputError(f"defects: expected a Defect, a dict of its fields or a sequence of them, got "
+                             f"{defects!r}")
+        defects = tuple(as_defect(d) for d in defects)
         if len(defects) > MAX_DEFECTS:
             raise InputError(f"defects: at most {MAX_DEFECTS} defects per scene, got {len(defects)}")
         object.__setattr__(self, "defects", defects)
@@ -319,6 +321,17 @@ class Scenario:
 
     def replace(self, **changes) -> "Scenario":
         return dataclasses.replace(self, **changes)
+
+    @classmethod
+    def from_dict(cls, d) -> "Scenario":
+        """A Scenario from a dict of its fields (sweep specs, JSON); an
+        unknown key raises InputError naming it, with the valid ones."""
+        if isinstance(d, Scenario):
+            return d
+        if not isinstance(d, dict):
+            raise InputError(f"scenario: expected a dict of Scenario fields, got {d!r}")
+        check_keys("scenario field", d, [f.name for f in dataclasses.fields(cls)])
+        return cls(**d)
 
     @classmethod
     def papers_protocol(cls, omega=500.0, t_ramp_up=0.02, t_steady=0.06, t_ramp_down=0.02, **kw):

@@ -187,7 +187,7 @@ def stable_step(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant |
     tangential spring sets no limit.
     """
     b = bearing if scenario.Pd is None else bearing.with_clearance(scenario.Pd)
-    lub = default_lubricant() if lubricant is None else lubricant
+    lub = default_lubricant(b) if lubricant is None else lubricant
     mb = b.ball_mass
     wc = float(kinematics.cage_speed(scenario.omega, 0.0, b.ball_radius, b.pitch_radius, b.free_contact_angle))
     q_cf = float(kinematics.centrifugal_force(mb, b.pitch_radius, wc))

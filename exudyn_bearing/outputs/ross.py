@@ -39,6 +39,7 @@ from __future__ import annotations
 import contextlib
 import io
 import math
+import os
 import warnings
 
 import numpy as np
@@ -46,17 +47,44 @@ import numpy as np
 from ..data import InputError
 from ..model.coefficients import BearingCoefficients
 
-__all__ = ["to_ross_bearing", "lateral_coefficients", "COUPLING_WARNING_RATIO"]
+__all__ = ["to_ross_bearing", "lateral_coefficients", "import_ross", "COUPLING_WARNING_RATIO"]
 
 #: Dropped couplings above this fraction of the geometric mean of the two
 #: direct terms trigger a warning.
 COUPLING_WARNING_RATIO = 0.05
 
 
-def _import_ross():
+@contextlib.contextmanager
+def _silenced():
+    """Python's and the process's stdout and stderr, and warnings, silenced
+    for the block (ROSS's import prints notes about its optional REFPROP
+    fluid-property library, some of them from compiled code)."""
+    with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(io.StringIO()), \
+            warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        saved = []
+        try:
+            for fd in (1, 2):
+                try:
+                    saved.append((fd, os.dup(fd)))
+                except OSError:
+                    continue
+            null = os.open(os.devnull, os.O_WRONLY)
+            for fd, _ in saved:
+                os.dup2(null, fd)
+            os.close(null)
+            yield
+        finally:
+            for fd, dup in saved:
+                os.dup2(dup, fd)
+                os.close(dup)
+
+
+def import_ross():
+    """The ``ross`` module, imported without its notes on stdout and stderr;
+    ImportError naming the extra to install."""
     try:
-        # ROSS's import prints a note about an optional fluid-property library
-        with contextlib.redirect_stdout(io.StringIO()):
+        with _silenced():
             import ross
     except ImportError as exc:
         raise ImportError("to_ross_bearing needs ROSS (ross-rotordynamics): pip install -e \".[ross]\" "
@@ -152,7 +180,7 @@ def to_ross_bearing(coefficients: BearingCoefficients, n: int, load_angle: float
     for four or more speeds, interp1d for two or three); outside the speed
     range it extrapolates, so cover the rotor's speed range.
     """
-    ross = _import_ross()
+    ross = import_ross()
     if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 0:
         raise InputError(f"n: expected a node number >= 0, got {n!r}")
     lat = lateral_coefficients(coefficients, load_angle)

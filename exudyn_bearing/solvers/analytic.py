@@ -117,8 +117,8 @@ def lubrication_map(solution: StaticSolution, omega_inner: float, omega_outer: f
     2 full film, -1 no contact), mu [-]. Unloaded contacts have NaN film
     values.
     """
-    lub = default_lubricant() if lubricant is None else lubricant
     b = solution.bearing
+    lub = default_lubricant(b) if lubricant is None else lubricant
     wi = _check_speed("omega", omega_inner)
     wo = _check_speed("omega_outer", omega_outer)
     film_code = ehl.film_model_code(film)

@@ -83,13 +83,14 @@ original.
 """
 from __future__ import annotations
 
+import inspect
 import math
 import warnings
 
 import numpy as np
 
 from ..._jit import announce_compilation
-from ...data import InputError, Lubricant, default_lubricant, load_bearing
+from ...data import InputError, Lubricant, default_traction, load_bearing, load_lubricant
 from ...data.errors import check_finite, check_positive
 from ...model import layout as L
 from ...model.contact import forces
@@ -120,15 +121,57 @@ OPTION_NAMES = {"Fr": "initialLoad", "Fa": "initialLoad", "omega": "initialOmega
 
 def _initial_load(load):
     """(Fr, Fa) of ``initialLoad``: a pair (Fr, Fa) or a number Fr (radial only)."""
-    if isinstance(load, (int, float, np.integer, np.floating)) and not isinstance(load, bool):
+    if isinstance(load, (str, bytes)) or not hasattr(load, "__len__"):
         return check_finite("initialLoad", load), 0.0
-    try:
-        pair = [float(x) for x in load]
-    except (TypeError, ValueError):
-        raise InputError(f"initialLoad: expected (Fr, Fa) [N] or a radial load Fr, got {load!r}") from None
-    if len(pair) != 2:
+    if len(load) != 2:
         raise InputError(f"initialLoad: expected (Fr, Fa) [N] or a radial load Fr, got {load!r}")
-    return check_finite("initialLoad", pair[0]), check_finite("initialLoad", pair[1])
+    return check_finite("initialLoad", load[0]), check_finite("initialLoad", load[1])
+
+
+def rename_option_error(exc: InputError) -> InputError:
+    """The InputError of a Scenario field with the element's option name (``OPTION_NAMES``)."""
+    name, _, rest = str(exc).partition(":")
+    head, dot, tail = name.partition(".")
+    return InputError(f"{OPTION_NAMES.get(head, head)}{dot}{tail}:{rest}")
+
+
+def _scenario_from_options(o: dict, bearing) -> Scenario:
+    """The Scenario of the element's options ``o`` (all of them, by name) on ``bearing``: model switches are
+    validated there, their messages renamed to the options; loads come from the model; the traction model
+    defaults to the bearing's."""
+    fr, fa = _initial_load(o["initialLoad"])
+    step = check_positive("stepSize", o["stepSize"])
+    sample = check_positive("sampleInterval", o["sampleInterval"])
+    try:
+        return Scenario(Fr=fr, Fa=fa, omega=check_finite("initialOmega", o["initialOmega"]), cage=o["cage"],
+                        lubrication=o["lubrication"], friction=o["friction"], tangential=o["tangential"],
+                        hertz=o["hertzModel"], film=o["film"], guide_clearance=o["guideClearance"], mu_dry=o["muDry"],
+                        regularizing_speed=o["regularizingSpeed"],
+                        tangential_stiffness_ratio=o["tangentialStiffnessRatio"], dt=step,
+                        sample_dt=max(sample, step), initial=o["initial"], contact_law=o["contactLaw"],
+                        power_law=o["powerLaw"], traction_level=o["tractionLevel"],
+                        traction=o["traction"] if o["traction"] is not None else default_traction(bearing),
+                        n_strips=o["nStrips"], n_across=o["nAcross"],
+                        traction_regularizing_srr=o["tractionRegularizingSrr"], ring_growth=o["ringGrowth"],
+                        temperatures=o["temperatures"], control=o["control"], defects=o["defects"],
+                        signal_dt=o["signalInterval"],
+                        t_end=max(0.05, sample, step))  # the run's end is the solver's
+    except InputError as exc:
+        raise rename_option_error(exc) from None
+
+
+def element_scenario(bearing=None, **options) -> Scenario:
+    """The Scenario the element builds from ``options`` (those of
+    :class:`BallBearingElement`, defaults filled in), validated as the element
+    validates them; an unknown option raises InputError naming it."""
+    sig = inspect.signature(BallBearingElement.__init__)
+    names = [n for n in sig.parameters if n not in ("self", "mbs", "bearing", "markerInnerRing", "markerOuterRing")]
+    unknown = sorted(set(options) - set(names))
+    if unknown:
+        raise InputError(f"{unknown[0]}: unknown option of the bearing element (valid: {', '.join(names)})")
+    o = {n: sig.parameters[n].default for n in names}
+    o.update(options)
+    return _scenario_from_options(o, None if bearing is None else load_bearing(bearing))
 
 
 class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMixin):
@@ -165,39 +208,20 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
                  tangentialStiffnessRatio=2.0 / 3.0, stepSize=1e-6, innerRingSpeed=None, outerRingSpeed=None,
                  initialOmega=0.0, initialLoad=(0.0, 0.0), initial="analytic", sampleInterval=1e-4,
                  mode="bodies", subSteps=1, contactLaw="hertz", powerLaw=(0.0, 1.5, 0.0), tractionLevel="point",
-                 traction="lambda_dem", nStrips=16, nAcross=1, tractionRegularizingSrr=0.01, ringGrowth=False,
+                 traction=None, nStrips=16, nAcross=1, tractionRegularizingSrr=0.01, ringGrowth=True,
                  temperatures=None, control="auto", initialState=None, defects=(),
                  signalInterval=None, show=False):
         announce_compilation(forces, EK.fast_step if mode == "fast" else EK.element_rhs)
         self.mbs = mbs
         self.bearing = b = load_bearing(bearing)
-        self.lubricant = default_lubricant() if lubricant is None else lubricant
+        self.lubricant = load_lubricant(lubricant, bearing=b)   # None: the bearing's
         for name, f in (("innerRingSpeed", innerRingSpeed), ("outerRingSpeed", outerRingSpeed)):
             if f is not None and not callable(f):
                 raise InputError(f"{name}: must be a function of time t [s] returning rad/s")
         self.speed = (innerRingSpeed, outerRingSpeed)
         self._initial_state = initialState
-        fr, fa = _initial_load(initialLoad)
-        stepSize = check_positive("stepSize", stepSize)
+        self.scenario = _scenario_from_options(dict(locals()), b)
         sampleInterval = check_positive("sampleInterval", sampleInterval)
-        # model switches go through Scenario (validated there, its messages renamed to the options here);
-        # loads come from the model
-        try:
-            self.scenario = Scenario(Fr=fr, Fa=fa, omega=check_finite("initialOmega", initialOmega), cage=cage,
-                                     lubrication=lubrication, friction=friction, tangential=tangential,
-                                     hertz=hertzModel, film=film, guide_clearance=guideClearance, mu_dry=muDry,
-                                     regularizing_speed=regularizingSpeed,
-                                     tangential_stiffness_ratio=tangentialStiffnessRatio, dt=stepSize,
-                                     sample_dt=max(sampleInterval, stepSize), initial=initial,
-                                     contact_law=contactLaw, power_law=powerLaw, traction_level=tractionLevel,
-                                     traction=traction, n_strips=nStrips, n_across=nAcross,
-                                     traction_regularizing_srr=tractionRegularizingSrr, ring_growth=ringGrowth,
-                                     temperatures=temperatures, control=control,
-                                     defects=tuple(defects), signal_dt=signalInterval,
-                                     t_end=max(0.05, sampleInterval, stepSize))  # the run's end is the solver's
-        except InputError as exc:
-            name, _, rest = str(exc).partition(":")
-            raise InputError(f"{OPTION_NAMES.get(name, name)}:{rest}") from None
         if cage and not b.has_cage:
             raise InputError(f"cage: bearing {b.name} has no cage balls; use cage=False")
         self.params = scene_parameters(b, self.scenario, self.lubricant)

@@ -129,7 +129,8 @@ def _solve_ring(prob, free, held, u_start, bearing, tol, cold):
     free = np.asarray(free, bool)
     u = np.where(free, u_start, held).astype(float)
     if cold:
-        u = _start(prob, np.where(free, 0.0, held).astype(float), free, bearing)
+        # the 1-D starts move x and y (or both tilts) together: held DOFs keep their values
+        u = np.where(free, _start(prob, np.where(free, 0.0, held).astype(float), free, bearing), held)
     if not free.any():
         r, balls = prob.residual(u)
         return u, r, balls

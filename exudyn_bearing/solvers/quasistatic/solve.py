@@ -37,12 +37,12 @@ import time
 
 import numpy as np
 
-from ...data import (MAX_FREE_CONTACT_ANGLE, BallBearing, InputError, Lubricant, default_lubricant,
-                     get_traction_model, load_bearing, lubricants)
+from ...data import (MAX_FREE_CONTACT_ANGLE, BallBearing, InputError, Lubricant, get_traction_model, load_bearing,
+                     load_lubricant)
+from ...data.errors import check_bool, check_finite, check_integer, check_nonnegative, check_temperatures
 from ...physics import ehl
 from ...physics import hertz as _hz
 from ...physics import kinematics as _kin
-from ...data.errors import check_finite
 from ...data.traction import DEFAULT_REGULARIZING_SRR, regularized
 from ...physics.contact_slip import DEFAULT_N_ACROSS, DEFAULT_N_STRIPS, deformed_contact_radius
 from ...physics.geometry import _raceway_radii_cos
@@ -58,16 +58,43 @@ from .stiffness import stiffness_matrix
 __all__ = ["solve_quasistatic", "beta_scan"]
 
 
-def _number(name, value, nonneg=False):
-    try:
-        v = float(value)
-    except (TypeError, ValueError):
-        raise InputError(f"{name}: expected a number, got {value!r}") from None
-    if not math.isfinite(v):
-        raise InputError(f"{name}: must be finite, got {v}")
-    if nonneg and v < 0.0:
-        raise InputError(f"{name}: must be >= 0, got {v}")
-    return v
+#: Largest held displacement of the inner ring (``fixed``), as a fraction of the ball radius: the
+#: contacts of a ring moved further leave the elastic range long before (overlaps of 1 % R_b).
+MAX_HELD_DISPLACEMENT = 0.1
+
+
+def _check_fixed(fixed, b):
+    """``fixed`` as a dict DOF name -> float, each value finite and within
+    ``MAX_HELD_DISPLACEMENT`` R_b (tilts: times the groove radius), else InputError naming ``fixed.DOF``."""
+    if fixed is None:
+        return {}
+    if not isinstance(fixed, dict):
+        raise InputError(f"fixed: expected a dict of DOF name -> value, got {fixed!r}")
+    out = {}
+    limit = MAX_HELD_DISPLACEMENT * b.ball_radius
+    arm = math.hypot(*b.inner_groove_center)
+    for k, v in fixed.items():
+        if k not in DOF_NAMES:
+            raise InputError(f"fixed: unknown DOF {k!r} (valid: {', '.join(DOF_NAMES)})")
+        v = check_finite(f"fixed.{k}", v)
+        tilt = k.startswith("tilt")
+        if abs(v) * (arm if tilt else 1.0) > limit:
+            bound = f"{limit / arm:.3g} rad" if tilt else f"{limit:.3g} m"
+            raise InputError(f"fixed.{k}: {v:g} {'rad' if tilt else 'm'} moves the inner ring by more than "
+                             f"{MAX_HELD_DISPLACEMENT:g} R_b (|{k}| <= {bound}); the contacts would leave the elastic "
+                             + ("range (angles are in radians)" if tilt else "range (lengths are in metres: "
+                                f"{v:g} um is {v * 1e-6:g} m)"))
+        out[k] = v
+    return out
+
+
+def _interference_cause(b, w_i, w_o, ring_growth, fit, temperatures, limit):
+    """The input that alone closes the clearance beyond ``limit`` (fit, temperatures), else the speed."""
+    if fit > 0.0 and operating_geometry(b, 0.0, 0.0, False, fit, None).operating_clearance < limit:
+        return "fit"
+    if temperatures and operating_geometry(b, 0.0, 0.0, False, 0.0, temperatures).operating_clearance < limit:
+        return "temperatures"
+    return "omega" if w_i != 0.0 or w_o == 0.0 else "omega_outer"
 
 
 def _contact_state(geom, balls, e_prime, method):
@@ -90,7 +117,7 @@ def _contact_state(geom, balls, e_prime, method):
 
 
 def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=0.0, omega_outer=0.0,
-                      control="auto", traction="lambda_dem", lubricant: Lubricant | str | None = None,
+                      control="auto", traction=None, lubricant: Lubricant | str | None = None,
                       ring_growth=True, fit=0.0, temperatures=None, fixed=None, hertz_method="exact",
                       phase=0.0, n_strips=DEFAULT_N_STRIPS, n_across=DEFAULT_N_ACROSS,
                       traction_regularizing_srr=DEFAULT_REGULARIZING_SRR, shoulder_angle=MAX_FREE_CONTACT_ANGLE,
@@ -111,10 +138,12 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
     control : {"auto", "outer", "inner", "min-energy"}
         Ball kinematics: race control (Jones; ``auto`` by his spin-moment
         criterion) or minimum frictional dissipation (Gupta).
-    traction : str or TractionModel
-        Traction model for slip, dissipation and the minimum energy.
+    traction : str or TractionModel, optional
+        Traction model for slip, dissipation and the minimum energy
+        (default: the bearing's, :func:`exudyn_bearing.data.default_traction`).
     lubricant : Lubricant or str, optional
-        For the film thicknesses (default: the DEM papers' oil).
+        For the film thicknesses: a Lubricant, catalogue name, JSON file or
+        dict (default: the bearing's, :func:`exudyn_bearing.data.default_lubricant`).
     ring_growth : bool
         Centrifugal growth of the rotating rings (False: rigid rings).
     fit : float
@@ -161,36 +190,33 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
     """
     t0 = time.perf_counter()
     b: BallBearing = load_bearing(bearing)
-    loads = np.array([_number("Fr", Fr), _number("Fy", Fy), _number("Fa", Fa), _number("Mx", Mx),
-                      _number("My", My)])
-    w_i = _number("omega", omega)
-    w_o = _number("omega_outer", omega_outer)
+    # argument checks: one path for API and CLI (data.errors: no booleans or strings as numbers)
+    loads = np.array([check_finite(k, v) for k, v in (("Fr", Fr), ("Fy", Fy), ("Fa", Fa), ("Mx", Mx), ("My", My))])
+    w_i = check_finite("omega", omega)
+    w_o = check_finite("omega_outer", omega_outer)
     if control not in km.CONTROLS:
         raise InputError(f"control: must be one of {', '.join(km.CONTROLS)}, got {control!r}")
     srr = check_finite("traction_regularizing_srr", traction_regularizing_srr)
     if not 0.0 <= srr <= 1.0:
         raise InputError(f"traction_regularizing_srr: must lie in [0, 1], got {srr:g}")
-    model = regularized(get_traction_model(traction), srr)
-    if lubricant is None:
-        lub = default_lubricant()
-    elif isinstance(lubricant, Lubricant):
-        lub = lubricant
-    elif str(lubricant) in lubricants:
-        lub = lubricants[str(lubricant)]
-    else:
-        raise InputError(f"lubricant: unknown lubricant {lubricant!r} (catalogue: {', '.join(lubricants)})")
-    n_strips, n_across = int(n_strips), int(n_across)
+    # None: the bearing's traction model (catalogue), else the DEM papers'; Coulomb-type laws regularised
+    model = regularized(get_traction_model(traction, b), srr)
+    lub = load_lubricant(lubricant, bearing=b)
+    n_strips, n_across = check_integer("n_strips", n_strips), check_integer("n_across", n_across)
     if not 1 <= n_strips <= 4096:
         raise InputError(f"n_strips: must lie in [1, 4096], got {n_strips}")
     if not 1 <= n_across <= 64:
         raise InputError(f"n_across: must lie in [1, 64], got {n_across}")
     method = _hz.method_code(hertz_method)
-    phase = _number("phase", phase)
-    fixed = dict(fixed or {})
-    for k in fixed:
-        if k not in DOF_NAMES:
-            raise InputError(f"fixed: unknown DOF {k!r} (valid: {', '.join(DOF_NAMES)})")
-        fixed[k] = _number(f"fixed.{k}", fixed[k])
+    phase = check_finite("phase", phase)
+    ring_growth = check_bool("ring_growth", ring_growth)
+    stiffness = check_bool("stiffness", stiffness)
+    fit = check_nonnegative("fit", fit)
+    temperatures = check_temperatures(temperatures)
+    shoulder_angle = check_finite("shoulder_angle", shoulder_angle)
+    if not 0.0 < shoulder_angle <= 0.5 * math.pi:
+        raise InputError(f"shoulder_angle: must lie in (0, pi/2] rad, got {shoulder_angle:g}")
+    fixed = _check_fixed(fixed, b)
     angular = b.free_contact_angle > 0.0
     fr = math.hypot(loads[0], loads[1])
     if angular and "delta_a" not in fixed:
@@ -202,8 +228,11 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
                              "axially (got 0 N; or hold delta_a with fixed=)")
     geom = operating_geometry(b, w_i, w_o, ring_growth, fit, temperatures)
     if geom.operating_clearance < -2.0 * 0.01 * geom.r_b:
-        raise InputError(f"fit: the operating interference {-geom.operating_clearance:.3e} m exceeds 2 % of the "
-                         f"ball radius: the balls do not fit between the grown rings")
+        cause = _interference_cause(b, w_i, w_o, ring_growth, fit, temperatures, -2.0 * 0.01 * geom.r_b)
+        why = {"fit": f"shaft fit {fit:g} m", "temperatures": f"thermal growth at {temperatures} K"}.get(
+            cause, f"centrifugal ring growth at omega = {w_i:g} rad/s, omega_outer = {w_o:g} rad/s")
+        raise InputError(f"{cause}: the operating interference {-geom.operating_clearance:.3e} m ({why}) exceeds 2 % "
+                         f"of the ball radius: the balls do not fit between the grown rings")
     e_prime = _hz.material_reduced_modulus(b.material)
     z = b.n_balls
     psi = phase + 2.0 * math.pi * np.arange(z) / z

@@ -55,7 +55,7 @@ class ReferenceEngine:
         self.bearing = b
         self.start = start
         self.scenario = scenario
-        self.lubricant = default_lubricant() if lubricant is None else lubricant
+        self.lubricant = default_lubricant(b) if lubricant is None else lubricant  # None: the bearing's
         if scenario.cage and not b.has_cage:
             raise InputError(f"cage: bearing {b.name} has no cage balls (cage_ball_radius is None); "
                              "use cage=False")

@@ -407,7 +407,7 @@ def derived_parameters(bearing="6004", radial_load=500.0, omega=2.0 * math.pi * 
     else:
         raise InputError(f"dimensions: expected a RingDimensions, got {type(dimensions).__name__}")
     b = b.with_clearance(pd)
-    lub = default_lubricant() if lubricant is None else lubricant
+    lub = default_lubricant(b) if lubricant is None else lubricant
     if 0.5 * dimensions.bore >= b.inner_race_radius:
         raise InputError(f"bore: {dimensions.bore * 1e3:.4g} mm ({dim_source['bore']}) is not smaller than the inner "
                          f"race diameter of {b.name}, {2e3 * b.inner_race_radius:.4g} mm: give the bore of this "
