@@ -7,6 +7,7 @@ from pathlib import Path
 import pytest
 
 from exudyn_bearing import catalog
+from exudyn_bearing._jit import COMPILE_NOTICE
 
 ROOT = Path(__file__).resolve().parents[1]
 #: Paths a test run may touch in the working tree: Python and numba caches
@@ -72,3 +73,33 @@ def load_script():
         spec.loader.exec_module(mod)
         return mod
     return load
+
+
+def error_lines(err):
+    """The lines a command wrote on stderr, without numba's once-per-process
+    compile notice (printed when the test happens to be the process's first
+    run on a cold cache: a test must not depend on its place in the order)."""
+    return [line for line in err.strip().splitlines() if line.strip() != COMPILE_NOTICE]
+
+
+@pytest.fixture
+def runaway(monkeypatch):
+    """Every dynamic run (reference engine and Exudyn element) built while the
+    fixture is active stops as runaway at its first check: the runaway limit
+    on overlap / R_b is set below zero. A deterministic blow-up for the error
+    path: whether a too-long step grows past the limit, and when, depends on
+    the CPU's last bits (a 6-sub-step fast-mode run blew up on one machine
+    and finished on another)."""
+    from exudyn_bearing.model import layout
+    from exudyn_bearing.solvers.element import element
+    from exudyn_bearing.solvers.reference import engine
+
+    def planted(scene_parameters):
+        def build(*args, **kw):
+            p = scene_parameters(*args, **kw)
+            p[layout.P_MAX_OVERLAP] = -1.0
+            return p
+        return build
+
+    for module in (element, engine):
+        monkeypatch.setattr(module, "scene_parameters", planted(module.scene_parameters))

@@ -12,6 +12,7 @@ from exudyn_bearing import InputError, catalog
 from exudyn_bearing.cli import main
 from exudyn_bearing.physics import load_distribution as ld
 from exudyn_bearing.solvers.quasistatic import solve_quasistatic
+from conftest import error_lines
 
 RPM_25000 = 25000 * math.pi / 30
 
@@ -236,8 +237,8 @@ def test_bad_input_is_a_one_line_error(argv, word, capsys):
     except SystemExit as exc:
         rc = exc.code
     assert rc == 2
-    err = capsys.readouterr().err.strip()
-    assert len(err.splitlines()) == 1 and word in err
+    err = error_lines(capsys.readouterr().err)
+    assert len(err) == 1 and word in err[0]
 
 
 def test_static_says_what_it_holds(capsys):
