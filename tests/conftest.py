@@ -103,3 +103,46 @@ def runaway(monkeypatch):
 
     for module in (element, engine):
         monkeypatch.setattr(module, "scene_parameters", planted(module.scene_parameters))
+
+
+def stribeck_loads(radial_load, psi):
+    """Ball loads [N] of a zero-clearance radial ball bearing under ``radial_load``
+    with balls at the azimuths ``psi`` (psi = 0 along the load), from Stribeck's
+    equations by hand: Q_i = Q_0 max(cos psi_i, 0)^1.5 (Hertz, rigid rings) and
+    the force balance F_r = sum Q_i cos psi_i give Q_0 = F_r / sum max(cos psi_i, 0)^2.5;
+    the contact stiffness cancels (Harris & Kotzalas ch. 7)."""
+    import numpy as np
+
+    c = np.clip(np.cos(np.asarray(psi, float)), 0.0, None)
+    return radial_load * c ** 1.5 / np.sum(c ** 2.5, axis=-1, keepdims=True)
+
+
+def hertz_stiffness_by_hand(r_x, r_y, e_prime):
+    """K of Q = K delta^1.5 [N/m^1.5] by hand: k from Harris & Kotzalas eq. 6.27 with
+    scipy's complete elliptic integrals, K = pi k E' sqrt(2 E R / (9 F^3)) (Hamrock & Brewe),
+    R = R_x R_y / (R_x + R_y). Returns (K, k, F, E)."""
+    import math
+
+    from scipy import optimize, special
+
+    target = (r_y / r_x - 1.0) / (r_y / r_x + 1.0)
+
+    def g(k):
+        m = 1.0 - 1.0 / k ** 2
+        return ((k * k + 1.0) * special.ellipe(m) - 2.0 * special.ellipk(m)) / ((k * k - 1.0) * special.ellipe(m)) \
+            - target
+    k = optimize.brentq(g, 1.0 + 1e-9, 100.0, xtol=1e-14)
+    m = 1.0 - 1.0 / k ** 2
+    f, e = special.ellipk(m), special.ellipe(m)
+    rr = r_x * r_y / (r_x + r_y)
+    return math.pi * k * e_prime * math.sqrt(2.0 * e * rr / (9.0 * f ** 3)), k, f, e
+
+
+def baseline(name):
+    """``pytest.approx`` of the regression baseline ``name`` of tests/baselines.json, with
+    its tolerance: a number the program computed at a reviewed state, NOT validation
+    (tests/regen_baselines.py regenerates the file and says why each tolerance)."""
+    import json
+
+    entry = json.loads((ROOT / "tests" / "baselines.json").read_text())[name]
+    return pytest.approx(entry["value"], rel=entry["rel"])

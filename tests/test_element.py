@@ -16,7 +16,7 @@ from exudyn_bearing.solvers.element.engine import solve_dynamic  # noqa: E402
 from exudyn_bearing.solvers.reference import ReferenceEngine  # noqa: E402
 from exudyn_bearing.model.initial_state import ring_mass_estimate  # noqa: E402
 from exudyn_bearing.model.stability import SimulationError  # noqa: E402
-from conftest import error_lines  # noqa: E402
+from conftest import baseline, error_lines, stribeck_loads  # noqa: E402
 
 SCENE = dict(Fr=3000.0, omega=500.0, t_end=0.02, dt=5e-6, sample_dt=1e-4)
 KEYS = ("q_max_inner", "q_max_outer", "cage_speed", "ball_spin", "lambda_outer_psi0")
@@ -102,20 +102,29 @@ def test_lie_group_ring_node_matches_tait_bryan():
     # vector, local angular velocity; Exudyn's node for explicit Lie-group
     # integration) and on a NodeRigidBodyRxyz: pose, reactions and the torque on
     # the ring agree, so loads, cage speed and the ring's own motion do
-    out = []
-    for node_type in (NodeRigidBodyRxyz, NodeRigidBodyRotVecLG):
-        SC, mbs, m_in, m_out, b = _rotor_scene(angle_z=0.7, offset=(2e-6, 1e-6, 0.0), inertia_z=1e-5,
-                                               node_type=node_type)
-        el = _loaded_bearing_run(mbs, m_in, m_out, b, 0.005)
-        node = el.items["ringNodes"][0]
-        out.append((el.results().summary(), mbs.GetNodeOutput(node, exu.OutputVariableType.Position),
-                    mbs.GetNodeOutput(node, exu.OutputVariableType.AngularVelocity)))
-    (s1, x1, w1), (s2, x2, w2) = out
+    (s1, x1, w1), (s2, x2, w2) = (_turned_rotor_run(n) for n in (NodeRigidBodyRxyz, NodeRigidBodyRotVecLG))
     for k in ("q_max_inner", "q_max_outer", "cage_speed"):
         assert s2[k] == pytest.approx(s1[k], rel=1e-4), k
     assert np.allclose(x2, x1, rtol=0.0, atol=1e-8)
-    assert w1[2] < 500.0 - 5e-3  # the bearing's friction torque brakes the light ring (by 0.01 rad/s) ...
+    # the bearing's friction torque brakes the light ring (by about 0.01 rad/s; that amount is a
+    # regression baseline, tests/baselines.json, not validation) ...
+    assert w1[2] < 500.0 and 500.0 - w1[2] == baseline("rotor_ring_spin_loss")
     assert np.allclose(w2, w1, rtol=0.0, atol=1e-6)  # ... alike on both nodes
+
+
+def _turned_rotor_run(node_type):
+    """The turned, offset light ring (J_z = 1e-5 kg m^2) at 3000 N, 500 rad/s, 5 ms: (summary, position,
+    angular velocity of the ring node)."""
+    SC, mbs, m_in, m_out, b = _rotor_scene(angle_z=0.7, offset=(2e-6, 1e-6, 0.0), inertia_z=1e-5, node_type=node_type)
+    el = _loaded_bearing_run(mbs, m_in, m_out, b, 0.005)
+    node = el.items["ringNodes"][0]
+    return (el.results().summary(), mbs.GetNodeOutput(node, exu.OutputVariableType.Position),
+            mbs.GetNodeOutput(node, exu.OutputVariableType.AngularVelocity))
+
+
+def rotor_spin_after_5_ms():
+    """Spin of the light ring on the Rxyz node after 5 ms [rad/s] (tests/regen_baselines.py)."""
+    return float(_turned_rotor_run(NodeRigidBodyRxyz)[2][2])
 
 
 def test_sensors_store_like_any_exudyn_sensor():
@@ -125,11 +134,17 @@ def test_sensors_store_like_any_exudyn_sensor():
     assert data.shape[1] == 2 and len(data) >= 5
     assert data[-1, 1] == pytest.approx(198.0, rel=0.01)
     q_out = mbs.GetSensorStoredData(el.sensors["qMaxOuter"])[-1, 1]
-    assert 1300 < q_out < 1600
-    # ring reactions: the balls push the inner ring back and the outer ring along the load
+    # Stribeck's loads by hand at the balls' azimuths of the last sample, plus the centrifugal force
+    # m R_p w_c^2 on the outer race: measured within 0.51 % at every sample (the ring vibrates about
+    # the quasi-static state); 1 % fails a 2 % error of the loads
+    r = el.results()
+    hand = (stribeck_loads(3000.0, r.azimuth()[-1]) + b.ball_mass * b.pitch_radius * r.orbital_speed()[-1] ** 2).max()
+    assert q_out == pytest.approx(hand, rel=0.01)
+    # ring reactions: the balls push the inner ring back and the outer ring along the load, F_r less the
+    # heavy ring's inertial force (measured within 0.05 %; 2e-3 allows four times that)
     f_in = mbs.GetSensorStoredData(el.sensors["innerRingForce"])[-1, 1:]
     f_out = mbs.GetSensorStoredData(el.sensors["outerRingForce"])[-1, 1:]
-    assert f_in[0] == pytest.approx(-3000.0, rel=0.05) and f_out[0] == pytest.approx(3000.0, rel=0.05)
+    assert f_in[0] == pytest.approx(-3000.0, rel=2e-3) and f_out[0] == pytest.approx(3000.0, rel=2e-3)
 
 
 def test_bad_markers_and_placement_are_rejected():
@@ -522,6 +537,9 @@ def test_outer_ring_on_a_flexible_housing():
     assert x_h[0] == pytest.approx(3000.0 / k_h, rel=0.15)
     s = el.results().summary()
     assert s["cage_speed"] == pytest.approx(198.0, rel=0.01)
-    # q_max_inner is the largest ball load of the window (Q_max, 1462 N quasi-static; it was the
-    # time mean of the per-sample maximum, about 1420 N)
-    assert s["q_max_inner"] == pytest.approx(1462, rel=0.05)
+    # the largest inner ball load of each sample against Stribeck's by hand at the sampled azimuths
+    # (the housing moves the whole bearing, not the load sharing); 1 % as in the sensor test
+    r = el.results()
+    w = r.window(0.25)
+    np.testing.assert_allclose(r.contact("load", "inner")[w].max(axis=1),
+                               stribeck_loads(3000.0, r.azimuth()[w]).max(axis=1), rtol=0.01)

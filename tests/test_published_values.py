@@ -5,12 +5,13 @@ below the 2 % planted errors of validation/mutation_run.py."""
 import math
 
 import pytest
-from scipy import integrate, optimize, special
+from scipy import integrate
 
 import exudyn_bearing as eb
 from exudyn_bearing.data import TractionModel, default_lubricant
 from exudyn_bearing.physics import ehl, kinematics
 from exudyn_bearing.physics.contact_slip import contact_traction, spin_moment_coulomb
+from conftest import hertz_stiffness_by_hand
 
 E_PRIME = 210e9 / (1 - 0.3 ** 2)  # catalogue steel, E' = E / (1 - nu^2)
 ETA, XI = 0.04, 2.3e-8            # the DEM papers' lubricant (Guessasma & Machado 2018, sec. 2)
@@ -162,19 +163,6 @@ def kernel_params():
     return scene_parameters(eb.catalog["6208"], sc, default_lubricant())
 
 
-def _exact_ellipticity(rx, ry):
-    """k, F, E of the Hertz contact from Harris & Kotzalas eq. 6.27 solved with scipy's integrals."""
-    target = (ry / rx - 1.0) / (ry / rx + 1.0)
-
-    def g(k):
-        m = 1.0 - 1.0 / k ** 2
-        return ((k * k + 1.0) * special.ellipe(m) - 2.0 * special.ellipk(m)) / ((k * k - 1.0) * special.ellipe(m)) \
-            - target
-    k = optimize.brentq(g, 1.0 + 1e-9, 100.0, xtol=1e-14)
-    m = 1.0 - 1.0 / k ** 2
-    return k, special.ellipk(m), special.ellipe(m)
-
-
 def test_kernel_normal_law_is_hertz_with_hunt_crossley_damping(kernel_params):
     # Q = K delta^1.5, K = pi k E' sqrt(2 E R / (9 F^3)) (Hamrock & Brewe 1983), R = R_x R_y / (R_x + R_y);
     # C_hyst = (3/2) alpha_e K delta^1.5 (Hunt & Crossley 1975: F = K d^1.5 (1 + (3/2) alpha_e d')),
@@ -183,9 +171,8 @@ def test_kernel_normal_law_is_hertz_with_hunt_crossley_damping(kernel_params):
 
     p = kernel_params
     rx, ry, delta, alpha_e = 4.990e-3, 163.8e-3, 1.2e-5, 0.08
-    k, f, e = _exact_ellipticity(rx, ry)
+    kst, k, f, e = hertz_stiffness_by_hand(rx, ry, E_PRIME)
     rr = rx * ry / (rx + ry)
-    kst = math.pi * k * E_PRIME * math.sqrt(2.0 * e * rr / (9.0 * f ** 3))
     q, k_t, c = _normal_law(p, delta, k, f, e, rr)
     # the scipy integrals and the kernel's agree to ~1e-13: 1e-9 as for one formula
     assert q == pytest.approx(kst * delta ** 1.5, rel=SAME_FORMULA)
