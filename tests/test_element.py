@@ -87,11 +87,13 @@ def test_rigid_body_ring_feels_the_bearing():
     s = el.results().summary()
     ref = eb.simulate("6208", eb.Scenario(Fr=3000.0, omega=500.0, t_end=0.01, dt=5e-6, tangential="implicit"))
     r = ref.summary()
-    assert s["cage_speed"] == pytest.approx(r["cage_speed"], rel=5e-3)
-    assert s["q_max_inner"] == pytest.approx(r["q_max_inner"], rel=0.01)
+    # same kernel, other integrator arrangement: measured within 1e-5 of the reference engine; 1e-3
+    assert s["cage_speed"] == pytest.approx(r["cage_speed"], rel=1e-3)
+    assert s["q_max_inner"] == pytest.approx(r["q_max_inner"], rel=1e-3)
     ring_x = mbs.GetNodeOutput(el.items["ringNodes"][0], exu.OutputVariableType.Position)
     from exudyn_bearing.physics.load_distribution import static_equilibrium
-    assert ring_x[0] == pytest.approx(static_equilibrium(b, 3000.0).delta_r, rel=0.05)
+    # the ring at 10 ms still vibrates about the static displacement (measured 0.2 % off); 1 %
+    assert ring_x[0] == pytest.approx(static_equilibrium(b, 3000.0).delta_r, rel=0.01)
     # the ring's spin is kept by its inertia; the bearing's friction torque on it is small
     w = mbs.GetNodeOutput(el.items["ringNodes"][0], exu.OutputVariableType.AngularVelocity)
     assert w[2] == pytest.approx(500.0, rel=1e-3)

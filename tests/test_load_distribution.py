@@ -107,7 +107,10 @@ def test_7208_combined_load_follows_the_eps_law(b7208):
     np.testing.assert_allclose(s.q @ n, [3000.0, 0.0, 3000.0], atol=1e-5)
     # contact angles stay near the free 40 deg
     assert np.all(np.abs(np.degrees(s.contact_angle[s.q > 0]) - 40) < 1.5)
-    # fixed-angle continuous solution (Harris eq. 7.41-7.42) within 5 % of the discrete q_max
+    # fixed-angle continuous solution (Harris eq. 7.41-7.42): the integral over the load zone stands
+    # for 13 discrete balls and the angles stay fixed, which puts it 4.3 % above the discrete q_max
+    # (1357 against 1299 N); 5 % is that approximation's error, not a check of the discrete solution
+    # (the Stribeck law above is, at 2 %)
     st = ld.stribeck_solution(13, 3000.0, 3000.0, b7208.free_contact_angle)
     assert s.q_max == pytest.approx(st.q_max, rel=0.05)
 

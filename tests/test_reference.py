@@ -242,10 +242,12 @@ def test_7208_under_combined_load_carries_both_loads():
     w = r.window(0.5)
     fx = r.global_series("ring_fx")[w].mean()
     fz = r.global_series("ring_fz")[w].mean()
-    assert fx == pytest.approx(-3000.0, rel=0.05) and fz == pytest.approx(-3000.0, rel=0.05)
+    # force balance of the ring: the window means of the ball forces equal the applied loads up to
+    # the ring's vibration that does not average out over 5 ms (measured within 0.11 %); 0.5 %
+    assert fx == pytest.approx(-3000.0, rel=5e-3) and fz == pytest.approx(-3000.0, rel=5e-3)
     # the balls pass both loads on to the outer ring (the ring reactions balance)
-    assert r.global_series("outer_fx")[w].mean() == pytest.approx(3000.0, rel=0.05)
-    assert r.global_series("outer_fz")[w].mean() == pytest.approx(3000.0, rel=0.05)
+    assert r.global_series("outer_fx")[w].mean() == pytest.approx(3000.0, rel=5e-3)
+    assert r.global_series("outer_fz")[w].mean() == pytest.approx(3000.0, rel=5e-3)
     alpha = np.degrees(r.contact("contact_angle", "outer")[w][r.contact("load", "outer")[w] > 500])
     assert np.all(np.abs(alpha - 40) < 3)
 
