@@ -476,7 +476,7 @@ def section_mutation():
     d = load("mutation_run.json")
     lines = ["## Mutation run", "",
              f"Command: `python validation/mutation_run.py{' --quick' if d['set'] == 'quick' else ''}`: planted errors "
-             "of 1-5 % (and sign errors) in the relations of exudyn_bearing/physics/ and the contact kernel, each in "
+             "of 2 % (and sign errors) in the relations of exudyn_bearing/physics/ and the contact kernel, each in "
              "a temporary copy of the repository with a fresh numba cache, against the test files that check the "
              f"relation. Score: **{d['caught']} of {d['applied']}** applied mutants caught"
              + (f" ({d['total'] - d['applied']} not applied: their source snippet moved)" if d['total'] > d['applied']
