@@ -350,7 +350,9 @@ def test_strongest_envelope_line_at_the_defect_frequency(four_cases, fault):
 def test_healthy_envelope_has_no_defect_lines(four_cases):
     mod, _runs, table = four_cases
     h = table["healthy"]
-    assert h["ratio_to_weakest_fault_line"] < mod.HEALTHY_THRESHOLD
+    # the pass level is the test's own, not the script's: 40 dB below the weakest fault line
+    # (amplitude ratio 0.01), where a measured line would be lost in sensor noise
+    assert h["ratio_to_weakest_fault_line"] < 10 ** (-40 / 20)
 
 
 def test_scenario_script_writes_its_figures(tmp_path, capsys, load_script):

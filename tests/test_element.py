@@ -16,6 +16,7 @@ from exudyn_bearing.solvers.element.engine import solve_dynamic  # noqa: E402
 from exudyn_bearing.solvers.reference import ReferenceEngine  # noqa: E402
 from exudyn_bearing.model.initial_state import ring_mass_estimate  # noqa: E402
 from exudyn_bearing.model.stability import SimulationError  # noqa: E402
+from conftest import baseline, error_lines, stribeck_loads  # noqa: E402
 
 SCENE = dict(Fr=3000.0, omega=500.0, t_end=0.02, dt=5e-6, sample_dt=1e-4)
 KEYS = ("q_max_inner", "q_max_outer", "cage_speed", "ball_spin", "lambda_outer_psi0")
@@ -86,11 +87,13 @@ def test_rigid_body_ring_feels_the_bearing():
     s = el.results().summary()
     ref = eb.simulate("6208", eb.Scenario(Fr=3000.0, omega=500.0, t_end=0.01, dt=5e-6, tangential="implicit"))
     r = ref.summary()
-    assert s["cage_speed"] == pytest.approx(r["cage_speed"], rel=5e-3)
-    assert s["q_max_inner"] == pytest.approx(r["q_max_inner"], rel=0.01)
+    # same kernel, other integrator arrangement: measured within 1e-5 of the reference engine; 1e-3
+    assert s["cage_speed"] == pytest.approx(r["cage_speed"], rel=1e-3)
+    assert s["q_max_inner"] == pytest.approx(r["q_max_inner"], rel=1e-3)
     ring_x = mbs.GetNodeOutput(el.items["ringNodes"][0], exu.OutputVariableType.Position)
     from exudyn_bearing.physics.load_distribution import static_equilibrium
-    assert ring_x[0] == pytest.approx(static_equilibrium(b, 3000.0).delta_r, rel=0.05)
+    # the ring at 10 ms still vibrates about the static displacement (measured 0.2 % off); 1 %
+    assert ring_x[0] == pytest.approx(static_equilibrium(b, 3000.0).delta_r, rel=0.01)
     # the ring's spin is kept by its inertia; the bearing's friction torque on it is small
     w = mbs.GetNodeOutput(el.items["ringNodes"][0], exu.OutputVariableType.AngularVelocity)
     assert w[2] == pytest.approx(500.0, rel=1e-3)
@@ -101,20 +104,29 @@ def test_lie_group_ring_node_matches_tait_bryan():
     # vector, local angular velocity; Exudyn's node for explicit Lie-group
     # integration) and on a NodeRigidBodyRxyz: pose, reactions and the torque on
     # the ring agree, so loads, cage speed and the ring's own motion do
-    out = []
-    for node_type in (NodeRigidBodyRxyz, NodeRigidBodyRotVecLG):
-        SC, mbs, m_in, m_out, b = _rotor_scene(angle_z=0.7, offset=(2e-6, 1e-6, 0.0), inertia_z=1e-5,
-                                               node_type=node_type)
-        el = _loaded_bearing_run(mbs, m_in, m_out, b, 0.005)
-        node = el.items["ringNodes"][0]
-        out.append((el.results().summary(), mbs.GetNodeOutput(node, exu.OutputVariableType.Position),
-                    mbs.GetNodeOutput(node, exu.OutputVariableType.AngularVelocity)))
-    (s1, x1, w1), (s2, x2, w2) = out
+    (s1, x1, w1), (s2, x2, w2) = (_turned_rotor_run(n) for n in (NodeRigidBodyRxyz, NodeRigidBodyRotVecLG))
     for k in ("q_max_inner", "q_max_outer", "cage_speed"):
         assert s2[k] == pytest.approx(s1[k], rel=1e-4), k
     assert np.allclose(x2, x1, rtol=0.0, atol=1e-8)
-    assert w1[2] < 500.0 - 5e-3  # the bearing's friction torque brakes the light ring (by 0.01 rad/s) ...
+    # the bearing's friction torque brakes the light ring (by about 0.01 rad/s; that amount is a
+    # regression baseline, tests/baselines.json, not validation) ...
+    assert w1[2] < 500.0 and 500.0 - w1[2] == baseline("rotor_ring_spin_loss")
     assert np.allclose(w2, w1, rtol=0.0, atol=1e-6)  # ... alike on both nodes
+
+
+def _turned_rotor_run(node_type):
+    """The turned, offset light ring (J_z = 1e-5 kg m^2) at 3000 N, 500 rad/s, 5 ms: (summary, position,
+    angular velocity of the ring node)."""
+    SC, mbs, m_in, m_out, b = _rotor_scene(angle_z=0.7, offset=(2e-6, 1e-6, 0.0), inertia_z=1e-5, node_type=node_type)
+    el = _loaded_bearing_run(mbs, m_in, m_out, b, 0.005)
+    node = el.items["ringNodes"][0]
+    return (el.results().summary(), mbs.GetNodeOutput(node, exu.OutputVariableType.Position),
+            mbs.GetNodeOutput(node, exu.OutputVariableType.AngularVelocity))
+
+
+def rotor_spin_after_5_ms():
+    """Spin of the light ring on the Rxyz node after 5 ms [rad/s] (tests/regen_baselines.py)."""
+    return float(_turned_rotor_run(NodeRigidBodyRxyz)[2][2])
 
 
 def test_sensors_store_like_any_exudyn_sensor():
@@ -124,11 +136,17 @@ def test_sensors_store_like_any_exudyn_sensor():
     assert data.shape[1] == 2 and len(data) >= 5
     assert data[-1, 1] == pytest.approx(198.0, rel=0.01)
     q_out = mbs.GetSensorStoredData(el.sensors["qMaxOuter"])[-1, 1]
-    assert 1300 < q_out < 1600
-    # ring reactions: the balls push the inner ring back and the outer ring along the load
+    # Stribeck's loads by hand at the balls' azimuths of the last sample, plus the centrifugal force
+    # m R_p w_c^2 on the outer race: measured within 0.51 % at every sample (the ring vibrates about
+    # the quasi-static state); 1 % fails a 2 % error of the loads
+    r = el.results()
+    hand = (stribeck_loads(3000.0, r.azimuth()[-1]) + b.ball_mass * b.pitch_radius * r.orbital_speed()[-1] ** 2).max()
+    assert q_out == pytest.approx(hand, rel=0.01)
+    # ring reactions: the balls push the inner ring back and the outer ring along the load, F_r less the
+    # heavy ring's inertial force (measured within 0.05 %; 2e-3 allows four times that)
     f_in = mbs.GetSensorStoredData(el.sensors["innerRingForce"])[-1, 1:]
     f_out = mbs.GetSensorStoredData(el.sensors["outerRingForce"])[-1, 1:]
-    assert f_in[0] == pytest.approx(-3000.0, rel=0.05) and f_out[0] == pytest.approx(3000.0, rel=0.05)
+    assert f_in[0] == pytest.approx(-3000.0, rel=2e-3) and f_out[0] == pytest.approx(3000.0, rel=2e-3)
 
 
 def test_bad_markers_and_placement_are_rejected():
@@ -156,27 +174,31 @@ def test_bad_markers_and_placement_are_rejected():
         CreateBallBearing(mbs, b, m_ep, m_out)
 
 
-def test_step_above_the_stable_estimate_warns_and_stops_cleanly():
+def test_step_above_the_stable_estimate_warns_and_stops_cleanly(runaway):
+    # the warning is decided from the estimate, before the run: deterministic
     SC, mbs, m_in, m_out, b = _rotor_scene()
     el = CreateBallBearing(mbs, b, m_in, m_out, initialOmega=500.0, initialLoad=(3000.0, 0.0), stepSize=4e-5)
     mbs.Assemble()
     with pytest.warns(UserWarning, match="stepSize"):
         ss = el.SimulationSettings(0.01)
-    # Exudyn wraps a user function's exception in its ModelError (a ValueError); solve_dynamic
-    # hands on the element's SimulationError
-    with pytest.raises(SimulationError, match="^stepSize"):
+    # whether (and when) a run at this step grows past the runaway limit depends on the CPU's
+    # last bits; the runaway is planted (``runaway``: limit below zero, so the first check
+    # stops the run). Exudyn wraps a user function's exception in its ModelError (a
+    # ValueError); solve_dynamic hands on the element's SimulationError
+    with pytest.raises(SimulationError, match="^stepSize: the bearing state became non-finite or runaway"):
         solve_dynamic(mbs, ss)
 
 
-def test_exudyn_engine_blow_up_exits_with_the_simulation_error_code(capsys):
+def test_exudyn_engine_blow_up_exits_with_the_simulation_error_code(capsys, runaway):
+    # a planted runaway (see ``runaway``): the CLI's exit code and its one-line message naming dt
     from exudyn_bearing.cli import main
     from exudyn_bearing.model.stability import StepSizeWarning
 
     with pytest.warns(StepSizeWarning):
         rc = main(["simulate", "--engine", "exudyn", "--t-end", "0.005", "--dt", "5e-5"])
     assert rc == 3
-    err = capsys.readouterr().err.strip()
-    assert err.startswith("exudyn-bearing: error: dt: the bearing state became non-finite") and "\n" not in err
+    err = error_lines(capsys.readouterr().err)
+    assert len(err) == 1 and err[0].startswith("exudyn-bearing: error: dt: the bearing state became non-finite")
 
 
 def test_rk44_with_regularized_friction_matches_verlet():
@@ -271,18 +293,30 @@ def test_fast_mode_ring_and_balls_exchange_equal_impulses():
 
 def test_ring_stable_step_brackets_the_fast_mode_limit():
     # the 81 g ring of the test scene runs at 20 us Exudyn steps (4 sub-steps, test
-    # above) and blows up at 30 us (6 sub-steps): the estimate must lie between,
-    # and the 30 us run must be warned about before it starts
+    # above) and blew up at 30 us (6 sub-steps) on the development machine (on
+    # another CPU it finished, q_max 2.8 x too high): the estimate must lie between,
+    # and the 30 us run must be warned about before it starts. Whether the 30 us run
+    # grows past the runaway limit is not asserted (it hangs on the CPU's last bits);
+    # a non-finite state, when it happens, must stop the run with the error naming the step.
     from exudyn_bearing.solvers.element.engine import ExudynEngine
     from exudyn_bearing.model.stability import StepSizeWarning, ring_stable_step
 
-    sc = eb.Scenario(Fr=3000.0, omega=500.0, t_end=0.005, dt=5e-6, tangential="implicit", sample_dt=1e-4)
+    sc = eb.Scenario(Fr=3000.0, omega=500.0, t_end=0.001, dt=5e-6, tangential="implicit", sample_dt=1e-4)
     b = eb.catalog["6208"]
     assert 20e-6 < ring_stable_step(b, sc, ring_mass_estimate(b)) < 30e-6
     eng = ExudynEngine("6208", sc, mode="fast", sub_steps=6)
-    assert eng.element.ringStableStep == pytest.approx(ring_stable_step(b, sc, ring_mass_estimate(b)), rel=1e-12)
-    with pytest.warns(StepSizeWarning, match="^subSteps"), pytest.raises(Exception, match="stepSize"):
-        eng.run()
+    el = eng.element
+    assert el.ringStableStep == pytest.approx(ring_stable_step(b, sc, ring_mass_estimate(b)), rel=1e-12)
+    q, q_t = np.asarray(el.initialRingDisplacement, float), np.zeros(3)
+    h = 6 * sc.dt
+    el._force_uf_fast(eng.mbs, 0.0, 0, q, q_t)
+    with pytest.warns(StepSizeWarning, match="^subSteps: the Exudyn step 3e-05 s exceeds the ring bodies'"):
+        el._force_uf_fast(eng.mbs, h, 0, q, q_t)
+    # a blow-up, planted: ball 0 pushed 2 % of the pitch radius out (0.6 mm into the outer
+    # race, past the runaway limit of 0.05 R_b = 0.32 mm)
+    el._work[0][0] *= 1.02
+    with pytest.raises(SimulationError, match="^stepSize: the bearing state became non-finite or runaway .*ring bodies'"):
+        el._force_uf_fast(eng.mbs, 2 * h, 0, q, q_t)
     with pytest.raises(InputError, match="^ring_mass"):
         ring_stable_step(b, sc, 0.0)
 
@@ -505,6 +539,9 @@ def test_outer_ring_on_a_flexible_housing():
     assert x_h[0] == pytest.approx(3000.0 / k_h, rel=0.15)
     s = el.results().summary()
     assert s["cage_speed"] == pytest.approx(198.0, rel=0.01)
-    # q_max_inner is the largest ball load of the window (Q_max, 1462 N quasi-static; it was the
-    # time mean of the per-sample maximum, about 1420 N)
-    assert s["q_max_inner"] == pytest.approx(1462, rel=0.05)
+    # the largest inner ball load of each sample against Stribeck's by hand at the sampled azimuths
+    # (the housing moves the whole bearing, not the load sharing); 1 % as in the sensor test
+    r = el.results()
+    w = r.window(0.25)
+    np.testing.assert_allclose(r.contact("load", "inner")[w].max(axis=1),
+                               stribeck_loads(3000.0, r.azimuth()[w]).max(axis=1), rtol=0.01)

@@ -107,7 +107,10 @@ def test_7208_combined_load_follows_the_eps_law(b7208):
     np.testing.assert_allclose(s.q @ n, [3000.0, 0.0, 3000.0], atol=1e-5)
     # contact angles stay near the free 40 deg
     assert np.all(np.abs(np.degrees(s.contact_angle[s.q > 0]) - 40) < 1.5)
-    # fixed-angle continuous solution (Harris eq. 7.41-7.42) within 5 % of the discrete q_max
+    # fixed-angle continuous solution (Harris eq. 7.41-7.42): the integral over the load zone stands
+    # for 13 discrete balls and the angles stay fixed, which puts it 4.3 % above the discrete q_max
+    # (1357 against 1299 N); 5 % is that approximation's error, not a check of the discrete solution
+    # (the Stribeck law above is, at 2 %)
     st = ld.stribeck_solution(13, 3000.0, 3000.0, b7208.free_contact_angle)
     assert s.q_max == pytest.approx(st.q_max, rel=0.05)
 
@@ -135,7 +138,11 @@ def test_fitted_hertz_changes_the_distribution_by_its_stiffness_error(b6208):
 
 
 # -- lubrication map: slopes of docs/theory/reference_cases.md --------------------------------
-def test_lambda_slope_against_omega(b6208):
+# These slopes are the film formula's own exponents (U^0.68, W^-0.073): they check that the map
+# applies the formula at each ball's speed and load (an implementation check), they reproduce
+# nothing. The source's fitted slopes (0.6797, -0.0727) agree because the source used the same
+# formula; the film's value is checked by hand in tests/test_published_values.py.
+def test_lambda_map_scales_with_the_speed_exponent(b6208):
     w = np.arange(100.0, 1701.0, 200.0)
     lam = [static_analysis(b6208, 3000.0, omega=x)["lambda_outer"][0] for x in w]
     assert np.polyfit(np.log(w), np.log(lam), 1)[0] == pytest.approx(0.68, abs=1e-6)
@@ -144,12 +151,13 @@ def test_lambda_slope_against_omega(b6208):
     assert np.polyfit(np.log(w), np.log(lam_mk), 1)[0] == pytest.approx(0.711 * kappa ** -0.023, abs=1e-6)
 
 
-def test_lambda_and_load_slopes_against_q_max(b6208):
+def test_lambda_map_scales_with_the_load_exponent(b6208):
     fr = np.geomspace(750.0, 7500.0, 6)
     res = [static_analysis(b6208, x, omega=500.0) for x in fr]
     qmax = np.array([r["q_max"] for r in res])
     lam = np.array([r["lambda_outer"][0] for r in res])
-    # docs/theory/reference_cases.md: slope of Lambda_out against Q_max near -0.073; of F_r against Q_max near 1
+    # slope of Lambda_out against Q_max: the W exponent -0.073 (2e-3: the map's Q_max is the discrete
+    # maximum, whose share of F_r moves slightly with the load); of F_r against Q_max near 1 (zero clearance)
     assert np.polyfit(np.log(qmax), np.log(lam), 1)[0] == pytest.approx(-0.073, abs=2e-3)
     assert np.polyfit(np.log(qmax), np.log(fr), 1)[0] == pytest.approx(1.0, abs=1e-3)
 

@@ -16,8 +16,11 @@ def _slope(x, y):
     return np.polyfit(np.log(x), np.log(y), 1)[0]
 
 
-def test_hamrock_dowson_exponents():
-    # h_min ~ U^0.68 W^-0.073 (Hamrock & Dowson 1977; docs/theory/reference_cases.md slopes)
+def test_hamrock_dowson_implementation_has_the_printed_exponents():
+    # h_min ~ U^0.68 W^-0.073 (Hamrock & Dowson 1977). An implementation check (the code evaluates
+    # the printed exponents), not a reproduced result: the slopes of docs/theory/reference_cases.md
+    # are these exponents by construction. The value is checked by hand below and in
+    # tests/test_published_values.py; 1e-9: the fit of an exact power law is exact up to round-off
     u = np.geomspace(0.5, 20, 9)
     q = np.geomspace(100, 5000, 9)
     assert _slope(u, ehl.film_thickness_hamrock_dowson(u, 1457.0, RX_OUT, KAPPA_OUT, E_PRIME, ETA, XI)) \
@@ -27,6 +30,8 @@ def test_hamrock_dowson_exponents():
 
 
 def test_masjedi_khonsari_reading_exponents():
+    # an implementation check of the reading's exponents (not a reproduced result; the value with
+    # the printed prefactor is checked by hand in tests/test_published_values.py).
     # docs/theory/lubrication.md#film-thickness: U^(0.711 k^-0.023), W^(-0.09 k^-0.15). The load exponent was
     # -0.09 k^+0.15 before: the printed "a k - b" pattern of all three exponents reads as
     # a k^-b, so the W exponent is -0.09 k^-0.15 (docs/theory/lubrication.md#masjedi-khonsari-reading)
@@ -51,10 +56,17 @@ def test_hamrock_dowson_value_against_hand_calculation():
 
 
 def test_6208_outer_contact_is_mixed_at_500_rad_s():
-    # docs/theory/reference_cases.md: Lambda_out about 2.15 .. 3 (mixed) at 500 rad/s, F_r = 3000 N
-    h = ehl.film_thickness_hamrock_dowson(U_R, 1462.0, RX_OUT, KAPPA_OUT, E_PRIME, ETA, XI)
+    # Guessasma & Machado 2018 (sec. 3.1, Fig. 8b): in the steady phase the outer contacts run mixed,
+    # Lambda_out from 2.15 to 3, read off the figure. By hand at the Stribeck Q_max (1462 N): 2.121,
+    # 1.4 % below the figure's lower end (docs/theory/reference_cases.md): 2 % allows a read-off of a
+    # plotted curve (about 1.5 %) and fails a film 2 % thinner; the hand value itself to 1e-9
+    q = 1462.0
+    uu, gg, ww = ETA * U_R / (E_PRIME * RX_OUT), XI * E_PRIME, q / (E_PRIME * RX_OUT ** 2)
+    lam_hand = 3.63 * uu ** 0.68 * gg ** 0.49 * ww ** -0.073 * (1 - math.exp(-0.68 * KAPPA_OUT)) * RX_OUT / 3.75e-7
+    h = ehl.film_thickness_hamrock_dowson(U_R, q, RX_OUT, KAPPA_OUT, E_PRIME, ETA, XI)
     lam = ehl.film_parameter(h, 3.75e-7)
-    assert 2.0 < lam < 3.0
+    assert lam == pytest.approx(lam_hand, rel=1e-9)
+    assert lam == pytest.approx(2.15, rel=0.02)
     assert damping.lubrication_regime(lam, 1.0, 3.0) == damping.MIXED
 
 

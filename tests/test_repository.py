@@ -1,6 +1,7 @@
 """The repository itself: no generated output tracked, and the session guard
 (tests/conftest.py) that keeps test runs from writing into the working tree."""
 import subprocess
+from pathlib import Path
 
 import pytest
 
@@ -64,9 +65,12 @@ def test_validation_and_scenarios_refer_to_no_issue_tracker():
 
 
 def test_no_unused_imports_or_variables():
+    import os
     import shutil
+    import sys
 
-    ruff = shutil.which("ruff")
+    # the venv's own ruff first: a venv run without activation has its bin/ off PATH
+    ruff = shutil.which("ruff", path=os.pathsep.join([str(Path(sys.executable).parent), os.environ.get("PATH", "")]))
     if ruff is None:
         pytest.skip("ruff not installed (pip install ruff)")
     out = subprocess.run([ruff, "check", "--no-cache", "--select", "F401,F841", "tests", "validation", "scenarios",

@@ -19,6 +19,7 @@ from exudyn_bearing.physics import kinematics
 from exudyn_bearing.solvers.quasistatic import bearing_coefficients, solve_quasistatic
 from exudyn_bearing.solvers.reference import ReferenceEngine
 from exudyn_bearing.solvers.vibration import three_dof as td
+from conftest import error_lines
 
 W_ARM = np.array([1.0, 1.0, 1.0, 1.0 / 0.03, 1.0 / 0.03])  # moments / arm ~ forces, tilts x arm ~ lengths
 
@@ -172,8 +173,8 @@ def test_cli_stiffness_table(capsys, tmp_path):
 ])
 def test_cli_stiffness_bad_input(argv, word, capsys):
     assert main(argv) == 2
-    err = capsys.readouterr().err.strip()
-    assert len(err.splitlines()) == 1 and word in err
+    err = error_lines(capsys.readouterr().err)
+    assert len(err) == 1 and word in err[0]
 
 
 # -- against the dynamics --------------------------------------------------------------------------------

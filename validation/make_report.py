@@ -51,6 +51,7 @@ SCRIPTS = [
     ("bench_stiffness.py", []),
     ("highspeed_acbb120.py", []),
     ("bench_traction.py", []),
+    ("mutation_run.py", ["--quick"]),
 ]
 
 
@@ -467,6 +468,22 @@ def section_sweep():
             f"**{d['speedup']:.2f}** on the 2-core machine. Cases are written atomically, so an interrupted "
             "sweep resumes (tests/test_sweep.py); a case whose spec changed runs again, a failing case is "
             "recorded with its error while the others finish; `scheduler=` sends them to a Dask cluster.", ""]
+
+
+def section_mutation():
+    if not (OUT / "mutation_run.json").exists():
+        return []
+    d = load("mutation_run.json")
+    lines = ["## Mutation run", "",
+             f"Command: `python validation/mutation_run.py{' --quick' if d['set'] == 'quick' else ''}`: planted errors "
+             "of 2 % (and sign errors) in the relations of exudyn_bearing/physics/ and the contact kernel, each in "
+             "a temporary copy of the repository with a fresh numba cache, against the test files that check the "
+             f"relation. Score: **{d['caught']} of {d['applied']}** applied mutants caught"
+             + (f" ({d['total'] - d['applied']} not applied: their source snippet moved)" if d['total'] > d['applied']
+                else "") + ".", "", "| mutant | planted error | file | result |", "|---|---|---|---|"]
+    lines += [f"| {r['mutant']} | {r['error']} | {r['file'].replace('exudyn_bearing/', '')} | {r['result']} |"
+              for r in d["rows"]]
+    return lines + [""]
 
 
 def section_round_off():
@@ -906,7 +923,8 @@ def main(argv=None):
     body = (section_reference() + section_cage_step() + section_element() + section_cross() + section_peer()
             + section_figures()
             + section_work_precision() + section_sweep() + section_quasistatic() + section_three_dof()
-            + section_defects() + section_stiffness() + section_highspeed() + section_round_off())
+            + section_defects() + section_stiffness() + section_highspeed() + section_round_off()
+            + section_mutation())
     (HERE / "REPORT.md").write_text("\n".join(head + body))
     remove_unpublished()
     print(f"written {HERE / 'REPORT.md'}")
