@@ -187,7 +187,8 @@ def test_a_blow_up_or_an_unstable_step_is_refined(tmp_path, monkeypatch, capsys)
     rec = res["c"]
     assert rec["dt"] == 1e-6 and rec["summary"]["steps"] == 1000
     assert [r["dt"] for r in rec["retries"]] == [4e-6, 2e-6] and "cage" in rec["retries"][1]["reason"]
-    assert rec["warnings"] == []  # the kept run's
+    # the kept run's: no step warning (a 1 ms run's summary says it is too short to judge steadiness)
+    assert [w for w in rec["warnings"] if w["type"] == "StepSizeWarning"] == []
     # without refine the warning stays, in the record and on stderr with the case's name
     seen.clear()
     seen.append(None)

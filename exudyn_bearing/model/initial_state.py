@@ -11,6 +11,7 @@ from ..data import BallBearing, InputError
 from ..physics import kinematics
 from ..physics.load_distribution import static_equilibrium
 from .layout import H_E1, H_E2, HIST_N
+from .operating_geometry import operating_geometry
 
 __all__ = ["initial_state", "initial_history", "ring_mass_estimate", "state_from_ball_kinematics"]
 
@@ -41,7 +42,14 @@ def initial_state(bearing: BallBearing, scenario, start: dict | None = None) -> 
         raise InputError("initial: the quasi-static start needs the quasi-static solution; exudyn_bearing.simulate "
                          "and CreateBallBearing compute it, the engines take it as start=")
     z = b.n_balls
-    sol = static_equilibrium(b, s.Fr, s.Fa, hertz_method=s.hertz)
+    w0 = s.omega_at(0.0)
+    loaded = b
+    if s.ring_growth and w0 != 0.0:
+        # the inner groove as the run sees it at t = 0: grown with the ring's speed (the kernel's
+        # growth coefficient x omega^2), so that the start has no extra overlap to shed
+        loaded = b.replace(inner_race_radius=b.inner_race_radius
+                           + operating_geometry(b, omega_inner=w0).inner_ring_growth)
+    sol = static_equilibrium(loaded, s.Fr, s.Fa, hertz_method=s.hertz)
     rho_o, z_o = b.outer_groove_center
     a0 = b.free_contact_angle
     xb = np.zeros((z, 3))
@@ -61,7 +69,6 @@ def initial_state(bearing: BallBearing, scenario, start: dict | None = None) -> 
     vc = np.zeros((z, 3))
     ring = np.zeros(6)
     ring[:3] = sol.displacement
-    w0 = s.omega_at(0.0)
     if s.initial == "analytic" and w0 != 0.0:
         wc = float(kinematics.cage_speed(w0, 0.0, b.ball_radius, b.pitch_radius, a0))
         wr = float(kinematics.ball_spin_relative(w0, 0.0, b.ball_radius, b.pitch_radius, a0))

@@ -92,6 +92,7 @@ import numpy as np
 from ..._jit import announce_compilation
 from ...data import InputError, Lubricant, default_traction, load_bearing, load_lubricant
 from ...data.errors import check_finite, check_positive
+from ...data.traction import DEFAULT_REGULARIZING_SRR
 from ...model import layout as L
 from ...model.contact import forces
 from ...model.initial_state import initial_state
@@ -100,6 +101,7 @@ from ...model.parameters import scene_parameters
 from ...model.scenario import Scenario
 from ...model.stability import StepSizeWarning, ring_contact_stiffness, stable_step, step_warning
 from ...physics import hertz
+from ...physics.contact_slip import DEFAULT_N_ACROSS, DEFAULT_N_STRIPS
 from . import kernels as EK
 from .items import ItemsMixin
 from .markers import RING_REGISTRY, initial_ring_pose, ring_from_marker, ring_mobility
@@ -208,7 +210,8 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
                  tangentialStiffnessRatio=2.0 / 3.0, stepSize=1e-6, innerRingSpeed=None, outerRingSpeed=None,
                  initialOmega=0.0, initialLoad=(0.0, 0.0), initial="analytic", sampleInterval=1e-4,
                  mode="bodies", subSteps=1, contactLaw="hertz", powerLaw=(0.0, 1.5, 0.0), tractionLevel="point",
-                 traction=None, nStrips=16, nAcross=1, tractionRegularizingSrr=0.01, ringGrowth=True,
+                 traction=None, nStrips=DEFAULT_N_STRIPS, nAcross=DEFAULT_N_ACROSS,
+                 tractionRegularizingSrr=DEFAULT_REGULARIZING_SRR, ringGrowth=True,
                  temperatures=None, control="auto", initialState=None, defects=(),
                  signalInterval=None, show=False):
         announce_compilation(forces, EK.fast_step if mode == "fast" else EK.element_rhs)
