@@ -154,3 +154,76 @@ def test_palmgren_hand_calculation():
     f1 = ls.palmgren_load_factor(3000.0, 19000.0, 0.0005, 0.55)
     assert f1 == pytest.approx(0.0005 * (3000 / 19000) ** 0.55)
     assert ls.palmgren_load_moment(f1, 3000.0, 0.06) == pytest.approx(f1 * 3000 * 0.06)
+
+
+# ---- the quasi-static solver's loss report ----------------------------------------------------------
+@pytest.fixture(scope="module")
+def sol6208():
+    import exudyn_bearing as eb
+    return eb.solve_quasistatic("6208", Fr=3000.0, omega=500.0, stiffness=False)
+
+
+def test_quasistatic_power_loss_components_and_torque(sol6208):
+    from exudyn_bearing.solvers.quasistatic.losses import power_losses
+    import exudyn_bearing as eb
+
+    s = sol6208
+    out = power_losses(s)
+    p = out["power_loss"]
+    assert p["traction"] == s.dissipation_total
+    assert p["cage"].startswith("not modelled") and p["seals"] == "not modelled"
+    assert out["power_loss_total"] == pytest.approx(sum(p[k] for k in ("traction", "ehl_rolling", "hysteresis",
+                                                                       "drag")), rel=1e-14)
+    assert out["friction_torque_total"] == pytest.approx(out["power_loss_total"] / 500.0, rel=1e-14)
+    # ball 0 (psi = 0) by hand: Harris & Kotzalas' R_x of the inner race, R_x = (D/2)(1 - gamma),
+    # gamma = D cos(alpha) / d_m at the ball centre's orbit; F_R from the source's equation, 2 F_R u_r
+    b = eb.catalog["6208"]
+    bl = s.balls
+    dw, dm = b.ball_diameter, 2 * bl["ball_center_r"][0]
+    rx = dw / 2 * (1 - dw / dm)
+    e_prime = b.material.youngs_modulus / (1 - b.material.poisson_ratio ** 2)   # E' of two equal steels
+    q, a_, b_, u = bl["q_inner"][0], bl["a_inner"][0], bl["b_inner"][0], bl["u_roll_inner"][0]
+    lub = eb.data.lubricants[s.lubricant]
+    uu, g, w = lub.viscosity * u / (e_prime * rx), lub.pressure_viscosity * e_prime, q / (e_prime * rx ** 2)
+    f_r = 2.86 * e_prime * rx ** 2 * (a_ / b_) ** 0.348 * g ** 0.022 * uu ** 0.66 * w ** 0.47
+    f_h = 3 / 16 * 0.007 * q * b_ / rx
+    # the solver's R_x uses the contact point's radius (ball centre - r_b cos alpha): the same to 1e-9
+    assert out["power_loss_inner_ball"][0] == pytest.approx(2 * f_r * u + f_h * u, rel=1e-6)
+    # drag in air of ball 0 at the orbit speed, Newton regime: pi C_D rho D^2 (d_m omega_m)^2 / 32 times v
+    v = bl["ball_center_r"][0] * bl["orbital_speed"][0]
+    f_d = math.pi * 0.44 * ls.AIR_DENSITY * dw ** 2 * (2 * v) ** 2 / 32
+    assert out["drag_ball"][0] == pytest.approx(f_d * v, rel=1e-12)
+
+
+def test_quasistatic_losses_in_to_dict(sol6208):
+    d = sol6208.to_dict()
+    for k in ("power_loss", "power_loss_total", "friction_torque_total"):
+        assert k in d and k in d["units"]
+    assert set(d["power_loss"]) >= {"traction", "ehl_rolling", "hysteresis", "drag", "cage", "seals"}
+
+
+def test_quasistatic_losses_outer_ring_driven_and_at_rest():
+    import exudyn_bearing as eb
+    from exudyn_bearing.solvers.quasistatic.losses import power_losses
+
+    s = eb.solve_quasistatic("6208", Fr=3000.0, omega=0.0, omega_outer=300.0, stiffness=False)
+    out = power_losses(s)
+    assert out["power_loss"]["ehl_rolling"] > 0.0
+    assert out["friction_torque_total"] == pytest.approx(out["power_loss_total"] / 300.0, rel=1e-14)
+    s0 = eb.solve_quasistatic("6208", Fr=3000.0, omega=0.0, stiffness=False)
+    out0 = power_losses(s0)
+    assert out0["power_loss_total"] == 0.0 and math.isnan(out0["friction_torque_total"])
+
+
+def test_quasistatic_losses_bad_input(sol6208):
+    from dataclasses import replace
+
+    from exudyn_bearing.solvers.quasistatic.losses import loss_keys, power_losses
+
+    with pytest.raises(InputError, match="oil_volume_fraction"):
+        power_losses(sol6208, oil_volume_fraction=2.0)
+    with pytest.raises(InputError, match="lubricant"):
+        power_losses(sol6208, lubricant="no_such_oil")
+    other = replace(sol6208, bearing_name="not_in_catalogue")
+    keys = loss_keys(other)
+    assert keys["power_loss"] is None and "not_in_catalogue" in keys["power_loss_notes"]["error"]

@@ -12,6 +12,7 @@ from ..outputs.plotting_quasistatic import plot_loads_angles, plot_slip
 from ..physics.hertz import METHODS
 from ..solvers.quasistatic import solve_quasistatic
 from ..solvers.quasistatic.kinematics import CONTROLS
+from ..solvers.quasistatic.losses import LOSS_COMPONENTS
 from ..solvers.quasistatic.ring import DOF_NAMES
 from .common import add_bearing_argument, add_load_arguments, bearing_from_args, finite_float
 
@@ -79,6 +80,10 @@ def run(args):
         print(json.dumps(to_jsonable(d), indent=2))
         return
     print(s.summary())
+    if d["power_loss"] is not None:  # solvers/quasistatic/losses.py
+        pl = d["power_loss"]
+        print(f"power loss {d['power_loss_total']:.4g} W (" + ", ".join(f"{k} {pl[k]:.4g}" for k in LOSS_COMPONENTS)
+              + f"), friction torque {d['friction_torque_total']:.4g} N m; cage and seals not modelled")
     bl = s.balls
     print(f"{'ball':>4} {'psi':>6} {'Q_in N':>9} {'Q_out N':>9} {'a_in':>6} {'a_out':>6} {'pmax_in':>8} "
           f"{'w_m':>8} {'beta':>6} {'sr_in':>7} {'sr_out':>7} {'P_in W':>8} {'P_out W':>8}")
