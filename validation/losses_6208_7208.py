@@ -136,6 +136,11 @@ def main():
     ehl_rr = np.array([r["ehl_rolling_Nmm"] / r["skf_rolling_Nmm"] for r in rows])
     print(f"project / SKF total: {ratio.min():.2f} - {ratio.max():.2f} (median {np.median(ratio):.2f}); "
           f"project EHL rolling / SKF rolling: {ehl_rr.min():.2f} - {ehl_rr.max():.2f} (median {np.median(ehl_rr):.2f})")
+    lo = np.array([r["palmgren_f0_1_Nmm"] for r in rows])
+    hi = np.array([r["palmgren_f0_2_Nmm"] for r in rows])
+    tq = np.array([r["torque_Nmm"] for r in rows])
+    print(f"project total against Palmgren's band f0 = 1-2: {np.sum((tq >= lo) & (tq <= hi))} of {len(rows)} inside, "
+          f"{np.sum(tq > hi)} above, {np.sum(tq < lo)} below")
     print("where they part (lowest and highest speed of each load):")
     for g in sorted({(r["bearing"], r["Fr_N"], r["Fa_N"]) for r in rows}):
         rr = [r for r in rows if (r["bearing"], r["Fr_N"], r["Fa_N"]) == g]
