@@ -79,6 +79,16 @@ def test_lubricant_at_gives_a_solver_lubricant():
     assert lub.mu_full_film == 0.02 and lub.name == "ISO_VG_68_mineral@333.15K"
 
 
+def test_quasistatic_losses_with_a_lubricant_at_temperature():
+    import exudyn_bearing as eb
+    from exudyn_bearing.solvers.quasistatic.losses import power_losses
+
+    lub = lp.lubricant_at("ISO_VG_68_mineral", 333.15)
+    s = eb.solve_quasistatic("6208", Fr=3000.0, omega=500.0, lubricant=lub, stiffness=False)
+    d = s.to_dict()            # the solution's lubricant name "ISO_VG_68_mineral@333.15K" is rebuilt
+    assert d["power_loss"]["ehl_rolling"] == power_losses(s, lubricant=lub)["power_loss"]["ehl_rolling"] > 0.0
+
+
 def test_bad_input():
     with pytest.raises(InputError, match=r"temperature: 600 K is outside the range of lubricant 'MIL-L-23699'"):
         lp.properties_at("MIL-L-23699", 600.0)

@@ -30,9 +30,11 @@ import math
 import numpy as np
 
 from ...data import InputError, Lubricant, load_bearing, lubricants
+from ...data.lubricants_temperature import lubricants_temperature
 from ...physics import hertz as _hz
 from ...physics import losses as _ls
 from ...physics.geometry import raceway_radii
+from ...physics.lubricant_properties import lubricant_at
 
 __all__ = ["LOSS_COMPONENTS", "LOSS_UNITS", "NOT_MODELLED", "loss_keys", "power_losses"]
 
@@ -71,6 +73,12 @@ def _lubricant(sol, lubricant):
     if isinstance(lubricant, Lubricant):
         return lubricant
     name = sol.lubricant if lubricant is None else str(lubricant)
+    base, at, temp = name.rpartition("@")[0], "@" in name, name.rpartition("@")[2].removesuffix("K")
+    if name not in lubricants and at and base in lubricants_temperature:  # lubricant_at(base, T)'s name
+        try:
+            return lubricant_at(base, float(temp))
+        except ValueError:
+            pass
     if name not in lubricants:
         raise InputError(f"lubricant: {name!r} is not in the catalogue; pass the Lubricant the solution was "
                          "computed with")
@@ -96,7 +104,8 @@ def power_losses(sol, bearing=None, lubricant=None, *, hysteresis_loss_factor=_l
     bearing : BallBearing or str, optional
         The bearing solved (default: the catalogue entry named like the solution's bearing).
     lubricant : Lubricant or str, optional
-        The lubricant solved with (default: the catalogue entry of the solution's name).
+        The lubricant solved with (default: the catalogue entry of the solution's name, or
+        ``lubricant_at(name, T)`` for the name ``"name@TK"`` it gives).
     hysteresis_loss_factor : float
         alpha_h [-] (default 0.007, hardened bearing steel).
     oil_volume_fraction : float
