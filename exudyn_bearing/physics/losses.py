@@ -61,6 +61,8 @@ __all__ = [
     "AIR_VISCOSITY",
     "HYSTERESIS_LOSS_FACTOR_STEEL",
     "SKF_CONSTANTS",
+    "SKF_K_RS",
+    "SKF_MU_BOUNDARY",
     "SKF_MU_EHL",
     "ball_drag_force",
     "ehl_rolling_force",
