@@ -16,6 +16,7 @@ from ..solvers.quasistatic.kinematics import CONTROLS
 from .common import (add_strip_arguments, add_bearing_argument, add_hold_arguments, add_lubricant_argument, add_load_arguments,
                      add_ring_growth_argument, add_traction_argument, bearing_from_args, explained, finite_float,
                      fixed_from_args, format_value, lubricant_from_args, solver_header, traction_from_args)
+from ..solvers.quasistatic.losses import LOSS_COMPONENTS
 
 
 def add_parser(sub):
@@ -85,6 +86,10 @@ def run(args):
         unit = "N m" if name.startswith("tilt") else "N"
         print(f"{name} held ({why}); reaction {format_value(s.reactions.get(name, 0.0), unit)} {unit}")
     print(solver_header(lub, traction, args.ring_growth))
+    if d["power_loss"] is not None:  # solvers/quasistatic/losses.py
+        pl = d["power_loss"]
+        print(f"power loss {d['power_loss_total']:.4g} W (" + ", ".join(f"{k} {pl[k]:.4g}" for k in LOSS_COMPONENTS)
+              + f"), friction torque {d['friction_torque_total']:.4g} N m; cage and seals not modelled")
     print_ball_table(s.balls)
     if args.plot:
         print(f"plot: {d['plot']}")

@@ -7,6 +7,7 @@ import numpy as np
 
 from ...data import InputError
 from ...model.initial_state import state_from_ball_kinematics
+from .losses import LOSS_UNITS, loss_keys
 
 __all__ = ["QuasiStaticSolution", "UNITS"]
 
@@ -145,6 +146,7 @@ class QuasiStaticSolution:
         d["drive_power"] = self.drive_power
         d["energy_residual"] = self.energy_residual
         d["qv_total"] = float(np.sum(b["qv_inner_ball"]) + np.sum(b["qv_outer_ball"]))
+        d.update(loss_keys(self))  # power_loss by component, power_loss_total, friction_torque_total (.losses)
         d.update(self.geometry)
         d["stiffness"] = self.stiffness
         d["stiffness_check"] = self.stiffness_check
@@ -157,7 +159,7 @@ class QuasiStaticSolution:
         d["iterations"] = self.iterations
         d["n_strips"], d["n_across"] = self.n_strips, self.n_across
         d["wall_s"] = self.wall_s
-        d["units"] = dict(UNITS)
+        d["units"] = {**UNITS, **LOSS_UNITS}
         return d
 
     def dynamic_start(self, bearing) -> dict:
