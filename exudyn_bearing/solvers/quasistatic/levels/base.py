@@ -32,7 +32,7 @@ asarray = np.asarray
 __all__ = ["IMPLICIT_SOLVERS", "LEVEL_OPTIONS", "LevelBearing"]
 
 #: Options every level takes (the ball element's names).
-LEVEL_OPTIONS = ("lubricant", "initialLoad", "initialOmega", "ringGrowth", "temperatures", "hertzModel",
+LEVEL_OPTIONS = ("lubricant", "initialLoad", "loadAngle", "initialOmega", "ringGrowth", "temperatures", "hertzModel",
                  "sampleInterval", "coefficients", "coefficientSpeeds", "show")
 #: Exudyn's implicit dynamic solvers (names of exudyn.DynamicSolverType).
 IMPLICIT_SOLVERS = ("GeneralizedAlpha", "TrapezoidalIndex2")
@@ -97,7 +97,7 @@ class LevelBearing:
     model = ""
 
     def __init__(self, mbs, bearing, markerInnerRing, markerOuterRing, lubricant: Lubricant | None = None,
-                 initialLoad=(0.0, 0.0), initialOmega=0.0, ringGrowth=False, temperatures=None, hertzModel="exact",
+                 initialLoad=(0.0, 0.0), loadAngle=0.0, initialOmega=0.0, ringGrowth=False, temperatures=None, hertzModel="exact",
                  sampleInterval=1e-4, coefficients=None, coefficientSpeeds=None, show=False):
         self.mbs = mbs
         self.bearing = b = load_bearing(bearing)
@@ -121,7 +121,8 @@ class LevelBearing:
                                                 lubricant=self.lubricant, hertz_method=hertzModel, stiffness=False)
         #: inner-ring pose (d_x, d_y, d_z, theta_x, theta_y) at the operating point (outer-ring frame):
         #: place the inner ring there to start in equilibrium
-        self.initialRingDisplacement = np.array(self.operatingPoint.displacement, float)
+        self.loadAngle = check_finite("loadAngle", loadAngle)
+        self.initialRingDisplacement = self.rotation() @ np.array(self.operatingPoint.displacement, float)
         self.coefficients = coefficients if coefficients is not None else self._table(coefficientSpeeds)
         a0 = b.free_contact_angle
         #: cage and ball-spin speeds per unit relative ring speed (kinematic, free contact angle)
@@ -142,6 +143,14 @@ class LevelBearing:
         self._evaluations = 0
         self._setup()
         self._add_items(mbs, show)
+
+    def rotation(self):
+        """5x5 map from the quasi-static solver's axes (radial load along x) to the outer-ring frame, where the
+        radial load points at ``loadAngle`` from x: translations and tilts turn about z."""
+        c, s = math.cos(self.loadAngle), math.sin(self.loadAngle)
+        t = np.eye(5)
+        t[np.ix_([0, 1], [0, 1])] = t[np.ix_([3, 4], [3, 4])] = [[c, -s], [s, c]]
+        return t
 
     # -- set-up -------------------------------------------------------------
     def _table(self, speeds):

@@ -129,7 +129,9 @@ class QuasiStaticBearing(LevelBearing):
         self._cflat = np.zeros(25)
         c = self.coefficients
         self._speeds = np.array(c.speeds, float)
-        self._ctab = np.ascontiguousarray(np.array(c.damping, float).reshape(-1, 25))
+        t = self.rotation()
+        self._ctab = np.ascontiguousarray(np.einsum("ij,njk,lk->nil", t, np.array(c.damping, float), t)
+                                          .reshape(-1, 25))
         self._e_prime = _hz.material_reduced_modulus(b.material)
         self._method = _hz.method_code(self.hertzModel)
         self._sin_a0 = math.sin(b.free_contact_angle)

@@ -10,7 +10,9 @@ table's ends) and the bearing's force and moment on the inner ring are
     F = -L - K (u - u0) - C u',   L = (F_r, 0, F_a, 0, 0),
 
 the reaction to the operating loads plus the linear restoring force about
-the operating point (valid for small motions about it; a rotor whose
+the operating point (``loadAngle`` turns the table's axes, radial load along
+x, to a radial load at that azimuth in the outer-ring frame: T K T^T, T u0,
+T L) (valid for small motions about it; a rotor whose
 static loads differ from ``initialLoad`` is outside the linearisation).
 ``operatingPoint`` holds the quasi-static solution, ``coefficients`` the table.
 
@@ -69,11 +71,14 @@ class LinearBearing(LevelBearing):
             raise InputError(f"initialLoad: {self.initialLoad} differs from the coefficient table's operating load "
                              f"{table_load}; the linear level is linearised about the table's load")
         self._speeds = np.array(c.speeds, float)
-        self._table = np.ascontiguousarray(np.concatenate([np.array(c.stiffness).reshape(-1, 25),
-                                                           np.array(c.damping).reshape(-1, 25), disp], axis=1))
+        t = self.rotation()
+        k = np.einsum("ij,njk,lk->nil", t, np.array(c.stiffness), t)
+        cc = np.einsum("ij,njk,lk->nil", t, np.array(c.damping), t)
+        self._table = np.ascontiguousarray(np.concatenate([k.reshape(-1, 25), cc.reshape(-1, 25), disp @ t.T],
+                                                          axis=1))
         self._row = np.zeros(55)
-        self._loads = np.array([self.initialLoad[0], float(op.get("Fy", 0.0)), self.initialLoad[1],
-                                float(op.get("Mx", 0.0)), float(op.get("My", 0.0))])
+        self._loads = t @ np.array([self.initialLoad[0], float(op.get("Fy", 0.0)), self.initialLoad[1],
+                                    float(op.get("Mx", 0.0)), float(op.get("My", 0.0))])
         v3 = np.zeros(3)
         self._kernel = entry_point(linear_forces, (v3, v3, v3, v3, self._speeds, self._table, self._row,
                                                    self._loads, self._pose, self._out, self._force))
@@ -89,8 +94,13 @@ class LinearBearing(LevelBearing):
             return super()._connector_parameters()
         k6, c6, o6 = np.zeros((6, 6)), np.zeros((6, 6)), np.zeros(6)
         k6[:5, :5], c6[:5, :5], o6[:5] = k, c, off
-        self._constant = True
         return {"stiffness": k6, "damping": c6, "offset": o6}
+
+    def samples(self):
+        if self._speeds.size == 1 and not self._samples:
+            raise RuntimeError("samples: the one-speed linear level is Exudyn's own connector without a user "
+                               "function; record its force with a SensorObject (OutputVariableType.Force)")
+        return super().samples()
 
     def _evaluate(self, d, r, v, w):
         self._kernel(d, r, v, w, self._speeds, self._table, self._row, self._loads, self._pose, self._out,
