@@ -145,7 +145,11 @@ def check_varying_compliance(out, omega=500.0, load=500.0, t_end=0.4):
         peak = float(f[band][np.argmax(a[band])])
         df = f[1] - f[0]
         harm = [float(a[np.argmin(np.abs(f - n * f_vc))]) for n in (1, 2, 3)]
-        res[f"Pd_{pd * 1e6:g}um"] = {"f_vc_Hz": f_vc, "peak_Hz": peak, "resolution_Hz": float(df),
+        k_xx = float(np.interp(omega, br.coefficients.speeds, br.coefficients.stiffness[:, 0, 0]))
+        f_n = math.sqrt(k_xx / 2.5) / (2.0 * math.pi)
+        print(f"    P_d = {pd * 1e6:4.0f} um: linearised k_xx {k_xx:.3g} N/m, shaft natural frequency "
+              f"sqrt(k_xx/m)/2 pi = {f_n:.0f} Hz")
+        res[f"Pd_{pd * 1e6:g}um"] = {"natural_frequency_Hz": f_n, "f_vc_Hz": f_vc, "peak_Hz": peak, "resolution_Hz": float(df),
                                      "amplitude_m": harm, "x_ptp_m": float(np.ptp(s["displacement"][keep, 0])),
                                      "wall_s": wall}
         print(f"    P_d = {pd * 1e6:4.0f} um: Z omega_c / 2 pi = {f_vc:.1f} Hz; spectrum peak above it/2 at "
