@@ -97,3 +97,12 @@ def test_errors_name_the_parameter_and_limit():
     m_mass = mbs.AddMarker(MarkerBodyMass(bodyNumber=1))
     with pytest.raises(eb.InputError, match="^markerInnerRing: "):
         eb.CreateBallBearing(mbs, "6208", m_mass, m_g, model="linear", initialLoad=(FR, 0.0))
+
+
+def test_runtime_load_beyond_the_elastic_limit_stops_the_run():
+    # a tilt of 0.02 rad presses the balls far beyond the load at which the Hertz pressure reaches 4.2 GPa
+    sc, mbs, node, m_b, m_g = shaft()
+    br = eb.CreateBallBearing(mbs, "6208", m_b, m_g, model="quasistatic", coefficientSpeeds=[0.0])
+    br._restart(0.0)
+    with pytest.raises(eb.SimulationError, match=r"^load: .*4.2 GPa"):
+        br._evaluate(np.zeros(3), np.array([0.02, 0.0, 0.0]), np.zeros(3), np.zeros(3))

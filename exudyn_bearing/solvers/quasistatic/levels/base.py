@@ -134,7 +134,7 @@ class LevelBearing:
         self._pose = np.zeros(5)
         self._cage = np.zeros(2)
         self._rot0 = np.eye(3)
-        self._qmax = np.zeros(2)
+        self._qmax = np.zeros(3)
         self._t_last = -math.inf
         self._t_start = -math.inf
         self.restarts = 0
@@ -239,7 +239,7 @@ class LevelBearing:
         self._evaluations = 0
 
     def _sample_row(self, t):
-        return np.concatenate([[t], self._pose, self._force, self._cage, self._qmax])
+        return np.concatenate([[t], self._pose, self._force, self._cage, self._qmax[:2]])
 
     def _check_ball_load(self, t, q_max):
         if not q_max <= self._q_limit:  # also NaN

@@ -32,6 +32,7 @@ import math
 import numpy as np
 
 from ...._jit import kernel
+from ....data import MAX_FREE_CONTACT_ANGLE
 from ....model.operating_geometry import operating_geometry
 from ....physics import hertz as _hz
 from ..balls import B_NIR, B_NIZ, B_QI, B_QO, NB, _ring_forces
@@ -67,7 +68,8 @@ def level_forces(d, r, v, w, state, geo, kc, kr, sin_a0, mass, inertia, e_prime,
     state: [last Tait-Bryan spin angle, unwrapped spin angle, cage angle at zero spin angle];
     geo: (rho_i, z_i, rho_o, z_o, r_ci, r_co, r_b); ctab (n, 25): damping matrices at ``speeds``.
     Writes u (5,), the balls table, ``out`` (6,) = -(F, 0), ``force`` = F (5,), ``cage`` (angle, speed) and
-    ``qmax`` (largest inner and outer ball load); returns the largest ball load."""
+    ``qmax`` (largest inner and outer ball load, largest loaded inner contact angle); returns the largest ball
+    load."""
     dc = r[2] - state[0]
     dc -= _TWO_PI * math.floor(dc / _TWO_PI + 0.5)
     state[0] = r[2]
@@ -95,9 +97,12 @@ def level_forces(d, r, v, w, state, geo, kc, kr, sin_a0, mass, inertia, e_prime,
     rate4 = w[1] + ws * r[0]
     qmax[0] = 0.0
     qmax[1] = 0.0
+    qmax[2] = 0.0
     for j in range(z):
         qmax[0] = max(qmax[0], balls[j, B_QI])
         qmax[1] = max(qmax[1], balls[j, B_QO])
+        if balls[j, B_QI] > 0.0:  # contact angle from the groove bottom, inner race
+            qmax[2] = max(qmax[2], abs(math.atan2(-balls[j, B_NIZ], -balls[j, B_NIR])))
     for i in range(5):
         c = (cflat[5 * i] * rate0 + cflat[5 * i + 1] * rate1 + cflat[5 * i + 2] * rate2 + cflat[5 * i + 3] * rate3
              + cflat[5 * i + 4] * rate4)
@@ -142,7 +147,7 @@ class QuasiStaticBearing(LevelBearing):
         self._kernel = entry_point(level_forces, (
             v3, v3, v3, v3, self._state, self._geo, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0, self._speeds, self._ctab,
             self._cflat, self._psi, self._m_w2, self._fto, self._fti, self._balls, self._gen, self._pose, self._out,
-            self._force, self._cage, np.zeros(2)))
+            self._force, self._cage, np.zeros(3)))
 
     def _update_geometry(self, speed):
         """Grooves, ball mass and inertia at ``speed`` (rigid rings: once)."""
@@ -174,6 +179,14 @@ class QuasiStaticBearing(LevelBearing):
                             self._pose, self._out, self._force, self._cage, self._qmax)
         if not qmax <= self._q_limit:
             self._check_ball_load(self._t_last, qmax)
+        if self._qmax[2] > MAX_FREE_CONTACT_ANGLE:
+            from ....model.stability import SimulationError
+
+            raise SimulationError(f"tilt: at t = {self._t_last:.6g} s a loaded contact sits "
+                                  f"{math.degrees(self._qmax[2]):.1f} deg from the groove bottom, beyond the "
+                                  f"{math.degrees(MAX_FREE_CONTACT_ANGLE):.0f} deg the grooves take (tilt "
+                                  f"{math.degrees(math.hypot(self._pose[3], self._pose[4])):.3g} deg, axial "
+                                  f"{self._pose[2]:.3g} m); reduce the moment or axial load")
 
     def _sample_row(self, t):
         b = self._balls
