@@ -112,7 +112,7 @@ def main(argv=None):
             walls.append(run.solve)
         med = sorted(walls)[len(walls) // 2]
         res[label] = {"wall_per_sim_s": med / t_end, "walls": walls, "step": h, "t_end": t_end, "solver": solver}
-        print(f"  {label:40s} {solver:17s} {h:7.0e} {t_end:7.3f} {med / t_end:11.3f}")
+        print(f"  {label:40s} {solver:17s} {h:7.1e} {t_end:7.3f} {med / t_end:11.3f}")
     ref = res["balls, fast mode"]["wall_per_sim_s"]
     for label in res:
         res[label]["cheaper_than_balls_fast"] = ref / res[label]["wall_per_sim_s"]
