@@ -23,6 +23,8 @@ makes one compiled call per evaluation.
 """
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from ...._jit import kernel
@@ -77,6 +79,7 @@ class LinearBearing(LevelBearing):
         self._table = np.ascontiguousarray(np.concatenate([k.reshape(-1, 25), cc.reshape(-1, 25), disp @ t.T],
                                                           axis=1))
         self._row = np.zeros(55)
+        self._cage[0] = math.nan  # the linear level has no ball set: no cage angle, only the kinematic cage speed
         self._loads = t @ np.array([self.initialLoad[0], float(op.get("Fy", 0.0)), self.initialLoad[1],
                                     float(op.get("Mx", 0.0)), float(op.get("My", 0.0))])
         v3 = np.zeros(3)
