@@ -50,13 +50,14 @@ def test_static_equilibrium_is_the_quasistatic_solution(model, speeds):
     assert abs(got[1]) < 5e-3 * ref[0]
 
 
-def test_quasistatic_level_runs_explicit_solver():
-    # the same equilibrium under RK44 (explicit): the level needs no Jacobian there
+@pytest.mark.parametrize("solver, step", [("RK44", 2e-5), ("VelocityVerlet", 2e-5), ("TrapezoidalIndex2", 1e-4)])
+def test_quasistatic_level_runs_other_solvers(solver, step):
+    # the same equilibrium under two explicit solvers and Exudyn's other implicit one
     sc, mbs, node, m_b, m_g = shaft()
     br = eb.CreateBallBearing(mbs, "6208", m_b, m_g, model="quasistatic", initialLoad=(FR, FA),
                               coefficientSpeeds=SPEEDS, hertzModel="hamrock_brewe")
     mbs.Assemble()
-    ss = br.SimulationSettings(0.02, stepSize=2e-5, solverType="RK44")
+    ss = br.SimulationSettings(0.02, stepSize=step, solverType=solver)
     mbs.SolveDynamic(ss, solverType=ss.timeIntegration.solverType)
     ref = eb.solve_quasistatic("6208", Fr=FR, Fa=FA, ring_growth=False, hertz_method="hamrock_brewe").displacement
     got = br.samples()["displacement"][-1]
