@@ -66,6 +66,8 @@ def one_bearing(model, options, solver, h, t_end):
             warnings.simplefilter("ignore")
             mbs.SolveDynamic(ss, solverType=ss.timeIntegration.solverType)
         run.solve = time.perf_counter() - t0
+        run.evaluations = (br.samples()["evaluations"] / round(t_end / h)
+                           if model != "balls" and options.get("coefficientSpeeds") is None else None)
     return run
 
 
@@ -89,7 +91,7 @@ def runup(model, t_end=1.0, options=None):
     mbs.SolveDynamic(ss, solverType=ss.timeIntegration.solverType)
     wall = time.perf_counter() - t0
     w = mbs.GetSensorStoredData(speed)
-    return wall, float(w[-1, 3])
+    return wall, float(w[-1, 3]), bearings["A"].samples()["evaluations"] / round(t_end / 1e-4)
 
 
 def main(argv=None):
@@ -102,7 +104,7 @@ def main(argv=None):
     out.mkdir(parents=True, exist_ok=True)
     res = {}
     print(f"one 6208 on a 2.5 kg shaft, F_r = {FR:g} N, {OMEGA:g} rad/s; median of {args.repeat} runs, solver time")
-    print(f"  {'level':40s} {'solver':17s} {'step':>7s} {'sim':>7s} {'wall/sim s':>11s}")
+    print(f"  {'level':40s} {'solver':17s} {'step':>7s} {'sim':>7s} {'wall/sim s':>11s} {'evals/step':>10s}")
     for label, model, options, solver, h, t_end in CASES:
         run = one_bearing(model, options, solver, h, t_end)
         run()  # warm-up: compiles the kernels
@@ -111,8 +113,10 @@ def main(argv=None):
             run()
             walls.append(run.solve)
         med = sorted(walls)[len(walls) // 2]
-        res[label] = {"wall_per_sim_s": med / t_end, "walls": walls, "step": h, "t_end": t_end, "solver": solver}
-        print(f"  {label:40s} {solver:17s} {h:7.1e} {t_end:7.3f} {med / t_end:11.3f}")
+        res[label] = {"wall_per_sim_s": med / t_end, "walls": walls, "step": h, "t_end": t_end, "solver": solver,
+                      "evaluations_per_step": run.evaluations}
+        per = f"{run.evaluations:10.2f}" if run.evaluations is not None else f"{'-':>10s}"
+        print(f"  {label:40s} {solver:17s} {h:7.1e} {t_end:7.3f} {med / t_end:11.3f} {per}")
     ref = res["balls, fast mode"]["wall_per_sim_s"]
     for label in res:
         res[label]["cheaper_than_balls_fast"] = ref / res[label]["wall_per_sim_s"]
@@ -124,9 +128,10 @@ def main(argv=None):
         for label, model, options in (("quasistatic, hamrock_brewe", "quasistatic", {"hertzModel": "hamrock_brewe"}),
                                       ("quasistatic, exact Hertz", "quasistatic", {}),
                                       ("linear, speed table", "linear", {})):
-            wall, w_end = runup(model, options=options)
-            res[f"runup {label}"] = {"wall_s": wall, "final_speed": w_end}
-            print(f"  {label:40s} {wall:7.1f} s wall, final speed {w_end:.0f} rad/s")
+            wall, w_end, per = runup(model, options=options)
+            res[f"runup {label}"] = {"wall_s": wall, "final_speed": w_end, "evaluations_per_step": per}
+            print(f"  {label:40s} {wall:7.1f} s wall, final speed {w_end:.0f} rad/s, {per:.2f} evaluations per "
+                  "step and bearing")
     (out / "bench_levels.json").write_text(json.dumps(res, indent=1))
     print("written:", out / "bench_levels.json")
 
