@@ -107,7 +107,7 @@ def CreateBallBearing(mbs, bearing: BallBearing | str, markerInnerRing, markerOu
     equilibrium, no ball DOFs) or ``"linear"`` (speed-dependent 5x5 stiffness
     and damping about the operating point ``initialLoad``); the last two are
     :mod:`exudyn_bearing.solvers.quasistatic.levels` (README, "Bearing levels
-    in Exudyn") and take ``lubricant``, ``initialLoad``, ``initialOmega``,
+    in Exudyn") and take ``lubricant``, ``initialLoad``, ``loadAngle``, ``initialOmega``,
     ``ringGrowth``, ``temperatures``, ``hertzModel``, ``sampleInterval``,
     ``coefficients``, ``coefficientSpeeds``, ``show`` (quasistatic also
     ``cageAngle``).
