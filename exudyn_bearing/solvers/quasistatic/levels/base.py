@@ -21,7 +21,7 @@ import math
 
 import numpy as np
 
-from ....data import InputError, Lubricant, default_lubricant, load_bearing
+from ....data import InputError, Lubricant, load_bearing, load_lubricant
 from ....data.errors import check_finite, check_positive
 from ....model.load_range import MAX_CONTACT_PRESSURE, check_load_range
 from ....physics import kinematics as _kin
@@ -96,12 +96,13 @@ class LevelBearing:
 
     model = ""
 
-    def __init__(self, mbs, bearing, markerInnerRing, markerOuterRing, lubricant: Lubricant | None = None,
-                 initialLoad=(0.0, 0.0), loadAngle=0.0, initialOmega=0.0, ringGrowth=False, temperatures=None, hertzModel="exact",
-                 sampleInterval=1e-4, coefficients=None, coefficientSpeeds=None, show=False):
+    def __init__(self, mbs, bearing, markerInnerRing, markerOuterRing, lubricant: Lubricant | str | None = None,
+                 initialLoad=(0.0, 0.0), loadAngle=0.0, initialOmega=0.0, ringGrowth=True, temperatures=None,
+                 hertzModel="exact", sampleInterval=1e-4, coefficients=None, coefficientSpeeds=None, show=False):
         self.mbs = mbs
         self.bearing = b = load_bearing(bearing)
-        self.lubricant = default_lubricant() if lubricant is None else lubricant
+        #: the lubricant (None: the quasi-static solver's default)
+        self.lubricant = None if lubricant is None else load_lubricant(lubricant)
         self.initialLoad = _load_pair(initialLoad)
         self.initialOmega = check_finite("initialOmega", initialOmega)
         self.ringGrowth = bool(ringGrowth)
