@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import argparse
 import importlib.util
+import inspect
 import json
 import math
 import time
@@ -33,7 +34,7 @@ from exudyn.itemInterface import (LoadForceVector, MarkerBodyRigid, NodeRigidBod
                                   ObjectConnectorRigidBodySpringDamper, ObjectGround, ObjectRigidBody, SensorNode)
 
 import exudyn_bearing as eb
-from exudyn_bearing.simulate import quasistatic_start
+from exudyn_bearing.simulate import BallBearingElement, quasistatic_start
 from exudyn_bearing.outputs.plotting import pyplot, save_csv, save_figure
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -183,10 +184,13 @@ def run_rotor(model, t_end):
     original = eb.CreateBallBearing
     weight = 7850.0 * math.pi * 0.02 ** 2 * 0.25 * 9.81 / 2.0  # per bearing, the scenario's shaft
 
+    # ring growth as the ball element has it by default, so that the levels see the same grooves
+    growth = inspect.signature(BallBearingElement.__init__).parameters["ringGrowth"].default
+
     def level(mbs, bearing, m_in, m_out, **kw):
         # the scenario's ball-element options do not apply; the operating point is the static weight along -y
         return original(mbs, bearing, m_in, m_out, model=model, initialLoad=(weight, 0.0), loadAngle=-0.5 * math.pi,
-                        sampleInterval=kw.get("sampleInterval", 2e-4))
+                        sampleInterval=kw.get("sampleInterval", 2e-4), ringGrowth=growth)
 
     if model != "balls":
         eb.CreateBallBearing = level
@@ -210,8 +214,9 @@ def run_rotor(model, t_end):
 
 
 def check_rotor(out, t_end):
+    growth = inspect.signature(BallBearingElement.__init__).parameters["ringGrowth"].default
     print(f"(c) rotor on two 6208 (scenarios/rotor_two_6208.py), {t_end:g} s: balls (fast mode, VelocityVerlet "
-          "5 us), quasistatic and linear (GeneralizedAlpha 1e-4 s)")
+          f"5 us), quasistatic and linear (GeneralizedAlpha 1e-4 s); ring growth {growth} at every level")
     runs = {m: run_rotor(m, t_end) for m in ("balls", "quasistatic", "linear")}
     edges = [0.0, 0.027, 0.055, 0.109, 0.205, t_end + 1e-9]
     table = {}
