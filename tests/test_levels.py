@@ -107,3 +107,21 @@ def test_runtime_load_beyond_the_elastic_limit_stops_the_run():
     br._restart(0.0)
     with pytest.raises(eb.SimulationError, match=r"^load: .*4.2 GPa"):
         br._evaluate(np.zeros(3), np.array([0.02, 0.0, 0.0]), np.zeros(3), np.zeros(3))
+
+
+@pytest.mark.parametrize("model", ["quasistatic", "linear"])
+def test_load_along_minus_y_with_load_angle(model):
+    # the same radial load along -y (loadAngle = -pi/2 turns the linear level's table; the quasi-static level's
+    # ball 0 is put under the load, as solve_quasistatic's): the shaft settles at solve_quasistatic's radial
+    # displacement along -y, within the 0.5 %
+    _sc, mbs, node, m_b, m_g = shaft(load=(0.0, -FR, 0.0))
+    extra = {"cageAngle": -0.5 * math.pi} if model == "quasistatic" else {}
+    br = eb.CreateBallBearing(mbs, "6208", m_b, m_g, model=model, initialLoad=(FR, 0.0), loadAngle=-0.5 * math.pi,
+                              coefficientSpeeds=SPEEDS, **extra)
+    mbs.Assemble()
+    ss = br.SimulationSettings(0.03)
+    mbs.SolveDynamic(ss, solverType=ss.timeIntegration.solverType)
+    got = mbs.GetNodeOutput(node, exu.OutputVariableType.Position)
+    ref = eb.solve_quasistatic("6208", Fr=FR, ring_growth=False).displacement[0]
+    assert -got[1] == pytest.approx(ref, rel=5e-3)
+    assert abs(got[0]) < 5e-3 * ref
