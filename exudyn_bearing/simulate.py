@@ -12,8 +12,8 @@ from .outputs.results import Results
 from .solvers.element import BallBearingElement as _ElementBase
 from .solvers.element.element import element_scenario
 
-__all__ = ["simulate", "ENGINES", "CreateBallBearing", "BallBearingElement", "quasistatic_start", "spec_inputs",
-           "SPEC_KEYS"]
+__all__ = ["simulate", "ENGINES", "MODELS", "CreateBallBearing", "BallBearingElement", "quasistatic_start",
+           "spec_inputs", "SPEC_KEYS"]
 
 #: Keys of a case spec (sweeps, datasets): see :func:`spec_inputs`; ``labels`` is
 #: metadata a dataset carries into its records.
@@ -170,8 +170,23 @@ class BallBearingElement(_ElementBase):
         return Results(record)
 
 
-def CreateBallBearing(mbs, bearing: BallBearing | str, markerInnerRing, markerOuterRing, **options):
+#: Bearing levels of :func:`CreateBallBearing` (``model=``).
+MODELS = ("balls", "quasistatic", "linear")
+
+
+def CreateBallBearing(mbs, bearing: BallBearing | str, markerInnerRing, markerOuterRing, model="balls",
+                      **options):
     """Add a lubricated DEM ball bearing between two ring markers of ``mbs``.
+
+    ``model`` picks the level: ``"balls"`` (default, the DEM element below),
+    ``"quasistatic"`` (5-DOF force element from the quasi-static ball
+    equilibrium, no ball DOFs) or ``"linear"`` (speed-dependent 5x5 stiffness
+    and damping about the operating point ``initialLoad``); the last two are
+    :mod:`exudyn_bearing.solvers.quasistatic.levels` (README, "Bearing levels
+    in Exudyn") and take ``lubricant``, ``initialLoad``, ``loadAngle``, ``initialOmega``,
+    ``ringGrowth``, ``temperatures``, ``hertzModel``, ``sampleInterval``,
+    ``coefficients``, ``coefficientSpeeds``, ``show`` (quasistatic also
+    ``cageAngle``).
 
     Parameters
     ----------
@@ -194,8 +209,28 @@ def CreateBallBearing(mbs, bearing: BallBearing | str, markerInnerRing, markerOu
     BallBearingElement
         Holds ``items`` and ``sensors``; ``results()`` after the solve.
     """
+    if model != "balls":
+        return _create_level(mbs, bearing, markerInnerRing, markerOuterRing, model, options)
     if options.get("initial") == "quasistatic" and options.get("initialState") is None:
         # the element's own option checks (messages name the options), then its quasi-static start
         sc = element_scenario(bearing, **options)
         options["initialState"] = quasistatic_start(bearing, sc, options.get("lubricant"))
     return BallBearingElement(mbs, bearing, markerInnerRing, markerOuterRing, **options)
+
+
+def _create_level(mbs, bearing, markerInnerRing, markerOuterRing, model, options):
+    """The ``"quasistatic"`` and ``"linear"`` levels of :func:`CreateBallBearing`."""
+    if model not in MODELS:
+        raise InputError(f"model: must be one of {', '.join(MODELS)}, got {model!r}")
+    from .solvers.quasistatic.levels import (
+        LEVEL_OPTIONS,
+        LinearBearing,
+        QuasiStaticBearing,
+    )
+
+    allowed = LEVEL_OPTIONS + (("cageAngle",) if model == "quasistatic" else ())
+    for key in options:
+        if key not in allowed:
+            raise InputError(f"{key}: not an option of model={model!r} (valid: {', '.join(allowed)})")
+    cls = QuasiStaticBearing if model == "quasistatic" else LinearBearing
+    return cls(mbs, bearing, markerInnerRing, markerOuterRing, **options)

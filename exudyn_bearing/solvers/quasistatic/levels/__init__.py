@@ -1,0 +1,26 @@
+"""Bearing levels without ball DOFs for Exudyn: the quasi-static solver's
+physics as force elements between two ring markers.
+
+* :class:`~.element.QuasiStaticBearing` (``model="quasistatic"``): at every
+  evaluation the quasi-static ball equilibrium (:mod:`..balls`: exact groove
+  geometry, Hertz at every ball's current azimuth, tilt, centrifugal and
+  gyroscopic loads, ring growth at the current speed) for the rings'
+  relative pose, with the balls advanced by the kinematic cage angle, plus
+  the damping matrix of :mod:`..damping`;
+* :class:`~.linear.LinearBearing` (``model="linear"``): the 5x5 stiffness
+  and damping of :func:`..coefficients.bearing_coefficients` interpolated in
+  the current speed, about the operating point they were computed at.
+
+Both are ``ObjectConnectorRigidBodySpringDamper`` connectors with a
+``springForceTorqueUserFunction`` (one compiled call per evaluation), so
+Exudyn's implicit solvers run them with the connector's numerical Jacobian.
+They live in the quasi-static solver's package because they evaluate its
+ball equilibrium and coefficient tables (no solver imports another).
+The entry point is :func:`exudyn_bearing.CreateBallBearing` (``model=``).
+Theory: docs/theory/levels.md.
+"""
+from .base import LEVEL_OPTIONS, LevelBearing
+from .element import QuasiStaticBearing
+from .linear import LinearBearing
+
+__all__ = ["LEVEL_OPTIONS", "LevelBearing", "LinearBearing", "QuasiStaticBearing"]

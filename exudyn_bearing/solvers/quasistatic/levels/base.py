@@ -1,0 +1,289 @@
+"""What the bearing levels without ball DOFs share: options, the operating
+point, the Exudyn connector between the ring markers, the cage angle,
+sensors, samples and the recommended solver settings.
+
+Coordinates: the connector's joint frame is the outer ring marker's frame
+(marker 0), the bearing axis its local z. Exudyn hands the user function the
+inner ring's displacement d and Tait-Bryan angles (theta_x, theta_y, phi)
+relative to the outer ring in that frame, the relative velocity v and the
+relative angular velocity w. The quasi-static solver's ring pose is
+u = (d_x, d_y, d_z, theta_x, theta_y) (small tilts: the inner ring axis is
+(theta_y, -theta_x, 1), independent of the spin angle phi), the relative
+spin is w_z, and the tilt rates are (w_x - w_z theta_y, w_y + w_z theta_x)
+(w contains the spin about the tilted axis). The user function returns the
+connector's "spring force" f, which Exudyn applies as -f to the inner ring
+and +f to the outer ring: f = -F with F the force and moment of the bearing
+on the inner ring.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ....data import InputError, Lubricant, load_bearing, load_lubricant
+from ....data.errors import check_finite, check_positive
+from ....model.load_range import MAX_CONTACT_PRESSURE, check_load_range
+from ....physics import kinematics as _kin
+from ...quasistatic.solve import solve_quasistatic
+
+asarray = np.asarray
+
+__all__ = ["IMPLICIT_SOLVERS", "LEVEL_OPTIONS", "LevelBearing"]
+
+#: Options every level takes (the ball element's names).
+LEVEL_OPTIONS = ("lubricant", "initialLoad", "loadAngle", "initialOmega", "ringGrowth", "temperatures", "hertzModel",
+                 "sampleInterval", "coefficients", "coefficientSpeeds", "show")
+#: Exudyn's implicit dynamic solvers (names of exudyn.DynamicSolverType).
+IMPLICIT_SOLVERS = ("GeneralizedAlpha", "TrapezoidalIndex2")
+#: Default speeds [rad/s] of the coefficient table (damping, linear level): up to the larger of 1000 rad/s and
+#: 1.5 times the initial speed.
+DEFAULT_SPEEDS = (0.0, 100.0, 250.0, 500.0, 750.0, 1000.0)
+
+
+def _load_pair(load):
+    """(Fr, Fa) [N] of ``initialLoad``: a pair or a radial load."""
+    if isinstance(load, (int, float, np.integer, np.floating)) and not isinstance(load, bool):
+        pair = [load, 0.0]
+    else:
+        try:
+            pair = list(load)
+        except TypeError:
+            pair = []
+        if len(pair) != 2:
+            raise InputError(f"initialLoad: expected (Fr, Fa) [N] or a radial load Fr, got {load!r}")
+    fr, fa = (check_finite("initialLoad", x) for x in pair)
+    if fr < 0.0 or fa < 0.0:
+        raise InputError(f"initialLoad: Fr and Fa must be >= 0 (+x radial, +z axial on the inner ring), got {load!r}")
+    return fr, fa
+
+
+def rigid_marker(mbs, marker, name):
+    """The marker number if it is a rigid-body marker (position and orientation), else InputError."""
+    try:
+        m = mbs.GetMarker(int(marker))
+    except Exception:  # noqa: BLE001 - Exudyn raises its own types for a bad index
+        raise InputError(f"{name}: {marker!r} is not a marker of this mbs") from None
+    if m["markerType"] not in ("BodyRigid", "NodeRigid"):
+        raise InputError(f"{name}: the {m['markerType']} marker has no orientation; the bearing levels connect two "
+                         "rigid-body markers (MarkerBodyRigid or MarkerNodeRigid; ground: MarkerBodyRigid on "
+                         "ObjectGround)")
+    return int(marker)
+
+
+def _sensor_function(value):
+    """An Exudyn SensorUserFunction returning ``value()``."""
+    return lambda mbs, t, sensorNumbers, factors, configuration: value()
+
+
+def entry_point(dispatcher, args):
+    """The compiled entry point of a numba kernel for the types of ``args`` (skips numba's per-call type
+    dispatch, a large share of a small kernel's call); the dispatcher itself where numba offers none."""
+    try:
+        import numba
+
+        sig = tuple(numba.typeof(a) for a in args)
+        dispatcher.compile(sig)
+        return dispatcher.overloads[sig].entry_point
+    except Exception:  # noqa: BLE001 - JIT disabled or another numba: the dispatcher works too
+        return dispatcher
+
+
+class LevelBearing:
+    """Base of the levels (module docstring). Subclasses set ``model`` and
+    implement ``_setup()`` and ``_evaluate(d, r, v, w)`` (fills ``self._out``
+    (6,), ``self._force`` (5,), ``self._cage`` (angle, speed))."""
+
+    model = ""
+
+    def __init__(self, mbs, bearing, markerInnerRing, markerOuterRing, lubricant: Lubricant | str | None = None,
+                 initialLoad=(0.0, 0.0), loadAngle=0.0, initialOmega=0.0, ringGrowth=True, temperatures=None,
+                 hertzModel="exact", sampleInterval=1e-4, coefficients=None, coefficientSpeeds=None, show=False):
+        self.mbs = mbs
+        self.bearing = b = load_bearing(bearing)
+        #: the lubricant (None: the quasi-static solver's default)
+        self.lubricant = None if lubricant is None else load_lubricant(lubricant)
+        self.initialLoad = _load_pair(initialLoad)
+        self.initialOmega = check_finite("initialOmega", initialOmega)
+        self.ringGrowth = bool(ringGrowth)
+        self.temperatures = temperatures
+        self.hertzModel = hertzModel
+        self.sampleInterval = check_positive("sampleInterval", sampleInterval)
+        self.markers = (rigid_marker(mbs, markerInnerRing, "markerInnerRing"),
+                        rigid_marker(mbs, markerOuterRing, "markerOuterRing"))
+        if self.markers[0] == self.markers[1]:
+            raise InputError(f"markerOuterRing: marker {markerOuterRing} is also markerInnerRing")
+        fr, fa = self.initialLoad
+        # loads beyond the elastic contact model are refused before anything is solved
+        check_load_range(b, fr, fa, hertzModel, names=("initialLoad", "initialLoad", "bearing"))
+        #: quasi-static solution at initialLoad and initialOmega (the operating point)
+        self.operatingPoint = solve_quasistatic(b, Fr=fr, Fa=fa, omega=abs(self.initialOmega),
+                                                ring_growth=self.ringGrowth, temperatures=temperatures,
+                                                lubricant=self.lubricant, hertz_method=hertzModel, stiffness=False)
+        #: inner-ring pose (d_x, d_y, d_z, theta_x, theta_y) at the operating point (outer-ring frame):
+        #: place the inner ring there to start in equilibrium
+        self.loadAngle = check_finite("loadAngle", loadAngle)
+        self.initialRingDisplacement = self.rotation() @ np.array(self.operatingPoint.displacement, float)
+        self.coefficients = coefficients if coefficients is not None else self._table(coefficientSpeeds)
+        a0 = b.free_contact_angle
+        #: cage and ball-spin speeds per unit relative ring speed (kinematic, free contact angle)
+        self.cageRatio = float(_kin.cage_speed(1.0, 0.0, b.ball_radius, b.pitch_radius, a0))
+        self.spinRatio = float(_kin.ball_spin_relative(1.0, 0.0, b.ball_radius, b.pitch_radius, a0))
+        self._q_limit = self._ball_load_limit()
+        self._out = np.zeros(6)
+        self._force = np.zeros(5)
+        self._pose = np.zeros(5)
+        self._cage = np.zeros(2)
+        self._rot0 = np.eye(3)
+        self._qmax = np.zeros(3)
+        self._t_last = -math.inf
+        self._t_start = -math.inf
+        self.restarts = 0
+        self._samples = []
+        self._next_sample = 0.0
+        self._evaluations = 0
+        self._setup()
+        self._add_items(mbs, show)
+
+    def rotation(self):
+        """5x5 map from the quasi-static solver's axes (radial load along x) to the outer-ring frame, where the
+        radial load points at ``loadAngle`` from x: translations and tilts turn about z."""
+        c, s = math.cos(self.loadAngle), math.sin(self.loadAngle)
+        t = np.eye(5)
+        t[np.ix_([0, 1], [0, 1])] = t[np.ix_([3, 4], [3, 4])] = [[c, -s], [s, c]]
+        return t
+
+    # -- set-up -------------------------------------------------------------
+    def _table(self, speeds):
+        """Coefficient table (stiffness, damping, operating pose) at ``speeds`` (default: DEFAULT_SPEEDS, up to
+        1.5 times the initial speed) under initialLoad."""
+        from ..coefficients import bearing_coefficients
+
+        if speeds is None:
+            top = max(DEFAULT_SPEEDS[-1], 1.5 * abs(self.initialOmega))
+            speeds = [s * top / DEFAULT_SPEEDS[-1] for s in DEFAULT_SPEEDS]
+        fr, fa = self.initialLoad
+        try:
+            return bearing_coefficients(self.bearing, speeds, Fr=fr, Fa=fa, ring_growth=self.ringGrowth,
+                                        temperatures=self.temperatures, lubricant=self.lubricant,
+                                        hertz_method=self.hertzModel)
+        except InputError as exc:
+            if str(exc).startswith("speeds"):
+                raise InputError(f"coefficientSpeeds{str(exc)[len('speeds'):]}") from None
+            raise
+
+    def _ball_load_limit(self):
+        """Ball load [N] at which the Hertz pressure reaches MAX_CONTACT_PRESSURE (free contact angle)."""
+        from ....model.load_range import _pressure_at
+
+        b, lo, hi = self.bearing, 0.0, 1.0
+        while _pressure_at(b, hi, b.free_contact_angle, self.hertzModel) < MAX_CONTACT_PRESSURE:
+            hi *= 2.0
+        for _ in range(60):
+            mid = 0.5 * (lo + hi)
+            lo, hi = (mid, hi) if _pressure_at(b, mid, b.free_contact_angle, self.hertzModel) < \
+                MAX_CONTACT_PRESSURE else (lo, mid)
+        return hi
+
+    def _add_items(self, mbs, show):
+        from exudyn.itemInterface import (
+            ObjectConnectorRigidBodySpringDamper,
+            SensorUserFunction,
+            VObjectConnectorRigidBodySpringDamper,
+        )
+
+        inner, outer = self.markers
+        kw = self._connector_parameters()
+        self.object = mbs.AddObject(ObjectConnectorRigidBodySpringDamper(
+            markerNumbers=[outer, inner], visualization=VObjectConnectorRigidBodySpringDamper(show=bool(show)), **kw))
+        self._sys = mbs.sys
+        self._run = None
+        defs = {"innerRingForce": lambda: list(-self._rot0 @ self._out[:3]),
+                "outerRingForce": lambda: list(self._rot0 @ self._out[:3]),
+                "ringDisplacement": lambda: list(self._pose),
+                "cageSpeed": lambda: [float(self._cage[1])],
+                "qMaxInner": lambda: [float(self._qmax[0])],
+                "qMaxOuter": lambda: [float(self._qmax[1])]}
+        self.sensors = {k: mbs.AddSensor(SensorUserFunction(
+            sensorNumbers=[], factors=[], storeInternal=True, writeToFile=False,
+            sensorUserFunction=_sensor_function(fn))) for k, fn in defs.items()}
+        self.items = {"object": self.object, "sensors": dict(self.sensors)}
+
+    def _connector_parameters(self):
+        """Keyword arguments of the connector (default: the user function)."""
+        return {"springForceTorqueUserFunction": self._user_function}
+
+    # -- evaluation ---------------------------------------------------------
+    def _user_function(self, mbs, t, itemNumber, displacement, rotation, velocity, angularVelocity, stiffness,
+                       damping, rotJ0, rotJ1, offset):
+        solver = self._sys.get("dynamicSolver")
+        # a new SolveDynamic, or back to the run's start time: start over (a step the solver repeats with a
+        # smaller size goes back in time too, but not to the start)
+        if solver is not self._run or (t < self._t_last - 1e-12 and t <= self._t_start + 1e-12):
+            self._run = solver
+            self._t_start = t
+            self._restart(t)
+        self._t_last = t
+        self._evaluations += 1
+        self._evaluate(asarray(displacement, float), asarray(rotation, float), asarray(velocity, float),
+                       asarray(angularVelocity, float))
+        if t >= self._next_sample - 1e-12:
+            self._rot0 = asarray(rotJ0, float)
+            self._samples.append(self._sample_row(t))
+            self._next_sample = t + self.sampleInterval
+        return self._out
+
+    def _restart(self, t):
+        self.restarts += 1
+        self._samples.clear()
+        self._next_sample = t
+        self._evaluations = 0
+
+    def _sample_row(self, t):
+        return np.concatenate([[t], self._pose, self._force, self._cage, self._qmax[:2]])
+
+    def _check_ball_load(self, t, q_max):
+        if not q_max <= self._q_limit:  # also NaN
+            from ....model.stability import SimulationError
+
+            raise SimulationError(f"load: a ball load of {q_max:.4g} N at t = {t:.6g} s exceeds {self._q_limit:.4g} "
+                                  f"N, where the Hertz pressure reaches {MAX_CONTACT_PRESSURE / 1e9:g} GPa, the "
+                                  "limit of the elastic contact model (ISO 76); reduce the loads or check the step")
+
+    # -- user-facing --------------------------------------------------------
+    def SimulationSettings(self, endTime, stepSize=1e-4, solverType="GeneralizedAlpha"):
+        """Fixed-step settings (default: GeneralizedAlpha at 1e-4 s), no solution file, sensors written every
+        sample interval."""
+        import exudyn as exu
+
+        name = solverType if isinstance(solverType, str) else getattr(solverType, "name", str(solverType))
+        if not isinstance(getattr(exu.DynamicSolverType, name, None), exu.DynamicSolverType):
+            raise InputError(f"solverType: {solverType!r} is not an exudyn.DynamicSolverType")
+        h = check_positive("stepSize", stepSize)
+        ss = exu.SimulationSettings()
+        ss.timeIntegration.endTime = check_positive("endTime", endTime)
+        ss.timeIntegration.numberOfSteps = max(1, round(endTime / h))
+        ss.timeIntegration.verboseMode = 0
+        ss.timeIntegration.solverType = getattr(exu.DynamicSolverType, name)
+        # Newton's default absolute tolerance (1e-10) lies below the round-off of the ball equilibrium's forces
+        # near a static equilibrium, where the Newton iterations then stall and the step is cut again and again
+        ss.timeIntegration.newton.absoluteTolerance = 1e-8
+        ss.solution.file.write = False
+        ss.solution.sensors.writePeriod = self.sampleInterval
+        return ss
+
+    def samples(self) -> dict:
+        """The sampled series: ``t``, ``displacement`` (n, 5) (inner ring against the outer ring, outer-ring
+        frame), ``force`` (n, 5) (force and moment of the bearing on the inner ring, same frame), ``cage_angle``,
+        ``cage_speed``, ``q_max_inner``, ``q_max_outer`` and the level's own fields."""
+        if not self._samples:
+            raise RuntimeError("samples: no samples yet; run mbs.SolveDynamic first")
+        a = np.array(self._samples)
+        out = {"t": a[:, 0], "displacement": a[:, 1:6], "force": a[:, 6:11], "cage_angle": a[:, 11],
+               "cage_speed": a[:, 12], "q_max_inner": a[:, 13], "q_max_outer": a[:, 14]}
+        out.update(self._extra_fields(a[:, 15:]))
+        out["evaluations"] = self._evaluations
+        return out
+
+    def _extra_fields(self, rest):
+        return {}

@@ -1,0 +1,111 @@
+"""``model="linear"``: speed-dependent 5x5 stiffness and damping about an operating point.
+
+From the coefficient table of :func:`..coefficients.bearing_coefficients`
+(the table the ROSS export writes) at ``initialLoad`` = (F_r, F_a): speeds
+omega_k, stiffness K_k, damping C_k and the inner-ring pose u0_k of the
+quasi-static equilibrium at each speed. At the relative speed w_z of an
+evaluation K, C and u0 are interpolated linearly in |w_z| (clamped at the
+table's ends) and the bearing's force and moment on the inner ring are
+
+    F = -L - K (u - u0) - C u',   L = (F_r, 0, F_a, 0, 0),
+
+the reaction to the operating loads plus the linear restoring force about
+the operating point (``loadAngle`` turns the table's axes, radial load along
+x, to a radial load at that azimuth in the outer-ring frame: T K T^T, T u0,
+T L) (valid for small motions about it; a rotor whose
+static loads differ from ``initialLoad`` is outside the linearisation).
+``operatingPoint`` holds the quasi-static solution, ``coefficients`` the table.
+
+With one speed in the table (``coefficientSpeeds=[omega]``) the connector is
+Exudyn's own spring-damper with constant 6x6 matrices and offset (no user
+function; the spin and its damping row are zero). Otherwise a user function
+makes one compiled call per evaluation.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ...._jit import kernel
+from ....data import InputError
+from .base import LevelBearing, entry_point
+from .element import _interp_row
+
+__all__ = ["LinearBearing", "linear_forces"]
+
+
+@kernel
+def linear_forces(d, r, v, w, speeds, table, row, loads, u, out, force):
+    """out = -(F, 0) with F of the module docstring; ``table`` (n, 55): K (25), C (25), u0 (5) per speed.
+    Writes the pose u (5,) and ``force`` = F (5,)."""
+    _interp_row(speeds, table, w[2], row)
+    ws = w[2]
+    u[0] = d[0]
+    u[1] = d[1]
+    u[2] = d[2]
+    u[3] = r[0]
+    u[4] = r[1]
+    rate = (v[0], v[1], v[2], w[0] - ws * r[1], w[1] + ws * r[0])
+    for i in range(5):
+        f = loads[i]
+        for j in range(5):
+            f += row[5 * i + j] * (u[j] - row[50 + j]) + row[25 + 5 * i + j] * rate[j]
+        out[i] = f
+        force[i] = -f
+    out[5] = 0.0
+
+
+class LinearBearing(LevelBearing):
+    """The linear level (module docstring); options of :class:`.base.LevelBearing`."""
+
+    model = "linear"
+
+    def _setup(self):
+        c = self.coefficients
+        disp = np.array(c.operating_point.get("displacement", []), float)
+        if disp.shape != (c.n_speeds, 5):
+            raise InputError("coefficients: the table has no operating pose per speed (operating_point"
+                             "['displacement']); make it with exudyn_bearing.bearing_coefficients")
+        op = c.operating_point
+        table_load = (float(op.get("Fr", 0.0)), float(op.get("Fa", 0.0)))
+        if not np.allclose(table_load, self.initialLoad, rtol=1e-9, atol=1e-9):
+            raise InputError(f"initialLoad: {self.initialLoad} differs from the coefficient table's operating load "
+                             f"{table_load}; the linear level is linearised about the table's load")
+        self._speeds = np.array(c.speeds, float)
+        t = self.rotation()
+        k = np.einsum("ij,njk,lk->nil", t, np.array(c.stiffness), t)
+        cc = np.einsum("ij,njk,lk->nil", t, np.array(c.damping), t)
+        self._table = np.ascontiguousarray(np.concatenate([k.reshape(-1, 25), cc.reshape(-1, 25), disp @ t.T],
+                                                          axis=1))
+        self._row = np.zeros(55)
+        self._cage[0] = math.nan  # the linear level has no ball set: no cage angle, only the kinematic cage speed
+        self._loads = t @ np.array([self.initialLoad[0], float(op.get("Fy", 0.0)), self.initialLoad[1],
+                                    float(op.get("Mx", 0.0)), float(op.get("My", 0.0))])
+        v3 = np.zeros(3)
+        self._kernel = entry_point(linear_forces, (v3, v3, v3, v3, self._speeds, self._table, self._row,
+                                                   self._loads, self._pose, self._out, self._force))
+
+    def _connector_parameters(self):
+        if self._speeds.size > 1:
+            return super()._connector_parameters()
+        # one speed: Exudyn's own connector, K (u - offset) + C u' = L + K (u - u0) + C u'
+        k, c, u0 = self._table[0, :25].reshape(5, 5), self._table[0, 25:50].reshape(5, 5), self._table[0, 50:]
+        try:
+            off = u0 - np.linalg.solve(k, self._loads)
+        except np.linalg.LinAlgError:
+            return super()._connector_parameters()
+        k6, c6, o6 = np.zeros((6, 6)), np.zeros((6, 6)), np.zeros(6)
+        k6[:5, :5], c6[:5, :5], o6[:5] = k, c, off
+        return {"stiffness": k6, "damping": c6, "offset": o6}
+
+    def samples(self):
+        if self._speeds.size == 1 and not self._samples:
+            raise RuntimeError("samples: the one-speed linear level is Exudyn's own connector without a user "
+                               "function; record its force with a SensorObject (OutputVariableType.Force)")
+        return super().samples()
+
+    def _evaluate(self, d, r, v, w):
+        self._kernel(d, r, v, w, self._speeds, self._table, self._row, self._loads, self._pose, self._out,
+                     self._force)
+        self._cage[1] = self.cageRatio * w[2]
