@@ -77,7 +77,8 @@ CASES = {
     "6208 Fr 3000 N 500 rad/s": dict(bearing="6208", Fr=3000.0, Fa=0.0, omega=500.0, radial=True),
     "6208 Fr 3000 N 1700 rad/s": dict(bearing="6208", Fr=3000.0, Fa=0.0, omega=1700.0, radial=True),
     "6208 Fa 3000 N 500 rad/s": dict(bearing="6208", Fr=0.0, Fa=3000.0, omega=500.0),
-    "7208 Fr = Fa = 3000 N 500 rad/s": dict(bearing="7208", Fr=3000.0, Fa=3000.0, omega=500.0, tilt_free=True),
+    "7208 Fr = Fa = 3000 N 500 rad/s": dict(bearing="7208", Fr=3000.0, Fa=3000.0, omega=500.0, tilt_free=True,
+                                            radial=True),
     "ACBB-120 25000 rpm 22240 N ellipse": dict(bearing="ACBB-120", Fr=0.0, Fa=22240.0, omega=25000 * RPM,
                                                **ACBB_OIL),
     "ACBB-120 25000 rpm 22240 N point": dict(bearing="ACBB-120", Fr=0.0, Fa=22240.0, omega=25000 * RPM,
@@ -120,7 +121,9 @@ def qs_row(sol, j=0):
             "spin_roll_outer": float(b["spin_roll_outer"][j]) if moving else math.nan,
             "dissipation": sol.dissipation_total, "drive_power": sol.drive_power if moving else 0.0,
             "energy_residual": sol.energy_residual if moving else math.nan,
-            "balls_in_equilibrium": int(np.sum(np.asarray(b["control_used"]) == "equilibrium"))}
+            "balls_in_equilibrium": int(np.sum(np.asarray(b["control_used"]) == "equilibrium")),
+            "orbital_speed_min": float(np.min(b["orbital_speed"])) if moving else 0.0,
+            "orbital_speed_max": float(np.max(b["orbital_speed"])) if moving else 0.0}
 
 
 def static_row(case):
@@ -287,10 +290,13 @@ def terms_7208():
         with switches or _Switches():
             s = eb.solve_quasistatic("7208", **{**base, **kw})
         out[tag] = {"q_max_inner": float(s.balls["q_inner"][0]), "delta_a": 1e6 * float(s.displacement[2]),
-                    "q_min_inner": float(np.min(s.balls["q_inner"])), "energy_residual": (
+                    "q_min_inner": float(np.min(s.balls["q_inner"])),
+                    "alpha_inner_max": float(np.degrees(np.max(s.balls["alpha_inner"][s.balls["q_inner"] > 0.0]))),
+                    "centrifugal_force": float(np.max(s.balls["centrifugal_force"])), "energy_residual": (
                         float(s.energy_residual) if s.omega else math.nan)}
         print(f"   {tag:58s} q_max_inner {out[tag]['q_max_inner']:8.2f} N  delta_a {out[tag]['delta_a']:8.3f} um  "
-              f"q_min_inner {out[tag]['q_min_inner']:7.2f} N", flush=True)
+              f"q_min_inner {out[tag]['q_min_inner']:7.2f} N  largest alpha_i {out[tag]['alpha_inner_max']:5.1f} deg  "
+              f"centrifugal force {out[tag]['centrifugal_force']:5.1f} N", flush=True)
     solve("zero speed", omega=0.0)
     solve("1 rad/s outer", omega=1.0, control="outer")
     for control in ("outer", "inner", "equilibrium"):
@@ -368,7 +374,7 @@ def plot(dev, path):
     ax.set_xticks(np.arange(len(names)))
     ax.set_xticklabels([n.replace(" 25000 rpm 22240 N", "").replace(" Fr = Fa = 3000 N", "") for n in names],
                        rotation=20, ha="right", fontsize=7)
-    ax.set_ylabel("|reference / qs equilibrium - 1| (beta: deg)")
+    ax.set_ylabel("|reference / qs equilibrium - 1| (angles: deg)")
     ax.legend(fontsize=6, ncol=3)
     ax.set_title("Reference engine against the quasi-static traction equilibrium; engines against each other",
                  fontsize=8)
@@ -379,13 +385,17 @@ def plot(dev, path):
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--quick", action="store_true", help="shorter dynamic runs (4 ms instead of 12 ms)")
-    ap.add_argument("--case", help="only the cases whose name contains this text (a partial matrix)")
+    ap.add_argument("--case", help="only the cases whose name contains this text, merged into the matrix of the "
+                                   "last run (validation/out/consistency_matrix.json)")
     args = ap.parse_args(argv)
     OUT.mkdir(exist_ok=True)
     t0 = time.perf_counter()
     print("7208 term by term (quasi-static, tilt held):")
-    terms = terms_7208() if not args.case else {}
-    rows = matrix(args.quick, args.case)
+    old = json.loads((OUT / "consistency_matrix.json").read_text()) if args.case and (
+        OUT / "consistency_matrix.json").exists() else {}
+    terms = terms_7208()
+    rows = {**old.get("rows", {}), **matrix(args.quick, args.case)}
+    rows = {name: rows[name] for name in CASES if name in rows}
     dev = deviations(rows)
     print_table(rows, dev)
     write_csv(rows, OUT / "consistency_matrix.csv")
