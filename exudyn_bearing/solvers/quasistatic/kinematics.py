@@ -66,7 +66,7 @@ from ...physics.contact_slip import _contact_traction, pure_rolling_points, spin
 
 __all__ = ["CONTROLS", "GEO_FIELDS", "CONTACT_FIELDS", "race_control", "jones_outer_controls", "ball_contacts",
            "minimum_energy", "traction_equilibrium", "dissipation_at_beta", "spin_axis_angle", "rolling_points",
-           "axial_torque_on_ball"]
+           "axial_torque_on_ball", "cage_kinematics"]
 
 #: Kinematic hypotheses.
 CONTROLS = ("outer", "inner", "auto", "min-energy", "equilibrium")
@@ -78,6 +78,10 @@ GEO_FIELDS = ("omega_o", "omega_i", "c_r", "c_z", "no_r", "no_z", "ni_r", "ni_z"
 #: Per-contact results of :func:`ball_contacts` (row 0 outer, row 1 inner).
 CONTACT_FIELDS = ("v0", "w_n", "c2", "u", "spin", "roll", "f_x", "f_y", "m_z", "dissipation", "qv", "m_y")
 NC = len(CONTACT_FIELDS)
+#: Traction equilibrium: largest relative change of the speeds in one step of the continuation in the
+#: ball's inertia that stays on the branch, and the smallest step (a fold below it: no equilibrium).
+CONTINUATION_JUMP = 0.2
+CONTINUATION_MIN_STEP = 1e-3
 
 
 @kernel
@@ -300,19 +304,63 @@ def traction_equilibrium(geo, model, n_strips, n_across, start, inertia):
     # moments the start (race control or minimum energy) is close to the
     # solution; the full equations then have further roots with gross
     # transverse sliding that kills the in-plane tractions, which a direct
-    # solve from far away can land on
-    x = start[:3] / scale
-    for frac in (0.0, 0.25, 0.5, 0.75, 1.0):
+    # solve from far away can land on. The step adapts: a step is taken only
+    # when the root solver converges and stays on the branch (speeds change
+    # by less than CONTINUATION_JUMP); otherwise it is halved. When the step
+    # falls below CONTINUATION_MIN_STEP the branch has turned back (a fold in
+    # the inertia): the traction the ball's loads can give cannot hold its
+    # gyroscopic moment in a steady orbit, and the ball has no traction
+    # equilibrium (``converged`` False, ``held_fraction`` < 1).
+    def solve_at(frac, x0):
         j_eff[0] = frac * inertia
-        sol = optimize.root(resid, x, method="hybr", options={"xtol": 1e-13})
-        x = sol.x
+        sol = optimize.root(resid, x0, method="hybr", options={"xtol": 1e-13})
+        err = float(np.max(np.abs(resid(sol.x))))
+        ok = bool(err < 1e-8 and np.all(np.isfinite(sol.x)))
+        return sol.x, ok, err, int(sol.nfev)
+
+    # a start that is already near the equilibrium (the previous iteration's) is solved directly
+    x, ok, err, evaluations = solve_at(1.0, start[:3] / scale)
+    near = float(np.max(np.abs(x - start[:3] / scale)) / max(np.max(np.abs(start[:3] / scale)), 1e-300))
+    if ok and near < 1e-3:
+        frac, ok0 = 1.0, True
+    else:
+        x, ok, err, nfev = solve_at(0.0, start[:3] / scale)
+        frac, step = 0.0, 0.25
+        evaluations += nfev
+        ok0 = ok
+    while ok0 and frac < 1.0 and step >= CONTINUATION_MIN_STEP:
+        f_new = min(1.0, frac + step)
+        x_new, ok, _, nfev = solve_at(f_new, x)
+        evaluations += nfev
+        jump = float(np.max(np.abs(x_new - x)) / max(np.max(np.abs(x)), 1e-300))
+        if ok and jump < CONTINUATION_JUMP:
+            x, frac, step = x_new, f_new, 1.5 * step
+        else:
+            step *= 0.5
+    j_eff[0] = frac * inertia
     held[0] = True
-    res = resid(sol.x)
-    wm, wr, wz = sol.x * scale
+    res = resid(x)
+    wm, wr, wz = x * scale
     v_t = pivot(wm, wr, wz)
-    check = {"converged": bool(sol.success and np.max(np.abs(res)) < 1e-8), "residual": float(np.max(np.abs(res))),
-             "evaluations": int(sol.nfev), "gyroscopic_moment_held": bool(held[0])}
+    converged = bool(ok0 and frac == 1.0 and np.max(np.abs(res)) < 1e-8)
+    j_eff[0] = inertia
+    check = {"converged": converged, "residual": float(np.max(np.abs(resid(x)))), "evaluations": evaluations,
+             "gyroscopic_moment_held": bool(held[0] and converged), "held_fraction": float(frac if ok0 else 0.0)}
     return np.array([wm, wr, wz, v_t]), check
+
+
+def cage_kinematics(geo, omega_m):
+    """Kinematics (omega_m, w_r, w_z, 0) of a ball that the cage carries at the orbital speed
+    ``omega_m``: the ball rolls at the centre of its outer contact (v0_o = 0) without spin there
+    (omega_s,o = 0), as it rolls on the race that centrifugal force presses it against. The choice
+    of the quasi-static solver for a ball without a traction equilibrium of its own (a contact
+    without load: nothing drives it; or a gyroscopic moment its loads cannot hold)."""
+    nr, nz = geo[G_NOR], geo[G_NOZ]
+    x0r = geo[G_CR] + geo[G_RB] * nr
+    a = np.array([[-geo[G_RB] * nz, geo[G_RB] * nr], [nr, nz]])
+    rhs = np.array([(geo[G_WO] - omega_m) * x0r, (geo[G_WO] - omega_m) * nz])
+    w_r, w_z = np.linalg.solve(a, rhs)
+    return np.array([omega_m, w_r, w_z, 0.0])
 
 
 def dissipation_at_beta(geo, model, n_strips, n_across, beta, start):

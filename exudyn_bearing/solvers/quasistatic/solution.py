@@ -34,7 +34,8 @@ UNITS = {
     "u_roll_outer": "m/s", "slip_y": "- (y/a at the strip centres)", "slip_inner": "m/s", "slip_outer": "m/s",
     "inner_ring_growth": "m", "outer_ring_growth": "m", "inner_thermal_growth": "m", "outer_thermal_growth": "m",
     "ball_thermal_growth": "m", "fit_pressure": "Pa", "operating_clearance": "m", "axial_play": "m",
-    "control_used": "race control per ball (outer, inner, min-energy, none)",
+    "control_used": "kinematics per ball (outer, inner, min-energy, equilibrium, cage: carried at the cage speed, "
+                    "no traction equilibrium of its own; none)",
     "stiffness": "N/m, N/rad, N m/m, N m/rad (order delta_x, delta_y, delta_a, tilt_x, tilt_y)",
     "damping": "N s/m, N s/rad, N s, N m s/rad (order delta_x, delta_y, delta_a, tilt_x, tilt_y)",
     "h_min_inner": "m", "h_min_outer": "m",

@@ -21,7 +21,8 @@ energy):
 Choices where the sources leave room (also in docs/theory/quasistatic.md):
 balls are independent (each its own orbital speed: no cage, as the
 ACBB-120); unloaded balls (a contact without load) take outer-race-control
-kinematics; films by Hamrock & Dowson at the race-control rolling speed.
+kinematics (with ``control="equilibrium"``: the cage's orbital speed, the mean of the balls in
+equilibrium, rolling on the outer race, as every ball without a traction equilibrium of its own); films by Hamrock & Dowson at the race-control rolling speed.
 
 References
 ----------
@@ -320,14 +321,17 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
                 if stage == "race":
                     controls[j] = race if loaded else "outer"
                     new[j, :3] = km.race_control(geo[j], controls[j])
-                elif loaded and stage == "equilibrium":
-                    controls[j] = "equilibrium"
+                elif stage == "equilibrium":
+                    if not loaded:
+                        controls[j], checks[j] = "cage", None
+                        continue
                     same = next((i for i in range(j) if np.allclose(geo[i], geo[j], rtol=1e-12, atol=0.0)), None)
                     if same is not None:
                         new[j], checks[j] = new[same], checks[same]
                     else:
                         new[j], checks[j] = km.traction_equilibrium(geo[j], model, n_strips, n_across, kin[j],
                                                                     inertia)
+                    controls[j] = "equilibrium" if checks[j]["converged"] else "cage"
                 elif loaded:
                     controls[j] = "min-energy"
                     same = next((i for i in range(j) if np.allclose(geo[i], geo[j], rtol=1e-12, atol=0.0)), None)
@@ -335,6 +339,8 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
                         new[j], checks[j] = new[same], checks[same]
                     else:
                         new[j, :3], checks[j] = km.minimum_energy(geo[j], model, n_strips, n_across, kin[j])
+            if stage == "equilibrium":
+                _carry_by_cage(new, controls, geo)
             change = np.abs(new - kin).max() / wref
             kin = new
             if change < tol:
@@ -342,12 +348,12 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
     # final contact results
     out = _ball_results(b, geom, psi, balls, cs, kin, geo, model, n_strips, n_across, w_i, w_o, rd_o, rd_i,
                         lub, e_prime, mass, inertia, controls, moving, prob.fto, prob.fti)
-    if control == "equilibrium":
-        bad = [j for j, c in enumerate(checks) if c is not None and not c["converged"]]
-        if bad:
-            raise InputError(f"control: the traction equilibrium of ball {bad[0]} did not converge (scaled residual "
-                             f"{checks[bad[0]]['residual']:.2g}); the traction model may be too steep or too weak "
-                             "to hold the ball: try more regularisation, or control='min-energy'")
+    if control == "equilibrium" and moving and not np.any(controls == "equilibrium"):
+        bad = next((j for j, c in enumerate(checks) if c is not None), 0)
+        raise InputError(f"control: no ball reaches a traction equilibrium (ball {bad}: scaled residual "
+                         f"{checks[bad]['residual'] if checks[bad] else float('nan'):.2g}); the traction model "
+                         "may be too steep or too weak to hold the balls: try more regularisation, or "
+                         "control='min-energy'")
     _check_shoulders(b, geom, balls, cs, loads, prob, shoulder_angle)
     # normal damping of every contact (the contact model's, at its load and film) and the 5x5 matrices
     out.update(contact_damping(balls, cs["a_i"], cs["a_o"], out["h_min_inner"], out["h_min_outer"], geom.r_b,
@@ -393,6 +399,21 @@ def beta_scan(solution: QuasiStaticSolution, betas, ball=0):
     start = solution.kinematics[ball]
     return np.array([km.dissipation_at_beta(g, solution.traction_model, solution.n_strips, solution.n_across,
                                             float(bt), start)[0] for bt in np.asarray(betas, float)])
+
+
+def _carry_by_cage(kin, controls, geo):
+    """Balls without a traction equilibrium of their own (``controls`` "cage": a contact without load,
+    which nothing drives, or a gyroscopic moment that the traction of its loads cannot hold) orbit at the
+    mean orbital speed of the balls in equilibrium, the speed a cage would impose, rolling on the outer
+    race (:func:`.kinematics.cage_kinematics`); in place. Their outer-contact dissipation is what the cage
+    would draw from the balls in equilibrium, which a cageless balance does not carry: it shows in
+    ``energy_residual``."""
+    cage = controls == "cage"
+    if not cage.any() or cage.all():
+        return
+    omega_cage = float(np.mean(kin[~cage, 0]))
+    for j in np.flatnonzero(cage):
+        kin[j] = km.cage_kinematics(geo[j], omega_cage)
 
 
 def _geo_vector(w_o, w_i, ball, geom, rd_o, rd_i, cs, j, kin, lub, e_prime):
