@@ -111,7 +111,9 @@ class Scenario:
         element.
     n_strips, n_across : int
         Strips along the major axis and points across each strip of the
-        ellipse integration (accuracy against cost: validation/work_precision.py).
+        ellipse integration; default 16 x 4, the same in every solver
+        (:data:`~exudyn_bearing.physics.contact_slip.DEFAULT_N_STRIPS`,
+        chosen by validation/traction_convergence.py).
     traction_regularizing_srr : float
         Slide-to-roll ratio below which a Coulomb-type traction model
         (``constant``, ``lambda``) whose own ``regularizing_srr`` is 0 rises
