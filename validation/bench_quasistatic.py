@@ -31,8 +31,8 @@ def _loop(n, a, b, load, u, code, params, n_strips, n_across):
     acc = 0.0
     for i in range(n):
         v0 = 0.01 * (i % 7 - 3)
-        fx, fy, mz, p, qv = _contact_traction(a, b, load, v0, 40.0 + (i % 5), 300.0, 0.0, u, 2e-7, 1.5e-7, code,
-                                              params, n_strips, n_across)
+        fx, fy, mz, p, qv, my = _contact_traction(a, b, load, v0, 40.0 + (i % 5), 300.0, 6.4e-3, 0.0, u, 2e-7,
+                                                  1.5e-7, code, params, n_strips, n_across)
         acc += p
     return acc
 

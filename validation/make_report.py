@@ -96,9 +96,12 @@ def remove_unpublished():
                 f.unlink()
 
 
-def run_all(skip=()):
-    walls = {}
-    for script, args in SCRIPTS:
+def run_all(skip=(), start_at=None):
+    walls_path = OUT / "make_report_walls.json"
+    walls = json.loads(walls_path.read_text()) if start_at and walls_path.exists() else {}
+    names = [script for script, _ in SCRIPTS]
+    first = names.index(start_at) if start_at else 0
+    for script, args in SCRIPTS[first:]:
         if script in skip:
             continue
         t0 = time.perf_counter()
@@ -108,7 +111,7 @@ def run_all(skip=()):
         print(proc.stdout, end="", flush=True)
         (OUT / f"{Path(script).stem}.stdout.txt").write_text(proc.stdout)  # what section_printed quotes
         walls[script] = time.perf_counter() - t0
-    (OUT / "make_report_walls.json").write_text(json.dumps(walls, indent=2))
+    walls_path.write_text(json.dumps(walls, indent=2))
 
 
 def section_printed(title, script, intro, figures=(), last_lines=40):
@@ -1121,6 +1124,8 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--no-run", action="store_true", help="only write the report from existing outputs")
     ap.add_argument("--fresh", action="store_true", help="delete validation/out first (sweeps otherwise resume)")
+    ap.add_argument("--start-at", metavar="SCRIPT", choices=[s for s, _ in SCRIPTS],
+                    help="run the scripts from this one on (the earlier ones' outputs kept)")
     args = ap.parse_args(argv)
     if args.fresh and OUT.exists():
         import shutil
@@ -1128,7 +1133,7 @@ def main(argv=None):
         shutil.rmtree(OUT)
     if not args.no_run:
         OUT.mkdir(exist_ok=True)
-        run_all()
+        run_all(start_at=args.start_at)
     walls = json.loads((OUT / "make_report_walls.json").read_text()) if (OUT / "make_report_walls.json").exists() \
         else {}
     head = ["# Validation report", "",
