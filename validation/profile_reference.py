@@ -1,0 +1,285 @@
+"""Where the time of a reference-engine step goes (issue 21, item 1).
+
+Scene: the bench_reference.py scene (6208, F_r = 3000 N, 500 rad/s, cage,
+lubrication, Cundall-Strack tangential history, analytic start) at dt 8 us
+with the implicit spring and at 5 us with the explicit one, advanced by
+``--settle`` seconds so that the state is a steady-running one.
+
+Method: on that frozen state, the compiled contact kernel
+:func:`exudyn_bearing.model.contact.forces` is called ``--reps`` times in a
+compiled loop with stages switched off through the parameter vector (the
+same compiled code, no recompilation):
+
+* full: the kernel as the engine calls it (no diagnostics);
+* no lubrication (``P_LUB`` 0): without film, Lambda, regime, fluid damping,
+  mu(Lambda) and the semi-axes; the difference is the lubrication stage;
+* no friction (``P_FRIC`` none): without the Cundall-Strack spring; the
+  difference is the tangential stage;
+* neither, and all races open (groove radii of 1 m): the ring frame and
+  groove geometry of every ball / raceway contact, the open-contact branch,
+  the cage-pair and guide contacts and the zeroing of the outputs;
+* the cage-pair and guide contacts alone (their inlined functions in a loop);
+* with diagnostics (``want``): the cost of a sampled step's extra work.
+
+The rest of a step (integration kick/drift, the ring, the energy
+bookkeeping, the step loop) is the whole step (``run_verlet`` without
+sampling, on the same state) minus the full kernel; the velocity-Verlet
+kick/drift and the energy bookkeeping (``accumulate_energy`` and the
+``_drive_power`` / always-written ``glob`` entries) are timed alone too.
+The Hertz cache (k, F, E re-evaluated when R_y/R_x moved by more than 1e-6)
+is measured in the running engine: how often it misses per closed contact
+and step, and the cost of one miss.
+
+All times are medians of ``--repeat`` timings of the thread's CPU time
+(``time.thread_time``: on a shared machine the wall clock also counts the
+time other processes hold the core), in ns per step (per call of the
+kernel); read them as proportions.
+
+    python validation/profile_reference.py [--reps 20000] [--repeat 7] [--settle 0.01]
+"""
+from __future__ import annotations
+
+import argparse
+import time
+import warnings
+
+import numpy as np
+
+import exudyn_bearing as eb
+from exudyn_bearing._jit import kernel
+from exudyn_bearing.model.contact import (
+    _drive_power,
+    _guide_contact,
+    _pair_contact,
+    accumulate_energy,
+    forces,
+)
+from exudyn_bearing.model.layout import (
+    D_LOAD,
+    FRIC_NONE,
+    H_E1,
+    NDIAG,
+    NGLOBAL,
+    P_CAGE,
+    P_FRIC,
+    P_HERTZ,
+    P_K_BZ,
+    P_LUB,
+    P_MB,
+    P_MZ,
+    P_RB,
+    P_RCI,
+    P_RCO,
+    P_RZ,
+)
+from exudyn_bearing.model.motion import kick_drift, ring_poses
+from exudyn_bearing.physics.hertz import _kfe_fast
+from exudyn_bearing.solvers.reference import ReferenceEngine
+from exudyn_bearing.solvers.reference.integrators import evaluate, run_verlet
+
+SCENE = {"Fr": 3000.0, "omega": 500.0, "cage": True, "lubrication": True, "friction": "history", "initial": "analytic"}
+SETTINGS = {"implicit spring, dt 8 us": {"dt": 8e-6, "tangential": "implicit"},
+            "explicit spring, dt 5 us": {"dt": 5e-6, "tangential": "explicit"}}
+
+
+@kernel
+def _time_forces(reps, p, table, xb, vb, wb, xc, vc, rings, hist, dt, hz, fb, tb, fc, fr, glob, diag, cage_load,
+                 want):
+    acc = 0.0
+    for _ in range(reps):
+        acc += forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist, dt, hz, fb, tb, fc, fr, glob, diag,
+                      cage_load, want)
+    return acc
+
+
+@kernel(no_runtime=True)
+def _time_cage(reps, p, xb, vb, xc, vc, rings, fb, fc, fr):
+    z = xb.shape[0]
+    r_sum = p[P_RB] + p[P_RZ]
+    m_pair = p[P_MB] * p[P_MZ] / (p[P_MB] + p[P_MZ])
+    acc = 0.0
+    for _ in range(reps):
+        for k in range(z):
+            k2 = k + 1 if k + 1 < z else 0
+            f, d = _pair_contact(k, k, xb, vb, fb, xc, vc, fc, r_sum, p[P_K_BZ], m_pair)
+            acc += f + d
+            f, d = _pair_contact(k2, k, xb, vb, fb, xc, vc, fc, r_sum, p[P_K_BZ], m_pair)
+            acc += f + d
+            acc += _guide_contact(k, p, xc, vc, rings, fc, fr)
+    return acc
+
+
+@kernel(no_runtime=True)
+def _time_kick_drift(reps, xb, vb, wb, xc, vc, fb, tb, fc):
+    for _ in range(reps):
+        kick_drift(0.0, 0.0, xb, vb, wb, xc, vc, fb, tb, fc, 1.0, 1.0, 1.0)
+    return xb[0, 0]
+
+
+@kernel(no_runtime=True)
+def _time_energy(reps, rings, fr, glob):
+    acc = 0.0
+    for _ in range(reps):
+        glob[2] = _drive_power(rings, fr)
+        accumulate_energy(glob, 0.0)
+        acc += glob[2]
+    return acc
+
+
+@kernel
+def _time_kfe(reps, rx, ry, method, table):
+    acc = 0.0
+    for i in range(reps):
+        k, f, e = _kfe_fast(rx, ry * (1.0 + 1e-9 * (i & 7)), method, table)
+        acc += k + f + e
+    return acc
+
+
+def _median_ns(fn, n, repeat):
+    walls = []
+    for _ in range(repeat):
+        t0 = time.thread_time()
+        fn()
+        walls.append(time.thread_time() - t0)
+    return 1e9 * float(np.median(walls)) / n
+
+
+class Scene:
+    """The engine's arrays advanced to a steady state (the set-up of ReferenceEngine.run)."""
+
+    def __init__(self, settle, **kw):
+        sc = eb.Scenario(t_end=settle, sample_dt=settle, **dict(SCENE, **kw))
+        self.eng = ReferenceEngine("6208", sc)
+        st = self.eng.initial_state()
+        self.p, self.table, self.dt = self.eng.params, self.eng.table, sc.dt
+        self.xb, self.vb, self.wb, self.xc, self.vc, self.ring, self.hist, self.hz = (
+            st[k] for k in ("xb", "vb", "wb", "xc", "vc", "ring", "hist", "hz"))
+        z = self.xb.shape[0]
+        self.fb, self.tb, self.fc = np.zeros((z, 3)), np.zeros((z, 3)), np.zeros((z, 3))
+        self.fring, self.glob = np.zeros(3), np.zeros(NGLOBAL)
+        self.fr, self.rings = np.zeros((2, 6)), ring_poses()
+        self.diag, self.cage_load = np.zeros((z, 2, NDIAG)), np.zeros((z, 2))
+        frames = self.hist[:, H_E1:].copy()
+        evaluate(0.0, self.p, self.table, self.xb, self.vb, self.wb, self.xc, self.vc, self.ring, self.rings,
+                 self.hist, self.hz, self.fb, self.tb, self.fc, self.fr, self.fring, self.glob, self.diag,
+                 self.cage_load, False)
+        self.hist[:, H_E1:] = frames
+        self.t = 0.0
+        self.step(round(settle / self.dt))
+
+    def step(self, n, sample_every=1 << 40):
+        e = np.zeros((0,))
+        e2 = np.zeros((0, NGLOBAL))
+        z = self.xb.shape[0]
+        e3 = np.zeros((0, z, 3))
+        run_verlet(n, self.t, self.p, self.table, self.xb, self.vb, self.wb, self.xc, self.vc, self.ring,
+                   self.hist, self.hz, self.fb, self.tb, self.fc, self.fring, sample_every, 0, e, e2,
+                   np.zeros((0, z, 2, NDIAG)), np.zeros((0, z, 2)), e3, e3, e3, e3, e3, np.zeros((0, 6)),
+                   0, np.zeros(8), np.zeros((0, 8)), self.glob)
+        self.t += n * self.dt
+
+    def forces(self, p, reps, want=False):
+        return _time_forces(reps, p, self.table, self.xb.copy(), self.vb, self.wb, self.xc, self.vc, self.rings,
+                            self.hist.copy(), self.dt, self.hz, self.fb, self.tb, self.fc, self.fr, self.glob,
+                            self.diag, self.cage_load, want)
+
+    def closed(self):
+        self.forces(self.p, 1, True)
+        return int(np.sum(self.diag[:, :, D_LOAD] > 0.0))
+
+
+def hertz_misses(sc, n):
+    """Misses of the Hertz cache per closed contact and step over n single steps of the running engine."""
+    misses = 0
+    closed = 0
+    for _ in range(n):
+        before = sc.hz[:, :, 0].copy()
+        sc.step(1)
+        misses += int(np.sum(sc.hz[:, :, 0] != before))
+        closed += sc.closed()
+    return misses / max(closed, 1)
+
+
+def profile(name, kw, reps, repeat, settle):
+    sc = Scene(settle, **kw)
+    p = sc.p
+    p_nolub = p.copy()
+    p_nolub[P_LUB] = 0.0
+    p_nofric = p.copy()
+    p_nofric[P_FRIC] = FRIC_NONE
+    p_bare = p_nolub.copy()
+    p_bare[P_FRIC] = FRIC_NONE
+    p_open = p_bare.copy()
+    p_open[P_RCI] = p_open[P_RCO] = 1.0
+    assert p[P_CAGE] > 0.5
+    for q in (p, p_nolub, p_nofric, p_bare, p_open):  # compile / warm
+        sc.forces(q, 10)
+    t = {}
+    t["full"] = _median_ns(lambda: sc.forces(p, reps), reps, repeat)
+    t["want"] = _median_ns(lambda: sc.forces(p, reps, True), reps, repeat)
+    t["nolub"] = _median_ns(lambda: sc.forces(p_nolub, reps), reps, repeat)
+    t["nofric"] = _median_ns(lambda: sc.forces(p_nofric, reps), reps, repeat)
+    t["bare"] = _median_ns(lambda: sc.forces(p_bare, reps), reps, repeat)
+    t["open"] = _median_ns(lambda: sc.forces(p_open, reps), reps, repeat)
+    xb, vb, xc, vc = sc.xb.copy(), sc.vb.copy(), sc.xc.copy(), sc.vc.copy()
+    fb, fc, fr = np.zeros_like(xb), np.zeros_like(xc), np.zeros((2, 6))
+    _time_cage(10, p, xb, vb, xc, vc, sc.rings, fb, fc, fr)
+    t["cage"] = _median_ns(lambda: _time_cage(reps, p, xb, vb, xc, vc, sc.rings, fb, fc, fr), reps, repeat)
+    wb, tb = sc.wb.copy(), np.zeros_like(xb)
+    _time_kick_drift(10, xb, vb, wb, xc, vc, fb, tb, fc)
+    t["kick"] = _median_ns(lambda: _time_kick_drift(reps, xb, vb, wb, xc, vc, fb, tb, fc), reps, repeat)
+    g = np.zeros(NGLOBAL)
+    _time_energy(10, sc.rings, fr, g)
+    t["energy"] = _median_ns(lambda: _time_energy(reps, sc.rings, fr, g), reps, repeat)
+    _time_kfe(10, 1e-3, 3e-2, int(p[P_HERTZ]), sc.table)
+    t_kfe = _median_ns(lambda: _time_kfe(reps, 1e-3, 3e-2, int(p[P_HERTZ]), sc.table), reps, repeat)
+    n_closed = sc.closed()
+    n_step = max(reps // 10, 1)
+    sc.step(10)
+    t["step"] = _median_ns(lambda: sc.step(n_step), n_step, repeat)
+    every = round(1e-4 / sc.dt)
+    t["step_sampled"] = _median_ns(lambda: sc.step(n_step, every), n_step, repeat)
+    miss = hertz_misses(sc, 400)
+    z = xb.shape[0]
+    rows = [
+        ("ball / raceway: ring frame + groove geometry, all 2Z contacts (open branch)",
+         t["open"] - t["cage"]),
+        (f"ball / raceway, {n_closed} closed: Hertz (cached) + normal law + kinematics + force assembly",
+         t["bare"] - t["open"]),
+        (f"  of it Hertz cache misses ({miss:.3f} per closed contact and step x {t_kfe:.0f} ns)",
+         miss * n_closed * t_kfe),
+        ("ball / raceway: lubrication (film, Lambda, regime, C_fluid, mu, semi-axes)", t["full"] - t["nolub"]),
+        ("ball / raceway: tangential force (Cundall-Strack spring, cap)", t["full"] - t["nofric"]),
+        (f"cage pairs ({2 * z}) + guide contacts ({z})", t["cage"]),
+        ("energy bookkeeping (_drive_power, accumulate_energy, glob)", t["energy"]),
+        ("kick/drift of balls and cage balls (one call)", t["kick"]),
+        ("rest of the step (ring, second kick, loop, checks)",
+         t["step"] - t["full"] - t["kick"] - t["energy"]),
+    ]
+    print(f"\n{name}: {n_closed} of {2 * z} ball / raceway contacts closed; "
+          f"contact kernel {t['full']:.0f} ns, whole step {t['step']:.0f} ns "
+          f"({t['step'] * 1e-9 / sc.dt:.3f} s wall per simulated s), "
+          f"sampled every {every} steps {t['step_sampled']:.0f} ns per step; "
+          f"kernel with diagnostics {t['want']:.0f} ns")
+    print(f"{'stage':88s} {'ns/step':>8s} {'share':>6s}")
+    for label, ns in rows:
+        print(f"{label:88s} {ns:8.0f} {100 * ns / t['step']:5.1f}%")
+    print(f"(interaction of lubrication and friction: full - nolub - nofric + bare = "
+          f"{t['full'] - t['nolub'] - t['nofric'] + t['bare']:.0f} ns)")
+    return t
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--reps", type=int, default=20000)
+    ap.add_argument("--repeat", type=int, default=7)
+    ap.add_argument("--settle", type=float, default=0.01)
+    args = ap.parse_args(argv)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        for name, kw in SETTINGS.items():
+            profile(name, kw, args.reps, args.repeat, args.settle)
+
+
+if __name__ == "__main__":
+    main()
