@@ -30,6 +30,8 @@ The Hertz cache (k, F, E re-evaluated when R_y/R_x moved by more than 1e-6)
 is measured in the running engine: how often it misses per closed contact
 and step, and the cost of one miss.
 
+The timing kernels are compiled without numba's on-disk cache (a cached
+copy would keep the inlined contact functions of an older contact.py).
 All times are medians of ``--repeat`` timings of the thread's CPU time
 (``time.thread_time``: on a shared machine the wall clock also counts the
 time other processes hold the core), in ns per step (per call of the
@@ -82,7 +84,7 @@ SETTINGS = {"implicit spring, dt 8 us": {"dt": 8e-6, "tangential": "implicit"},
             "explicit spring, dt 5 us": {"dt": 5e-6, "tangential": "explicit"}}
 
 
-@kernel
+@kernel(cache=False)
 def _time_forces(reps, p, table, xb, vb, wb, xc, vc, rings, hist, dt, hz, fb, tb, fc, fr, glob, diag, cage_load,
                  want):
     acc = 0.0
@@ -92,7 +94,7 @@ def _time_forces(reps, p, table, xb, vb, wb, xc, vc, rings, hist, dt, hz, fb, tb
     return acc
 
 
-@kernel(no_runtime=True)
+@kernel(no_runtime=True, cache=False)
 def _time_cage(reps, p, xb, vb, xc, vc, rings, fb, fc, fr):
     z = xb.shape[0]
     r_sum = p[P_RB] + p[P_RZ]
@@ -109,14 +111,14 @@ def _time_cage(reps, p, xb, vb, xc, vc, rings, fb, fc, fr):
     return acc
 
 
-@kernel(no_runtime=True)
+@kernel(no_runtime=True, cache=False)
 def _time_kick_drift(reps, xb, vb, wb, xc, vc, fb, tb, fc):
     for _ in range(reps):
         kick_drift(0.0, 0.0, xb, vb, wb, xc, vc, fb, tb, fc, 1.0, 1.0, 1.0)
     return xb[0, 0]
 
 
-@kernel(no_runtime=True)
+@kernel(no_runtime=True, cache=False)
 def _time_energy(reps, rings, fr, glob):
     acc = 0.0
     for _ in range(reps):
@@ -126,7 +128,7 @@ def _time_energy(reps, rings, fr, glob):
     return acc
 
 
-@kernel
+@kernel(cache=False)
 def _time_kfe(reps, rx, ry, method, table):
     acc = 0.0
     for i in range(reps):
