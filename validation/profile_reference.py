@@ -37,7 +37,16 @@ All times are medians of ``--repeat`` timings of the thread's CPU time
 time other processes hold the core), in ns per step (per call of the
 kernel); read them as proportions.
 
+With ``--compile`` it measures instead what a cold start compiles: the
+README's main job (a 2 ms run of it) in a fresh process with an empty
+numba cache (``NUMBA_CACHE_DIR`` a new temporary folder), every numba
+compilation timed through numba's event API (``numba:compile``): per
+function the number of specialisations and the CPU seconds spent in it
+(exclusive of the functions it compiled in turn), and the whole first
+``simulate`` call (wall and CPU).
+
     python validation/profile_reference.py [--reps 20000] [--repeat 7] [--settle 0.01]
+    python validation/profile_reference.py --compile
 """
 from __future__ import annotations
 
@@ -271,12 +280,66 @@ def profile(name, kw, reps, repeat, settle):
     return t
 
 
+_COLD = """
+import sys, time
+from collections import defaultdict
+from numba.core import event
+
+stack, excl, count = [], defaultdict(float), defaultdict(int)
+
+
+class Timer(event.Listener):
+    def on_start(self, ev):
+        stack.append([ev.data["dispatcher"].py_func, time.thread_time(), 0.0])
+
+    def on_end(self, ev):
+        fn, t0, inner = stack.pop()
+        dt = time.thread_time() - t0
+        name = fn.__module__.replace("exudyn_bearing.", "") + "." + fn.__qualname__
+        excl[name] += dt - inner
+        count[name] += 1
+        if stack:
+            stack[-1][2] += dt
+
+
+event.register("numba:compile", Timer())
+w0, c0 = time.perf_counter(), time.process_time()
+import exudyn_bearing as eb
+w1, c1 = time.perf_counter(), time.process_time()
+eb.simulate("6208", eb.Scenario(Fr=3000, omega=500, t_end=0.002, dt=5e-6))
+w2, c2 = time.perf_counter(), time.process_time()
+print(f"import: {w1 - w0:.1f} s wall, {c1 - c0:.1f} s CPU; first simulate: {w2 - w1:.1f} s wall, {c2 - c1:.1f} s CPU")
+print(f"{'compiled function':60s} {'specs':>5s} {'CPU s':>6s}")
+for name in sorted(excl, key=excl.get, reverse=True):
+    print(f"{name:60s} {count[name]:5d} {excl[name]:6.2f}")
+print(f"{'total':60s} {sum(count.values()):5d} {sum(excl.values()):6.2f}")
+"""
+
+
+def cold_start():
+    """Run :data:`_COLD` in a fresh process with an empty numba cache and print its table."""
+    import os
+    import subprocess
+    import sys
+    import tempfile
+
+    with tempfile.TemporaryDirectory() as cache:
+        env = dict(os.environ, NUMBA_CACHE_DIR=cache)
+        out = subprocess.run([sys.executable, "-c", _COLD], env=env, capture_output=True, text=True, check=True)
+    print("cold start of the README main job (6208, 2 ms), empty numba cache")
+    print(out.stdout, end="")
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--compile", action="store_true", help="measure what a cold start compiles instead")
     ap.add_argument("--reps", type=int, default=20000)
     ap.add_argument("--repeat", type=int, default=7)
     ap.add_argument("--settle", type=float, default=0.01)
     args = ap.parse_args(argv)
+    if args.compile:
+        cold_start()
+        return
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         for name, kw in SETTINGS.items():
