@@ -133,7 +133,7 @@ def run_verlet(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb
     cage_load = np.zeros((z, 2))
     rings = ring_poses()
     fr = np.zeros((2, 6))
-    n_samp = 0
+    n_samp = np.int64(0)  # not the literal 0: that compiled a second copy of _store
     t = t0
     for step in range(n_steps):
         kick_drift(h, dt, xb, vb, wb, xc, vc, fb, tb, fc, inv_mb, inv_ib, inv_mz)
@@ -233,7 +233,7 @@ def run_rk4(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, f
     y0xc = xc.copy()
     y0vc = vc.copy()
     y0r = ring.copy()
-    n_samp = 0
+    n_samp = np.int64(0)  # not the literal 0: that compiled a second copy of _store
     for step in range(n_steps):
         t = t0 + step * dt
         y0x[:, :] = xb
