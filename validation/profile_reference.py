@@ -1,4 +1,4 @@
-"""Where the time of a reference-engine step goes (issue 21, item 1).
+"""Where the time of a reference-engine step goes, stage by stage.
 
 Scene: the bench_reference.py scene (6208, F_r = 3000 N, 500 rad/s, cage,
 lubrication, Cundall-Strack tangential history, analytic start) at dt 8 us
@@ -18,17 +18,19 @@ same compiled code, no recompilation):
 * neither, and all races open (groove radii of 1 m): the ring frame and
   groove geometry of every ball / raceway contact, the open-contact branch,
   the cage-pair and guide contacts and the zeroing of the outputs;
-* the cage-pair and guide contacts alone (their inlined functions in a loop);
+* and every cage pair and guide contact open at its first check (cage-ball
+  radius -R_b, guide radius 1 m): what remains is the kernel's frame;
 * with diagnostics (``want``): the cost of a sampled step's extra work.
 
 The rest of a step (integration kick/drift, the ring, the energy
 bookkeeping, the step loop) is the whole step (``run_verlet`` without
 sampling, on the same state) minus the full kernel; the velocity-Verlet
-kick/drift and the energy bookkeeping (``accumulate_energy`` and the
-``_drive_power`` / always-written ``glob`` entries) are timed alone too.
+kick/drift and the energy integrals (``accumulate_energy``) are timed
+alone too; the ring drive power and the always-written ``glob`` entries are
+part of the kernel's frame.
 The Hertz cache (k, F, E re-evaluated when R_y/R_x moved by more than 1e-6)
 is measured in the running engine: how often it misses per closed contact
-and step, and the cost of one miss.
+and step (each miss is a table look-up of k, F, E).
 
 The timing kernels are compiled without numba's on-disk cache (a cached
 copy would keep the inlined contact functions of an older contact.py).
@@ -58,13 +60,7 @@ import numpy as np
 
 import exudyn_bearing as eb
 from exudyn_bearing._jit import kernel
-from exudyn_bearing.model.contact import (
-    _drive_power,
-    _guide_contact,
-    _pair_contact,
-    accumulate_energy,
-    forces,
-)
+from exudyn_bearing.model.contact import accumulate_energy, forces
 from exudyn_bearing.model.layout import (
     D_LOAD,
     FRIC_NONE,
@@ -73,18 +69,14 @@ from exudyn_bearing.model.layout import (
     NGLOBAL,
     P_CAGE,
     P_FRIC,
-    P_HERTZ,
-    P_K_BZ,
     P_LUB,
-    P_MB,
-    P_MZ,
     P_RB,
     P_RCI,
     P_RCO,
+    P_RGUIDE,
     P_RZ,
 )
 from exudyn_bearing.model.motion import kick_drift, ring_poses
-from exudyn_bearing.physics.hertz import _kfe_fast
 from exudyn_bearing.solvers.reference import ReferenceEngine
 from exudyn_bearing.solvers.reference.integrators import evaluate, run_verlet
 
@@ -104,23 +96,6 @@ def _time_forces(reps, p, table, xb, vb, wb, xc, vc, rings, hist, dt, hz, fb, tb
 
 
 @kernel(no_runtime=True, cache=False)
-def _time_cage(reps, p, xb, vb, xc, vc, rings, fb, fc, fr):
-    z = xb.shape[0]
-    r_sum = p[P_RB] + p[P_RZ]
-    m_pair = p[P_MB] * p[P_MZ] / (p[P_MB] + p[P_MZ])
-    acc = 0.0
-    for _ in range(reps):
-        for k in range(z):
-            k2 = k + 1 if k + 1 < z else 0
-            f, d = _pair_contact(k, k, xb, vb, fb, xc, vc, fc, r_sum, p[P_K_BZ], m_pair)
-            acc += f + d
-            f, d = _pair_contact(k2, k, xb, vb, fb, xc, vc, fc, r_sum, p[P_K_BZ], m_pair)
-            acc += f + d
-            acc += _guide_contact(k, p, xc, vc, rings, fc, fr)
-    return acc
-
-
-@kernel(no_runtime=True, cache=False)
 def _time_kick_drift(reps, xb, vb, wb, xc, vc, fb, tb, fc):
     for _ in range(reps):
         kick_drift(0.0, 0.0, xb, vb, wb, xc, vc, fb, tb, fc, 1.0, 1.0, 1.0)
@@ -128,22 +103,10 @@ def _time_kick_drift(reps, xb, vb, wb, xc, vc, fb, tb, fc):
 
 
 @kernel(no_runtime=True, cache=False)
-def _time_energy(reps, rings, fr, glob):
-    acc = 0.0
+def _time_energy(reps, glob):
     for _ in range(reps):
-        glob[2] = _drive_power(rings, fr)
         accumulate_energy(glob, 0.0)
-        acc += glob[2]
-    return acc
-
-
-@kernel(cache=False)
-def _time_kfe(reps, rx, ry, method, table):
-    acc = 0.0
-    for i in range(reps):
-        k, f, e = _kfe_fast(rx, ry * (1.0 + 1e-9 * (i & 7)), method, table)
-        acc += k + f + e
-    return acc
+    return glob[0]
 
 
 def _median_ns(fn, n, repeat):
@@ -224,11 +187,14 @@ def profile(name, kw, reps, repeat, settle):
     p_bare[P_FRIC] = FRIC_NONE
     p_open = p_bare.copy()
     p_open[P_RCI] = p_open[P_RCO] = 1.0
+    p_empty = p_open.copy()  # and every cage pair and guide contact open at its first check
+    p_empty[P_RZ] = -p[P_RB]
+    p_empty[P_RGUIDE] = 1.0
     assert p[P_CAGE] > 0.5
-    for q in (p, p_nolub, p_nofric, p_bare, p_open):  # compile / warm
+    for q in (p, p_nolub, p_nofric, p_bare, p_open, p_empty):  # compile / warm
         sc.forces(q, 10)
     xb, vb, xc, vc = sc.xb.copy(), sc.vb.copy(), sc.xc.copy(), sc.vc.copy()
-    fb, fc, fr = np.zeros_like(xb), np.zeros_like(xc), np.zeros((2, 6))
+    fb, fc = np.zeros_like(xb), np.zeros_like(xc)
     wb, tb = sc.wb.copy(), np.zeros_like(xb)
     g = np.zeros(NGLOBAL)
     n_step = max(reps // 10, 1)
@@ -241,38 +207,32 @@ def profile(name, kw, reps, repeat, settle):
         "nofric": (lambda: sc.forces(p_nofric, reps), reps),
         "bare": (lambda: sc.forces(p_bare, reps), reps),
         "open": (lambda: sc.forces(p_open, reps), reps),
-        "cage": (lambda: _time_cage(reps, p, xb, vb, xc, vc, sc.rings, fb, fc, fr), reps),
+        "empty": (lambda: sc.forces(p_empty, reps), reps),
         "kick": (lambda: _time_kick_drift(reps, xb, vb, wb, xc, vc, fb, tb, fc), reps),
-        "energy": (lambda: _time_energy(reps, sc.rings, fr, g), reps),
-        "kfe": (lambda: _time_kfe(reps, 1e-3, 3e-2, int(p[P_HERTZ]), sc.table), reps),
+        "energy": (lambda: _time_energy(reps, g), reps),
         "step": (lambda: sc.step(n_step), n_step),
         "step_sampled": (lambda: sc.step(n_step, every), n_step),
     }
-    _time_cage(10, p, xb, vb, xc, vc, sc.rings, fb, fc, fr)
     _time_kick_drift(10, xb, vb, wb, xc, vc, fb, tb, fc)
-    _time_energy(10, sc.rings, fr, g)
-    _time_kfe(10, 1e-3, 3e-2, int(p[P_HERTZ]), sc.table)
+    _time_energy(10, g)
     sc.step(10)
     samples = {k: [] for k in timed}
     for _ in range(repeat):
         for k, (fn, n) in timed.items():
             samples[k].append(_median_ns(fn, n, 1))
     t = {k: float(np.median(v)) for k, v in samples.items()}
-    t_kfe = t["kfe"]
     n_closed = sc.closed()
     miss = hertz_misses(sc, 400)
     z = xb.shape[0]
     rows = [
-        ("ball / raceway: ring frame + groove geometry, all 2Z contacts (open branch)",
-         t["open"] - t["cage"]),
+        (f"kernel frame: zeroing, {2 * z} ball / raceway geometries, first checks of {3 * z} cage contacts, glob",
+         t["empty"]),
+        ("cage pairs and guide contacts beyond their first check", t["open"] - t["empty"]),
         (f"ball / raceway, {n_closed} closed: Hertz (cached) + normal law + kinematics + force assembly",
          t["bare"] - t["open"]),
-        (f"  of it Hertz cache misses ({miss:.3f} per closed contact and step x {t_kfe:.0f} ns)",
-         miss * n_closed * t_kfe),
         ("ball / raceway: lubrication (film, Lambda, regime, C_fluid, mu, semi-axes)", t["full"] - t["nolub"]),
         ("ball / raceway: tangential force (Cundall-Strack spring, cap)", t["full"] - t["nofric"]),
-        (f"cage pairs ({2 * z}) + guide contacts ({z})", t["cage"]),
-        ("energy bookkeeping (_drive_power, accumulate_energy, glob)", t["energy"]),
+        ("energy integrals (accumulate_energy)", t["energy"]),
         ("kick/drift of balls and cage balls (one call)", t["kick"]),
         ("rest of the step (ring, second kick, loop, checks)",
          t["step"] - t["full"] - t["kick"] - t["energy"]),
@@ -281,7 +241,7 @@ def profile(name, kw, reps, repeat, settle):
           f"contact kernel {t['full']:.0f} ns, whole step {t['step']:.0f} ns "
           f"({t['step'] * 1e-9 / sc.dt:.3f} s wall per simulated s), "
           f"sampled every {every} steps {t['step_sampled']:.0f} ns per step; "
-          f"kernel with diagnostics {t['want']:.0f} ns")
+          f"kernel with diagnostics {t['want']:.0f} ns; Hertz cache misses: {miss:.3f} per closed contact and step")
     print(f"{'stage':88s} {'ns/step':>8s} {'share':>6s}")
     for label, ns in rows:
         print(f"{label:88s} {ns:8.0f} {100 * ns / t['step']:5.1f}%")
