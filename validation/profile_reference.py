@@ -239,7 +239,7 @@ def profile(name, kw, reps, repeat, settle):
     ]
     print(f"\n{name}: {n_closed} of {2 * z} ball / raceway contacts closed; "
           f"contact kernel {t['full']:.0f} ns, whole step {t['step']:.0f} ns "
-          f"({t['step'] * 1e-9 / sc.dt:.3f} s wall per simulated s), "
+          f"({t['step'] * 1e-9 / sc.dt:.3f} s CPU per simulated s), "
           f"sampled every {every} steps {t['step_sampled']:.0f} ns per step; "
           f"kernel with diagnostics {t['want']:.0f} ns; Hertz cache misses: {miss:.3f} per closed contact and step")
     print(f"{'stage':88s} {'ns/step':>8s} {'share':>6s}")
