@@ -6,7 +6,14 @@ engine and the Exudyn element.
 kind, each inlined by numba (``inline="always"``), so the split costs no
 calls in the hot loop (it allocates nothing and is compiled without numba's
 memory runtime, so that the inlined array arguments carry no reference
-counting: ``exudyn_bearing._jit.kernel``):
+counting: ``exudyn_bearing._jit.kernel``). Functions that take arrays and
+run for every contact are inlined; the ones that take scalars
+(:func:`_normal_law`, :func:`_lubrication`) or run only in some scenes or
+on sampled steps (defects, the ellipse level, the diagnostics) are called:
+numba's inlining of them made the kernel's compilation take about 19 s of
+CPU time on every cold start, about 9 s without it, at an unchanged step
+time and bitwise unchanged results (``validation/profile_reference.py
+--compile``):
 
 * :func:`_race_contact`: ball / raceway (elliptic Hertz or the peer power
   law, Lambda-switched damping and friction, Cundall-Strack or regularised
@@ -115,7 +122,7 @@ def _hertz_constants(p, table, hz, j, race, rx, ry):
     return hz[j, race, 1], hz[j, race, 2], hz[j, race, 3]
 
 
-@kernel(inline="always")
+@kernel(no_runtime=True)
 def _normal_law(p, delta, kappa, ell_f, ell_e, rr):
     """Elastic normal load Q [N], tangent stiffness dQ/d delta [N/m] and
     hysteretic damping C_hyst [N s/m] at the overlap delta: Hertz
@@ -183,7 +190,7 @@ def _surface_kinematics(rings, r, xb, vb, wb, j, dxw, dyw, dzw, cx, cy, nx, ny, 
     return ddot, sx, sy, sz, slip, u_r, mx, my, mz, lx, ly, lz, px, py, pz
 
 
-@kernel(inline="always")
+@kernel(no_runtime=True)
 def _lubrication(p, u_r, q_el, rx, kappa, major, c_hyst):
     """Film h_min [m], Lambda, regime code, normal damping C_n [N s/m] and
     friction coefficient mu of a contact: the Lambda-switched model of the
@@ -255,7 +262,7 @@ def _tangential_force(p, hist, hist_out, dt_hist, j, race, nx, ny, nz, sx, sy, s
     return 0.0, 0.0, 0.0
 
 
-@kernel(inline="always")
+@kernel(no_runtime=True)
 def _contact_frame(rings, r, wb, j, dxw, dyw, dzw, nx, ny, nz):
     """Rolling frame of a contact and the ball's angular velocity relative to
     the race: e_x the rolling (circumferential) direction at the ball, e_y =
@@ -324,7 +331,7 @@ def _open_contact(hist_out, diag, j, race, delta, ca, sa, drop, want):
         diag[j, race, D_MU] = np.nan
 
 
-@kernel(inline="always")
+@kernel(no_runtime=True)
 def _defect_drop(p, hist_out, rings, j, race, rotated, cx, cy, nlx, nly, nlz, ca, sa, r_contact, rb, rc, inner):
     """Drop [m] of ball j's contact with race ``race`` into the scene's
     defects (:func:`exudyn_bearing.physics.defects.spall_drop`; the deepest
@@ -387,7 +394,7 @@ def _defect_drop(p, hist_out, rings, j, race, rotated, cx, cy, nlx, nly, nlz, ca
     return drop
 
 
-@kernel(inline="always")
+@kernel(no_runtime=True)
 def _turn_ball_frame(p, hist, hist_out, dt_hist, wb, j):
     """If ball j carries a defect, turn its body frame (hist rows H_E1, H_E2)
     from the committed state by its angular velocity over ``dt_hist`` into
@@ -618,7 +625,7 @@ def _drive_power(rings, fr):
     return total
 
 
-@kernel(inline="always")
+@kernel(no_runtime=True)
 def _kinetic_energy(p, vb, wb, vc):
     """Kinetic energy of the balls (translation, rotation) and cage balls (translation) [J]."""
     e = 0.0
@@ -631,7 +638,7 @@ def _kinetic_energy(p, vb, wb, vc):
     return e
 
 
-@kernel(inline="always")
+@kernel(no_runtime=True)
 def _global_diagnostics(rings, fr, power, worst, glob):
     """Ring speeds, reactions and torques about the ring axes, frictional power, worst overlap."""
     ex, ey, ez = rings[0, 8], rings[0, 11], rings[0, 14]

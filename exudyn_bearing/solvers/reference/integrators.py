@@ -63,20 +63,28 @@ def evaluate(t, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc,
     return worst
 
 
-@kernel
+@kernel(no_runtime=True)
 def _store(k, t, glob, diag, cage_load, xb, vb, wb, xc, vc, ring,
            s_t, s_glob, s_diag, s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring):
-    """Copy the state and diagnostics into row k of the sample buffers."""
+    """Copy the state and diagnostics into row k of the sample buffers
+    (element by element: numba's broadcasting row assignment compiled for
+    about 10 s of a cold start)."""
     s_t[k] = t
-    s_glob[k] = glob
-    s_diag[k] = diag
-    s_cage[k] = cage_load
-    s_xb[k] = xb
-    s_vb[k] = vb
-    s_wb[k] = wb
-    s_xc[k] = xc
-    s_vc[k] = vc
-    s_ring[k] = ring
+    for i in range(glob.shape[0]):
+        s_glob[k, i] = glob[i]
+    for i in range(ring.shape[0]):
+        s_ring[k, i] = ring[i]
+    for j in range(xb.shape[0]):
+        for r in range(diag.shape[1]):
+            for i in range(diag.shape[2]):
+                s_diag[k, j, r, i] = diag[j, r, i]
+            s_cage[k, j, r] = cage_load[j, r]
+        for d in range(3):
+            s_xb[k, j, d] = xb[j, d]
+            s_vb[k, j, d] = vb[j, d]
+            s_wb[k, j, d] = wb[j, d]
+            s_xc[k, j, d] = xc[j, d]
+            s_vc[k, j, d] = vc[j, d]
 
 
 @kernel
@@ -125,7 +133,7 @@ def run_verlet(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb
     cage_load = np.zeros((z, 2))
     rings = ring_poses()
     fr = np.zeros((2, 6))
-    n_samp = 0
+    n_samp = np.int64(0)  # not the literal 0: that compiled a second copy of _store
     t = t0
     for step in range(n_steps):
         kick_drift(h, dt, xb, vb, wb, xc, vc, fb, tb, fc, inv_mb, inv_ib, inv_mz)
@@ -225,7 +233,7 @@ def run_rk4(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, f
     y0xc = xc.copy()
     y0vc = vc.copy()
     y0r = ring.copy()
-    n_samp = 0
+    n_samp = np.int64(0)  # not the literal 0: that compiled a second copy of _store
     for step in range(n_steps):
         t = t0 + step * dt
         y0x[:, :] = xb
