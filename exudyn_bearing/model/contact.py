@@ -678,7 +678,7 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb,
         for race in range(2):
             ratio, power, damp = _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist, hz,
                                                fb, tb, fr, diag, want)
-            if ratio > worst:
+            if ratio > worst or ratio != ratio:  # a NaN state is the worst: the engines stop on it
                 worst = ratio
             power_sum += power
             damp_sum += damp
