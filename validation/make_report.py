@@ -57,6 +57,7 @@ SCRIPTS = [
     ("losses_6208_7208.py", []),
     ("levels_checks.py", []),
     ("mutation_run.py", ["--quick"]),
+    ("profile_reference.py", []),
 ]
 
 
@@ -152,7 +153,14 @@ def section_new_checks():
             "at the three levels.",
             [("levels/levels_vc.png", "varying-compliance vibration of the quasi-static level: spectrum with the "
                                       "ball-pass frequency and its harmonics"),
-             ("levels/levels_rotor.png", "the rotor scenario at the three levels")], last_lines=40))
+             ("levels/levels_rotor.png", "the rotor scenario at the three levels")], last_lines=40)
+        + section_printed(
+            "Where the reference engine's step time goes", "profile_reference.py",
+            "The bench_reference scene (6208, 3000 N, 500 rad/s, cage, lubrication, tangential history) in steady "
+            "running: the compiled contact kernel timed with stages switched off through the parameter vector on "
+            "a frozen state (CPU time per step, interleaved rounds, medians). The cold start is measured by "
+            "`python validation/profile_reference.py --compile` (a fresh process, empty numba cache).",
+            last_lines=40))
 
 
 def section_reference():
