@@ -208,8 +208,14 @@ def main(argv=None):
               f"baseline {med['baseline']:.4f} s, new {med['new']:.4f} s; median of the per-round ratios "
               f"new/baseline {ratio:.3f}, control new/new {control:.3f} (noise floor); minima "
               f"{min(walls['baseline']):.4f} / {min(walls['new']):.4f} s")
-        print("  arrays bitwise equal: " + ", ".join(f"{k} {'yes' if r['equal'] else 'no (max diff %.3g)' % r['max_abs_diff']}"
-                                                  for k, r in cmp.items()))
+        def verdict(r):
+            if r["equal"]:
+                return "yes"
+            if r["max_abs_diff"] is None:  # e.g. the global diagnostics gained the energy columns
+                return "no (other shape)"
+            return "no (max diff %.3g)" % r["max_abs_diff"]
+
+        print("  arrays bitwise equal: " + ", ".join(f"{k} {verdict(r)}" for k, r in cmp.items()))
     (out / "bench_defects.json").write_text(json.dumps(to_jsonable(report), indent=2))
     print(f"written {out / 'bench_defects.json'}")
 

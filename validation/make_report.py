@@ -751,7 +751,9 @@ def section_defects():
         lines.append("")
     if "no_defect" in d:
         n = d["no_defect"]
-        differ = {k: v["max_abs_diff"] for k, v in n["arrays"].items() if not v["equal"]}
+        shape = [k for k, v in n["arrays"].items() if not v["equal"] and v["max_abs_diff"] is None]
+        differ = {k: v["max_abs_diff"] for k, v in n["arrays"].items()
+                  if not v["equal"] and v["max_abs_diff"] is not None}
         if not differ:
             eq = "bitwise equal"
         elif max(differ.values()) <= 1e-12:
@@ -759,6 +761,9 @@ def section_defects():
                                                       f"changed since)" for k, d in differ.items()))
         else:
             eq = "NOT equal: " + ", ".join(f"{k} (max diff {d:.3g})" for k, d in differ.items())
+        if shape:
+            eq += (" (" + ", ".join(shape) + ": other shape, the global diagnostics gained the energy columns "
+                   "since; not compared)")
         lines += [f"No defects: the 6208 scene ({n['scene']}, T = {n['t_end']} s) run by this code and by the code "
                   f"before the defect feature ({n['baseline']}), both in one process in rotating order: median wall "
                   f"{n['median_wall_s']['baseline']:.3f} s (before) and {n['median_wall_s']['new']:.3f} s (now), median "
