@@ -763,8 +763,7 @@ def section_defects():
             eq = ("not bitwise equal: " + ", ".join(f"{k} (max diff {d:.3g})" for k, d in differ.items())
                   + "; the compiled arithmetic changed since (energy bookkeeping, which functions the kernel "
                   "inlines), and this 0.5 s run is chaotic: last-bit differences grow as under the 1e-15 "
-                  "perturbations of the round-off section (a 0.03 s run of the 6205 compared bitwise equal "
-                  "before and after the energy change)")
+                  "perturbations of the round-off section")
         if shape:
             eq += (" (" + ", ".join(shape) + ": other shape, the global diagnostics gained the energy columns "
                    "since; not compared)")
