@@ -138,22 +138,22 @@ def section_new_checks():
         "against a 64 x 8 integration; the default of every solver (16 x 4) is the cheapest setting within 1 % "
         "dissipation and 0.1 deg beta on every case.",
         [("traction_convergence.png", "dissipation and beta errors against the points per contact, per case and "
-                                      "points across; dashed: the targets")], last_lines=60)
+                                      "points across; dashed: the targets.")], last_lines=60)
         + section_printed(
             "Power loss against SKF's and Palmgren's models", "losses_6208_7208.py",
             "The quasi-static solver's loss components (traction, EHL rolling, hysteresis, drag; "
             "docs/theory/losses.md) for the 6208 (radial) and the 7208 (thrust) against SKF's catalogue friction "
             "model and Palmgren's M0 + M1, the DEM papers' oil at its one temperature, no oil bath.",
             [("losses_6208_7208.png", "friction torque of the project's components, SKF's model and Palmgren's "
-                                      "band over speed and load")], last_lines=30)
+                                      "band over speed and load.")], last_lines=30)
         + section_printed(
             "Bearing levels in Exudyn", "levels_checks.py",
             "The ball element, the quasi-static level and the linear level in Exudyn (docs/theory/levels.md): "
             "static equilibrium against solve_quasistatic, the ball-pass varying compliance, the rotor scenario "
             "at the three levels.",
             [("levels/levels_vc.png", "varying-compliance vibration of the quasi-static level: spectrum with the "
-                                      "ball-pass frequency and its harmonics"),
-             ("levels/levels_rotor.png", "the rotor scenario at the three levels")], last_lines=40)
+                                      "ball-pass frequency and its harmonics."),
+             ("levels/levels_rotor.png", "the rotor scenario at the three levels.")], last_lines=40)
         + section_printed(
             "Where the reference engine's step time goes", "profile_reference.py",
             "The bench_reference scene (6208, 3000 N, 500 rad/s, cage, lubrication, tangential history) in steady "

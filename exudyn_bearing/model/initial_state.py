@@ -11,7 +11,7 @@ from ..data import BallBearing, InputError
 from ..physics import kinematics
 from ..physics.load_distribution import static_equilibrium
 from .layout import H_E1, H_E2, HIST_N
-from .operating_geometry import operating_geometry
+from .operating_geometry import start_geometry
 
 __all__ = ["initial_state", "initial_history", "ring_mass_estimate", "state_from_ball_kinematics"]
 
@@ -43,13 +43,9 @@ def initial_state(bearing: BallBearing, scenario, start: dict | None = None) -> 
                          "and CreateBallBearing compute it, the engines take it as start=")
     z = b.n_balls
     w0 = s.omega_at(0.0)
-    loaded = b
-    if s.ring_growth and w0 != 0.0:
-        # the inner groove as the run sees it at t = 0: grown with the ring's speed (the kernel's
-        # growth coefficient x omega^2), so that the start has no extra overlap to shed
-        loaded = b.replace(inner_race_radius=b.inner_race_radius
-                           + operating_geometry(b, omega_inner=w0).inner_ring_growth)
-    sol = static_equilibrium(loaded, s.Fr, s.Fa, hertz_method=s.hertz)
+    # the inner groove as the run sees it at t = 0 (grown with the ring's speed), so that the start has
+    # no extra overlap to shed
+    sol = static_equilibrium(start_geometry(b, s), s.Fr, s.Fa, hertz_method=s.hertz)
     rho_o, z_o = b.outer_groove_center
     a0 = b.free_contact_angle
     xb = np.zeros((z, 3))

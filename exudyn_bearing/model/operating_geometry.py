@@ -27,7 +27,7 @@ from ..data import BallBearing, InputError
 from ..data.errors import check_temperatures
 from ..physics import ring_growth as rg
 
-__all__ = ["OperatingGeometry", "operating_geometry", "REFERENCE_TEMPERATURE"]
+__all__ = ["OperatingGeometry", "operating_geometry", "REFERENCE_TEMPERATURE", "start_geometry"]
 
 #: Temperature at which the catalogue dimensions hold [K].
 REFERENCE_TEMPERATURE = 293.15
@@ -123,3 +123,16 @@ def operating_geometry(bearing: BallBearing, omega_inner=0.0, omega_outer=0.0, r
         inner_ring_growth=u_i, outer_ring_growth=u_o,
         inner_thermal_growth=rho_i * s_i, outer_thermal_growth=rho_o * s_o,
         ball_thermal_growth=b.ball_radius * s_b, fit_pressure=p_fit, bore_radius=bore)
+
+
+def start_geometry(bearing: BallBearing, scenario) -> BallBearing:
+    """The bearing as a dynamic run sees it at t = 0: with ``scenario.ring_growth``
+    the inner raceway grown with the ring's start speed (the engines' growth
+    coefficient times omega^2, :func:`operating_geometry`), so that the analytic
+    start and the a-priori stable step use the loads the run starts with."""
+    w0 = scenario.omega_at(0.0)
+    if not scenario.ring_growth or w0 == 0.0:
+        return bearing
+    u = operating_geometry(bearing, omega_inner=w0).inner_ring_growth
+    return bearing.replace(inner_race_radius=bearing.inner_race_radius + u)
+
