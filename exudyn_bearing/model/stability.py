@@ -19,7 +19,6 @@ from ..physics.friction import sphere_tangential_mass
 from ..physics.hertz import material_reduced_modulus
 from ..physics.load_distribution import race_stiffness
 from .load_range import check_load_range
-from .operating_geometry import start_geometry
 from .scenario import Scenario
 
 __all__ = ["ellipse_traction_damping", "SimulationError", "StepSizeWarning", "StableStep", "STABILITY_SAFETY", "START_UP_CAGE_LOAD",
@@ -128,9 +127,8 @@ def _static_solution(b: BallBearing, scenario: Scenario):
 
 
 def _static_ball_loads(b: BallBearing, scenario: Scenario) -> np.ndarray:
-    """Quasi-static ball loads [N] under the scenario's F_r, F_a at the start geometry (the inner ring
-    grown with its start speed when the scene has ring growth; zeros without an equilibrium)."""
-    sol = _static_solution(start_geometry(b, scenario), scenario)
+    """Quasi-static ball loads [N] under the scenario's F_r, F_a (zeros without an equilibrium)."""
+    sol = _static_solution(b, scenario)
     return np.zeros(b.n_balls) if sol is None else sol.q
 
 
