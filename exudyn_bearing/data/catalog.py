@@ -33,7 +33,7 @@ from pathlib import Path
 from typing import Mapping
 
 from .bearings import BallBearing, free_contact_angle_from_degrees
-from .errors import InputError, check_keys
+from .errors import InputError, check_keys, lookup
 from .lubricants import Lubricant
 from .materials import Material
 from .traction import TractionModel
@@ -84,11 +84,7 @@ def get_traction_model(spec, bearing=None) -> TractionModel:
         spec = default_traction(bearing)
     if isinstance(spec, TractionModel):
         return spec
-    try:
-        return traction_models[str(spec)]
-    except KeyError:
-        raise InputError(f"traction: unknown traction model {spec!r} "
-                         f"(catalogue: {', '.join(traction_models)})") from None
+    return lookup(traction_models, str(spec), "traction: unknown traction model")
 
 
 def _material_from_dict(name: str, d) -> Material:
@@ -192,10 +188,7 @@ catalog: Mapping[str, BallBearing] = {
 
 def get_bearing(name: str) -> BallBearing:
     """Catalogue bearing by name; an unknown name lists the valid ones."""
-    try:
-        return catalog[name]
-    except KeyError:
-        raise InputError(f"bearing: unknown bearing {name!r} (catalogue: {', '.join(catalog)})") from None
+    return lookup(catalog, name, "bearing: unknown bearing")
 
 
 def load_bearing(spec, name: str | None = None) -> BallBearing:
@@ -269,8 +262,4 @@ def default_lubricant(bearing=None) -> Lubricant:
     """The lubricant ``bearing`` names (its ``lubricant``, a catalogue name),
     else the DEM papers' (``guessasma2018``, docs/theory/lubrication.md#film-thickness)."""
     name = getattr(bearing, "lubricant", None) or PAPERS_LUBRICANT
-    try:
-        return lubricants[name]
-    except KeyError:
-        raise InputError(f"lubricant: bearing {bearing.name} names the unknown lubricant {name!r} "
-                         f"(catalogue: {', '.join(lubricants)})") from None
+    return lookup(lubricants, name, f"lubricant: bearing {getattr(bearing, 'name', '')} names the unknown lubricant")

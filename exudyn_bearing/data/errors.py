@@ -101,6 +101,15 @@ def check_keys(what: str, given, valid) -> None:
         raise InputError(f"{unknown[0]}: unknown {what} (valid: {', '.join(sorted(valid))})")
 
 
+def lookup(table, key, unknown: str, label: str = "catalogue"):
+    """``table[key]``; else InputError "<unknown> 'key' (<label>: the valid names)", ``unknown`` naming the
+    parameter and what was looked for (e.g. "bearing: unknown bearing")."""
+    try:
+        return table[key]
+    except KeyError:
+        raise InputError(f"{unknown} {key!r} ({label}: {', '.join(table)})") from None
+
+
 def check_plausible(name: str, value, lo: float, hi: float, unit: str, rule: str, mistakes=()) -> float:
     """``value`` as a float if it lies in the plausible range ``[lo, hi]``
     (in ``unit``), else InputError naming ``name``. ``mistakes``: pairs

@@ -18,7 +18,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass, fields
 from importlib import resources
 
-from .errors import InputError, check_keys, check_nonnegative, check_positive, check_text
+from .errors import InputError, check_keys, lookup, check_nonnegative, check_positive, check_text
 
 __all__ = ["LubricantTemperatureData", "lubricants_temperature", "get_lubricant_temperature"]
 
@@ -130,8 +130,4 @@ def get_lubricant_temperature(name) -> LubricantTemperatureData:
     """The entry ``name`` of ``lubricants_temperature.json`` (InputError listing the names otherwise)."""
     if isinstance(name, LubricantTemperatureData):
         return name
-    try:
-        return lubricants_temperature[str(name)]
-    except KeyError:
-        raise InputError(f"lubricant: unknown lubricant with temperature {name!r} (valid: "
-                         f"{', '.join(lubricants_temperature)})") from None
+    return lookup(lubricants_temperature, str(name), "lubricant: unknown lubricant with temperature", "valid")
