@@ -34,7 +34,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ...data import InputError, get_traction_model, load_bearing
+from ...data import InputError, TractionModel, get_traction_model, load_bearing
 from ...data.errors import check_finite, check_temperature
 from ...data import lubricants_temperature as _lt
 from ...physics import thermal as th
@@ -272,8 +272,7 @@ def solve_thermal(bearing, Fr=0.0, Fa=0.0, *, omega, oil_inlet_temperature, oil_
     for it in range(1, int(max_iterations) + 1):
         t_contact = float((temps[0] + temps[1] + 2.0 * temps[2]) / 4.0)
         lub = lubricant_at(lt, t_contact)
-        tm = tm0.replace(viscosity=lub.viscosity, pressure_viscosity=lub.pressure_viscosity) \
-            if tm0.kind == "ehl" else tm0
+        tm = _traction_at(tm0, lub, t_contact)
         oil = properties_at(lt, temps[3])
         sol = solve_quasistatic(b, Fr, Fa, omega=omega, traction=tm, lubricant=lub, start=sol,
                                 temperatures={"inner": float(temps[0]), "outer": float(temps[1]),
@@ -309,6 +308,16 @@ def solve_thermal(bearing, Fr=0.0, Fa=0.0, *, omega, oil_inlet_temperature, oil_
         conductances=cond, losses=losses, lubricant=lub, iterations=it, converged=converged,
         oil_inlet_temperature=t_in, ambient_temperature=t_amb, oil_flow=q_vol, history=history,
         wall_s=time.perf_counter() - t0)
+
+
+def _traction_at(model, lub, t_contact):
+    """An ``ehl`` traction model with the viscosity and pressure-viscosity coefficient of the lubricant
+    at the contact temperature (named ``name@TK``); other kinds unchanged (they follow the film)."""
+    if model.kind != "ehl":
+        return model
+    p = {**model.parameters, "viscosity": lub.viscosity, "pressure_viscosity": lub.pressure_viscosity}
+    return TractionModel(model.kind, p, f"{model.name}@{t_contact:.5g}K", model.validity,
+                         f"{model.source}; viscosity and pressure-viscosity of {lub.name}")
 
 
 def _runaway(lt, temps, iteration: int):
