@@ -4,7 +4,7 @@ docs/theory/thermal.md. Nodes: inner ring, outer ring, balls (one node for all),
 cavity, fully mixed: the oil leaves at the node's temperature). Boundaries: the oil inlet
 temperature (through m_dot c_p) and the ambient (through the shaft and the housing).
 
-Each iteration (a fixed point with under-relaxation):
+Each iteration (a fixed point, relaxed by the secant slope of the mean temperature: Wegstein's method):
 
 1. the lubricant at the contact temperature (the mean of the rings and twice the balls, the
    surfaces that form each contact inlet) by :func:`~exudyn_bearing.physics.lubricant_properties.lubricant_at`,
@@ -190,7 +190,7 @@ def solve_thermal(bearing, Fr=0.0, Fa=0.0, *, omega, oil_inlet_temperature, oil_
                   ambient_temperature=293.15, lubricant=None, traction=None, lubrication="jet",
                   oil_volume_fraction=0.0, ambient_conductance=None,
                   solid_conductivity=th.BEARING_STEEL_CONDUCTIVITY, tolerance=0.01, max_iterations=60,
-                  relaxation=0.7, **quasistatic) -> ThermalSolution:
+                  relaxation=1.0, start=None, **quasistatic) -> ThermalSolution:
     """Temperatures and losses of a bearing at speed, consistent with each other.
 
     Parameters
@@ -225,7 +225,10 @@ def solve_thermal(bearing, Fr=0.0, Fa=0.0, *, omega, oil_inlet_temperature, oil_
         Largest temperature change between iterations at convergence [K].
     max_iterations : int
     relaxation : float
-        Under-relaxation of the temperature update, 0 < w <= 1.
+        Relaxation of the first temperature update, 0 < w <= 1 (later steps: the secant slope).
+    start : ThermalSolution, optional
+        A solution at a nearby operating point (the previous speed of a sweep): its temperatures and
+        its quasi-static solution start the iteration.
     **quasistatic
         Further arguments of :func:`~.solve.solve_quasistatic` (``control``, ``fit``, ...).
 
@@ -268,7 +271,11 @@ def solve_thermal(bearing, Fr=0.0, Fa=0.0, *, omega, oil_inlet_temperature, oil_
     m_dot = rho_in * q_vol
 
     temps = np.full(4, t_in)
-    sol, history, converged, it, clamped = None, [], False, 0, False
+    sol = None
+    if start is not None:
+        temps = np.minimum(np.array([start.temperatures[n] for n in NODES], float), hi)
+        sol = start.quasistatic
+    history, converged, it, clamped, prev = [], False, 0, False, None
     for it in range(1, int(max_iterations) + 1):
         t_contact = float((temps[0] + temps[1] + 2.0 * temps[2]) / 4.0)
         lub = lubricant_at(lt, t_contact)
@@ -290,7 +297,15 @@ def solve_thermal(bearing, Fr=0.0, Fa=0.0, *, omega, oil_inlet_temperature, oil_
             converged = True
             temps = t_new
             break
-        temps = temps + w * (t_new - temps)
+        # secant relaxation of the mean temperature x -> g(x): slope lam of g from the last two iterates,
+        # step 1 / (1 - lam) (Wegstein), bounded to [relaxation / 2, 2]; the first step is the plain relaxation
+        x, gx = float(np.mean(temps)), float(np.mean(t_new))
+        step_w = w
+        if prev is not None and abs(x - prev[0]) > 1e-9:
+            lam = (gx - prev[1]) / (x - prev[0])
+            step_w = float(np.clip(1.0 / (1.0 - lam), 0.5 * w, 2.0)) if lam < 1.0 else w
+        prev = (x, gx)
+        temps = temps + step_w * (t_new - temps)
         hot = temps > hi
         if np.any(hot):  # an overshoot is clamped to the range's top; the same again is runaway
             if clamped:
