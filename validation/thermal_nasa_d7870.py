@@ -53,6 +53,9 @@ def solve_grid(oil_flow, t_in, rpms=RPM, thrusts=THRUST):
             r = eb.solve_thermal("ACBB-120", Fa=fa, omega=rpm * math.pi / 30.0, oil_inlet_temperature=t_in,
                                  oil_flow=oil_flow, start=prev)
             prev = r
+            if fa == thrusts[-1] and rpm == rpms[-1]:
+                print(f"conductances at {fa:g} N, {rpm:g} rpm [W/K]: " + ", ".join(
+                    f"{k} {v:.4g}" for k, v in r.conductances.items() if k != "n_balls"))
             s, pl = r.quasistatic, r.losses["power_loss"]
             rows.append({"Fa_N": fa, "rpm": rpm, "power_loss_W": r.power_loss_total,
                          **{f"{k}_W": pl[k] for k in pl if isinstance(pl[k], float)},
