@@ -1,12 +1,15 @@
 """Thermal network (physics/thermal.py) and the thermal quasi-static solve (solvers/quasistatic/thermal.py):
 docs/theory/thermal.md."""
+import json
 import math
+import re
 import warnings
 
 import numpy as np
 import pytest
 
 import exudyn_bearing as eb
+from exudyn_bearing.cli import main
 from exudyn_bearing.physics import thermal as th
 from exudyn_bearing.physics.lubricant_properties import properties_at
 from exudyn_bearing.solvers.quasistatic.thermal import ThermalConvergenceWarning, ThermalRunawayError
@@ -83,12 +86,8 @@ def test_runaway_and_non_convergence_name_the_temperature():
         r = eb.solve_thermal("6208", oil_flow=1e-5, max_iterations=1, **CASE)
     assert not r.converged
     msgs = [str(w.message) for w in caught if issubclass(w.category, ThermalConvergenceWarning)]
-    assert len(msgs) == 1 and re_temperature(msgs[0])
-
-
-def re_temperature(msg):
-    import re
-    return re.search(r"not converged in 1 iterations .* temperatures reached inner \d+\.\d K", msg) is not None
+    assert len(msgs) == 1
+    assert re.search(r"not converged in 1 iterations .* temperatures reached inner \d+\.\d K", msgs[0])
 
 
 def test_json_keys(solved):
@@ -96,3 +95,15 @@ def test_json_keys(solved):
     assert set(d["temperatures"]) == {"inner", "outer", "ball", "oil"}
     assert math.isfinite(d["power_loss_total"]) and "temperatures" in d["units"]
     assert np.isclose(d["power_loss_total"], sum(v for v in d["power_loss"].values() if isinstance(v, float)))
+
+
+def test_cli_thermal_json(capsys):
+    args = ["quasistatic", "6208", "--Fr", "3000", "--omega", "500", "--thermal", "--oil-inlet-temperature",
+            "313.15", "--oil-flow", "1e-5"]
+    assert main(args + ["--json"]) in (0, None)
+    d = json.loads(capsys.readouterr().out)
+    assert set(d["temperatures"]) == {"inner", "outer", "ball", "oil"} and d["thermal"]["converged"]
+    assert d["power_loss_total"] > 0.0 and "friction_torque_total" in d
+    # --thermal without the oil flow is a one-line error naming the flag
+    assert main(args[:-2]) != 0
+    assert "--oil-flow: needed with --thermal" in capsys.readouterr().err
