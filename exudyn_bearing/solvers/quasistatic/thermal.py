@@ -286,7 +286,11 @@ def solve_thermal(bearing, Fr=0.0, Fa=0.0, *, omega, oil_inlet_temperature, oil_
                                               "ball": float(temps[2])}, **quasistatic)
         losses = power_losses(sol, b, lub, oil_volume_fraction=oil_volume_fraction, oil_density=oil["density"])
         heat, G, gb, tb, cond = _network(b, sol, losses, oil, t_in, t_amb, m_dot, g_amb, k_solid)
-        t_new = th.network_temperatures(G, heat, gb, tb)
+        try:
+            t_new = th.network_temperatures(G, heat, gb, tb)
+        except np.linalg.LinAlgError:
+            raise InputError("thermal network: a node has no path for its heat to the oil or the ambient "
+                             f"(conductances {cond}); a bearing at rest without load has none") from None
         step = float(np.max(np.abs(t_new - temps)))
         history.append({"iteration": it, "temperatures": dict(zip(NODES, map(float, t_new))),
                         "power_loss_total": float(losses["power_loss_total"]), "change": step})
