@@ -35,7 +35,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ...data import InputError, TractionModel, get_traction_model, load_bearing
-from ...data.errors import check_finite, check_temperature
+from ...data.errors import check_finite, check_integer, check_temperature
 from ...data import lubricants_temperature as _lt
 from ...physics import thermal as th
 from ...physics.lubricant_properties import lubricant_at, properties_at
@@ -257,6 +257,10 @@ def solve_thermal(bearing, Fr=0.0, Fa=0.0, *, omega, oil_inlet_temperature, oil_
     w = check_finite("relaxation", relaxation)
     if not 0.0 < w <= 1.0:
         raise InputError(f"relaxation: must lie in (0, 1], got {w!r}")
+    n_iter = check_integer("max_iterations", max_iterations)
+    tol = check_finite("tolerance", tolerance)
+    if n_iter < 1 or not tol > 0.0:
+        raise InputError(f"max_iterations, tolerance: need >= 1 and > 0 K, got {max_iterations!r}, {tolerance!r}")
     k_solid = check_finite("solid_conductivity", solid_conductivity)
     if not k_solid > 0.0:
         raise InputError(f"solid_conductivity: must be > 0 W/(m K), got {k_solid!r}")
@@ -276,7 +280,7 @@ def solve_thermal(bearing, Fr=0.0, Fa=0.0, *, omega, oil_inlet_temperature, oil_
         temps = np.minimum(np.array([start.temperatures[n] for n in NODES], float), hi)
         sol = start.quasistatic
     history, converged, it, clamped, prev = [], False, 0, False, None
-    for it in range(1, int(max_iterations) + 1):
+    for it in range(1, n_iter + 1):
         t_contact = float((temps[0] + temps[1] + 2.0 * temps[2]) / 4.0)
         lub = lubricant_at(lt, t_contact)
         tm = _traction_at(tm0, lub, t_contact)
@@ -297,7 +301,7 @@ def solve_thermal(bearing, Fr=0.0, Fa=0.0, *, omega, oil_inlet_temperature, oil_
         if not np.all(np.isfinite(t_new)):
             raise ThermalRunawayError(f"thermal loop: temperatures not finite at iteration {it} "
                                       f"(power loss {losses['power_loss_total']:.4g} W)")
-        if step < tolerance:
+        if step < tol:
             converged = True
             temps = t_new
             break
@@ -319,7 +323,7 @@ def solve_thermal(bearing, Fr=0.0, Fa=0.0, *, omega, oil_inlet_temperature, oil_
     out_heat = th.network_heat_out(temps, gb, tb)
     if not converged:
         warnings.warn(ThermalConvergenceWarning(
-            f"thermal loop: not converged in {it} iterations (last change {step:.3g} K > {tolerance:g} K); "
+            f"thermal loop: not converged in {it} iterations (last change {step:.3g} K > {tol:g} K); "
             "temperatures reached " + ", ".join(f"{n} {t:.1f} K" for n, t in zip(NODES, temps))), stacklevel=2)
     return ThermalSolution(
         quasistatic=sol, temperatures=dict(zip(NODES, map(float, temps))), contact_temperature=t_contact,
