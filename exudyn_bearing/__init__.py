@@ -18,10 +18,11 @@ from .simulate import CreateBallBearing, simulate
 from .model.coefficients import BearingCoefficients
 from .solvers.element.console import filter_exudyn_notes
 from .solvers.quasistatic import QuasiStaticSolution, bearing_coefficients, solve_quasistatic
+from .solvers.quasistatic.thermal import ThermalSolution, solve_thermal
 
 __version__ = "0.1.0"
 
 __all__ = ["CreateBallBearing", "filter_exudyn_notes", "BallBearing", "Defect", "InputError", "Lubricant", "Material",
            "Results", "Scenario", "SimulationError", "SteadyStateWarning", "StepSizeWarning", "catalog", "get_bearing", "load_bearing",
            "load_lubricant", "lubricants", "materials", "simulate", "solve_quasistatic", "QuasiStaticSolution",
-           "bearing_coefficients", "BearingCoefficients"]
+           "bearing_coefficients", "BearingCoefficients", "solve_thermal", "ThermalSolution"]

@@ -7,6 +7,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..data import InputError
 from ..model.load_range import check_pressures
 from ..outputs.jsonio import to_jsonable
 from ..outputs.plotting_quasistatic import plot_loads_angles, plot_slip
@@ -17,6 +18,7 @@ from .common import (add_strip_arguments, add_bearing_argument, add_hold_argumen
                      add_ring_growth_argument, add_traction_argument, bearing_from_args, explained, finite_float,
                      fixed_from_args, format_value, lubricant_from_args, solver_header, traction_from_args)
 from ..solvers.quasistatic.losses import LOSS_COMPONENTS
+from ..solvers.quasistatic.thermal import solve_thermal
 
 
 def add_parser(sub):
@@ -37,6 +39,15 @@ def add_parser(sub):
                                                                  "solid shaft [m]")
     p.add_argument("--temperature", type=finite_float, nargs=3, metavar=("T_INNER", "T_OUTER", "T_BALL"),
                    help="part temperatures [K] for uniform thermal growth (default 293.15 K)")
+    p.add_argument("--thermal", action="store_true",
+                   help="solve the bearing with its thermal network (jet lubrication): temperatures of the rings, "
+                        "balls and oil consistent with the losses (needs --oil-inlet-temperature and --oil-flow; "
+                        "--lubricant then names an entry with temperature, default the bearing's)")
+    p.add_argument("--oil-inlet-temperature", type=finite_float, metavar="K", help="oil inlet temperature [K] (--thermal)")
+    p.add_argument("--oil-flow", type=finite_float, metavar="M3_S", help="oil flow through the bearing [m^3/s] "
+                                                                         "(--thermal; 1 l/min = 1.667e-5)")
+    p.add_argument("--ambient-temperature", type=finite_float, default=293.15, metavar="K",
+                   help="air around shaft and housing [K] (--thermal, default 293.15)")
     add_hold_arguments(p)
     p.add_argument("--hertz", choices=METHODS, default="exact", help="Hertz fidelity level")
     add_strip_arguments(p)
@@ -59,8 +70,10 @@ def run(args):
         b = b.with_clearance(args.Pd)
     omega = args.omega if args.omega is not None else (args.rpm * math.pi / 30.0 if args.rpm is not None else 0.0)
     temps = dict(zip(("inner", "outer", "ball"), args.temperature)) if args.temperature else None
-    lub = lubricant_from_args(args, b)
     traction = traction_from_args(args, b)
+    if args.thermal:
+        return run_thermal(args, b, omega, traction)
+    lub = lubricant_from_args(args, b)
     with explained(b):
         s = solve_quasistatic(b, args.Fr, args.Fa, args.Mx, args.My, Fy=args.Fy, omega=omega,
                               omega_outer=args.omega_outer, control=args.control, traction=traction,
@@ -93,6 +106,41 @@ def run(args):
     print_ball_table(s.balls)
     if args.plot:
         print(f"plot: {d['plot']}")
+
+
+def run_thermal(args, b, omega, traction):
+    """``--thermal``: solve_thermal (solvers/quasistatic/thermal.py), its temperatures and losses."""
+    for flag, v in (("--oil-inlet-temperature", args.oil_inlet_temperature), ("--oil-flow", args.oil_flow)):
+        if v is None:
+            raise InputError(f"{flag}: needed with --thermal")
+    if args.temperature:
+        raise InputError("--temperature: the part temperatures come from the thermal network with --thermal")
+    with explained(b):
+        r = solve_thermal(b, args.Fr, args.Fa, omega=omega, oil_inlet_temperature=args.oil_inlet_temperature,
+                          oil_flow=args.oil_flow, ambient_temperature=args.ambient_temperature,
+                          lubricant=args.lubricant, traction=traction, Mx=args.Mx, My=args.My, Fy=args.Fy,
+                          omega_outer=args.omega_outer, control=args.control, ring_growth=args.ring_growth,
+                          fit=args.fit, fixed=fixed_from_args(args), hertz_method=args.hertz,
+                          n_strips=args.strips, n_across=args.points_across)
+    s = r.quasistatic
+    check_solution_pressures(s, f"F_r = {args.Fr:g} N, F_a = {args.Fa:g} N at omega = {omega:g} rad/s")
+    if args.json:
+        d = r.to_dict()
+        d["ring_growth"] = args.ring_growth
+        d["tilt"] = args.tilt
+        for k in ("slip_inner", "slip_outer"):
+            d[k] = d[k].tolist()
+        print(json.dumps(to_jsonable(d), indent=2))
+        return
+    print(s.summary())
+    print(solver_header(r.lubricant, s.traction, args.ring_growth))
+    pl = r.losses["power_loss"]
+    print("temperatures [K]: " + ", ".join(f"{k} {v:.1f}" for k, v in r.temperatures.items())
+          + f" (oil in {r.oil_inlet_temperature:.1f}, contacts {r.contact_temperature:.1f}); "
+          + f"{r.iterations} iterations, {'converged' if r.converged else 'NOT converged'}")
+    print(f"power loss {r.power_loss_total:.4g} W (" + ", ".join(f"{k} {pl[k]:.4g}" for k in LOSS_COMPONENTS)
+          + f"); heat out: oil {r.heat_out['oil']:.4g} W, ambient {r.heat_out['ambient']:.4g} W")
+    print_ball_table(s.balls)
 
 
 #: Columns of the ball table: (header, width, unit) and the value of ball j.
