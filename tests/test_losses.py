@@ -348,3 +348,43 @@ def test_quasistatic_new_loss_inputs_refused(sol6208):
         power_losses(sol6208, cage_guidance="inner_land", cage_land_clearance=0.0)
     with pytest.raises(InputError, match="cage_pocket_friction"):
         power_losses(sol6208, cage_pocket_friction=-0.1)
+
+
+# ---- dynamic summaries: power_loss by component and the energy check (issue 22 items 1, 4c) ----------
+def test_energy_check_hand_calculation():
+    from exudyn_bearing.outputs.window_checks import energy_check
+
+    # drive 30 W; losses 20 + 9 W; the balls gain 0.05 J in 0.1 s (0.5 W): residual (30 - 29 - 0.5)/30 = 1/60
+    c = energy_check(30.0, {"a": 20.0, "b": 9.0, "c": None}, 0.05, 0.1)
+    assert c["residual"] == pytest.approx(1 / 60, rel=1e-12) and c["passed"] is False
+    assert c["components"] == ["a", "b"] and c["missing"] == ["c"] and "a + b" in c["statement"]
+    c = energy_check(30.0, {"a": 20.0, "b": 9.4}, 0.05, 0.1, recorded_dissipation=29.0)
+    assert c["residual"] == pytest.approx(0.1 / 30, rel=1e-9) and c["passed"] is True
+    assert c["split_error"] == pytest.approx(0.4 / 29.0, rel=1e-12)
+    assert energy_check(0.04, {"a": 0.01}, 0.0, 0.1, floor=4.5)["passed"] is None     # below the loss floor
+
+
+def test_dynamic_summary_power_loss_closes_the_energy_balance():
+    # the ellipse level from the quasi-static traction equilibrium (the scene of tests/test_energy.py, shorter):
+    # the drive power equals the reported components (traction per race + contact damping) plus the
+    # kinetic-energy rate within 1 %, and the traction components are the per-contact dissipation
+    import warnings
+
+    import exudyn_bearing as eb
+
+    sc = eb.Scenario(Fa=3000.0, Fr=0.0, omega=500.0, t_end=0.004, dt=2e-6, sample_dt=2e-4, cage=False,
+                     traction_level="ellipse", n_strips=16, n_across=4, initial="quasistatic", control="equilibrium")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        run = eb.simulate("6208", sc)
+        s = run.summary(fraction=0.5)
+    p = s["power_loss"]
+    assert set(p) == {"contact_traction_inner", "contact_traction_outer", "contact_damping"}
+    assert s["power_loss_total"] == pytest.approx(sum(p.values()), rel=1e-12)
+    # the per-race split sums to the recorded friction_power (the same contacts)
+    assert p["contact_traction_inner"] + p["contact_traction_outer"] == pytest.approx(s["friction_power"], rel=1e-9)
+    c = s["energy_check"]
+    assert c["passed"] is True and abs(c["residual"]) <= 0.01
+    assert "contact_traction_inner + contact_traction_outer + contact_damping" in c["statement"]
+    assert any(x.startswith("cage pocket friction") for x in s["not_modelled"])
+    assert s["units"]["power_loss_total"] == "W"
