@@ -244,6 +244,26 @@ def print_tables(rows):
               f"{len(rows)} inside, {np.sum(tq > hi)} above, {np.sum(tq < lo)} below")
 
 
+def dynamic_energy_check():
+    """Issue 22 item 4c on a dynamic run: the 6208 under 3 kN thrust at 500 rad/s at the ellipse traction
+    level from the quasi-static traction equilibrium (the scene of tests/test_energy.py), its summary's
+    power_loss by component and energy_check over the default window (the last quarter)."""
+    import warnings
+
+    sc = eb.Scenario(Fa=3000.0, Fr=0.0, omega=500.0, t_end=0.01, dt=2e-6, sample_dt=5e-4, cage=False,
+                     traction_level="ellipse", n_strips=16, n_across=4, initial="quasistatic", control="equilibrium")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        s = eb.simulate("6208", sc).summary()
+    c = s["energy_check"]
+    print("\n[dynamic] 6208, Fa = 3000 N, 500 rad/s, ellipse level, reference engine, window "
+          f"{s['window']['t0']:.4g}-{s['window']['t1']:.4g} s: power_loss "
+          + ", ".join(f"{k} {v:.4g} W" for k, v in s["power_loss"].items() if v is not None)
+          + f"; total {s['power_loss_total']:.4g} W; drive {c['drive_power']:.4g} W; kinetic energy rate "
+          f"{c['kinetic_energy_rate']:.3g} W")
+    print(f"  {c['statement']}; split error against dissipated_work {c['split_error']:.2g}")
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--quick", action="store_true", help="three speeds only")
@@ -254,6 +274,7 @@ def main():
     print(f"oil guessasma2018: nu = {nu * 1e6:.1f} mm^2/s at its one temperature; torques in N mm "
           "(project = power / inner-ring speed); ratios project / SKF")
     print_tables(rows)
+    dynamic_energy_check()
     print(f"wall per solve: median {np.median([r['wall_s'] for r in rows]):.2f} s")
     csv_path = OUT / "losses_6208_7208.csv"
     with csv_path.open("w", newline="") as f:
