@@ -234,7 +234,7 @@ def test_quasistatic_losses_bad_input(sol6208):
     assert keys["power_loss"] is None and "not_in_catalogue" in keys["power_loss_notes"]["error"]
 
 
-# ---- churning, cage pocket and cage land (issue 22 item 1) ------------------------------------------
+# ---- churning, cage pocket and cage land ------------------------------------------
 def test_bath_immersion_fraction_limits_and_symmetry():
     r_p, d = 0.0303, 12.6e-3
     assert ls.bath_immersion_fraction(0.0, r_p, d) == 0.0
@@ -350,7 +350,7 @@ def test_quasistatic_new_loss_inputs_refused(sol6208):
         power_losses(sol6208, cage_pocket_friction=-0.1)
 
 
-# ---- dynamic summaries: power_loss by component and the energy check (issue 22 items 1, 4c) ----------
+# ---- dynamic summaries: power_loss by component and the energy check ----------
 def test_energy_check_hand_calculation():
     from exudyn_bearing.outputs.window_checks import energy_check
 

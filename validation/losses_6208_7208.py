@@ -245,7 +245,7 @@ def print_tables(rows):
 
 
 def dynamic_energy_check():
-    """Issue 22 item 4c on a dynamic run: the 6208 under 3 kN thrust at 500 rad/s at the ellipse traction
+    """The energy check of a dynamic run: the 6208 under 3 kN thrust at 500 rad/s at the ellipse traction
     level from the quasi-static traction equilibrium (the scene of tests/test_energy.py), its summary's
     power_loss by component and energy_check over the default window (the last quarter)."""
     import warnings
