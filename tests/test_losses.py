@@ -171,9 +171,12 @@ def test_quasistatic_power_loss_components_and_torque(sol6208):
     out = power_losses(s)
     p = out["power_loss"]
     assert p["traction"] == s.dissipation_total
-    assert p["cage"].startswith("not modelled") and p["seals"] == "not modelled"
+    assert p["seals"] == "not modelled" and any(x.startswith("seal") for x in out["not_modelled"])
     assert out["power_loss_total"] == pytest.approx(sum(p[k] for k in ("traction", "ehl_rolling", "hysteresis",
-                                                                       "drag")), rel=1e-14)
+                                                                       "drag", "churning", "cage_pocket",
+                                                                       "cage_land")), rel=1e-14)
+    # defaults: no bath, a ball-guided cage (no land)
+    assert p["churning"] == 0.0 and p["cage_land"] == 0.0 and out["cage_guidance"] == "ball"
     assert out["friction_torque_total"] == pytest.approx(out["power_loss_total"] / 500.0, rel=1e-14)
     # ball 0 (psi = 0) by hand: Harris & Kotzalas' R_x of the inner race, R_x = (D/2)(1 - gamma),
     # gamma = D cos(alpha) / d_m at the ball centre's orbit; F_R from the source's equation, 2 F_R u_r
@@ -199,7 +202,9 @@ def test_quasistatic_losses_in_to_dict(sol6208):
     d = sol6208.to_dict()
     for k in ("power_loss", "power_loss_total", "friction_torque_total"):
         assert k in d and k in d["units"]
-    assert set(d["power_loss"]) >= {"traction", "ehl_rolling", "hysteresis", "drag", "cage", "seals"}
+    assert set(d["power_loss"]) >= {"traction", "ehl_rolling", "hysteresis", "drag", "churning", "cage_pocket",
+                                    "cage_land", "cage", "seals"}
+    assert "not_modelled" in d and "not_modelled" in d["units"]
 
 
 def test_quasistatic_losses_outer_ring_driven_and_at_rest():
@@ -227,3 +232,159 @@ def test_quasistatic_losses_bad_input(sol6208):
     other = replace(sol6208, bearing_name="not_in_catalogue")
     keys = loss_keys(other)
     assert keys["power_loss"] is None and "not_in_catalogue" in keys["power_loss_notes"]["error"]
+
+
+# ---- churning, cage pocket and cage land ------------------------------------------
+def test_bath_immersion_fraction_limits_and_symmetry():
+    r_p, d = 0.0303, 12.6e-3
+    assert ls.bath_immersion_fraction(0.0, r_p, d) == 0.0
+    assert ls.bath_immersion_fraction(2 * r_p + d, r_p, d) == pytest.approx(1.0, abs=1e-12)
+    # level through the bearing axis: a ball at height +y above it and its mirror at -y have
+    # complementary immersed shares, so the orbit mean is exactly 1/2
+    assert ls.bath_immersion_fraction(r_p + d / 2, r_p, d) == pytest.approx(0.5, abs=1e-6)
+    with pytest.raises(InputError, match="oil_level"):
+        ls.bath_immersion_fraction(-1e-3, r_p, d)
+
+
+def test_bath_immersion_fraction_against_a_point_count():
+    # an independent count: points of a fine grid over the ball's cross-section, at 360 azimuths,
+    # below the level H = D (the lowest ball just covered). Grid of 400 x 400 over the disc: the
+    # edge cells give an error of about 1/400 of the share, so 0.5 % is the tolerance.
+    r_p, d, h = 0.0303, 12.6e-3, 12.6e-3
+    r = d / 2
+    g = (np.arange(400) + 0.5) / 400 * d - r
+    xx, yy = np.meshgrid(g, g)
+    disc = xx ** 2 + yy ** 2 <= r * r
+    shares = []
+    for th in (np.arange(360) + 0.5) * 2 * math.pi / 360:
+        y_c = r + r_p * (1 - math.cos(th))                 # centre height above the race bottom
+        shares.append(np.sum(disc & (y_c + yy <= h)) / np.sum(disc))
+    assert ls.bath_immersion_fraction(h, r_p, d) == pytest.approx(np.mean(shares), rel=5e-3)
+
+
+def test_cage_pocket_loads_torque_balance():
+    # Harris & Kotzalas ch. 6: the loaded balls drive the cage against its land torque and the drag of
+    # the balls it pushes; 3 loaded balls, 2 unloaded with drag 0.2 and 0.3 N, land torque 0.05 N m
+    f_d = np.array([0.1, 0.1, 0.1, 0.2, 0.3])
+    loaded = np.array([True, True, True, False, False])
+    r_p, t_cage = 0.03, 0.05
+    q = ls.cage_pocket_loads(f_d, loaded, t_cage, r_p)
+    assert q[3] == 0.2 and q[4] == 0.3                     # the cage pushes the unloaded balls
+    hand = (0.05 / 0.03 + 0.5) / 3                          # = 0.7222 N per loaded ball
+    assert q[:3] == pytest.approx([hand] * 3, rel=1e-12)
+    # torque balance of the cage about the axis
+    assert np.sum(q[:3]) * r_p - np.sum(q[3:]) * r_p == pytest.approx(t_cage, rel=1e-12)
+    # no loaded ball: drag only
+    assert np.array_equal(ls.cage_pocket_loads(f_d, np.zeros(5, bool), t_cage, r_p), f_d)
+
+
+def test_cage_pocket_friction_power_hand_calculation():
+    # mu Q (D/2) omega_R: 0.1 * 2 N * 6.3 mm * 1150 rad/s = 1.449 W
+    assert ls.cage_pocket_friction_power(2.0, -1150.0, 12.6e-3, 0.1) == pytest.approx(1.449, rel=1e-12)
+
+
+def test_petroff_torque_hand_calculation():
+    # Petroff: shear stress eta r omega / c on the area 2 pi r L at the arm r. Outer land of a 6208-size
+    # cage: eta 0.04 Pa s, r 33.45 mm, L 6.3 mm, c 0.134 mm, cage at 198 rad/s.
+    eta, r, l_w, c, w = 0.04, 0.03345, 6.3e-3, 1.338e-4, 198.0
+    tau = eta * r * w / c
+    hand = tau * 2 * math.pi * r * l_w * r
+    assert ls.petroff_torque(eta, r, l_w, c, w) == pytest.approx(hand, rel=1e-12)
+    assert hand == pytest.approx(0.0877, rel=2e-3)          # typed: 0.04*0.03345^3*6.3e-3*198*2pi/1.338e-4
+    assert ls.petroff_torque(eta, r, l_w, c, -w) == pytest.approx(-hand, rel=1e-12)
+    with pytest.raises(InputError, match="clearance"):
+        ls.petroff_torque(eta, r, l_w, 0.0, w)
+
+
+def test_quasistatic_churning_full_bath_hand_calculation(sol6208):
+    from exudyn_bearing.solvers.quasistatic.losses import power_losses
+    import exudyn_bearing as eb
+
+    s, b = sol6208, eb.catalog["6208"]
+    dw = b.ball_diameter
+    out = power_losses(s, oil_level=2 * b.pitch_radius + dw, oil_density=860.0)   # the whole orbit in oil
+    lub = eb.data.lubricants[s.lubricant]
+    v = s.balls["ball_center_r"][0] * s.balls["orbital_speed"][0]
+    assert 860.0 * v * dw / lub.viscosity > 1000            # Newton's regime in the oil too
+    f_oil = math.pi * 0.44 * 860.0 * dw ** 2 * (2 * v) ** 2 / 32
+    f_air = math.pi * 0.44 * ls.AIR_DENSITY * dw ** 2 * (2 * v) ** 2 / 32
+    assert out["churning_ball"][0] == pytest.approx((f_oil - f_air) * v, rel=1e-9)
+    assert out["power_loss"]["drag"] == power_losses(s)["power_loss"]["drag"]   # drag stays that of the mixture
+
+
+def test_quasistatic_cage_land_and_pocket_hand_calculation(sol6208):
+    from exudyn_bearing.solvers.quasistatic.losses import power_losses
+    import exudyn_bearing as eb
+
+    s, b = sol6208, eb.catalog["6208"]
+    out = power_losses(s, cage_guidance="outer_land", cage_land_radius=0.0335, cage_land_width=6e-3,
+                       cage_land_clearance=1.5e-4)
+    lub = eb.data.lubricants[s.lubricant]
+    w_c = float(np.mean(s.balls["orbital_speed"]))            # the cage speed, outer ring at rest
+    t = 2 * math.pi * lub.viscosity * 0.0335 ** 3 * 6e-3 * w_c / 1.5e-4
+    assert out["cage_land_torque"] == pytest.approx(t, rel=1e-12)
+    assert out["power_loss"]["cage_land"] == pytest.approx(t * w_c, rel=1e-12)
+    # the cage's torque balance: the loaded balls' pocket loads carry the land torque and the drag of the
+    # unloaded balls the cage pushes
+    q_c, loaded = out["cage_pocket_load"], s.balls["q_inner"] > 0
+    f_d = out["drag_ball"] / np.abs(s.balls["ball_center_r"] * s.balls["orbital_speed"])
+    assert np.sum(q_c[loaded]) - np.sum(q_c[~loaded]) == pytest.approx(t / b.pitch_radius, rel=1e-9)
+    assert q_c[~loaded] == pytest.approx(f_d[~loaded], rel=1e-9)
+    hand = np.sum(0.1 * q_c * b.ball_radius * np.abs(s.balls["ball_speed"]))
+    assert out["power_loss"]["cage_pocket"] == pytest.approx(hand, rel=1e-9)
+    assert out["friction_torque_total"] == pytest.approx(out["power_loss_total"] / 500.0, rel=1e-14)
+    none = power_losses(s, cage_guidance="none")
+    assert none["power_loss"]["cage_pocket"] == 0.0 and none["power_loss"]["cage_land"] == 0.0
+
+
+def test_quasistatic_new_loss_inputs_refused(sol6208):
+    from exudyn_bearing.solvers.quasistatic.losses import power_losses
+
+    with pytest.raises(InputError, match="oil_level"):
+        power_losses(sol6208, oil_level=-1.0)
+    with pytest.raises(InputError, match="cage_guidance"):
+        power_losses(sol6208, cage_guidance="rail")
+    with pytest.raises(InputError, match="cage_land_clearance"):
+        power_losses(sol6208, cage_guidance="inner_land", cage_land_clearance=0.0)
+    with pytest.raises(InputError, match="cage_pocket_friction"):
+        power_losses(sol6208, cage_pocket_friction=-0.1)
+
+
+# ---- dynamic summaries: power_loss by component and the energy check ----------
+def test_energy_check_hand_calculation():
+    from exudyn_bearing.outputs.window_checks import energy_check
+
+    # drive 30 W; losses 20 + 9 W; the balls gain 0.05 J in 0.1 s (0.5 W): residual (30 - 29 - 0.5)/30 = 1/60
+    c = energy_check(30.0, {"a": 20.0, "b": 9.0, "c": None}, 0.05, 0.1)
+    assert c["residual"] == pytest.approx(1 / 60, rel=1e-12) and c["passed"] is False
+    assert c["components"] == ["a", "b"] and c["missing"] == ["c"] and "a + b" in c["statement"]
+    c = energy_check(30.0, {"a": 20.0, "b": 9.4}, 0.05, 0.1, recorded_dissipation=29.0)
+    assert c["residual"] == pytest.approx(0.1 / 30, rel=1e-9) and c["passed"] is True
+    assert c["split_error"] == pytest.approx(0.4 / 29.0, rel=1e-12)
+    assert energy_check(0.04, {"a": 0.01}, 0.0, 0.1, floor=4.5)["passed"] is None     # below the loss floor
+
+
+def test_dynamic_summary_power_loss_closes_the_energy_balance():
+    # the ellipse level from the quasi-static traction equilibrium (the scene of tests/test_energy.py, shorter):
+    # the drive power equals the reported components (traction per race + contact damping) plus the
+    # kinetic-energy rate within 1 %, and the traction components are the per-contact dissipation
+    import warnings
+
+    import exudyn_bearing as eb
+
+    sc = eb.Scenario(Fa=3000.0, Fr=0.0, omega=500.0, t_end=0.004, dt=2e-6, sample_dt=2e-4, cage=False,
+                     traction_level="ellipse", n_strips=16, n_across=4, initial="quasistatic", control="equilibrium")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        run = eb.simulate("6208", sc)
+        s = run.summary(fraction=0.5)
+    p = s["power_loss"]
+    assert set(p) == {"contact_traction_inner", "contact_traction_outer", "contact_damping"}
+    assert s["power_loss_total"] == pytest.approx(sum(p.values()), rel=1e-12)
+    # the per-race split sums to the recorded friction_power (the same contacts)
+    assert p["contact_traction_inner"] + p["contact_traction_outer"] == pytest.approx(s["friction_power"], rel=1e-9)
+    c = s["energy_check"]
+    assert c["passed"] is True and abs(c["residual"]) <= 0.01
+    assert "contact_traction_inner + contact_traction_outer + contact_damping" in c["statement"]
+    assert any(x.startswith("cage pocket friction") for x in s["not_modelled"])
+    assert s["units"]["power_loss_total"] == "W"

@@ -102,7 +102,8 @@ def run(args):
     if d["power_loss"] is not None:  # solvers/quasistatic/losses.py
         pl = d["power_loss"]
         print(f"power loss {d['power_loss_total']:.4g} W (" + ", ".join(f"{k} {pl[k]:.4g}" for k in LOSS_COMPONENTS)
-              + f"), friction torque {d['friction_torque_total']:.4g} N m; cage and seals not modelled")
+              + f"), friction torque {d['friction_torque_total']:.4g} N m; not modelled: seals and more "
+              "(--json not_modelled)")
     print_ball_table(s.balls)
     if args.plot:
         print(f"plot: {d['plot']}")

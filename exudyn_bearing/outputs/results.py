@@ -36,17 +36,19 @@ from ..model.scenario import Scenario
 from ..physics.damping import REGIME_NAMES
 from .contact_summary import CONTACT_SUMMARY_UNITS, contact_summary
 from .jsonio import to_jsonable
-from .window_checks import (LOSS_FLOOR_MU, SPEED_FLOOR, SteadyStateWarning, energy_balance, q_max_at_psi0,
-                            steadiness)
+from .window_checks import (LOSS_FLOOR_MU, SPEED_FLOOR, SteadyStateWarning, energy_balance, energy_check,
+                            q_max_at_psi0, steadiness)
 
 __all__ = ["Results", "SUMMARY_KEYS", "SUMMARY_UNITS", "SUMMARY_DESCRIPTIONS", "PHASE_NAMES", "LOSSES_MODELLED",
-           "LOSSES_NOT_MODELLED", "SteadyStateWarning", "protocol_phases"]
+           "LOSSES_NOT_MODELLED", "DYNAMIC_LOSS_COMPONENTS", "DYNAMIC_NOT_MODELLED", "SteadyStateWarning",
+           "protocol_phases"]
 
 #: Keys every engine's summary has.
 SUMMARY_KEYS = ("q_max_inner", "q_max_outer", "q_max_method", "q_max_inner_mean", "q_max_outer_mean", "cage_speed",
                 "ball_spin", "lambda_outer_psi0", "lambda_inner_psi0", "regime_fraction", "window", "steady",
                 "friction_torque", "friction_power", "drive_power", "load_power", "dissipation",
-                "kinetic_energy_change", "energy_residual", "energy_source", "lubricant", "traction_model",
+                "kinetic_energy_change", "energy_residual", "energy_source", "power_loss", "power_loss_total",
+                "not_modelled", "energy_check", "lubricant", "traction_model",
                 "traction_level", "losses_modelled", "losses_not_modelled", "steps", "dt", "wall_s", "units",
                 "descriptions")
 
@@ -60,12 +62,24 @@ LOSSES_MODELLED = {
                 "normal damping of all contacts (hysteretic / squeeze film by Lambda; critical damping of the "
                 "cage contacts)"),
 }
+_POCKET = ("cage pocket friction (the ball / cage-ball contacts are frictionless; their normal damping is part "
+           "of contact_damping)")
 #: Losses each traction level leaves out.
 LOSSES_NOT_MODELLED = {
     "point": ("rolling losses: curvature (Heathcote) slip", "spin (pivoting) friction", "EHL rolling resistance",
-              "ball drag and churning", "cage-pocket friction"),
-    "ellipse": ("EHL rolling resistance", "ball drag and churning", "cage-pocket friction"),
+              "ball drag and churning", _POCKET),
+    "ellipse": ("EHL rolling resistance", "ball drag and churning", _POCKET),
 }
+#: Components of a dynamic summary's ``power_loss`` [W] (time means of the recorded series over the
+#: window): the tangential power of the ball / raceway contacts per race (the per-contact
+#: ``dissipation`` diagnostic summed over the balls) and the normal damping of every contact (the
+#: engine's ``damping_power``: ball / raceway, ball / cage ball and cage ball / guide together; the
+#: record does not separate them).
+DYNAMIC_LOSS_COMPONENTS = ("contact_traction_inner", "contact_traction_outer", "contact_damping")
+#: Loss sources no dynamic engine represents (``not_modelled`` of every dynamic summary, after the
+#: level's own ``losses_not_modelled``).
+DYNAMIC_NOT_MODELLED = ("cage land friction (the cage balls' guide contact is frictionless)",
+                        "seal friction (open bearing)")
 #: Note of a point-level summary on its losses, by friction law.
 POINT_LEVEL_NOTES = {
     "history": ("point traction level: no rolling losses; the tangential Cundall-Strack spring stores energy, so "
@@ -84,7 +98,8 @@ SUMMARY_UNITS = {
     "ring_displacement": "m", "friction_torque": GLOBAL_UNITS["ring_torque"],
     "friction_power": GLOBAL_UNITS["friction_power"], **CONTACT_SUMMARY_UNITS, "steps": "-", "dt": "s", "t_end": "s", "wall_s": "s", "stable_dt": "s",
     "window.t0": "s", "window.t1": "s", "drive_power": "W", "load_power": "W", "dissipation": "W",
-    "kinetic_energy_change": "J", "energy_residual": "-"}
+    "kinetic_energy_change": "J", "energy_residual": "-", "power_loss": "W per component",
+    "power_loss_total": "W", "not_modelled": "text", "energy_check": "W, - (residual), text"}
 
 #: What the loss and energy keys of the summary mean (docs/theory/dynamics.md,
 #: "Losses and the energy balance"); every summary carries it as ``descriptions``.
@@ -110,6 +125,15 @@ SUMMARY_DESCRIPTIONS = {
                              "minus that at its start",
     "energy_residual": "(drive_power - dissipation - kinetic_energy_change / window length) / drive_power; the "
                        "elastic energy stored in the contacts is not counted (it returns in a steady window)",
+    "power_loss": "mean power of each modelled loss over the window: contact_traction_inner, contact_traction_outer "
+                  "(tangential power of the ball / raceway contacts per race, time mean of the sampled per-contact "
+                  "dissipation), contact_damping (normal damping of all contacts, time mean of the sampled "
+                  "damping_power; None when not recorded)",
+    "power_loss_total": "sum of the power_loss components [W] (the sampled split of the engine's dissipation)",
+    "not_modelled": "loss sources the dynamic engines leave out at this traction level",
+    "energy_check": "drive_power = sum of power_loss + kinetic_energy_change / window length within 1 % of "
+                    "drive_power (residual, passed; split_error: the sampled components against the engine's "
+                    "cumulative dissipated_work)",
     "steady": "drift and oscillation of the reported quantities over the window against the thresholds named in it",
 }
 
@@ -317,6 +341,29 @@ class Results:
         out["energy_source"] = src
         return out
 
+    def power_loss(self, w: slice, energy: dict) -> dict:
+        """Losses of the samples ``w`` by component (:data:`DYNAMIC_LOSS_COMPONENTS`, time means [W] of
+        the recorded series), their total, what is not modelled, and the energy check of the window
+        (:func:`~.window_checks.energy_check`) against the drive power and kinetic energy change of
+        ``energy`` (:meth:`energy`)."""
+        diag = self.data["diag"][w]
+        comp = {f"contact_traction_{tag}": float(np.mean(np.sum(diag[:, :, race, L.D_POWER], axis=1)))
+                for race, tag in ((0, "inner"), (1, "outer"))}
+        comp["contact_damping"] = (float(np.mean(self.global_series("damping_power")[w]))
+                                   if self.has_global("damping_power") else None)
+        t = self.t[w]
+        dur = float(t[-1] - t[0])
+        recorded = None
+        if self.has_global("dissipated_work") and dur > 0.0:
+            g = self.global_series("dissipated_work")
+            recorded = float(g[w.stop - 1] - g[w.start]) / dur
+        floor = self._loss_floor() * abs(float(np.mean(self.global_series("omega")[w])))
+        check = energy_check(energy["drive_power"], comp, energy["kinetic_energy_change"], dur, recorded, floor)
+        level = self.scenario.traction_level
+        return {"power_loss": comp, "power_loss_total": check["power_loss_total"],
+                "not_modelled": list(LOSSES_NOT_MODELLED[level]) + list(DYNAMIC_NOT_MODELLED),
+                "energy_check": check}
+
     def _loss_floor(self) -> float:
         """LOSS_FLOOR_MU (|Fr| + |Fa|) r_p [N m]: the smallest friction torque judged (:mod:`.window_checks`)."""
         return LOSS_FLOOR_MU * (abs(self.scenario.Fr) + abs(self.scenario.Fa)) * self.bearing.pitch_radius
@@ -488,6 +535,7 @@ class Results:
             return float(np.nanmean(x)) if np.any(np.isfinite(x)) else None
 
         steady = self.steadiness(w, window)
+        energy = self.energy(w)
         out = {
             "engine": self.engine,
             "bearing": b.name,
@@ -511,7 +559,8 @@ class Results:
             "ring_displacement": [float(x) for x in np.mean(self.data["ring"][w, :3], axis=0)],
             "friction_torque": -float(np.mean(self.global_series("ring_torque")[w])),
             "friction_power": float(np.mean(self.global_series("friction_power")[w])),
-            **self.energy(w),
+            **energy,
+            **self.power_loss(w, energy),
             "steps": self.steps,
             "dt": self.scenario.dt,
             "t_end": float(self.t[-1]),

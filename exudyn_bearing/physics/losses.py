@@ -20,6 +20,24 @@ Bearing-level drag:
   orbiting through an oil-air mixture (Harris & Kotzalas [1]_ with the
   standard sphere drag curve of Clift, Grace & Weber [5]_).
 
+Churning in an oil bath (flooded bearing):
+
+* :func:`bath_immersion_fraction` - the orbit-mean share of a ball's frontal
+  area below the oil level; with it as the oil fraction of
+  :func:`mixture_density` the ball drag of [1]_ becomes the churning drag of
+  the balls through the bath (the project's reading of [1]_ ch. 6 for a
+  bath, see the function).
+
+Cage friction:
+
+* :func:`cage_pocket_loads` - ball-pocket normal loads from the drag the
+  cage carries (Harris & Kotzalas [1]_ ch. 6: the cage drives the balls of
+  the unloaded zone against their drag, the loaded balls drive the cage);
+* :func:`cage_pocket_friction_power` - sliding of the ball surface in its
+  pocket;
+* :func:`petroff_torque` - the hydrodynamic drag of a lightly loaded short
+  journal bearing (Petroff [6]_), the cage riding on its guiding land.
+
 Reference models of the whole bearing (frictional moment [N m]):
 
 * SKF's catalogue model [3]_: :func:`skf_rolling_variable`,
@@ -47,6 +65,11 @@ References
    Industries, 1959; as given in Harris & Kotzalas [1]_ ch. 6.
 .. [5] R. Clift, J. R. Grace and M. E. Weber, Bubbles, Drops and Particles,
    Academic Press, 1978, Table 5.2 (standard drag curve of a sphere).
+.. [6] N. P. Petroff, "Friction in machines and the effect of the
+   lubricant," Inzhenernii Zhurnal, St. Petersburg, 1883; as given in
+   B. J. Hamrock, S. R. Schmid and B. O. Jacobson, Fundamentals of Fluid
+   Film Lubrication, 2nd ed., Marcel Dekker, 2004, sec. 8.2 (Petroff's
+   equation).
 """
 from __future__ import annotations
 
@@ -64,7 +87,11 @@ __all__ = [
     "SKF_K_RS",
     "SKF_MU_BOUNDARY",
     "SKF_MU_EHL",
+    "CAGE_POCKET_FRICTION",
     "ball_drag_force",
+    "bath_immersion_fraction",
+    "cage_pocket_friction_power",
+    "cage_pocket_loads",
     "ehl_rolling_force",
     "hysteresis_rolling_force",
     "mixture_density",
@@ -72,6 +99,7 @@ __all__ = [
     "palmgren_load_factor",
     "palmgren_load_moment",
     "palmgren_viscous_moment",
+    "petroff_torque",
     "rolling_resistance_power",
     "skf_drag_moment",
     "skf_frictional_moment",
@@ -90,6 +118,10 @@ HYSTERESIS_LOSS_FACTOR_STEEL = 0.007
 #: Air at 20 C and 1 atm: density [kg/m^3] and dynamic viscosity [Pa s].
 AIR_DENSITY = 1.204
 AIR_VISCOSITY = 1.81e-5
+#: Sliding friction coefficient of a lubricated ball in its cage pocket [-]: an assumed boundary /
+#: mixed-film value (steel ball on a steel or brass pocket wetted by the oil; lubricated sliding
+#: of these pairs lies at about 0.05-0.15). Not a value of a table in the cited sources.
+CAGE_POCKET_FRICTION = 0.1
 
 #: Geometry constants of SKF's model [3]_ (units of the catalogue: N, mm, r/min), by series:
 #: ``kind`` "deep_groove" (R1, R2, S1, S2) or "angular_contact" (R1, R2, R3, S1, S2, S3), and the
@@ -293,6 +325,167 @@ def ball_drag_force(speed, ball_diameter, density, viscosity):
     newton = 0.5 * 0.44 * density * v * v * math.pi * ball_diameter ** 2 / 4.0
     f = np.where(re <= 1000.0, stokes, newton)
     return f if np.ndim(f) else float(f)
+
+
+def bath_immersion_fraction(oil_level, pitch_radius, ball_diameter, n_points=720):
+    """Orbit-mean share of a ball's frontal area that lies below the oil level of a bath [-].
+
+    A ball whose centre is at azimuth theta from the lowest point of its
+    orbit has its centre at the height
+    h_c = D/2 + r_p (1 - cos theta) above the lowest point of the outer
+    raceway (SKF's reference of the oil level H [3]_, the ball touching the
+    race bottom). The part of its circular cross-section (radius D/2) below
+    H is a circular segment of depth s = H - (h_c - D/2), 0 <= s <= D:
+
+    A(s) / (pi R^2) = [R^2 acos(1 - s/R) - (R - s) sqrt(2 R s - s^2)] / (pi R^2),   R = D/2,
+
+    averaged over theta in [0, 2 pi) (midpoint rule, ``n_points`` azimuths:
+    the integrand is continuous with two kinks, the error of 720 points is
+    below 1e-5).
+
+    Used as the oil fraction phi of :func:`mixture_density` it turns the
+    ball drag of Harris & Kotzalas [1]_ ch. 6 (a ball orbiting through a
+    fluid of effective density rho_e) into the churning drag of the balls of
+    a bath-lubricated bearing: each ball drags through oil over the part of
+    its frontal area and orbit that is immersed and through air elsewhere
+    (in Newton's regime the drag is linear in the density, so the mean over
+    the orbit is the drag at the mean density). This orbit average is the
+    project's reading; [1]_ gives the effective density of the free space
+    without a rule for a partly filled bath.
+
+    Validity: the oil in the bath at rest (an upper value: the bath is
+    dragged along by the cage and the balls, which lowers the relative
+    speed), a flat free surface (no splashing, no oil thrown off), a
+    horizontal shaft. H = 0: 0; H >= 2 r_p + D (the whole orbit
+    immersed): 1; H at the bearing axis (r_p + D/2): 1/2 by symmetry.
+
+    Parameters
+    ----------
+    oil_level : float
+        H above the lowest point of the outer raceway [m], >= 0.
+    pitch_radius : float
+        r_p [m] (radius of the ball centres' orbit).
+    ball_diameter : float
+        D [m].
+    n_points : int
+        Azimuths of the average.
+    """
+    for name, v in (("pitch_radius", pitch_radius), ("ball_diameter", ball_diameter)):
+        _check(name, v)
+    _check("oil_level", oil_level, positive=False)
+    r = 0.5 * ball_diameter
+    theta = (np.arange(n_points) + 0.5) * (2.0 * math.pi / n_points)
+    s = np.clip(oil_level - pitch_radius * (1.0 - np.cos(theta)), 0.0, 2.0 * r)
+    seg = r * r * np.arccos(1.0 - s / r) - (r - s) * np.sqrt(np.maximum(2.0 * r * s - s * s, 0.0))
+    return float(np.mean(seg) / (math.pi * r * r))
+
+
+# ----------------------------------------------------------------------------------------------------
+# cage friction
+# ----------------------------------------------------------------------------------------------------
+def cage_pocket_loads(drag_force, loaded, cage_torque, pitch_radius):
+    """Normal loads between the balls and their cage pockets [N], from the loads the cage carries.
+
+    Harris & Kotzalas [1]_ ch. 6 (ball-cage interaction): in steady
+    operation the balls of the loaded zone, driven by the race traction,
+    push the cage; the cage pushes the balls of the unloaded zone, which
+    carry no traction to overcome their drag. The torque balance of the
+    cage about the bearing axis gives
+
+    Q_c,j = F_D,j                                     (unloaded ball j)
+    Q_c,j = (T_cage / r_p + sum_unloaded F_D) / n_L   (each of the n_L loaded balls)
+
+    with F_D the drag (and churning) force of each ball and T_cage the
+    torque resisting the cage (its land friction, :func:`petroff_torque`).
+    The share of the loaded balls is taken equal (the project's reading; the
+    source resolves it per ball with the dynamics of each ball). Left out:
+    the pocket loads from the variation of a ball's orbital speed around
+    the bearing (misalignment, combined loads), from a gyroscopic moment the
+    race traction does not carry, and from the cage's weight and
+    unbalance; a quasi-static model does not know them.
+
+    Parameters
+    ----------
+    drag_force : ndarray (Z,)
+        F_D of each ball [N] (>= 0).
+    loaded : ndarray of bool (Z,)
+        Balls whose contacts carry the traction that drives them.
+    cage_torque : float
+        Torque resisting the cage about the bearing axis [N m] (>= 0).
+    pitch_radius : float
+        r_p [m].
+
+    Returns
+    -------
+    ndarray (Z,)
+        Q_c [N]; with no loaded ball, the cage and every ball carry drag
+        only: F_D (the cage torque cannot be carried and is left out).
+    """
+    f = np.abs(np.asarray(drag_force, dtype=float))
+    on = np.asarray(loaded, dtype=bool)
+    n_l = int(np.sum(on))
+    if n_l == 0:
+        return f.copy()
+    share = (abs(float(cage_torque)) / pitch_radius + float(np.sum(f[~on]))) / n_l
+    return np.where(on, share, f)
+
+
+def cage_pocket_friction_power(pocket_load, ball_speed, ball_diameter, mu=CAGE_POCKET_FRICTION):
+    """Frictional power of a ball sliding in its cage pocket [W]: mu Q_c (D/2) |omega_R|.
+
+    The pocket touches the ball on its equator in the orbital direction;
+    the ball turns about an axis in the plane of the bearing axis and the
+    radius (normal to the orbital direction), at omega_R relative to the
+    cage, so its surface slides over the pocket at (D/2) |omega_R|; Coulomb
+    friction mu Q_c opposes it (Harris & Kotzalas [1]_ ch. 6, cage pocket
+    friction). Validity: a pocket contact in boundary or mixed lubrication
+    (a hydrodynamic pocket film would give a viscous force instead), mu
+    from :data:`CAGE_POCKET_FRICTION` unless given.
+
+    Parameters
+    ----------
+    pocket_load : float or ndarray
+        Q_c [N] (:func:`cage_pocket_loads`).
+    ball_speed : float or ndarray
+        omega_R [rad/s], the ball's angular speed about its own axis in the
+        cage's frame (magnitude used).
+    ball_diameter : float
+        D [m].
+    mu : float
+        Friction coefficient [-].
+    """
+    p = mu * np.abs(np.asarray(pocket_load, dtype=float)) * 0.5 * ball_diameter \
+        * np.abs(np.asarray(ball_speed, dtype=float))
+    return p if np.ndim(p) else float(p)
+
+
+def petroff_torque(viscosity, radius, width, clearance, speed):
+    """Petroff's viscous torque of a concentric journal bearing [N m]: T = 2 pi eta r^3 L omega / c.
+
+    Couette shear of a full film of viscosity eta in the radial clearance
+    c between a journal of radius r and length L turning at omega relative
+    to its sleeve: shear stress eta r omega / c over the area 2 pi r L, at
+    the arm r (Petroff [6]_). For a cage riding on a guiding ring land: r
+    the land radius, L the land width (both rails together), c the radial
+    land clearance, omega the cage speed relative to that ring. The power is
+    T |omega|. Validity: a lightly loaded (concentric) journal, laminar
+    Couette flow (Taylor number below about 1700), a full film; an
+    eccentric cage pressed on its land by its weight or unbalance loses
+    more, a starved land less.
+
+    Parameters
+    ----------
+    viscosity : float
+        eta [Pa s].
+    radius, width, clearance : float
+        r, L, c [m] (c > 0).
+    speed : float or ndarray
+        omega relative [rad/s] (the sign carries through: T opposes it).
+    """
+    for name, v in (("viscosity", viscosity), ("radius", radius), ("width", width), ("clearance", clearance)):
+        _check(name, v)
+    t = 2.0 * math.pi * viscosity * radius ** 3 * width * np.asarray(speed, dtype=float) / clearance
+    return t if np.ndim(t) else float(t)
 
 
 # ----------------------------------------------------------------------------------------------------

@@ -12,10 +12,25 @@ speeds and orbital speeds of a :class:`~.solution.QuasiStaticSolution`:
   (:func:`~exudyn_bearing.physics.losses.hysteresis_rolling_force`);
 * ``drag``: F_D v of every ball orbiting through the oil-air mixture at
   v = r_c omega_m (:func:`~exudyn_bearing.physics.losses.ball_drag_force`);
-  with ``oil_volume_fraction = 0`` (default) the balls move through air.
+  with ``oil_volume_fraction = 0`` (default) the balls move through air;
+* ``churning``: the extra drag of the balls through an oil bath of level
+  ``oil_level`` (a flooded bearing): the drag at the density of the bath's
+  orbit-mean immersed share
+  (:func:`~exudyn_bearing.physics.losses.bath_immersion_fraction`) minus
+  ``drag``; 0 without a bath (default);
+* ``cage_pocket``: mu_c Q_c (D/2) |omega_R| of every ball sliding in its
+  pocket, Q_c from the drag the cage carries and its land torque
+  (:func:`~exudyn_bearing.physics.losses.cage_pocket_loads`,
+  :func:`~exudyn_bearing.physics.losses.cage_pocket_friction_power`);
+* ``cage_land``: Petroff's torque of the cage on its guiding land times the
+  cage's speed relative to that ring
+  (:func:`~exudyn_bearing.physics.losses.petroff_torque`); 0 for a
+  ball-guided cage (the default for a bearing with a cage).
 
-Cage friction is not modelled (the quasi-static solver is cageless) and
-seals are not modelled; ``power_loss_notes`` says so in every result.
+The quasi-static solver itself is cageless: the cage components are
+computed from its ball speeds and loads, they do not act back on the
+equilibrium. Seals are not modelled; ``not_modelled`` lists what is left
+out in every result.
 ``friction_torque_total`` = power_loss_total / |omega - omega_outer|, the
 torque the driven ring needs when the other ring stands still (the inner
 ring for the default outer ring at rest; the outer ring when the inner ring
@@ -36,22 +51,49 @@ from ...physics import losses as _ls
 from ...physics.geometry import raceway_radii
 from ...physics.lubricant_properties import lubricant_at
 
-__all__ = ["LOSS_COMPONENTS", "LOSS_UNITS", "NOT_MODELLED", "loss_keys", "power_losses"]
+__all__ = ["CAGE_GUIDANCES", "CAGE_LAND_CLEARANCE_RATIO", "CAGE_LAND_SHOULDER_RATIO", "CAGE_LAND_WIDTH_RATIO",
+           "LOSS_COMPONENTS", "LOSS_UNITS", "NOT_MODELLED", "NOT_MODELLED_LIST", "cage_land_geometry", "loss_keys",
+           "power_losses"]
 
 #: Components of ``power_loss`` [W], in order.
-LOSS_COMPONENTS = ("traction", "ehl_rolling", "hysteresis", "drag")
-#: Loss sources the quasi-static solver does not represent (reported as text).
-NOT_MODELLED = {"cage": "not modelled (cageless quasi-static)", "seals": "not modelled",
-                "churning": "not modelled (no oil bath)"}
+LOSS_COMPONENTS = ("traction", "ehl_rolling", "hysteresis", "drag", "churning", "cage_pocket", "cage_land")
+#: Loss sources the quasi-static solver does not represent (reported as text in ``power_loss_notes``).
+NOT_MODELLED = {"seals": "not modelled", "cage": "modelled as cage_pocket and cage_land from the cageless "
+                "solution's ball speeds and loads (no pocket loads from orbital speed variation or gyroscopic "
+                "moments, no cage windage)"}
+#: What ``not_modelled`` lists in every result.
+NOT_MODELLED_LIST = ("seal friction (open bearing)",
+                     "cage windage (drag of the cage in the oil-air mixture)",
+                     "cage pocket loads from the variation of the balls' orbital speed, gyroscopic moments, the "
+                     "cage's weight and unbalance",
+                     "drag of the rings' faces and of the oil carried along (only the balls churn)",
+                     "inlet-shear heating and starvation reduction of the EHL rolling force")
+#: Cage guidances: "ball" (ball-guided, no land friction), "outer_land", "inner_land" (the cage rides on
+#: that ring's land), "none" (no cage: no pocket and no land friction).
+CAGE_GUIDANCES = ("ball", "outer_land", "inner_land", "none")
+#: Default cage-land geometry, as multiples of the ball diameter D and of the land radius (assumed
+#: proportions of machined, land-guided cages; give the bearing's values when known): the land lies a
+#: quarter ball diameter off the race bottom towards the pitch circle (shoulder height 0.25 D), both
+#: rails together are half a ball diameter wide, the radial land clearance is 0.4 % of the land radius
+#: (a diametral clearance of 0.4 % of the land diameter).
+CAGE_LAND_SHOULDER_RATIO = 0.25
+CAGE_LAND_WIDTH_RATIO = 0.5
+CAGE_LAND_CLEARANCE_RATIO = 0.004
 #: Units of the keys :func:`loss_keys` adds to the solution's dict.
 LOSS_UNITS = {
-    "power_loss": "W per component (traction, ehl_rolling, hysteresis, drag); text for what is not modelled",
+    "power_loss": "W per component (traction, ehl_rolling, hysteresis, drag, churning, cage_pocket, cage_land); "
+                  "text for seals and the cage's note",
+    "not_modelled": "list of the loss sources left out (text)",
+    "cage_pocket_load": "N (normal load of each ball on its pocket)",
     "power_loss_total": "W (sum of the modelled components)",
     "friction_torque_total": "N m (power_loss_total / |omega - omega_outer|: the torque on the driven ring, "
                              "the other ring at rest)",
     "power_loss_inner_ball": "W (ehl_rolling + hysteresis at each ball's inner contact)",
     "power_loss_outer_ball": "W (ehl_rolling + hysteresis at each ball's outer contact)",
-    "drag_ball": "W (drag power of each ball)",
+    "drag_ball": "W (drag power of each ball, without churning)",
+    "churning_ball": "W (churning power of each ball in the oil bath)",
+    "cage_guidance": "text (ball, outer_land, inner_land or none)",
+    "cage_land_torque": "N m (Petroff's torque of the cage on its land, 0 without land guidance)",
 }
 
 #: Density of the oil for the drag when the lubricant carries none [kg/m^3]: a mineral oil near
@@ -93,9 +135,31 @@ def _contact_rx(bearing, r_b, center_r, alpha, inner):
     return raceway_radii(r_b, r_groove, r_contact, alpha, inner)[0]
 
 
+def cage_land_geometry(bearing, guidance, radius=None, width=None, clearance=None) -> dict:
+    """Land radius, width and radial clearance [m] of a land-guided cage: the given values, else the
+    defaults of :data:`CAGE_LAND_SHOULDER_RATIO`, :data:`CAGE_LAND_WIDTH_RATIO`,
+    :data:`CAGE_LAND_CLEARANCE_RATIO` (outer land at R_o - 0.25 D, inner land at R_i + 0.25 D, width
+    0.5 D, radial clearance 0.004 r_land). ``source`` says which were defaults."""
+    d_w = 2.0 * bearing.ball_radius
+    given = {"radius": radius, "width": width, "clearance": clearance}
+    if radius is None:
+        radius = (bearing.outer_race_radius - CAGE_LAND_SHOULDER_RATIO * d_w if guidance == "outer_land"
+                  else bearing.inner_race_radius + CAGE_LAND_SHOULDER_RATIO * d_w)
+    width = CAGE_LAND_WIDTH_RATIO * d_w if width is None else width
+    clearance = CAGE_LAND_CLEARANCE_RATIO * radius if clearance is None else clearance
+    for name, v in (("cage_land_radius", radius), ("cage_land_width", width), ("cage_land_clearance", clearance)):
+        if not (math.isfinite(float(v)) and float(v) > 0.0):
+            raise InputError(f"{name}: must be > 0 and finite, got {v!r}")
+    defaults = [k for k, v in given.items() if v is None]
+    return {"radius": float(radius), "width": float(width), "clearance": float(clearance),
+            "source": ("defaults (CAGE_LAND_*_RATIO) for " + ", ".join(defaults)) if defaults else "given"}
+
+
 def power_losses(sol, bearing=None, lubricant=None, *, hysteresis_loss_factor=_ls.HYSTERESIS_LOSS_FACTOR_STEEL,
                  oil_volume_fraction=0.0, oil_density=DEFAULT_OIL_DENSITY, air_density=_ls.AIR_DENSITY,
-                 air_viscosity=_ls.AIR_VISCOSITY) -> dict:
+                 air_viscosity=_ls.AIR_VISCOSITY, oil_level=0.0, cage_guidance=None,
+                 cage_pocket_friction=_ls.CAGE_POCKET_FRICTION, cage_land_radius=None, cage_land_width=None,
+                 cage_land_clearance=None) -> dict:
     """Power loss by component [W] and the friction torque of a quasi-static solution.
 
     Parameters
@@ -115,6 +179,18 @@ def power_losses(sol, bearing=None, lubricant=None, *, hysteresis_loss_factor=_l
         [kg/m^3] (default 860, a mineral oil near 40 C).
     air_density, air_viscosity : float
         [kg/m^3], [Pa s] (air at 20 C).
+    oil_level : float
+        Level H of an oil bath above the lowest point of the outer raceway [m] (SKF's reference);
+        0 (default): no bath, no churning.
+    cage_guidance : str, optional
+        One of :data:`CAGE_GUIDANCES`; default "ball" for a bearing with a cage (the pressed-steel
+        and polyamide cages of standard 62 and 72 B bearings are ball-guided), "none" for a cageless
+        one. "outer_land" / "inner_land" add the land's Petroff torque.
+    cage_pocket_friction : float
+        mu_c of the ball in its pocket [-] (default 0.1, assumed).
+    cage_land_radius, cage_land_width, cage_land_clearance : float, optional
+        The land's radius, width (both rails) and radial clearance [m]; defaults
+        :func:`cage_land_geometry`.
 
     Returns
     -------
@@ -129,6 +205,13 @@ def power_losses(sol, bearing=None, lubricant=None, *, hysteresis_loss_factor=_l
     for name, v in (("oil_density", oil_density), ("air_density", air_density), ("air_viscosity", air_viscosity)):
         if not (math.isfinite(float(v)) and float(v) > 0.0):
             raise InputError(f"{name}: must be > 0 and finite, got {v!r}")
+    if not (math.isfinite(float(oil_level)) and float(oil_level) >= 0.0):
+        raise InputError(f"oil_level: must be >= 0 and finite (m above the lowest point of the outer raceway), "
+                         f"got {oil_level!r}")
+    if not (math.isfinite(float(cage_pocket_friction)) and float(cage_pocket_friction) >= 0.0):
+        raise InputError(f"cage_pocket_friction: must be >= 0 and finite, got {cage_pocket_friction!r}")
+    if cage_guidance is not None and cage_guidance not in CAGE_GUIDANCES:
+        raise InputError(f"cage_guidance: one of {', '.join(CAGE_GUIDANCES)}, got {cage_guidance!r}")
     if not (math.isfinite(float(hysteresis_loss_factor)) and 0.0 <= float(hysteresis_loss_factor) < 1.0):
         raise InputError(f"hysteresis_loss_factor: must lie in [0, 1), got {hysteresis_loss_factor!r}")
     b = _bearing(sol, bearing)
@@ -153,23 +236,60 @@ def power_losses(sol, bearing=None, lubricant=None, *, hysteresis_loss_factor=_l
     rho = _ls.mixture_density(oil_volume_fraction, oil_density, air_density)
     eta = _ls.mixture_viscosity(oil_volume_fraction, lub.viscosity, air_viscosity)
     v = cr * np.asarray(bl["orbital_speed"], float)  # ball centre speed, mixture at rest
-    drag = np.atleast_1d(_ls.ball_drag_force(v, 2.0 * r_b, rho, eta)) * np.abs(v)
+    f_drag = np.atleast_1d(_ls.ball_drag_force(v, 2.0 * r_b, rho, eta))
+    drag = f_drag * np.abs(v)
+    # churning: the balls through the bath over their immersed share phi_b (oil in the bath, the mixture above)
+    phi_b = _ls.bath_immersion_fraction(oil_level, b.pitch_radius, 2.0 * r_b) if oil_level > 0.0 else 0.0
+    f_bath = np.atleast_1d(_ls.ball_drag_force(v, 2.0 * r_b, _ls.mixture_density(phi_b, oil_density, rho),
+                                               _ls.mixture_viscosity(phi_b, lub.viscosity, eta)))
+    churning = np.maximum(f_bath - f_drag, 0.0) * np.abs(v)
+    # cage: guidance, land torque (Petroff), pocket loads and sliding
+    guidance = cage_guidance or ("ball" if b.has_cage else "none")
+    omega_c = float(np.mean(np.asarray(bl["orbital_speed"], float)))
+    land = None
+    t_land = 0.0
+    if guidance in ("outer_land", "inner_land"):
+        land = cage_land_geometry(b, guidance, cage_land_radius, cage_land_width, cage_land_clearance)
+        rel = omega_c - sol.omega_outer if guidance == "outer_land" else sol.omega - omega_c
+        t_land = float(_ls.petroff_torque(lub.viscosity, land["radius"], land["width"], land["clearance"], rel))
+        p_land = abs(t_land * rel)
+    else:
+        p_land = 0.0
+    if guidance == "none":
+        q_c = np.zeros_like(drag)
+        pocket = np.zeros_like(drag)
+    else:
+        loaded = np.asarray(bl["q_inner"], float) > 0.0
+        q_c = _ls.cage_pocket_loads(f_bath, loaded, abs(t_land), b.pitch_radius)
+        pocket = np.atleast_1d(_ls.cage_pocket_friction_power(q_c, np.asarray(bl["ball_speed"], float), 2.0 * r_b,
+                                                              cage_pocket_friction))
     p = {"traction": float(sol.dissipation_total),
          "ehl_rolling": float(np.sum(per["inner"][0]) + np.sum(per["outer"][0])),
          "hysteresis": float(np.sum(per["inner"][1]) + np.sum(per["outer"][1])),
-         "drag": float(np.sum(drag))}
+         "drag": float(np.sum(drag)), "churning": float(np.sum(churning)),
+         "cage_pocket": float(np.sum(pocket)), "cage_land": float(p_land)}
     total = float(sum(p.values()))
     dw = abs(sol.omega - sol.omega_outer)
     notes = dict(NOT_MODELLED)
     notes["ehl_rolling"] = "isothermal, fully flooded (no inlet-shear heating or starvation reduction)"
     notes["drag"] = (f"balls orbiting through a mixture of oil volume fraction {float(oil_volume_fraction):g} "
                      f"(density {rho:.4g} kg/m^3)")
+    notes["churning"] = (f"oil bath of level {float(oil_level):g} m: orbit-mean immersed share {phi_b:.4g} of the "
+                         "balls' frontal area, bath at rest (an upper value)" if oil_level > 0.0 else
+                         "no oil bath (oil_level 0)")
+    notes["cage_pocket"] = ("no cage" if guidance == "none" else
+                            f"mu_c = {float(cage_pocket_friction):g}; pocket loads from the balls' drag and the "
+                            "cage's land torque (loaded balls drive the cage, the cage drives the unloaded balls)")
+    notes["cage_land"] = (f"{guidance} guidance: Petroff's torque, land radius {land['radius']:.4g} m, width "
+                          f"{land['width']:.4g} m, radial clearance {land['clearance']:.4g} m ({land['source']})"
+                          if land else f"{guidance} guidance: no land friction")
     out = {"power_loss": {**p, "cage": NOT_MODELLED["cage"], "seals": NOT_MODELLED["seals"]},
            "power_loss_total": total,
            "friction_torque_total": total / dw if dw > 0.0 else float("nan"),
            "power_loss_inner_ball": per["inner"][0] + per["inner"][1],
            "power_loss_outer_ball": per["outer"][0] + per["outer"][1],
-           "drag_ball": drag, "power_loss_notes": notes}
+           "drag_ball": drag, "churning_ball": churning, "cage_pocket_load": q_c, "cage_land_torque": t_land,
+           "cage_guidance": guidance, "not_modelled": list(NOT_MODELLED_LIST), "power_loss_notes": notes}
     return out
 
 
@@ -181,5 +301,6 @@ def loss_keys(sol) -> dict:
         return power_losses(sol)
     except InputError as err:
         return {"power_loss": None, "power_loss_total": None, "friction_torque_total": None,
+                "not_modelled": list(NOT_MODELLED_LIST),
                 "power_loss_notes": {"error": f"{err}: call solvers.quasistatic.losses.power_losses(sol, "
                                               "bearing, lubricant)"}}
