@@ -16,7 +16,7 @@
    of the shaft's x and y from a run at relative tolerance 1e-10, against the difference that halving the
    step makes, and the evaluations per step.
 
-    python validation/bench_levels.py [--repeat 3] [--skip-runup] [--skip-cost] [--skip-newton]
+    python validation/bench_levels.py [--repeat 3] [--skip-shaft] [--skip-runup] [--skip-cost] [--skip-newton]
 
 Prints the table and writes bench_levels.json into --out (default validation/out/levels).
 """
@@ -135,15 +135,27 @@ def level_call_cost(number=500, repeat=15):
     the level's _evaluate and the compiled kernel alone; smallest of ``repeat``."""
     import timeit
 
+    import numpy as np
+
+    from exudyn_bearing.solvers.quasistatic.balls import _DIRECT
+
     sc, mbs, node, m_b, m_g, pos = shaft((FR, 0.0, 0.0), omega=OMEGA, damper=False)
     br = eb.CreateBallBearing(mbs, "6208", m_b, m_g, model="quasistatic", initialLoad=(FR, 0.0), initialOmega=OMEGA)
     mbs.Assemble()
     u = [float(x) for x in br.initialRingDisplacement]
     d, r, v, w = u[:3], [u[3], u[4], 0.3], [0.0] * 3, [0.0, 0.0, OMEGA]
     m6, m3 = [[0.0] * 6 for _ in range(6)], [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]
-    args = (*d, *r, *v, *w, br._method, br._ws, br._ctab, br._hz_table, br._start, br._balls)
+    args = (*d, *r, *v, *w, br._method, br._ws, br._ctab)
+    cold = np.zeros_like(br._start)
+
+    def kernel_cold_direct():  # what the kernel did before: direct exact Hertz constants, cold starts
+        cold[:] = 0.0
+        br._kernel(*args, _DIRECT, cold, br._balls)
+
     calls = {"user function": lambda: br._user_function(mbs, 1e-3, 0, d, r, v, w, m6, m6, m3, m3, [0.0] * 6),
-             "_evaluate": lambda: br._evaluate(d, r, v, w), "kernel": lambda: br._kernel(*args)}
+             "_evaluate": lambda: br._evaluate(d, r, v, w),
+             "kernel": lambda: br._kernel(*args, br._hz_table, br._start, br._balls),
+             "kernel, direct Hertz, cold starts": kernel_cold_direct}
     for f in calls.values():
         f()
     return {k: min(timeit.repeat(f, number=number, repeat=repeat)) / number * 1e6 for k, f in calls.items()}
@@ -185,6 +197,7 @@ def newton_study(case, t_end, tolerances):
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--repeat", type=int, default=3)
+    ap.add_argument("--skip-shaft", action="store_true")
     ap.add_argument("--skip-runup", action="store_true")
     ap.add_argument("--skip-cost", action="store_true")
     ap.add_argument("--skip-newton", action="store_true")
@@ -195,7 +208,7 @@ def main(argv=None):
     res = {}
     print(f"one 6208 on a 2.5 kg shaft, F_r = {FR:g} N, {OMEGA:g} rad/s; median of {args.repeat} runs, solver time")
     print(f"  {'level':40s} {'solver':17s} {'step':>7s} {'sim':>7s} {'wall/sim s':>11s} {'evals/step':>10s}")
-    for label, model, options, solver, h, t_end in CASES:
+    for label, model, options, solver, h, t_end in () if args.skip_shaft else CASES:
         run = one_bearing(model, options, solver, h, t_end)
         run()  # warm-up: compiles the kernels
         walls = []
@@ -207,9 +220,9 @@ def main(argv=None):
                       "evaluations_per_step": run.evaluations}
         per = f"{run.evaluations:10.2f}" if run.evaluations is not None else f"{'-':>10s}"
         print(f"  {label:40s} {solver:17s} {h:7.1e} {t_end:7.3f} {med / t_end:11.3f} {per}")
-    body, fast = res["balls, body mode"]["wall_per_sim_s"], res["balls, fast mode"]["wall_per_sim_s"]
+    body, fast = (res[k]["wall_per_sim_s"] if k in res else math.nan for k in ("balls, body mode", "balls, fast mode"))
     print("  times cheaper per simulated second than the ball element (same run):")
-    for label in res:
+    for label in list(res):
         res[label]["cheaper_than_balls_body"] = body / res[label]["wall_per_sim_s"]
         res[label]["cheaper_than_balls_fast"] = fast / res[label]["wall_per_sim_s"]
         if not label.startswith("balls"):
@@ -235,7 +248,9 @@ def main(argv=None):
         print(f"  Exudyn step with its own connector {plain:.1f} us; a user function returning zeros adds "
               f"{per_call:.1f} us per call (Exudyn's Python boundary)")
         print(f"  the level's user function {level['user function']:.1f} us per call at its operating pose, of "
-              f"which _evaluate {level['_evaluate']:.1f} us and the compiled kernel {level['kernel']:.1f} us")
+              f"which _evaluate {level['_evaluate']:.1f} us and the compiled kernel {level['kernel']:.1f} us (with "
+              f"direct exact Hertz constants and cold-started balls {level['kernel, direct Hertz, cold starts']:.1f} "
+              "us)")
     if not args.skip_newton:
         print("Newton's relative tolerance (quasi-static level, exact Hertz, GeneralizedAlpha 1e-4 s): largest "
               "difference of the shaft's x, y from the run at 1e-10")
