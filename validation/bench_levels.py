@@ -179,18 +179,19 @@ def newton_study(case, t_end, tolerances):
         with eb.filter_exudyn_notes(), warnings.catch_warnings():
             warnings.simplefilter("ignore")
             mbs.SolveDynamic(ss, solverType=ss.timeIntegration.solverType)
-        return mbs.GetSensorStoredData(pos), br.samples()["evaluations"] / round(t_end / h)
+        jacobians = mbs.sys["dynamicSolver"].it.newtonJacobiCount
+        return mbs.GetSensorStoredData(pos), br.samples()["evaluations"] / round(t_end / h), jacobians
 
-    ref, _ = run(1e-10, 1e-4)
+    ref, _, _ = run(1e-10, 1e-4)
 
     def diff(p):
         return [float(np.abs(np.interp(ref[:, 0], p[:, 0], p[:, i]) - ref[:, i]).max()) for i in (1, 2)]
 
-    half, _ = run(1e-10, 5e-5)
+    half, _, _ = run(1e-10, 5e-5)
     out = {"step_halving": diff(half), "ptp": [float(np.ptp(ref[:, i])) for i in (1, 2)]}
     for rel in tolerances:
-        p, per = run(rel, 1e-4)
-        out[rel] = (*diff(p), per)
+        p, per, jacobians = run(rel, 1e-4)
+        out[rel] = (*diff(p), per, jacobians)
     return out
 
 
@@ -261,10 +262,10 @@ def main(argv=None):
                   f" halving the step changes x by {st['step_halving'][0] * 1e9:.3g} nm, y by "
                   f"{st['step_halving'][1] * 1e9:.3g} nm")
             for rel in (1e-8, 1e-5, 1e-4, 1e-3):
-                dx, dy, per = st[rel]
+                dx, dy, per, jacobians = st[rel]
                 print(f"    relative tolerance {rel:g}: x {dx * 1e9:.3g} nm ({100 * dx / st['step_halving'][0]:.2g} % "
                       f"of the step halving's), y {dy * 1e9:.3g} nm ({100 * dy / st['step_halving'][1]:.2g} %), "
-                      f"{per:.2f} evaluations per step")
+                      f"{per:.2f} evaluations per step, {jacobians} Jacobian(s)")
     (out / "bench_levels.json").write_text(json.dumps(res, indent=1))
     print("written:", out / "bench_levels.json")
 
