@@ -266,7 +266,8 @@ class LevelBearing:
     # -- user-facing --------------------------------------------------------
     def SimulationSettings(self, endTime, stepSize=1e-4, solverType="GeneralizedAlpha"):
         """Fixed-step settings (default: GeneralizedAlpha at 1e-4 s), no solution file, sensors written every
-        sample interval."""
+        sample interval, Newton's absolute tolerance 1e-8 and relative tolerance NEWTON_RELATIVE_TOLERANCE
+        (docs/theory/levels.md)."""
         import exudyn as exu
 
         name = solverType if isinstance(solverType, str) else getattr(solverType, "name", str(solverType))
@@ -281,10 +282,9 @@ class LevelBearing:
         # Newton's default absolute tolerance (1e-10) lies below the round-off of the ball equilibrium's forces
         # near a static equilibrium, where the Newton iterations then stall and the step is cut again and again
         ss.timeIntegration.newton.absoluteTolerance = 1e-8
-        # modified Newton keeps one Jacobian, and the level's stiffness varies with the ball-set position, so each
-        # iteration cuts the residual by about 1e-3; 1e-4 instead of the default 1e-8 saves about two evaluations
-        # per step, and the motion it changes is below 0.5 % of what halving the step changes
-        # (docs/theory/levels.md, "Cost")
+        # modified Newton keeps one Jacobian, which the turning ball set makes stale; 1e-4 instead of the
+        # default 1e-8 saves about two evaluations per step, and the motion it changes is below 0.5 % of what
+        # halving the step changes (validation/bench_levels.py; docs/theory/levels.md, "Cost")
         ss.timeIntegration.newton.relativeTolerance = NEWTON_RELATIVE_TOLERANCE
         ss.solution.file.write = False
         ss.solution.sensors.writePeriod = self.sampleInterval

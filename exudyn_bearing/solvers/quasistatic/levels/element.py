@@ -15,15 +15,19 @@ theta_y) and relative spin w_z against the outer ring (:mod:`.base`):
   m omega_c^2 r_c and the gyroscopic moment J omega_c omega_R (-sin alpha_0)
   carried at the outer race (outer-race control) at the current speed, the
   grooves grown by the current speed when ``ringGrowth`` (geometry updated
-  when the speed moved by more than 1 %);
+  when the speed squared moved by more than 2 % plus (10 rad/s)^2: about 1 %
+  of the speed); the exact Hertz constants from the tabulated exact solution
+  (:func:`exudyn_bearing.physics.hertz.exact_table`) and each ball's Newton
+  iteration started from its last solution (:func:`..balls._ball_equilibrium`);
 * the damping matrix C of :mod:`..damping` (normal contact and film damping
   condensed over each ball's contacts) interpolated in the speed from the
   coefficient table at ``initialLoad``, times the pose rates.
 
 The force F = G(u, psi) - C u' on the inner ring (G: the balls' generalized
 force) is one compiled call. Exudyn's implicit solvers differentiate the
-connector numerically for their Jacobian; the explicit ones call it once per
-stage.
+connector numerically for their Jacobian (modified Newton keeps it; see
+:meth:`.base.LevelBearing.SimulationSettings` for the tolerances); the
+explicit ones call it once per stage.
 """
 from __future__ import annotations
 
@@ -41,6 +45,8 @@ from .base import WS_CAGE, WS_FORCE, WS_HEADER, WS_OUT, WS_POSE, WS_QMAX, LevelB
 __all__ = ["QuasiStaticBearing", "level_forces"]
 
 _TWO_PI = 2.0 * math.pi
+#: Speed [rad/s] below which the ring growth (proportional to the speed squared) is not updated again
+GROWTH_SPEED_FLOOR = 10.0
 
 
 @kernel
@@ -178,8 +184,9 @@ class QuasiStaticBearing(LevelBearing):
                                                   self._start, self._balls))
 
     def _update_geometry(self, speed):
-        """Grooves, ball mass and inertia at ``speed`` (rigid rings: once; growing rings: again when the speed
-        left the 1 % band about the last one)."""
+        """Grooves, ball mass and inertia at ``speed`` (rigid rings: once; growing rings, whose growth goes with
+        the speed squared: again when the speed squared left the band of 2 % plus (GROWTH_SPEED_FLOOR)^2 about
+        the last one, about 1 % of the speed well above the floor)."""
         lo, hi = self._geo_band
         if lo <= speed <= hi:
             return
@@ -189,8 +196,9 @@ class QuasiStaticBearing(LevelBearing):
         self._geo[:] = [g.rho_i, g.z_i, g.rho_o, g.z_o, g.r_ci, g.r_co, g.r_b]
         self._mass = self._ws[_MASS] = self.bearing.ball_mass * (g.r_b / self.bearing.ball_radius) ** 3
         self._inertia = self._ws[_INERTIA] = 0.4 * self._mass * g.r_b ** 2
-        band = 0.01 * max(speed, 1.0)
-        self._geo_band = (speed - band, speed + band) if self.ringGrowth else (-math.inf, math.inf)
+        band = 0.02 * speed * speed + GROWTH_SPEED_FLOOR ** 2
+        self._geo_band = (math.sqrt(max(speed * speed - band, 0.0)) if speed * speed > band else -math.inf,
+                          math.sqrt(speed * speed + band)) if self.ringGrowth else (-math.inf, math.inf)
 
     def _restart(self, t):
         super()._restart(t)
