@@ -125,3 +125,64 @@ def test_load_along_minus_y_with_load_angle(model):
     ref = eb.solve_quasistatic("6208", Fr=FR, ring_growth=False).displacement[0]
     assert -got[1] == pytest.approx(ref, rel=5e-3)
     assert abs(got[0]) < 5e-3 * ref
+
+
+def _level_and_poses(bearing, load, omega, n=40, seed=3):
+    """A quasi-static level at (load, omega) and n inner-ring poses scattered about its operating pose
+    (5 % of each coordinate plus 0.1 um / 1 urad), each with a spin angle."""
+    _sc, mbs, _node, m_b, m_g = shaft()
+    br = eb.CreateBallBearing(mbs, bearing, m_b, m_g, model="quasistatic", initialLoad=(load, 0.0),
+                              initialOmega=omega, coefficientSpeeds=[0.0, 2.0 * omega + 1.0])
+    br._restart(0.0)
+    rng = np.random.default_rng(seed)
+    d0 = br.initialRingDisplacement
+    poses = [d0 * (1.0 + 0.05 * rng.standard_normal(5)) + rng.standard_normal(5) * [1e-7, 1e-7, 1e-7, 1e-6, 1e-6]
+             for _ in range(n)]
+    return br, [(list(d[:3]), [d[3], d[4], 0.013 * k], [0.0] * 3, [0.0, 0.0, omega]) for k, d in enumerate(poses)]
+
+
+@pytest.mark.parametrize("clearance, load, omega", [(0.0, FR, 500.0), (20e-6, 500.0, 500.0), (20e-6, 500.0, 3000.0)])
+def test_level_forces_are_the_quasistatic_solvers(clearance, load, omega):
+    # the level (tabulated exact Hertz constants, warm-started balls) against the quasi-static solver's ring_forces
+    # (direct exact Hertz, cold starts) for the same balls: the table's error, <= 1e-7 on k, F and E
+    # (physics.hertz.exact_table), enters K = pi k E' sqrt(2 E R / (9 F^3)) at most 1e-7 (1 + 1/2 + 3/2) = 3e-7
+    # and the forces through the ball equilibrium likewise; 1e-6 leaves a factor 3. Zero rates: no damping force.
+    from exudyn_bearing.solvers.quasistatic.balls import ring_forces
+
+    br, calls = _level_and_poses(eb.catalog["6208"].with_clearance(clearance), load, omega)
+    for d, r, v, w in calls:
+        br._evaluate(d, r, v, w)
+        gen, _balls = ring_forces(br._pose, br._psi.copy(), br.geometry, br._m_w2.copy(), br._fto.copy(),
+                                  br._fti.copy(), br._e_prime, br._method)
+        scale = np.abs(gen[:3]).max()
+        assert np.abs(br._force - gen).max() <= 1e-6 * scale
+
+
+@pytest.mark.parametrize("clearance, load, omega", [(0.0, FR, 500.0), (20e-6, 500.0, 3000.0)])
+def test_warm_started_balls_give_the_cold_started_forces(clearance, load, omega):
+    # each ball's Newton starts from its last solution; at the same pose a cold start (warm starts cleared) gives
+    # the same forces within Newton's tolerance: the ball residual stops at 1e-13 of the ball's forces, and 1e-9
+    # of the ring force leaves four decades for the ball stiffness's conditioning
+    br, calls = _level_and_poses(eb.catalog["6208"].with_clearance(clearance), load, omega)
+    for d, r, v, w in calls:
+        br._evaluate(d, r, v, w)
+        warm = br._force.copy()
+        assert br._start[:, 2].any()  # the balls were warm-started (kind recorded)
+        br._start[:] = 0.0
+        br._evaluate(d, r, v, w)  # the same spin angle again: the cage has not moved
+        assert np.abs(br._force - warm).max() <= 1e-9 * np.abs(warm[:3]).max()
+
+
+def test_tabulated_hertz_constant_is_the_direct_one():
+    # the Hertz constant from physics.hertz.exact_table against the direct exact solution over R_y/R_x from 1 to
+    # 1e4 (either orientation): the table's stated 1e-7 on k, F, E gives at most 3e-7 on K (as above)
+    from exudyn_bearing.physics import hertz
+    from exudyn_bearing.solvers.quasistatic.balls import _DIRECT, _hertz_constant
+
+    table = hertz.exact_table()
+    e_prime = hertz.material_reduced_modulus(eb.catalog["6208"].material)
+    for ratio in np.geomspace(1.0, 9.9e3, 97):
+        for r_x, r_y in ((1e-3, 1e-3 * ratio), (1e-3 * ratio, 1e-3)):
+            direct = _hertz_constant(r_x, r_y, e_prime, hertz.EXACT, _DIRECT)
+            assert direct == pytest.approx(hertz.hertz_stiffness(r_x, r_y, e_prime, "exact"), rel=1e-12)
+            assert _hertz_constant(r_x, r_y, e_prime, hertz.EXACT, table) == pytest.approx(direct, rel=3e-7)

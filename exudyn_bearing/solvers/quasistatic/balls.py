@@ -52,26 +52,47 @@ BALL_FIELDS = ("c_r", "c_z", "q_o", "q_i", "delta_o", "delta_i", "no_r", "no_z",
                "converged")
 (B_CR, B_CZ, B_QO, B_QI, B_DO, B_DI, B_NOR, B_NOZ, B_NIR, B_NIZ, B_KO, B_KI, B_OK) = range(len(BALL_FIELDS))
 NB = len(BALL_FIELDS)
+#: ``table`` and ``start`` of :func:`_ring_forces` for direct Hertz constants and cold starts
+_DIRECT = np.empty((3, 0))
+_COLD = np.empty((0, 3))
 
 
 @kernel
-def _contact_constants(por, rco, rb, rci, nor, nir, e_prime, method):
+def _hertz_constant(r_x, r_y, e_prime, method, table):
+    """Hertz constant K [N/m^1.5] of one contact: the direct solution (:func:`exudyn_bearing.physics.hertz._hertz`)
+    when ``table`` is empty, else (k, F, E) from :func:`exudyn_bearing.physics.hertz._kfe_fast` (the exact level
+    interpolated in :func:`exudyn_bearing.physics.hertz.exact_table`, relative error <= 1e-7)."""
+    if table.shape[1] < 2:
+        return _hz._hertz(r_x, r_y, e_prime, 0.0, method)[1]
+    kappa, ell_f, ell_e = _hz._kfe_fast(r_x, r_y, method, table)
+    return _hz._stiffness(kappa, ell_f, ell_e, _hz._curvature_sum_radius(r_x, r_y), e_prime)
+
+
+@kernel
+def _contact_constants(por, rco, rb, rci, nor, nir, e_prime, method, table):
     """Hertz constants K_o, K_i [N/m^1.5] at the contact angles given by the normals
     (curvature radii at the undeformed contact points, ball centre at its
-    groove-centre distance from the outer groove)."""
+    groove-centre distance from the outer groove); ``table``: see :func:`_hertz_constant`."""
     r_ref = por + (rco - rb) * nor
     ca_o = nor if nor > 1e-12 else 1e-12
     ca_i = -nir if -nir > 1e-12 else 1e-12
     rxo, ryo = _raceway_radii_cos(rb, rco, r_ref + rb * ca_o, ca_o, False)
     rxi, ryi = _raceway_radii_cos(rb, rci, r_ref - rb * ca_i, ca_i, True)
-    ko = _hz._hertz(rxo, ryo, e_prime, 0.0, method)[1]
-    ki = _hz._hertz(rxi, ryi, e_prime, 0.0, method)[1]
-    return ko, ki
+    return _hertz_constant(rxo, ryo, e_prime, method, table), _hertz_constant(rxi, ryi, e_prime, method, table)
 
 
 @kernel
-def _ball_equilibrium(pir, piz, por, poz, rci, rco, rb, m_w2, fto, fti, e_prime, method, out):
-    """Solve one ball; writes the fields of BALL_FIELDS into ``out``."""
+def _ball_equilibrium(pir, piz, por, poz, rci, rco, rb, m_w2, fto, fti, e_prime, method, table, out, start):
+    """Solve one ball; writes the fields of BALL_FIELDS into ``out``.
+
+    The cold start: the ball on the groove-centre line, the overlap split by the contact stiffnesses (kind 1),
+    or, without overlap there but with a centrifugal force, against the outer groove (kind 2).
+    ``start`` (3,) or empty: the warm start, the shift of the last solution from a reference point of its kind
+    (kind 1: the middle of the overlap on the groove-centre line; kind 2: the outer groove's bottom) and the
+    kind (0: none). With the same kind as now, Newton starts from the reference point plus that shift, and
+    from a failed warm start over cold. The solution is the same from either start within Newton's
+    tolerance (it converges on the residual); the warm start saves iterations and the cold start's Hertz
+    constants when the ring pose moved little since the last call."""
     lo0 = rco - rb
     li0 = rci - rb
     dr = pir - por
@@ -79,25 +100,21 @@ def _ball_equilibrium(pir, piz, por, poz, rci, rco, rb, m_w2, fto, fti, e_prime,
     dist = math.sqrt(dr * dr + dz * dz)
     er = dr / dist
     ez = dz / dist
-    ko, ki = _contact_constants(por, rco, rb, rci, er, -er, e_prime, method)
     total = dist - lo0 - li0
     if total > 0.0:
-        wo = ki ** (2.0 / 3.0)
-        wi = ko ** (2.0 / 3.0)
-        d_o = total * wo / (wo + wi)
-        cr = por + (lo0 + d_o) * er
-        cz = poz + (lo0 + d_o) * ez
+        kind = 1.0
+        ref_r = por + (lo0 + 0.5 * total) * er
+        ref_z = poz + (lo0 + 0.5 * total) * ez
     elif m_w2 > 0.0:
-        d_o = (m_w2 * por / ko) ** (2.0 / 3.0)
-        cr = por + lo0 + d_o
-        cz = poz
+        kind = 2.0
+        ref_r = por + lo0
+        ref_z = poz
     else:  # unloaded, nothing presses it: middle of the gap on the line
-        cr = por + (lo0 + 0.5 * total) * er
-        cz = poz + (lo0 + 0.5 * total) * ez
+        ko, ki = _contact_constants(por, rco, rb, rci, er, -er, e_prime, method, table)
         for k in range(NB):
             out[k] = 0.0
-        out[B_CR] = cr
-        out[B_CZ] = cz
+        out[B_CR] = por + (lo0 + 0.5 * total) * er
+        out[B_CZ] = poz + (lo0 + 0.5 * total) * ez
         out[B_DO] = 0.5 * total
         out[B_DI] = 0.5 * total
         out[B_NOR] = er
@@ -107,13 +124,45 @@ def _ball_equilibrium(pir, piz, por, poz, rci, rco, rb, m_w2, fto, fti, e_prime,
         out[B_KO] = ko
         out[B_KI] = ki
         out[B_OK] = 1.0
+        if start.size == 3:
+            start[2] = 0.0
         return
-    scale = 1e-9 * (ko + ki) * (1e-6 * rb) ** 1.5 + 1e-300
+    warm = start.size == 3 and start[2] == kind
+    if warm:
+        _ball_newton(ref_r + start[0], ref_z + start[1], pir, piz, por, poz, rci, rco, rb, m_w2, fto, fti, e_prime,
+                     method, table, -1.0, out)
+    if not warm or out[B_OK] != 1.0:
+        ko, ki = _contact_constants(por, rco, rb, rci, er, -er, e_prime, method, table)
+        if kind == 1.0:
+            wo = ki ** (2.0 / 3.0)
+            wi = ko ** (2.0 / 3.0)
+            d_o = total * wo / (wo + wi)
+            cr = por + (lo0 + d_o) * er
+            cz = poz + (lo0 + d_o) * ez
+        else:
+            d_o = (m_w2 * por / ko) ** (2.0 / 3.0)
+            cr = por + lo0 + d_o
+            cz = poz
+        scale = 1e-9 * (ko + ki) * (1e-6 * rb) ** 1.5 + 1e-300
+        _ball_newton(cr, cz, pir, piz, por, poz, rci, rco, rb, m_w2, fto, fti, e_prime, method, table, scale, out)
+    if start.size == 3:
+        start[0] = out[B_CR] - ref_r
+        start[1] = out[B_CZ] - ref_z
+        start[2] = kind if out[B_OK] == 1.0 else 0.0
+
+
+@kernel
+def _ball_newton(cr, cz, pir, piz, por, poz, rci, rco, rb, m_w2, fto, fti, e_prime, method, table, scale, out):
+    """Newton's method for one ball's centre (cr, cz) from the given start (:func:`_ball_equilibrium`); ``scale``
+    [N]: the residual's absolute floor (< 0: from the Hertz constants at the start)."""
+    lo0 = rco - rb
+    li0 = rci - rb
     ok = 0.0
     step_max = 0.02 * rb
     qo = qi = 0.0
     nor = noz = nir = niz = 0.0
     do = di = 0.0
+    ko = ki = 0.0
     for it in range(80):
         # outer contact
         ar = cr - por
@@ -131,7 +180,9 @@ def _ball_equilibrium(pir, piz, por, poz, rci, rco, rb, m_w2, fto, fti, e_prime,
         di = li - li0
         # Hertz constants at the current contact angles (stale ones would make the converged state
         # depend on the iteration history)
-        ko, ki = _contact_constants(por, rco, rb, rci, nor, nir, e_prime, method)
+        ko, ki = _contact_constants(por, rco, rb, rci, nor, nir, e_prime, method, table)
+        if scale < 0.0:
+            scale = 1e-9 * (ko + ki) * (1e-6 * rb) ** 1.5 + 1e-300
         qo = ko * do * math.sqrt(do) if do > 0.0 else 0.0
         qi = ki * di * math.sqrt(di) if di > 0.0 else 0.0
         kqo = 1.5 * ko * math.sqrt(do) if do > 0.0 else 0.0
@@ -186,17 +237,23 @@ def _ball_equilibrium(pir, piz, por, poz, rci, rco, rb, m_w2, fto, fti, e_prime,
 
 
 @kernel
-def _ring_forces(u, psi, rho_i, z_i, rho_o, z_o, rci, rco, rb, m_w2, fto, fti, e_prime, method, balls, gen):
+def _ring_forces(u, psi, rho_i, z_i, rho_o, z_o, rci, rco, rb, m_w2, fto, fti, e_prime, method, table, start, balls,
+                 gen):
     """All balls for the ring pose u (5,); per-ball results into ``balls`` (Z, NB),
-    generalized force of the balls on the ring into ``gen`` (5,)."""
+    generalized force of the balls on the ring into ``gen`` (5,). ``table``: Hertz constants
+    (:func:`_hertz_constant`; shape (3, 0): direct); ``start`` (Z, 3): the balls' warm starts
+    (:func:`_ball_equilibrium`; shape (0, 3): cold starts)."""
     for k in range(5):
         gen[k] = 0.0
+    warm = start.shape[0] == psi.size
+    cold = np.empty(0)
     for j in range(psi.size):
         c = math.cos(psi[j])
         s = math.sin(psi[j])
         pir = rho_i + u[0] * c + u[1] * s + z_i * (u[4] * c - u[3] * s)
         piz = z_i + u[2] + rho_i * (u[3] * s - u[4] * c)
-        _ball_equilibrium(pir, piz, rho_o, z_o, rci, rco, rb, m_w2[j], fto[j], fti[j], e_prime, method, balls[j])
+        _ball_equilibrium(pir, piz, rho_o, z_o, rci, rco, rb, m_w2[j], fto[j], fti[j], e_prime, method, table,
+                          balls[j], start[j] if warm else cold)
         q = balls[j, B_QI]
         nr = balls[j, B_NIR]
         nz = balls[j, B_NIZ]
@@ -211,10 +268,11 @@ def _ring_forces(u, psi, rho_i, z_i, rho_o, z_o, rci, rco, rb, m_w2, fto, fti, e
 
 
 def ring_forces(u, psi, geom, m_w2, fto, fti, e_prime, method):
-    """Python wrapper of the compiled ball loop: (generalized force (5,), balls (Z, NB))."""
+    """Python wrapper of the compiled ball loop: (generalized force (5,), balls (Z, NB)); direct Hertz
+    constants, cold starts."""
     z = psi.size
     balls = np.zeros((z, NB))
     gen = np.zeros(5)
     _ring_forces(np.asarray(u, float), psi, geom.rho_i, geom.z_i, geom.rho_o, geom.z_o, geom.r_ci, geom.r_co,
-                 geom.r_b, m_w2, fto, fti, e_prime, method, balls, gen)
+                 geom.r_b, m_w2, fto, fti, e_prime, method, _DIRECT, _COLD, balls, gen)
     return gen, balls

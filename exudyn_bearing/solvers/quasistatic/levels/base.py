@@ -29,7 +29,7 @@ from ...quasistatic.solve import solve_quasistatic
 
 asarray = np.asarray
 
-__all__ = ["IMPLICIT_SOLVERS", "LEVEL_OPTIONS", "LevelBearing"]
+__all__ = ["IMPLICIT_SOLVERS", "LEVEL_OPTIONS", "LevelBearing", "WS_HEADER"]
 
 #: Options every level takes (the ball element's names).
 LEVEL_OPTIONS = ("lubricant", "initialLoad", "loadAngle", "initialOmega", "ringGrowth", "temperatures", "hertzModel",
@@ -89,10 +89,18 @@ def entry_point(dispatcher, args):
         return dispatcher
 
 
+#: Newton's relative tolerance in :meth:`LevelBearing.SimulationSettings` (Exudyn's default: 1e-8)
+NEWTON_RELATIVE_TOLERANCE = 1e-4
+#: Header of a level's work array: out = -(F, 0) (6), F (5), pose u (5), cage (angle, speed) (2), q_max (3).
+WS_OUT, WS_FORCE, WS_POSE, WS_CAGE, WS_QMAX, WS_HEADER = 0, 6, 11, 16, 18, 21
+
+
 class LevelBearing:
     """Base of the levels (module docstring). Subclasses set ``model`` and
-    implement ``_setup()`` and ``_evaluate(d, r, v, w)`` (fills ``self._out``
-    (6,), ``self._force`` (5,), ``self._cage`` (angle, speed))."""
+    implement ``_workspace_size()`` (their part of the work array ``self._ws``
+    after the WS_* header), ``_setup()`` and ``_evaluate(d, r, v, w)``
+    (sequences of 3; fills ``self._out`` (6,), ``self._force`` (5,),
+    ``self._cage`` (angle, speed), views of the header)."""
 
     model = ""
 
@@ -130,12 +138,15 @@ class LevelBearing:
         self.cageRatio = float(_kin.cage_speed(1.0, 0.0, b.ball_radius, b.pitch_radius, a0))
         self.spinRatio = float(_kin.ball_spin_relative(1.0, 0.0, b.ball_radius, b.pitch_radius, a0))
         self._q_limit = self._ball_load_limit()
-        self._out = np.zeros(6)
-        self._force = np.zeros(5)
-        self._pose = np.zeros(5)
-        self._cage = np.zeros(2)
+        # one work array for the kernel (each array argument of a compiled call costs its unboxing): the
+        # header of every level (WS_*), then the level's own part (_workspace_size())
+        self._ws = np.zeros(WS_HEADER + self._workspace_size())
+        self._out = self._ws[WS_OUT:WS_OUT + 6]
+        self._force = self._ws[WS_FORCE:WS_FORCE + 5]
+        self._pose = self._ws[WS_POSE:WS_POSE + 5]
+        self._cage = self._ws[WS_CAGE:WS_CAGE + 2]
+        self._qmax = self._ws[WS_QMAX:WS_QMAX + 3]
         self._rot0 = np.eye(3)
-        self._qmax = np.zeros(3)
         self._t_last = -math.inf
         self._t_start = -math.inf
         self.restarts = 0
@@ -209,6 +220,9 @@ class LevelBearing:
             sensorUserFunction=_sensor_function(fn))) for k, fn in defs.items()}
         self.items = {"object": self.object, "sensors": dict(self.sensors)}
 
+    def _workspace_size(self):
+        return 0
+
     def _connector_parameters(self):
         """Keyword arguments of the connector (default: the user function)."""
         return {"springForceTorqueUserFunction": self._user_function}
@@ -225,8 +239,7 @@ class LevelBearing:
             self._restart(t)
         self._t_last = t
         self._evaluations += 1
-        self._evaluate(asarray(displacement, float), asarray(rotation, float), asarray(velocity, float),
-                       asarray(angularVelocity, float))
+        self._evaluate(displacement, rotation, velocity, angularVelocity)
         if t >= self._next_sample - 1e-12:
             self._rot0 = asarray(rotJ0, float)
             self._samples.append(self._sample_row(t))
@@ -253,7 +266,8 @@ class LevelBearing:
     # -- user-facing --------------------------------------------------------
     def SimulationSettings(self, endTime, stepSize=1e-4, solverType="GeneralizedAlpha"):
         """Fixed-step settings (default: GeneralizedAlpha at 1e-4 s), no solution file, sensors written every
-        sample interval."""
+        sample interval, Newton's absolute tolerance 1e-8 and relative tolerance NEWTON_RELATIVE_TOLERANCE
+        (docs/theory/levels.md)."""
         import exudyn as exu
 
         name = solverType if isinstance(solverType, str) else getattr(solverType, "name", str(solverType))
@@ -268,6 +282,10 @@ class LevelBearing:
         # Newton's default absolute tolerance (1e-10) lies below the round-off of the ball equilibrium's forces
         # near a static equilibrium, where the Newton iterations then stall and the step is cut again and again
         ss.timeIntegration.newton.absoluteTolerance = 1e-8
+        # modified Newton keeps one Jacobian, which the turning ball set makes stale; 1e-4 instead of the
+        # default 1e-8 saves about two evaluations per step, and the motion it changes is below 0.5 % of what
+        # halving the step changes (validation/bench_levels.py; docs/theory/levels.md, "Cost")
+        ss.timeIntegration.newton.relativeTolerance = NEWTON_RELATIVE_TOLERANCE
         ss.solution.file.write = False
         ss.solution.sensors.writePeriod = self.sampleInterval
         return ss

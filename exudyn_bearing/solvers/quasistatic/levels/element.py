@@ -15,15 +15,19 @@ theta_y) and relative spin w_z against the outer ring (:mod:`.base`):
   m omega_c^2 r_c and the gyroscopic moment J omega_c omega_R (-sin alpha_0)
   carried at the outer race (outer-race control) at the current speed, the
   grooves grown by the current speed when ``ringGrowth`` (geometry updated
-  when the speed moved by more than 1 %);
+  when the speed squared moved by more than 2 % plus (10 rad/s)^2: about 1 %
+  of the speed); the exact Hertz constants from the tabulated exact solution
+  (:func:`exudyn_bearing.physics.hertz.exact_table`) and each ball's Newton
+  iteration started from its last solution (:func:`..balls._ball_equilibrium`);
 * the damping matrix C of :mod:`..damping` (normal contact and film damping
   condensed over each ball's contacts) interpolated in the speed from the
   coefficient table at ``initialLoad``, times the pose rates.
 
 The force F = G(u, psi) - C u' on the inner ring (G: the balls' generalized
 force) is one compiled call. Exudyn's implicit solvers differentiate the
-connector numerically for their Jacobian; the explicit ones call it once per
-stage.
+connector numerically for their Jacobian (modified Newton keeps it; see
+:meth:`.base.LevelBearing.SimulationSettings` for the tolerances); the
+explicit ones call it once per stage.
 """
 from __future__ import annotations
 
@@ -36,11 +40,13 @@ from ....data import MAX_FREE_CONTACT_ANGLE
 from ....model.operating_geometry import operating_geometry
 from ....physics import hertz as _hz
 from ..balls import B_NIR, B_NIZ, B_QI, B_QO, NB, _ring_forces
-from .base import LevelBearing, entry_point
+from .base import WS_CAGE, WS_FORCE, WS_HEADER, WS_OUT, WS_POSE, WS_QMAX, LevelBearing, entry_point
 
 __all__ = ["QuasiStaticBearing", "level_forces"]
 
 _TWO_PI = 2.0 * math.pi
+#: Speed [rad/s] below which the ring growth (proportional to the speed squared) is not updated again
+GROWTH_SPEED_FLOOR = 10.0
 
 
 @kernel
@@ -60,58 +66,80 @@ def _interp_row(speeds, table, w, out):
         out[i] = (1.0 - s) * table[k, i] + s * table[k + 1, i]
 
 
-@kernel
-def level_forces(d, r, v, w, state, geo, kc, kr, sin_a0, mass, inertia, e_prime, method, speeds, ctab, cflat,
-                 psi, m_w2, fto, fti, balls, gen, u, out, force, cage, qmax):
-    """One evaluation of the quasi-static level (module docstring).
+# the quasi-static level's part of the work array (after the header WS_HEADER of .base): spin-angle state (3),
+# geometry (rho_i, z_i, rho_o, z_o, r_ci, r_co, r_b), constants (k_c, k_r, sin alpha_0, ball mass, ball inertia, E'),
+# the balls' generalized force (5), the damping matrix row-major (25), then per ball psi, m omega_c^2, F_to, F_ti
+# (Z each) and the speeds of the damping table (n)
+_STATE = WS_HEADER
+_GEO = _STATE + 3
+_KC, _KR, _SIN_A0, _MASS, _INERTIA, _EPRIME = range(_GEO + 7, _GEO + 13)
+_GEN = _GEO + 13
+_CFLAT = _GEN + 5
+_BALLS = _CFLAT + 25
 
-    state: [last Tait-Bryan spin angle, unwrapped spin angle, cage angle at zero spin angle];
-    geo: (rho_i, z_i, rho_o, z_o, r_ci, r_co, r_b); ctab (n, 25): damping matrices at ``speeds``.
-    Writes u (5,), the balls table, ``out`` (6,) = -(F, 0), ``force`` = F (5,), ``cage`` (angle, speed) and
-    ``qmax`` (largest inner and outer ball load, largest loaded inner contact angle); returns the largest ball
-    load."""
-    dc = r[2] - state[0]
+
+@kernel
+def level_forces(d0, d1, d2, r0, r1, r2, v0, v1, v2, w0, w1, w2, method, ws, ctab, table, start, balls):
+    """One evaluation of the quasi-static level (module docstring) for the connector's displacement d,
+    Tait-Bryan angles r, velocity v and angular velocity w (.base).
+
+    ws: the work array (layout above; state = [last Tait-Bryan spin angle, unwrapped spin angle, cage angle
+    at zero spin angle]); ctab (n, 25): damping matrices at the table's speeds; table, start: Hertz constants
+    and warm starts of :func:`..balls._ring_forces`; balls (Z, NB).
+    Writes the header (pose u, ``out`` = -(F, 0), F, cage (angle, speed), q_max = (largest inner and outer
+    ball load, largest loaded inner contact angle)) and the balls table; returns the largest ball load."""
+    z = balls.shape[0]
+    psi = ws[_BALLS:_BALLS + z]
+    m_w2 = ws[_BALLS + z:_BALLS + 2 * z]
+    fto = ws[_BALLS + 2 * z:_BALLS + 3 * z]
+    fti = ws[_BALLS + 3 * z:_BALLS + 4 * z]
+    speeds = ws[_BALLS + 4 * z:]
+    gen = ws[_GEN:_GEN + 5]
+    u = ws[WS_POSE:WS_POSE + 5]
+    cflat = ws[_CFLAT:_CFLAT + 25]
+    kc = ws[_KC]
+    dc = r2 - ws[_STATE]
     dc -= _TWO_PI * math.floor(dc / _TWO_PI + 0.5)
-    state[0] = r[2]
-    state[1] += dc
-    ws = w[2]
-    wc = kc * ws
-    theta = state[2] + kc * state[1]
-    z = psi.size
-    g = inertia * wc * (-kr * ws * sin_a0) / geo[6]
+    ws[_STATE] = r2
+    ws[_STATE + 1] += dc
+    wc = kc * w2
+    theta = ws[_STATE + 2] + kc * ws[_STATE + 1]
+    g = ws[_INERTIA] * wc * (-ws[_KR] * w2 * ws[_SIN_A0]) / ws[_GEO + 6]
     for j in range(z):
         psi[j] = theta + _TWO_PI * j / z
-        m_w2[j] = mass * wc * wc
+        m_w2[j] = ws[_MASS] * wc * wc
         fto[j] = g
         fti[j] = 0.0
-    u[0] = d[0]
-    u[1] = d[1]
-    u[2] = d[2]
-    u[3] = r[0]
-    u[4] = r[1]
-    _ring_forces(u, psi, geo[0], geo[1], geo[2], geo[3], geo[4], geo[5], geo[6], m_w2, fto, fti, e_prime, method,
-                 balls, gen)
-    _interp_row(speeds, ctab, ws, cflat)
-    rate0, rate1, rate2 = v[0], v[1], v[2]
-    rate3 = w[0] - ws * r[1]
-    rate4 = w[1] + ws * r[0]
-    qmax[0] = 0.0
-    qmax[1] = 0.0
-    qmax[2] = 0.0
+    u[0] = d0
+    u[1] = d1
+    u[2] = d2
+    u[3] = r0
+    u[4] = r1
+    _ring_forces(u, psi, ws[_GEO], ws[_GEO + 1], ws[_GEO + 2], ws[_GEO + 3], ws[_GEO + 4], ws[_GEO + 5],
+                 ws[_GEO + 6], m_w2, fto, fti, ws[_EPRIME], method, table, start, balls, gen)
+    _interp_row(speeds, ctab, w2, cflat)
+    rate3 = w0 - w2 * r1
+    rate4 = w1 + w2 * r0
+    q_in = 0.0
+    q_out = 0.0
+    alpha = 0.0
     for j in range(z):
-        qmax[0] = max(qmax[0], balls[j, B_QI])
-        qmax[1] = max(qmax[1], balls[j, B_QO])
+        q_in = max(q_in, balls[j, B_QI])
+        q_out = max(q_out, balls[j, B_QO])
         if balls[j, B_QI] > 0.0:  # contact angle from the groove bottom, inner race
-            qmax[2] = max(qmax[2], abs(math.atan2(-balls[j, B_NIZ], -balls[j, B_NIR])))
+            alpha = max(alpha, abs(math.atan2(-balls[j, B_NIZ], -balls[j, B_NIR])))
+    ws[WS_QMAX] = q_in
+    ws[WS_QMAX + 1] = q_out
+    ws[WS_QMAX + 2] = alpha
     for i in range(5):
-        c = (cflat[5 * i] * rate0 + cflat[5 * i + 1] * rate1 + cflat[5 * i + 2] * rate2 + cflat[5 * i + 3] * rate3
+        c = (cflat[5 * i] * v0 + cflat[5 * i + 1] * v1 + cflat[5 * i + 2] * v2 + cflat[5 * i + 3] * rate3
              + cflat[5 * i + 4] * rate4)
-        out[i] = -gen[i] + c
-        force[i] = -out[i]
-    out[5] = 0.0
-    cage[0] = theta
-    cage[1] = wc
-    return max(qmax[0], qmax[1])
+        ws[WS_OUT + i] = -gen[i] + c
+        ws[WS_FORCE + i] = gen[i] - c
+    ws[WS_OUT + 5] = 0.0
+    ws[WS_CAGE] = theta
+    ws[WS_CAGE + 1] = wc
+    return max(q_in, q_out)
 
 
 class QuasiStaticBearing(LevelBearing):
@@ -124,59 +152,70 @@ class QuasiStaticBearing(LevelBearing):
         self._cage0 = float(cageAngle)
         super().__init__(*args, **options)
 
+    def _workspace_size(self):
+        return _BALLS - WS_HEADER + 4 * self.bearing.n_balls + len(self.coefficients.speeds)
+
     def _setup(self):
         b = self.bearing
         z = b.n_balls
-        self._state = np.array([0.0, 0.0, self._cage0])
-        self._psi, self._m_w2, self._fto, self._fti = (np.zeros(z) for _ in range(4))
+        ws = self._ws
+        self._state = ws[_STATE:_STATE + 3]
+        self._state[2] = self._cage0
+        self._geo = ws[_GEO:_GEO + 7]
+        self._psi, self._m_w2, self._fto, self._fti = (ws[_BALLS + k * z:_BALLS + (k + 1) * z] for k in range(4))
+        self._gen = ws[_GEN:_GEN + 5]
+        self._cflat = ws[_CFLAT:_CFLAT + 25]
+        self._speeds = ws[_BALLS + 4 * z:]
         self._balls = np.zeros((z, NB))
-        self._gen = np.zeros(5)
-        self._cflat = np.zeros(25)
+        self._start = np.zeros((z, 3))  # the balls' warm starts (balls._ball_equilibrium)
+        self._hz_table = _hz.exact_table()
         c = self.coefficients
-        self._speeds = np.array(c.speeds, float)
+        self._speeds[:] = c.speeds
         t = self.rotation()
         self._ctab = np.ascontiguousarray(np.einsum("ij,njk,lk->nil", t, np.array(c.damping, float), t)
                                           .reshape(-1, 25))
-        self._e_prime = _hz.material_reduced_modulus(b.material)
+        self._e_prime = ws[_EPRIME] = _hz.material_reduced_modulus(b.material)
         self._method = _hz.method_code(self.hertzModel)
-        self._sin_a0 = math.sin(b.free_contact_angle)
-        self._geo_speed = math.nan
+        ws[_KC], ws[_KR], ws[_SIN_A0] = self.cageRatio, self.spinRatio, math.sin(b.free_contact_angle)
+        self._geo_band = (math.inf, -math.inf)
         self._update_geometry(abs(self.initialOmega))
         self._first = True
-        v3 = np.zeros(3)
-        self._kernel = entry_point(level_forces, (
-            v3, v3, v3, v3, self._state, self._geo, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0, self._speeds, self._ctab,
-            self._cflat, self._psi, self._m_w2, self._fto, self._fti, self._balls, self._gen, self._pose, self._out,
-            self._force, self._cage, np.zeros(3)))
+        self._kernel = entry_point(level_forces, (*[0.0] * 12, self._method, ws, self._ctab, self._hz_table,
+                                                  self._start, self._balls))
 
     def _update_geometry(self, speed):
-        """Grooves, ball mass and inertia at ``speed`` (rigid rings: once)."""
-        if self._geo_speed == self._geo_speed and (not self.ringGrowth or abs(speed - self._geo_speed)
-                                                     <= 0.01 * max(self._geo_speed, 1.0)):
+        """Grooves, ball mass and inertia at ``speed`` (rigid rings: once; growing rings, whose growth goes with
+        the speed squared: again when the speed squared left the band of 2 % plus (GROWTH_SPEED_FLOOR)^2 about
+        the last one, about 1 % of the speed well above the floor)."""
+        lo, hi = self._geo_band
+        if lo <= speed <= hi:
             return
         g = operating_geometry(self.bearing, speed if self.ringGrowth else 0.0, 0.0, self.ringGrowth, 0.0,
                                self.temperatures)
         self.geometry = g
-        self._geo = np.array([g.rho_i, g.z_i, g.rho_o, g.z_o, g.r_ci, g.r_co, g.r_b])
-        self._mass = self.bearing.ball_mass * (g.r_b / self.bearing.ball_radius) ** 3
-        self._inertia = 0.4 * self._mass * g.r_b ** 2
-        self._geo_speed = speed
+        self._geo[:] = [g.rho_i, g.z_i, g.rho_o, g.z_o, g.r_ci, g.r_co, g.r_b]
+        self._mass = self._ws[_MASS] = self.bearing.ball_mass * (g.r_b / self.bearing.ball_radius) ** 3
+        self._inertia = self._ws[_INERTIA] = 0.4 * self._mass * g.r_b ** 2
+        band = 0.02 * speed * speed + GROWTH_SPEED_FLOOR ** 2
+        self._geo_band = (math.sqrt(max(speed * speed - band, 0.0)) if speed * speed > band else -math.inf,
+                          math.sqrt(speed * speed + band)) if self.ringGrowth else (-math.inf, math.inf)
 
     def _restart(self, t):
         super()._restart(t)
         self._state[:] = [0.0, 0.0, self._cage0]
+        self._start[:] = 0.0
         self._first = True
 
     def _evaluate(self, d, r, v, w):
-        if self.ringGrowth:
-            self._update_geometry(abs(float(w[2])))
+        speed = abs(w[2])
+        lo, hi = self._geo_band
+        if not lo <= speed <= hi:
+            self._update_geometry(speed)
         if self._first:  # the spin angle of the first evaluation is the zero of the cage angle
             self._state[0] = r[2]
             self._first = False
-        qmax = self._kernel(d, r, v, w, self._state, self._geo, self.cageRatio, self.spinRatio, self._sin_a0,
-                            self._mass, self._inertia, self._e_prime, self._method, self._speeds, self._ctab,
-                            self._cflat, self._psi, self._m_w2, self._fto, self._fti, self._balls, self._gen,
-                            self._pose, self._out, self._force, self._cage, self._qmax)
+        qmax = self._kernel(d[0], d[1], d[2], r[0], r[1], r[2], v[0], v[1], v[2], w[0], w[1], w[2], self._method,
+                            self._ws, self._ctab, self._hz_table, self._start, self._balls)
         if not qmax <= self._q_limit:
             self._check_ball_load(self._t_last, qmax)
         if self._qmax[2] > MAX_FREE_CONTACT_ANGLE:

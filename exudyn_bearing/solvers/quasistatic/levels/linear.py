@@ -29,31 +29,40 @@ import numpy as np
 
 from ...._jit import kernel
 from ....data import InputError
-from .base import LevelBearing, entry_point
+from .base import WS_FORCE, WS_HEADER, WS_OUT, WS_POSE, LevelBearing, entry_point
 from .element import _interp_row
 
 __all__ = ["LinearBearing", "linear_forces"]
 
 
+# the linear level's part of the work array (after the header WS_HEADER of .base): the table row interpolated
+# at the current speed (K (25), C (25), u0 (5)), the operating loads L (5) and the table's speeds (n)
+_ROW = WS_HEADER
+_LOADS = _ROW + 55
+_SPEEDS = _LOADS + 5
+
+
 @kernel
-def linear_forces(d, r, v, w, speeds, table, row, loads, u, out, force):
-    """out = -(F, 0) with F of the module docstring; ``table`` (n, 55): K (25), C (25), u0 (5) per speed.
-    Writes the pose u (5,) and ``force`` = F (5,)."""
-    _interp_row(speeds, table, w[2], row)
-    ws = w[2]
-    u[0] = d[0]
-    u[1] = d[1]
-    u[2] = d[2]
-    u[3] = r[0]
-    u[4] = r[1]
-    rate = (v[0], v[1], v[2], w[0] - ws * r[1], w[1] + ws * r[0])
+def linear_forces(d0, d1, d2, r0, r1, r2, v0, v1, v2, w0, w1, w2, ws, table):
+    """out = -(F, 0) with F of the module docstring for the connector's displacement d, Tait-Bryan angles r,
+    velocity v and angular velocity w (.base); ``table`` (n, 55): K (25), C (25), u0 (5) per speed; ``ws``
+    the work array (layout above). Writes the pose u and F into its header."""
+    row = ws[_ROW:_ROW + 55]
+    _interp_row(ws[_SPEEDS:], table, w2, row)
+    u = ws[WS_POSE:WS_POSE + 5]
+    u[0] = d0
+    u[1] = d1
+    u[2] = d2
+    u[3] = r0
+    u[4] = r1
+    rate = (v0, v1, v2, w0 - w2 * r1, w1 + w2 * r0)
     for i in range(5):
-        f = loads[i]
+        f = ws[_LOADS + i]
         for j in range(5):
             f += row[5 * i + j] * (u[j] - row[50 + j]) + row[25 + 5 * i + j] * rate[j]
-        out[i] = f
-        force[i] = -f
-    out[5] = 0.0
+        ws[WS_OUT + i] = f
+        ws[WS_FORCE + i] = -f
+    ws[WS_OUT + 5] = 0.0
 
 
 class LinearBearing(LevelBearing):
@@ -72,19 +81,23 @@ class LinearBearing(LevelBearing):
         if not np.allclose(table_load, self.initialLoad, rtol=1e-9, atol=1e-9):
             raise InputError(f"initialLoad: {self.initialLoad} differs from the coefficient table's operating load "
                              f"{table_load}; the linear level is linearised about the table's load")
-        self._speeds = np.array(c.speeds, float)
+        ws = self._ws
+        self._speeds = ws[_SPEEDS:]
+        self._speeds[:] = c.speeds
         t = self.rotation()
         k = np.einsum("ij,njk,lk->nil", t, np.array(c.stiffness), t)
         cc = np.einsum("ij,njk,lk->nil", t, np.array(c.damping), t)
         self._table = np.ascontiguousarray(np.concatenate([k.reshape(-1, 25), cc.reshape(-1, 25), disp @ t.T],
                                                           axis=1))
-        self._row = np.zeros(55)
+        self._row = ws[_ROW:_ROW + 55]
         self._cage[0] = math.nan  # the linear level has no ball set: no cage angle, only the kinematic cage speed
-        self._loads = t @ np.array([self.initialLoad[0], float(op.get("Fy", 0.0)), self.initialLoad[1],
-                                    float(op.get("Mx", 0.0)), float(op.get("My", 0.0))])
-        v3 = np.zeros(3)
-        self._kernel = entry_point(linear_forces, (v3, v3, v3, v3, self._speeds, self._table, self._row,
-                                                   self._loads, self._pose, self._out, self._force))
+        self._loads = ws[_LOADS:_LOADS + 5]
+        self._loads[:] = t @ np.array([self.initialLoad[0], float(op.get("Fy", 0.0)), self.initialLoad[1],
+                                       float(op.get("Mx", 0.0)), float(op.get("My", 0.0))])
+        self._kernel = entry_point(linear_forces, (*[0.0] * 12, ws, self._table))
+
+    def _workspace_size(self):
+        return _SPEEDS - WS_HEADER + len(self.coefficients.speeds)
 
     def _connector_parameters(self):
         if self._speeds.size > 1:
@@ -106,6 +119,5 @@ class LinearBearing(LevelBearing):
         return super().samples()
 
     def _evaluate(self, d, r, v, w):
-        self._kernel(d, r, v, w, self._speeds, self._table, self._row, self._loads, self._pose, self._out,
-                     self._force)
+        self._kernel(d[0], d[1], d[2], r[0], r[1], r[2], v[0], v[1], v[2], w[0], w[1], w[2], self._ws, self._table)
         self._cage[1] = self.cageRatio * w[2]
