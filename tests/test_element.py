@@ -545,3 +545,27 @@ def test_outer_ring_on_a_flexible_housing():
     w = r.window(0.25)
     np.testing.assert_allclose(r.contact("load", "inner")[w].max(axis=1),
                                stribeck_loads(3000.0, r.azimuth()[w]).max(axis=1), rtol=0.01)
+
+
+@pytest.mark.parametrize("mode", ["bodies", "fast"])
+def test_unstable_explicit_solvers_are_refused_before_the_first_step(mode):
+    # ExplicitEuler and ExplicitMidpoint: the amplification factor of an undamped oscillation x'' = -w^2 x is
+    # |1 + i w h| > 1 and |1 + i w h - (w h)^2/2| = sqrt(1 + (w h)^4/4) > 1 at every step h, so the ball
+    # contacts (and the fast mode's ring on them) grow; both are refused by name, in SimulationSettings
+    # and, for settings made otherwise, at the run's first evaluation, before any step is taken
+    SC, mbs, m_in, m_out, b = _rotor_scene()
+    el = CreateBallBearing(mbs, b, m_in, m_out, initialOmega=500.0, initialLoad=(3000.0, 0.0), stepSize=5e-6,
+                           mode=mode)
+    mbs.Assemble()
+    for name in ("ExplicitEuler", "ExplicitMidpoint"):
+        with pytest.raises(InputError, match=f"^solverType: {name} .* VelocityVerlet"):
+            el.SimulationSettings(0.001, solverType=name)
+    ss = el.SimulationSettings(0.001)
+    with pytest.raises(InputError, match="^solverType: ExplicitMidpoint"):
+        solve_dynamic(mbs, ss, exu.DynamicSolverType.ExplicitMidpoint)
+    with pytest.raises(RuntimeError, match="no samples yet"):  # not "ended before its first sample": no step ran
+        el.results()
+    # the solvers the element is meant for are not refused: RK44 and, in the body mode, GeneralizedAlpha
+    el.SimulationSettings(0.001, solverType="RK44")
+    if mode == "bodies":
+        el.SimulationSettings(0.001, solverType="GeneralizedAlpha")

@@ -56,8 +56,11 @@ acceleration and speed as series (VelocityVerlet; ``results().signal(name)``).
 Solvers, both modes: VelocityVerlet (recommended; one force evaluation per
 step, so the Cundall-Strack history is exactly the reference engine's) and
 RK44 with ``friction="regularized"`` (history-free; the fast mode advances
-the balls at RK44's increasing stage times). ExplicitEuler is not usable:
-not symplectic, it drives the stiff contacts unstable (validation/REPORT.md).
+the balls at RK44's increasing stage times). ExplicitEuler and
+ExplicitMidpoint are refused (InputError naming ``solverType``, in
+``SimulationSettings`` and at a run's first evaluation): their stability
+regions leave out the undamped contact oscillation, which grows at any step
+(ExplicitEuler runs away, ExplicitMidpoint ends with wrong ball loads).
 Implicit solvers work in the body mode with the numerical Jacobian but are
 not recommended (EXUDYN_NOTES: an order of magnitude slower for Hertz
 contact); the fast mode needs an explicit solver (its balls advance at the
@@ -107,7 +110,7 @@ from .items import ItemsMixin
 from .markers import RING_REGISTRY, initial_ring_pose, ring_from_marker, ring_mobility
 from .sensors import SensorsMixin
 from .signals import SignalsMixin
-from .userfunctions import IMPLICIT_SOLVERS, UserFunctionsMixin, implicit_solver_error
+from .userfunctions import UserFunctionsMixin, solver_error
 
 __all__ = ["BallBearingElement", "OPTION_NAMES"]
 
@@ -347,8 +350,9 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
         name = solverType if isinstance(solverType, str) else getattr(solverType, "name", str(solverType))
         if not isinstance(getattr(exu.DynamicSolverType, name, None), exu.DynamicSolverType):
             raise InputError(f"solverType: {solverType!r} is not an exudyn.DynamicSolverType")
-        if self.mode == "fast" and name in IMPLICIT_SOLVERS:
-            raise implicit_solver_error(name)
+        err = solver_error(self.mode, name)
+        if err is not None:
+            raise err
         check_positive("endTime", endTime)
         if stepSize is not None:
             check_positive("stepSize", stepSize)
