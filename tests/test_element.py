@@ -569,3 +569,20 @@ def test_unstable_explicit_solvers_are_refused_before_the_first_step(mode):
     el.SimulationSettings(0.001, solverType="RK44")
     if mode == "bodies":
         el.SimulationSettings(0.001, solverType="GeneralizedAlpha")
+
+
+def test_fast_mode_refuses_solvers_that_evaluate_back_in_time():
+    # RK67's stage times are not in time order (Exudyn evaluates it at 0.276 h after 0.724 h), so its first step
+    # goes back in time, and the adaptive solvers repeat rejected steps from their start; the fast mode's balls
+    # only advance: refused by name before the run, and at its first evaluation
+    SC, mbs, m_in, m_out, b = _rotor_scene()
+    el = CreateBallBearing(mbs, b, m_in, m_out, initialOmega=500.0, initialLoad=(3000.0, 0.0), stepSize=5e-6,
+                           mode="fast")
+    mbs.Assemble()
+    for name in ("RK67", "ODE23", "DOPRI5", "DVERK6"):
+        with pytest.raises(InputError, match=f"^mode: .* not {name}"):
+            el.SimulationSettings(0.001, solverType=name)
+    with pytest.raises(InputError, match="^mode: .* not RK67"):
+        solve_dynamic(mbs, el.SimulationSettings(0.001), exu.DynamicSolverType.RK67)
+    with pytest.raises(RuntimeError, match="no samples yet"):
+        el.results()

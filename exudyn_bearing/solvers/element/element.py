@@ -66,7 +66,8 @@ not recommended (EXUDYN_NOTES: an order of magnitude slower for Hertz
 contact); the fast mode needs an explicit solver (its balls advance at the
 first evaluation of a new time and ignore Newton iterations there):
 ``SimulationSettings`` and the first evaluation of a run under an implicit
-solver raise InputError naming ``mode``, and so does an evaluation back in
+solver, or under RK67, ODE23, DOPRI5 or DVERK6 (evaluations back in time
+within a step), raise InputError naming ``mode``, and so does an evaluation back in
 time within a run.
 
 Repeated solves: Exudyn starts every ``mbs.SolveDynamic`` at

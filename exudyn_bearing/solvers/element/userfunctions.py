@@ -21,6 +21,9 @@ IMPLICIT_SOLVERS = ("GeneralizedAlpha", "TrapezoidalIndex2")
 #: oscillation grows at any step (ExplicitEuler runs away within 0.2 ms on the 6208 scene at 5 us;
 #: ExplicitMidpoint ends at a quarter of the ball load, unnoticed).
 UNSTABLE_SOLVERS = ("ExplicitEuler", "ExplicitMidpoint")
+#: Explicit solvers that evaluate back in time within a run: RK67 and DVERK6 (stage times out of order),
+#: ODE23 and DOPRI5 (a rejected adaptive step is repeated from its start). The fast mode's balls only advance.
+BACKWARD_SOLVERS = ("RK67", "ODE23", "DOPRI5", "DVERK6")
 #: Times closer than this [s] are the same time.
 _T_EPS = 1e-12
 
@@ -40,10 +43,15 @@ def solver_error(mode, solver):
                           "VelocityVerlet (recommended), RK33, RK44 or RK67")
     if mode == "fast" and solver in IMPLICIT_SOLVERS:
         return implicit_solver_error(solver)
+    if mode == "fast" and solver in BACKWARD_SOLVERS:
+        return InputError(f"mode: the fast mode integrates the balls forward in time and needs a fixed-step solver "
+                          f"whose evaluations never go back in time (VelocityVerlet, RK33 or RK44), not {solver} "
+                          "(stage times out of order, or rejected adaptive steps repeated); use mode='bodies' for it")
     return None
 
 
-__all__ = ["UserFunctionsMixin", "IMPLICIT_SOLVERS", "UNSTABLE_SOLVERS", "implicit_solver_error", "solver_error"]
+__all__ = ["UserFunctionsMixin", "IMPLICIT_SOLVERS", "UNSTABLE_SOLVERS", "BACKWARD_SOLVERS", "implicit_solver_error",
+           "solver_error"]
 
 
 def _entry_point(dispatcher, args):
