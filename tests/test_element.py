@@ -550,19 +550,27 @@ def test_outer_ring_on_a_flexible_housing():
 @pytest.mark.parametrize("mode", ["bodies", "fast"])
 def test_unstable_explicit_solvers_are_refused_before_the_first_step(mode):
     # ExplicitEuler and ExplicitMidpoint: the amplification factor of an undamped oscillation x'' = -w^2 x is
-    # |1 + i w h| > 1 and |1 + i w h - (w h)^2/2| = sqrt(1 + (w h)^4/4) > 1 at every step h, so the ball
-    # contacts (and the fast mode's ring on them) grow; both are refused by name, in SimulationSettings
-    # and, for settings made otherwise, at the run's first evaluation, before any step is taken
+    # |1 + i w h| > 1 and |1 + i w h - (w h)^2/2| = sqrt(1 + (w h)^4/4) > 1 at every step h, so only the
+    # contacts' damping holds the balls below a step limit: ExplicitEuler is refused by name, ExplicitMidpoint
+    # (body mode) above half the stable-step estimate, in SimulationSettings and, for settings made otherwise,
+    # at the run's first evaluation, before any step is taken
     SC, mbs, m_in, m_out, b = _rotor_scene()
     el = CreateBallBearing(mbs, b, m_in, m_out, initialOmega=500.0, initialLoad=(3000.0, 0.0), stepSize=5e-6,
                            mode=mode)
     mbs.Assemble()
-    for name in ("ExplicitEuler", "ExplicitMidpoint"):
-        with pytest.raises(InputError, match=f"^solverType: {name} .* VelocityVerlet"):
-            el.SimulationSettings(0.001, solverType=name)
-    ss = el.SimulationSettings(0.001)
-    with pytest.raises(InputError, match="^solverType: ExplicitMidpoint"):
-        solve_dynamic(mbs, ss, exu.DynamicSolverType.ExplicitMidpoint)
+    with pytest.raises(InputError, match="^solverType: ExplicitEuler .* VelocityVerlet"):
+        el.SimulationSettings(0.001, solverType="ExplicitEuler")
+    h = el.stable.dt
+    if mode == "bodies":
+        with pytest.raises(InputError, match=f"^stepSize: ExplicitMidpoint .* {0.5 * h:.3g} s, got {0.6 * h:.3g} s"):
+            el.SimulationSettings(0.001, 0.6 * h, solverType="ExplicitMidpoint")
+        el.SimulationSettings(0.001, 0.45 * h, solverType="ExplicitMidpoint")
+        ss, solver, word = el.SimulationSettings(0.001, 0.6 * h), exu.DynamicSolverType.ExplicitMidpoint, "stepSize"
+    else:  # the fast mode integrates only the rings with Exudyn's solver
+        el.SimulationSettings(0.001, solverType="ExplicitMidpoint")
+        ss, solver, word = el.SimulationSettings(0.001), exu.DynamicSolverType.ExplicitEuler, "solverType"
+    with pytest.raises(InputError, match=f"^{word}: Explicit"):
+        solve_dynamic(mbs, ss, solver)
     with pytest.raises(RuntimeError, match="no samples yet"):  # not "ended before its first sample": no step ran
         el.results()
     # the solvers the element is meant for are not refused: RK44 and, in the body mode, GeneralizedAlpha
