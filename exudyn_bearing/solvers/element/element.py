@@ -65,12 +65,15 @@ estimate (InputError naming ``stepSize``; above it the ball loads end
 wrong).
 Implicit solvers work in the body mode with the numerical Jacobian but are
 not recommended (EXUDYN_NOTES: an order of magnitude slower for Hertz
-contact); the fast mode needs an explicit solver (its balls advance at the
-first evaluation of a new time and ignore Newton iterations there):
-``SimulationSettings`` and the first evaluation of a run under an implicit
-solver, or under RK67, ODE23, DOPRI5 or DVERK6 (evaluations back in time
-within a step), raise InputError naming ``mode``, and so does an evaluation back in
-time within a run.
+contact; GeneralizedAlpha and TrapezoidalIndex2 at 5 us end within 0.2 %
+of VelocityVerlet's q_max on the 6208 scene, with about 10 evaluations per
+step). The fast mode needs an explicit solver whose evaluations never go
+back in time (its balls advance at the first evaluation of a new time and
+ignore Newton iterations there): ``SimulationSettings`` and the first
+evaluation of a run under an implicit solver, or under RK67, ODE23, DOPRI5
+or DVERK6 (stage times out of order, rejected adaptive steps), raise
+InputError naming ``mode``, and so does an evaluation back in time within a
+run.
 
 Repeated solves: Exudyn starts every ``mbs.SolveDynamic`` at
 ``startTime`` from the initial state. A run that starts where the
