@@ -65,9 +65,8 @@ estimate (InputError naming ``stepSize``; above it the ball loads end
 wrong).
 Implicit solvers work in the body mode with the numerical Jacobian but are
 not recommended (EXUDYN_NOTES: an order of magnitude slower for Hertz
-contact; GeneralizedAlpha and TrapezoidalIndex2 at 5 us end within 0.2 %
-of VelocityVerlet's q_max on the 6208 scene, with about 10 evaluations per
-step). The fast mode needs an explicit solver whose evaluations never go
+contact: several force evaluations per step, each with the numerical
+Jacobian's; validation/bench_element.py --ga times it). The fast mode needs an explicit solver whose evaluations never go
 back in time (its balls advance at the first evaluation of a new time and
 ignore Newton iterations there): ``SimulationSettings`` and the first
 evaluation of a run under an implicit solver, or under RK67, ODE23, DOPRI5
