@@ -65,7 +65,7 @@ estimate (InputError naming ``stepSize``; above it the ball loads end
 wrong).
 Implicit solvers work in the body mode with the numerical Jacobian but are
 not recommended (EXUDYN_NOTES: an order of magnitude slower for Hertz
-contact: several force evaluations per step, each with the numerical
+contact: several force evaluations per step, plus those of the numerical
 Jacobian's; validation/bench_element.py --ga times it). The fast mode needs an explicit solver whose evaluations never go
 back in time (its balls advance at the first evaluation of a new time and
 ignore Newton iterations there): ``SimulationSettings`` and the first
