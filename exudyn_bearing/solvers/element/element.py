@@ -67,8 +67,9 @@ Implicit solvers work in the body mode with the numerical Jacobian but are
 not recommended (EXUDYN_NOTES: an order of magnitude slower for Hertz
 contact: several force evaluations per step, plus those of the numerical
 Jacobian; validation/bench_element.py --ga times it). The fast mode needs
-an explicit solver whose evaluations never go back in time (its balls advance at the first evaluation of a new time and
-ignore Newton iterations there): ``SimulationSettings`` and the first
+an explicit solver whose evaluations never go back in time (its balls
+advance at the first evaluation of a new time and ignore Newton iterations
+there): ``SimulationSettings`` and the first
 evaluation of a run under an implicit solver, or under RK67, ODE23, DOPRI5
 or DVERK6 (stage times out of order, rejected adaptive steps), raise
 InputError naming ``mode``, and so does an evaluation back in time within a
