@@ -545,3 +545,52 @@ def test_outer_ring_on_a_flexible_housing():
     w = r.window(0.25)
     np.testing.assert_allclose(r.contact("load", "inner")[w].max(axis=1),
                                stribeck_loads(3000.0, r.azimuth()[w]).max(axis=1), rtol=0.01)
+
+
+@pytest.mark.parametrize("mode", ["bodies", "fast"])
+def test_unstable_explicit_solvers_are_refused_before_the_first_step(mode):
+    # ExplicitEuler and ExplicitMidpoint: the amplification factor of an undamped oscillation x'' = -w^2 x is
+    # |1 + i w h| > 1 and |1 + i w h - (w h)^2/2| = sqrt(1 + (w h)^4/4) > 1 at every step h, so only the
+    # contacts' damping holds the balls below a step limit: ExplicitEuler is refused by name, ExplicitMidpoint
+    # (body mode) above half the stable-step estimate, in SimulationSettings and, for settings made otherwise,
+    # at the run's first evaluation, before any step is taken
+    SC, mbs, m_in, m_out, b = _rotor_scene()
+    el = CreateBallBearing(mbs, b, m_in, m_out, initialOmega=500.0, initialLoad=(3000.0, 0.0), stepSize=5e-6,
+                           mode=mode)
+    mbs.Assemble()
+    with pytest.raises(InputError, match="^solverType: ExplicitEuler .* VelocityVerlet"):
+        el.SimulationSettings(0.001, solverType="ExplicitEuler")
+    h = el.stable.dt
+    if mode == "bodies":
+        with pytest.raises(InputError, match=f"^stepSize: ExplicitMidpoint .* {0.5 * h:.3g} s, got {0.6 * h:.3g} s"):
+            el.SimulationSettings(0.001, 0.6 * h, solverType="ExplicitMidpoint")
+        el.SimulationSettings(0.001, 0.45 * h, solverType="ExplicitMidpoint")
+        ss, solver, word = el.SimulationSettings(0.001, 0.6 * h), exu.DynamicSolverType.ExplicitMidpoint, "stepSize"
+    else:  # the fast mode integrates only the rings with Exudyn's solver
+        el.SimulationSettings(0.001, solverType="ExplicitMidpoint")
+        ss, solver, word = el.SimulationSettings(0.001), exu.DynamicSolverType.ExplicitEuler, "solverType"
+    with pytest.raises(InputError, match=f"^{word}: Explicit"):
+        solve_dynamic(mbs, ss, solver)
+    with pytest.raises(RuntimeError, match="no samples yet"):  # not "ended before its first sample": no step ran
+        el.results()
+    # the solvers the element is meant for are not refused: RK44 and, in the body mode, GeneralizedAlpha
+    el.SimulationSettings(0.001, solverType="RK44")
+    if mode == "bodies":
+        el.SimulationSettings(0.001, solverType="GeneralizedAlpha")
+
+
+def test_fast_mode_refuses_solvers_that_evaluate_back_in_time():
+    # RK67's stage times are not in time order (Exudyn evaluates it at 0.276 h after 0.724 h), so its first step
+    # goes back in time, and the adaptive solvers repeat rejected steps from their start; the fast mode's balls
+    # only advance: refused by name before the run, and at its first evaluation
+    SC, mbs, m_in, m_out, b = _rotor_scene()
+    el = CreateBallBearing(mbs, b, m_in, m_out, initialOmega=500.0, initialLoad=(3000.0, 0.0), stepSize=5e-6,
+                           mode="fast")
+    mbs.Assemble()
+    for name in ("RK67", "ODE23", "DOPRI5", "DVERK6"):
+        with pytest.raises(InputError, match=f"^mode: .* not {name}"):
+            el.SimulationSettings(0.001, solverType=name)
+    with pytest.raises(InputError, match="^mode: .* not RK67"):
+        solve_dynamic(mbs, el.SimulationSettings(0.001), exu.DynamicSolverType.RK67)
+    with pytest.raises(RuntimeError, match="no samples yet"):
+        el.results()

@@ -56,6 +56,8 @@ SCRIPTS = [
     ("traction_convergence.py", []),
     ("losses_6208_7208.py", []),
     ("levels_checks.py", []),
+    ("levels_published_vc.py", []),
+    ("levels_work_precision.py", []),
     ("mutation_run.py", ["--quick"]),
     ("profile_reference.py", []),
 ]
@@ -154,6 +156,20 @@ def section_new_checks():
             [("levels/levels_vc.png", "varying-compliance vibration of the quasi-static level: spectrum with the "
                                       "ball-pass frequency and its harmonics."),
              ("levels/levels_rotor.png", "the rotor scenario at the three levels.")], last_lines=40)
+        + section_printed(
+            "Varying compliance against the published theory", "levels_published_vc.py",
+            "The quasi-static level's ball-pass motion against the rigid-ring Hertz theory of Sunnersjo (1978) "
+            "in closed form (docs/theory/varying_compliance.md): the two boundary positions, the orbit over a "
+            "ball passage, the first harmonic against speed, and a short ball-element run.",
+            [("levels/levels_published_vc.png", "ring-centre motion over a ball passage and its first harmonic "
+                                                "against speed, quasi-static level against the closed form.")],
+            last_lines=30)
+        + section_printed(
+            "Work-precision of the bearing levels", "levels_work_precision.py",
+            "Wall time against orbit error of the three levels on a loaded test shaft, against the ball element "
+            "at 1 us; a plateau is the level's model error.",
+            [("levels/levels_work_precision.png", "wall time against orbit error, per level and step.")],
+            last_lines=25)
         + section_printed(
             "Where the reference engine's step time goes", "profile_reference.py",
             "The bench_reference scene (6208, 3000 N, 500 rad/s, cage, lubrication, tangential history) in steady "

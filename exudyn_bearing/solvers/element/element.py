@@ -56,15 +56,24 @@ acceleration and speed as series (VelocityVerlet; ``results().signal(name)``).
 Solvers, both modes: VelocityVerlet (recommended; one force evaluation per
 step, so the Cundall-Strack history is exactly the reference engine's) and
 RK44 with ``friction="regularized"`` (history-free; the fast mode advances
-the balls at RK44's increasing stage times). ExplicitEuler is not usable:
-not symplectic, it drives the stiff contacts unstable (validation/REPORT.md).
+the balls at RK44's increasing stage times). ExplicitEuler is refused
+(InputError naming ``solverType``, in ``SimulationSettings`` and at a run's
+first evaluation): its stability region leaves out the undamped contact
+oscillation, which it holds only at about 1/16 of the stable step.
+ExplicitMidpoint in the body mode takes at most half the stable-step
+estimate (InputError naming ``stepSize``; above it the ball loads end
+wrong).
 Implicit solvers work in the body mode with the numerical Jacobian but are
 not recommended (EXUDYN_NOTES: an order of magnitude slower for Hertz
-contact); the fast mode needs an explicit solver (its balls advance at the
-first evaluation of a new time and ignore Newton iterations there):
-``SimulationSettings`` and the first evaluation of a run under an implicit
-solver raise InputError naming ``mode``, and so does an evaluation back in
-time within a run.
+contact: several force evaluations per step, plus those of the numerical
+Jacobian; validation/bench_element.py --ga times it). The fast mode needs
+an explicit solver whose evaluations never go back in time (its balls
+advance at the first evaluation of a new time and ignore Newton iterations
+there): ``SimulationSettings`` and the first
+evaluation of a run under an implicit solver, or under RK67, ODE23, DOPRI5
+or DVERK6 (stage times out of order, rejected adaptive steps), raise
+InputError naming ``mode``, and so does an evaluation back in time within a
+run.
 
 Repeated solves: Exudyn starts every ``mbs.SolveDynamic`` at
 ``startTime`` from the initial state. A run that starts where the
@@ -107,7 +116,7 @@ from .items import ItemsMixin
 from .markers import RING_REGISTRY, initial_ring_pose, ring_from_marker, ring_mobility
 from .sensors import SensorsMixin
 from .signals import SignalsMixin
-from .userfunctions import IMPLICIT_SOLVERS, UserFunctionsMixin, implicit_solver_error
+from .userfunctions import UserFunctionsMixin, solver_error
 
 __all__ = ["BallBearingElement", "OPTION_NAMES"]
 
@@ -347,13 +356,14 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
         name = solverType if isinstance(solverType, str) else getattr(solverType, "name", str(solverType))
         if not isinstance(getattr(exu.DynamicSolverType, name, None), exu.DynamicSolverType):
             raise InputError(f"solverType: {solverType!r} is not an exudyn.DynamicSolverType")
-        if self.mode == "fast" and name in IMPLICIT_SOLVERS:
-            raise implicit_solver_error(name)
         check_positive("endTime", endTime)
         if stepSize is not None:
             check_positive("stepSize", stepSize)
         ss = exu.SimulationSettings()
         h = float(stepSize or self.scenario.dt * (self.subSteps if self.mode == "fast" else 1))
+        err = solver_error(self.mode, name, h, self.stable.dt)
+        if err is not None:
+            raise err
         if solverType != "VelocityVerlet" and (self._sig is not None
                                                or any(d.race == "ball" for d in self.scenario.defects)):
             raise InputError(f"solverType: signals (signalInterval) and ball defects need VelocityVerlet (one force "
