@@ -286,7 +286,8 @@ def section_element():
                               f"{pct(v['q_max_inner'], 4)} / {pct(v['cage_speed'], 4)}")
                   for k, v in c["solvers_6208"].items())
               + ". VelocityVerlet (history friction) and RK44 (regularized friction) are the supported explicit "
-              "solvers in both modes; ExplicitEuler is not symplectic and unusable for stiff contact.",
+              "solvers in both modes; ExplicitEuler is refused before the first step (not symplectic: unusable for stiff "
+              "contact).",
               "- Where an Exudyn step goes (`python validation/bench_overhead.py`, medians, us per Exudyn step): "
               + "; ".join(f"{k} {v * 1e6:.2f}" for k, v in ov.items() if k.endswith(("alone", "element")))
               + ". Converting Exudyn's coordinate lists to arrays: "
