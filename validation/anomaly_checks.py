@@ -50,7 +50,6 @@ import exudyn_bearing as eb
 from exudyn_bearing.data import load_bearing
 from exudyn_bearing.model.layout import GLOBAL_FIELDS
 from exudyn_bearing.model.stability import stable_step
-from exudyn_bearing.physics.contact_slip import _contact_traction
 from exudyn_bearing.solvers.quasistatic import kinematics as km
 
 HELD = {"tilt_x": 0.0, "tilt_y": 0.0}
@@ -61,19 +60,11 @@ V_REG = eb.Scenario().regularizing_speed
 def contact_inputs(sol, j, floor):
     """Per contact of ball ``j`` (outer, inner): slip inputs and the dissipation [W] with the rolling speed at
     least ``floor`` (the quasi-static kinematics and geometry held)."""
-    g, kin, m = sol.contact_geometry[j], sol.kinematics[j], sol.traction_model
-    c = km.ball_contacts(kin, g, m, sol.n_strips, sol.n_across)
-    rows = []
-    for k, (a, b, q, rd, hc, hm) in enumerate(((g[km.G_AO], g[km.G_BO], g[km.G_QO], g[km.G_RDO], g[km.G_HCO],
-                                                g[km.G_HMO]),
-                                               (g[km.G_AI], g[km.G_BI], g[km.G_QI], g[km.G_RDI], g[km.G_HCI],
-                                                g[km.G_HMI]))):
-        v0, wn, c2, u = c[k, :4]
-        p = _contact_traction(a, b, q, v0, wn, c2, rd, kin[3], max(u, floor), hc, hm, m.code, m.vector,
-                              sol.n_strips, sol.n_across)[3]
-        rows.append({"race": ("outer", "inner")[k], "Q": q, "v0": v0, "w_n": wn, "c2": c2, "u_roll": u, "h_min": hm,
-                     "P": p})
-    return rows
+    g = np.array(sol.contact_geometry[j], float)
+    g[km.G_UMIN] = floor
+    c = km.ball_contacts(sol.kinematics[j], g, sol.traction_model, sol.n_strips, sol.n_across)
+    return [{"race": ("outer", "inner")[k], "Q": g[(km.G_QO, km.G_QI)[k]], "v0": c[k, 0], "w_n": c[k, 1],
+             "c2": c[k, 2], "u_roll": c[k, 3], "h_min": g[(km.G_HMO, km.G_HMI)[k]], "P": c[k, 9]} for k in range(2)]
 
 
 def part_a(dynamic):
