@@ -72,9 +72,9 @@ __all__ = ["CONTROLS", "GEO_FIELDS", "CONTACT_FIELDS", "race_control", "jones_ou
 CONTROLS = ("outer", "inner", "auto", "min-energy", "equilibrium")
 #: Entries of the packed per-ball geometry vector ``geo``.
 GEO_FIELDS = ("omega_o", "omega_i", "c_r", "c_z", "no_r", "no_z", "ni_r", "ni_z", "r_b", "rd_o", "rd_i",
-              "a_o", "b_o", "q_o", "a_i", "b_i", "q_i", "hc_o", "hm_o", "hc_i", "hm_i")
+              "a_o", "b_o", "q_o", "a_i", "b_i", "q_i", "hc_o", "hm_o", "hc_i", "hm_i", "u_min")
 (G_WO, G_WI, G_CR, G_CZ, G_NOR, G_NOZ, G_NIR, G_NIZ, G_RB, G_RDO, G_RDI, G_AO, G_BO, G_QO, G_AI, G_BI, G_QI,
- G_HCO, G_HMO, G_HCI, G_HMI) = range(len(GEO_FIELDS))
+ G_HCO, G_HMO, G_HCI, G_HMI, G_UMIN) = range(len(GEO_FIELDS))
 #: Per-contact results of :func:`ball_contacts` (row 0 outer, row 1 inner).
 CONTACT_FIELDS = ("v0", "w_n", "c2", "u", "spin", "roll", "f_x", "f_y", "m_z", "dissipation", "qv", "m_y")
 NC = len(CONTACT_FIELDS)
@@ -99,7 +99,9 @@ def _slip_inputs(w_r, w_z, omega_m, omega_ring, cr, nr, nz, rb, rd):
 def _ball_contacts(omega_m, w_r, w_z, v_t, geo, code, params, n_strips, n_across, out):
     """Slip and traction of both contacts of one ball; rows of ``out`` (2, NC):
     outer, inner. ``v_t``: transverse slip at both contact centres from the
-    ball's yaw (pivoting) w_psi, v_t = R_b w_psi. Returns the total dissipation [W]."""
+    ball's yaw (pivoting) w_psi, v_t = R_b w_psi. The traction law sees the rolling speed u, at least
+    ``geo[G_UMIN]`` (0: none; the dynamic engines' ``regularizing_speed`` to reproduce their least rolling
+    speed); ``out`` reports u itself. Returns the total dissipation [W]."""
     total = 0.0
     for k in range(2):
         if k == 0:
@@ -109,8 +111,8 @@ def _ball_contacts(omega_m, w_r, w_z, v_t, geo, code, params, n_strips, n_across
             wring, nr, nz, rd, a, b, q, hc, hm = (geo[G_WI], geo[G_NIR], geo[G_NIZ], geo[G_RDI], geo[G_AI],
                                                   geo[G_BI], geo[G_QI], geo[G_HCI], geo[G_HMI])
         v0, wn, c2, u, spin, roll = _slip_inputs(w_r, w_z, omega_m, wring, geo[G_CR], nr, nz, geo[G_RB], rd)
-        fx, fy, mz, p, qv, my = _contact_traction(a, b, q, v0, wn, c2, rd, v_t, u, hc, hm, code, params, n_strips,
-                                                  n_across)
+        fx, fy, mz, p, qv, my = _contact_traction(a, b, q, v0, wn, c2, rd, v_t, max(u, geo[G_UMIN]), hc, hm, code,
+                                                  params, n_strips, n_across)
         out[k, 0] = v0
         out[k, 1] = wn
         out[k, 2] = c2

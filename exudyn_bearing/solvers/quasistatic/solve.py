@@ -121,8 +121,8 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
                       control="auto", traction=None, lubricant: Lubricant | str | None = None,
                       ring_growth=True, fit=0.0, temperatures=None, fixed=None, hertz_method="exact",
                       phase=0.0, n_strips=DEFAULT_N_STRIPS, n_across=DEFAULT_N_ACROSS,
-                      traction_regularizing_srr=DEFAULT_REGULARIZING_SRR, shoulder_angle=MAX_FREE_CONTACT_ANGLE,
-                      stiffness=True, start=None) -> QuasiStaticSolution:
+                      traction_regularizing_srr=DEFAULT_REGULARIZING_SRR, rolling_speed_floor=0.0,
+                      shoulder_angle=MAX_FREE_CONTACT_ANGLE, stiffness=True, start=None) -> QuasiStaticSolution:
     """Quasi-static equilibrium of a ball bearing with free inner-ring DOFs, speed effects and kinematics.
 
     Parameters
@@ -167,6 +167,15 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
         its own regularisation rises linearly (as in the dynamic engines:
         :data:`~exudyn_bearing.data.traction.DEFAULT_REGULARIZING_SRR`; 0
         keeps it discontinuous).
+    rolling_speed_floor : float
+        Least rolling speed [m/s] of the slide-to-roll ratio the traction
+        law sees (default 0: the rolling speed itself). The dynamic engines'
+        ellipse level takes at least their ``Scenario.regularizing_speed``
+        (0.1 m/s; ``model.contact._ellipse_traction``): pass it here to
+        reproduce them where the rolling speeds lie below it (at low ring
+        speed, e.g. 0.015 m/s for the 6208 at 1 rad/s), where that floor
+        lowers the traction and the dissipation
+        (``python validation/anomaly_checks.py``).
     shoulder_angle : float
         Largest angle from the groove bottom that a contact ellipse may reach [rad].
     stiffness : bool
@@ -198,6 +207,7 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
     if control not in km.CONTROLS:
         raise InputError(f"control: must be one of {', '.join(km.CONTROLS)}, got {control!r}")
     srr = check_finite("traction_regularizing_srr", traction_regularizing_srr)
+    u_min = check_nonnegative("rolling_speed_floor", rolling_speed_floor)
     if not 0.0 <= srr <= 1.0:
         raise InputError(f"traction_regularizing_srr: must lie in [0, 1], got {srr:g}")
     # None: the bearing's traction model (catalogue), else the DEM papers'; Coulomb-type laws regularised
@@ -314,7 +324,7 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
             new = kin.copy()
             geo = np.zeros((z, len(km.GEO_FIELDS)))
             for j in range(z):
-                geo[j] = _geo_vector(w_o, w_i, balls[j], geom, rd_o, rd_i, cs, j, kin[j], lub, e_prime)
+                geo[j] = _geo_vector(w_o, w_i, balls[j], geom, rd_o, rd_i, cs, j, kin[j], lub, e_prime, u_min)
                 loaded = balls[j, B_QO] > 0.0 and balls[j, B_QI] > 0.0
                 race = control if control in ("outer", "inner") else (
                     "outer" if (not loaded or km.jones_outer_controls(geo[j])) else "inner")
@@ -416,9 +426,11 @@ def _carry_by_cage(kin, controls, geo):
         kin[j] = km.cage_kinematics(geo[j], omega_cage)
 
 
-def _geo_vector(w_o, w_i, ball, geom, rd_o, rd_i, cs, j, kin, lub, e_prime):
-    """Packed per-ball geometry for :mod:`.kinematics` (films at the current rolling speeds)."""
+def _geo_vector(w_o, w_i, ball, geom, rd_o, rd_i, cs, j, kin, lub, e_prime, u_min=0.0):
+    """Packed per-ball geometry for :mod:`.kinematics` (films at the current rolling speeds; ``u_min`` the
+    least rolling speed of the traction law)."""
     g = np.zeros(len(km.GEO_FIELDS))
+    g[km.G_UMIN] = u_min
     g[km.G_WO], g[km.G_WI] = w_o, w_i
     g[km.G_CR], g[km.G_CZ] = ball[B_CR], ball[B_CZ]
     g[km.G_NOR], g[km.G_NOZ], g[km.G_NIR], g[km.G_NIZ] = ball[B_NOR], ball[B_NOZ], ball[B_NIR], ball[B_NIZ]
