@@ -1,9 +1,11 @@
 """Two results of the validation explained by measurement.
 
 A. 6208, F_r = 3000 N, 1 rad/s (validation/consistency_matrix.py): the
-   dynamic engines dissipate about a fifth of the quasi-static traction
-   equilibrium, while they agree within 1 % at 500 rad/s. Cause: the dynamic
-   ellipse level hands the traction law a rolling speed of at least
+   dynamic engines dissipated about a fifth of the quasi-static traction
+   equilibrium, while they agreed within 1 % at 500 rad/s. Cause (fixed since:
+   the floor is now at most half the kinematic inner rolling speed,
+   ``model.stability.ellipse_rolling_floor``): the dynamic ellipse level
+   handed the traction law a rolling speed of at least
    ``Scenario.regularizing_speed`` (0.1 m/s, ``model.contact._ellipse_traction``);
    at 1 rad/s the rolling speeds are 0.0145 m/s, so the engines' slide-to-roll
    ratios are 7 times too small, most of the contact lies in the linear
@@ -15,8 +17,7 @@ A. 6208, F_r = 3000 N, 1 rad/s (validation/consistency_matrix.py): the
    engines' regularising speed, against the engines' dissipation; (3) with
    ``--dynamic``: the reference engine's dissipation per quarter of a run
    twice as long as the matrix's (steady?), and a run with a regularising speed
-   below the rolling speed (the engines then dissipate as the quasi-static
-   solver).
+   below the rolling speed, each with the floor the kernel now takes.
 
 B. 7208 under F_a = 1000 N at 1700 rad/s (validation/losses_6208_7208.py):
    orbital speed 0.51 omega, above (1 - gamma cos alpha) / 2. Cause: a real
@@ -49,7 +50,7 @@ import numpy as np
 import exudyn_bearing as eb
 from exudyn_bearing.data import load_bearing
 from exudyn_bearing.model.layout import GLOBAL_FIELDS
-from exudyn_bearing.model.stability import stable_step
+from exudyn_bearing.model.stability import ellipse_rolling_floor, stable_step
 from exudyn_bearing.solvers.quasistatic import kinematics as km
 
 HELD = {"tilt_x": 0.0, "tilt_y": 0.0}
@@ -103,7 +104,8 @@ def part_a(dynamic):
             fp = g[:, GLOBAL_FIELDS.index("friction_power")]
             dp = g[:, GLOBAL_FIELDS.index("damping_power")]
             n = len(t)
-            print(f"  reference engine, 1 rad/s, regularizing_speed {vreg:g} m/s, {t_end * 1e3:g} ms, dt {sc.dt:.3g} s "
+            print(f"  reference engine, 1 rad/s, regularizing_speed {vreg:g} m/s (kernel floor "
+                  f"{ellipse_rolling_floor(b, sc):.3g} m/s), {t_end * 1e3:g} ms, dt {sc.dt:.3g} s "
                   f"({time.perf_counter() - t0:.0f} s wall): mean friction power per quarter of the run")
             for q in range(4):
                 s = slice(q * n // 4, (q + 1) * n // 4)

@@ -17,6 +17,7 @@ from . import layout as L
 from .initial_state import ring_mass_estimate
 from .operating_geometry import operating_geometry
 from .scenario import FRICTION_MODELS, Scenario
+from .stability import ellipse_rolling_floor
 
 __all__ = ["scene_parameters", "fill_defects", "traction_vector", "dynamic_traction_model"]
 
@@ -59,7 +60,8 @@ def scene_parameters(bearing: BallBearing, scenario: Scenario, lubricant: Lubric
     p[L.P_LUB] = 1.0 if s.lubrication else 0.0
     p[L.P_MU_DRY] = s.mu_dry
     p[L.P_FRIC] = FRICTION_MODELS.index(s.friction)
-    p[L.P_VREG] = s.regularizing_speed
+    # the ellipse level's least rolling speed; the point level's regularised-Coulomb slip speed
+    p[L.P_VREG] = ellipse_rolling_floor(b, s) if s.traction_level == "ellipse" else s.regularizing_speed
     p[L.P_KT_RATIO] = s.tangential_stiffness_ratio
     p[L.P_CAGE] = 1.0 if cage else 0.0
     p[L.P_FR] = s.Fr

@@ -67,7 +67,11 @@ class Scenario:
     friction : {"history", "regularized", "none"}
         Tangential force model (docs/theory/tangential.md).
     regularizing_speed : float
-        Slip speed [m/s] below which regularised friction is linear.
+        Slip speed [m/s] below which regularised friction is linear; at the
+        ellipse traction level, the least rolling speed of the slide-to-roll
+        ratios (start-up from rest), at most half the kinematic inner
+        rolling speed at ``omega``
+        (:func:`~exudyn_bearing.model.stability.ellipse_rolling_floor`).
     tangential_stiffness_ratio : float
         K_t / K_n of the Cundall-Strack spring, in [2/3, 1].
     tangential : {"explicit", "implicit"}

@@ -240,13 +240,30 @@ def stable_step(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant |
     return StableStep(STABILITY_SAFETY * parts[name], dt_n, dt_t, dt_f, dt_c, name, load_c, basis)
 
 
+#: Least rolling speed of the ellipse traction law as a fraction of the kinematic inner rolling speed at the
+#: scenario's speed: a steady run, whose loaded contacts roll at about that speed, keeps its slide-to-roll ratios.
+ELLIPSE_ROLLING_FLOOR_FRACTION = 0.5
+
+
+def ellipse_rolling_floor(bearing: BallBearing, scenario: Scenario) -> float:
+    """Least rolling speed [m/s] the ellipse-level traction law sees (kernel ``P_VREG``,
+    ``model.contact._ellipse_traction``): the scenario's ``regularizing_speed`` (start-up from rest), at
+    most ``ELLIPSE_ROLLING_FLOOR_FRACTION`` times the kinematic inner rolling speed at its ``omega``. A
+    floor above the rolling speed shrinks the slide-to-roll ratios: the 6208 at 1 rad/s rolls at 0.0145
+    m/s, and 0.1 m/s lowered its dissipation five-fold (validation/anomaly_checks.py)."""
+    b = bearing
+    u_i, _u_o = kinematics.rolling_speeds(scenario.omega, 0.0, b.ball_radius, b.pitch_radius, b.free_contact_angle)
+    u = ELLIPSE_ROLLING_FLOOR_FRACTION * abs(float(u_i))
+    return min(scenario.regularizing_speed, u) if u > 0.0 else scenario.regularizing_speed
+
+
 def ellipse_traction_damping(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant, load: float) -> float:
     """Viscous coefficient [N s/m] of the ellipse-level traction of a ball on
     both races for a small uniform slip: c = 2 Q mu'(0) / u, the traction
     slope mu'(0) taken as the secant mu(s)/s at s = 1e-3 of the scenario's
     (regularised) traction model at the inner contact (pressure p_max, Hamrock
     & Dowson films at the kinematic rolling speed u, at least the
-    ``regularizing_speed`` the kernel uses as the least rolling speed). The
+    :func:`ellipse_rolling_floor` the kernel uses as the least rolling speed). The
     explicit step must stay below 2 m_t / c (velocity Verlet), m_t the
     sphere's tangential mass."""
     from ..physics import ehl
@@ -257,7 +274,7 @@ def ellipse_traction_damping(bearing: BallBearing, scenario: Scenario, lubricant
     b = bearing
     a0 = b.free_contact_angle
     u_i, _u_o = kinematics.rolling_speeds(scenario.omega, 0.0, b.ball_radius, b.pitch_radius, a0)
-    u = max(float(u_i), scenario.regularizing_speed)
+    u = max(float(u_i), ellipse_rolling_floor(b, scenario))
     em = material_reduced_modulus(b.material)
     rx, ry = raceway_radii(b.ball_radius, b.inner_groove_radius, b.pitch_radius - b.ball_radius * math.cos(a0), a0,
                            True)

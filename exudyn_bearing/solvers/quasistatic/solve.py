@@ -170,12 +170,15 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
     rolling_speed_floor : float
         Least rolling speed [m/s] of the slide-to-roll ratio the traction
         law sees (default 0: the rolling speed itself). The dynamic engines'
-        ellipse level takes at least their ``Scenario.regularizing_speed``
-        (0.1 m/s; ``model.contact._ellipse_traction``): pass it here to
-        reproduce them where the rolling speeds lie below it (at low ring
-        speed, e.g. 0.015 m/s for the 6208 at 1 rad/s), where that floor
-        lowers the traction and the dissipation
-        (``python validation/anomaly_checks.py``).
+        ellipse level takes at least
+        ``model.stability.ellipse_rolling_floor`` (their
+        ``Scenario.regularizing_speed``, 0.1 m/s, but at most half the
+        kinematic inner rolling speed, so that a steady run keeps its
+        slide-to-roll ratios): pass a floor here to compare with a run that
+        kept a larger one (a floor above the rolling speeds lowers the
+        traction and the dissipation: the 6208 at 1 rad/s rolls at
+        0.015 m/s, and 0.1 m/s cut its dissipation five-fold,
+        ``python validation/anomaly_checks.py``).
     shoulder_angle : float
         Largest angle from the groove bottom that a contact ellipse may reach [rad].
     stiffness : bool
