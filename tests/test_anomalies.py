@@ -53,3 +53,21 @@ def test_outer_race_control_orbital_speed_closed_form():
     assert b["orbital_speed"][0] / w == pytest.approx(1.0 / (1.0 + k), rel=1e-9)
     assert ai - ao > math.radians(30.0)
     assert b["orbital_speed"][0] / w > 0.5 > (1 - g * math.cos(ai)) / 2
+
+
+def test_ellipse_rolling_floor_stays_below_the_rolling_speed():
+    # the engines' least rolling speed at the ellipse level: the scenario's regularizing_speed, but at most half
+    # the kinematic inner rolling speed u_i = (omega - omega_c) (r_p - R_b cos a) with omega_c = omega (1 - g)/2,
+    # g = R_b cos a / r_p (radial 6208: a = 0), so a steady run keeps its slide-to-roll ratios
+    from exudyn_bearing.data import load_bearing
+    from exudyn_bearing.model.stability import ellipse_rolling_floor
+
+    b = load_bearing("6208")
+    g = b.ball_radius / b.pitch_radius
+    for omega, expected in ((1.0, None), (500.0, 0.1)):
+        u_i = (omega - omega * (1 - g) / 2) * (b.pitch_radius - b.ball_radius)
+        floor = ellipse_rolling_floor(b, eb.Scenario(Fr=3000.0, omega=omega, traction_level="ellipse"))
+        assert floor == pytest.approx(expected if expected is not None else 0.5 * u_i, rel=1e-12)
+        assert floor <= 0.5 * u_i
+    # at rest the floor is the regularising speed (start-up from rest)
+    assert ellipse_rolling_floor(b, eb.Scenario(Fr=3000.0, omega=0.0)) == 0.1
