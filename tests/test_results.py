@@ -115,7 +115,8 @@ def test_run_plot_masks_unloaded_balls_and_keeps_legends_off_the_data(steady, tm
     original = plotting.save_figure
 
     def keep(fig, png, *args, **kw):
-        fig.canvas.draw()
+        # no draw of its own: the save draws the figure, and the extents below are the same after it
+        # (an extra draw before the save gave the same legend and axes extents, and cost a second draw)
         figs.append(fig)
         return original(fig, png, *args, **kw)
 

@@ -136,8 +136,11 @@ def test_sweep_interrupted_is_a_keyboard_interrupt_and_the_handler_is_restored(t
 
 
 def test_dask_local_cluster(tmp_path):
+    # one worker process: the cases still cross a process boundary (pickled out, records back, files
+    # written by the worker), which is what a Dask cluster adds; a second worker only doubled the
+    # start-up (each spawned worker imports distributed and the package, several seconds of CPU)
     distributed = pytest.importorskip("distributed")
-    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cl, \
+    with distributed.LocalCluster(n_workers=1, threads_per_worker=1, processes=True, dashboard_address=None) as cl, \
             distributed.Client(cl) as client:
         cases = _cases()
         cases["bad"] = _case(1000.0, dt=-1.0)

@@ -234,7 +234,10 @@ def test_a_signal_to_the_parent_stops_the_workers(tmp_path, sig):
         proc.send_signal(sig)
         rc = proc.wait(60)
         assert rc == 43  # SweepInterrupted for both (a KeyboardInterrupt)
-        time.sleep(0.5)
+        # none alive 0.5 s after the parent's exit (polled: a worker that has ended stays ended)
+        deadline = time.monotonic() + 0.5
+        while any(_alive(p) for p in workers) and time.monotonic() < deadline:
+            time.sleep(0.05)
         assert [p for p in workers if _alive(p)] == []
         index = json.loads((tmp_path / "index.json").read_text())
         assert index["counts"]["pending"] == 6
