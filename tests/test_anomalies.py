@@ -60,7 +60,7 @@ def test_ellipse_rolling_floor_stays_below_the_rolling_speed():
     # the kinematic inner rolling speed u_i = (omega - omega_c) (r_p - R_b cos a) with omega_c = omega (1 - g)/2,
     # g = R_b cos a / r_p (radial 6208: a = 0), so a steady run keeps its slide-to-roll ratios
     from exudyn_bearing.data import load_bearing
-    from exudyn_bearing.model.stability import ellipse_rolling_floor
+    from exudyn_bearing.model.scenario import ellipse_rolling_floor
 
     b = load_bearing("6208")
     g = b.ball_radius / b.pitch_radius

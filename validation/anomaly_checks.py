@@ -4,7 +4,7 @@ A. 6208, F_r = 3000 N, 1 rad/s (validation/consistency_matrix.py): the
    dynamic engines dissipated about a fifth of the quasi-static traction
    equilibrium, while they agreed within 1 % at 500 rad/s. Cause (fixed since:
    the floor is now at most half the kinematic inner rolling speed,
-   ``model.stability.ellipse_rolling_floor``): the dynamic ellipse level
+   ``model.scenario.ellipse_rolling_floor``): the dynamic ellipse level
    handed the traction law a rolling speed of at least
    ``Scenario.regularizing_speed`` (0.1 m/s, ``model.contact._ellipse_traction``);
    at 1 rad/s the rolling speeds are 0.0145 m/s, so the engines' slide-to-roll
@@ -50,7 +50,8 @@ import numpy as np
 import exudyn_bearing as eb
 from exudyn_bearing.data import load_bearing
 from exudyn_bearing.model.layout import GLOBAL_FIELDS
-from exudyn_bearing.model.stability import ellipse_rolling_floor, stable_step
+from exudyn_bearing.model.scenario import ellipse_rolling_floor
+from exudyn_bearing.model.stability import stable_step
 from exudyn_bearing.solvers.quasistatic import kinematics as km
 
 HELD = {"tilt_x": 0.0, "tilt_y": 0.0}

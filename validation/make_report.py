@@ -55,6 +55,9 @@ SCRIPTS = [
     ("consistency_matrix.py", []),
     ("traction_convergence.py", []),
     ("losses_6208_7208.py", []),
+    ("thermal_nasa_d7870.py", []),
+    ("bench_thermal.py", []),
+    ("anomaly_checks.py", []),
     ("levels_checks.py", []),
     ("levels_published_vc.py", []),
     ("levels_work_precision.py", []),
@@ -145,7 +148,8 @@ def section_new_checks():
             "Power loss against SKF's and Palmgren's models", "losses_6208_7208.py",
             "The quasi-static solver's loss components (traction, EHL rolling, hysteresis, drag; "
             "docs/theory/losses.md) for the 6208 (radial) and the 7208 (thrust) against SKF's catalogue friction "
-            "model and Palmgren's M0 + M1, the DEM papers' oil at its one temperature, no oil bath.",
+            "model and Palmgren's M0 + M1 (per term: rolling, sliding, drag and churning, cage), the DEM papers' oil "
+            "at its one temperature, for balls in air and in an oil bath; the dynamic energy check by component.",
             [("losses_6208_7208.png", "friction torque of the project's components, SKF's model and Palmgren's "
                                       "band over speed and load.")], last_lines=30)
         + section_printed(
@@ -170,6 +174,23 @@ def section_new_checks():
             "at 1 us; a plateau is the level's model error.",
             [("levels/levels_work_precision.png", "wall time against orbit error, per level and step.")],
             last_lines=25)
+        + section_printed(
+            "Thermal network: the 120-mm bearing of NASA TN D-7870", "thermal_nasa_d7870.py",
+            "The quasi-static ACBB-120 solved with its lumped thermal network (docs/theory/thermal.md) over speed "
+            "and thrust. Only the report's abstract was available here: the script checks its statements, not its "
+            "measured values, and nothing is calibrated.",
+            [("thermal_nasa_d7870.png", "power loss, outer-ring temperature and operating contact angles against "
+                                        "speed at three thrust loads."),
+             ("thermal_nasa_d7870_components.png", "losses by component and node temperatures against speed.")],
+            last_lines=40)
+        + section_printed(
+            "Speed of the thermal solution", "bench_thermal.py",
+            "One thermal quasi-static solution and a warm-started 20-speed sweep (medians).", last_lines=5)
+        + section_printed(
+            "Two results explained", "anomaly_checks.py",
+            "The 6208's dissipation at 1 rad/s (the engines' least rolling speed, since fixed) and the 7208's "
+            "orbital speed above half the ring speed under outer-race control (a real result, against the closed "
+            "form).", last_lines=40)
         + section_printed(
             "Where the reference engine's step time goes", "profile_reference.py",
             "The bench_reference scene (6208, 3000 N, 500 rad/s, cage, lubrication, tangential history) in steady "

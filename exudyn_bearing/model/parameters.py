@@ -16,8 +16,7 @@ from ..physics.hertz import material_reduced_modulus
 from . import layout as L
 from .initial_state import ring_mass_estimate
 from .operating_geometry import operating_geometry
-from .scenario import FRICTION_MODELS, Scenario
-from .stability import ellipse_rolling_floor
+from .scenario import FRICTION_MODELS, Scenario, ellipse_rolling_floor
 
 __all__ = ["scene_parameters", "fill_defects", "traction_vector", "dynamic_traction_model"]
 

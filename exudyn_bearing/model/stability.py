@@ -19,7 +19,7 @@ from ..physics.friction import sphere_tangential_mass
 from ..physics.hertz import material_reduced_modulus
 from ..physics.load_distribution import race_stiffness
 from .load_range import check_load_range
-from .scenario import Scenario
+from .scenario import Scenario, ellipse_rolling_floor
 
 __all__ = ["ellipse_traction_damping", "SimulationError", "StepSizeWarning", "StableStep", "STABILITY_SAFETY", "START_UP_CAGE_LOAD",
            "STEADY_CAGE_LOAD", "CAGE_BLOW_UP_RATIO", "explicit_step_factor", "expected_cage_load", "stable_step",
@@ -238,23 +238,6 @@ def stable_step(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant |
     parts = {"normal": dt_n, "tangential": dt_t, "friction": dt_f, "cage": dt_c}
     name = min(parts, key=parts.get)
     return StableStep(STABILITY_SAFETY * parts[name], dt_n, dt_t, dt_f, dt_c, name, load_c, basis)
-
-
-#: Least rolling speed of the ellipse traction law as a fraction of the kinematic inner rolling speed at the
-#: scenario's speed: a steady run, whose loaded contacts roll at about that speed, keeps its slide-to-roll ratios.
-ELLIPSE_ROLLING_FLOOR_FRACTION = 0.5
-
-
-def ellipse_rolling_floor(bearing: BallBearing, scenario: Scenario) -> float:
-    """Least rolling speed [m/s] the ellipse-level traction law sees (kernel ``P_VREG``,
-    ``model.contact._ellipse_traction``): the scenario's ``regularizing_speed`` (start-up from rest), at
-    most ``ELLIPSE_ROLLING_FLOOR_FRACTION`` times the kinematic inner rolling speed at its ``omega``. A
-    floor above the rolling speed shrinks the slide-to-roll ratios: the 6208 at 1 rad/s rolls at 0.0145
-    m/s, and 0.1 m/s lowered its dissipation five-fold (validation/anomaly_checks.py)."""
-    b = bearing
-    u_i, _u_o = kinematics.rolling_speeds(scenario.omega, 0.0, b.ball_radius, b.pitch_radius, b.free_contact_angle)
-    u = ELLIPSE_ROLLING_FLOOR_FRACTION * abs(float(u_i))
-    return min(scenario.regularizing_speed, u) if u > 0.0 else scenario.regularizing_speed
 
 
 def ellipse_traction_damping(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant, load: float) -> float:

@@ -171,7 +171,7 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
         Least rolling speed [m/s] of the slide-to-roll ratio the traction
         law sees (default 0: the rolling speed itself). The dynamic engines'
         ellipse level takes at least
-        ``model.stability.ellipse_rolling_floor`` (their
+        ``model.scenario.ellipse_rolling_floor`` (their
         ``Scenario.regularizing_speed``, 0.1 m/s, but at most half the
         kinematic inner rolling speed, so that a steady run keeps its
         slide-to-roll ratios): pass a floor here to compare with a run that
