@@ -63,12 +63,12 @@ from ..physics.damping import (_damping_critical, _damping_fluid, _damping_hyste
 from ..data.traction import N_TRACTION_PARAMS
 from ..physics.contact_slip import _contact_traction
 from ..physics.defects import _spall_drop_k
-from ..physics.ehl import _film_central_hd, _film_thickness
+from ..physics.ehl import _film_central_hd, _film_thickness_ln_g
 from ..physics.traction import EHL as TRACTION_EHL
 from ..physics.friction import (_implicit_tangential_stiffness, _regularized_coulomb, _sphere_tangential_mass,
                                 friction_coefficient)
 from ..physics.geometry import _groove_geometry, _raceway_radii_cos
-from ..physics.hertz import _curvature_sum_radius, _kfe_fast, _semi_axes, _stiffness
+from ..physics.hertz import _curvature_sum_radius, _kfe_fast, _semi_axes, _semi_axes_overlap, _stiffness
 from .layout import (D_POWER, D_ROLL, D_SPIN, D_SPIN_MOMENT, P_GROWTH_I, P_GROWTH_O, P_N_ACROSS, P_N_STRIPS,
                      P_RD_I, P_RD_O, P_TRACTION_CODE, P_TRACTION_LEVEL, P_TRACTION_PARAMS)
 from .layout import (D_A, D_ANGLE, D_B, D_DEFECT, D_FRICTION, D_HMIN, D_LAMBDA, D_LOAD, D_MU, D_OVERLAP, D_PMAX,
@@ -196,10 +196,17 @@ def _lubrication(p, u_r, q_el, rx, kappa, major, c_hyst):
     friction coefficient mu of a contact: the Lambda-switched model of the
     DEM papers (ehl.py, damping.py, friction.py), constant mu_dry and C_hyst
     without lubrication, or the peer power law's own damping and mu."""
+    return _lubrication_ln_g(p, u_r, q_el, rx, kappa, major, c_hyst, math.log(p[P_XI] * p[P_EPRIME]))
+
+
+@kernel(no_runtime=True)
+def _lubrication_ln_g(p, u_r, q_el, rx, kappa, major, c_hyst, ln_g):
+    """:func:`_lubrication` with ``ln_g`` = ln(xi E') given: the kernel
+    computes it once per evaluation (:func:`forces`), not per contact."""
     if p[P_LAW] > 0.5:
         return 0.0, 0.0, 0, p[P_LAW_D], p[P_MU_DRY]
     if p[P_LUB] > 0.5:
-        h = _film_thickness(int(p[P_FILM]), u_r, q_el, rx, kappa, p[P_EPRIME], p[P_ETA], p[P_XI])
+        h = _film_thickness_ln_g(int(p[P_FILM]), u_r, q_el, rx, kappa, p[P_EPRIME], p[P_ETA], ln_g)
         lam = h / p[P_SIGMA]
         regime = lubrication_regime(lam, p[P_L1], p[P_L3])
         if regime == 0:
@@ -409,13 +416,13 @@ def _turn_ball_frame(p, hist, hist_out, dt_hist, wb, j):
 
 
 @kernel(inline="always")
-def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist, hz, fb, tb, fr, diag, want):
+def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist, hz, fb, tb, fr, diag, want, ln_g):
     """Ball j on the inner (race 0, ring 0) or outer (race 1, ring 1) groove.
 
     Adds the contact force and moment to ball j (fb, tb) and the reaction to
     the ring (fr); writes the spring to ``hist_out`` and, with ``want``, the
     diagnostics. Returns (overlap / R_b, frictional power [W], dissipation of
-    the normal damping [W]); zeros when the contact is open."""
+    the normal damping [W]); zeros when the contact is open. ``ln_g`` = ln(xi E')."""
     inner = race == 0
     if inner:
         rho, zg, rc, growth = p[P_RHO_I], p[P_ZG_I], p[P_RCI], p[P_GROWTH_I]
@@ -450,7 +457,10 @@ def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist,
     q_el, k_n, c_hyst = _normal_law(p, delta, kappa, ell_f, ell_e, rr)
     ellipse = p[P_TRACTION_LEVEL] > 0.5
     if want or ellipse or p[P_LUB] > 0.5:
-        major, minor = _semi_axes(kappa, ell_e, rr, p[P_EPRIME], q_el)
+        if p[P_LAW] > 0.5:
+            major, minor = _semi_axes(kappa, ell_e, rr, p[P_EPRIME], q_el)
+        else:  # at the Hertz load q_el of this overlap: the same axes by a square root
+            major, minor = _semi_axes_overlap(kappa, ell_f, ell_e, rr, delta)
     else:
         major = minor = 0.0
     # contact point: middle of the overlap (n points from the groove centre to the
@@ -459,7 +469,7 @@ def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist,
     # as the quasi-static solver's kinematics do (Harris & Kotzalas)
     ddot, sx, sy, sz, slip, u_r, mx, my, mz, lx, ly, lz, px, py, pz = _surface_kinematics(
         rings, race, xb, vb, wb, j, dxw, dyw, dzw, cx, cy, nx, ny, nz, rb if ellipse else rb - 0.5 * delta)
-    h, lam, regime, c_n, mu = _lubrication(p, u_r, q_el, rx, kappa, major, c_hyst)
+    h, lam, regime, c_n, mu = _lubrication_ln_g(p, u_r, q_el, rx, kappa, major, c_hyst, ln_g)
     f_n = q_el + c_n * ddot
     if f_n < 0.0:
         f_n = 0.0
@@ -672,12 +682,13 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb,
     damp_sum = 0.0
     worst = 0.0
     defects = p[P_NDEF] > 0.0
+    ln_g = math.log(p[P_XI] * p[P_EPRIME]) if p[P_LUB] > 0.5 else 0.0  # the film's ln G, a scene constant
     for j in range(z):
         if defects:
             _turn_ball_frame(p, hist, hist_out, dt_hist, wb, j)
         for race in range(2):
             ratio, power, damp = _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist, hz,
-                                               fb, tb, fr, diag, want)
+                                               fb, tb, fr, diag, want, ln_g)
             if ratio > worst or ratio != ratio:  # a NaN state is the worst: the engines stop on it
                 worst = ratio
             power_sum += power
