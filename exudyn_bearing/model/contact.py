@@ -81,7 +81,7 @@ from .layout import (D_A, D_ANGLE, D_B, D_DEFECT, D_FRICTION, D_HMIN, D_LAMBDA, 
                      P_MU_DRY, P_MU_F, P_MZ, P_RB, P_RCI, P_RCO, P_RGUIDE, P_RHO_I, P_RHO_O, P_RP, P_RZ, P_SIGMA,
                      P_VREG, P_XI, P_ZG_I, P_ZG_O)
 
-__all__ = ["forces", "accumulate_energy"]
+__all__ = ["forces", "accumulate_energy", "scene_paths"]
 
 
 @kernel(inline="always")
@@ -416,13 +416,16 @@ def _turn_ball_frame(p, hist, hist_out, dt_hist, wb, j):
 
 
 @kernel(inline="always")
-def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist, hz, fb, tb, fr, diag, want, ln_g):
+def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist, hz, fb, tb, fr, diag, want, ln_g,
+                  defect_path, ellipse_path):
     """Ball j on the inner (race 0, ring 0) or outer (race 1, ring 1) groove.
 
     Adds the contact force and moment to ball j (fb, tb) and the reaction to
     the ring (fr); writes the spring to ``hist_out`` and, with ``want``, the
     diagnostics. Returns (overlap / R_b, frictional power [W], dissipation of
-    the normal damping [W]); zeros when the contact is open. ``ln_g`` = ln(xi E')."""
+    the normal damping [W]); zeros when the contact is open. ``ln_g`` = ln(xi E');
+    ``defect_path``, ``ellipse_path``: None compiles the contact without the
+    defect drop or the ellipse traction (:func:`forces`)."""
     inner = race == 0
     if inner:
         rho, zg, rc, growth = p[P_RHO_I], p[P_ZG_I], p[P_RCI], p[P_GROWTH_I]
@@ -436,10 +439,11 @@ def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist,
     dxw, dyw, dzw, cx, cy, cz, rotated = _ring_frame(rings, race, xb[j, 0], xb[j, 1], xb[j, 2])
     delta, nlx, nly, nlz, ca, sa, r_contact = _groove_geometry(cx, cy, cz, rho, zg, rc, rb, inner)
     drop = 0.0
-    if p[P_NDEF] > 0.0 and delta > 0.0:
-        drop = _defect_drop(p, hist_out, rings, j, race, rotated, cx, cy, nlx, nly, nlz, ca, sa, r_contact, rb, rc,
-                            inner)
-        delta -= drop
+    if defect_path is not None:  # pruned at compile time when None
+        if p[P_NDEF] > 0.0 and delta > 0.0:
+            drop = _defect_drop(p, hist_out, rings, j, race, rotated, cx, cy, nlx, nly, nlz, ca, sa, r_contact, rb,
+                                rc, inner)
+            delta -= drop
     if delta <= 0.0:
         _open_contact(hist_out, diag, j, race, delta, ca, sa, drop, want)
         return 0.0, 0.0, 0.0
@@ -480,8 +484,12 @@ def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist,
             a_ax, b_ax = major, minor
         else:
             a_ax, b_ax = minor, major
-        ftx, fty, ftz, m_z, m_y, power = _ellipse_traction(p, rx, kappa, a_ax, b_ax, f_n, sx, sy, sz, mx, my, mz,
-                                                           h, spin, roll, inner, exx, exy, exz, eyx, eyy, eyz)
+        if ellipse_path is not None:  # pruned at compile time when None (forces never gets here then)
+            ftx, fty, ftz, m_z, m_y, power = _ellipse_traction(p, rx, kappa, a_ax, b_ax, f_n, sx, sy, sz, mx, my,
+                                                               mz, h, spin, roll, inner, exx, exy, exz, eyx, eyy,
+                                                               eyz)
+        else:
+            ftx = fty = ftz = m_z = m_y = power = 0.0
         # the spin moment m_z about e_z = -n and the curvature moment m_y about
         # e_y: on the ball, and their reaction on the ring
         mvx = m_y * eyx - m_z * nx
@@ -668,11 +676,19 @@ def _global_diagnostics(rings, fr, power, worst, glob):
 
 @kernel(no_runtime=True)
 def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb, tb, fc, fr, glob, diag,
-           cage_load, want):
+           cage_load, want, defect_path=True, ellipse_path=True):
     """All contact forces of the bearing (one call; inputs and outputs in the
     module docstring). ``hist_out`` may be ``hist`` (every evaluation a
     committed step, as in the reference engine). Returns the largest
-    overlap / R_b of the ball / raceway contacts."""
+    overlap / R_b of the ball / raceway contacts.
+
+    ``defect_path`` and ``ellipse_path`` choose what is compiled: None leaves
+    the defect code (:func:`_defect_drop`, :func:`_turn_ball_frame`) or the
+    ellipse traction (:func:`_ellipse_traction` and the traction models) out
+    of this specialisation (numba prunes the branches on ``is None`` before
+    typing), which shortens a cold start of a scene without them
+    (:func:`scene_paths`); the defaults compile both. A scene that needs a
+    path left out returns NaN (the engines stop on a non-finite state)."""
     z = xb.shape[0]
     fb[:, :] = 0.0
     tb[:, :] = 0.0
@@ -682,13 +698,20 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb,
     damp_sum = 0.0
     worst = 0.0
     defects = p[P_NDEF] > 0.0
+    if defect_path is None:
+        if defects:
+            return np.nan  # compiled without the defect code
+    if ellipse_path is None:
+        if p[P_TRACTION_LEVEL] > 0.5:
+            return np.nan  # compiled without the ellipse traction
     ln_g = math.log(p[P_XI] * p[P_EPRIME]) if p[P_LUB] > 0.5 else 0.0  # the film's ln G, a scene constant
     for j in range(z):
-        if defects:
-            _turn_ball_frame(p, hist, hist_out, dt_hist, wb, j)
+        if defect_path is not None:
+            if defects:
+                _turn_ball_frame(p, hist, hist_out, dt_hist, wb, j)
         for race in range(2):
             ratio, power, damp = _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist, hz,
-                                               fb, tb, fr, diag, want, ln_g)
+                                               fb, tb, fr, diag, want, ln_g, defect_path, ellipse_path)
             if ratio > worst or ratio != ratio:  # a NaN state is the worst: the engines stop on it
                 worst = ratio
             power_sum += power
@@ -728,6 +751,13 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb,
         _global_diagnostics(rings, fr, power_sum, worst, glob)
         glob[G_KINETIC] = _kinetic_energy(p, vb, wb, vc)
     return worst
+
+
+def scene_paths(p):
+    """(defect_path, ellipse_path) of :func:`forces` for the parameter vector
+    ``p`` of a scene: True where the scene uses the path, None where it does
+    not (that code is then not compiled)."""
+    return (True if p[P_NDEF] > 0.0 else None), (True if p[P_TRACTION_LEVEL] > 0.5 else None)
 
 
 @kernel(inline="always")
