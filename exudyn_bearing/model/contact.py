@@ -84,8 +84,11 @@ from .layout import (D_A, D_ANGLE, D_B, D_DEFECT, D_FRICTION, D_HMIN, D_LAMBDA, 
 __all__ = ["forces", "accumulate_energy", "scene_paths"]
 
 
-@kernel(inline="always")
+@kernel
 def _cross(a0, a1, a2, b0, b1, b2):
+    """a x b of two vectors given by their components. Called, not inlined by
+    numba (LLVM inlines it): numba's inlining of its many call sites cost
+    about 5 s of the cold start's compilation (``profile_reference.py --compile``)."""
     return a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0
 
 
