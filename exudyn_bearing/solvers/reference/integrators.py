@@ -32,15 +32,16 @@ __all__ = ["run_verlet", "run_rk4", "evaluate"]
 
 
 @kernel
-def _set_inner_ring(t, p, ring, rings):
+def _set_inner_ring(t, p, ring, rings, defect_path):
     """Reference engine: the inner ring translates (state ``ring``: position,
     velocity) and spins at the protocol speed; the outer ring stays fixed.
     Its rotation matrix stays the identity; with defects in the scene its
-    spin angle (the protocol's integral) goes to ``R_ANGLE``."""
+    spin angle (the protocol's integral) goes to ``R_ANGLE`` (compiled only
+    with a ``defect_path``, :func:`~exudyn_bearing.model.contact.forces`)."""
     for d in range(6):
         rings[0, d] = ring[d]
     rings[0, 17] = omega_profile(t, p[P_W_MAX], p[P_T_UP], p[P_T_STEADY], p[P_T_DOWN])
-    if p[P_NDEF] > 0.0:
+    if defect_path is not None and p[P_NDEF] > 0.0:
         rings[0, R_ANGLE] = spin_angle(t, p[P_W_MAX], p[P_T_UP], p[P_T_STEADY], p[P_T_DOWN])
 
 
@@ -57,7 +58,7 @@ def evaluate(t, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc,
               glob, diag, cage_load, want, defect_path=True, ellipse_path=True):
     """Reference-engine force evaluation at time t (see :func:`_set_inner_ring`;
     the paths as in :func:`~exudyn_bearing.model.contact.forces`)."""
-    _set_inner_ring(t, p, ring, rings)
+    _set_inner_ring(t, p, ring, rings, defect_path)
     worst = forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist, p[P_DT], hz, fb, tb, fc, fr, glob, diag,
                    cage_load, want, defect_path, ellipse_path)
     _inner_ring_force(p, fr, fring)
@@ -108,6 +109,17 @@ def _signal_step(k_step, t, p, rings, fr, fring, sig_every, sig_acc, s_sig):
             sig_acc[c] = 0.0
 
 
+@kernel(no_runtime=True)
+def _finite(a):
+    """True when every entry of the 2-D array ``a`` is finite (a loop: numba's
+    np.all(np.isfinite(...)) compiled for about 0.6 s of a cold start)."""
+    for i in range(a.shape[0]):
+        for k in range(a.shape[1]):
+            if not math.isfinite(a[i, k]):
+                return False
+    return True
+
+
 @kernel
 def run_verlet(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring,
                sample_every, step0, s_t, s_glob, s_diag, s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring,
@@ -148,7 +160,7 @@ def run_verlet(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb
         want = (step0 + step + 1) % sample_every == 0 and n_samp < s_t.shape[0]
         # the three calls of _evaluate, inlined in this hottest loop (the
         # extra array-passing call measured a few per cent slower)
-        _set_inner_ring(t, p, ring, rings)
+        _set_inner_ring(t, p, ring, rings, defect_path)
         worst = forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist, dt, hz, fb, tb, fc, fr, glob, diag,
                        cage_load, want, defect_path, ellipse_path)
         _inner_ring_force(p, fr, fring)
@@ -167,11 +179,11 @@ def run_verlet(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb
             _store(n_samp, t, glob, diag, cage_load, xb, vb, wb, xc, vc, ring,
                    s_t, s_glob, s_diag, s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring)
             n_samp += 1
-            if not (np.all(np.isfinite(xb)) and np.all(np.isfinite(vb)) and np.all(np.isfinite(ring))):
+            if not (_finite(xb) and _finite(vb) and _finite(ring.reshape((1, ring.shape[0])))):
                 return step + 1, n_samp, 1
         if worst > p[P_MAX_OVERLAP] or not math.isfinite(worst):
             return step + 1, n_samp, 2
-    if not (np.all(np.isfinite(xb)) and np.all(np.isfinite(vb)) and np.all(np.isfinite(wb))):
+    if not (_finite(xb) and _finite(vb) and _finite(wb)):
         return n_steps, n_samp, 1
     return n_steps, n_samp, 0
 
@@ -281,6 +293,6 @@ def run_rk4(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, f
             _store(n_samp, t + dt, glob, diag, cage_load, xb, vb, wb, xc, vc, ring,
                    s_t, s_glob, s_diag, s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring)
             n_samp += 1
-        if not (np.all(np.isfinite(xb)) and np.all(np.isfinite(vb)) and np.all(np.isfinite(ring))):
+        if not (_finite(xb) and _finite(vb) and _finite(ring.reshape((1, ring.shape[0])))):
             return step + 1, n_samp, 1
     return n_steps, n_samp, 0
