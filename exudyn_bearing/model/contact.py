@@ -8,12 +8,17 @@ calls in the hot loop (it allocates nothing and is compiled without numba's
 memory runtime, so that the inlined array arguments carry no reference
 counting: ``exudyn_bearing._jit.kernel``). Functions that take arrays and
 run for every contact are inlined; the ones that take scalars
-(:func:`_normal_law`, :func:`_lubrication`) or run only in some scenes or
-on sampled steps (defects, the ellipse level, the diagnostics) are called:
-numba's inlining of them made the kernel's compilation take about 19 s of
-CPU time on every cold start, about 9 s without it, at an unchanged step
-time and bitwise unchanged results (``validation/profile_reference.py
---compile``):
+(:func:`_normal_law`, :func:`_lubrication`, :func:`_cross`; LLVM inlines
+the small ones) or run only in some scenes or on sampled steps (defects,
+the ellipse level, the diagnostics) are called: numba's inlining of them
+made the kernel's compilation take about 19 s of CPU time on every cold
+start, about 9 s without it, at an unchanged step time and bitwise
+unchanged results (``validation/profile_reference.py --compile``). The
+defect and ellipse-traction code is compiled only into the
+specialisations of :func:`forces` that ask for it (``defect_path``,
+``ellipse_path``; :func:`scene_paths`). Constants of the scene that
+every contact would recompute (ln(xi E') of the film) are computed once
+per call:
 
 * :func:`_race_contact`: ball / raceway (elliptic Hertz or the peer power
   law, Lambda-switched damping and friction, Cundall-Strack or regularised
