@@ -53,7 +53,7 @@ from bench_reference import KEYS, SCENE
 from profile_reference import _COLD
 
 HERE = Path(__file__).resolve().parent
-#: main before the step-time work of issue #21 (item 1).
+#: main before this step-time work (the semi-axes by a square root, ln(xi E') once per evaluation).
 BASELINE_REV = "e61f1e5"
 SETTINGS = {"implicit spring, dt 8 us": {"dt": 8e-6, "tangential": "implicit"},
             "explicit spring, dt 5 us": {"dt": 5e-6, "tangential": "explicit"}}
