@@ -32,7 +32,9 @@ The Hertz cache (k, F, E re-evaluated when R_y/R_x moved by more than 1e-6)
 is measured in the running engine: how often it misses per closed contact
 and step (each miss is a table look-up of k, F, E).
 
-The timing kernels are compiled without numba's on-disk cache (a cached
+The kernel and the step are the specialisations the engine runs for this
+scene (:func:`exudyn_bearing.model.contact.scene_paths`: without the defect
+and ellipse-traction code). The timing kernels are compiled without numba's on-disk cache (a cached
 copy would keep the inlined contact functions of an older contact.py).
 All times are medians of ``--repeat`` timings of the thread's CPU time
 (``time.thread_time``: on a shared machine the wall clock also counts the
@@ -60,7 +62,7 @@ import numpy as np
 
 import exudyn_bearing as eb
 from exudyn_bearing._jit import kernel
-from exudyn_bearing.model.contact import accumulate_energy, forces
+from exudyn_bearing.model.contact import accumulate_energy, forces, scene_paths
 from exudyn_bearing.model.layout import (
     D_LOAD,
     FRIC_NONE,
@@ -87,11 +89,11 @@ SETTINGS = {"implicit spring, dt 8 us": {"dt": 8e-6, "tangential": "implicit"},
 
 @kernel(cache=False)
 def _time_forces(reps, p, table, xb, vb, wb, xc, vc, rings, hist, dt, hz, fb, tb, fc, fr, glob, diag, cage_load,
-                 want):
+                 want, defect_path, ellipse_path):
     acc = 0.0
     for _ in range(reps):
         acc += forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist, dt, hz, fb, tb, fc, fr, glob, diag,
-                      cage_load, want)
+                      cage_load, want, defect_path, ellipse_path)
     return acc
 
 
@@ -133,10 +135,11 @@ class Scene:
         self.fring, self.glob = np.zeros(3), np.zeros(NGLOBAL)
         self.fr, self.rings = np.zeros((2, 6)), ring_poses()
         self.diag, self.cage_load = np.zeros((z, 2, NDIAG)), np.zeros((z, 2))
+        self.paths = scene_paths(self.p)  # the specialisation the engine runs (no defect, no ellipse code)
         frames = self.hist[:, H_E1:].copy()
         evaluate(0.0, self.p, self.table, self.xb, self.vb, self.wb, self.xc, self.vc, self.ring, self.rings,
                  self.hist, self.hz, self.fb, self.tb, self.fc, self.fr, self.fring, self.glob, self.diag,
-                 self.cage_load, False)
+                 self.cage_load, False, *self.paths)
         self.hist[:, H_E1:] = frames
         self.t = 0.0
         self.step(round(settle / self.dt))
@@ -149,7 +152,7 @@ class Scene:
         run_verlet(n, self.t, self.p, self.table, self.xb, self.vb, self.wb, self.xc, self.vc, self.ring,
                    self.hist, self.hz, self.fb, self.tb, self.fc, self.fring, sample_every, 0, e, e2,
                    np.zeros((0, z, 2, NDIAG)), np.zeros((0, z, 2)), e3, e3, e3, e3, e3, np.zeros((0, 6)),
-                   0, np.zeros(8), np.zeros((0, 8)), self.glob)
+                   0, np.zeros(8), np.zeros((0, 8)), self.glob, *self.paths, None)
         self.t += n * self.dt
 
     def forces(self, p, reps, want=False):
@@ -157,7 +160,7 @@ class Scene:
         # would grow call by call up to the Coulomb cap and time the sliding branch instead)
         return _time_forces(reps, p, self.table, self.xb.copy(), self.vb, self.wb, self.xc, self.vc, self.rings,
                             self.hist.copy(), 0.0, self.hz, self.fb, self.tb, self.fc, self.fr, self.glob,
-                            self.diag, self.cage_load, want)
+                            self.diag, self.cage_load, want, *self.paths)
 
     def closed(self):
         self.forces(self.p, 1, True)

@@ -8,12 +8,17 @@ calls in the hot loop (it allocates nothing and is compiled without numba's
 memory runtime, so that the inlined array arguments carry no reference
 counting: ``exudyn_bearing._jit.kernel``). Functions that take arrays and
 run for every contact are inlined; the ones that take scalars
-(:func:`_normal_law`, :func:`_lubrication`) or run only in some scenes or
-on sampled steps (defects, the ellipse level, the diagnostics) are called:
-numba's inlining of them made the kernel's compilation take about 19 s of
-CPU time on every cold start, about 9 s without it, at an unchanged step
-time and bitwise unchanged results (``validation/profile_reference.py
---compile``):
+(:func:`_normal_law`, :func:`_lubrication`, :func:`_cross`; LLVM inlines
+the small ones) or run only in some scenes or on sampled steps (defects,
+the ellipse level, the diagnostics) are called: numba's inlining of them
+made the kernel's compilation take about 19 s of CPU time on every cold
+start, about 9 s without it, at an unchanged step time and bitwise
+unchanged results (``validation/profile_reference.py --compile``). The
+defect and ellipse-traction code is compiled only into the
+specialisations of :func:`forces` that ask for it (``defect_path``,
+``ellipse_path``; :func:`scene_paths`). Constants of the scene that
+every contact would recompute (ln(xi E') of the film) are computed once
+per call:
 
 * :func:`_race_contact`: ball / raceway (elliptic Hertz or the peer power
   law, Lambda-switched damping and friction, Cundall-Strack or regularised
@@ -63,12 +68,12 @@ from ..physics.damping import (_damping_critical, _damping_fluid, _damping_hyste
 from ..data.traction import N_TRACTION_PARAMS
 from ..physics.contact_slip import _contact_traction
 from ..physics.defects import _spall_drop_k
-from ..physics.ehl import _film_central_hd, _film_thickness
+from ..physics.ehl import _film_central_hd, _film_thickness_ln_g
 from ..physics.traction import EHL as TRACTION_EHL
 from ..physics.friction import (_implicit_tangential_stiffness, _regularized_coulomb, _sphere_tangential_mass,
                                 friction_coefficient)
 from ..physics.geometry import _groove_geometry, _raceway_radii_cos
-from ..physics.hertz import _curvature_sum_radius, _kfe_fast, _semi_axes, _stiffness
+from ..physics.hertz import _curvature_sum_radius, _kfe_fast, _semi_axes, _semi_axes_overlap, _stiffness
 from .layout import (D_POWER, D_ROLL, D_SPIN, D_SPIN_MOMENT, P_GROWTH_I, P_GROWTH_O, P_N_ACROSS, P_N_STRIPS,
                      P_RD_I, P_RD_O, P_TRACTION_CODE, P_TRACTION_LEVEL, P_TRACTION_PARAMS)
 from .layout import (D_A, D_ANGLE, D_B, D_DEFECT, D_FRICTION, D_HMIN, D_LAMBDA, D_LOAD, D_MU, D_OVERLAP, D_PMAX,
@@ -81,11 +86,14 @@ from .layout import (D_A, D_ANGLE, D_B, D_DEFECT, D_FRICTION, D_HMIN, D_LAMBDA, 
                      P_MU_DRY, P_MU_F, P_MZ, P_RB, P_RCI, P_RCO, P_RGUIDE, P_RHO_I, P_RHO_O, P_RP, P_RZ, P_SIGMA,
                      P_VREG, P_XI, P_ZG_I, P_ZG_O)
 
-__all__ = ["forces", "accumulate_energy"]
+__all__ = ["forces", "accumulate_energy", "scene_paths"]
 
 
-@kernel(inline="always")
+@kernel
 def _cross(a0, a1, a2, b0, b1, b2):
+    """a x b of two vectors given by their components. Called, not inlined by
+    numba (LLVM inlines it): numba's inlining of its many call sites cost
+    about 5 s of the cold start's compilation (``profile_reference.py --compile``)."""
     return a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0
 
 
@@ -196,10 +204,17 @@ def _lubrication(p, u_r, q_el, rx, kappa, major, c_hyst):
     friction coefficient mu of a contact: the Lambda-switched model of the
     DEM papers (ehl.py, damping.py, friction.py), constant mu_dry and C_hyst
     without lubrication, or the peer power law's own damping and mu."""
+    return _lubrication_ln_g(p, u_r, q_el, rx, kappa, major, c_hyst, math.log(p[P_XI] * p[P_EPRIME]))
+
+
+@kernel(no_runtime=True)
+def _lubrication_ln_g(p, u_r, q_el, rx, kappa, major, c_hyst, ln_g):
+    """:func:`_lubrication` with ``ln_g`` = ln(xi E') given: the kernel
+    computes it once per evaluation (:func:`forces`), not per contact."""
     if p[P_LAW] > 0.5:
         return 0.0, 0.0, 0, p[P_LAW_D], p[P_MU_DRY]
     if p[P_LUB] > 0.5:
-        h = _film_thickness(int(p[P_FILM]), u_r, q_el, rx, kappa, p[P_EPRIME], p[P_ETA], p[P_XI])
+        h = _film_thickness_ln_g(int(p[P_FILM]), u_r, q_el, rx, kappa, p[P_EPRIME], p[P_ETA], ln_g)
         lam = h / p[P_SIGMA]
         regime = lubrication_regime(lam, p[P_L1], p[P_L3])
         if regime == 0:
@@ -409,13 +424,16 @@ def _turn_ball_frame(p, hist, hist_out, dt_hist, wb, j):
 
 
 @kernel(inline="always")
-def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist, hz, fb, tb, fr, diag, want):
+def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist, hz, fb, tb, fr, diag, want, ln_g,
+                  defect_path, ellipse_path):
     """Ball j on the inner (race 0, ring 0) or outer (race 1, ring 1) groove.
 
     Adds the contact force and moment to ball j (fb, tb) and the reaction to
     the ring (fr); writes the spring to ``hist_out`` and, with ``want``, the
     diagnostics. Returns (overlap / R_b, frictional power [W], dissipation of
-    the normal damping [W]); zeros when the contact is open."""
+    the normal damping [W]); zeros when the contact is open. ``ln_g`` = ln(xi E');
+    ``defect_path``, ``ellipse_path``: None compiles the contact without the
+    defect drop or the ellipse traction (:func:`forces`)."""
     inner = race == 0
     if inner:
         rho, zg, rc, growth = p[P_RHO_I], p[P_ZG_I], p[P_RCI], p[P_GROWTH_I]
@@ -429,10 +447,11 @@ def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist,
     dxw, dyw, dzw, cx, cy, cz, rotated = _ring_frame(rings, race, xb[j, 0], xb[j, 1], xb[j, 2])
     delta, nlx, nly, nlz, ca, sa, r_contact = _groove_geometry(cx, cy, cz, rho, zg, rc, rb, inner)
     drop = 0.0
-    if p[P_NDEF] > 0.0 and delta > 0.0:
-        drop = _defect_drop(p, hist_out, rings, j, race, rotated, cx, cy, nlx, nly, nlz, ca, sa, r_contact, rb, rc,
-                            inner)
-        delta -= drop
+    if defect_path is not None:  # pruned at compile time when None
+        if p[P_NDEF] > 0.0 and delta > 0.0:
+            drop = _defect_drop(p, hist_out, rings, j, race, rotated, cx, cy, nlx, nly, nlz, ca, sa, r_contact, rb,
+                                rc, inner)
+            delta -= drop
     if delta <= 0.0:
         _open_contact(hist_out, diag, j, race, delta, ca, sa, drop, want)
         return 0.0, 0.0, 0.0
@@ -450,7 +469,10 @@ def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist,
     q_el, k_n, c_hyst = _normal_law(p, delta, kappa, ell_f, ell_e, rr)
     ellipse = p[P_TRACTION_LEVEL] > 0.5
     if want or ellipse or p[P_LUB] > 0.5:
-        major, minor = _semi_axes(kappa, ell_e, rr, p[P_EPRIME], q_el)
+        if p[P_LAW] > 0.5:
+            major, minor = _semi_axes(kappa, ell_e, rr, p[P_EPRIME], q_el)
+        else:  # at the Hertz load q_el of this overlap: the same axes by a square root
+            major, minor = _semi_axes_overlap(kappa, ell_f, ell_e, rr, delta)
     else:
         major = minor = 0.0
     # contact point: middle of the overlap (n points from the groove centre to the
@@ -459,7 +481,7 @@ def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist,
     # as the quasi-static solver's kinematics do (Harris & Kotzalas)
     ddot, sx, sy, sz, slip, u_r, mx, my, mz, lx, ly, lz, px, py, pz = _surface_kinematics(
         rings, race, xb, vb, wb, j, dxw, dyw, dzw, cx, cy, nx, ny, nz, rb if ellipse else rb - 0.5 * delta)
-    h, lam, regime, c_n, mu = _lubrication(p, u_r, q_el, rx, kappa, major, c_hyst)
+    h, lam, regime, c_n, mu = _lubrication_ln_g(p, u_r, q_el, rx, kappa, major, c_hyst, ln_g)
     f_n = q_el + c_n * ddot
     if f_n < 0.0:
         f_n = 0.0
@@ -470,8 +492,12 @@ def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist,
             a_ax, b_ax = major, minor
         else:
             a_ax, b_ax = minor, major
-        ftx, fty, ftz, m_z, m_y, power = _ellipse_traction(p, rx, kappa, a_ax, b_ax, f_n, sx, sy, sz, mx, my, mz,
-                                                           h, spin, roll, inner, exx, exy, exz, eyx, eyy, eyz)
+        if ellipse_path is not None:  # pruned at compile time when None (forces never gets here then)
+            ftx, fty, ftz, m_z, m_y, power = _ellipse_traction(p, rx, kappa, a_ax, b_ax, f_n, sx, sy, sz, mx, my,
+                                                               mz, h, spin, roll, inner, exx, exy, exz, eyx, eyy,
+                                                               eyz)
+        else:
+            ftx = fty = ftz = m_z = m_y = power = 0.0
         # the spin moment m_z about e_z = -n and the curvature moment m_y about
         # e_y: on the ball, and their reaction on the ring
         mvx = m_y * eyx - m_z * nx
@@ -658,11 +684,19 @@ def _global_diagnostics(rings, fr, power, worst, glob):
 
 @kernel(no_runtime=True)
 def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb, tb, fc, fr, glob, diag,
-           cage_load, want):
+           cage_load, want, defect_path=True, ellipse_path=True):
     """All contact forces of the bearing (one call; inputs and outputs in the
     module docstring). ``hist_out`` may be ``hist`` (every evaluation a
     committed step, as in the reference engine). Returns the largest
-    overlap / R_b of the ball / raceway contacts."""
+    overlap / R_b of the ball / raceway contacts.
+
+    ``defect_path`` and ``ellipse_path`` choose what is compiled: None leaves
+    the defect code (:func:`_defect_drop`, :func:`_turn_ball_frame`) or the
+    ellipse traction (:func:`_ellipse_traction` and the traction models) out
+    of this specialisation (numba prunes the branches on ``is None`` before
+    typing), which shortens a cold start of a scene without them
+    (:func:`scene_paths`); the defaults compile both. A scene that needs a
+    path left out returns NaN (the engines stop on a non-finite state)."""
     z = xb.shape[0]
     fb[:, :] = 0.0
     tb[:, :] = 0.0
@@ -672,12 +706,20 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb,
     damp_sum = 0.0
     worst = 0.0
     defects = p[P_NDEF] > 0.0
-    for j in range(z):
+    if defect_path is None:
         if defects:
-            _turn_ball_frame(p, hist, hist_out, dt_hist, wb, j)
+            return np.nan  # compiled without the defect code
+    if ellipse_path is None:
+        if p[P_TRACTION_LEVEL] > 0.5:
+            return np.nan  # compiled without the ellipse traction
+    ln_g = math.log(p[P_XI] * p[P_EPRIME]) if p[P_LUB] > 0.5 else 0.0  # the film's ln G, a scene constant
+    for j in range(z):
+        if defect_path is not None:
+            if defects:
+                _turn_ball_frame(p, hist, hist_out, dt_hist, wb, j)
         for race in range(2):
             ratio, power, damp = _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist, hz,
-                                               fb, tb, fr, diag, want)
+                                               fb, tb, fr, diag, want, ln_g, defect_path, ellipse_path)
             if ratio > worst or ratio != ratio:  # a NaN state is the worst: the engines stop on it
                 worst = ratio
             power_sum += power
@@ -717,6 +759,13 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb,
         _global_diagnostics(rings, fr, power_sum, worst, glob)
         glob[G_KINETIC] = _kinetic_energy(p, vb, wb, vc)
     return worst
+
+
+def scene_paths(p):
+    """(defect_path, ellipse_path) of :func:`forces` for the parameter vector
+    ``p`` of a scene: True where the scene uses the path, None where it does
+    not (that code is then not compiled)."""
+    return (True if p[P_NDEF] > 0.0 else None), (True if p[P_TRACTION_LEVEL] > 0.5 else None)
 
 
 @kernel(inline="always")

@@ -204,7 +204,8 @@ class ContactTraction(NamedTuple):
 
 
 def contact_traction(a, b, load, v0, spin, c2=0.0, v_t=0.0, u_roll=1.0, h_central=0.0, h_min=0.0,
-                     model="coulomb_0.1", n_strips=32, n_across=1, r_d=0.0) -> ContactTraction:
+                     model="coulomb_0.1", n_strips=DEFAULT_N_STRIPS, n_across=DEFAULT_N_ACROSS,
+                     r_d=0.0) -> ContactTraction:
     """Traction force, spin moment, dissipation and QV of one Hertz contact.
 
     Parameters
@@ -228,7 +229,9 @@ def contact_traction(a, b, load, v0, spin, c2=0.0, v_t=0.0, u_roll=1.0, h_centra
     model : TractionModel or str
         Traction model or catalogue name (default Coulomb mu = 0.1).
     n_strips, n_across : int
-        Strips along the major axis and points across each strip.
+        Strips along the major axis and points across each strip (default
+        :data:`DEFAULT_N_STRIPS` x :data:`DEFAULT_N_ACROSS`, as every solver;
+        ``n_across=1`` is classical strip theory).
     r_d : float
         Radius of the pressed surface across the rolling direction [m]
         (:func:`deformed_contact_radius`; c2 = omega_roll / (2 r_d)); sets the
@@ -242,7 +245,7 @@ def contact_traction(a, b, load, v0, spin, c2=0.0, v_t=0.0, u_roll=1.0, h_centra
     --------
     Pure spin, mu = 0.1, Q = 1000 N, a = 2 mm, strip theory: |M_z| -> (3/8) mu Q a = 0.075 N m
 
-    >>> round(abs(contact_traction(2e-3, 0.2e-3, 1000.0, 0.0, 100.0, n_strips=400).moment_z), 4)
+    >>> round(abs(contact_traction(2e-3, 0.2e-3, 1000.0, 0.0, 100.0, n_strips=400, n_across=1).moment_z), 4)
     0.075
     """
     m = get_traction_model(model)

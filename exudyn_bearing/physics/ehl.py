@@ -92,11 +92,19 @@ def film_thickness_hamrock_dowson(u_r, load, r_x, kappa, e_prime, eta, xi):
     >>> round(float(h) * 1e6, 2)
     0.8
     """
+    return film_hd_ln_g(u_r, load, r_x, kappa, e_prime, eta, np.log(xi * e_prime))
+
+
+def film_hd_ln_g(u_r, load, r_x, kappa, e_prime, eta, ln_g):
+    """:func:`film_thickness_hamrock_dowson` with the material parameter
+    given by its logarithm, ln_g = ln G = ln(xi E'): a constant of the scene,
+    which the simulation kernels compute once per force evaluation instead of
+    once per contact."""
     # evaluated as exp(sum of logs): the same formula with fewer transcendental calls
     ln_u = np.log(np.maximum(eta * np.abs(u_r) / (e_prime * r_x), 1e-300))
     ln_w = np.log(np.maximum(load, 1e-300) / (e_prime * r_x * r_x))
     on = (load > 0.0) * (u_r != 0.0)  # no load or no rolling: no film
-    return on * (3.63 * np.exp(0.68 * ln_u + 0.49 * np.log(xi * e_prime) - 0.073 * ln_w)
+    return on * (3.63 * np.exp(0.68 * ln_u + 0.49 * ln_g - 0.073 * ln_w)
                  * (1.0 - np.exp(-0.68 * kappa)) * r_x)
 
 
@@ -132,12 +140,18 @@ def film_thickness_masjedi_khonsari(u_r, load, r_x, kappa, e_prime, eta, xi):
     >>> round(float(np.log10(h(7.25, 5000.0) / h(7.25, 500.0))), 4)
     -0.0669
     """
+    return film_mk_ln_g(u_r, load, r_x, kappa, e_prime, eta, np.log(xi * e_prime))
+
+
+def film_mk_ln_g(u_r, load, r_x, kappa, e_prime, eta, ln_g):
+    """:func:`film_thickness_masjedi_khonsari` with ln_g = ln(xi E') given
+    (as :func:`film_hd_ln_g`)."""
     ln_u = np.log(np.maximum(eta * np.abs(u_r) / (e_prime * r_x), 1e-300))
     ln_w = np.log(np.maximum(load, 1e-300) / (e_prime * r_x * r_x))
     ln_k = np.log(kappa)
     on = (load > 0.0) * (u_r != 0.0)
     return on * (1.637 * np.exp(0.711 * np.exp(-0.023 * ln_k) * ln_u
-                                + 0.65 * np.exp(-0.045 * ln_k) * np.log(xi * e_prime)
+                                + 0.65 * np.exp(-0.045 * ln_k) * ln_g
                                 - 0.09 * np.exp(-0.15 * ln_k) * ln_w)
                  * (1.0 - 0.974 * np.exp(-0.676 * kappa)) * r_x)
 
@@ -165,17 +179,24 @@ def film_thickness_central_hamrock_dowson(u_r, load, r_x, kappa, e_prime, eta, x
                  * (1.0 - 0.61 * np.exp(-0.73 * kappa)) * r_x)
 
 
-_film_hd = kernel(film_thickness_hamrock_dowson)
 _film_central_hd = kernel(film_thickness_central_hamrock_dowson)
-_film_mk = kernel(film_thickness_masjedi_khonsari)
+_film_hd_ln_g = kernel(film_hd_ln_g)
+_film_mk_ln_g = kernel(film_mk_ln_g)
+
+
+@kernel
+def _film_thickness_ln_g(model, u_r, load, r_x, kappa, e_prime, eta, ln_g):
+    """Kernel dispatch on the film model code (0 HD, 1 MK); ln_g = ln(xi E')
+    (:func:`film_hd_ln_g`)."""
+    if model == MASJEDI_KHONSARI:
+        return _film_mk_ln_g(u_r, load, r_x, kappa, e_prime, eta, ln_g)
+    return _film_hd_ln_g(u_r, load, r_x, kappa, e_prime, eta, ln_g)
 
 
 @kernel
 def _film_thickness(model, u_r, load, r_x, kappa, e_prime, eta, xi):
     """Kernel dispatch on the film model code (0 HD, 1 MK)."""
-    if model == MASJEDI_KHONSARI:
-        return _film_mk(u_r, load, r_x, kappa, e_prime, eta, xi)
-    return _film_hd(u_r, load, r_x, kappa, e_prime, eta, xi)
+    return _film_thickness_ln_g(model, u_r, load, r_x, kappa, e_prime, eta, np.log(xi * e_prime))
 
 
 def film_thickness(u_r, load, r_x, kappa, e_prime, eta, xi, film="hd"):

@@ -294,6 +294,23 @@ def _semi_axes(kappa, ell_e, r, e_prime, load):
 
 
 @kernel
+def _semi_axes_overlap(kappa, ell_f, ell_e, r, overlap):
+    """Semi-axes a (major) and b (minor) [m] at an overlap delta [m]:
+    b = sqrt(2 E R delta / F), a = k b.
+
+    :func:`_semi_axes` at the Hertz load of that overlap, Q = K delta^1.5
+    with K of :func:`_stiffness` (docs/theory/hertz.md): with
+    delta = F (9/(2 E R))^(1/3) (Q/(pi k E'))^(2/3) [1]_, b^2 =
+    (6 E Q R/(pi k E'))^(2/3) = 2 E R delta / F. One square root instead of
+    two cube roots (the contact kernel evaluates it for every closed
+    contact and step)."""
+    if overlap <= 0.0:
+        return 0.0, 0.0
+    b = math.sqrt(2.0 * ell_e * r * overlap / ell_f)
+    return kappa * b, b
+
+
+@kernel
 def _hertz(r_x, r_y, e_prime, overlap, method):
     """Full Hertz state at an overlap delta [m].
 

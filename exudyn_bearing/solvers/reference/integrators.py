@@ -32,15 +32,16 @@ __all__ = ["run_verlet", "run_rk4", "evaluate"]
 
 
 @kernel
-def _set_inner_ring(t, p, ring, rings):
+def _set_inner_ring(t, p, ring, rings, defect_path):
     """Reference engine: the inner ring translates (state ``ring``: position,
     velocity) and spins at the protocol speed; the outer ring stays fixed.
     Its rotation matrix stays the identity; with defects in the scene its
-    spin angle (the protocol's integral) goes to ``R_ANGLE``."""
+    spin angle (the protocol's integral) goes to ``R_ANGLE`` (compiled only
+    with a ``defect_path``, :func:`~exudyn_bearing.model.contact.forces`)."""
     for d in range(6):
         rings[0, d] = ring[d]
     rings[0, 17] = omega_profile(t, p[P_W_MAX], p[P_T_UP], p[P_T_STEADY], p[P_T_DOWN])
-    if p[P_NDEF] > 0.0:
+    if defect_path is not None and p[P_NDEF] > 0.0:
         rings[0, R_ANGLE] = spin_angle(t, p[P_W_MAX], p[P_T_UP], p[P_T_STEADY], p[P_T_DOWN])
 
 
@@ -54,11 +55,12 @@ def _inner_ring_force(p, fr, fring):
 
 @kernel
 def evaluate(t, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc, fr, fring,
-              glob, diag, cage_load, want):
-    """Reference-engine force evaluation at time t (see :func:`_set_inner_ring`)."""
-    _set_inner_ring(t, p, ring, rings)
+              glob, diag, cage_load, want, defect_path=True, ellipse_path=True):
+    """Reference-engine force evaluation at time t (see :func:`_set_inner_ring`;
+    the paths as in :func:`~exudyn_bearing.model.contact.forces`)."""
+    _set_inner_ring(t, p, ring, rings, defect_path)
     worst = forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist, p[P_DT], hz, fb, tb, fc, fr, glob, diag,
-                   cage_load, want)
+                   cage_load, want, defect_path, ellipse_path)
     _inner_ring_force(p, fr, fring)
     return worst
 
@@ -107,10 +109,21 @@ def _signal_step(k_step, t, p, rings, fr, fring, sig_every, sig_acc, s_sig):
             sig_acc[c] = 0.0
 
 
+@kernel(no_runtime=True)
+def _finite(a):
+    """True when every entry of the 2-D array ``a`` is finite (a loop: numba's
+    np.all(np.isfinite(...)) compiled for about 0.6 s of a cold start)."""
+    for i in range(a.shape[0]):
+        for k in range(a.shape[1]):
+            if not math.isfinite(a[i, k]):
+                return False
+    return True
+
+
 @kernel
 def run_verlet(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring,
                sample_every, step0, s_t, s_glob, s_diag, s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring,
-               sig_every, sig_acc, s_sig, glob):
+               sig_every, sig_acc, s_sig, glob, defect_path=True, ellipse_path=True, signal_path=True):
     """Velocity-Verlet (the DEM papers' scheme) for ``n_steps`` steps from t0.
 
     Forces must hold the values at t0 on entry; damping and friction see the
@@ -121,6 +134,9 @@ def run_verlet(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb
     its drive_work and dissipated_work accumulate the powers of every step.
     Returns (steps done, samples written, status): status 0 ok,
     1 non-finite state, 2 runaway overlap (> P_MAX_OVERLAP R_b).
+    ``defect_path``, ``ellipse_path`` as in :func:`~exudyn_bearing.model.contact.forces`;
+    ``signal_path`` None compiles the loop without the signals (then
+    ``sig_every`` must be 0).
     """
     dt = p[P_DT]
     h = 0.5 * dt
@@ -144,13 +160,14 @@ def run_verlet(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb
         want = (step0 + step + 1) % sample_every == 0 and n_samp < s_t.shape[0]
         # the three calls of _evaluate, inlined in this hottest loop (the
         # extra array-passing call measured a few per cent slower)
-        _set_inner_ring(t, p, ring, rings)
+        _set_inner_ring(t, p, ring, rings, defect_path)
         worst = forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist, dt, hz, fb, tb, fc, fr, glob, diag,
-                       cage_load, want)
+                       cage_load, want, defect_path, ellipse_path)
         _inner_ring_force(p, fr, fring)
         accumulate_energy(glob, dt)
-        if sig_every > 0:
-            _signal_step(step0 + step + 1, t, p, rings, fr, fring, sig_every, sig_acc, s_sig)
+        if signal_path is not None:  # pruned at compile time when None
+            if sig_every > 0:
+                _signal_step(step0 + step + 1, t, p, rings, fr, fring, sig_every, sig_acc, s_sig)
         for j in range(z):
             for d in range(3):
                 vb[j, d] += h * fb[j, d] * inv_mb
@@ -162,22 +179,22 @@ def run_verlet(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb
             _store(n_samp, t, glob, diag, cage_load, xb, vb, wb, xc, vc, ring,
                    s_t, s_glob, s_diag, s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring)
             n_samp += 1
-            if not (np.all(np.isfinite(xb)) and np.all(np.isfinite(vb)) and np.all(np.isfinite(ring))):
+            if not (_finite(xb) and _finite(vb) and _finite(ring.reshape((1, ring.shape[0])))):
                 return step + 1, n_samp, 1
         if worst > p[P_MAX_OVERLAP] or not math.isfinite(worst):
             return step + 1, n_samp, 2
-    if not (np.all(np.isfinite(xb)) and np.all(np.isfinite(vb)) and np.all(np.isfinite(wb))):
+    if not (_finite(xb) and _finite(vb) and _finite(wb)):
         return n_steps, n_samp, 1
     return n_steps, n_samp, 0
 
 
 @kernel
 def _rk_stage(t, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc, fr, fring, glob, diag, cage_load,
-              kx, kv, kw, kxc, kvc, kr, stage):
+              kx, kv, kw, kxc, kvc, kr, stage, defect_path, ellipse_path):
     """Derivatives of the state at (t, state) into stage ``stage`` of the k
     arrays; returns the largest overlap ratio."""
     worst = evaluate(t, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc, fr, fring, glob, diag,
-                      cage_load, False)
+                     cage_load, False, defect_path, ellipse_path)
     inv_mz = 1.0 / p[P_MZ] if p[P_CAGE] > 0.5 else 0.0
     for j in range(xb.shape[0]):
         for d in range(3):
@@ -210,7 +227,7 @@ def _rk_set(y0x, y0v, y0w, y0xc, y0vc, y0r, kx, kv, kw, kxc, kvc, kr, stage, f,
 @kernel
 def run_rk4(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring,
             sample_every, step0, s_t, s_glob, s_diag, s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring,
-            sig_every, sig_acc, s_sig, glob):
+            sig_every, sig_acc, s_sig, glob, defect_path=True, ellipse_path=True, signal_path=True):
     """Classical fourth-order Runge-Kutta, for history-free scenes (same
     interface and status codes as :func:`run_verlet`; it records no signals
     and keeps no ball orientation: Scenario allows neither with rk4). The
@@ -243,21 +260,21 @@ def run_rk4(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, f
         y0vc[:, :] = vc
         y0r[:] = ring
         worst = _rk_stage(t, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc, fr, fring, glob, diag,
-                          cage_load, kx, kv, kw, kxc, kvc, kr, 0)
+                          cage_load, kx, kv, kw, kxc, kvc, kr, 0, defect_path, ellipse_path)
         accumulate_energy(glob, dt / 6.0)
         if worst > p[P_MAX_OVERLAP] or not math.isfinite(worst):
             return step, n_samp, 2
         _rk_set(y0x, y0v, y0w, y0xc, y0vc, y0r, kx, kv, kw, kxc, kvc, kr, 0, 0.5 * dt, xb, vb, wb, xc, vc, ring)
         _rk_stage(t + 0.5 * dt, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc, fr, fring, glob, diag,
-                  cage_load, kx, kv, kw, kxc, kvc, kr, 1)
+                  cage_load, kx, kv, kw, kxc, kvc, kr, 1, defect_path, ellipse_path)
         accumulate_energy(glob, dt / 3.0)
         _rk_set(y0x, y0v, y0w, y0xc, y0vc, y0r, kx, kv, kw, kxc, kvc, kr, 1, 0.5 * dt, xb, vb, wb, xc, vc, ring)
         _rk_stage(t + 0.5 * dt, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc, fr, fring, glob, diag,
-                  cage_load, kx, kv, kw, kxc, kvc, kr, 2)
+                  cage_load, kx, kv, kw, kxc, kvc, kr, 2, defect_path, ellipse_path)
         accumulate_energy(glob, dt / 3.0)
         _rk_set(y0x, y0v, y0w, y0xc, y0vc, y0r, kx, kv, kw, kxc, kvc, kr, 2, dt, xb, vb, wb, xc, vc, ring)
         _rk_stage(t + dt, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc, fr, fring, glob, diag,
-                  cage_load, kx, kv, kw, kxc, kvc, kr, 3)
+                  cage_load, kx, kv, kw, kxc, kvc, kr, 3, defect_path, ellipse_path)
         accumulate_energy(glob, dt / 6.0)
         c = dt / 6.0
         for j in range(z):
@@ -272,10 +289,10 @@ def run_rk4(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, f
         want = (step0 + step + 1) % sample_every == 0 and n_samp < s_t.shape[0]
         if want:
             evaluate(t + dt, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc, fr, fring, glob, diag,
-                   cage_load, True)
+                     cage_load, True, defect_path, ellipse_path)
             _store(n_samp, t + dt, glob, diag, cage_load, xb, vb, wb, xc, vc, ring,
                    s_t, s_glob, s_diag, s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring)
             n_samp += 1
-        if not (np.all(np.isfinite(xb)) and np.all(np.isfinite(vb)) and np.all(np.isfinite(ring))):
+        if not (_finite(xb) and _finite(vb) and _finite(ring.reshape((1, ring.shape[0])))):
             return step + 1, n_samp, 1
     return n_steps, n_samp, 0
