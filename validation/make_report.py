@@ -25,6 +25,8 @@ from pathlib import Path
 
 import numpy as np
 
+from exudyn_bearing.physics.contact_slip import DEFAULT_N_ACROSS, DEFAULT_N_STRIPS
+
 HERE = Path(__file__).resolve().parent
 OUT = HERE / "out"
 #: Tracked copies of the figures the report shows (REPORT.md links them relatively).
@@ -726,7 +728,7 @@ def section_quasistatic():
                      f"{v['race_control']['gyro_traction_outer']:.4f}. Plots: "
                      f"`{Path(v['beta_scan']['plot']).name}`, `{Path(v['plot_slip']).name}`.")
     cv = d["strip_convergence"]
-    lines.append("- Strip integration (default 32 strips x 4 points): total dissipation with the curve, race control / "
+    lines.append(f"- Strip integration (default {DEFAULT_N_STRIPS} strips x {DEFAULT_N_ACROSS} points): total dissipation with the curve, race control / "
                  "minimum energy: " + "; ".join(f"{c['n_strips']}x{c['n_across']}: {c['race_control_W']:.1f} / "
                                                 f"{c['min_energy_W']:.1f} W ({100 * c['change']:+.2f} %)" for c in cv)
                  + ".")
