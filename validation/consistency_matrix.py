@@ -38,13 +38,13 @@ traction equilibrium within 1 % in loads, angles and speeds, 0.5 deg in
 beta, 3 % in dissipation; the two engines within 0.1 %.
 
 Diagnostic: where a loaded contact's rolling speed lies below the engines'
-least rolling speed of the ellipse traction (``Scenario.regularizing_speed``,
-0.1 m/s: the 6208 at 1 rad/s rolls at 0.0145 m/s), the engines' slide-to-roll
-ratios are smaller than the quasi-static solver's and they dissipate less; the
-traction equilibrium is then also solved with that floor
+least rolling speed of the ellipse traction
+(``model.scenario.ellipse_rolling_floor``: ``Scenario.regularizing_speed``,
+0.1 m/s, but at most half the kinematic inner rolling speed), the engines'
+slide-to-roll ratios are smaller than the quasi-static solver's and they
+dissipate less; the traction equilibrium is then also solved with that floor
 (``rolling_speed_floor``; row ``qs equilibrium, engines' least rolling
-speed``, deviation ``dissipation_engines_floor``;
-validation/anomaly_checks.py shows the cause).
+speed``, deviation ``dissipation_engines_floor``; validation/anomaly_checks.py shows the cause).
 
 The second part takes the 7208 term by term: which effect moves its loads
 between zero speed and 500 rad/s in the quasi-static solver (centrifugal
@@ -71,6 +71,7 @@ import numpy as np
 import exudyn_bearing as eb
 from exudyn_bearing.data import load_bearing
 from exudyn_bearing.model.layout import D_ANGLE, D_LOAD, D_ROLL, D_SPIN, GLOBAL_FIELDS
+from exudyn_bearing.model.scenario import ellipse_rolling_floor
 from exudyn_bearing.model.stability import stable_step
 from exudyn_bearing.outputs.contact_summary import spin_axis_angles
 from exudyn_bearing.physics.load_distribution import static_equilibrium
@@ -108,7 +109,6 @@ TARGETS = {"q_max_inner": 0.01, "q_max_outer": 0.01, "alpha_inner": 0.3, "alpha_
 ENGINE_TARGET = 1e-3
 #: The dynamic ellipse level's least rolling speed of the traction law (Scenario default) [m/s]: below it the
 #: engines' slide-to-roll ratios are smaller than the quasi-static solver's (validation/anomaly_checks.py).
-V_REG = eb.Scenario().regularizing_speed
 FLOOR_ROW = "qs equilibrium, engines' least rolling speed"
 #: Quantities compared as differences in degrees.
 ANGLES = ("alpha_inner", "alpha_outer", "beta")
@@ -250,12 +250,13 @@ def matrix(quick, only=None):
             # diagnostic: rolling speeds below the engines' least rolling speed, and the equilibrium with it
             loaded = (sol.balls["q_inner"] > 0.0) & (sol.balls["q_outer"] > 0.0)
             u_min = float(np.min(np.minimum(sol.balls["u_roll_inner"], sol.balls["u_roll_outer"])[loaded]))
-            if u_min < V_REG:
+            v_floor = ellipse_rolling_floor(load_bearing(case["bearing"]), eb.Scenario(omega=case["omega"]))
+            if u_min < v_floor:
                 floor = eb.solve_quasistatic(case["bearing"], Fr=case["Fr"], Fa=case["Fa"], omega=case["omega"],
                                              control="equilibrium", fixed=HELD, stiffness=False,
-                                             rolling_speed_floor=V_REG, **kw)
+                                             rolling_speed_floor=v_floor, **kw)
                 r[FLOOR_ROW] = qs_row(floor)
-                print(f"   rolling speed {u_min:.3g} m/s < the engines' least rolling speed {V_REG:g} m/s: quasi-static "
+                print(f"   rolling speed {u_min:.3g} m/s < the engines' least rolling speed {v_floor:.3g} m/s: quasi-static "
                       f"equilibrium dissipation {r['qs equilibrium']['dissipation']:.4g} W, with that floor "
                       f"{r[FLOOR_ROW]['dissipation']:.4g} W", flush=True)
             if case.get("tilt_free"):
