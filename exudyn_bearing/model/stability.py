@@ -18,12 +18,12 @@ from ..physics import hertz, kinematics
 from ..physics.friction import sphere_tangential_mass
 from ..physics.hertz import material_reduced_modulus
 from ..physics.load_distribution import race_stiffness
-from .load_range import check_load_range
+from .load_range import MAX_CONTACT_PRESSURE, check_load_range
 from .scenario import Scenario, ellipse_rolling_floor
 
 __all__ = ["ellipse_traction_damping", "SimulationError", "StepSizeWarning", "StableStep", "STABILITY_SAFETY", "START_UP_CAGE_LOAD",
            "STEADY_CAGE_LOAD", "CAGE_BLOW_UP_RATIO", "explicit_step_factor", "expected_cage_load", "stable_step",
-           "step_warning", "cage_load_check", "ring_contact_stiffness", "ring_stable_step"]
+           "step_warning", "cage_load_check", "ring_contact_stiffness", "ring_stable_step", "runaway_error"]
 
 
 class SimulationError(RuntimeError):
@@ -306,6 +306,39 @@ def step_warning(label: str, dt: float, stable: StableStep) -> str | None:
         text += ("The cage loads may chatter at about twice their value (ball loads and speeds are not "
                  "affected; the loads the run reaches are checked at its end). ")
     return text + "Reduce the step."
+
+
+def runaway_error(option: str, t: float, stable: StableStep, what: str = "non-finite or runaway", step: str = "",
+                  ring: str = "", remedy: str = "the solver step", bad_input: tuple[str, str] | None = None,
+                  excess: tuple[float, float, str] | None = None) -> SimulationError:
+    """The :class:`SimulationError` of an engine whose state became ``what``
+    at ``t`` [s], naming the cause the evidence shows (one text for both
+    engines and both element modes).
+
+    ``bad_input``: (option, description) when the state handed to the engine
+    was already non-finite (e.g. ``("markerInnerRing", "the inner ring
+    marker's position and velocity")``): the input, not the step. ``excess``:
+    (ball load [N], contact pressure [Pa], race) when the loads the run
+    reached before the runaway exceed the elastic contact limit
+    (:data:`~exudyn_bearing.model.load_range.MAX_CONTACT_PRESSURE`, found with
+    :func:`~exudyn_bearing.model.load_range.pressure_excess`) and the step is
+    within the estimate: the loads are the likely cause. Otherwise the step:
+    ``option`` names it, ``step`` (" with dt = ... s") and ``ring`` (a further
+    limit) are added to the estimate ``stable``, ``remedy`` is what to reduce."""
+    head = f"the bearing state became {what} at t = {t:.6g} s"
+    if bad_input is not None:
+        name, text = bad_input
+        return SimulationError(f"{name}: {head}: {text} handed to the bearing element from the Exudyn model "
+                               "became non-finite (check the model's loads, initial values and user functions); "
+                               "the input is non-finite, not the step")
+    if excess is not None:
+        q, p, race = excess
+        return SimulationError(f"load: {head}{step}: before it, the ball loads reached at least {q:.4g} N, a contact "
+                               f"pressure of {p / 1e9:.3g} GPa at the {race} race, above {MAX_CONTACT_PRESSURE / 1e9:g} "
+                               "GPa, the limit of the elastic contact model (ISO 76 static load rating): the loads on "
+                               "the bearing are the likely cause, not the step; reduce the load")
+    return SimulationError(f"{option}: {head}{step}; the stable-step estimate is {stable.dt:.3g} s (limited by the "
+                           f"{stable.limited_by} contact){ring}: reduce {remedy}")
 
 
 def cage_load_check(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant | None, max_cage_load: float,

@@ -286,7 +286,7 @@ def advance_balls(n_sub, tau, t, t_end, p, table, work, rings0, rings1, rings, h
         w = forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist, dt, hz, fb, tb, fc, fr, glob, diag,
                    cage_load, want and i == n_sub - 1)
         accumulate_energy(glob, dt)
-        if w > worst:
+        if w > worst or w != w:  # a NaN state is the worst (and stays it): the element stops on it
             worst = w
         for r in range(2):
             for k in range(6):

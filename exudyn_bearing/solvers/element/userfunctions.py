@@ -12,7 +12,10 @@ import numpy as np
 from ...data import InputError
 from ...model.contact import accumulate_energy, forces
 from ...model.layout import H_E1
-from ...model.stability import SimulationError, StepSizeWarning, step_warning
+from ...model.load_range import pressure_excess
+from ...model.stability import StepSizeWarning, runaway_error, step_warning
+from ...physics import hertz
+from ...physics.geometry import raceway_radii
 from . import kernels as EK
 
 #: Exudyn's implicit dynamic solvers (names of exudyn.DynamicSolverType).
@@ -63,6 +66,28 @@ __all__ = ["UserFunctionsMixin", "IMPLICIT_SOLVERS", "UNSTABLE_SOLVERS", "MIDPOI
            "implicit_solver_error", "solver_error"]
 
 
+def overlap_contacts(bearing, overlap, method="exact"):
+    """((load [N], p_max [Pa]) at the inner race, the same at the outer race)
+    of one ball contact at ``overlap`` [m] (Hertz at the free contact angle,
+    docs/theory/hertz.md): what a largest overlap the element saw means in
+    ball load and contact pressure."""
+    b = bearing
+    a0 = b.free_contact_angle
+    em = hertz.material_reduced_modulus(b.material)
+    out = []
+    for r_c, sign, inner in ((b.inner_groove_radius, -1.0, True), (b.outer_groove_radius, 1.0, False)):
+        rx, ry = raceway_radii(b.ball_radius, r_c, b.pitch_radius + sign * b.ball_radius * math.cos(a0), a0, inner)
+        c = hertz.hertz_contact(rx, ry, em, overlap=overlap, method=method)
+        out.append((float(c.load), float(c.p_max)))
+    return out[0], out[1]
+
+
+#: Columns of a ring pose row (model.layout RING_N) that belong to the marker's position (centre, rotation
+#: matrix) and to its velocity (velocity, angular velocity).
+_POSE_POSITION = np.r_[0:3, 6:15]
+_POSE_VELOCITY = np.r_[3:6, 15:18]
+
+
 def _entry_point(dispatcher, args):
     """numba's compiled entry point of ``dispatcher`` for the types of
     ``args`` (compiled or loaded from the cache now): calling it skips
@@ -102,9 +127,13 @@ class UserFunctionsMixin:
         err = solver_error(self.mode, solver, step, self.stable.dt)
         if err is not None:
             raise err
+        evidence = self._runaway_evidence()
+        if self.mode != "fast":  # the fast mode's steps are checked at its first step (_check_fast_step)
+            evidence[1] = step is not None and step > self.stable.dt
         first = run[1] == math.inf
         run[1] = t
         if first:
+            evidence[0] = 0.0
             self._t_commit = t
             self._t_energy = t
             return
@@ -112,8 +141,19 @@ class UserFunctionsMixin:
             return
         self._restart(t)
 
+    def _runaway_evidence(self):
+        """[largest overlap / R_b of the evaluations that passed the runaway
+        check, whether the step exceeds its stable-step estimate]: what
+        :meth:`_check_worst` weighs when a run blows up (one list per element,
+        changed in place: the fast mode's closure holds it)."""
+        evidence = self.__dict__.get("_evidence")
+        if evidence is None:
+            evidence = self._evidence = [0.0, False]
+        return evidence
+
     def _restart(self, t):
         """Reset the element to its initial state for a run starting at t."""
+        self._runaway_evidence()[0] = 0.0
         self._reset_defects_and_signals(t)
         self._hz[:] = 0.0
         self._t_commit = t
@@ -186,6 +226,7 @@ class UserFunctionsMixin:
         # [t of the last Exudyn evaluation (nan: none yet), tau, next sample, step checked, Exudyn steps]
         clock = self._clock
         run, sysd, new_run = self._run, self._sys, self._new_run
+        evidence = self._runaway_evidence()
         asarray = np.asarray
         perf_counter = time.perf_counter
         step = _entry_point(EK.fast_step, (asarray(np.zeros(1)), asarray(np.zeros(1)), ref, params, table, kind,
@@ -218,6 +259,8 @@ class UserFunctionsMixin:
                 clock[4] += 1
                 if not worst <= max_overlap:  # also catches NaN
                     self._check_worst(worst, t)
+                if worst > evidence[0]:
+                    evidence[0] = worst
                 if want:
                     self._sample(t_end, rings_sub)
                     clock[2] = self._next_sample
@@ -257,6 +300,9 @@ class UserFunctionsMixin:
         if advanced:
             if not worst <= self._max_overlap:  # also catches NaN
                 self._check_worst(worst, t)
+            evidence = self._evidence
+            if worst > evidence[0]:
+                evidence[0] = worst
             if want:
                 self._sample(t, self._rings)
             if self._sig is not None:
@@ -270,6 +316,7 @@ class UserFunctionsMixin:
         bodies' stable step or its ball sub-step the balls' stable step."""
         self._clock[3] = True
         dt = h / max(1, int(h / self._dt_sub + 0.5))
+        self._runaway_evidence()[1] = h > self.ringStableStep or dt > self.stable.dt
         if h > self.ringStableStep:
             warnings.warn(f"subSteps: the Exudyn step {h:.3g} s exceeds the ring bodies' stable-step estimate "
                           f"{self.ringStableStep:.3g} s (ring bodies' inertia against their bearings' contact "
@@ -280,10 +327,32 @@ class UserFunctionsMixin:
             warnings.warn(msg, StepSizeWarning, stacklevel=stacklevel)
 
     def _check_worst(self, worst, t):
-        if not math.isfinite(worst) or worst > self._max_overlap:
-            ring = (f" and the ring bodies' {self.ringStableStep:.3g} s for the fast mode's Exudyn step (subSteps * "
-                    "stepSize)" if self.mode == "fast" and math.isfinite(self.ringStableStep) else "")
-            raise SimulationError(
-                f"stepSize: the bearing state became non-finite or runaway at t = {t:.6g} s; the stable-step "
-                f"estimate is {self.stable.dt:.3g} s (limited by the {self.stable.limited_by} contact){ring}: "
-                "reduce the solver step")
+        """SimulationError when the largest overlap / R_b ``worst`` of the
+        evaluation at ``t`` is non-finite or above the runaway limit, naming
+        what the evidence shows (:func:`~exudyn_bearing.model.stability.runaway_error`):
+        a ring marker's state handed over by Exudyn non-finite (the input);
+        else, with the step within its estimate, the ball loads the run
+        reached before (the largest overlap of the evaluations that passed the
+        check, as load and pressure at the race where they are lower) above
+        the elastic contact limit (the loads); else the step."""
+        if math.isfinite(worst) and worst <= self._max_overlap:
+            return
+        what = "non-finite or runaway"
+        for r, ring in enumerate(("inner", "outer")):
+            parts = [name for name, cols in (("position", _POSE_POSITION), ("velocity", _POSE_VELOCITY))
+                     if not np.isfinite(self._rings[r, cols]).all()]
+            if parts:
+                option = "markerInnerRing" if r == 0 else "markerOuterRing"
+                raise runaway_error(option, t, self.stable, "non-finite", bad_input=(
+                    option, f"the {ring} ring marker's {' and '.join(parts)}"))
+        peak, step_over = self._runaway_evidence()
+        if peak > 0.0 and not step_over:
+            contacts = overlap_contacts(self.bearing, peak * self.bearing.ball_radius, self.scenario.hertz)
+            low = 0 if contacts[0][1] <= contacts[1][1] else 1
+            # the lower of both races: the overlap was reached at one of them
+            excess = pressure_excess([contacts[0][1] if low == 0 else 0.0], [contacts[1][1] if low == 1 else 0.0])
+            if excess is not None:
+                raise runaway_error("load", t, self.stable, what, excess=(contacts[low][0], excess[0], excess[1]))
+        ring = (f" and the ring bodies' {self.ringStableStep:.3g} s for the fast mode's Exudyn step (subSteps * "
+                "stepSize)" if self.mode == "fast" and math.isfinite(self.ringStableStep) else "")
+        raise runaway_error("stepSize", t, self.stable, what, ring=ring)

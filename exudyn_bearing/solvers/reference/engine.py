@@ -23,7 +23,7 @@ from ...model.motion import ring_poses
 from ...model.parameters import scene_parameters
 from ...model.record import RunRecord
 from ...model.scenario import Scenario
-from ...model.stability import SimulationError, StepSizeWarning, cage_load_check, stable_step, step_warning
+from ...model.stability import StepSizeWarning, cage_load_check, runaway_error, stable_step, step_warning
 from ...physics import hertz
 from .integrators import evaluate, run_rk4, run_verlet
 
@@ -136,10 +136,7 @@ class ReferenceEngine:
             if status != 0:
                 t_fail = done * s.dt
                 what = "non-finite" if status == 1 else "runaway (overlap above 5 % of the ball radius)"
-                raise SimulationError(
-                    f"dt: the state became {what} at t = {t_fail:.6g} s with dt = {s.dt:.3g} s; "
-                    f"the stable-step estimate is {self.stable.dt:.3g} s (limited by the "
-                    f"{self.stable.limited_by} contact): reduce dt")
+                raise runaway_error("dt", t_fail, self.stable, what, step=f" with dt = {s.dt:.3g} s", remedy="dt")
             if progress and (time.perf_counter() - last_print > 0.5 or done >= n_steps):
                 last_print = time.perf_counter()
                 el = time.perf_counter() - wall0
