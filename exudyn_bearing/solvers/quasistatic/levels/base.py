@@ -314,7 +314,8 @@ class LevelBearing:
     def samples(self) -> dict:
         """The sampled series: ``t``, ``displacement`` (n, 5) (inner ring against the outer ring, outer-ring
         frame), ``force`` (n, 5) (force and moment of the bearing on the inner ring, same frame), ``cage_angle``,
-        ``cage_speed``, ``q_max_inner``, ``q_max_outer`` and the level's own fields."""
+        ``cage_speed``, ``q_max_inner``, ``q_max_outer`` (NaN on a level without ball loads, ``ballLoads``) and the
+        level's own fields."""
         if not self._samples:
             raise RuntimeError("samples: no samples yet; run mbs.SolveDynamic first")
         a = np.array(self._samples)

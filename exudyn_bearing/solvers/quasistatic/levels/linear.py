@@ -84,7 +84,9 @@ def linear_forces(d0, d1, d2, r0, r1, r2, v0, v1, v2, w0, w1, w2, ws, table):
 
 
 class LinearBearing(LevelBearing):
-    """The linear level (module docstring); options of :class:`.base.LevelBearing`."""
+    """The linear level (module docstring); options of :class:`.base.LevelBearing`. Sensors
+    ``innerRingForce``, ``outerRingForce``, ``ringDisplacement``, ``cageSpeed``: no ``qMaxInner`` or
+    ``qMaxOuter`` (no ball loads); ``forceLimit`` [N]: the ring force of its validity."""
 
     model = "linear"
     ballLoads = False
