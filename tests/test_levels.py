@@ -186,3 +186,87 @@ def test_tabulated_hertz_constant_is_the_direct_one():
             direct = _hertz_constant(r_x, r_y, e_prime, hertz.EXACT, _DIRECT)
             assert direct == pytest.approx(hertz.hertz_stiffness(r_x, r_y, e_prime, "exact"), rel=1e-12)
             assert _hertz_constant(r_x, r_y, e_prime, hertz.EXACT, table) == pytest.approx(direct, rel=3e-7)
+
+
+@pytest.mark.parametrize("model", ["quasistatic", "linear"])
+def test_explicit_euler_is_refused_by_both_levels(model):
+    # ExplicitEuler's amplification of an undamped oscillation x'' = -w^2 x is |1 + i w h| > 1 at every step h:
+    # refused in SimulationSettings and, for settings made otherwise, at the run's first evaluation
+    sc, mbs, node, m_b, m_g = shaft()
+    br = eb.CreateBallBearing(mbs, "6208", m_b, m_g, model=model, initialLoad=(FR, FA), coefficientSpeeds=SPEEDS)
+    mbs.Assemble()
+    with pytest.raises(eb.InputError, match="^solverType: ExplicitEuler .* GeneralizedAlpha"):
+        br.SimulationSettings(0.05, solverType="ExplicitEuler")
+    ss = br.SimulationSettings(1e-3)
+    ss.timeIntegration.solverType = exu.DynamicSolverType.ExplicitEuler
+    with pytest.raises(ValueError, match="InputError: solverType: ExplicitEuler"):  # Exudyn's ModelError
+        mbs.SolveDynamic(ss, solverType=ss.timeIntegration.solverType)
+    assert np.all(br._out == 0.0)  # refused before the first force was computed
+
+
+def test_linear_level_stops_beyond_the_elastic_limit():
+    # the trial's case: operating point 3000 N, 1e6 N applied. The limit is the radial load at which the elastic
+    # contact model ends: the quasi-static level's own input check (model.load_range.check_load_range, each ball
+    # at its contact angle) accepts 0.99 of it and refuses 1.01 of it (1 %: the limit is solved to 1e-6)
+    from exudyn_bearing.model.load_range import check_load_range
+
+    sc, mbs, node, m_b, m_g = shaft(load=(1e6, 0.0, 0.0))
+    br = eb.CreateBallBearing(mbs, "6208", m_b, m_g, model="linear", initialLoad=(FR, 0.0), coefficientSpeeds=SPEEDS)
+    check_load_range(br.bearing, 0.99 * br.forceLimit)
+    with pytest.raises(eb.InputError, match="4.2 GPa"):
+        check_load_range(br.bearing, 1.01 * br.forceLimit)
+    mbs.Assemble()
+    ss = br.SimulationSettings(0.01)
+    with pytest.raises(ValueError, match="SimulationError: linear: .* left its validity; use model='quasistatic'"):
+        mbs.SolveDynamic(ss, solverType=ss.timeIntegration.solverType)
+    br._restart(0.0)
+    with pytest.raises(eb.SimulationError, match="^linear: .* not finite"):
+        br._evaluate([math.nan, 0.0, 0.0], [0.0] * 3, [0.0] * 3, [0.0] * 3)
+
+
+def test_linear_level_has_no_ball_load_sensors():
+    # the linear level knows no ball loads: no qMax sensors, NaN in its samples (not the operating point's values)
+    sc, mbs, node, m_b, m_g = shaft()
+    br = eb.CreateBallBearing(mbs, "6208", m_b, m_g, model="linear", initialLoad=(FR, FA), coefficientSpeeds=SPEEDS)
+    assert "qMaxInner" not in br.sensors and "qMaxOuter" not in br.sensors
+    br._restart(0.0)
+    br._user_function(mbs, 0.0, 0, list(br.initialRingDisplacement[:3]), [0.0] * 3, [0.0] * 3, [0.0] * 3, None, None,
+                      np.eye(3), np.eye(3), None)
+    assert math.isnan(br.samples()["q_max_inner"][0]) and math.isnan(br.samples()["q_max_outer"][0])
+
+
+def test_cage_angle_must_be_finite():
+    sc, mbs, node, m_b, m_g = shaft()
+    with pytest.raises(eb.InputError, match="^cageAngle: "):
+        eb.CreateBallBearing(mbs, "6208", m_b, m_g, model="quasistatic", cageAngle=math.nan, coefficientSpeeds=[0.0])
+
+
+@pytest.mark.parametrize("model", ["quasistatic", "linear"])
+def test_initial_coordinates_start_the_node_at_the_operating_point(model):
+    # six coordinates, the displacement and tilts of initialRingDisplacement: the node set to them starts at the
+    # quasi-static displacement under (Fr, Fa), which the shaft then keeps (its equilibrium) within 0.5 %
+    sc, mbs, node, m_b, m_g = shaft()
+    br = eb.CreateBallBearing(mbs, "6208", m_b, m_g, model=model, initialLoad=(FR, FA), coefficientSpeeds=SPEEDS)
+    q0 = br.initialCoordinates
+    assert len(q0) == 6 and list(q0[:5]) == list(br.initialRingDisplacement) and q0[5] == 0.0
+    mbs.SetNodeParameter(node, "initialCoordinates", list(q0))
+    mbs.Assemble()
+    ss = br.SimulationSettings(2e-3)
+    mbs.SolveDynamic(ss, solverType=ss.timeIntegration.solverType)
+    ref = eb.solve_quasistatic("6208", Fr=FR, Fa=FA, ring_growth=False).displacement
+    got = br.samples()["displacement"]
+    assert got[0][0] == pytest.approx(ref[0], rel=5e-3) and got[-1][0] == pytest.approx(ref[0], rel=5e-3)
+
+
+def test_ball_element_initial_coordinates_have_the_levels_meaning():
+    # the ball element's six initial coordinates put the node at its analytic initial state, the static
+    # displacement under (Fr, 0): solve_quasistatic's at rest within the 0.5 %, tilts and spin zero
+    sc, mbs, node, m_b, m_g = shaft()
+    el = eb.CreateBallBearing(mbs, "6208", m_b, m_g, initialLoad=(FR, 0.0), stepSize=5e-6)
+    q0 = el.initialCoordinates
+    assert len(q0) == 6 and list(q0[3:]) == [0.0, 0.0, 0.0]
+    mbs.SetNodeParameter(node, "initialCoordinates", list(q0))
+    mbs.Assemble()
+    got = mbs.GetNodeOutput(node, exu.OutputVariableType.Position, exu.ConfigurationType.Initial)
+    ref = eb.solve_quasistatic("6208", Fr=FR, ring_growth=False).displacement
+    assert got[0] == pytest.approx(ref[0], rel=5e-3)

@@ -309,6 +309,14 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
         return xb, vb, wb, xc, vc
 
     @property
+    def initialCoordinates(self):
+        """The 6 initial coordinates of the inner ring's rigid-body node in the analytic initial state, for a
+        node at the outer ring's frame: displacement ``initialRingDisplacement`` [m] and rotation (0, 0, 0)
+        (any rotation parameters: the initial state has no tilt); the bearing levels' property has the same
+        meaning and length."""
+        return np.array([*self.initialRingDisplacement, 0.0, 0.0, 0.0])
+
+    @property
     def ringStableStep(self):
         """Largest stable Exudyn step [s] of the fast mode for the ring bodies:
         2/omega with omega^2 <= sum over the bearings on the ring's body of

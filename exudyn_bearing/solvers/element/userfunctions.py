@@ -13,20 +13,18 @@ from ...data import InputError
 from ...model.contact import accumulate_energy, forces
 from ...model.layout import H_E1
 from ...model.load_range import pressure_excess
+from ...model.solver_types import IMPLICIT_SOLVERS, UNSTABLE_SOLVERS, settings_solver, unstable_solver_error
 from ...model.stability import StepSizeWarning, runaway_error, step_warning
 from ...physics import hertz
 from ...physics.geometry import raceway_radii
 from . import kernels as EK
 
-#: Exudyn's implicit dynamic solvers (names of exudyn.DynamicSolverType).
-IMPLICIT_SOLVERS = ("GeneralizedAlpha", "TrapezoidalIndex2")
-#: Explicit solvers whose stability region leaves out the imaginary axis: an undamped oscillation grows at
-#: every step, and only the contacts' damping holds it below a step limit. ExplicitEuler: refused (on the
+#: UNSTABLE_SOLVERS (..model.solver_types): an undamped oscillation grows at every step, and only the
+#: contacts' damping holds it below a step limit. ExplicitEuler: refused (on the
 #: 6208 scene at 3000 N it runs away at 5 us and ends 48 % off in q_max at 1 us, 0.12 of the stable-step
 #: estimate; it needs about 1/16 of it, at first order). ExplicitMidpoint in the body mode: at most
 #: MIDPOINT_STEP_RATIO of the stable-step estimate (there: right at 0.49 and 0.55 of it, a quarter of the
 #: ball load at 0.61, unnoticed); the fast mode integrates only the rings with it, and runs right at 5 us.
-UNSTABLE_SOLVERS = ("ExplicitEuler",)
 MIDPOINT_STEP_RATIO = 0.5
 #: Explicit solvers that evaluate back in time within a run: RK67 and DVERK6 (stage times out of order),
 #: ODE23 and DOPRI5 (a rejected adaptive step is repeated from its start). The fast mode's balls only advance.
@@ -45,10 +43,10 @@ def implicit_solver_error(solver):
 def solver_error(mode, solver, step=None, stable=None):
     """The InputError for a ``solver`` (a name) the element in ``mode`` cannot run with at the Exudyn step
     ``step`` [s] (None: not known yet) and the stable-step estimate ``stable`` [s], else None."""
-    if solver in UNSTABLE_SOLVERS:
-        return InputError(f"solverType: {solver} drives the ball contacts unstable unless the step is about 1/16 "
-                          "of the stable-step estimate (its stability region leaves out the undamped contact "
-                          "oscillation); use VelocityVerlet (recommended), RK33 or RK44")
+    err = unstable_solver_error(solver, "the ball contacts", "VelocityVerlet (recommended), RK33 or RK44",
+                                " unless the step is about 1/16 of the stable-step estimate")
+    if err is not None:
+        return err
     if solver == "ExplicitMidpoint" and mode != "fast" and step is not None and step > MIDPOINT_STEP_RATIO * stable:
         return InputError(f"stepSize: ExplicitMidpoint needs a step of at most {MIDPOINT_STEP_RATIO:g} of the "
                           f"stable-step estimate, {MIDPOINT_STEP_RATIO * stable:.3g} s, got {step:.3g} s (above it the "
@@ -121,7 +119,7 @@ class UserFunctionsMixin:
         run = self._run
         run[0] = self._sys.get("dynamicSolver")
         settings = self._sys.get("simulationSettings")
-        solver = getattr(getattr(getattr(settings, "timeIntegration", None), "solverType", None), "name", "")
+        solver = settings_solver(settings)
         ti = getattr(settings, "timeIntegration", None)
         step = ((ti.endTime - ti.startTime) / max(1, ti.numberOfSteps)) if ti is not None else None
         err = solver_error(self.mode, solver, step, self.stable.dt)

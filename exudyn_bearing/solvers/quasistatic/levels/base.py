@@ -24,6 +24,7 @@ import numpy as np
 from ....data import InputError, Lubricant, load_bearing, load_lubricant
 from ....data.errors import check_finite, check_positive
 from ....model.load_range import MAX_CONTACT_PRESSURE, check_load_range
+from ....model.solver_types import IMPLICIT_SOLVERS, settings_solver, unstable_solver_error
 from ....physics import kinematics as _kin
 from ...quasistatic.solve import solve_quasistatic
 
@@ -34,8 +35,6 @@ __all__ = ["IMPLICIT_SOLVERS", "LEVEL_OPTIONS", "LevelBearing", "WS_HEADER"]
 #: Options every level takes (the ball element's names).
 LEVEL_OPTIONS = ("lubricant", "initialLoad", "loadAngle", "initialOmega", "ringGrowth", "temperatures", "hertzModel",
                  "sampleInterval", "coefficients", "coefficientSpeeds", "show")
-#: Exudyn's implicit dynamic solvers (names of exudyn.DynamicSolverType).
-IMPLICIT_SOLVERS = ("GeneralizedAlpha", "TrapezoidalIndex2")
 #: Default speeds [rad/s] of the coefficient table (damping, linear level): up to the larger of 1000 rad/s and
 #: 1.5 times the initial speed.
 DEFAULT_SPEEDS = (0.0, 100.0, 250.0, 500.0, 750.0, 1000.0)
@@ -71,6 +70,15 @@ def rigid_marker(mbs, marker, name):
     return int(marker)
 
 
+def check_solver(solver):
+    """InputError for a ``solver`` (a name) the levels cannot run with: UNSTABLE_SOLVERS (..model.solver_types),
+    which the bearing's stiffness drives unstable (the linear level at 1e-4 s ran away to forces of 1e50 N)."""
+    err = unstable_solver_error(solver, "the rings on the bearing's stiffness",
+                                "GeneralizedAlpha (recommended), TrapezoidalIndex2, RK44 or VelocityVerlet")
+    if err is not None:
+        raise err
+
+
 def _sensor_function(value):
     """An Exudyn SensorUserFunction returning ``value()``."""
     return lambda mbs, t, sensorNumbers, factors, configuration: value()
@@ -103,6 +111,8 @@ class LevelBearing:
     ``self._cage`` (angle, speed), views of the header)."""
 
     model = ""
+    #: whether the level knows its ball loads (sensors qMaxInner and qMaxOuter, samples q_max_*)
+    ballLoads = True
 
     def __init__(self, mbs, bearing, markerInnerRing, markerOuterRing, lubricant: Lubricant | str | None = None,
                  initialLoad=(0.0, 0.0), loadAngle=0.0, initialOmega=0.0, ringGrowth=True, temperatures=None,
@@ -155,6 +165,15 @@ class LevelBearing:
         self._evaluations = 0
         self._setup()
         self._add_items(mbs, show)
+
+    @property
+    def initialCoordinates(self):
+        """The 6 initial coordinates of the inner ring's rigid-body node at the operating point, for a node
+        at the outer ring's frame: displacement (d_x, d_y, d_z) [m] and rotation (theta_x, theta_y, 0) [rad]
+        (Tait-Bryan angles of a NodeRigidBodyRxyz; as small angles also the rotation vector of a
+        RotationRotationVector node); the ball element's property has the same meaning and length."""
+        d = self.initialRingDisplacement
+        return np.array([d[0], d[1], d[2], d[3], d[4], 0.0])
 
     def rotation(self):
         """5x5 map from the quasi-static solver's axes (radial load along x) to the outer-ring frame, where the
@@ -212,9 +231,9 @@ class LevelBearing:
         defs = {"innerRingForce": lambda: list(-self._rot0 @ self._out[:3]),
                 "outerRingForce": lambda: list(self._rot0 @ self._out[:3]),
                 "ringDisplacement": lambda: list(self._pose),
-                "cageSpeed": lambda: [float(self._cage[1])],
-                "qMaxInner": lambda: [float(self._qmax[0])],
-                "qMaxOuter": lambda: [float(self._qmax[1])]}
+                "cageSpeed": lambda: [float(self._cage[1])]}
+        if self.ballLoads:
+            defs.update(qMaxInner=lambda: [float(self._qmax[0])], qMaxOuter=lambda: [float(self._qmax[1])])
         self.sensors = {k: mbs.AddSensor(SensorUserFunction(
             sensorNumbers=[], factors=[], storeInternal=True, writeToFile=False,
             sensorUserFunction=_sensor_function(fn))) for k, fn in defs.items()}
@@ -236,6 +255,7 @@ class LevelBearing:
         if solver is not self._run or (t < self._t_last - 1e-12 and t <= self._t_start + 1e-12):
             self._run = solver
             self._t_start = t
+            check_solver(settings_solver(self._sys.get("simulationSettings")))
             self._restart(t)
         self._t_last = t
         self._evaluations += 1
@@ -273,6 +293,7 @@ class LevelBearing:
         name = solverType if isinstance(solverType, str) else getattr(solverType, "name", str(solverType))
         if not isinstance(getattr(exu.DynamicSolverType, name, None), exu.DynamicSolverType):
             raise InputError(f"solverType: {solverType!r} is not an exudyn.DynamicSolverType")
+        check_solver(name)
         h = check_positive("stepSize", stepSize)
         ss = exu.SimulationSettings()
         ss.timeIntegration.endTime = check_positive("endTime", endTime)
@@ -293,7 +314,8 @@ class LevelBearing:
     def samples(self) -> dict:
         """The sampled series: ``t``, ``displacement`` (n, 5) (inner ring against the outer ring, outer-ring
         frame), ``force`` (n, 5) (force and moment of the bearing on the inner ring, same frame), ``cage_angle``,
-        ``cage_speed``, ``q_max_inner``, ``q_max_outer`` and the level's own fields."""
+        ``cage_speed``, ``q_max_inner``, ``q_max_outer`` (NaN on a level without ball loads, ``ballLoads``) and the
+        level's own fields."""
         if not self._samples:
             raise RuntimeError("samples: no samples yet; run mbs.SolveDynamic first")
         a = np.array(self._samples)

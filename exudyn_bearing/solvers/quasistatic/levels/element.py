@@ -37,6 +37,7 @@ import numpy as np
 
 from ...._jit import kernel
 from ....data import MAX_FREE_CONTACT_ANGLE
+from ....data.errors import check_finite
 from ....model.operating_geometry import operating_geometry
 from ....physics import hertz as _hz
 from ..balls import B_NIR, B_NIZ, B_QI, B_QO, NB, _ring_forces
@@ -149,7 +150,7 @@ class QuasiStaticBearing(LevelBearing):
     model = "quasistatic"
 
     def __init__(self, *args, cageAngle=0.0, **options):
-        self._cage0 = float(cageAngle)
+        self._cage0 = check_finite("cageAngle", cageAngle)
         super().__init__(*args, **options)
 
     def _workspace_size(self):
