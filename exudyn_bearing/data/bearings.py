@@ -382,11 +382,18 @@ class BallBearing:
         """A copy with some fields changed (validated again)."""
         return dataclasses.replace(self, **changes)
 
-    def with_clearance(self, diametral_clearance: float) -> "BallBearing":
-        """A copy with the outer race radius changed to give P_d [m]."""
-        pd = check_finite("diametral_clearance", diametral_clearance)
+    def with_clearance(self, diametral_clearance: float, name: str = "diametral_clearance") -> "BallBearing":
+        """A copy with the outer race radius changed to give P_d [m]; an InputError on the radius
+        names ``name``, the parameter the caller was given (the CLI's ``Pd``)."""
+        pd = check_finite(name, diametral_clearance)
         ro = self.inner_race_radius + 2.0 * self.ball_radius + 0.5 * pd
-        return self.replace(outer_race_radius=ro)
+        try:
+            return self.replace(outer_race_radius=ro)
+        except InputError as e:
+            msg = str(e)
+            if not msg.startswith("outer_race_radius:"):
+                raise
+            raise InputError(f"{name}: {pd:g} m;" + msg[len("outer_race_radius:"):]) from None
 
     def to_dict(self) -> dict:
         """Plain JSON-able dict (the format of ``catalog.json``; the angle in
