@@ -100,7 +100,7 @@ def static_result(b, fr, fa, mx=0.0, my=0.0, tilt="fixed", omega=None, film="hd"
 def run(args):
     b = bearing_from_args(args)
     if args.Pd is not None:
-        b = b.with_clearance(args.Pd)
+        b = b.with_clearance(args.Pd, name="Pd")
     omega = omega_from_args(args)
     with explained(b):
         res = static_result(b, args.Fr, args.Fa, args.Mx, args.My, args.tilt, omega, args.film, args.hertz,

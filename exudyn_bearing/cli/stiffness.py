@@ -26,7 +26,6 @@ from ..solvers.quasistatic.kinematics import CONTROLS
 from .common import (add_bearing_argument, add_hold_arguments, add_lubricant_argument, add_load_arguments,
                      add_ring_growth_argument, add_traction_argument, bearing_from_args, explained, finite_float,
                      fixed_from_args, lubricant_from_args, solver_header, traction_from_args)
-from .quasistatic import check_solution_pressures
 
 RPM = 2.0 * math.pi / 60.0
 
@@ -102,20 +101,16 @@ def run(args):
         raise InputError("plot: draws a table over speeds; give --speeds or --rpms")
     b = bearing_from_args(args)
     if args.Pd is not None:
-        b = b.with_clearance(args.Pd)
+        b = b.with_clearance(args.Pd, name="Pd")
     lub, traction = lubricant_from_args(args, b), traction_from_args(args, b)
     opts = dict(control=args.control, traction=traction, lubricant=lub, ring_growth=args.ring_growth,
                 fixed=fixed_from_args(args))
     loads = dict(Fr=args.Fr, Fa=args.Fa, Mx=args.Mx, My=args.My, Fy=args.Fy)
-    what = f"F_r = {args.Fr:g} N, F_a = {args.Fa:g} N at omega = %g rad/s"
     header = solver_header(lub, traction, args.ring_growth)
     if args.speeds is not None or args.rpms is not None:
         speeds = np.array(args.speeds) if args.speeds is not None else np.array(args.rpms) * RPM
         with explained(b):
             c = bearing_coefficients(b, speeds, n_phases=args.phases, **loads, **opts)
-            # the elastic-contact limit at the lowest and the highest speed (inner and outer contacts peak there)
-            for w in {float(speeds[0]), float(speeds[-1])}:
-                check_solution_pressures(solve_quasistatic(b, omega=w, stiffness=False, **loads, **opts), what % w)
         d = c.to_dict()
         d["rpm"] = c.rpm().tolist()
         d["units"]["rpm"] = "1/min"
@@ -144,7 +139,6 @@ def run(args):
         else:
             c = None
         s = solve_quasistatic(b, omega=omega, **loads, **opts)
-    check_solution_pressures(s, what % omega)
     if c is None:
         kmat, cmat = s.stiffness, s.damping
     kmat, cmat = np.asarray(kmat) + 0.0, np.asarray(cmat) + 0.0   # no signed zeros in the output

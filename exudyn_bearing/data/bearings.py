@@ -382,11 +382,19 @@ class BallBearing:
         """A copy with some fields changed (validated again)."""
         return dataclasses.replace(self, **changes)
 
-    def with_clearance(self, diametral_clearance: float) -> "BallBearing":
-        """A copy with the outer race radius changed to give P_d [m]."""
-        pd = check_finite("diametral_clearance", diametral_clearance)
+    def with_clearance(self, diametral_clearance: float, name: str | None = None) -> "BallBearing":
+        """A copy with the outer race radius changed to give P_d [m]. An InputError on that radius
+        names ``name`` when given (the parameter the caller was given: the CLI's ``Pd``), else the
+        radius."""
+        pd = check_finite(name or "diametral_clearance", diametral_clearance)
         ro = self.inner_race_radius + 2.0 * self.ball_radius + 0.5 * pd
-        return self.replace(outer_race_radius=ro)
+        try:
+            return self.replace(outer_race_radius=ro)
+        except InputError as e:
+            msg = str(e)
+            if name is None or not msg.startswith("outer_race_radius:"):
+                raise
+            raise InputError(f"{name}: {pd:g} m;" + msg[len("outer_race_radius:"):]) from None
 
     def to_dict(self) -> dict:
         """Plain JSON-able dict (the format of ``catalog.json``; the angle in

@@ -24,7 +24,7 @@ from ..physics import hertz
 from ..physics.geometry import raceway_radii
 from ..physics.load_distribution import StaticSolution, static_equilibrium
 
-__all__ = ["MAX_CONTACT_PRESSURE", "contact_pressures", "check_load_range", "pressure_excess", "check_pressures",
+__all__ = ["MAX_CONTACT_PRESSURE", "contact_pressures", "check_load_range", "check_load_estimate", "pressure_excess", "check_pressures",
            "check_run_pressures", "ContactPressureWarning", "SUSTAINED_FRACTION"]
 
 #: Largest accepted Hertz pressure [Pa] (ISO 76: 4200 MPa, the contact stress of
@@ -70,15 +70,7 @@ def check_load_range(bearing: BallBearing, radial_load: float, axial_load: float
     if solution is None:
         if not (fr > 0.0 or fa > 0.0 or b.diametral_clearance < 0.0):
             return None
-        # estimate: Stribeck's 5 F / Z on one ball, at the free contact angle (at least 10 degrees for Fa)
-        a0 = b.free_contact_angle
-        q_est = 5.0 * (fr / math.cos(a0) + fa / math.sin(max(a0, math.radians(10.0)))) / b.n_balls
-        if q_est > 0.0:
-            p_est = _pressure_at(b, q_est, a0, hertz_method)
-            if p_est > 3.0 * limit:
-                raise InputError(f"{name}: F_r = {fr:g} N, F_a = {fa:g} N put about {p_est / 1e9:.3g} GPa on the "
-                                 f"races, far above {limit / 1e9:g} GPa, the limit of the elastic contact model "
-                                 "(ISO 76 static load rating): reduce the load")
+        check_load_estimate(b, fr, fa, hertz_method, names)
         solution = static_equilibrium(b, fr, fa, phase=phase, hertz_method=hertz_method)
     p_in, p_out = contact_pressures(solution)
     worst = max(float(np.max(p_in, initial=0.0)), float(np.max(p_out, initial=0.0)))
@@ -90,6 +82,27 @@ def check_load_range(bearing: BallBearing, radial_load: float, axial_load: float
                          f"{float(np.max(solution.q)):.4g} N), above {limit / 1e9:g} GPa, the limit of the elastic "
                          "contact model (ISO 76 static load rating): reduce the load")
     return solution
+
+
+def check_load_estimate(bearing: BallBearing, radial_load: float, axial_load: float = 0.0,
+                        hertz_method: str = "exact", names=("Fr", "Fa", "Pd")) -> None:
+    """InputError (starting with the load's name, ``names`` as in
+    :func:`check_load_range`) when an estimate of the contact pressure, Stribeck's
+    5 F / Z on one ball at the free contact angle (at least 10 degrees for the
+    axial load), exceeds three times :data:`MAX_CONTACT_PRESSURE`: loads so far
+    outside that an equilibrium solver may not converge there. No solve; the
+    loads in range are checked on the solution."""
+    b = bearing
+    fr, fa = float(radial_load), float(axial_load)
+    limit = MAX_CONTACT_PRESSURE
+    a0 = b.free_contact_angle
+    q_est = 5.0 * (abs(fr) / math.cos(a0) + abs(fa) / math.sin(max(a0, math.radians(10.0)))) / b.n_balls
+    if q_est > 0.0:
+        p_est = _pressure_at(b, q_est, a0, hertz_method)
+        if p_est > 3.0 * limit:
+            raise InputError(f"{_load_name(abs(fr), abs(fa), names)}: F_r = {fr:g} N, F_a = {fa:g} N put about "
+                             f"{p_est / 1e9:.3g} GPa on the races, far above {limit / 1e9:g} GPa, the limit of the "
+                             "elastic contact model (ISO 76 static load rating): reduce the load")
 
 
 def _pressure_at(b: BallBearing, q: float, alpha: float, hertz_method: str) -> float:

@@ -26,7 +26,7 @@ import numpy as np
 
 __all__ = ["AIR_FREE_CONVECTION", "BEARING_STEEL_CONDUCTIVITY", "constriction_conductance", "contact_heat_share",
            "flat_plate_heat_transfer", "network_heat_out", "network_temperatures", "oil_enthalpy_flow",
-           "prandtl_number"]
+           "oil_through_flow_speed", "prandtl_number"]
 
 #: Thermal conductivity of through-hardened bearing steel [W/(m K)]: AISI 52100 about 43-46 and
 #: M-50 about 36 near room temperature (Harris & Kotzalas [1]_, Vol. 1, bearing materials; handbook
@@ -69,6 +69,23 @@ def flat_plate_heat_transfer(conductivity, speed, kinematic_viscosity, prandtl, 
     nu_mix = (0.037 * re ** 0.8 - 871.0) * pr3
     h = np.where(re <= 5e5, nu_lam, nu_mix) * conductivity / length
     return h if np.ndim(h) else float(h)
+
+
+def oil_through_flow_speed(volume_flow, r_inner, r_outer, n_balls, ball_radius):
+    """Mean axial speed [m/s] of the oil flowing through a bearing, u = Q / A, with A the free
+    annulus between the raceways, pi (r_o^2 - r_i^2) minus the Z ball sections pi R_b^2 (mass
+    conservation; volume flow Q [m^3/s], raceway radii r_i, r_o [m]).
+
+    The oil of a jet-lubricated bearing washes the rings and the balls at this speed also when
+    nothing turns: the solver takes the larger of it and the rotation-driven speed as the speed of
+    :func:`flat_plate_heat_transfer` (an assumption of this package: a plug flow through the whole
+    free annulus, the least speed a flow Q gives there; Harris & Kotzalas [1]_ give the convection
+    of the rotating parts only, which vanishes at rest).
+    """
+    area = np.pi * (np.asarray(r_outer, dtype=float) ** 2 - np.asarray(r_inner, dtype=float) ** 2) \
+        - n_balls * np.pi * np.asarray(ball_radius, dtype=float) ** 2
+    u = np.asarray(volume_flow, dtype=float) / area
+    return u if np.ndim(u) else float(u)
 
 
 def constriction_conductance(a, b, k1, k2):

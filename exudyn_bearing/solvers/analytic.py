@@ -10,7 +10,7 @@ import math
 
 import numpy as np
 
-from ..data import BallBearing, InputError, Lubricant, default_lubricant
+from ..data import BallBearing, InputError, Lubricant, default_lubricant, load_bearing
 from ..model.load_range import check_load_range
 from ..physics import damping, ehl, friction, hertz, kinematics
 from ..physics.geometry import raceway_radii
@@ -27,12 +27,13 @@ def _check_speed(name, value):
     return v
 
 
-def bearing_info(bearing: BallBearing, omega=None, hertz_method="exact") -> dict:
+def bearing_info(bearing: BallBearing | str, omega=None, hertz_method="exact") -> dict:
     """Geometry, derived values, Hertz constants and (at speed) kinematics.
 
     Parameters
     ----------
-    bearing : BallBearing
+    bearing : BallBearing or str
+        Geometry (catalogue name or JSON file, :func:`~exudyn_bearing.data.load_bearing`).
     omega : float, optional
         Inner-ring speed [rad/s], outer ring fixed.
     hertz_method : str
@@ -47,7 +48,7 @@ def bearing_info(bearing: BallBearing, omega=None, hertz_method="exact") -> dict
         ``ball_spin_relative`` [rad/s], ``rolling_speed`` [m/s] and ``ftf``,
         ``bpfo``, ``bpfi``, ``bsf`` [Hz].
     """
-    b = bearing
+    b = load_bearing(bearing)
     alpha = b.free_contact_angle
     ki, ko, kn = race_stiffness(b, alpha, hertz_method)
     ca = math.cos(alpha)
@@ -155,7 +156,7 @@ def lubrication_map(solution: StaticSolution, omega_inner: float, omega_outer: f
     return out
 
 
-def static_analysis(bearing: BallBearing, radial_load: float, axial_load: float = 0.0,
+def static_analysis(bearing: BallBearing | str, radial_load: float, axial_load: float = 0.0,
                     omega: float | None = None, film: str = "hd",
                     lubricant: Lubricant | None = None, hertz_method: str = "exact",
                     phase: float = 0.0, moment=(0.0, 0.0)) -> dict:
@@ -169,7 +170,8 @@ def static_analysis(bearing: BallBearing, radial_load: float, axial_load: float 
     (the ``static`` and ``quasistatic`` commands); a nonzero ``moment``
     here is refused.
 
-    ``phase`` (azimuth of ball 0) is taken modulo 2 pi. Loads whose contact
+    ``bearing``: a BallBearing, catalogue name or JSON file. ``phase``
+    (azimuth of ball 0) is taken modulo 2 pi. Loads whose contact
     pressure exceeds the elastic range (:mod:`exudyn_bearing.model.load_range`)
     raise InputError.
 
@@ -180,6 +182,7 @@ def static_analysis(bearing: BallBearing, radial_load: float, axial_load: float 
     ``h_min_inner``, ``h_min_outer`` [m], ``lambda_inner``, ``lambda_outer``
     and the rest of :func:`lubrication_map`.
     """
+    bearing = load_bearing(bearing)  # a BallBearing, catalogue name or JSON file
     mx, my = (float(v) for v in moment)
     if mx != 0.0 or my != 0.0:
         raise InputError("moment: static_analysis holds the inner ring's tilt at zero (translation-only "

@@ -50,6 +50,7 @@ from ...physics.geometry import _raceway_radii_cos
 from ...physics.load_distribution import check_axial_load
 from . import kinematics as km
 from .balls import B_CR, B_CZ, B_DI, B_DO, B_NIR, B_NIZ, B_NOR, B_NOZ, B_QI, B_QO
+from ...model.load_range import MAX_CONTACT_PRESSURE, check_load_estimate, check_pressures
 from ...model.operating_geometry import operating_geometry
 from .damping import condensed_matrices, contact_damping
 from .ring import DOF_NAMES, LOAD_NAMES, RingProblem, solve_ring
@@ -240,6 +241,9 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
         if loads[2] == 0.0:
             raise InputError("Fa: a single angular-contact bearing needs an axial load to locate its inner ring "
                              "axially (got 0 N; or hold delta_a with fixed=)")
+    # loads far beyond the elastic contact model, before the solve (which may not converge there)
+    check_load_estimate(b, fr, loads[2], hertz_method)
+    what = f"F_r = {fr:g} N, F_a = {loads[2]:g} N at omega = {w_i:g} rad/s"
     geom = operating_geometry(b, w_i, w_o, ring_growth, fit, temperatures)
     if geom.operating_clearance < -2.0 * 0.01 * geom.r_b:
         cause = _interference_cause(b, w_i, w_o, ring_growth, fit, temperatures, -2.0 * 0.01 * geom.r_b)
@@ -299,65 +303,71 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
     it_total = 0
     phases = ["race"] + ([control] if control in ("min-energy", "equilibrium") and moving else [])
     prob = balls = geo = cs = None
-    for stage in phases:
-        tol = 1e-10 if stage == "race" else 1e-7
-        for _it in range(40 if stage == "race" else 12):
-            it_total += 1
-            g_mom = inertia * kin[:, 0] * kin[:, 1]        # J omega_m w_r: moment about e_psi [N m]
-            fto = np.zeros(z)
-            fti = np.zeros(z)
-            for j in range(z):
+    try:  # a singular ring or kinematics system: loads far beyond what the contacts carry
+        for stage in phases:
+            tol = 1e-10 if stage == "race" else 1e-7
+            for _it in range(40 if stage == "race" else 12):
+                it_total += 1
+                g_mom = inertia * kin[:, 0] * kin[:, 1]        # J omega_m w_r: moment about e_psi [N m]
+                fto = np.zeros(z)
+                fti = np.zeros(z)
+                for j in range(z):
+                    if stage == "equilibrium":
+                        # the transverse tractions the traction model gives at the current kinematics
+                        c = km.ball_contacts(kin[j], geo[j], model, n_strips, n_across)
+                        fto[j], fti[j] = c[0, 7], c[1, 7]
+                    elif stage == "min-energy":
+                        fto[j] = fti[j] = 0.5 * g_mom[j] / geom.r_b
+                    elif controls[j] == "inner":
+                        fti[j] = g_mom[j] / geom.r_b
+                    else:
+                        fto[j] = g_mom[j] / geom.r_b
+                prob = RingProblem(psi, geom, mass * kin[:, 0] ** 2, fto, fti, e_prime, method, loads)
+                u, resid, balls = solve_ring(prob, free, values, u, b, cold=cold)
+                cold = False
+                cs = _contact_state(geom, balls, e_prime, method)
+                if not moving:  # no race turns relative to the other: the balls turn with both rings as one body
+                    kin[:] = (w_i, 0.0, 0.0, 0.0)
+                    break
+                new = kin.copy()
+                geo = np.zeros((z, len(km.GEO_FIELDS)))
+                for j in range(z):
+                    geo[j] = _geo_vector(w_o, w_i, balls[j], geom, rd_o, rd_i, cs, j, kin[j], lub, e_prime, u_min)
+                    loaded = balls[j, B_QO] > 0.0 and balls[j, B_QI] > 0.0
+                    race = control if control in ("outer", "inner") else (
+                        "outer" if (not loaded or km.jones_outer_controls(geo[j])) else "inner")
+                    if stage == "race":
+                        controls[j] = race if loaded else "outer"
+                        new[j, :3] = km.race_control(geo[j], controls[j])
+                    elif stage == "equilibrium":
+                        if not loaded:
+                            controls[j], checks[j] = "cage", None
+                            continue
+                        same = next((i for i in range(j) if np.allclose(geo[i], geo[j], rtol=1e-12, atol=0.0)), None)
+                        if same is not None:
+                            new[j], checks[j] = new[same], checks[same]
+                        else:
+                            new[j], checks[j] = km.traction_equilibrium(geo[j], model, n_strips, n_across, kin[j],
+                                                                        inertia)
+                        controls[j] = "equilibrium" if checks[j]["converged"] else "cage"
+                    elif loaded:
+                        controls[j] = "min-energy"
+                        same = next((i for i in range(j) if np.allclose(geo[i], geo[j], rtol=1e-12, atol=0.0)), None)
+                        if same is not None:
+                            new[j], checks[j] = new[same], checks[same]
+                        else:
+                            new[j, :3], checks[j] = km.minimum_energy(geo[j], model, n_strips, n_across, kin[j])
                 if stage == "equilibrium":
-                    # the transverse tractions the traction model gives at the current kinematics
-                    c = km.ball_contacts(kin[j], geo[j], model, n_strips, n_across)
-                    fto[j], fti[j] = c[0, 7], c[1, 7]
-                elif stage == "min-energy":
-                    fto[j] = fti[j] = 0.5 * g_mom[j] / geom.r_b
-                elif controls[j] == "inner":
-                    fti[j] = g_mom[j] / geom.r_b
-                else:
-                    fto[j] = g_mom[j] / geom.r_b
-            prob = RingProblem(psi, geom, mass * kin[:, 0] ** 2, fto, fti, e_prime, method, loads)
-            u, resid, balls = solve_ring(prob, free, values, u, b, cold=cold)
-            cold = False
-            cs = _contact_state(geom, balls, e_prime, method)
-            if not moving:  # no race turns relative to the other: the balls turn with both rings as one body
-                kin[:] = (w_i, 0.0, 0.0, 0.0)
-                break
-            new = kin.copy()
-            geo = np.zeros((z, len(km.GEO_FIELDS)))
-            for j in range(z):
-                geo[j] = _geo_vector(w_o, w_i, balls[j], geom, rd_o, rd_i, cs, j, kin[j], lub, e_prime, u_min)
-                loaded = balls[j, B_QO] > 0.0 and balls[j, B_QI] > 0.0
-                race = control if control in ("outer", "inner") else (
-                    "outer" if (not loaded or km.jones_outer_controls(geo[j])) else "inner")
-                if stage == "race":
-                    controls[j] = race if loaded else "outer"
-                    new[j, :3] = km.race_control(geo[j], controls[j])
-                elif stage == "equilibrium":
-                    if not loaded:
-                        controls[j], checks[j] = "cage", None
-                        continue
-                    same = next((i for i in range(j) if np.allclose(geo[i], geo[j], rtol=1e-12, atol=0.0)), None)
-                    if same is not None:
-                        new[j], checks[j] = new[same], checks[same]
-                    else:
-                        new[j], checks[j] = km.traction_equilibrium(geo[j], model, n_strips, n_across, kin[j],
-                                                                    inertia)
-                    controls[j] = "equilibrium" if checks[j]["converged"] else "cage"
-                elif loaded:
-                    controls[j] = "min-energy"
-                    same = next((i for i in range(j) if np.allclose(geo[i], geo[j], rtol=1e-12, atol=0.0)), None)
-                    if same is not None:
-                        new[j], checks[j] = new[same], checks[same]
-                    else:
-                        new[j, :3], checks[j] = km.minimum_energy(geo[j], model, n_strips, n_across, kin[j])
-            if stage == "equilibrium":
-                _carry_by_cage(new, controls, geo)
-            change = np.abs(new - kin).max() / wref
-            kin = new
-            if change < tol:
-                break
+                    _carry_by_cage(new, controls, geo)
+                change = np.abs(new - kin).max() / wref
+                kin = new
+                if change < tol:
+                    break
+    except np.linalg.LinAlgError:
+        raise InputError(f"{_load_name(loads, fixed)}: the quasi-static equilibrium is singular at {what} (no "
+                         "ring pose or ball kinematics carries it): loads this far exceed the limit of the elastic "
+                         f"contact model, {MAX_CONTACT_PRESSURE / 1e9:g} GPa (ISO 76 static load rating): reduce "
+                         "the load") from None
     # final contact results
     out = _ball_results(b, geom, psi, balls, cs, kin, geo, model, n_strips, n_across, w_i, w_o, rd_o, rd_i,
                         lub, e_prime, mass, inertia, controls, moving, prob.fto, prob.fti)
@@ -368,6 +378,8 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
                          "may be too steep or too weak to hold the balls: try more regularisation, or "
                          "control='min-energy'")
     _check_shoulders(b, geom, balls, cs, loads, prob, shoulder_angle)
+    # the elastic-contact limit on the load sharing found (one ball may carry more than the estimate)
+    check_pressures(out["p_max_inner"], out["p_max_outer"], _load_name(loads, fixed), what)
     # normal damping of every contact (the contact model's, at its load and film) and the 5x5 matrices
     out.update(contact_damping(balls, cs["a_i"], cs["a_o"], out["h_min_inner"], out["h_min_outer"], geom.r_b,
                                b.material.hysteretic_damping, lub))
@@ -524,6 +536,14 @@ def _ball_results(b, geom, psi, balls, cs, kin, geo, model, n_strips, n_across, 
         out["h_central_outer"][j], out["h_min_outer"][j] = geo[j, km.G_HCO], geo[j, km.G_HMO]
         out["h_central_inner"][j], out["h_min_inner"][j] = geo[j, km.G_HCI], geo[j, km.G_HMI]
     return out
+
+
+def _load_name(loads, fixed):
+    """The input to name when the contacts leave the elastic range: the largest load (N and N m as given),
+    else the held DOFs or the speed."""
+    if np.any(loads != 0.0):
+        return LOAD_NAMES[int(np.argmax(np.abs(loads)))]
+    return "fixed" if fixed else "omega"
 
 
 def _check_shoulders(b, geom, balls, cs, loads, prob, limit):

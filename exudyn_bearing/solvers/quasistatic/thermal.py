@@ -16,7 +16,8 @@ Each iteration (a fixed point, relaxed by the secant slope of the mean temperatu
    ball and half to the ring (Blok's partition for two steel surfaces moving through the contact
    at the same rolling speed, :func:`~exudyn_bearing.physics.thermal.contact_heat_share`); every
    other component (drag, and churning or cage friction where reported) to the oil;
-5. conductances (ball-ring contacts by constriction, the surfaces to the oil by convection, the
+5. conductances (ball-ring contacts by constriction, the surfaces to the oil by convection at the
+   larger of their speed relative to the oil and the oil's through-flow speed, the
    rings to the ambient) and the steady network (:func:`~exudyn_bearing.physics.thermal.network_temperatures`).
 
 It stops when the temperatures change by less than ``tolerance`` [K] between iterations. A
@@ -143,7 +144,7 @@ def _default_ambient_conductance(b) -> dict:
             "outer": th.AIR_FREE_CONVECTION * 2.0 * math.pi * 2.0 * r_o * 4.0 * d}
 
 
-def _network(b, sol, losses, oil, t_inlet, t_amb, m_dot, g_amb, k_solid):
+def _network(b, sol, losses, oil, t_inlet, t_amb, m_dot, q_vol, g_amb, k_solid):
     """Heat sources, conductance matrices and boundaries of the network at one quasi-static solution."""
     bl = sol.balls
     r_b = b.ball_radius
@@ -166,8 +167,12 @@ def _network(b, sol, losses, oil, t_inlet, t_amb, m_dot, g_amb, k_solid):
     r_i, r_o = b.pitch_radius - r_b, b.pitch_radius + r_b
     width = RING_WIDTH_PER_BALL_DIAMETER * d
 
+    # the oil's through-flow washes the surfaces also at rest: the larger of it and the rotation's speed
+    u_flow = th.oil_through_flow_speed(q_vol, r_i, r_o, z, r_b)
+
     def h(speed):
-        return th.flat_plate_heat_transfer(oil["thermal_conductivity"], speed, oil["kinematic_viscosity"], pr, d)
+        return th.flat_plate_heat_transfer(oil["thermal_conductivity"], np.maximum(np.abs(speed), u_flow),
+                                           oil["kinematic_viscosity"], pr, d)
 
     g_io = h((sol.omega - w_m) * r_i) * 2.0 * math.pi * r_i * width
     g_oo = h((sol.omega_outer - w_m) * r_o) * 2.0 * math.pi * r_o * width
@@ -289,7 +294,7 @@ def solve_thermal(bearing, Fr=0.0, Fa=0.0, *, omega, oil_inlet_temperature, oil_
                                 temperatures={"inner": float(temps[0]), "outer": float(temps[1]),
                                               "ball": float(temps[2])}, **quasistatic)
         losses = power_losses(sol, b, lub, oil_volume_fraction=oil_volume_fraction, oil_density=oil["density"])
-        heat, G, gb, tb, cond = _network(b, sol, losses, oil, t_in, t_amb, m_dot, g_amb, k_solid)
+        heat, G, gb, tb, cond = _network(b, sol, losses, oil, t_in, t_amb, m_dot, q_vol, g_amb, k_solid)
         try:
             t_new = th.network_temperatures(G, heat, gb, tb)
         except np.linalg.LinAlgError:
