@@ -65,6 +65,8 @@ SCRIPTS = [
     ("levels_work_precision.py", []),
     ("mutation_run.py", ["--quick"]),
     ("profile_reference.py", []),
+    ("bench_levels.py", ["--repeat", "3"]),
+    ("bench_kernel_ab.py", []),
 ]
 
 
@@ -163,6 +165,12 @@ def section_new_checks():
                                       "ball-pass frequency and its harmonics."),
              ("levels/levels_rotor.png", "the rotor scenario at the three levels.")], last_lines=40)
         + section_printed(
+            "Cost of the bearing levels", "bench_levels.py",
+            "Wall time per simulated second of the ball element (body and fast mode) and of the two levels "
+            "without ball degrees of freedom on a 2.5 kg shaft on one 6208 at 3000 N and 500 rad/s, medians of "
+            "three runs, and the two-bearing run-up of scenarios/rotor_two_6208.py built with each level.",
+            last_lines=30)
+        + section_printed(
             "Varying compliance against the published theory", "levels_published_vc.py",
             "The quasi-static level's ball-pass motion against the rigid-ring Hertz theory of Sunnersjo (1978) "
             "in closed form (docs/theory/varying_compliance.md): the two boundary positions, the orbit over a "
@@ -193,6 +201,11 @@ def section_new_checks():
             "The 6208's dissipation at 1 rad/s (the engines' least rolling speed, since fixed) and the 7208's "
             "orbital speed above half the ring speed under outer-race control (a real result, against the closed "
             "form).", last_lines=40)
+        + section_printed(
+            "Step time against the code before this session's kernel work", "bench_kernel_ab.py",
+            "The reference engine's step on the two headline settings of bench_reference.py, this code against "
+            "e61f1e5 (before the semi-axes from the overlap and ln(xi E') once per evaluation), both in one "
+            "process, interleaved rounds, medians; the new/new control is the noise floor.", last_lines=20)
         + section_printed(
             "Where the reference engine's step time goes", "profile_reference.py",
             "The bench_reference scene (6208, 3000 N, 500 rad/s, cage, lubrication, tangential history) in steady "
