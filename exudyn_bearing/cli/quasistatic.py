@@ -161,3 +161,5 @@ def print_ball_table(bl):
     print(f"{'':>4} " + " ".join(f"{'[' + u + ']':>{w}}" for _h, u, w, _f in _COLUMNS))
     for j in range(len(bl["psi"])):
         print(f"{j:>4} " + " ".join(f"{f(bl, j):>{w}}" for _h, _u, w, f in _COLUMNS))
+    print("w_ball: the ball's spin about its own axis in the frame orbiting with the ball (the dynamic summaries' "
+          "ball_spin is taken in the fixed frame: w_ball - w_orbit for a radial bearing)")
