@@ -251,6 +251,8 @@ def run_rk4(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, f
     y0vc = vc.copy()
     y0r = ring.copy()
     n_samp = np.int64(0)  # not the literal 0: that compiled a second copy of _store
+    # the stage numbers as int64 values, not literals: each literal compiled a copy of _rk_stage and _rk_set
+    s0, s1, s2, s3 = np.int64(0), np.int64(1), np.int64(2), np.int64(3)
     for step in range(n_steps):
         t = t0 + step * dt
         y0x[:, :] = xb
@@ -260,21 +262,21 @@ def run_rk4(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, f
         y0vc[:, :] = vc
         y0r[:] = ring
         worst = _rk_stage(t, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc, fr, fring, glob, diag,
-                          cage_load, kx, kv, kw, kxc, kvc, kr, 0, defect_path, ellipse_path)
+                          cage_load, kx, kv, kw, kxc, kvc, kr, s0, defect_path, ellipse_path)
         accumulate_energy(glob, dt / 6.0)
         if worst > p[P_MAX_OVERLAP] or not math.isfinite(worst):
             return step, n_samp, 2
-        _rk_set(y0x, y0v, y0w, y0xc, y0vc, y0r, kx, kv, kw, kxc, kvc, kr, 0, 0.5 * dt, xb, vb, wb, xc, vc, ring)
+        _rk_set(y0x, y0v, y0w, y0xc, y0vc, y0r, kx, kv, kw, kxc, kvc, kr, s0, 0.5 * dt, xb, vb, wb, xc, vc, ring)
         _rk_stage(t + 0.5 * dt, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc, fr, fring, glob, diag,
-                  cage_load, kx, kv, kw, kxc, kvc, kr, 1, defect_path, ellipse_path)
+                  cage_load, kx, kv, kw, kxc, kvc, kr, s1, defect_path, ellipse_path)
         accumulate_energy(glob, dt / 3.0)
-        _rk_set(y0x, y0v, y0w, y0xc, y0vc, y0r, kx, kv, kw, kxc, kvc, kr, 1, 0.5 * dt, xb, vb, wb, xc, vc, ring)
+        _rk_set(y0x, y0v, y0w, y0xc, y0vc, y0r, kx, kv, kw, kxc, kvc, kr, s1, 0.5 * dt, xb, vb, wb, xc, vc, ring)
         _rk_stage(t + 0.5 * dt, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc, fr, fring, glob, diag,
-                  cage_load, kx, kv, kw, kxc, kvc, kr, 2, defect_path, ellipse_path)
+                  cage_load, kx, kv, kw, kxc, kvc, kr, s2, defect_path, ellipse_path)
         accumulate_energy(glob, dt / 3.0)
-        _rk_set(y0x, y0v, y0w, y0xc, y0vc, y0r, kx, kv, kw, kxc, kvc, kr, 2, dt, xb, vb, wb, xc, vc, ring)
+        _rk_set(y0x, y0v, y0w, y0xc, y0vc, y0r, kx, kv, kw, kxc, kvc, kr, s2, dt, xb, vb, wb, xc, vc, ring)
         _rk_stage(t + dt, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc, fr, fring, glob, diag,
-                  cage_load, kx, kv, kw, kxc, kvc, kr, 3, defect_path, ellipse_path)
+                  cage_load, kx, kv, kw, kxc, kvc, kr, s3, defect_path, ellipse_path)
         accumulate_energy(glob, dt / 6.0)
         c = dt / 6.0
         for j in range(z):
