@@ -35,6 +35,29 @@ def test_rolling_speed_floor_checked():
         eb.solve_quasistatic("6208", Fr=3000.0, omega=1.0, rolling_speed_floor=-0.1)
 
 
+def test_quasistatic_default_floor_is_the_engines_floor():
+    # one default in every solver: without rolling_speed_floor the quasi-static solver takes the engines'
+    # ellipse-level floor, min(regularizing speed, half the kinematic inner rolling speed). Hand value for the
+    # 6208 (alpha = 0) at 1 rad/s, outer ring at rest: omega_c = omega (1 - R_b / r_p) / 2, the inner race moves
+    # at (omega - omega_c)(r_p - R_b) relative to the cage (Harris & Kotzalas), half of it ~ 0.0073 m/s
+    b = eb.load_bearing("6208")
+    omega = 1.0
+    w_c = 0.5 * omega * (1.0 - b.ball_radius / b.pitch_radius)
+    hand = 0.5 * (omega - w_c) * (b.pitch_radius - b.ball_radius)
+    floor = eb.model.scenario.rolling_speed_floor(b, omega)
+    assert floor == pytest.approx(hand, rel=1e-12)
+    assert eb.model.scenario.ellipse_rolling_floor(b, eb.Scenario(omega=omega)) == floor
+    # at 500 rad/s half the rolling speed (3.6 m/s) is above 0.1 m/s: the regularizing speed is the floor
+    assert eb.model.scenario.rolling_speed_floor(b, 500.0) == eb.Scenario().regularizing_speed
+    # the solver's default is that floor: the same solution as passing it, not as passing a larger one
+    kw = dict(Fr=3000.0, omega=omega, control="equilibrium", fixed=HELD, stiffness=False)
+    s_default = eb.solve_quasistatic("6208", **kw)
+    s_floor = eb.solve_quasistatic("6208", rolling_speed_floor=floor, **kw)
+    s_large = eb.solve_quasistatic("6208", rolling_speed_floor=0.1, **kw)
+    assert s_default.dissipation_total == s_floor.dissipation_total
+    assert abs(s_large.dissipation_total / s_default.dissipation_total - 1.0) > 0.5
+
+
 def test_outer_race_control_orbital_speed_closed_form():
     # pure rolling at both contact centres of an inner-ring-rotating ball (Harris & Kotzalas, Rolling Bearing
     # Analysis, 5th ed.): omega_m / omega = 1 / (1 + K), K = cos(beta - a_i) (1 + g cos a_o) /

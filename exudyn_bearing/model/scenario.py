@@ -24,7 +24,7 @@ from .layout import MAX_DEFECTS
 from .motion import omega_profile
 
 __all__ = ["Scenario", "FRICTION_MODELS", "INTEGRATORS", "TRACTION_LEVELS", "INITIAL_STATES", "CONTROLS",
-           "ellipse_rolling_floor"]
+           "ellipse_rolling_floor", "rolling_speed_floor", "DEFAULT_REGULARIZING_SPEED"]
 
 #: Tangential force models: Cundall-Strack spring with Coulomb cap (contact
 #: history), regularised Coulomb on the slip velocity (history-free), none.
@@ -33,6 +33,9 @@ FRICTION_MODELS = ("history", "regularized", "none")
 TRACTION_LEVELS = ("point", "ellipse")
 #: Initial states of a dynamic run.
 INITIAL_STATES = ("analytic", "rest", "quasistatic")
+#: Default ``Scenario.regularizing_speed`` [m/s]: the slip speed of regularised friction and the least
+#: rolling speed of the ellipse traction law at start-up (:func:`rolling_speed_floor`).
+DEFAULT_REGULARIZING_SPEED = 0.1
 #: Kinematic hypotheses of the quasi-static start (those of the quasi-static solver).
 CONTROLS = ("auto", "outer", "inner", "min-energy", "equilibrium")
 #: Time integrators of the reference engine.
@@ -173,7 +176,7 @@ class Scenario:
     lubrication: bool = True
     mu_dry: float = 0.1
     friction: str = "history"
-    regularizing_speed: float = 0.1
+    regularizing_speed: float = DEFAULT_REGULARIZING_SPEED
     tangential_stiffness_ratio: float = 2.0 / 3.0
     tangential: str = "explicit"
     hertz: str = "exact"
@@ -360,13 +363,23 @@ class Scenario:
 ELLIPSE_ROLLING_FLOOR_FRACTION = 0.5
 
 
-def ellipse_rolling_floor(bearing, scenario: Scenario) -> float:
-    """Least rolling speed [m/s] the ellipse-level traction law sees (kernel ``P_VREG``,
-    ``model.contact._ellipse_traction``): the scenario's ``regularizing_speed`` (start-up from rest), at
-    most ``ELLIPSE_ROLLING_FLOOR_FRACTION`` times the kinematic inner rolling speed at its ``omega``. A
-    floor above the rolling speed shrinks the slide-to-roll ratios: the 6208 at 1 rad/s rolls at 0.0145
-    m/s, and 0.1 m/s lowered its dissipation five-fold (validation/anomaly_checks.py)."""
+def rolling_speed_floor(bearing, omega, omega_outer=0.0, regularizing_speed=DEFAULT_REGULARIZING_SPEED) -> float:
+    """Least rolling speed [m/s] the ellipse-level traction law sees, in every solver: ``regularizing_speed``
+    (start-up from rest), at most ``ELLIPSE_ROLLING_FLOOR_FRACTION`` times the kinematic inner rolling speed
+    at the ring speeds ``omega``, ``omega_outer`` [rad/s] (Harris & Kotzalas' rolling speeds,
+    :func:`~exudyn_bearing.physics.kinematics.rolling_speeds`). A floor above the rolling speed shrinks the
+    slide-to-roll ratios: the 6208 at 1 rad/s rolls at 0.0145 m/s, and 0.1 m/s lowered its dissipation
+    five-fold (validation/anomaly_checks.py). The dynamic engines' kernel takes it as ``P_VREG``
+    (:func:`ellipse_rolling_floor`), the quasi-static solver as its default ``rolling_speed_floor``."""
     b = bearing
-    u_i, _u_o = _kin.rolling_speeds(scenario.omega, 0.0, b.ball_radius, b.pitch_radius, b.free_contact_angle)
+    u_i, _u_o = _kin.rolling_speeds(float(omega), float(omega_outer), b.ball_radius, b.pitch_radius,
+                                    b.free_contact_angle)
     u = ELLIPSE_ROLLING_FLOOR_FRACTION * abs(float(u_i))
-    return min(scenario.regularizing_speed, u) if u > 0.0 else scenario.regularizing_speed
+    return min(regularizing_speed, u) if u > 0.0 else regularizing_speed
+
+
+def ellipse_rolling_floor(bearing, scenario: Scenario) -> float:
+    """:func:`rolling_speed_floor` of a scenario (kernel ``P_VREG``, ``model.contact._ellipse_traction``):
+    its ``regularizing_speed`` at most half the kinematic inner rolling speed at its ``omega`` (the outer
+    ring at rest)."""
+    return rolling_speed_floor(bearing, scenario.omega, 0.0, scenario.regularizing_speed)

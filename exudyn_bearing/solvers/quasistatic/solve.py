@@ -52,6 +52,7 @@ from . import kinematics as km
 from .balls import B_CR, B_CZ, B_DI, B_DO, B_NIR, B_NIZ, B_NOR, B_NOZ, B_QI, B_QO
 from ...model.load_range import MAX_CONTACT_PRESSURE, check_load_estimate, check_pressures
 from ...model.operating_geometry import operating_geometry
+from ...model.scenario import rolling_speed_floor as _rolling_floor
 from .damping import condensed_matrices, contact_damping
 from .ring import DOF_NAMES, LOAD_NAMES, RingProblem, solve_ring
 from .solution import QuasiStaticSolution
@@ -122,7 +123,7 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
                       control="auto", traction=None, lubricant: Lubricant | str | None = None,
                       ring_growth=True, fit=0.0, temperatures=None, fixed=None, hertz_method="exact",
                       phase=0.0, n_strips=DEFAULT_N_STRIPS, n_across=DEFAULT_N_ACROSS,
-                      traction_regularizing_srr=DEFAULT_REGULARIZING_SRR, rolling_speed_floor=0.0,
+                      traction_regularizing_srr=DEFAULT_REGULARIZING_SRR, rolling_speed_floor=None,
                       shoulder_angle=MAX_FREE_CONTACT_ANGLE, stiffness=True, start=None) -> QuasiStaticSolution:
     """Quasi-static equilibrium of a ball bearing with free inner-ring DOFs, speed effects and kinematics.
 
@@ -168,18 +169,16 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
         its own regularisation rises linearly (as in the dynamic engines:
         :data:`~exudyn_bearing.data.traction.DEFAULT_REGULARIZING_SRR`; 0
         keeps it discontinuous).
-    rolling_speed_floor : float
+    rolling_speed_floor : float, optional
         Least rolling speed [m/s] of the slide-to-roll ratio the traction
-        law sees (default 0: the rolling speed itself). The dynamic engines'
-        ellipse level takes at least
-        ``model.scenario.ellipse_rolling_floor`` (their
-        ``Scenario.regularizing_speed``, 0.1 m/s, but at most half the
-        kinematic inner rolling speed, so that a steady run keeps its
-        slide-to-roll ratios): pass a floor here to compare with a run that
-        kept a larger one (a floor above the rolling speeds lowers the
-        traction and the dissipation: the 6208 at 1 rad/s rolls at
-        0.015 m/s, and 0.1 m/s cut its dissipation five-fold,
-        ``python validation/anomaly_checks.py``).
+        law sees. Default (None): the dynamic engines' ellipse-level floor,
+        :func:`~exudyn_bearing.model.scenario.rolling_speed_floor` (0.1 m/s,
+        but at most half the kinematic inner rolling speed, so that a
+        steady state keeps its slide-to-roll ratios); 0 takes the rolling
+        speed itself. A floor above the rolling speeds lowers the traction
+        and the dissipation: the 6208 at 1 rad/s rolls at 0.015 m/s, and
+        0.1 m/s cut its dissipation five-fold
+        (``python validation/anomaly_checks.py``).
     shoulder_angle : float
         Largest angle from the groove bottom that a contact ellipse may reach [rad].
     stiffness : bool
@@ -211,7 +210,10 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
     if control not in km.CONTROLS:
         raise InputError(f"control: must be one of {', '.join(km.CONTROLS)}, got {control!r}")
     srr = check_finite("traction_regularizing_srr", traction_regularizing_srr)
-    u_min = check_nonnegative("rolling_speed_floor", rolling_speed_floor)
+    if rolling_speed_floor is None:  # the dynamic engines' floor (one function for every solver)
+        u_min = _rolling_floor(b, w_i, w_o)
+    else:
+        u_min = check_nonnegative("rolling_speed_floor", rolling_speed_floor)
     if not 0.0 <= srr <= 1.0:
         raise InputError(f"traction_regularizing_srr: must lie in [0, 1], got {srr:g}")
     # None: the bearing's traction model (catalogue), else the DEM papers'; Coulomb-type laws regularised
