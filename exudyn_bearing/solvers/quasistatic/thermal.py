@@ -364,7 +364,8 @@ def solve_thermal(bearing, Fr=0.0, Fa=0.0, *, omega, oil_inlet_temperature, oil_
     loss_options = dict(loss_options or {})
     for k in ("oil_volume_fraction", "oil_density", "cage_guidance", "lubricant", "bearing"):
         if k in loss_options:
-            raise InputError(f"loss_options: {k!r} is set by solve_thermal (use its own argument), not in loss_options")
+            raise InputError(f"loss_options: {k!r} is set by solve_thermal (its own argument, or the oil's "
+                             "properties at its temperature), not in loss_options")
     loss_options.update(oil_volume_fraction=oil_volume_fraction, cage_guidance=cage_guidance)
     tm0 = get_traction_model(traction, b)
     quasistatic.setdefault("stiffness", False)
