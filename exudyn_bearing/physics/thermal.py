@@ -28,8 +28,8 @@ from __future__ import annotations
 import numpy as np
 
 __all__ = ["AIR_FREE_CONVECTION", "BEARING_STEEL_CONDUCTIVITY", "constriction_conductance", "contact_heat_share",
-           "film_conductance", "flat_plate_heat_transfer", "network_heat_out", "network_temperatures", "oil_enthalpy_flow",
-           "oil_through_flow_speed", "prandtl_number", "sphere_wall_gap_conductance"]
+           "film_conductance", "flat_plate_heat_transfer", "network_heat_out", "network_temperatures",
+           "oil_enthalpy_flow", "oil_through_flow_speed", "prandtl_number", "sphere_wall_gap_conductance"]
 
 #: Thermal conductivity of through-hardened bearing steel [W/(m K)]: AISI 52100 about 43-46 and
 #: M-50 about 36 near room temperature (Harris & Kotzalas [1]_, Vol. 1, bearing materials; handbook
