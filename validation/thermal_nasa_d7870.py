@@ -2,6 +2,7 @@
 temperatures and operating contact angle over speed and thrust (solve_thermal, docs/theory/thermal.md).
 
     python validation/thermal_nasa_d7870.py [--oil-flow M3_S] [--oil-inlet-temperature K]
+        [--cage-guidance {ball,outer_land,inner_land} --cage-pocket-clearance M]
 
 Prints a table and writes validation/out/thermal_nasa_d7870.csv, thermal_nasa_d7870.png (power loss,
 outer-ring temperature and contact angles against speed for three thrust loads) and
@@ -26,8 +27,10 @@ flow 6e-5 m^3/s (3.6 l/min) and the inlet temperature 394 K are assumptions of t
 jet-lubricated mainshaft bearing tests, changed with the flags; the traction model is the bearing's
 ``ehl_mil_l_23699_492K`` with the viscosity of the oil at the contact temperature; the balls orbit
 through air (oil volume fraction 0: the loss module's default; the oil-air mixture of the real
-bearing, not known here, would add drag); no cage (the quasi-static solver is cageless; the test
-bearing had one), so the cage friction and the skidding are not compared.
+bearing, not known here, would add drag); no cage by default (the catalogue's ACBB-120 has none; the
+test bearing had one, of a design not retrieved): ``--cage-guidance`` with ``--cage-pocket-clearance``
+adds the loss module's cage friction and the network's cage node for an assumed cage; the quasi-static
+solver stays cageless, so the skidding is not compared.
 """
 import argparse
 import csv
@@ -44,14 +47,16 @@ RPM = (7500.0, 10000.0, 12500.0, 15000.0, 17500.0, 20000.0, 22500.0, 25000.0)
 THRUST = (4448.0, 13345.0, 22240.0)  # 1000, 3000, 5000 lbf: the script's grid (the report's matrix not retrieved)
 
 
-def solve_grid(oil_flow, t_in, rpms=RPM, thrusts=THRUST):
+def solve_grid(oil_flow, t_in, rpms=RPM, thrusts=THRUST, cage=None):
+    """The grid's thermal solutions as table rows; ``cage``: keywords of solve_thermal for a cage
+    (cage_guidance, cage_pocket_clearance), none by default."""
     rows = []
     for fa in thrusts:
         prev = None
         for rpm in rpms:
             t0 = time.perf_counter()
             r = eb.solve_thermal("ACBB-120", Fa=fa, omega=rpm * math.pi / 30.0, oil_inlet_temperature=t_in,
-                                 oil_flow=oil_flow, start=prev)
+                                 oil_flow=oil_flow, start=prev, **(cage or {}))
             prev = r
             if fa == thrusts[-1] and rpm == rpms[-1]:
                 print(f"conductances at {fa:g} N, {rpm:g} rpm [W/K]: " + ", ".join(
@@ -128,8 +133,9 @@ def plot(rows, t_in, path, path_components):
     fig, axes = plt.subplots(1, 2, figsize=(12, 4.6))
     axes[0].stackplot(rpm, [[r[f"{c}_W"] / 1e3 for r in rr] for c in comps], labels=comps, alpha=0.8)
     axes[0].set_ylabel("power loss [kW]")
-    for node, style in (("inner", "r-o"), ("outer", "b-s"), ("ball", "k-^"), ("oil", "g--")):
-        axes[1].plot(rpm, [r[f"T_{node}_K"] for r in rr], style, label=node)
+    for node, style in (("inner", "r-o"), ("outer", "b-s"), ("ball", "k-^"), ("oil", "g--"), ("cage", "m-d")):
+        if f"T_{node}_K" in rr[0]:  # the cage node only with a cage
+            axes[1].plot(rpm, [r[f"T_{node}_K"] for r in rr], style, label=node)
     axes[1].axhline(t_in, color="0.5", ls=":", label="oil inlet")
     axes[1].set_ylabel("temperature [K]")
     for ax in axes:
@@ -147,16 +153,26 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--oil-flow", type=float, default=6e-5, help="m^3/s (assumed default 6e-5)")
     ap.add_argument("--oil-inlet-temperature", type=float, default=394.0, help="K (assumed default 394)")
+    ap.add_argument("--cage-guidance", choices=("none", "ball", "outer_land", "inner_land"), default="none",
+                    help="an assumed cage (default none: the catalogue's ACBB-120 is cageless)")
+    ap.add_argument("--cage-pocket-clearance", type=float, help="m, oil gap per side in the pockets (with a cage)")
     args = ap.parse_args(argv)
-    rows = solve_grid(args.oil_flow, args.oil_inlet_temperature)
+    cage = None if args.cage_guidance == "none" else {"cage_guidance": args.cage_guidance,
+                                                       "cage_pocket_clearance": args.cage_pocket_clearance}
+    rows = solve_grid(args.oil_flow, args.oil_inlet_temperature, cage=cage)
+    caged = "T_cage_K" in rows[0]
     print(f"ACBB-120, MIL-L-23699, oil in {args.oil_inlet_temperature:g} K at {args.oil_flow:g} m^3/s (assumed), "
-          "traction ehl_mil_l_23699_492K at the contact temperature, balls in air, cageless")
+          "traction ehl_mil_l_23699_492K at the contact temperature, balls in air, "
+          + (f"assumed {args.cage_guidance} cage, pocket clearance {args.cage_pocket_clearance:g} m" if caged
+             else "cageless"))
     print(f"{'Fa [N]':>7} {'rpm':>6} {'P [W]':>8} {'trac':>7} {'ehl':>7} {'hyst':>6} {'drag':>6} {'T_in':>6} "
-          f"{'T_out':>6} {'T_ball':>6} {'T_oil':>6} {'a_i':>6} {'a_o':>6} {'it':>3}")
+          f"{'T_out':>6} {'T_ball':>6} {'T_oil':>6} " + (f"{'cage':>6} {'T_cage':>6} " if caged else "")
+          + f"{'a_i':>6} {'a_o':>6} {'it':>3}")
     for r in rows:
+        cage_cols = (f"{r['cage_pocket_W'] + r['cage_land_W']:6.1f} {r['T_cage_K']:6.1f} " if caged else "")
         print(f"{r['Fa_N']:7.0f} {r['rpm']:6.0f} {r['power_loss_W']:8.1f} {r['traction_W']:7.1f} "
               f"{r['ehl_rolling_W']:7.1f} {r['hysteresis_W']:6.1f} {r['drag_W']:6.1f} {r['T_inner_K']:6.1f} "
-              f"{r['T_outer_K']:6.1f} {r['T_ball_K']:6.1f} {r['T_oil_K']:6.1f} {r['alpha_inner_deg']:6.2f} "
+              f"{r['T_outer_K']:6.1f} {r['T_ball_K']:6.1f} {r['T_oil_K']:6.1f} {cage_cols}{r['alpha_inner_deg']:6.2f} "
               f"{r['alpha_outer_deg']:6.2f} {r['iterations']:3d}")
     print("largest |energy residual| of the networks: "
           f"{max(abs(r['energy_residual_W']) for r in rows):.3g} W; all converged: {all(r['converged'] for r in rows)}")

@@ -39,7 +39,7 @@ def add_parser(sub):
                    help="part temperatures [K] for uniform thermal growth (default 293.15 K)")
     p.add_argument("--thermal", action="store_true",
                    help="solve the bearing with its thermal network (jet lubrication): temperatures of the rings, "
-                        "balls and oil consistent with the losses (needs --oil-inlet-temperature and --oil-flow; "
+                        "balls, oil and cage (a bearing with a cage) consistent with the losses (needs --oil-inlet-temperature and --oil-flow; "
                         "--lubricant then names an entry with temperature, default the bearing's)")
     p.add_argument("--oil-inlet-temperature", type=finite_float, metavar="K", help="oil inlet temperature [K] (--thermal)")
     p.add_argument("--oil-flow", type=finite_float, metavar="M3_S", help="oil flow through the bearing [m^3/s] "

@@ -19,14 +19,17 @@ References
 .. [4] H. Blok, "Theoretical study of temperature rise at surfaces of actual contact under
    oiliness lubricating conditions," Proc. General Discussion on Lubrication, IMechE, 2 (1937)
    222-235 (partition of frictional heat between the two surfaces of a moving contact).
+.. [5] G. K. Batchelor and R. W. O'Brien, "Thermal or electrical conduction through a granular
+   material," Proc. R. Soc. Lond. A 355 (1977) 313-333 (conduction through the fluid in the gap
+   between near-touching spheres: each annulus conducts across its local gap).
 """
 from __future__ import annotations
 
 import numpy as np
 
 __all__ = ["AIR_FREE_CONVECTION", "BEARING_STEEL_CONDUCTIVITY", "constriction_conductance", "contact_heat_share",
-           "flat_plate_heat_transfer", "network_heat_out", "network_temperatures", "oil_enthalpy_flow",
-           "oil_through_flow_speed", "prandtl_number"]
+           "film_conductance", "flat_plate_heat_transfer", "network_heat_out", "network_temperatures",
+           "oil_enthalpy_flow", "oil_through_flow_speed", "prandtl_number", "sphere_wall_gap_conductance"]
 
 #: Thermal conductivity of through-hardened bearing steel [W/(m K)]: AISI 52100 about 43-46 and
 #: M-50 about 36 near room temperature (Harris & Kotzalas [1]_, Vol. 1, bearing materials; handbook
@@ -101,6 +104,38 @@ def constriction_conductance(a, b, k1, k2):
     """
     r = np.sqrt(np.maximum(np.asarray(a, dtype=float), 0.0) * np.maximum(np.asarray(b, dtype=float), 0.0))
     g = 4.0 * r / (1.0 / k1 + 1.0 / k2)
+    return g if np.ndim(g) else float(g)
+
+
+def film_conductance(conductivity, area, thickness):
+    """Thermal conductance [W/K] of a fluid film of uniform thickness h [m] over the area A [m^2]
+    between two walls, conduction only (Fourier's law across the film): G = k A / h.
+
+    Used for the oil film of a cage riding on its guiding ring land (A = 2 pi r_land w_land, h the
+    radial land clearance). Validity: h small against the radius of the walls; convection inside
+    the film (a Couette film carries its heat along the walls, not across) is left out, so the film
+    is a pure conductor across its thickness; the viscous heat generated in the film is a heat
+    source of the nodes, not of this relation. k [W/(m K)], A [m^2], h [m] > 0.
+    """
+    g = np.asarray(conductivity, dtype=float) * np.asarray(area, dtype=float) / np.asarray(thickness, dtype=float)
+    return g if np.ndim(g) else float(g)
+
+
+def sphere_wall_gap_conductance(conductivity, radius, gap):
+    """Thermal conductance [W/K] of the fluid between a sphere of radius R [m] and a flat wall at the
+    least gap c [m], Batchelor & O'Brien's [5]_ parallel-column integral: the annulus at the distance
+    r from the axis conducts across its local gap h(r) = c + r^2 / (2 R) (parabolic sphere), out to
+    r = R:
+
+    G = int_0^R k 2 pi r dr / (c + r^2 / (2 R)) = 2 pi k R ln(1 + R / (2 c)).
+
+    Used for a ball in its cage pocket (the pocket wall taken flat: a conforming pocket conducts
+    more). Validity: c << R (the parabolic gap), the fluid conducting only; c -> infinity gives 0,
+    c -> 0 diverges logarithmically (a touching sphere needs the solids' constriction as well).
+    k [W/(m K)], R [m], c [m] > 0 (infinity allowed: no film).
+    """
+    r = np.asarray(radius, dtype=float)
+    g = 2.0 * np.pi * np.asarray(conductivity, dtype=float) * r * np.log1p(r / (2.0 * np.asarray(gap, dtype=float)))
     return g if np.ndim(g) else float(g)
 
 

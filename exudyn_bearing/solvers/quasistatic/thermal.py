@@ -1,8 +1,9 @@
 """``solve_thermal``: the quasi-static bearing and a lumped thermal network solved together.
 
 docs/theory/thermal.md. Nodes: inner ring, outer ring, balls (one node for all), oil (the bearing
-cavity, fully mixed: the oil leaves at the node's temperature). Boundaries: the oil inlet
-temperature (through m_dot c_p) and the ambient (through the shaft and the housing).
+cavity, fully mixed: the oil leaves at the node's temperature), and the cage when the bearing has one
+(the loss module's cage guidance not "none"). Boundaries: the oil inlet temperature (through
+m_dot c_p) and the ambient (through the shaft and the housing).
 
 Each iteration (a fixed point, relaxed by the secant slope of the mean temperature: Wegstein's method):
 
@@ -14,11 +15,15 @@ Each iteration (a fixed point, relaxed by the secant slope of the mean temperatu
 3. :func:`~.losses.power_losses` (every component it reports);
 4. heat at the nodes: the traction, EHL rolling and hysteresis loss of each contact, half to the
    ball and half to the ring (Blok's partition for two steel surfaces moving through the contact
-   at the same rolling speed, :func:`~exudyn_bearing.physics.thermal.contact_heat_share`); every
-   other component (drag, and churning or cage friction where reported) to the oil;
+   at the same rolling speed, :func:`~exudyn_bearing.physics.thermal.contact_heat_share`); the cage
+   pocket friction ``cage_pocket_heat_share`` (default 1/2) to the cage and the rest to the balls, the
+   cage land friction half to the cage and half to its guiding ring (the Couette film between them);
+   every other component (drag, churning) to the oil;
 5. conductances (ball-ring contacts by constriction, the surfaces to the oil by convection at the
    larger of their speed relative to the oil and the oil's through-flow speed, the
-   rings to the ambient) and the steady network (:func:`~exudyn_bearing.physics.thermal.network_temperatures`).
+   rings to the ambient; the cage to the balls through the pocket oil films, to its guiding land
+   through the land film, to the oil by convection) and the steady network
+   (:func:`~exudyn_bearing.physics.thermal.network_temperatures`).
 
 It stops when the temperatures change by less than ``tolerance`` [K] between iterations. A
 iterate beyond the lubricant's range is clamped to its top; one beyond it again is a
@@ -36,22 +41,25 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ...data import InputError, TractionModel, get_traction_model, load_bearing
-from ...data.errors import check_finite, check_integer, check_temperature
+from ...data.errors import check_finite, check_integer, check_number, check_temperature
 from ...data import lubricants_temperature as _lt
 from ...physics import thermal as th
 from ...physics.lubricant_properties import lubricant_at, properties_at
-from .losses import power_losses
+from .losses import cage_land_geometry, power_losses
 from .solve import solve_quasistatic
 
-__all__ = ["NODES", "THERMAL_UNITS", "ThermalConvergenceWarning", "ThermalRunawayError", "ThermalSolution",
+__all__ = ["CAGE_NODE", "NODES", "THERMAL_UNITS", "ThermalConvergenceWarning", "ThermalRunawayError", "ThermalSolution",
            "solve_thermal", "thermal_lubricant"]
 
-#: Nodes of the network, in the order of its matrices.
+#: Nodes of the network, in the order of its matrices; a bearing with a cage adds :data:`CAGE_NODE` last.
 NODES = ("inner", "outer", "ball", "oil")
+#: The cage's node (present when the loss module's cage guidance is not "none").
+CAGE_NODE = "cage"
 
 #: Units of the keys :meth:`ThermalSolution.to_dict` adds.
 THERMAL_UNITS = {
-    "temperatures": "K per node (inner ring, outer ring, balls, oil = outlet: fully mixed cavity)",
+    "temperatures": "K per node (inner ring, outer ring, balls, oil = outlet: fully mixed cavity; cage when the "
+                    "bearing has one)",
     "contact_temperature": "K (the lubricant's temperature in the contacts: (T_inner + T_outer + 2 T_ball) / 4)",
     "heat": "W generated at each node",
     "heat_out": "W leaving through the oil (m_dot c_p (T_out - T_in)) and to the ambient",
@@ -144,8 +152,45 @@ def _default_ambient_conductance(b) -> dict:
             "outer": th.AIR_FREE_CONVECTION * 2.0 * math.pi * 2.0 * r_o * 4.0 * d}
 
 
-def _network(b, sol, losses, oil, t_inlet, t_amb, m_dot, q_vol, g_amb, k_solid):
-    """Heat sources, conductance matrices and boundaries of the network at one quasi-static solution."""
+def _cage_surface_area(b) -> float:
+    """Oil-washed area of the cage [m^2]: both cylindrical faces of a ring at the pitch radius as wide as
+    the rings (RING_WIDTH_PER_BALL_DIAMETER D), less the Z pockets of the ball's diameter on each face
+    (an assumed shape: the catalogue gives no cage dimensions)."""
+    d = 2.0 * b.ball_radius
+    return 2.0 * (2.0 * math.pi * b.pitch_radius * RING_WIDTH_PER_BALL_DIAMETER * d
+                  - b.n_balls * math.pi * b.ball_radius ** 2)
+
+
+def _cage_options(b, guidance, pocket_clearance, pocket_share, loss_options) -> dict | None:
+    """The cage's thermal data for a cage guidance of the loss module: None without a cage, else the
+    pocket clearance [m] (given, else the bearing's ``cage_pocket_clearance``), the pocket heat share
+    and the land geometry (``cage_land_geometry`` with the loss options' land values) of a land-guided
+    cage. InputError naming the parameter for a clearance <= 0 or a share outside [0, 1]."""
+    if guidance == "none":
+        return None
+    if pocket_clearance is None:
+        pocket_clearance = b.cage_pocket_clearance
+        if pocket_clearance is None:
+            raise InputError(f"cage_pocket_clearance: bearing {b.name!r} has no cage geometry in the catalogue but "
+                             f"cage_guidance {guidance!r}; give the pocket clearance per side [m]")
+    c_p = check_number("cage_pocket_clearance", pocket_clearance)
+    if not c_p > 0.0:  # infinity allowed: no pocket film
+        raise InputError(f"cage_pocket_clearance: must be > 0 m (the oil gap per side between a ball and its "
+                         f"pocket), got {pocket_clearance!r}")
+    share = check_finite("cage_pocket_heat_share", pocket_share)
+    if not 0.0 <= share <= 1.0:
+        raise InputError(f"cage_pocket_heat_share: must lie in [0, 1] (the cage's share of the pocket friction "
+                         f"heat), got {pocket_share!r}")
+    land = None
+    if guidance in ("outer_land", "inner_land"):
+        land = cage_land_geometry(b, guidance, loss_options.get("cage_land_radius"),
+                                  loss_options.get("cage_land_width"), loss_options.get("cage_land_clearance"))
+    return {"guidance": guidance, "pocket_clearance": c_p, "pocket_share": share, "land": land}
+
+
+def _network(b, sol, losses, oil, t_inlet, t_amb, m_dot, q_vol, g_amb, k_solid, cage=None):
+    """Heat sources, conductance matrices and boundaries of the network at one quasi-static solution
+    (four nodes, five with ``cage``: the dict of :func:`_cage_options`)."""
     bl = sol.balls
     r_b = b.ball_radius
     d = 2.0 * r_b
@@ -158,7 +203,16 @@ def _network(b, sol, losses, oil, t_inlet, t_amb, m_dot, q_vol, g_amb, k_solid):
     heat_inner = float(np.sum(s_in * q_in))
     heat_outer = float(np.sum(s_out * q_out))
     heat_ball = float(np.sum((1.0 - s_in) * q_in) + np.sum((1.0 - s_out) * q_out))
-    heat_oil = float(losses["power_loss_total"]) - heat_inner - heat_outer - heat_ball  # drag, churning, cage
+    heat_cage = 0.0
+    if cage is not None:  # pocket friction: the given share to the cage; land friction: half to each wall
+        p_pocket, p_land = float(losses["power_loss"]["cage_pocket"]), float(losses["power_loss"]["cage_land"])
+        heat_cage = cage["pocket_share"] * p_pocket + 0.5 * p_land
+        heat_ball += (1.0 - cage["pocket_share"]) * p_pocket
+        if cage["guidance"] == "inner_land":
+            heat_inner += 0.5 * p_land
+        elif cage["guidance"] == "outer_land":
+            heat_outer += 0.5 * p_land
+    heat_oil = float(losses["power_loss_total"]) - heat_inner - heat_outer - heat_ball - heat_cage  # drag, churning
     # conductances: contacts (constriction), convection to the oil, ambient, oil outflow
     g_ib = float(np.sum(th.constriction_conductance(bl["a_inner"], bl["b_inner"], k_solid, k_solid)))
     g_ob = float(np.sum(th.constriction_conductance(bl["a_outer"], bl["b_outer"], k_solid, k_solid)))
@@ -179,23 +233,42 @@ def _network(b, sol, losses, oil, t_inlet, t_amb, m_dot, q_vol, g_amb, k_solid):
     v_ball = np.abs(np.asarray(bl["ball_speed"], float)) * r_b
     g_bo = float(np.sum(h(v_ball) * 4.0 * math.pi * r_b * r_b))
     g_oil_out = m_dot * oil["specific_heat"]
-    G = np.zeros((4, 4))
-    for (i, j), g in {(0, 2): g_ib, (1, 2): g_ob, (0, 3): g_io, (1, 3): g_oo, (2, 3): g_bo}.items():
-        G[i, j] = G[j, i] = g
-    gb = np.zeros((4, 2))  # boundaries: ambient, oil inlet
-    gb[0, 0], gb[1, 0], gb[3, 1] = g_amb["inner"], g_amb["outer"], g_oil_out
-    heat = np.array([heat_inner, heat_outer, heat_ball, heat_oil])
+    links = {(0, 2): g_ib, (1, 2): g_ob, (0, 3): g_io, (1, 3): g_oo, (2, 3): g_bo}
     cond = {"inner_ball": g_ib, "outer_ball": g_ob, "inner_oil": float(g_io), "outer_oil": float(g_oo),
-            "ball_oil": g_bo, "inner_ambient": g_amb["inner"], "outer_ambient": g_amb["outer"],
-            "oil_outflow": float(g_oil_out), "n_balls": z}
-    return heat, G, gb, np.array([t_amb, t_inlet]), cond
+            "ball_oil": g_bo}
+    heat = [heat_inner, heat_outer, heat_ball, heat_oil]
+    if cage is not None:
+        # pocket films (two walls per ball, each at the pocket clearance), the land film, convection at the
+        # cage's speed relative to the oil (both turn at the balls' mean orbital speed: the through-flow speed)
+        k_oil = oil["thermal_conductivity"]
+        g_cb = float(2.0 * z * th.sphere_wall_gap_conductance(k_oil, r_b, cage["pocket_clearance"]))
+        g_co = float(h(0.0) * _cage_surface_area(b))
+        links[(2, 4)], links[(3, 4)] = g_cb, g_co
+        cond.update({"ball_cage": g_cb, "cage_oil": g_co})
+        if cage["land"] is not None:
+            land = cage["land"]
+            ring = 0 if cage["guidance"] == "inner_land" else 1
+            g_cl = float(th.film_conductance(k_oil, 2.0 * math.pi * land["radius"] * land["width"], land["clearance"]))
+            links[(ring, 4)] = g_cl
+            cond[f"{NODES[ring]}_cage"] = g_cl
+        heat.append(heat_cage)
+    n = len(heat)
+    G = np.zeros((n, n))
+    for (i, j), g in links.items():
+        G[i, j] = G[j, i] = g
+    gb = np.zeros((n, 2))  # boundaries: ambient, oil inlet
+    gb[0, 0], gb[1, 0], gb[3, 1] = g_amb["inner"], g_amb["outer"], g_oil_out
+    cond.update({"inner_ambient": g_amb["inner"], "outer_ambient": g_amb["outer"], "oil_outflow": float(g_oil_out),
+                 "n_balls": z})
+    return np.array(heat), G, gb, np.array([t_amb, t_inlet]), cond
 
 
 def solve_thermal(bearing, Fr=0.0, Fa=0.0, *, omega, oil_inlet_temperature, oil_flow,
                   ambient_temperature=293.15, lubricant=None, traction=None, lubrication="jet",
                   oil_volume_fraction=0.0, ambient_conductance=None,
                   solid_conductivity=th.BEARING_STEEL_CONDUCTIVITY, tolerance=0.01, max_iterations=60,
-                  relaxation=1.0, start=None, **quasistatic) -> ThermalSolution:
+                  relaxation=1.0, start=None, cage_guidance=None, cage_pocket_clearance=None,
+                  cage_pocket_heat_share=0.5, loss_options=None, **quasistatic) -> ThermalSolution:
     """Temperatures and losses of a bearing at speed, consistent with each other.
 
     Parameters
@@ -234,6 +307,20 @@ def solve_thermal(bearing, Fr=0.0, Fa=0.0, *, omega, oil_inlet_temperature, oil_
     start : ThermalSolution, optional
         A solution at a nearby operating point (the previous speed of a sweep): its temperatures and
         its quasi-static solution start the iteration.
+    cage_guidance : str, optional
+        As in :func:`~.losses.power_losses` (default "ball" for a bearing with a cage, "none" without);
+        any guidance but "none" adds the cage node.
+    cage_pocket_clearance : float, optional
+        Oil gap per side between a ball and its pocket [m] for the pocket films' conductance (default
+        the bearing's ``cage_pocket_clearance``; needed for a bearing without cage geometry; infinity:
+        no pocket film).
+    cage_pocket_heat_share : float
+        Share of the pocket friction heat that enters the cage [-], the rest the balls (default 1/2,
+        docs/theory/thermal.md).
+    loss_options : dict, optional
+        Further keywords of :func:`~.losses.power_losses` (``cage_pocket_friction``,
+        ``cage_land_radius``, ``cage_land_width``, ``cage_land_clearance``, ``hysteresis_loss_factor``,
+        ...); the land values also set the land film's conductance.
     **quasistatic
         Further arguments of :func:`~.solve.solve_quasistatic` (``control``, ``fit``, ...).
 
@@ -274,13 +361,19 @@ def solve_thermal(bearing, Fr=0.0, Fa=0.0, *, omega, oil_inlet_temperature, oil_
         g_amb[k] = check_finite(f"ambient_conductance.{k}", g_amb.get(k, 0.0))
         if g_amb[k] < 0.0:
             raise InputError(f"ambient_conductance.{k}: must be >= 0 W/K, got {g_amb[k]!r}")
+    loss_options = dict(loss_options or {})
+    for k in ("oil_volume_fraction", "oil_density", "cage_guidance", "lubricant", "bearing"):
+        if k in loss_options:
+            raise InputError(f"loss_options: {k!r} is set by solve_thermal (its own argument, or the oil's "
+                             "properties at its temperature), not in loss_options")
+    loss_options.update(oil_volume_fraction=oil_volume_fraction, cage_guidance=cage_guidance)
     tm0 = get_traction_model(traction, b)
     quasistatic.setdefault("stiffness", False)
     rho_in = properties_at(lt, t_in)["density"]
     m_dot = rho_in * q_vol
 
-    temps = np.full(4, t_in)
-    sol = None
+    sol, cage, nodes = None, None, NODES
+    temps = np.full(len(nodes), t_in)
     if start is not None:
         temps = np.minimum(np.array([start.temperatures[n] for n in NODES], float), hi)
         sol = start.quasistatic
@@ -293,15 +386,22 @@ def solve_thermal(bearing, Fr=0.0, Fa=0.0, *, omega, oil_inlet_temperature, oil_
         sol = solve_quasistatic(b, Fr, Fa, omega=omega, traction=tm, lubricant=lub, start=sol,
                                 temperatures={"inner": float(temps[0]), "outer": float(temps[1]),
                                               "ball": float(temps[2])}, **quasistatic)
-        losses = power_losses(sol, b, lub, oil_volume_fraction=oil_volume_fraction, oil_density=oil["density"])
-        heat, G, gb, tb, cond = _network(b, sol, losses, oil, t_in, t_amb, m_dot, q_vol, g_amb, k_solid)
+        losses = power_losses(sol, b, lub, oil_density=oil["density"], **loss_options)
+        if it == 1:  # the cage node: its data once, its start temperature the previous solution's or the oil's
+            cage = _cage_options(b, losses["cage_guidance"], cage_pocket_clearance, cage_pocket_heat_share,
+                                 loss_options)
+            if cage is not None:
+                nodes = NODES + (CAGE_NODE,)
+                t_cage = start.temperatures.get(CAGE_NODE, temps[3]) if start is not None else temps[3]
+                temps = np.append(temps, min(float(t_cage), hi))
+        heat, G, gb, tb, cond = _network(b, sol, losses, oil, t_in, t_amb, m_dot, q_vol, g_amb, k_solid, cage)
         try:
             t_new = th.network_temperatures(G, heat, gb, tb)
         except np.linalg.LinAlgError:
             raise InputError("thermal network: a node has no path for its heat to the oil or the ambient "
                              f"(conductances {cond}); a bearing at rest without load has none") from None
         step = float(np.max(np.abs(t_new - temps)))
-        history.append({"iteration": it, "temperatures": dict(zip(NODES, map(float, t_new))),
+        history.append({"iteration": it, "temperatures": dict(zip(nodes, map(float, t_new))),
                         "power_loss_total": float(losses["power_loss_total"]), "change": step})
         if not np.all(np.isfinite(t_new)):
             raise ThermalRunawayError(f"thermal loop: temperatures not finite at iteration {it} "
@@ -311,8 +411,10 @@ def solve_thermal(bearing, Fr=0.0, Fa=0.0, *, omega, oil_inlet_temperature, oil_
             temps = t_new
             break
         # secant relaxation of the mean temperature x -> g(x): slope lam of g from the last two iterates,
-        # step 1 / (1 - lam) (Wegstein), bounded to [relaxation / 2, 2]; the first step is the plain relaxation
-        x, gx = float(np.mean(temps)), float(np.mean(t_new))
+        # step 1 / (1 - lam) (Wegstein), bounded to [relaxation / 2, 2]; the first step is the plain relaxation.
+        # The mean is over the four nodes of the cageless network (the cage's temperature enters neither the
+        # quasi-static solve nor the losses)
+        x, gx = float(np.mean(temps[:4])), float(np.mean(t_new[:4]))
         step_w = w
         if prev is not None and abs(x - prev[0]) > 1e-9:
             lam = (gx - prev[1]) / (x - prev[0])
@@ -322,17 +424,17 @@ def solve_thermal(bearing, Fr=0.0, Fa=0.0, *, omega, oil_inlet_temperature, oil_
         hot = temps > hi
         if np.any(hot):  # an overshoot is clamped to the range's top; the same again is runaway
             if clamped:
-                _runaway(lt, t_new, it)
+                _runaway(lt, t_new, it, nodes)
             temps = np.minimum(temps, hi)
         clamped = bool(np.any(hot))
     out_heat = th.network_heat_out(temps, gb, tb)
     if not converged:
         warnings.warn(ThermalConvergenceWarning(
             f"thermal loop: not converged in {it} iterations (last change {step:.3g} K > {tol:g} K); "
-            "temperatures reached " + ", ".join(f"{n} {t:.1f} K" for n, t in zip(NODES, temps))), stacklevel=2)
+            "temperatures reached " + ", ".join(f"{n} {t:.1f} K" for n, t in zip(nodes, temps))), stacklevel=2)
     return ThermalSolution(
-        quasistatic=sol, temperatures=dict(zip(NODES, map(float, temps))), contact_temperature=t_contact,
-        heat=dict(zip(NODES, map(float, heat))), heat_out={"oil": float(out_heat[1]), "ambient": float(out_heat[0])},
+        quasistatic=sol, temperatures=dict(zip(nodes, map(float, temps))), contact_temperature=t_contact,
+        heat=dict(zip(nodes, map(float, heat))), heat_out={"oil": float(out_heat[1]), "ambient": float(out_heat[0])},
         conductances=cond, losses=losses, lubricant=lub, iterations=it, converged=converged,
         oil_inlet_temperature=t_in, ambient_temperature=t_amb, oil_flow=q_vol, history=history,
         wall_s=time.perf_counter() - t0)
@@ -348,11 +450,11 @@ def _traction_at(model, lub, t_contact):
                          f"{model.source}; viscosity and pressure-viscosity of {lub.name}")
 
 
-def _runaway(lt, temps, iteration: int):
+def _runaway(lt, temps, iteration: int, nodes=NODES):
     """ThermalRunawayError naming the hottest node and the temperature the network reached."""
     lo, hi = lt.temperature_range
     k = int(np.argmax(temps))
     raise ThermalRunawayError(
-        f"temperature: thermal runaway, the {NODES[k]} node reached {temps[k]:.1f} K at iteration {iteration} "
+        f"temperature: thermal runaway, the {nodes[k]} node reached {temps[k]:.1f} K at iteration {iteration} "
         f"with the lubricant at the top of its range, above the range of lubricant {lt.name!r} ({lo:g}-{hi:g} K); "
         "more oil_flow, a lower oil_inlet_temperature or a lower speed")
