@@ -10,7 +10,7 @@ import warnings
 import numpy as np
 
 from ...data import InputError
-from ...model.contact import accumulate_energy, forces
+from ...model.contact import forces
 from ...model.layout import H_E1
 from ...model.load_range import pressure_excess
 from ...model.solver_types import IMPLICIT_SOLVERS, UNSTABLE_SOLVERS, settings_solver, unstable_solver_error
@@ -60,7 +60,30 @@ def solver_error(mode, solver, step=None, stable=None):
     return None
 
 
-__all__ = ["UserFunctionsMixin", "IMPLICIT_SOLVERS", "UNSTABLE_SOLVERS", "MIDPOINT_STEP_RATIO", "BACKWARD_SOLVERS",
+def body_settings_error(solver, settings):
+    """The InputError for Exudyn settings the body mode cannot run with, else None (``solver``: Exudyn's
+    solver object of the run). Its user function computes all ball forces from the system's coordinates
+    and hands most of them to a second object (:meth:`UserFunctionsMixin._force_uf`): that object's forces
+    must be evaluated after it (one thread), and an implicit solver's numerical Jacobian must perturb
+    every system coordinate and evaluate the whole system (system-wide differentiation; object-wise, it
+    would miss the ball coupling: Newton then needs about 25 times the evaluations and ends elsewhere)."""
+    import exudyn as exu
+
+    threads = getattr(getattr(settings, "parallel", None), "numberOfThreads", 1)
+    if threads > 1:
+        return InputError(f"numberOfThreads: the bearing element's body mode needs simulationSettings.parallel."
+                          f"numberOfThreads = 1 (its forces are evaluated in order), got {threads}")
+    newton = getattr(getattr(settings, "timeIntegration", None), "newton", None)
+    if (solver is not None and not isinstance(solver, exu.MainSolverExplicit) and newton is not None
+            and not newton.numericalDifferentiation.doSystemWideDifferentiation):
+        return InputError("doSystemWideDifferentiation: the bearing element's body mode under an implicit solver "
+                          "needs simulationSettings.timeIntegration.newton.numericalDifferentiation."
+                          "doSystemWideDifferentiation = True (its forces couple all balls; the element's "
+                          "SimulationSettings sets it)")
+    return None
+
+
+__all__ = ["UserFunctionsMixin", "body_settings_error", "IMPLICIT_SOLVERS", "UNSTABLE_SOLVERS", "MIDPOINT_STEP_RATIO", "BACKWARD_SOLVERS",
            "implicit_solver_error", "solver_error"]
 
 
@@ -119,6 +142,12 @@ class UserFunctionsMixin:
         run = self._run
         run[0] = self._sys.get("dynamicSolver")
         settings = self._sys.get("simulationSettings")
+        if self.mode != "fast":
+            self._sysdata = self.mbs.systemData
+            self._sys_index[:] = self._system_index()
+            err = body_settings_error(run[0], settings)
+            if err is not None:
+                raise err
         solver = settings_solver(settings)
         ti = getattr(settings, "timeIntegration", None)
         step = ((ti.endTime - ti.startTime) / max(1, ti.numberOfSteps)) if ti is not None else None
@@ -175,7 +204,29 @@ class UserFunctionsMixin:
         if self._sys.get("dynamicSolver") is not self._run[0] or t <= self._run[1] + _T_EPS:
             self._new_run(t, self._clock[0] if self.mode == "fast" else self._t_trial)
 
+    def _make_body_step(self):
+        """The body mode's compiled call (:func:`~.kernels.body_rhs`) at its
+        entry point, and its work arrays: the object-layout coordinates and
+        their system indices (set at each run's start, :meth:`_new_run`)."""
+        n = self.ref.size
+        self._q, self._q_t = np.zeros(n), np.zeros(n)
+        self._sys_index = np.arange(n)
+        return _entry_point(EK.body_rhs, (self._q, self._q_t, self._sys_index, self._q, self._q_t, self.ref,
+                                          self.params, self.table, self.z, self.n_cage, self._ring_kind,
+                                          self._ring_data, self._hist, self._hist_trial, 0.0, self._hz, self._work,
+                                          self._rings, self._fr, self._glob, self._diag, self._cage_load, False, 0.0,
+                                          self._out))
+
+    def _system_index(self):
+        """System ODE2 index of each object-layout coordinate (after ``mbs.Assemble``)."""
+        mbs = self.mbs
+        return np.concatenate([mbs.GetNodeODE2Index(nd) + np.arange(size, dtype=np.int64)
+                               for nd, size in self._layout_nodes]).astype(np.int64)
+
     def _force_uf(self, mbs, t, itemNumber, q, q_t):
+        """Body mode: the forces of all balls, cage balls and rings at the system's current coordinates (the
+        arguments ``q``, ``q_t`` hold only the first ball and the rings); the first ball's and the rings'
+        are returned, the other balls' go to the force vector of the ball object."""
         t0 = time.perf_counter()
         run = self._run
         if self._sys.get("dynamicSolver") is not run[0] or t <= run[1] + _T_EPS:
@@ -191,15 +242,19 @@ class UserFunctionsMixin:
                 self._t_commit = self._t_trial
             self._t_trial = t
         want = t >= self._next_sample - 1e-12
-        worst = EK.element_rhs(np.asarray(q, float), np.asarray(q_t, float), self.ref, self.params, self.table,
-                               self.z, self.n_cage, self._ring_kind, self._ring_data, self._hist, self._hist_trial,
-                               t - self._t_commit, self._hz, self._work, self._rings, self._fr, self._glob,
-                               self._diag, self._cage_load, want, self._out)
-        if t > self._t_energy:
-            # the energy integrals: this evaluation's powers over the time since the last one that advanced
-            accumulate_energy(self._glob, t - self._t_energy)
+        # the energy integrals: this evaluation's powers over the time since the last one that advanced
+        dt_energy = t - self._t_energy if t > self._t_energy else 0.0
+        sd = self._sysdata
+        worst = self._body_step(sd.GetODE2Coordinates(), sd.GetODE2Coordinates_t(), self._sys_index, self._q,
+                                self._q_t, self.ref, self.params, self.table, self.z, self.n_cage, self._ring_kind,
+                                self._ring_data, self._hist, self._hist_trial, t - self._t_commit, self._hz,
+                                self._work, self._rings, self._fr, self._glob, self._diag, self._cage_load, want,
+                                dt_energy, self._out)
+        if dt_energy > 0.0:
             self._t_energy = t
-        return self._after_step(t, t0, worst, want, True)
+        mbs.SetObjectParameter(self._ball_object, "forceVector", self._out_balls)
+        self._after_step(t, t0, worst, want, True)
+        return self._out[self._out_uf_index].tolist()
 
     def _make_fast_uf(self):
         """The fast mode's force user function, a closure over the element's
@@ -307,7 +362,6 @@ class UserFunctionsMixin:
                 self._signal_sample(t)
         self._evaluations += 1
         self._wall += time.perf_counter() - t0
-        return self._out
 
     def _check_fast_step(self, h, stacklevel=4):
         """Warn (once) when the fast mode's Exudyn step ``h`` exceeds the ring
