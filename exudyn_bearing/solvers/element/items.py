@@ -121,7 +121,7 @@ class ItemsMixin:
         nb = 6 * (z + n_cage)
         self._out_uf_index = np.r_[0:6, nb:n]
         self._out_balls = self._out[6:nb]
-        self._body_step = self._make_body_step()
+        self._force_uf = self._make_body_uf()
         obj = mbs.AddObject(ObjectGenericODE2(nodeNumbers=nodes[:1] + ring_nodes,
                                               massMatrix=np.diag(np.array(mass)[self._out_uf_index]),
                                               forceUserFunction=self._force_uf, visualization=vis))

@@ -63,7 +63,7 @@ def solver_error(mode, solver, step=None, stable=None):
 def body_settings_error(solver, settings):
     """The InputError for Exudyn settings the body mode cannot run with, else None (``solver``: Exudyn's
     solver object of the run). Its user function computes all ball forces from the system's coordinates
-    and hands most of them to a second object (:meth:`UserFunctionsMixin._force_uf`): that object's forces
+    and hands most of them to a second object (:meth:`UserFunctionsMixin._make_body_uf`): that object's forces
     must be evaluated after it (one thread), and an implicit solver's numerical Jacobian must perturb
     every system coordinate and evaluate the whole system (system-wide differentiation; object-wise, it
     would miss the ball coupling: Newton then needs about 25 times the evaluations and ends elsewhere)."""
@@ -204,57 +204,81 @@ class UserFunctionsMixin:
         if self._sys.get("dynamicSolver") is not self._run[0] or t <= self._run[1] + _T_EPS:
             self._new_run(t, self._clock[0] if self.mode == "fast" else self._t_trial)
 
-    def _make_body_step(self):
-        """The body mode's compiled call (:func:`~.kernels.body_rhs`) at its
-        entry point, and its work arrays: the object-layout coordinates and
-        their system indices (set at each run's start, :meth:`_new_run`)."""
-        n = self.ref.size
-        self._q, self._q_t = np.zeros(n), np.zeros(n)
-        self._sys_index = np.arange(n)
-        return _entry_point(EK.body_rhs, (self._q, self._q_t, self._sys_index, self._q, self._q_t, self.ref,
-                                          self.params, self.table, self.z, self.n_cage, self._ring_kind,
-                                          self._ring_data, self._hist, self._hist_trial, 0.0, self._hz, self._work,
-                                          self._rings, self._fr, self._glob, self._diag, self._cage_load, False, 0.0,
-                                          self._out))
-
     def _system_index(self):
         """System ODE2 index of each object-layout coordinate (after ``mbs.Assemble``)."""
         mbs = self.mbs
         return np.concatenate([mbs.GetNodeODE2Index(nd) + np.arange(size, dtype=np.int64)
                                for nd, size in self._layout_nodes]).astype(np.int64)
 
-    def _force_uf(self, mbs, t, itemNumber, q, q_t):
-        """Body mode: the forces of all balls, cage balls and rings at the system's current coordinates (the
-        arguments ``q``, ``q_t`` hold only the first ball and the rings); the first ball's and the rings'
-        are returned, the other balls' go to the force vector of the ball object."""
-        t0 = time.perf_counter()
-        run = self._run
-        if self._sys.get("dynamicSolver") is not run[0] or t <= run[1] + _T_EPS:
-            self._new_run(t, self._t_trial)
-        for r, f in self._speeds:
-            self._ring_data[r, EK.RD_SPIN] = f(t)
-        if self._track_angle:
-            self._spin_angles(t)
-        # Cundall-Strack history: commit the last trial state when time advances
-        if t > self._t_trial:
-            if self._t_trial > -math.inf:
-                self._hist[:] = self._hist_trial
-                self._t_commit = self._t_trial
-            self._t_trial = t
-        want = t >= self._next_sample - 1e-12
-        # the energy integrals: this evaluation's powers over the time since the last one that advanced
-        dt_energy = t - self._t_energy if t > self._t_energy else 0.0
-        sd = self._sysdata
-        worst = self._body_step(sd.GetODE2Coordinates(), sd.GetODE2Coordinates_t(), self._sys_index, self._q,
-                                self._q_t, self.ref, self.params, self.table, self.z, self.n_cage, self._ring_kind,
-                                self._ring_data, self._hist, self._hist_trial, t - self._t_commit, self._hz,
-                                self._work, self._rings, self._fr, self._glob, self._diag, self._cage_load, want,
-                                dt_energy, self._out)
-        if dt_energy > 0.0:
-            self._t_energy = t
-        mbs.SetObjectParameter(self._ball_object, "forceVector", self._out_balls)
-        self._after_step(t, t0, worst, want, True)
-        return self._out[self._out_uf_index].tolist()
+    def _make_body_uf(self):
+        """The body mode's force user function, a closure over the element's
+        arrays and the compiled call's entry point (:func:`~.kernels.body_rhs`).
+
+        Per evaluation it computes the forces of all balls, cage balls and
+        rings from the system's current coordinates (its arguments ``q``,
+        ``q_t`` hold only the first ball and the rings: Exudyn converts them
+        per coordinate), returns the first ball's and the rings' and writes
+        the other balls' into the force vector of the ball object. The
+        system index of each coordinate is set at each run's start
+        (:meth:`_new_run`). Bound locals instead of attribute look-ups and
+        the entry point instead of numba's type dispatch, as in the fast mode
+        (validation/profile_element.py times the parts)."""
+        n = self.ref.size
+        q, q_t = np.zeros(n), np.zeros(n)
+        self._sys_index = index = np.arange(n, dtype=np.int64)
+        ref, params, table, z, n_cage = self.ref, self.params, self.table, self.z, self.n_cage
+        kind, rdata, hist, hist_trial, hz = self._ring_kind, self._ring_data, self._hist, self._hist_trial, self._hz
+        work, rings, fr, glob, diag, cload, out = (self._work, self._rings, self._fr, self._glob, self._diag,
+                                                   self._cage_load, self._out)
+        out_balls, out_uf_index = self._out_balls, self._out_uf_index
+        speeds, spin, max_overlap = self._speeds, EK.RD_SPIN, self._max_overlap
+        spin_angles = self._spin_angles if self._track_angle else None
+        signal_sample = self._signal_sample if self._sig is not None else None
+        run, sysd, new_run = self._run, self._sys, self._new_run
+        evidence = self._runaway_evidence()
+        perf_counter = time.perf_counter
+        step = _entry_point(EK.body_rhs, (q, q_t, index, q, q_t, ref, params, table, z, n_cage, kind, rdata, hist,
+                                          hist_trial, 0.0, hz, work, rings, fr, glob, diag, cload, False, 0.0, out))
+
+        def force_uf(mbs, t, itemNumber, q_object, q_t_object):
+            t0 = perf_counter()
+            if sysd.get("dynamicSolver") is not run[0] or t <= run[1] + _T_EPS:
+                new_run(t, self._t_trial)
+            for r, f in speeds:
+                rdata[r, spin] = f(t)
+            if spin_angles is not None:
+                spin_angles(t)
+            # Cundall-Strack history: commit the last trial state when time advances
+            t_trial = self._t_trial
+            if t > t_trial:
+                if t_trial > -math.inf:
+                    hist[:] = hist_trial
+                    self._t_commit = t_trial
+                self._t_trial = t
+            want = t >= self._next_sample - 1e-12
+            # the energy integrals: this evaluation's powers over the time since the last one that advanced
+            t_energy = self._t_energy
+            dt_energy = t - t_energy if t > t_energy else 0.0
+            sd = self._sysdata
+            worst = step(sd.GetODE2Coordinates(), sd.GetODE2Coordinates_t(), index, q, q_t, ref, params, table, z,
+                         n_cage, kind, rdata, hist, hist_trial, t - self._t_commit, hz, work, rings, fr, glob, diag,
+                         cload, want, dt_energy, out)
+            if dt_energy > 0.0:
+                self._t_energy = t
+            mbs.SetObjectParameter(self._ball_object, "forceVector", out_balls)
+            if not worst <= max_overlap:  # also catches NaN
+                self._check_worst(worst, t)
+            if worst > evidence[0]:
+                evidence[0] = worst
+            if want:
+                self._sample(t, rings)
+            if signal_sample is not None:
+                signal_sample(t)
+            self._evaluations += 1
+            self._wall += perf_counter() - t0
+            return out[out_uf_index].tolist()
+
+        return force_uf
 
     def _make_fast_uf(self):
         """The fast mode's force user function, a closure over the element's
@@ -347,21 +371,6 @@ class UserFunctionsMixin:
             return out
 
         return force_uf_fast
-
-    def _after_step(self, t, t0, worst, want, advanced):
-        """Runaway check, sampling and bookkeeping after a force evaluation."""
-        if advanced:
-            if not worst <= self._max_overlap:  # also catches NaN
-                self._check_worst(worst, t)
-            evidence = self._evidence
-            if worst > evidence[0]:
-                evidence[0] = worst
-            if want:
-                self._sample(t, self._rings)
-            if self._sig is not None:
-                self._signal_sample(t)
-        self._evaluations += 1
-        self._wall += time.perf_counter() - t0
 
     def _check_fast_step(self, h, stacklevel=4):
         """Warn (once) when the fast mode's Exudyn step ``h`` exceeds the ring
