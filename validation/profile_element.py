@@ -143,6 +143,8 @@ def main(argv=None):
     print(f"  Exudyn alone, constant user function    {c['step'] * us:7.2f}")
     print(f"  Exudyn alone, no user function          {n['step'] * us:7.2f}")
     print(f"  Exudyn boundary (constant UF - none)    {(c['step'] - n['step']) * us:7.2f}")
+    print("  no user function, Exudyn timers ODE2RHS, newtonIncrement, writeSolution, overhead: "
+          + ", ".join(f"{n[k] * us:.2f}" for k in ("ODE2RHS", "newtonIncrement", "writeSolution", "overhead")))
     print(f"  rest (full - UF - constant-UF step)     {(f['step'] - f['uf'] - c['step']) * us:7.2f}")
     print(f"  reference engine, same scene and step   {np.median(ref) * us:7.2f}   "
           f"({np.median(ref) / SCENE['dt']:.2f} s wall per simulated s)")
