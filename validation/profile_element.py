@@ -109,12 +109,17 @@ def eb_coord(rate=False):
     return exu.OutputVariableType.Coordinates_t if rate else exu.OutputVariableType.Coordinates
 
 
-def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+def step_args(argv, doc):
+    """--t-end and --repeat of the per-step scripts (this one and bench_overhead.py), warnings off."""
+    ap = argparse.ArgumentParser(description=doc.split("\n")[0])
     ap.add_argument("--t-end", type=float, default=0.02)
     ap.add_argument("--repeat", type=int, default=5)
-    args = ap.parse_args(argv)
     warnings.simplefilter("ignore")
+    return ap.parse_args(argv)
+
+
+def main(argv=None):
+    args = step_args(argv, __doc__)
     body_run(1e-3)  # compile / load the caches
     ReferenceEngine("6208", eb.Scenario(t_end=1e-3, **SCENE)).run()
     rows = {v: [] for v in ("full", "constant", "none")}
@@ -134,7 +139,7 @@ def main(argv=None):
     print(f"  force evaluations per step              {f['evaluations']:7.3f}")
     print(f"  Exudyn timer ODE2RHS (holds the UF)     {f['ODE2RHS'] * us:7.2f}")
     print(f"  Exudyn timer newtonIncrement (M solve)  {f['newtonIncrement'] * us:7.2f}")
-    print(f"  Exudyn timers massMatrix, integration, writeSolution, python, overhead: "
+    print("  Exudyn timers massMatrix, integration, writeSolution, python, overhead: "
           + ", ".join(f"{f[k] * us:.2f}" for k in ("massMatrix", "integrationFormula", "writeSolution", "python",
                                                     "overhead")))
     print(f"  user function, entry to return          {f['uf'] * us:7.2f}")

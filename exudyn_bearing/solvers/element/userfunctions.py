@@ -231,11 +231,10 @@ class UserFunctionsMixin:
         work, rings, fr, glob, diag, cload, out = (self._work, self._rings, self._fr, self._glob, self._diag,
                                                    self._cage_load, self._out)
         out_balls, out_uf_index = self._out_balls, self._out_uf_index
-        speeds, spin, max_overlap = self._speeds, EK.RD_SPIN, self._max_overlap
+        speeds, spin = self._speeds, EK.RD_SPIN
         spin_angles = self._spin_angles if self._track_angle else None
-        signal_sample = self._signal_sample if self._sig is not None else None
         run, sysd, new_run = self._run, self._sys, self._new_run
-        evidence = self._runaway_evidence()
+        self._runaway_evidence()  # created here: _after_advance updates it
         perf_counter = time.perf_counter
         step = _entry_point(EK.body_rhs, (q, q_t, index, q, q_t, ref, params, table, z, n_cage, kind, rdata, hist,
                                           hist_trial, 0.0, hz, work, rings, fr, glob, diag, cload, False, 0.0, out))
@@ -266,14 +265,7 @@ class UserFunctionsMixin:
             if dt_energy > 0.0:
                 self._t_energy = t
             mbs.SetObjectParameter(self._ball_object, "forceVector", out_balls)
-            if not worst <= max_overlap:  # also catches NaN
-                self._check_worst(worst, t)
-            if worst > evidence[0]:
-                evidence[0] = worst
-            if want:
-                self._sample(t, rings)
-            if signal_sample is not None:
-                signal_sample(t)
+            self._after_advance(worst, t, want, t, rings)
             self._evaluations += 1
             self._wall += perf_counter() - t0
             return out[out_uf_index].tolist()
@@ -297,13 +289,12 @@ class UserFunctionsMixin:
         work, rings0, rings, rings_sub = self._work, self._rings0, self._rings, self._rings_sub
         hist, hz, fr, glob, diag, cload, out = (self._hist, self._hz, self._fr, self._glob, self._diag,
                                                 self._cage_load, self._out)
-        speeds, dt_sub, max_overlap, spin = self._speeds, self._dt_sub, self._max_overlap, EK.RD_SPIN
+        speeds, dt_sub, spin = self._speeds, self._dt_sub, EK.RD_SPIN
         spin_angles = self._spin_angles if self._track_angle else None
-        signal_sample = self._signal_sample if self._sig is not None else None
         # [t of the last Exudyn evaluation (nan: none yet), tau, next sample, step checked, Exudyn steps]
         clock = self._clock
         run, sysd, new_run = self._run, self._sys, self._new_run
-        evidence = self._runaway_evidence()
+        self._runaway_evidence()  # created here: _after_advance updates it
         asarray = np.asarray
         perf_counter = time.perf_counter
         step = _entry_point(EK.fast_step, (asarray(np.zeros(1)), asarray(np.zeros(1)), ref, params, table, kind,
@@ -334,15 +325,9 @@ class UserFunctionsMixin:
                 clock[0] = t
                 clock[1] = t_end
                 clock[4] += 1
-                if not worst <= max_overlap:  # also catches NaN
-                    self._check_worst(worst, t)
-                if worst > evidence[0]:
-                    evidence[0] = worst
+                self._after_advance(worst, t, want, t_end, rings_sub)
                 if want:
-                    self._sample(t_end, rings_sub)
                     clock[2] = self._next_sample
-                if signal_sample is not None:
-                    signal_sample(t)
                 self._wall += perf_counter() - t0
                 return out
             # a new SolveDynamic starts at or before the last time (a run that starts later continues this one)
@@ -371,6 +356,20 @@ class UserFunctionsMixin:
             return out
 
         return force_uf_fast
+
+    def _after_advance(self, worst, t, want, t_sample, rings):
+        """After an evaluation at t that advanced the balls (both modes): the runaway check of its largest
+        overlap / R_b ``worst``, the evidence kept for it, a sample at ``t_sample`` of the ring poses
+        ``rings`` the balls saw (when ``want``) and the signal series."""
+        if not worst <= self._max_overlap:  # also catches NaN
+            self._check_worst(worst, t)
+        evidence = self._evidence
+        if worst > evidence[0]:
+            evidence[0] = worst
+        if want:
+            self._sample(t_sample, rings)
+        if self._sig is not None:
+            self._signal_sample(t)
 
     def _check_fast_step(self, h, stacklevel=4):
         """Warn (once) when the fast mode's Exudyn step ``h`` exceeds the ring
