@@ -46,7 +46,7 @@ t - H/2 to t + H/2, the ring poses interpolated from the previous step and
 extrapolated with the ring velocity beyond t), and the ring receives their
 mean reaction: the impulse Exudyn's velocity-Verlet step gives the ring then
 equals the sum of the impulses the balls received, without lag. With
-``subSteps=1`` (default) it reproduces the body mode at about 0.4 of its cost.
+``subSteps=1`` (default) it reproduces the body mode at about 0.6 of its cost.
 More sub-steps spread the per-step overhead further; the Exudyn step H =
 subSteps * stepSize then also has to integrate the ring bodies against the
 contact stiffness: keep it below ``ringStableStep`` (estimated from the ring
