@@ -594,3 +594,21 @@ def test_fast_mode_refuses_solvers_that_evaluate_back_in_time():
         solve_dynamic(mbs, el.SimulationSettings(0.001), exu.DynamicSolverType.RK67)
     with pytest.raises(RuntimeError, match="no samples yet"):
         el.results()
+
+
+def test_body_mode_refuses_settings_its_two_objects_cannot_run_with():
+    # the user function writes the other balls' forces into the ball object before Exudyn evaluates it: one
+    # thread; under an implicit solver the object-wise numerical Jacobian would leave out that object's balls
+    SC, mbs, m_in, m_out, b = _rotor_scene()
+    el = CreateBallBearing(mbs, b, m_in, m_out, initialOmega=500.0, initialLoad=(3000.0, 0.0), stepSize=5e-6)
+    mbs.Assemble()
+    assert int(el.items["ballObject"]) > int(el.items["object"])  # evaluated after the user function's object
+    ss = el.SimulationSettings(1e-4)
+    ss.parallel.numberOfThreads = 2
+    with pytest.raises(InputError, match="^numberOfThreads: "):
+        solve_dynamic(mbs, ss)
+    ss = el.SimulationSettings(1e-4, 1e-5, solverType="GeneralizedAlpha")
+    assert ss.timeIntegration.newton.numericalDifferentiation.doSystemWideDifferentiation
+    ss.timeIntegration.newton.numericalDifferentiation.doSystemWideDifferentiation = False
+    with pytest.raises(InputError, match="^doSystemWideDifferentiation: "):
+        solve_dynamic(mbs, ss, exu.DynamicSolverType.GeneralizedAlpha)

@@ -5,22 +5,24 @@ Per Exudyn step, medians of ``--repeat`` runs of ``--t-end`` seconds:
 * Exudyn alone: the element's object with a user function that returns a
   constant vector (Exudyn's integration, its Python call, no bearing);
 * the full element, body mode (5 us) and fast mode (4 x 5 us sub-steps);
-* converting Exudyn's coordinate lists to arrays (the body mode's 111
-  coordinates, q and q_t: twice per evaluation);
+* converting Exudyn's coordinate lists to arrays for the body mode's 111
+  coordinates (what a user function over all of them pays twice per
+  evaluation, besides Exudyn's own conversions; the body mode reads them from
+  the system at once instead, validation/profile_element.py);
 * one sample of the element's state (``_store``, compiled).
 
     python validation/bench_overhead.py [--t-end 0.02] [--repeat 5]
 """
-import argparse
 import json
 import timeit
-import warnings
 from pathlib import Path
 
 import numpy as np
 
 import exudyn_bearing as eb
 from exudyn_bearing.solvers.element.engine import ExudynEngine, solve_dynamic
+
+from profile_element import step_args  # validation/ (the script's folder is on sys.path)
 
 HERE = Path(__file__).resolve().parent
 
@@ -30,7 +32,8 @@ def per_step(mode, sub, t_end, constant):
     eng = ExudynEngine("6208", sc, mode=mode, sub_steps=sub)
     el = eng.element
     if constant:
-        out = el._out
+        # the forces of the user function's object: in the body mode the first ball and the rings
+        out = el._out[el._out_uf_index].tolist() if el.items["ballObject"] is not None else el._out
         eng.mbs.SetObjectParameter(el.items["object"], "forceUserFunction", lambda mbs, t, i, q, q_t: out)
     ss = el.SimulationSettings(t_end)
     n = ss.timeIntegration.numberOfSteps
@@ -43,11 +46,7 @@ def per_step(mode, sub, t_end, constant):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--t-end", type=float, default=0.02)
-    ap.add_argument("--repeat", type=int, default=5)
-    args = ap.parse_args(argv)
-    warnings.simplefilter("ignore")
+    args = step_args(argv, __doc__)
     per_step("fast", 4, 1e-3, False)  # compile / load the caches
     per_step("bodies", 1, 1e-3, False)
     rows = {}
@@ -62,7 +61,8 @@ def main(argv=None):
     conv = min(timeit.repeat(lambda: np.asarray(q, float), number=20000, repeat=5)) / 20000
     rows["list to array, body-mode coordinates"] = conv
     rows["coordinates"] = int(el.ref.size)
-    print(f"list -> array of the {el.ref.size} body-mode coordinates: {conv * 1e6:.2f} us (twice per evaluation)")
+    print(f"list -> array of the {el.ref.size} body-mode coordinates: {conv * 1e6:.2f} us (avoided: read from "
+          "the system)")
     sample = min(timeit.repeat(lambda: el._store(0.0, el._rings), number=2000, repeat=5)) / 2000
     rows["one sample"] = sample
     print(f"one sample of the element state: {sample * 1e6:.2f} us")

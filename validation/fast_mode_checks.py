@@ -25,9 +25,15 @@
    ring speed and cage speed after 40 ms (the peer check gives the ring a
    large inertia instead).
 
-    python validation/fast_mode_checks.py
+7. A lightly loaded rotor (50 N on two 6208, 500 rad/s, started from the
+   analytic state): bearing A's cage speed and orbit in the body mode at
+   5 us and in the fast mode with 1, 2, 4 and 8 sub-steps of 5 us
+   (``--light-load`` runs only this).
+
+    python validation/fast_mode_checks.py [--light-load]
 """
 import json
+import math
 import sys
 import warnings
 from pathlib import Path
@@ -43,6 +49,7 @@ from exudyn_bearing.solvers.element.engine import ExudynEngine, solve_dynamic
 from exudyn_bearing.model.stability import SimulationError
 from exudyn_bearing.model.initial_state import ring_mass_estimate
 from exudyn_bearing.model.stability import ring_stable_step
+from exudyn_bearing.solvers.reference import ReferenceEngine
 
 HERE = Path(__file__).resolve().parent
 
@@ -107,6 +114,62 @@ def rotor_sub_steps():
         rows[f"{load:g}"] = r = {label: rotor(load, sub, dt) for label, sub, dt in ROTOR_RUNS}
         print(f"rotor on two 6208, load {load:g} N, cage speed mean over 10-20 ms: "
               + ", ".join(f"{k} {v['mean_10_20ms']:.2f}" for k, v in r.items()), flush=True)
+    return rows
+
+
+def light_rotor(sub, dt=5e-6, load=50.0, omega=500.0, t_end=0.02):
+    """A lightly loaded rotor (2.5 kg on two 6208 0.2 m apart, radial load ``load`` [N] at its centre,
+    spinning at ``omega`` [rad/s] with a large polar inertia, both bearings started from their analytic
+    state): bearing A's mean cage speed and mean shaft-centre displacement (the orbit's centre, x and y
+    in the outer-ring frame) and its mean distance from that centre over the second half of the run, with
+    ``sub`` sub-steps of ``dt`` in the fast mode, 0 for the body mode at ``dt``."""
+    SC = exu.SystemContainer()
+    mbs = SC.AddSystem()
+    ground = mbs.AddObject(ObjectGround())
+    d0 = ReferenceEngine("6208", eb.Scenario(Fr=0.5 * load, omega=omega)).initial_state()["ring"][:3]
+    node = mbs.AddNode(NodeRigidBodyRxyz(referenceCoordinates=[*d0, 0, 0, 0], initialVelocities=[0, 0, 0, 0, 0, omega]))
+    body = mbs.AddObject(ObjectRigidBody(nodeNumber=node, mass=2.5, inertia=[1.3e-2, 1.3e-2, 1.0, 0, 0, 0]))
+    mc = mbs.AddMarker(MarkerBodyRigid(bodyNumber=body, localPosition=[0, 0, 0]))
+    mbs.AddLoad(LoadForceVector(markerNumber=mc, loadVector=[load, 0, 0]))
+    bearings = []
+    for z in (-0.1, 0.1):
+        mi = mbs.AddMarker(MarkerBodyRigid(bodyNumber=body, localPosition=[0, 0, z]))
+        mo = mbs.AddMarker(MarkerBodyRigid(bodyNumber=ground, localPosition=[0, 0, z]))
+        mode = dict(mode="fast", subSteps=sub) if sub else dict(mode="bodies")
+        bearings.append(eb.CreateBallBearing(mbs, "6208", mi, mo, stepSize=dt, initialOmega=omega,
+                                             initialLoad=(0.5 * load, 0.0), sampleInterval=2e-5, **mode))
+    mbs.Assemble()
+    solve_dynamic(mbs, bearings[0].SimulationSettings(t_end))
+    r = bearings[0].results()
+    late = r.t >= 0.5 * t_end
+    ring = r.record.data["ring"][late, :2]
+    centre = ring.mean(axis=0)
+    return {"cage_speed": float(r.cage_speed_series()[late].mean()), "centre_x_um": float(1e6 * centre[0]),
+            "centre_y_um": float(1e6 * centre[1]),
+            "orbit_radius_um": float(1e6 * np.hypot(*(ring - centre).T).mean())}
+
+
+def light_load_sub_steps(load=50.0):
+    """Body mode at 5 us against the fast mode with 1, 2, 4 and 8 sub-steps of 5 us on :func:`light_rotor`:
+    relative deviation of the cage speed and of the orbit centre's distance from the bearing centre."""
+    rows = {"bodies 5 us": light_rotor(0, load=load)}
+    body = rows["bodies 5 us"]
+    print(f"light rotor, {load:g} N, bodies 5 us: {body}", flush=True)
+    for sub in (1, 2, 4, 8):
+        try:
+            r = light_rotor(sub, load=load)
+        except Exception as exc:  # a blow-up is a result here
+            rows[f"fast {sub} x 5 us"] = {"error": _first_error_line(exc)}
+            print(f"light rotor, fast {sub} x 5 us: {rows[f'fast {sub} x 5 us']}", flush=True)
+            continue
+        r["dev_cage_speed"] = r["cage_speed"] / body["cage_speed"] - 1
+        r["dev_centre"] = (math.hypot(r["centre_x_um"], r["centre_y_um"])
+                           / math.hypot(body["centre_x_um"], body["centre_y_um"]) - 1)
+        rows[f"fast {sub} x 5 us"] = r
+        print(f"light rotor, fast {sub} x 5 us: cage speed {r['cage_speed']:.3f} rad/s ({100 * r['dev_cage_speed']:+.3f} "
+              f"%), orbit centre ({r['centre_x_um']:.3f}, {r['centre_y_um']:.3f}) um ({100 * r['dev_centre']:+.3f} % "
+              f"in distance), orbit radius {r['orbit_radius_um']:.4f} um (body mode {body['orbit_radius_um']:.4f})",
+              flush=True)
     return rows
 
 
@@ -196,7 +259,12 @@ def builtin_own_inertia():
 
 def main():
     warnings.simplefilter("ignore")
-    report = {"substeps_6208": substeps_6208(), "rotor_sub_steps": rotor_sub_steps(),
+    if sys.argv[1:] == ["--light-load"]:  # only the light-load comparison of body and fast mode
+        out = HERE / "out"
+        out.mkdir(exist_ok=True)
+        (out / "fast_mode_light_load.json").write_text(json.dumps(light_load_sub_steps(), indent=2))
+        return
+    report = {"light_load_sub_steps": light_load_sub_steps(), "substeps_6208": substeps_6208(), "rotor_sub_steps": rotor_sub_steps(),
               "rotor_scenario_whirl": rotor_scenario_whirl(), "solvers_6208": solvers_6208(),
               "cage_7208": cage_7208(),
               "builtin_own_inertia": builtin_own_inertia()}

@@ -8,18 +8,27 @@
     mbs.Assemble(); mbs.SolveDynamic(bearing.SimulationSettings(endTime=0.1), solverType=...)
     bearing.results().summary()
 
-The balls and cage balls are Exudyn nodes of one ObjectGenericODE2 (6
+The balls and cage balls are Exudyn nodes (6
 coordinates each: position and an integrated global rotation vector whose
 rate is the angular velocity, with the constant mass matrix of a sphere:
 exact Newton-Euler for a homogeneous sphere, whose orientation never enters
-the forces, and free of rotation-parameter singularities at 1000 rad/s). The
-nodes of the ring bodies belong to the same object (with zero mass there:
-their mass is in their own bodies), so its ``forceUserFunction`` sees the
-ring motion in its coordinates and returns the ring reactions as generalized
-forces of the ring nodes, consistently within every evaluation. It makes one
-compiled call per force evaluation into the same contact kernel as the
-reference engine (elliptic Hertz, Lambda-switched damping and friction,
-Cundall-Strack history, torus cage).
+the forces, and free of rotation-parameter singularities at 1000 rad/s) of
+two ObjectGenericODE2. The first (``items["object"]``) holds the first ball
+and the nodes of the ring bodies (with zero mass there: their mass is in
+their own bodies); its ``forceUserFunction`` reads the coordinates of all
+balls and rings from the system at once, makes one compiled call per force
+evaluation into the same contact kernel as the reference engine (elliptic
+Hertz, Lambda-switched damping and friction, Cundall-Strack history, torus
+cage), returns the first ball's forces and the ring reactions as
+generalized forces of the ring nodes, and writes the other balls' forces
+into the force vector of the second object (``items["ballObject"]``),
+which Exudyn evaluates after it: consistent within every evaluation, and
+without Exudyn's per-coordinate conversion of a large object's coordinates
+and forces to and from Python (validation/profile_element.py). The body
+mode therefore needs ``parallel.numberOfThreads = 1`` and, under an
+implicit solver, the system-wide numerical Jacobian
+(``newton.numericalDifferentiation.doSystemWideDifferentiation``, which
+``SimulationSettings`` sets); other settings raise InputError naming them.
 
 Rings: a marker on ground (fixed ring), a MarkerBodyRigid / MarkerNodeRigid on
 a body with a NodeRigidBodyRxyz or NodeRigidBodyRotVecLG node (``nodeType=
@@ -37,7 +46,7 @@ t - H/2 to t + H/2, the ring poses interpolated from the previous step and
 extrapolated with the ring velocity beyond t), and the ring receives their
 mean reaction: the impulse Exudyn's velocity-Verlet step gives the ring then
 equals the sum of the impulses the balls received, without lag. With
-``subSteps=1`` (default) it reproduces the body mode at about 0.4 of its cost.
+``subSteps=1`` (default) it reproduces the body mode at about 0.6 of its cost.
 More sub-steps spread the per-step overhead further; the Exudyn step H =
 subSteps * stepSize then also has to integrate the ring bodies against the
 contact stiffness: keep it below ``ringStableStep`` (estimated from the ring
@@ -191,8 +200,10 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
     Attributes
     ----------
     items : dict
-        Created Exudyn items: ``ballNodes``, ``cageNodes``, ``object``,
-        ``ringNodes`` (ring nodes that joined the object), ``sensors``.
+        Created Exudyn items: ``ballNodes``, ``cageNodes``, ``object`` (the
+        object with the force user function), ``ballObject`` (body mode: the
+        other balls' object, None in the fast mode), ``ringNodes`` (ring nodes
+        that joined the object), ``sensors``.
     sensors : dict
         Sensor numbers (``cageSpeed``, ``qMaxInner``, ``qMaxOuter``,
         ``lambdaOuterPsi0``, ``innerRingForce``, ``outerRingForce``: force of
@@ -277,7 +288,7 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
         nodes, cage_nodes, ring_nodes, obj = self._add_items(mbs, xb, vb, wb, xc, vc, n_cage, fast, show)
         self._add_sensors(mbs, n_cage)
         self.items = {"ballNodes": nodes, "cageNodes": cage_nodes, "ringNodes": ring_nodes, "object": obj,
-                      "sensors": dict(self.sensors)}
+                      "ballObject": self._ball_object, "sensors": dict(self.sensors)}
         import exudyn
 
         self._exu = exudyn
@@ -388,6 +399,8 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
         ss.timeIntegration.explicit.computeMassMatrixInversePerBody = False  # not available for ObjectGenericODE2
         ss.linearSolver.solverType = exu.LinearSolverType.EigenSparse
         ss.timeIntegration.explicit.computeEndOfStepAccelerations = False
+        # implicit solvers: the body mode's numerical Jacobian over the whole system (userfunctions.body_settings_error)
+        ss.timeIntegration.newton.numericalDifferentiation.doSystemWideDifferentiation = True
         ss.timeIntegration.solverType = getattr(exu.DynamicSolverType, name)
         ss.solution.file.write = False
         ss.solution.sensors.writePeriod = self.sampleInterval

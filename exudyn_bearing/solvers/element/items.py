@@ -103,11 +103,29 @@ class ItemsMixin:
         self._dt_sub = float(self.scenario.dt)
         self._max_overlap = float(self.params[L.P_MAX_OVERLAP])
         self._status = 0.0
+        # node -> number of its coordinates, in the object layout (balls, cage balls, ring nodes)
+        self._layout_nodes = [(nd, 6) for nd in nodes + cage_nodes] + [(nd, int(np.size(
+            mbs.GetNode(nd)["referenceCoordinates"]))) for nd in ring_nodes]
+        vis = VObjectGenericODE2(show=bool(show), graphicsDataUserFunction=self._graphics if show else 0)
         if fast:
             self._force_uf_fast = self._make_fast_uf()
-        obj = mbs.AddObject(ObjectGenericODE2(nodeNumbers=nodes + cage_nodes + ring_nodes, massMatrix=np.diag(mass),
-                                              forceUserFunction=self._force_uf_fast if fast else self._force_uf,
-                                              visualization=VObjectGenericODE2(
-                                                  show=bool(show),
-                                                  graphicsDataUserFunction=self._graphics if show else 0)))
+            obj = mbs.AddObject(ObjectGenericODE2(nodeNumbers=ring_nodes, massMatrix=np.diag(mass),
+                                                  forceUserFunction=self._force_uf_fast, visualization=vis))
+            self._ball_object = None
+            return nodes, cage_nodes, ring_nodes, obj
+        # body mode: Exudyn converts the coordinates of a user function's object to Python lists and its
+        # returned forces back, per coordinate (about 0.1 us each, validation/profile_element.py); the user
+        # function's object holds only the first ball and the ring nodes, and the user function reads all
+        # coordinates from the system at once and hands the other balls' forces to the force vector of a
+        # second object, evaluated after it (the objects' forces are evaluated in the order of their numbers)
+        nb = 6 * (z + n_cage)
+        self._out_uf_index = np.r_[0:6, nb:n]
+        self._out_balls = self._out[6:nb]
+        self._force_uf = self._make_body_uf()
+        obj = mbs.AddObject(ObjectGenericODE2(nodeNumbers=nodes[:1] + ring_nodes,
+                                              massMatrix=np.diag(np.array(mass)[self._out_uf_index]),
+                                              forceUserFunction=self._force_uf, visualization=vis))
+        self._ball_object = mbs.AddObject(ObjectGenericODE2(
+            nodeNumbers=nodes[1:] + cage_nodes, massMatrix=np.diag(mass[6:nb]), forceVector=np.zeros(nb - 6),
+            visualization=VObjectGenericODE2(show=False)))
         return nodes, cage_nodes, ring_nodes, obj

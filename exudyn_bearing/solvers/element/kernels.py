@@ -178,6 +178,25 @@ def element_rhs(q, q_t, ref, p, table, z, n_cage, ring_kind, ring_data, hist, hi
 
 
 @kernel
+def body_rhs(qs, qs_t, index, q, q_t, ref, p, table, z, n_cage, ring_kind, ring_data, hist, hist_out, dt_hist, hz,
+             work, rings, fr, glob, diag, cage_load, want, dt_energy, out):
+    """Body mode, one force evaluation in one compiled call: the object-layout
+    coordinates ``q``, ``q_t`` gathered from the system's ODE2 coordinates
+    ``qs``, ``qs_t`` (``index``: their system index), :func:`element_rhs`
+    into ``out``, then the energy integrals over ``dt_energy`` (the time
+    since the last evaluation that advanced; 0 adds nothing). Returns the
+    largest overlap / R_b."""
+    for i in range(index.shape[0]):
+        q[i] = qs[index[i]]
+        q_t[i] = qs_t[index[i]]
+    worst = element_rhs(q, q_t, ref, p, table, z, n_cage, ring_kind, ring_data, hist, hist_out, dt_hist, hz, work,
+                        rings, fr, glob, diag, cage_load, want, out)
+    if dt_energy > 0.0:
+        accumulate_energy(glob, dt_energy)
+    return worst
+
+
+@kernel
 def ring_generalized_forces(q, ref, ring_kind, ring_data, rings, fr, out):
     """Ring reactions ``fr`` (force, torque about the ring centre) as generalized
     forces of the ring-node coordinates in ``out``: the force on the position

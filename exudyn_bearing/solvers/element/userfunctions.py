@@ -10,7 +10,7 @@ import warnings
 import numpy as np
 
 from ...data import InputError
-from ...model.contact import accumulate_energy, forces
+from ...model.contact import forces
 from ...model.layout import H_E1
 from ...model.load_range import pressure_excess
 from ...model.solver_types import IMPLICIT_SOLVERS, UNSTABLE_SOLVERS, settings_solver, unstable_solver_error
@@ -60,7 +60,30 @@ def solver_error(mode, solver, step=None, stable=None):
     return None
 
 
-__all__ = ["UserFunctionsMixin", "IMPLICIT_SOLVERS", "UNSTABLE_SOLVERS", "MIDPOINT_STEP_RATIO", "BACKWARD_SOLVERS",
+def body_settings_error(solver, settings):
+    """The InputError for Exudyn settings the body mode cannot run with, else None (``solver``: Exudyn's
+    solver object of the run). Its user function computes all ball forces from the system's coordinates
+    and hands most of them to a second object (:meth:`UserFunctionsMixin._make_body_uf`): that object's forces
+    must be evaluated after it (one thread), and an implicit solver's numerical Jacobian must perturb
+    every system coordinate and evaluate the whole system (system-wide differentiation; object-wise, it
+    would miss the ball coupling: Newton then needs about 25 times the evaluations and ends elsewhere)."""
+    import exudyn as exu
+
+    threads = getattr(getattr(settings, "parallel", None), "numberOfThreads", 1)
+    if threads > 1:
+        return InputError(f"numberOfThreads: the bearing element's body mode needs simulationSettings.parallel."
+                          f"numberOfThreads = 1 (its forces are evaluated in order), got {threads}")
+    newton = getattr(getattr(settings, "timeIntegration", None), "newton", None)
+    if (solver is not None and not isinstance(solver, exu.MainSolverExplicit) and newton is not None
+            and not newton.numericalDifferentiation.doSystemWideDifferentiation):
+        return InputError("doSystemWideDifferentiation: the bearing element's body mode under an implicit solver "
+                          "needs simulationSettings.timeIntegration.newton.numericalDifferentiation."
+                          "doSystemWideDifferentiation = True (its forces couple all balls; the element's "
+                          "SimulationSettings sets it)")
+    return None
+
+
+__all__ = ["UserFunctionsMixin", "body_settings_error", "IMPLICIT_SOLVERS", "UNSTABLE_SOLVERS", "MIDPOINT_STEP_RATIO", "BACKWARD_SOLVERS",
            "implicit_solver_error", "solver_error"]
 
 
@@ -119,6 +142,12 @@ class UserFunctionsMixin:
         run = self._run
         run[0] = self._sys.get("dynamicSolver")
         settings = self._sys.get("simulationSettings")
+        if self.mode != "fast":
+            self._sysdata = self.mbs.systemData
+            self._sys_index[:] = self._system_index()
+            err = body_settings_error(run[0], settings)
+            if err is not None:
+                raise err
         solver = settings_solver(settings)
         ti = getattr(settings, "timeIntegration", None)
         step = ((ti.endTime - ti.startTime) / max(1, ti.numberOfSteps)) if ti is not None else None
@@ -175,31 +204,73 @@ class UserFunctionsMixin:
         if self._sys.get("dynamicSolver") is not self._run[0] or t <= self._run[1] + _T_EPS:
             self._new_run(t, self._clock[0] if self.mode == "fast" else self._t_trial)
 
-    def _force_uf(self, mbs, t, itemNumber, q, q_t):
-        t0 = time.perf_counter()
-        run = self._run
-        if self._sys.get("dynamicSolver") is not run[0] or t <= run[1] + _T_EPS:
-            self._new_run(t, self._t_trial)
-        for r, f in self._speeds:
-            self._ring_data[r, EK.RD_SPIN] = f(t)
-        if self._track_angle:
-            self._spin_angles(t)
-        # Cundall-Strack history: commit the last trial state when time advances
-        if t > self._t_trial:
-            if self._t_trial > -math.inf:
-                self._hist[:] = self._hist_trial
-                self._t_commit = self._t_trial
-            self._t_trial = t
-        want = t >= self._next_sample - 1e-12
-        worst = EK.element_rhs(np.asarray(q, float), np.asarray(q_t, float), self.ref, self.params, self.table,
-                               self.z, self.n_cage, self._ring_kind, self._ring_data, self._hist, self._hist_trial,
-                               t - self._t_commit, self._hz, self._work, self._rings, self._fr, self._glob,
-                               self._diag, self._cage_load, want, self._out)
-        if t > self._t_energy:
+    def _system_index(self):
+        """System ODE2 index of each object-layout coordinate (after ``mbs.Assemble``)."""
+        mbs = self.mbs
+        return np.concatenate([mbs.GetNodeODE2Index(nd) + np.arange(size, dtype=np.int64)
+                               for nd, size in self._layout_nodes]).astype(np.int64)
+
+    def _make_body_uf(self):
+        """The body mode's force user function, a closure over the element's
+        arrays and the compiled call's entry point (:func:`~.kernels.body_rhs`).
+
+        Per evaluation it computes the forces of all balls, cage balls and
+        rings from the system's current coordinates (its arguments ``q``,
+        ``q_t`` hold only the first ball and the rings: Exudyn converts them
+        per coordinate), returns the first ball's and the rings' and writes
+        the other balls' into the force vector of the ball object. The
+        system index of each coordinate is set at each run's start
+        (:meth:`_new_run`). Bound locals instead of attribute look-ups and
+        the entry point instead of numba's type dispatch, as in the fast mode
+        (validation/profile_element.py times the parts)."""
+        n = self.ref.size
+        q, q_t = np.zeros(n), np.zeros(n)
+        self._sys_index = index = np.arange(n, dtype=np.int64)
+        ref, params, table, z, n_cage = self.ref, self.params, self.table, self.z, self.n_cage
+        kind, rdata, hist, hist_trial, hz = self._ring_kind, self._ring_data, self._hist, self._hist_trial, self._hz
+        work, rings, fr, glob, diag, cload, out = (self._work, self._rings, self._fr, self._glob, self._diag,
+                                                   self._cage_load, self._out)
+        out_balls, out_uf_index = self._out_balls, self._out_uf_index
+        speeds, spin = self._speeds, EK.RD_SPIN
+        spin_angles = self._spin_angles if self._track_angle else None
+        run, sysd, new_run = self._run, self._sys, self._new_run
+        self._runaway_evidence()  # created here: _after_advance updates it
+        perf_counter = time.perf_counter
+        step = _entry_point(EK.body_rhs, (q, q_t, index, q, q_t, ref, params, table, z, n_cage, kind, rdata, hist,
+                                          hist_trial, 0.0, hz, work, rings, fr, glob, diag, cload, False, 0.0, out))
+
+        def force_uf(mbs, t, itemNumber, q_object, q_t_object):
+            t0 = perf_counter()
+            if sysd.get("dynamicSolver") is not run[0] or t <= run[1] + _T_EPS:
+                new_run(t, self._t_trial)
+            for r, f in speeds:
+                rdata[r, spin] = f(t)
+            if spin_angles is not None:
+                spin_angles(t)
+            # Cundall-Strack history: commit the last trial state when time advances
+            t_trial = self._t_trial
+            if t > t_trial:
+                if t_trial > -math.inf:
+                    hist[:] = hist_trial
+                    self._t_commit = t_trial
+                self._t_trial = t
+            want = t >= self._next_sample - 1e-12
             # the energy integrals: this evaluation's powers over the time since the last one that advanced
-            accumulate_energy(self._glob, t - self._t_energy)
-            self._t_energy = t
-        return self._after_step(t, t0, worst, want, True)
+            t_energy = self._t_energy
+            dt_energy = t - t_energy if t > t_energy else 0.0
+            sd = self._sysdata
+            worst = step(sd.GetODE2Coordinates(), sd.GetODE2Coordinates_t(), index, q, q_t, ref, params, table, z,
+                         n_cage, kind, rdata, hist, hist_trial, t - self._t_commit, hz, work, rings, fr, glob, diag,
+                         cload, want, dt_energy, out)
+            if dt_energy > 0.0:
+                self._t_energy = t
+            mbs.SetObjectParameter(self._ball_object, "forceVector", out_balls)
+            self._after_advance(worst, t, want, t, rings)
+            self._evaluations += 1
+            self._wall += perf_counter() - t0
+            return out[out_uf_index].tolist()
+
+        return force_uf
 
     def _make_fast_uf(self):
         """The fast mode's force user function, a closure over the element's
@@ -218,13 +289,12 @@ class UserFunctionsMixin:
         work, rings0, rings, rings_sub = self._work, self._rings0, self._rings, self._rings_sub
         hist, hz, fr, glob, diag, cload, out = (self._hist, self._hz, self._fr, self._glob, self._diag,
                                                 self._cage_load, self._out)
-        speeds, dt_sub, max_overlap, spin = self._speeds, self._dt_sub, self._max_overlap, EK.RD_SPIN
+        speeds, dt_sub, spin = self._speeds, self._dt_sub, EK.RD_SPIN
         spin_angles = self._spin_angles if self._track_angle else None
-        signal_sample = self._signal_sample if self._sig is not None else None
         # [t of the last Exudyn evaluation (nan: none yet), tau, next sample, step checked, Exudyn steps]
         clock = self._clock
         run, sysd, new_run = self._run, self._sys, self._new_run
-        evidence = self._runaway_evidence()
+        self._runaway_evidence()  # created here: _after_advance updates it
         asarray = np.asarray
         perf_counter = time.perf_counter
         step = _entry_point(EK.fast_step, (asarray(np.zeros(1)), asarray(np.zeros(1)), ref, params, table, kind,
@@ -255,15 +325,9 @@ class UserFunctionsMixin:
                 clock[0] = t
                 clock[1] = t_end
                 clock[4] += 1
-                if not worst <= max_overlap:  # also catches NaN
-                    self._check_worst(worst, t)
-                if worst > evidence[0]:
-                    evidence[0] = worst
+                self._after_advance(worst, t, want, t_end, rings_sub)
                 if want:
-                    self._sample(t_end, rings_sub)
                     clock[2] = self._next_sample
-                if signal_sample is not None:
-                    signal_sample(t)
                 self._wall += perf_counter() - t0
                 return out
             # a new SolveDynamic starts at or before the last time (a run that starts later continues this one)
@@ -293,21 +357,19 @@ class UserFunctionsMixin:
 
         return force_uf_fast
 
-    def _after_step(self, t, t0, worst, want, advanced):
-        """Runaway check, sampling and bookkeeping after a force evaluation."""
-        if advanced:
-            if not worst <= self._max_overlap:  # also catches NaN
-                self._check_worst(worst, t)
-            evidence = self._evidence
-            if worst > evidence[0]:
-                evidence[0] = worst
-            if want:
-                self._sample(t, self._rings)
-            if self._sig is not None:
-                self._signal_sample(t)
-        self._evaluations += 1
-        self._wall += time.perf_counter() - t0
-        return self._out
+    def _after_advance(self, worst, t, want, t_sample, rings):
+        """After an evaluation at t that advanced the balls (both modes): the runaway check of its largest
+        overlap / R_b ``worst``, the evidence kept for it, a sample at ``t_sample`` of the ring poses
+        ``rings`` the balls saw (when ``want``) and the signal series."""
+        if not worst <= self._max_overlap:  # also catches NaN
+            self._check_worst(worst, t)
+        evidence = self._evidence
+        if worst > evidence[0]:
+            evidence[0] = worst
+        if want:
+            self._sample(t_sample, rings)
+        if self._sig is not None:
+            self._signal_sample(t)
 
     def _check_fast_step(self, h, stacklevel=4):
         """Warn (once) when the fast mode's Exudyn step ``h`` exceeds the ring

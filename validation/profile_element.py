@@ -1,0 +1,162 @@
+"""Where an Exudyn step of the bearing element's body mode spends its time (6208, F_r = 3000 N, 500 rad/s, 5 us).
+
+Per Exudyn step (VelocityVerlet, the body mode's solver), medians of
+``--repeat`` runs of ``--t-end`` seconds, all in one process:
+
+* the full element: wall time per step, force evaluations per step, and
+  Exudyn's own timers (``mbs.sys['dynamicSolver'].timer``: ODE2RHS, which
+  holds the user-function calls, the linear solve, the rest);
+* the element's user function from entry to return (``element._wall``:
+  Python wrapper plus compiled kernel);
+* the compiled kernel alone (the user function's compiled call on the
+  element's arrays at the end of a run, timed with ``timeit``);
+* Exudyn alone: the same items with a user function that returns the last
+  force vector at once (Exudyn's step, its Python call and the conversion of
+  the coordinates and of the returned forces, no bearing), and with no user
+  function at all (Exudyn's integration of the nodes);
+* the reference engine on the same scene and step (``validation/bench_reference.py``'s scene).
+
+The Exudyn boundary per step is the difference "Exudyn alone (constant user function)" - "no user
+function"; the Python wrapper is "user function" - "kernel".
+
+    python validation/profile_element.py [--t-end 0.02] [--repeat 5]
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import timeit
+import warnings
+from pathlib import Path
+
+import numpy as np
+
+import exudyn_bearing as eb
+from exudyn_bearing.solvers.element.engine import ExudynEngine, solve_dynamic
+from exudyn_bearing.solvers.reference import ReferenceEngine
+
+HERE = Path(__file__).resolve().parent
+SCENE = dict(Fr=3000.0, omega=500.0, sample_dt=1e-3, dt=5e-6)
+TIMERS = ("ODE2RHS", "newtonIncrement", "massMatrix", "integrationFormula", "writeSolution", "python", "overhead",
+          "total")
+
+
+def body_run(t_end, variant="full"):
+    """One body-mode run; ``variant``: "full", "constant" (a user function returning the last forces) or
+    "none" (no force user function). Returns a dict of per-step times [s] and counts."""
+    eng = ExudynEngine("6208", eb.Scenario(t_end=t_end, **SCENE))
+    el = eng.element
+    mbs = eng.mbs
+    ss = el.SimulationSettings(t_end)
+    ss.show.computationTime = True  # fills Exudyn's timers (printed only with Exudyn's output, kept off here)
+    n = ss.timeIntegration.numberOfSteps
+    if variant != "full":
+        obj = el.items["object"]
+        # what the user function returns: the forces of its object's coordinates (a list in the two-object
+        # layout, the whole array in the single-object one)
+        ret = el._out[el._out_uf_index].tolist() if el.items.get("ballObject") is not None else el._out
+        mbs.SetObjectParameter(obj, "forceUserFunction",
+                               (lambda mbs_, t, i, q, q_t: ret) if variant == "constant" else 0)
+    t0 = timeit.default_timer()
+    try:
+        solve_dynamic(mbs, ss)
+    except Exception:  # noqa: BLE001 - without the bearing's forces the ring may leave the balls
+        pass
+    wall = timeit.default_timer() - t0
+    timer = mbs.sys["dynamicSolver"].timer
+    row = dict(step=wall / n, evaluations=el._evaluations / n, uf=el._wall / n)
+    row.update({k: getattr(timer, k) / n for k in TIMERS})
+    if variant == "full":
+        row["kernel"] = kernel_time(el)
+    return row
+
+
+def kernel_time(el, number=2000):
+    """Seconds per call of the body mode's compiled call on the element's arrays (state at the end of the run)."""
+    from exudyn_bearing.solvers.element import kernels as EK
+
+    mbs = el.mbs
+    hist_trial = el._hist_trial.copy()
+    if el.items.get("ballObject") is not None:  # two-object layout: the compiled call from the system's arrays
+        qs, qts = mbs.systemData.GetODE2Coordinates(), mbs.systemData.GetODE2Coordinates_t()
+        q, qt = np.zeros(el.ref.size), np.zeros(el.ref.size)
+
+        def call():  # through numba's dispatcher (the user function calls the entry point, a little faster)
+            EK.body_rhs(qs, qts, el._sys_index, q, qt, el.ref, el.params, el.table, el.z, el.n_cage,
+                        el._ring_kind, el._ring_data, el._hist, hist_trial, 5e-6, el._hz, el._work, el._rings,
+                        el._fr, el._glob, el._diag, el._cage_load, False, 0.0, el._out)
+    else:  # single-object layout (code before it): element_rhs on the object's coordinates
+        q = np.zeros(el.ref.size)
+        qt = np.zeros(el.ref.size)
+        k = 0
+        for nd in el.items["ballNodes"] + el.items["cageNodes"] + el.items["ringNodes"]:
+            v = np.asarray(mbs.GetNodeOutput(nd, eb_coord()), float)
+            vt = np.asarray(mbs.GetNodeOutput(nd, eb_coord(True)), float)
+            q[k:k + v.size], qt[k:k + v.size] = v, vt
+            k += v.size
+
+        def call():
+            EK.element_rhs(q, qt, el.ref, el.params, el.table, el.z, el.n_cage, el._ring_kind, el._ring_data,
+                           el._hist, hist_trial, 5e-6, el._hz, el._work, el._rings, el._fr, el._glob, el._diag,
+                           el._cage_load, False, el._out)
+    call()
+    return min(timeit.repeat(call, number=number, repeat=5)) / number
+
+
+def eb_coord(rate=False):
+    import exudyn as exu
+
+    return exu.OutputVariableType.Coordinates_t if rate else exu.OutputVariableType.Coordinates
+
+
+def step_args(argv, doc):
+    """--t-end and --repeat of the per-step scripts (this one and bench_overhead.py), warnings off."""
+    ap = argparse.ArgumentParser(description=doc.split("\n")[0])
+    ap.add_argument("--t-end", type=float, default=0.02)
+    ap.add_argument("--repeat", type=int, default=5)
+    warnings.simplefilter("ignore")
+    return ap.parse_args(argv)
+
+
+def main(argv=None):
+    args = step_args(argv, __doc__)
+    body_run(1e-3)  # compile / load the caches
+    ReferenceEngine("6208", eb.Scenario(t_end=1e-3, **SCENE)).run()
+    rows = {v: [] for v in ("full", "constant", "none")}
+    ref = []
+    for _ in range(args.repeat):  # interleaved: the machine's load moves all alike
+        for v in rows:
+            rows[v].append(body_run(args.t_end, v))
+        rec = ReferenceEngine("6208", eb.Scenario(t_end=args.t_end, **SCENE)).run()
+        ref.append(rec.wall_s / round(args.t_end / SCENE["dt"]))
+    med = {v: {k: float(np.median([r[k] for r in rs])) for k in rs[0]} for v, rs in rows.items()}
+    f, c, n = med["full"], med["constant"], med["none"]
+    us = 1e6
+    print(f"6208, Fr = 3000 N, 500 rad/s, body mode, VelocityVerlet 5 us, T = {args.t_end} s, medians of "
+          f"{args.repeat} interleaved runs; per Exudyn step [us]:")
+    print(f"  full element step                       {f['step'] * us:7.2f}   ({f['step'] / SCENE['dt']:.2f} s wall "
+          "per simulated s)")
+    print(f"  force evaluations per step              {f['evaluations']:7.3f}")
+    print(f"  Exudyn timer ODE2RHS (holds the UF)     {f['ODE2RHS'] * us:7.2f}")
+    print(f"  Exudyn timer newtonIncrement (M solve)  {f['newtonIncrement'] * us:7.2f}")
+    print("  Exudyn timers massMatrix, integration, writeSolution, python, overhead: "
+          + ", ".join(f"{f[k] * us:.2f}" for k in ("massMatrix", "integrationFormula", "writeSolution", "python",
+                                                    "overhead")))
+    print(f"  user function, entry to return          {f['uf'] * us:7.2f}")
+    print(f"  compiled kernel alone                   {f['kernel'] * us:7.2f}")
+    print(f"  Python wrapper (UF - kernel)            {(f['uf'] - f['kernel'] * f['evaluations']) * us:7.2f}")
+    print(f"  Exudyn alone, constant user function    {c['step'] * us:7.2f}")
+    print(f"  Exudyn alone, no user function          {n['step'] * us:7.2f}")
+    print(f"  Exudyn boundary (constant UF - none)    {(c['step'] - n['step']) * us:7.2f}")
+    print("  no user function, Exudyn timers ODE2RHS, newtonIncrement, writeSolution, overhead: "
+          + ", ".join(f"{n[k] * us:.2f}" for k in ("ODE2RHS", "newtonIncrement", "writeSolution", "overhead")))
+    print(f"  rest (full - UF - constant-UF step)     {(f['step'] - f['uf'] - c['step']) * us:7.2f}")
+    print(f"  reference engine, same scene and step   {np.median(ref) * us:7.2f}   "
+          f"({np.median(ref) / SCENE['dt']:.2f} s wall per simulated s)")
+    (HERE / "out").mkdir(exist_ok=True)
+    (HERE / "out" / "profile_element.json").write_text(json.dumps(dict(median=med, reference=float(np.median(ref)),
+                                                                       t_end=args.t_end), indent=2))
+
+
+if __name__ == "__main__":
+    main()
