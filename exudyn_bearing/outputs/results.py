@@ -621,6 +621,9 @@ class Results:
         }
         if level == "point":
             out["note"] = POINT_LEVEL_NOTES[self.scenario.friction]
+            if self.scenario.rolling_resistance:
+                out["note"] += ("; the rolling resistance (hysteresis and EHL rolling) acts as a moment pair "
+                                "(Scenario.rolling_resistance)")
         out.update(contact_summary(self.data, w, omega, b))
         if self.has_protocol():
             out["phases"] = self._phase_summaries()
