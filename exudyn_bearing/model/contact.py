@@ -330,19 +330,19 @@ def _ellipse_traction(p, rx, kappa, a_ax, b_ax, f_n, sx, sy, sz, mx, my, mz, h_m
 
 
 @kernel(no_runtime=True)
-def _rolling_resistance(p, q_el, u_r, rx, kappa, b_roll, roll):
+def _rolling_resistance(p, f_n, u_r, rx, kappa, b_roll, roll):
     """Rolling-resistance moment of a ball / raceway contact (docs/theory/losses.md, "In the dynamic
-    engines"): magnitude (F_h + 2 F_R) R_x, F_h the hysteresis force (Johnson) at the load q_el and
+    engines"): magnitude (F_h + 2 F_R) R_x, F_h the hysteresis force (Johnson) at the normal force f_n and
     the semi-axis b_roll along the rolling direction, F_R the EHL rolling force (Harris & Kotzalas;
     with lubrication and the Hertz law only) at the rolling speed u_r, opposing ``roll`` = (w_ball -
     w_ring) . e_y; its sign regularised linearly below R_x |roll| = ``P_VREG`` (the engines'
     regularising speed, as the regularised Coulomb friction). Returns the moment on the ball along
     e_y (the ring takes minus it) and its dissipation split into the EHL rolling and hysteresis
     parts [W]. Called, not inlined, and compiled only with a ``loss_path`` (:func:`forces`)."""
-    f_h = _hysteresis_rolling_force(q_el, b_roll, rx, p[P_ALPHA_H])
+    f_h = _hysteresis_rolling_force(f_n, b_roll, rx, p[P_ALPHA_H])
     f_r = 0.0
     if p[P_LUB] > 0.5 and p[P_LAW] < 0.5:
-        f_r = _ehl_rolling_force(u_r, q_el, rx, kappa, p[P_EPRIME], p[P_ETA], p[P_XI])
+        f_r = _ehl_rolling_force(u_r, f_n, rx, kappa, p[P_EPRIME], p[P_ETA], p[P_XI])
     tot = f_h + 2.0 * f_r
     m_act = _regularized_coulomb(rx * roll, tot * rx, 1.0, p[P_VREG])
     power = m_act * abs(roll)
@@ -585,7 +585,7 @@ def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist,
         if rolling_resistance:
             # the rolling-resistance moment pair about e_y: on the ball, and its reaction on the ring
             _s, roll_r, _x, _y, _z, ryx, ryy, ryz = _contact_frame(rings, race, wb, j, dxw, dyw, dzw, nx, ny, nz)
-            m_rr, p_ehl, p_hyst = _rolling_resistance(p, q_el, u_r, rx, kappa, minor if ry >= rx else major,
+            m_rr, p_ehl, p_hyst = _rolling_resistance(p, f_n, u_r, rx, kappa, minor if ry >= rx else major,
                                                       roll_r)
             tb[j, 0] += m_rr * ryx
             tb[j, 1] += m_rr * ryy
