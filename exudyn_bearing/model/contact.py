@@ -329,6 +329,17 @@ def _ellipse_traction(p, rx, kappa, a_ax, b_ax, f_n, sx, sy, sz, mx, my, mz, h_m
     return (f_x * exx + f_y * eyx, f_x * exy + f_y * eyy, f_x * exz + f_y * eyz, m_z, m_y, power)
 
 
+@kernel(inline="always")
+def _moment_pair(tb, fr, j, race, mx, my, mz):
+    """Moment (mx, my, mz) on ball j and its reaction on ring ``race``: a couple pair, no net force."""
+    tb[j, 0] += mx
+    tb[j, 1] += my
+    tb[j, 2] += mz
+    fr[race, 3] -= mx
+    fr[race, 4] -= my
+    fr[race, 5] -= mz
+
+
 @kernel(no_runtime=True)
 def _rolling_resistance(p, f_n, u_r, rx, kappa, b_roll, roll):
     """Rolling-resistance moment of a ball / raceway contact (docs/theory/losses.md, "In the dynamic
@@ -564,15 +575,7 @@ def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist,
             ftx = fty = ftz = m_z = m_y = power = 0.0
         # the spin moment m_z about e_z = -n and the curvature moment m_y about
         # e_y: on the ball, and their reaction on the ring
-        mvx = m_y * eyx - m_z * nx
-        mvy = m_y * eyy - m_z * ny
-        mvz = m_y * eyz - m_z * nz
-        tb[j, 0] += mvx
-        tb[j, 1] += mvy
-        tb[j, 2] += mvz
-        fr[race, 3] -= mvx
-        fr[race, 4] -= mvy
-        fr[race, 5] -= mvz
+        _moment_pair(tb, fr, j, race, m_y * eyx - m_z * nx, m_y * eyy - m_z * ny, m_y * eyz - m_z * nz)
         hist_out[j, race, 0] = 0.0
         hist_out[j, race, 1] = 0.0
         hist_out[j, race, 2] = 0.0
@@ -587,12 +590,7 @@ def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist,
             _s, roll_r, _x, _y, _z, ryx, ryy, ryz = _contact_frame(rings, race, wb, j, dxw, dyw, dzw, nx, ny, nz)
             m_rr, p_ehl, p_hyst = _rolling_resistance(p, f_n, u_r, rx, kappa, minor if ry >= rx else major,
                                                       roll_r)
-            tb[j, 0] += m_rr * ryx
-            tb[j, 1] += m_rr * ryy
-            tb[j, 2] += m_rr * ryz
-            fr[race, 3] -= m_rr * ryx
-            fr[race, 4] -= m_rr * ryy
-            fr[race, 5] -= m_rr * ryz
+            _moment_pair(tb, fr, j, race, m_rr * ryx, m_rr * ryy, m_rr * ryz)
     # forces on the ball: the normal pushes it back towards the groove centre
     fb[j, 0] += -f_n * nx + ftx
     fb[j, 1] += -f_n * ny + fty
