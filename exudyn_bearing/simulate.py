@@ -201,8 +201,10 @@ def CreateBallBearing(mbs, bearing: BallBearing | str, markerInnerRing, markerOu
         (``lubricant``, ``cage``, ``lubrication``, ``friction``, ``tangential``,
         ``hertzModel``, ``film``, ``stepSize``, ``innerRingSpeed``,
         ``initialOmega``, ``initialLoad`` ((Fr, Fa) [N] or a radial load Fr),
-        ``sampleInterval``, ``show``, ...); an invalid option raises
-        InputError naming it.
+        ``sampleInterval``, ``show``, the loss switches ``rollingResistance``,
+        ``ballDrag``, ``oilVolumeFraction``, ``hysteresisLossFactor`` of
+        docs/theory/losses.md, ...); an invalid option raises InputError
+        naming it.
 
     Returns
     -------

@@ -64,6 +64,16 @@ def add_parser(sub):
     add_traction_argument(p, "traction model of the ellipse level")
     add_strip_arguments(p)
     add_ring_growth_argument(p)
+    p.add_argument("--rolling-resistance", action=argparse.BooleanOptionalAction, default=False,
+                   help="rolling resistance (elastic hysteresis and, with lubrication, the EHL rolling force) as a "
+                        "moment pair at every loaded ball / raceway contact (docs/theory/losses.md); default off")
+    p.add_argument("--ball-drag", action=argparse.BooleanOptionalAction, default=False,
+                   help="drag of the oil-air mixture (at rest with the outer ring) on every ball; default off")
+    p.add_argument("--oil-volume-fraction", type=finite_float, default=0.0,
+                   help="oil's share of the free volume the balls move through, 0-1, for --ball-drag (0: air)")
+    p.add_argument("--hysteresis-loss-factor", type=finite_float, default=Scenario.hysteresis_loss_factor,
+                   help="hysteresis loss factor alpha_h of --rolling-resistance [-] (default %(default)g, "
+                        "hardened bearing steel)")
     p.add_argument("--out", metavar="DIR", help="write run.npz, run.json, run.png and run.csv into DIR")
     p.add_argument("--progress", action=argparse.BooleanOptionalAction, default=None,
                    help="progress on stderr (default: for runs over 2 million steps)")
@@ -78,7 +88,8 @@ def scenario_from_args(args) -> Scenario:
               tangential=args.tangential, hertz=args.hertz, film=args.film, cage=args.cage,
               lubrication=args.lubrication, initial=args.initial, control=args.control,
               traction_level=args.traction_level, traction=args.traction, n_strips=args.strips, n_across=args.points_across,
-              ring_growth=args.ring_growth)
+              ring_growth=args.ring_growth, rolling_resistance=args.rolling_resistance, ball_drag=args.ball_drag,
+              oil_volume_fraction=args.oil_volume_fraction, hysteresis_loss_factor=args.hysteresis_loss_factor)
     if args.ramp:
         up, steady, down = args.ramp
         kw.update(t_ramp_up=up, t_steady=steady, t_ramp_down=down)
@@ -104,6 +115,7 @@ def _table(summary, t_end=None):
     if t_end is not None and "t_end" in summary and not math.isclose(summary["t_end"], t_end, rel_tol=1e-9):
         rows = [(k, f"{t_end:g} s (last sample at {summary['t_end']:.6g} s)", None) if k == "t_end" else r
                 for r in rows for k in (r[0],)]
+    rows += [(f"power_loss.{k}", v, "W") for k, v in summary["power_loss"].items()]
     rows.append(("q_max_method", ", ".join(f"{race}: {m}" for race, m in summary["q_max_method"].items())))
     rows += [(f"energy_source.{k}", v) for k, v in summary["energy_source"].items()]
     rows += [("losses_modelled", "; ".join(summary["losses_modelled"])),

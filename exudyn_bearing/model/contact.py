@@ -74,6 +74,9 @@ from ..physics.friction import (_implicit_tangential_stiffness, _regularized_cou
                                 friction_coefficient)
 from ..physics.geometry import _groove_geometry, _raceway_radii_cos
 from ..physics.hertz import _curvature_sum_radius, _kfe_fast, _semi_axes, _semi_axes_overlap, _stiffness
+from ..physics.losses import _ehl_rolling_force, _hysteresis_rolling_force, ball_drag_force
+from .layout import (D_ROLLRES, G_DRAG_POWER, G_EHL_POWER, G_HYST_POWER, P_ALPHA_H, P_DRAG, P_ETA_MIX, P_RHO_MIX,
+                     P_ROLLRES)
 from .layout import (D_POWER, D_ROLL, D_SPIN, D_SPIN_MOMENT, P_GROWTH_I, P_GROWTH_O, P_N_ACROSS, P_N_STRIPS,
                      P_RD_I, P_RD_O, P_TRACTION_CODE, P_TRACTION_LEVEL, P_TRACTION_PARAMS)
 from .layout import (D_A, D_ANGLE, D_B, D_DEFECT, D_FRICTION, D_HMIN, D_LAMBDA, D_LOAD, D_MU, D_OVERLAP, D_PMAX,
@@ -86,7 +89,7 @@ from .layout import (D_A, D_ANGLE, D_B, D_DEFECT, D_FRICTION, D_HMIN, D_LAMBDA, 
                      P_MU_DRY, P_MU_F, P_MZ, P_RB, P_RCI, P_RCO, P_RGUIDE, P_RHO_I, P_RHO_O, P_RP, P_RZ, P_SIGMA,
                      P_VREG, P_XI, P_ZG_I, P_ZG_O)
 
-__all__ = ["forces", "accumulate_energy", "scene_paths"]
+__all__ = ["forces", "accumulate_energy", "scene_paths", "scene_loss_path"]
 
 
 @kernel
@@ -327,6 +330,73 @@ def _ellipse_traction(p, rx, kappa, a_ax, b_ax, f_n, sx, sy, sz, mx, my, mz, h_m
 
 
 @kernel(inline="always")
+def _moment_pair(tb, fr, j, race, mx, my, mz):
+    """Moment (mx, my, mz) on ball j and its reaction on ring ``race``: a couple pair, no net force."""
+    tb[j, 0] += mx
+    tb[j, 1] += my
+    tb[j, 2] += mz
+    fr[race, 3] -= mx
+    fr[race, 4] -= my
+    fr[race, 5] -= mz
+
+
+@kernel(no_runtime=True)
+def _rolling_resistance(p, f_n, u_r, rx, kappa, b_roll, roll):
+    """Rolling-resistance moment of a ball / raceway contact (docs/theory/losses.md, "In the dynamic
+    engines"): magnitude (F_h + 2 F_R) R_x, F_h the hysteresis force (Johnson) at the normal force f_n and
+    the semi-axis b_roll along the rolling direction, F_R the EHL rolling force (Harris & Kotzalas;
+    with lubrication and the Hertz law only) at the rolling speed u_r, opposing ``roll`` = (w_ball -
+    w_ring) . e_y; its sign regularised linearly below R_x |roll| = ``P_VREG`` (the engines'
+    regularising speed, as the regularised Coulomb friction). Returns the moment on the ball along
+    e_y (the ring takes minus it) and its dissipation split into the EHL rolling and hysteresis
+    parts [W]. Called, not inlined, and compiled only with a ``loss_path`` (:func:`forces`)."""
+    f_h = _hysteresis_rolling_force(f_n, b_roll, rx, p[P_ALPHA_H])
+    f_r = 0.0
+    if p[P_LUB] > 0.5 and p[P_LAW] < 0.5:
+        f_r = _ehl_rolling_force(u_r, f_n, rx, kappa, p[P_EPRIME], p[P_ETA], p[P_XI])
+    tot = f_h + 2.0 * f_r
+    m_act = _regularized_coulomb(rx * roll, tot * rx, 1.0, p[P_VREG])
+    power = m_act * abs(roll)
+    p_h = power * f_h / tot if tot > 0.0 else 0.0
+    return (-m_act if roll > 0.0 else m_act), power - p_h, p_h
+
+
+@kernel(no_runtime=True)
+def _ball_drag(p, xb, vb, rings, fb, fr):
+    """Drag of the oil-air mixture on every ball centre (docs/theory/losses.md): F_D = 1/2 C_D(Re)
+    rho A |v| v against the ball's velocity v relative to the mixture, which moves with the outer
+    ring (ring 1; :func:`~exudyn_bearing.physics.losses.ball_drag_force`, mixture density and
+    viscosity ``P_RHO_MIX``, ``P_ETA_MIX``); the reaction acts on the outer ring at the ball centre.
+    Returns the dissipation [W]. Called only with a ``loss_path`` (:func:`forces`)."""
+    total = 0.0
+    d_ball = 2.0 * p[P_RB]
+    for j in range(xb.shape[0]):
+        dx = xb[j, 0] - rings[1, 0]
+        dy = xb[j, 1] - rings[1, 1]
+        dz = xb[j, 2] - rings[1, 2]
+        ex, ey, ez = _cross(rings[1, 15], rings[1, 16], rings[1, 17], dx, dy, dz)
+        vx = vb[j, 0] - rings[1, 3] - ex
+        vy = vb[j, 1] - rings[1, 4] - ey
+        vz = vb[j, 2] - rings[1, 5] - ez
+        v = math.sqrt(vx * vx + vy * vy + vz * vz)
+        if v > 0.0:
+            f = ball_drag_force(v, d_ball, p[P_RHO_MIX], p[P_ETA_MIX])
+            fx, fy, fz = -f * vx / v, -f * vy / v, -f * vz / v
+            fb[j, 0] += fx
+            fb[j, 1] += fy
+            fb[j, 2] += fz
+            fr[1, 0] -= fx
+            fr[1, 1] -= fy
+            fr[1, 2] -= fz
+            mx_, my_, mz_ = _cross(dx, dy, dz, -fx, -fy, -fz)
+            fr[1, 3] += mx_
+            fr[1, 4] += my_
+            fr[1, 5] += mz_
+            total += f * v
+    return total
+
+
+@kernel(inline="always")
 def _open_contact(hist_out, diag, j, race, delta, ca, sa, drop, want):
     """A ball / raceway contact without overlap: its tangential spring is
     reset; diagnostics zero, the gap, the contact angle, the defect drop, no
@@ -425,15 +495,17 @@ def _turn_ball_frame(p, hist, hist_out, dt_hist, wb, j):
 
 @kernel(inline="always")
 def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist, hz, fb, tb, fr, diag, want, ln_g,
-                  defect_path, ellipse_path):
+                  defect_path, ellipse_path, loss_path):
     """Ball j on the inner (race 0, ring 0) or outer (race 1, ring 1) groove.
 
     Adds the contact force and moment to ball j (fb, tb) and the reaction to
     the ring (fr); writes the spring to ``hist_out`` and, with ``want``, the
     diagnostics. Returns (overlap / R_b, frictional power [W], dissipation of
-    the normal damping [W]); zeros when the contact is open. ``ln_g`` = ln(xi E');
-    ``defect_path``, ``ellipse_path``: None compiles the contact without the
-    defect drop or the ellipse traction (:func:`forces`)."""
+    the normal damping [W], of the EHL rolling and of the hysteresis rolling
+    resistance [W]); zeros when the contact is open. ``ln_g`` = ln(xi E');
+    ``defect_path``, ``ellipse_path``, ``loss_path``: None compiles the contact
+    without the defect drop, the ellipse traction or the rolling resistance
+    (:func:`forces`)."""
     inner = race == 0
     if inner:
         rho, zg, rc, growth = p[P_RHO_I], p[P_ZG_I], p[P_RCI], p[P_GROWTH_I]
@@ -454,7 +526,7 @@ def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist,
             delta -= drop
     if delta <= 0.0:
         _open_contact(hist_out, diag, j, race, delta, ca, sa, drop, want)
-        return 0.0, 0.0, 0.0
+        return 0.0, 0.0, 0.0, 0.0, 0.0
     # contact normal in the world frame, n = A n_local
     if rotated:
         nx = rings[race, 6] * nlx + rings[race, 7] * nly + rings[race, 8] * nlz
@@ -468,7 +540,10 @@ def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist,
     rr = _curvature_sum_radius(rx, ry)
     q_el, k_n, c_hyst = _normal_law(p, delta, kappa, ell_f, ell_e, rr)
     ellipse = p[P_TRACTION_LEVEL] > 0.5
-    if want or ellipse or p[P_LUB] > 0.5:
+    rolling_resistance = False
+    if loss_path is not None:  # pruned at compile time when None
+        rolling_resistance = p[P_ROLLRES] > 0.5
+    if want or ellipse or p[P_LUB] > 0.5 or rolling_resistance:
         if p[P_LAW] > 0.5:
             major, minor = _semi_axes(kappa, ell_e, rr, p[P_EPRIME], q_el)
         else:  # at the Hertz load q_el of this overlap: the same axes by a square root
@@ -500,15 +575,7 @@ def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist,
             ftx = fty = ftz = m_z = m_y = power = 0.0
         # the spin moment m_z about e_z = -n and the curvature moment m_y about
         # e_y: on the ball, and their reaction on the ring
-        mvx = m_y * eyx - m_z * nx
-        mvy = m_y * eyy - m_z * ny
-        mvz = m_y * eyz - m_z * nz
-        tb[j, 0] += mvx
-        tb[j, 1] += mvy
-        tb[j, 2] += mvz
-        fr[race, 3] -= mvx
-        fr[race, 4] -= mvy
-        fr[race, 5] -= mvz
+        _moment_pair(tb, fr, j, race, m_y * eyx - m_z * nx, m_y * eyy - m_z * ny, m_y * eyz - m_z * nz)
         hist_out[j, race, 0] = 0.0
         hist_out[j, race, 1] = 0.0
         hist_out[j, race, 2] = 0.0
@@ -516,6 +583,14 @@ def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist,
         ftx, fty, ftz = _tangential_force(p, hist, hist_out, dt_hist, j, race, nx, ny, nz, sx, sy, sz, slip, k_n,
                                           f_n, mu)
         power = -(ftx * sx + fty * sy + ftz * sz)
+    p_ehl = p_hyst = 0.0
+    if loss_path is not None:  # pruned at compile time when None
+        if rolling_resistance:
+            # the rolling-resistance moment pair about e_y: on the ball, and its reaction on the ring
+            _s, roll_r, _x, _y, _z, ryx, ryy, ryz = _contact_frame(rings, race, wb, j, dxw, dyw, dzw, nx, ny, nz)
+            m_rr, p_ehl, p_hyst = _rolling_resistance(p, f_n, u_r, rx, kappa, minor if ry >= rx else major,
+                                                      roll_r)
+            _moment_pair(tb, fr, j, race, m_rr * ryx, m_rr * ryy, m_rr * ryz)
     # forces on the ball: the normal pushes it back towards the groove centre
     fb[j, 0] += -f_n * nx + ftx
     fb[j, 1] += -f_n * ny + fty
@@ -561,8 +636,9 @@ def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist,
         diag[j, race, D_ROLL] = roll
         diag[j, race, D_POWER] = power
         diag[j, race, D_SPIN_MOMENT] = m_z
+        diag[j, race, D_ROLLRES] = p_ehl + p_hyst
     # dissipation of the normal damping: the applied normal force beyond the elastic one times the approach rate
-    return delta / rb, power, (f_n - q_el) * ddot
+    return delta / rb, power, (f_n - q_el) * ddot, p_ehl, p_hyst
 
 
 @kernel(inline="always")
@@ -684,18 +760,20 @@ def _global_diagnostics(rings, fr, power, worst, glob):
 
 @kernel(no_runtime=True)
 def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb, tb, fc, fr, glob, diag,
-           cage_load, want, defect_path=True, ellipse_path=True):
+           cage_load, want, defect_path=True, ellipse_path=True, loss_path=True):
     """All contact forces of the bearing (one call; inputs and outputs in the
     module docstring). ``hist_out`` may be ``hist`` (every evaluation a
     committed step, as in the reference engine). Returns the largest
     overlap / R_b of the ball / raceway contacts.
 
-    ``defect_path`` and ``ellipse_path`` choose what is compiled: None leaves
-    the defect code (:func:`_defect_drop`, :func:`_turn_ball_frame`) or the
-    ellipse traction (:func:`_ellipse_traction` and the traction models) out
-    of this specialisation (numba prunes the branches on ``is None`` before
-    typing), which shortens a cold start of a scene without them
-    (:func:`scene_paths`); the defaults compile both. A scene that needs a
+    ``defect_path``, ``ellipse_path`` and ``loss_path`` choose what is
+    compiled: None leaves the defect code (:func:`_defect_drop`,
+    :func:`_turn_ball_frame`), the ellipse traction (:func:`_ellipse_traction`
+    and the traction models) or the rolling resistance and ball drag
+    (:func:`_rolling_resistance`, :func:`_ball_drag`) out of this
+    specialisation (numba prunes the branches on ``is None`` before typing),
+    which shortens a cold start of a scene without them (:func:`scene_paths`,
+    :func:`scene_loss_path`); the defaults compile all. A scene that needs a
     path left out returns NaN (the engines stop on a non-finite state)."""
     z = xb.shape[0]
     fb[:, :] = 0.0
@@ -712,18 +790,27 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb,
     if ellipse_path is None:
         if p[P_TRACTION_LEVEL] > 0.5:
             return np.nan  # compiled without the ellipse traction
+    if loss_path is None:
+        if p[P_ROLLRES] > 0.5 or p[P_DRAG] > 0.5:
+            return np.nan  # compiled without the rolling resistance and ball drag
+    ehl_sum = 0.0
+    hyst_sum = 0.0
+    drag_sum = 0.0
     ln_g = math.log(p[P_XI] * p[P_EPRIME]) if p[P_LUB] > 0.5 else 0.0  # the film's ln G, a scene constant
     for j in range(z):
         if defect_path is not None:
             if defects:
                 _turn_ball_frame(p, hist, hist_out, dt_hist, wb, j)
         for race in range(2):
-            ratio, power, damp = _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist, hz,
-                                               fb, tb, fr, diag, want, ln_g, defect_path, ellipse_path)
+            ratio, power, damp, p_ehl, p_hyst = _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out,
+                                                              dt_hist, hz, fb, tb, fr, diag, want, ln_g, defect_path,
+                                                              ellipse_path, loss_path)
             if ratio > worst or ratio != ratio:  # a NaN state is the worst: the engines stop on it
                 worst = ratio
             power_sum += power
             damp_sum += damp
+            ehl_sum += p_ehl
+            hyst_sum += p_hyst
     # ball / cage-ball contacts (two per cage ball) or, without cage, ball / ball
     cage = p[P_CAGE] > 0.5
     if cage:
@@ -751,7 +838,13 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb,
             cage_load[k, 1] = 0.0
         if cage:
             damp_sum += _guide_contact(k, p, xc, vc, rings, fc, fr)
+    if loss_path is not None:  # pruned at compile time when None
+        if p[P_DRAG] > 0.5:
+            drag_sum = _ball_drag(p, xb, vb, rings, fb, fr)
     # the powers at every evaluation (the engines integrate them into drive_work and dissipated_work)
+    glob[G_EHL_POWER] = ehl_sum
+    glob[G_HYST_POWER] = hyst_sum
+    glob[G_DRAG_POWER] = drag_sum
     glob[G_POWER] = power_sum
     glob[G_DAMP_POWER] = damp_sum
     glob[G_DRIVE_POWER] = _drive_power(rings, fr)
@@ -768,9 +861,17 @@ def scene_paths(p):
     return (True if p[P_NDEF] > 0.0 else None), (True if p[P_TRACTION_LEVEL] > 0.5 else None)
 
 
+def scene_loss_path(p):
+    """``loss_path`` of :func:`forces` for the parameter vector ``p``: True when the scene switches the
+    rolling resistance or the ball drag on, None when not (that code is then not compiled)."""
+    return True if (p[P_ROLLRES] > 0.5 or p[P_DRAG] > 0.5) else None
+
+
 @kernel(inline="always")
 def accumulate_energy(glob, dt):
     """Add the powers of the last evaluation over ``dt`` to the run's
-    drive_work and dissipated_work (``glob``, kept by the engine for the whole run)."""
+    drive_work and dissipated_work (``glob``, kept by the engine for the whole run): friction,
+    normal damping, rolling resistance and ball drag."""
     glob[G_DRIVE_WORK] += glob[G_DRIVE_POWER] * dt
     glob[G_DISS_WORK] += (glob[G_POWER] + glob[G_DAMP_POWER]) * dt
+    glob[G_DISS_WORK] += (glob[G_EHL_POWER] + glob[G_HYST_POWER] + glob[G_DRAG_POWER]) * dt

@@ -151,6 +151,14 @@ P_RD_I = _entry("deformed_radius_inner", "m", "radius of the pressed inner conta
 P_RD_O = _entry("deformed_radius_outer", "m", "radius of the pressed outer contact across rolling")
 P_GROWTH_I = _entry("growth_inner", "m s^2", "centrifugal growth of the inner groove radius per omega_i^2")
 P_GROWTH_O = _entry("growth_outer", "m s^2", "centrifugal growth of the outer groove radius per omega_o^2")
+# -- rolling resistance and ball drag as forces (docs/theory/losses.md, "In the dynamic engines") ----
+P_ROLLRES = _entry("rolling_resistance", "switch", "rolling-resistance moment pair at every loaded ball / raceway "
+                   "contact: elastic hysteresis and, with lubrication, the EHL rolling force (1) or none (0)")
+P_ALPHA_H = _entry("hysteresis_loss_factor", "-", "hysteresis loss factor alpha_h of the rolling resistance")
+P_DRAG = _entry("ball_drag", "switch", "drag of the oil-air mixture (at rest with the outer ring) on every ball "
+                "centre, reaction on the outer ring (1) or none (0)")
+P_RHO_MIX = _entry("mixture_density", "kg/m^3", "density of the oil-air mixture of the ball drag")
+P_ETA_MIX = _entry("mixture_viscosity", "Pa s", "dynamic viscosity of the oil-air mixture of the ball drag")
 
 #: All entries of the parameter vector, in index order.
 PARAMETERS: tuple[ParameterEntry, ...] = tuple(_ENTRIES)
@@ -197,19 +205,21 @@ HIST_N = 4
 #: minus ``defect_drop``, the drop of the contact into a localized defect).
 DIAG_FIELDS = ("load", "overlap", "contact_angle", "a", "b", "p_max", "u_r", "h_min",
                "lambda", "regime", "mu", "slip_speed", "srr", "friction_force", "defect_drop", "spin", "roll",
-               "dissipation", "spin_moment")
+               "dissipation", "spin_moment", "rolling_resistance")
 (D_LOAD, D_OVERLAP, D_ANGLE, D_A, D_B, D_PMAX, D_UR, D_HMIN, D_LAMBDA, D_REGIME, D_MU, D_SLIP, D_SRR,
- D_FRICTION, D_DEFECT, D_SPIN, D_ROLL, D_POWER, D_SPIN_MOMENT) = range(len(DIAG_FIELDS))
+ D_FRICTION, D_DEFECT, D_SPIN, D_ROLL, D_POWER, D_SPIN_MOMENT, D_ROLLRES) = range(len(DIAG_FIELDS))
 #: Units of the per-contact diagnostics (regime: 0 boundary, 1 mixed, 2 full film, -1 no contact).
 #: ``spin`` and ``roll``: the ball's angular velocity relative to the race
 #: along the contact normal and along the in-plane tangent e_y = e_x x n
 #: (e_x the rolling direction), their ratio the spin-to-roll ratio;
 #: ``dissipation``: frictional power of the contact; ``spin_moment``: the
-#: traction moment on the ball about the contact normal (ellipse level).
+#: traction moment on the ball about the contact normal (ellipse level);
+#: ``rolling_resistance``: power of the contact's rolling-resistance moment pair
+#: (hysteresis and EHL rolling; 0 without ``Scenario.rolling_resistance``).
 DIAG_UNITS = {"load": "N", "overlap": "m", "contact_angle": "rad", "a": "m", "b": "m", "p_max": "Pa",
               "u_r": "m/s", "h_min": "m", "lambda": "-", "regime": "code", "mu": "-", "slip_speed": "m/s",
               "srr": "-", "friction_force": "N", "defect_drop": "m", "spin": "rad/s", "roll": "rad/s",
-              "dissipation": "W", "spin_moment": "N m"}
+              "dissipation": "W", "spin_moment": "N m", "rolling_resistance": "W"}
 NDIAG = len(DIAG_FIELDS)
 #: Global diagnostics per sample, in order: inner-ring speed, force of the
 #: balls on the inner ring and torque about its axis, total frictional power,
@@ -221,21 +231,28 @@ NDIAG = len(DIAG_FIELDS)
 #: power both rings put into the balls and cage balls (minus the power of
 #: the ball and cage-ball forces on the rings, translation and rotation);
 #: ``drive_work`` and ``dissipated_work`` their integrals over the run
-#: (drive_power; friction_power + damping_power), accumulated by the engine
+#: (drive_power; friction_power + damping_power + ehl_rolling_power +
+#: hysteresis_power + drag_power), accumulated by the engine
 #: at every step; ``kinetic_energy`` of the balls (translation and rotation)
 #: and cage balls (translation) in the world frame. Over a window,
 #: drive_work = dissipated_work + kinetic_energy change + the change of the
 #: energy stored in the contacts (elastic overlap, tangential springs).
+#: ``ehl_rolling_power``, ``hysteresis_power``: the dissipation of the
+#: rolling-resistance moment pairs, split by their two sources;
+#: ``drag_power``: that of the ball drag (0 when switched off; both part of
+#: ``dissipated_work``).
 GLOBAL_FIELDS = ("omega", "ring_fx", "ring_fy", "ring_fz", "ring_torque", "friction_power",
                  "max_overlap_ratio", "outer_fx", "outer_fy", "outer_fz", "outer_torque", "damping_power",
-                 "drive_power", "drive_work", "dissipated_work", "kinetic_energy")
+                 "drive_power", "drive_work", "dissipated_work", "kinetic_energy", "ehl_rolling_power",
+                 "hysteresis_power", "drag_power")
 (G_OMEGA, G_RING_FX, G_RING_FY, G_RING_FZ, G_RING_TORQUE, G_POWER, G_WORST, G_OUTER_FX, G_OUTER_FY,
  G_OUTER_FZ, G_OUTER_TORQUE, G_DAMP_POWER, G_DRIVE_POWER, G_DRIVE_WORK, G_DISS_WORK,
- G_KINETIC) = range(len(GLOBAL_FIELDS))
+ G_KINETIC, G_EHL_POWER, G_HYST_POWER, G_DRAG_POWER) = range(len(GLOBAL_FIELDS))
 GLOBAL_UNITS = {"omega": "rad/s", "ring_fx": "N", "ring_fy": "N", "ring_fz": "N", "ring_torque": "N m",
                 "friction_power": "W", "max_overlap_ratio": "-", "outer_fx": "N", "outer_fy": "N", "outer_fz": "N",
                 "outer_torque": "N m", "damping_power": "W", "drive_power": "W", "drive_work": "J",
-                "dissipated_work": "J", "kinetic_energy": "J"}
+                "dissipated_work": "J", "kinetic_energy": "J", "ehl_rolling_power": "W", "hysteresis_power": "W",
+                "drag_power": "W"}
 NGLOBAL = len(GLOBAL_FIELDS)
 
 # -- condition-monitoring signals --------------------------------------------

@@ -13,6 +13,7 @@ from ..physics import hertz
 from ..physics.contact_slip import deformed_contact_radius
 from ..physics.ehl import film_model_code
 from ..physics.hertz import material_reduced_modulus
+from ..physics.losses import OIL_DENSITY, mixture_density, mixture_viscosity
 from . import layout as L
 from .initial_state import ring_mass_estimate
 from .operating_geometry import operating_geometry
@@ -79,6 +80,7 @@ def scene_parameters(bearing: BallBearing, scenario: Scenario, lubricant: Lubric
     p[L.P_LAW] = L.LAW_POWER if s.contact_law == "power" else L.LAW_HERTZ
     p[L.P_LAW_K], p[L.P_LAW_N], p[L.P_LAW_D] = (float(x) for x in s.power_law)
     _set_traction(p, b, s)
+    _set_losses(p, s, lub)
     _set_operating_geometry(p, b, s)
     fill_defects(p, b, s.defects)
     return p
@@ -108,6 +110,18 @@ def _set_traction(p, b, s):
     p[L.P_TRACTION_PARAMS:L.P_TRACTION_PARAMS + vec.size] = vec
     p[L.P_RD_I] = float(deformed_contact_radius(p[L.P_RB], p[L.P_RCI]))
     p[L.P_RD_O] = float(deformed_contact_radius(p[L.P_RB], p[L.P_RCO]))
+
+
+def _set_losses(p, s, lub):
+    """Rolling resistance and ball drag switches (docs/theory/losses.md): the hysteresis loss factor,
+    the oil-air mixture's density and viscosity (:func:`~exudyn_bearing.physics.losses.mixture_density`,
+    :func:`~exudyn_bearing.physics.losses.mixture_viscosity`: the quasi-static losses' relations, oil of
+    density :data:`~exudyn_bearing.physics.losses.OIL_DENSITY` and the lubricant's viscosity)."""
+    p[L.P_ROLLRES] = 1.0 if s.rolling_resistance else 0.0
+    p[L.P_ALPHA_H] = s.hysteresis_loss_factor
+    p[L.P_DRAG] = 1.0 if s.ball_drag else 0.0
+    p[L.P_RHO_MIX] = mixture_density(s.oil_volume_fraction, OIL_DENSITY)
+    p[L.P_ETA_MIX] = mixture_viscosity(s.oil_volume_fraction, lub.viscosity)
 
 
 def _set_operating_geometry(p, b, s):

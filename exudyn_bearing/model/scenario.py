@@ -20,6 +20,7 @@ from ..physics.contact_slip import DEFAULT_N_ACROSS, DEFAULT_N_STRIPS
 from ..physics.ehl import film_model_code
 from ..physics import kinematics as _kin
 from ..physics.hertz import method_code
+from ..physics.losses import HYSTERESIS_LOSS_FACTOR_STEEL
 from .layout import MAX_DEFECTS
 from .motion import omega_profile
 
@@ -162,6 +163,24 @@ class Scenario:
         (48 kHz: ``signal_dt=1/48000, dt=signal_dt/4``); each sample is the
         mean over its interval's steps. None (default): no signals. Needs
         ``integrator='verlet'``.
+    rolling_resistance : bool
+        Rolling resistance as a force (docs/theory/losses.md, "In the dynamic
+        engines"): at every loaded ball / raceway contact a moment pair of
+        magnitude (F_h + 2 F_R) R_x opposing the ball's rolling relative to
+        the race, on the ball and, reversed, on the ring (no net force):
+        elastic hysteresis F_h always, the EHL rolling force F_R with
+        ``lubrication`` (the quasi-static losses' relations). Default False
+        (the DEM papers' model).
+    ball_drag : bool
+        Drag of the oil-air mixture on every ball centre against the ball's
+        velocity relative to the mixture, which is taken at rest with the
+        outer ring; the reaction acts on the outer ring. Default False.
+    oil_volume_fraction : float
+        Oil's share of the free volume the balls move through [-], 0-1, for
+        ``ball_drag`` (0: air; the quasi-static ``power_losses`` keyword).
+    hysteresis_loss_factor : float
+        alpha_h [-] of the hysteresis rolling resistance, in [0, 1) (default
+        0.007, hardened bearing steel; the quasi-static ``power_losses`` keyword).
     """
 
     Fr: float = 3000.0
@@ -199,6 +218,10 @@ class Scenario:
     sample_dt: float = 1e-4
     defects: tuple = ()
     signal_dt: float | None = None
+    rolling_resistance: bool = False
+    ball_drag: bool = False
+    oil_volume_fraction: float = 0.0
+    hysteresis_loss_factor: float = HYSTERESIS_LOSS_FACTOR_STEEL
 
     def __post_init__(self):
         # numbers as plain floats (numpy scalars are numbers; strings and booleans are not)
@@ -215,7 +238,7 @@ class Scenario:
         for name in ("Pd", "ring_mass"):
             if getattr(self, name) is not None:
                 object.__setattr__(self, name, check_number(name, getattr(self, name)))
-        for name in ("cage", "lubrication"):
+        for name in ("cage", "lubrication", "rolling_resistance", "ball_drag"):
             object.__setattr__(self, name, check_bool(name, getattr(self, name)))
         for name in ("Fr", "Fa", "t_ramp_up", "t_ramp_down", "mu_dry"):
             if getattr(self, name) < 0:
@@ -306,6 +329,15 @@ class Scenario:
         if self.integrator != "verlet" and any(d.race == "ball" for d in defects):
             raise InputError("integrator: a ball defect needs integrator='verlet' (the ball orientation is "
                              f"advanced once per step), got {self.integrator!r}")
+        for name, ok, limit in (("oil_volume_fraction", lambda v: 0.0 <= v <= 1.0, "lie in [0, 1]"),
+                                ("hysteresis_loss_factor", lambda v: 0.0 <= v < 1.0, "lie in [0, 1)")):
+            v = check_number(name, getattr(self, name))
+            if not (math.isfinite(v) and ok(v)):
+                raise InputError(f"{name}: must {limit}, got {v!r}")
+            object.__setattr__(self, name, v)
+        if self.rolling_resistance and self.contact_law == "power":
+            raise InputError("rolling_resistance: the peer power law has no Hertz ellipse to size the rolling "
+                             "resistance; use contact_law='hertz'")
         if self.signal_dt is not None:
             sd = self.signal_dt
             if isinstance(sd, bool) or not isinstance(sd, (int, float)) or not math.isfinite(sd) or sd <= 0:

@@ -40,7 +40,8 @@ from .window_checks import (LOSS_FLOOR_MU, SPEED_FLOOR, SteadyStateWarning, ener
                             q_max_at_psi0, steadiness)
 
 __all__ = ["Results", "SUMMARY_KEYS", "SUMMARY_UNITS", "SUMMARY_DESCRIPTIONS", "PHASE_NAMES", "LOSSES_MODELLED",
-           "LOSSES_NOT_MODELLED", "DYNAMIC_LOSS_COMPONENTS", "DYNAMIC_NOT_MODELLED", "SteadyStateWarning",
+           "LOSSES_NOT_MODELLED", "DYNAMIC_LOSS_COMPONENTS", "DYNAMIC_NOT_MODELLED", "DYNAMIC_SWITCHED_LOSSES",
+           "SteadyStateWarning",
            "protocol_phases"]
 
 #: Keys every engine's summary has.
@@ -76,6 +77,20 @@ LOSSES_NOT_MODELLED = {
 #: engine's ``damping_power``: ball / raceway, ball / cage ball and cage ball / guide together; the
 #: record does not separate them).
 DYNAMIC_LOSS_COMPONENTS = ("contact_traction_inner", "contact_traction_outer", "contact_damping")
+#: Components a dynamic summary's ``power_loss`` adds when the scenario switches them on (docs/theory/losses.md,
+#: "In the dynamic engines"): the scenario switch, the recorded power (``GLOBAL_FIELDS``), the entry of
+#: ``LOSSES_NOT_MODELLED`` it replaces and what ``losses_modelled`` then says.
+DYNAMIC_SWITCHED_LOSSES = {
+    "ehl_rolling": ("rolling_resistance", "ehl_rolling_power", "EHL rolling resistance",
+                    "EHL rolling resistance 2 F_R R_x |roll| as a moment pair at every loaded contact (isothermal, "
+                    "fully flooded; with lubrication)"),
+    "hysteresis": ("rolling_resistance", "hysteresis_power", None,
+                   "elastic hysteresis rolling resistance F_h R_x |roll| as a moment pair at every loaded contact"),
+    "drag": ("ball_drag", "drag_power", "ball drag and churning",
+             "drag of the oil-air mixture (at rest with the outer ring) on every ball centre"),
+}
+#: What ``not_modelled`` says instead of "ball drag and churning" when the ball drag is on.
+CHURNING_NOT_MODELLED = "churning in an oil bath (the drag through the oil-air mixture is modelled)"
 #: Loss sources no dynamic engine represents (``not_modelled`` of every dynamic summary, after the
 #: level's own ``losses_not_modelled``).
 DYNAMIC_NOT_MODELLED = ("cage land friction (the cage balls' guide contact is frictionless)",
@@ -128,7 +143,9 @@ SUMMARY_DESCRIPTIONS = {
     "power_loss": "mean power of each modelled loss over the window: contact_traction_inner, contact_traction_outer "
                   "(tangential power of the ball / raceway contacts per race, time mean of the sampled per-contact "
                   "dissipation), contact_damping (normal damping of all contacts, time mean of the sampled "
-                  "damping_power; None when not recorded)",
+                  "damping_power; None when not recorded); with Scenario.rolling_resistance also ehl_rolling and "
+                  "hysteresis (the rolling-resistance moment pairs), with Scenario.ball_drag also drag (the ball "
+                  "drag): time means of the engine's ehl_rolling_power, hysteresis_power, drag_power",
     "power_loss_total": "sum of the power_loss components [W] (the sampled split of the engine's dissipation)",
     "not_modelled": "loss sources the dynamic engines leave out at this traction level",
     "energy_check": "drive_power = sum of power_loss + kinetic_energy_change / window length within 1 % of "
@@ -212,9 +229,13 @@ class Results:
 
     def dissipation_series(self) -> np.ndarray:
         """Dissipated power (n,) [W]: ``friction_power`` plus the engine's
-        ``damping_power`` when recorded."""
+        ``damping_power``, rolling-resistance and drag powers when recorded."""
         out = self.global_series("friction_power")
-        return out + self.global_series("damping_power") if self.has_global("damping_power") else out
+        out = out + self.global_series("damping_power") if self.has_global("damping_power") else out
+        for name in ("ehl_rolling_power", "hysteresis_power", "drag_power"):  # 0 unless switched on
+            if self.has_global(name):
+                out = out + self.global_series(name)
+        return out
 
     @property
     def signal_t(self) -> np.ndarray:
@@ -318,7 +339,8 @@ class Results:
         if self.has_global("dissipated_work") and dur > 0.0:
             g = self.global_series("dissipated_work")
             diss = float(g[i1] - g[i0]) / dur
-            src["dissipation"] = ("dissipated_work (engine field: friction_power + damping_power integrated), end "
+            src["dissipation"] = ("dissipated_work (engine field: friction_power + damping_power, and the rolling-resistance and "
+                                  "drag powers when switched on, integrated), end "
                                   "minus start over the window length")
         else:
             diss = float(np.mean(self.dissipation_series()[w]))
@@ -351,6 +373,9 @@ class Results:
                 for race, tag in ((0, "inner"), (1, "outer"))}
         comp["contact_damping"] = (float(np.mean(self.global_series("damping_power")[w]))
                                    if self.has_global("damping_power") else None)
+        for name, (switch, field, _off, _on) in DYNAMIC_SWITCHED_LOSSES.items():
+            if getattr(self.scenario, switch):
+                comp[name] = float(np.mean(self.global_series(field)[w])) if self.has_global(field) else None
         t = self.t[w]
         dur = float(t[-1] - t[0])
         recorded = None
@@ -359,10 +384,26 @@ class Results:
             recorded = float(g[w.stop - 1] - g[w.start]) / dur
         floor = self._loss_floor() * abs(float(np.mean(self.global_series("omega")[w])))
         check = energy_check(energy["drive_power"], comp, energy["kinetic_energy_change"], dur, recorded, floor)
-        level = self.scenario.traction_level
         return {"power_loss": comp, "power_loss_total": check["power_loss_total"],
-                "not_modelled": list(LOSSES_NOT_MODELLED[level]) + list(DYNAMIC_NOT_MODELLED),
+                "not_modelled": self.losses_lists()[1] + list(DYNAMIC_NOT_MODELLED),
                 "energy_check": check}
+
+    def losses_lists(self) -> tuple[list, list]:
+        """(losses_modelled, losses_not_modelled) of the scenario: its traction level's
+        (:data:`LOSSES_MODELLED`, :data:`LOSSES_NOT_MODELLED`) with the rolling resistance and ball
+        drag moved to the modelled ones when switched on (:data:`DYNAMIC_SWITCHED_LOSSES`)."""
+        level = self.scenario.traction_level
+        modelled, not_modelled = list(LOSSES_MODELLED[level]), list(LOSSES_NOT_MODELLED[level])
+        for switch, _field, off, on in DYNAMIC_SWITCHED_LOSSES.values():
+            if getattr(self.scenario, switch):
+                modelled.append(on)
+                if off in not_modelled:
+                    k = not_modelled.index(off)
+                    if switch == "ball_drag":
+                        not_modelled[k] = CHURNING_NOT_MODELLED
+                    else:
+                        del not_modelled[k]
+        return modelled, not_modelled
 
     def _loss_floor(self) -> float:
         """LOSS_FLOOR_MU (|Fr| + |Fa|) r_p [N m]: the smallest friction torque judged (:mod:`.window_checks`)."""
@@ -575,11 +616,14 @@ class Results:
             "lubricant": self.lubricant.name,
             "traction_model": self.traction_model_name(),
             "traction_level": level,
-            "losses_modelled": list(LOSSES_MODELLED[level]),
-            "losses_not_modelled": list(LOSSES_NOT_MODELLED[level]),
+            "losses_modelled": self.losses_lists()[0],
+            "losses_not_modelled": self.losses_lists()[1],
         }
         if level == "point":
             out["note"] = POINT_LEVEL_NOTES[self.scenario.friction]
+            if self.scenario.rolling_resistance:
+                out["note"] += ("; the rolling resistance (hysteresis and EHL rolling) acts as a moment pair "
+                                "(Scenario.rolling_resistance)")
         out.update(contact_summary(self.data, w, omega, b))
         if self.has_protocol():
             out["phases"] = self._phase_summaries()

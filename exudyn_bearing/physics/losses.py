@@ -76,13 +76,16 @@ from __future__ import annotations
 import math
 
 import numpy as np
+from numba import vectorize
 
+from .._jit import kernel
 from ..data.errors import InputError
 
 __all__ = [
     "AIR_DENSITY",
     "AIR_VISCOSITY",
     "HYSTERESIS_LOSS_FACTOR_STEEL",
+    "OIL_DENSITY",
     "SKF_CONSTANTS",
     "SKF_K_RS",
     "SKF_MU_BOUNDARY",
@@ -93,7 +96,9 @@ __all__ = [
     "cage_pocket_friction_power",
     "cage_pocket_loads",
     "ehl_rolling_force",
+    "ehl_rolling_force_expr",
     "hysteresis_rolling_force",
+    "hysteresis_rolling_force_expr",
     "mixture_density",
     "mixture_viscosity",
     "palmgren_load_factor",
@@ -118,6 +123,10 @@ HYSTERESIS_LOSS_FACTOR_STEEL = 0.007
 #: Air at 20 C and 1 atm: density [kg/m^3] and dynamic viscosity [Pa s].
 AIR_DENSITY = 1.204
 AIR_VISCOSITY = 1.81e-5
+#: Density of the oil for the ball drag when the lubricant carries none [kg/m^3]: a mineral oil near
+#: 40 C (ISO VG 32-68 oils are 850-880 kg/m^3 at 15 C); the quasi-static losses and the dynamic
+#: engines' drag use it.
+OIL_DENSITY = 860.0
 #: Sliding friction coefficient of a lubricated ball in its cage pocket [-]: an assumed boundary /
 #: mixed-film value (steel ball on a steel or brass pocket wetted by the oil; lubricated sliding
 #: of these pairs lies at about 0.05-0.15). Not a value of a table in the cited sources.
@@ -188,15 +197,23 @@ def ehl_rolling_force(u_r, load, r_x, kappa, e_prime, eta, xi):
     float or ndarray
         F_R [N], 0 where u_r or load is 0.
     """
-    u = np.abs(np.asarray(u_r, dtype=float))
-    q = np.maximum(np.asarray(load, dtype=float), 0.0)
-    rx = np.asarray(r_x, dtype=float)
-    big_u = eta * u / (e_prime * rx)
-    big_g = xi * e_prime
-    big_w = q / (e_prime * rx * rx)
-    f = 2.86 * e_prime * rx * rx * np.asarray(kappa, dtype=float) ** 0.348 * big_g ** 0.022 \
-        * big_u ** 0.66 * big_w ** 0.47
+    f = ehl_rolling_force_expr(np.asarray(u_r, dtype=float), np.asarray(load, dtype=float),
+                               np.asarray(r_x, dtype=float), np.asarray(kappa, dtype=float), e_prime, eta, xi)
     return f if np.ndim(f) else float(f)
+
+
+def ehl_rolling_force_expr(u_r, load, r_x, kappa, e_prime, eta, xi):
+    """The relation of :func:`ehl_rolling_force` on plain numbers or arrays (no conversion): the one
+    implementation, compiled for the contact kernel as ``_ehl_rolling_force``."""
+    u = np.abs(u_r)
+    q = np.maximum(load, 0.0)
+    big_u = eta * u / (e_prime * r_x)
+    big_g = xi * e_prime
+    big_w = q / (e_prime * r_x * r_x)
+    return 2.86 * e_prime * r_x * r_x * kappa ** 0.348 * big_g ** 0.022 * big_u ** 0.66 * big_w ** 0.47
+
+
+_ehl_rolling_force = kernel(ehl_rolling_force_expr)
 
 
 def hysteresis_rolling_force(load, b, r_x, alpha_h=HYSTERESIS_LOSS_FACTOR_STEEL):
@@ -232,9 +249,18 @@ def hysteresis_rolling_force(load, b, r_x, alpha_h=HYSTERESIS_LOSS_FACTOR_STEEL)
     float or ndarray
         F_h [N].
     """
-    f = 3.0 / 16.0 * alpha_h * np.maximum(np.asarray(load, dtype=float), 0.0) * np.asarray(b, dtype=float) \
-        / np.asarray(r_x, dtype=float)
+    f = hysteresis_rolling_force_expr(np.asarray(load, dtype=float), np.asarray(b, dtype=float),
+                                      np.asarray(r_x, dtype=float), alpha_h)
     return f if np.ndim(f) else float(f)
+
+
+def hysteresis_rolling_force_expr(load, b, r_x, alpha_h):
+    """The relation of :func:`hysteresis_rolling_force` on plain numbers or arrays (no conversion): the
+    one implementation, compiled for the contact kernel as ``_hysteresis_rolling_force``."""
+    return 3.0 / 16.0 * alpha_h * np.maximum(load, 0.0) * b / r_x
+
+
+_hysteresis_rolling_force = kernel(hysteresis_rolling_force_expr)
 
 
 def rolling_resistance_power(force, u_r, surfaces=1):
@@ -254,6 +280,7 @@ def rolling_resistance_power(force, u_r, surfaces=1):
 # ----------------------------------------------------------------------------------------------------
 # ball drag in an oil-air mixture
 # ----------------------------------------------------------------------------------------------------
+@vectorize(["float64(float64)"], cache=True)
 def sphere_drag_coefficient(reynolds):
     """Drag coefficient C_D [-] of a sphere against its Reynolds number Re = rho v D / eta.
 
@@ -265,12 +292,14 @@ def sphere_drag_coefficient(reynolds):
     Validity: a smooth sphere in a uniform stream, Re < 2e5 (below the drag
     crisis; above it C_D drops to about 0.1-0.2, not modelled: 0.44 is kept
     and is then an upper value). Re = 0 gives C_D = inf (the drag force
-    stays finite: use :func:`ball_drag_force`).
+    stays finite: use :func:`ball_drag_force`). A numba ufunc: the contact kernel calls
+    it on numbers, numpy on arrays (one implementation).
     """
-    re = np.asarray(reynolds, dtype=float)
-    with np.errstate(divide="ignore"):
-        cd = np.where(re <= 1000.0, 24.0 / re * (1.0 + 0.15 * re ** 0.687), 0.44)
-    return cd if np.ndim(cd) else float(cd)
+    if reynolds <= 0.0:
+        return math.inf
+    if reynolds <= 1000.0:
+        return 24.0 / reynolds * (1.0 + 0.15 * reynolds ** 0.687)
+    return 0.44
 
 
 def mixture_density(oil_fraction, oil_density, air_density=AIR_DENSITY):
@@ -299,6 +328,7 @@ def mixture_viscosity(oil_fraction, oil_viscosity, air_viscosity=AIR_VISCOSITY):
     return r if np.ndim(r) else float(r)
 
 
+@vectorize(["float64(float64, float64, float64, float64)"], cache=True)
 def ball_drag_force(speed, ball_diameter, density, viscosity):
     """Drag force on a ball moving through a fluid [N], Harris & Kotzalas [1]_ ch. 6.
 
@@ -317,14 +347,15 @@ def ball_drag_force(speed, ball_diameter, density, viscosity):
     density, viscosity : float
         Of the fluid or mixture (:func:`mixture_density`,
         :func:`mixture_viscosity`) [kg/m^3], [Pa s].
+
+    A numba ufunc (the contact kernel calls it on numbers, numpy on arrays)
+    with C_D from :func:`sphere_drag_coefficient`; 0 at rest.
     """
-    v = np.abs(np.asarray(speed, dtype=float))
-    re = density * v * ball_diameter / viscosity
-    # 1/2 C_D rho v^2 A with C_D Re finite at Re = 0: write the Schiller-Naumann branch as Stokes times (1 + ...)
-    stokes = 3.0 * math.pi * viscosity * ball_diameter * v * (1.0 + 0.15 * re ** 0.687)
-    newton = 0.5 * 0.44 * density * v * v * math.pi * ball_diameter ** 2 / 4.0
-    f = np.where(re <= 1000.0, stokes, newton)
-    return f if np.ndim(f) else float(f)
+    v = abs(speed)
+    if v == 0.0:
+        return 0.0
+    return 0.5 * sphere_drag_coefficient(density * v * ball_diameter / viscosity) * density * v * v \
+        * (math.pi * ball_diameter * ball_diameter / 4.0)
 
 
 def bath_immersion_fraction(oil_level, pitch_radius, ball_diameter, n_points=720):

@@ -116,6 +116,7 @@ from ...model.contact import forces
 from ...model.initial_state import initial_state
 from ...model.motion import ring_poses
 from ...model.parameters import scene_parameters
+from ...physics.losses import HYSTERESIS_LOSS_FACTOR_STEEL
 from ...model.scenario import Scenario
 from ...model.stability import StepSizeWarning, ring_contact_stiffness, stable_step, step_warning
 from ...physics import hertz
@@ -136,7 +137,9 @@ OPTION_NAMES = {"Fr": "initialLoad", "Fa": "initialLoad", "omega": "initialOmega
                 "tangential_stiffness_ratio": "tangentialStiffnessRatio", "contact_law": "contactLaw",
                 "power_law": "powerLaw", "traction_level": "tractionLevel", "n_strips": "nStrips",
                 "n_across": "nAcross", "traction_regularizing_srr": "tractionRegularizingSrr",
-                "ring_growth": "ringGrowth", "signal_dt": "signalInterval"}
+                "ring_growth": "ringGrowth", "signal_dt": "signalInterval",
+                "rolling_resistance": "rollingResistance", "ball_drag": "ballDrag",
+                "oil_volume_fraction": "oilVolumeFraction", "hysteresis_loss_factor": "hysteresisLossFactor"}
 
 
 def _initial_load(load):
@@ -174,7 +177,9 @@ def _scenario_from_options(o: dict, bearing) -> Scenario:
                         n_strips=o["nStrips"], n_across=o["nAcross"],
                         traction_regularizing_srr=o["tractionRegularizingSrr"], ring_growth=o["ringGrowth"],
                         temperatures=o["temperatures"], control=o["control"], defects=o["defects"],
-                        signal_dt=o["signalInterval"],
+                        signal_dt=o["signalInterval"], rolling_resistance=o["rollingResistance"],
+                        ball_drag=o["ballDrag"], oil_volume_fraction=o["oilVolumeFraction"],
+                        hysteresis_loss_factor=o["hysteresisLossFactor"],
                         t_end=max(0.05, sample, step))  # the run's end is the solver's
     except InputError as exc:
         raise rename_option_error(exc) from None
@@ -233,7 +238,8 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
                  traction=None, nStrips=DEFAULT_N_STRIPS, nAcross=DEFAULT_N_ACROSS,
                  tractionRegularizingSrr=DEFAULT_REGULARIZING_SRR, ringGrowth=True,
                  temperatures=None, control="auto", initialState=None, defects=(),
-                 signalInterval=None, show=False):
+                 signalInterval=None, rollingResistance=False, ballDrag=False, oilVolumeFraction=0.0,
+                 hysteresisLossFactor=HYSTERESIS_LOSS_FACTOR_STEEL, show=False):
         announce_compilation(forces, EK.fast_step if mode == "fast" else EK.element_rhs)
         self.mbs = mbs
         self.bearing = b = load_bearing(bearing)

@@ -96,7 +96,9 @@ class ExudynEngine:
             tractionLevel=s.traction_level, traction=s.traction, nStrips=s.n_strips, nAcross=s.n_across,
             tractionRegularizingSrr=s.traction_regularizing_srr, ringGrowth=s.ring_growth,
             temperatures=s.temperatures, control=s.control, initialState=start,
-            defects=s.defects, signalInterval=s.signal_dt)
+            defects=s.defects, signalInterval=s.signal_dt, rollingResistance=s.rolling_resistance,
+            ballDrag=s.ball_drag, oilVolumeFraction=s.oil_volume_fraction,
+            hysteresisLossFactor=s.hysteresis_loss_factor)
         # the element knows loads and switches only: its step estimate takes the protocol from the scenario
         self.element.stable = stable_step(b, s, self.element.lubricant)
         mbs.Assemble()

@@ -96,9 +96,9 @@ LOSS_UNITS = {
     "cage_land_torque": "N m (Petroff's torque of the cage on its land, 0 without land guidance)",
 }
 
-#: Density of the oil for the drag when the lubricant carries none [kg/m^3]: a mineral oil near
-#: 40 C (ISO VG 32-68 oils are 850-880 kg/m^3 at 15 C).
-DEFAULT_OIL_DENSITY = 860.0
+#: Density of the oil for the drag when the lubricant carries none [kg/m^3]
+#: (:data:`~exudyn_bearing.physics.losses.OIL_DENSITY`, shared with the dynamic engines).
+DEFAULT_OIL_DENSITY = _ls.OIL_DENSITY
 
 
 def _bearing(sol, bearing):

@@ -16,7 +16,7 @@ import numpy as np
 
 from ..._jit import announce_compilation
 from ...data import InputError, Lubricant, default_lubricant, load_bearing
-from ...model.contact import scene_paths
+from ...model.contact import scene_loss_path, scene_paths
 from ...model.initial_state import initial_state
 from ...model.layout import H_E1, NDIAG, NGLOBAL, NSIGNAL
 from ...model.motion import ring_poses
@@ -103,12 +103,13 @@ class ReferenceEngine:
         glob = np.zeros(NGLOBAL)  # the run's energy integrals accumulate here
         # compile only the code paths the scene uses (defects, ellipse traction, signals)
         defect_path, ellipse_path = scene_paths(p)
+        loss_path = scene_loss_path(p)
         signal_path = True if sig_every else None
         # forces at t = 0 (Verlet needs them on entry); the ball body frames start the first step unturned
         frames = hist[:, H_E1:].copy()
         evaluate(0.0, p, self.table, xb, vb, wb, xc, vc, ring, ring_poses(), hist, hz, fb, tb, fc,
                     np.zeros((2, 6)), fring, np.zeros(NGLOBAL), np.zeros((z, 2, NDIAG)), np.zeros((z, 2)),
-                    False, defect_path, ellipse_path)
+                    False, defect_path, ellipse_path, loss_path)
         hist[:, H_E1:] = frames
         integrate = run_verlet if s.integrator == "verlet" else run_rk4
         if progress is None:
@@ -120,7 +121,7 @@ class ReferenceEngine:
         integrate(0, 0.0, p, self.table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring, every, 0,
                   buf["t"][:0], buf["glob"][:0], buf["diag"][:0], buf["cage_load"][:0], buf["xb"][:0],
                   buf["vb"][:0], buf["wb"][:0], buf["xc"][:0], buf["vc"][:0], buf["ring"][:0],
-                  sig_every, sig_acc, s_sig, glob, defect_path, ellipse_path, signal_path)
+                  sig_every, sig_acc, s_sig, glob, defect_path, ellipse_path, signal_path, loss_path)
         wall0 = time.perf_counter()
         last_print = wall0
         while done < n_steps:
@@ -130,7 +131,7 @@ class ReferenceEngine:
                 m, done * s.dt, p, self.table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring,
                 every, done, buf["t"][sl], buf["glob"][sl], buf["diag"][sl], buf["cage_load"][sl],
                 buf["xb"][sl], buf["vb"][sl], buf["wb"][sl], buf["xc"][sl], buf["vc"][sl], buf["ring"][sl],
-                sig_every, sig_acc, s_sig, glob, defect_path, ellipse_path, signal_path)
+                sig_every, sig_acc, s_sig, glob, defect_path, ellipse_path, signal_path, loss_path)
             done += steps
             k_samp += ns
             if status != 0:

@@ -55,12 +55,12 @@ def _inner_ring_force(p, fr, fring):
 
 @kernel
 def evaluate(t, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc, fr, fring,
-              glob, diag, cage_load, want, defect_path=True, ellipse_path=True):
+              glob, diag, cage_load, want, defect_path=True, ellipse_path=True, loss_path=True):
     """Reference-engine force evaluation at time t (see :func:`_set_inner_ring`;
     the paths as in :func:`~exudyn_bearing.model.contact.forces`)."""
     _set_inner_ring(t, p, ring, rings, defect_path)
     worst = forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist, p[P_DT], hz, fb, tb, fc, fr, glob, diag,
-                   cage_load, want, defect_path, ellipse_path)
+                   cage_load, want, defect_path, ellipse_path, loss_path)
     _inner_ring_force(p, fr, fring)
     return worst
 
@@ -123,7 +123,8 @@ def _finite(a):
 @kernel
 def run_verlet(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring,
                sample_every, step0, s_t, s_glob, s_diag, s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring,
-               sig_every, sig_acc, s_sig, glob, defect_path=True, ellipse_path=True, signal_path=True):
+               sig_every, sig_acc, s_sig, glob, defect_path=True, ellipse_path=True, signal_path=True,
+               loss_path=True):
     """Velocity-Verlet (the DEM papers' scheme) for ``n_steps`` steps from t0.
 
     Forces must hold the values at t0 on entry; damping and friction see the
@@ -134,7 +135,7 @@ def run_verlet(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb
     its drive_work and dissipated_work accumulate the powers of every step.
     Returns (steps done, samples written, status): status 0 ok,
     1 non-finite state, 2 runaway overlap (> P_MAX_OVERLAP R_b).
-    ``defect_path``, ``ellipse_path`` as in :func:`~exudyn_bearing.model.contact.forces`;
+    ``defect_path``, ``ellipse_path``, ``loss_path`` as in :func:`~exudyn_bearing.model.contact.forces`;
     ``signal_path`` None compiles the loop without the signals (then
     ``sig_every`` must be 0).
     """
@@ -162,7 +163,7 @@ def run_verlet(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb
         # extra array-passing call measured a few per cent slower)
         _set_inner_ring(t, p, ring, rings, defect_path)
         worst = forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist, dt, hz, fb, tb, fc, fr, glob, diag,
-                       cage_load, want, defect_path, ellipse_path)
+                       cage_load, want, defect_path, ellipse_path, loss_path)
         _inner_ring_force(p, fr, fring)
         accumulate_energy(glob, dt)
         if signal_path is not None:  # pruned at compile time when None
@@ -190,11 +191,11 @@ def run_verlet(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb
 
 @kernel
 def _rk_stage(t, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc, fr, fring, glob, diag, cage_load,
-              kx, kv, kw, kxc, kvc, kr, stage, defect_path, ellipse_path):
+              kx, kv, kw, kxc, kvc, kr, stage, defect_path, ellipse_path, loss_path):
     """Derivatives of the state at (t, state) into stage ``stage`` of the k
     arrays; returns the largest overlap ratio."""
     worst = evaluate(t, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc, fr, fring, glob, diag,
-                     cage_load, False, defect_path, ellipse_path)
+                     cage_load, False, defect_path, ellipse_path, loss_path)
     inv_mz = 1.0 / p[P_MZ] if p[P_CAGE] > 0.5 else 0.0
     for j in range(xb.shape[0]):
         for d in range(3):
@@ -227,7 +228,8 @@ def _rk_set(y0x, y0v, y0w, y0xc, y0vc, y0r, kx, kv, kw, kxc, kvc, kr, stage, f,
 @kernel
 def run_rk4(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring,
             sample_every, step0, s_t, s_glob, s_diag, s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring,
-            sig_every, sig_acc, s_sig, glob, defect_path=True, ellipse_path=True, signal_path=True):
+            sig_every, sig_acc, s_sig, glob, defect_path=True, ellipse_path=True, signal_path=True,
+               loss_path=True):
     """Classical fourth-order Runge-Kutta, for history-free scenes (same
     interface and status codes as :func:`run_verlet`; it records no signals
     and keeps no ball orientation: Scenario allows neither with rk4). The
@@ -262,21 +264,21 @@ def run_rk4(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, f
         y0vc[:, :] = vc
         y0r[:] = ring
         worst = _rk_stage(t, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc, fr, fring, glob, diag,
-                          cage_load, kx, kv, kw, kxc, kvc, kr, s0, defect_path, ellipse_path)
+                          cage_load, kx, kv, kw, kxc, kvc, kr, s0, defect_path, ellipse_path, loss_path)
         accumulate_energy(glob, dt / 6.0)
         if worst > p[P_MAX_OVERLAP] or not math.isfinite(worst):
             return step, n_samp, 2
         _rk_set(y0x, y0v, y0w, y0xc, y0vc, y0r, kx, kv, kw, kxc, kvc, kr, s0, 0.5 * dt, xb, vb, wb, xc, vc, ring)
         _rk_stage(t + 0.5 * dt, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc, fr, fring, glob, diag,
-                  cage_load, kx, kv, kw, kxc, kvc, kr, s1, defect_path, ellipse_path)
+                  cage_load, kx, kv, kw, kxc, kvc, kr, s1, defect_path, ellipse_path, loss_path)
         accumulate_energy(glob, dt / 3.0)
         _rk_set(y0x, y0v, y0w, y0xc, y0vc, y0r, kx, kv, kw, kxc, kvc, kr, s1, 0.5 * dt, xb, vb, wb, xc, vc, ring)
         _rk_stage(t + 0.5 * dt, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc, fr, fring, glob, diag,
-                  cage_load, kx, kv, kw, kxc, kvc, kr, s2, defect_path, ellipse_path)
+                  cage_load, kx, kv, kw, kxc, kvc, kr, s2, defect_path, ellipse_path, loss_path)
         accumulate_energy(glob, dt / 3.0)
         _rk_set(y0x, y0v, y0w, y0xc, y0vc, y0r, kx, kv, kw, kxc, kvc, kr, s2, dt, xb, vb, wb, xc, vc, ring)
         _rk_stage(t + dt, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc, fr, fring, glob, diag,
-                  cage_load, kx, kv, kw, kxc, kvc, kr, s3, defect_path, ellipse_path)
+                  cage_load, kx, kv, kw, kxc, kvc, kr, s3, defect_path, ellipse_path, loss_path)
         accumulate_energy(glob, dt / 6.0)
         c = dt / 6.0
         for j in range(z):
@@ -291,7 +293,7 @@ def run_rk4(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, f
         want = (step0 + step + 1) % sample_every == 0 and n_samp < s_t.shape[0]
         if want:
             evaluate(t + dt, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc, fr, fring, glob, diag,
-                     cage_load, True, defect_path, ellipse_path)
+                     cage_load, True, defect_path, ellipse_path, loss_path)
             _store(n_samp, t + dt, glob, diag, cage_load, xb, vb, wb, xc, vc, ring,
                    s_t, s_glob, s_diag, s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring)
             n_samp += 1
