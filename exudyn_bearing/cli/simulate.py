@@ -107,11 +107,14 @@ def _table(summary, t_end=None):
     units = summary["units"]
     w = summary["window"]
     st = summary["steady"]
-    rows = [("window", f"{w['t0']:.6g} - {w['t1']:.6g} s, {w['phase']} ({w['rule']}, {w['samples']} samples)"),
+    rows = [("window", f"{w['t0']:.6g} - {w['t1']:.6g} s, protocol phase '{w['phase']}' ({w['rule']}, "
+                       f"{w['samples']} samples)"),
             ("steady", "yes (drift and oscillation within the thresholds of summary['steady'])" if st["steady"]
              else f"NO: {st['reason']}")]
-    rows += [(k, v, units.get(k)) for k, v in summary.items()
-             if not isinstance(v, (dict, list)) and k not in ("window", "note")]
+    # a quantity the run cannot give (None) says where the summary explains why, without a unit
+    rows += [(k, v, units.get(k)) if v is not None else
+             (k, f"n/a (energy_source.{k})" if k in summary.get("energy_source", {}) else "n/a")
+             for k, v in summary.items() if not isinstance(v, (dict, list)) and k not in ("window", "note")]
     if t_end is not None and "t_end" in summary and not math.isclose(summary["t_end"], t_end, rel_tol=1e-9):
         rows = [(k, f"{t_end:g} s (last sample at {summary['t_end']:.6g} s)", None) if k == "t_end" else r
                 for r in rows for k in (r[0],)]
