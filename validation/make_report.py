@@ -45,6 +45,8 @@ SCRIPTS = [
     ("fast_mode_checks.py", []),
     ("cage_step_checks.py", []),
     ("bench_overhead.py", []),
+    ("profile_element.py", []),
+    ("bench_element_ab.py", []),
     ("round_off_sensitivity.py", []),
     ("three_dof.py", []),
     ("quasistatic_acbb120.py", []),
@@ -57,6 +59,7 @@ SCRIPTS = [
     ("consistency_matrix.py", []),
     ("traction_convergence.py", []),
     ("losses_6208_7208.py", []),
+    ("losses_dynamic.py", []),
     ("thermal_nasa_d7870.py", []),
     ("bench_thermal.py", []),
     ("anomaly_checks.py", []),
@@ -156,6 +159,26 @@ def section_new_checks():
             "at its one temperature, for balls in air and in an oil bath; the dynamic energy check by component.",
             [("losses_6208_7208.png", "friction torque of the project's components, SKF's model and Palmgren's "
                                       "band over speed and load.")], last_lines=30)
+        + section_printed(
+            "Rolling resistance and ball drag in the dynamic engines", "losses_dynamic.py",
+            "The switches `rolling_resistance` (hysteresis + EHL rolling force as a moment pair at every loaded "
+            "ball / raceway contact) and `ball_drag` (drag of each ball in the oil-air mixture, oil volume "
+            "fraction 0.05) of both dynamic engines against the quasi-static loss report of the same case "
+            "(docs/theory/losses.md, \"In the dynamic engines\"), and their cost (switches off against on, run "
+            "in turn, medians).",
+            [("losses_dynamic.png", "EHL rolling, hysteresis and drag power of both engines against the "
+                                    "quasi-static report, per case.")], last_lines=30)
+        + section_printed(
+            "Where the element's step time goes", "profile_element.py",
+            "The Exudyn element's body mode on the bench_element scene (6208, 3000 N, 500 rad/s, VelocityVerlet "
+            "5 us): per step, the compiled kernel, the Python user function around it, Exudyn's conversion of "
+            "coordinates and forces, Exudyn's own step without a user function, against the reference engine's "
+            "step on the same scene (medians of repeats).", last_lines=30)
+        + section_printed(
+            "Element body mode against the one-object layout", "bench_element_ab.py",
+            "The body mode of this code against b8c12a7 (one ObjectGenericODE2 holding all balls), both in one "
+            "process, interleaved rounds, medians; new/new is the noise floor; the sampled arrays compared bit "
+            "for bit.", last_lines=15)
         + section_printed(
             "Bearing levels in Exudyn", "levels_checks.py",
             "The ball element, the quasi-static level and the linear level in Exudyn (docs/theory/levels.md): "
