@@ -32,6 +32,7 @@ import numpy as np
 import exudyn_bearing as eb
 from exudyn_bearing.outputs.jsonio import to_jsonable
 
+from _bench import interleaved_ab  # validation/ (the script's folder is on sys.path)
 from bench_defects import compare, import_baseline  # validation/ (the script's folder is on sys.path)
 
 HERE = Path(__file__).resolve().parent
@@ -60,7 +61,6 @@ def main(argv=None):
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     pkgs = {"baseline": import_baseline(args.baseline, out), "new": eb}
-    names = ("baseline", "new", "control")
     report = {"baseline": args.baseline, "t_end": args.t_end, "rounds": args.rounds, "mode": args.mode,
               "settings": {}, "date": time.strftime("%Y-%m-%d %H:%M")}
     print(f"6208, Fr = 3000 N, 500 rad/s, element {args.mode} mode, T = {args.t_end} s per run; baseline "
@@ -74,17 +74,11 @@ def main(argv=None):
                 run(pkg, 1e-3, SETTINGS[label], args.mode)  # compile / load the caches
         for label in args.settings:
             kw = SETTINGS[label]
-            walls = {n: [] for n in names}
-            last = {}
-            for i in range(args.rounds):
-                for name in names[i % 3:] + names[:i % 3]:
-                    rec = run(pkgs["baseline" if name == "baseline" else "new"], args.t_end, kw, args.mode)
-                    walls[name].append(rec.wall_s / args.t_end)
-                    if name != "control":
-                        last[name] = rec
-            med = {k: float(np.median(v)) for k, v in walls.items()}
-            ratio = float(np.median(np.array(walls["new"]) / np.array(walls["baseline"])))
-            control = float(np.median(np.array(walls["control"]) / np.array(walls["new"])))
+            def one(name, kw=kw):
+                rec = run(pkgs["baseline" if name == "baseline" else "new"], args.t_end, kw, args.mode)
+                return rec.wall_s / args.t_end, rec
+
+            walls, med, ratio, control, last = interleaved_ab(one, args.rounds)
             with tempfile.TemporaryDirectory() as tmp:
                 for name, rec in last.items():
                     np.savez(Path(tmp) / f"{name}.npz", **rec.data)

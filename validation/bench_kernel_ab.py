@@ -48,6 +48,7 @@ import numpy as np
 import exudyn_bearing as eb
 from exudyn_bearing.outputs.jsonio import to_jsonable
 
+from _bench import interleaved_ab  # validation/ (the script's folder is on sys.path)
 from bench_defects import baseline_source, compare, import_baseline  # validation/ (the script's folder is on sys.path)
 from bench_reference import KEYS, SCENE
 from profile_reference import _COLD
@@ -117,7 +118,6 @@ def main(argv=None):
         return
     base = import_baseline(args.baseline, out)
     pkgs = {"baseline": base, "new": eb}
-    names = ("baseline", "new", "control")
     report = {"baseline": args.baseline, "t_end": args.t_end, "rounds": args.rounds, "scene": SCENE, "settings": {},
               "machine": dict(cpu_count=os.cpu_count(), python=sys.version.split()[0]),
               "date": time.strftime("%Y-%m-%d %H:%M")}
@@ -132,17 +132,11 @@ def main(argv=None):
             for kw in SETTINGS.values():
                 run(pkg, 2e-3, kw)  # compile / load the caches
         for label, kw in SETTINGS.items():
-            walls = {n: [] for n in names}
-            last = {}
-            for i in range(args.rounds):
-                for name in names[i % 3:] + names[:i % 3]:
-                    res = run(pkgs["baseline" if name == "baseline" else "new"], args.t_end, kw)
-                    walls[name].append(res.record.wall_s / args.t_end)
-                    if name != "control":
-                        last[name] = res
-            med = {k: float(np.median(v)) for k, v in walls.items()}
-            ratio = float(np.median(np.array(walls["new"]) / np.array(walls["baseline"])))
-            control = float(np.median(np.array(walls["control"]) / np.array(walls["new"])))
+            def one(name, kw=kw):
+                res = run(pkgs["baseline" if name == "baseline" else "new"], args.t_end, kw)
+                return res.record.wall_s / args.t_end, res
+
+            walls, med, ratio, control, last = interleaved_ab(one, args.rounds)
             with tempfile.TemporaryDirectory() as tmp:
                 for name, res in last.items():
                     np.savez(Path(tmp) / f"{name}.npz", **res.record.data)
