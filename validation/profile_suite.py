@@ -12,7 +12,8 @@ Cold: ``NUMBA_CACHE_DIR`` a new temporary folder outside the repository,
 so that every kernel compiles (as on CI's fresh clone, where only the
 README's first ``simulate`` ran before pytest); warm: the same folder again,
 now filled. Prints the top ``--top`` tests of each run and the totals, and
-writes validation/out/profile_suite_{cold,warm}.csv (one row per test).
+writes validation/out/profile_suite_{cold,warm}.csv (one row per test) and
+pytest's output beside it (.log).
 The machine's load (``os.getloadavg``) is printed before and after each run:
 on a shared machine the wall clock counts the time other processes hold the
 cores, the CPU times do not.
@@ -107,6 +108,7 @@ def run(name, cache, pytest_args, top):
                           cwd=ROOT, env=env, capture_output=True, text=True)
     wall = time.perf_counter() - w0
     cpu = _children_cpu() - k0
+    (OUT / f"profile_suite_{name}.log").write_text(proc.stdout + proc.stderr)
     tail = proc.stdout.strip().splitlines()[-1:] or [proc.stderr.strip()[-300:]]
     print(f"pytest exit {proc.returncode}: {tail[0]}")
     rows = read_csv(raw) if raw.exists() else []
