@@ -18,7 +18,13 @@ The machine's load (``os.getloadavg``) is printed before and after each run:
 on a shared machine the wall clock counts the time other processes hold the
 cores, the CPU times do not.
 
+With ``--startup`` it times instead the start of fresh processes (median of
+``--repeat``, wall and CPU, warm caches): ``import exudyn_bearing``, the
+import of everything ``simulate`` and ``solve_quasistatic`` need,
+``python -m exudyn_bearing --help`` and ``... info 6208``.
+
     python validation/profile_suite.py [--runs cold warm] [--top 25] [-- tests/test_x.py -k y]
+    python validation/profile_suite.py --startup [--repeat 5]
 """
 from __future__ import annotations
 
@@ -26,6 +32,7 @@ import argparse
 import csv
 import os
 import resource
+import signal
 import subprocess
 import sys
 import tempfile
@@ -76,6 +83,12 @@ def pytest_sessionfinish(session):
 
 
 # ---------------------------------------------------------------- the driver
+def _default_sigint():
+    """SIGINT back to its default in pytest's process: a shell starts a background job with SIGINT
+    ignored, its children inherit that, and the tests that interrupt a sweep with SIGINT then time out."""
+    signal.signal(signal.SIGINT, signal.SIG_DFL)
+
+
 def write_csv(path, rows):
     path.parent.mkdir(parents=True, exist_ok=True)
     with open(path, "w", newline="") as f:
@@ -105,7 +118,7 @@ def run(name, cache, pytest_args, top):
     k0 = _children_cpu()
     w0 = time.perf_counter()
     proc = subprocess.run([sys.executable, "-m", "pytest", "-q", "-p", "profile_suite", *pytest_args],
-                          cwd=ROOT, env=env, capture_output=True, text=True)
+                          cwd=ROOT, env=env, capture_output=True, text=True, preexec_fn=_default_sigint)
     wall = time.perf_counter() - w0
     cpu = _children_cpu() - k0
     (OUT / f"profile_suite_{name}.log").write_text(proc.stdout + proc.stderr)
@@ -127,6 +140,31 @@ def run(name, cache, pytest_args, top):
     return wall, proc.returncode
 
 
+#: ``--startup``: label -> the Python command line of one fresh process.
+STARTUP = {"import exudyn_bearing": ["-c", "import exudyn_bearing"],
+           "import + eb.simulate, eb.solve_quasistatic": ["-c", "import exudyn_bearing as eb; eb.simulate; "
+                                                                  "eb.solve_quasistatic"],
+           "python -m exudyn_bearing --help": ["-m", "exudyn_bearing", "--help"],
+           "python -m exudyn_bearing info 6208": ["-m", "exudyn_bearing", "info", "6208"]}
+
+
+def startup(repeat):
+    """Median wall and CPU time of fresh processes (the :data:`STARTUP` command lines)."""
+    import statistics
+
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join([str(ROOT), os.environ.get("PYTHONPATH", "")]))
+    print(f"fresh processes, median of {repeat}; before: {load()}")
+    for label, argv in STARTUP.items():
+        walls, cpus = [], []
+        for _ in range(repeat):
+            k0, w0 = _children_cpu(), time.perf_counter()
+            subprocess.run([sys.executable, *argv], cwd=ROOT, env=env, capture_output=True, check=True)
+            walls.append(time.perf_counter() - w0)
+            cpus.append(_children_cpu() - k0)
+        print(f"{label:48s} wall {statistics.median(walls):5.2f} s  CPU {statistics.median(cpus):5.2f} s")
+    print(f"after: {load()}")
+
+
 def main(argv=None):
     argv = sys.argv[1:] if argv is None else argv
     extra = []
@@ -138,12 +176,18 @@ def main(argv=None):
                     help="cold: an empty numba cache; warm: the same cache again (after cold) or, alone, "
                          "a cache filled by one unreported run first")
     ap.add_argument("--top", type=int, default=25)
+    ap.add_argument("--startup", action="store_true", help="time the start of fresh processes instead")
+    ap.add_argument("--repeat", type=int, default=5, help="with --startup: processes per command")
     args = ap.parse_args(argv)
+    if args.startup:
+        startup(args.repeat)
+        return 0
     status = 0
     with tempfile.TemporaryDirectory(prefix="numba_cache_") as cache:
         if args.runs == ["warm"]:
             print("filling the numba cache (one unreported run) ...", flush=True)
             subprocess.run([sys.executable, "-m", "pytest", "-q", *extra], cwd=ROOT, capture_output=True,
+                           preexec_fn=_default_sigint,
                            env=dict(os.environ, NUMBA_CACHE_DIR=cache,
                                     PYTHONPATH=os.pathsep.join([str(ROOT), os.environ.get("PYTHONPATH", "")])))
         for name in args.runs:
