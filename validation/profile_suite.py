@@ -121,6 +121,7 @@ def run(name, cache, pytest_args, top):
                           cwd=ROOT, env=env, capture_output=True, text=True, preexec_fn=_default_sigint)
     wall = time.perf_counter() - w0
     cpu = _children_cpu() - k0
+    OUT.mkdir(parents=True, exist_ok=True)
     (OUT / f"profile_suite_{name}.log").write_text(proc.stdout + proc.stderr)
     tail = proc.stdout.strip().splitlines()[-1:] or [proc.stderr.strip()[-300:]]
     print(f"pytest exit {proc.returncode}: {tail[0]}")
