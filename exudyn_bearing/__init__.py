@@ -30,7 +30,7 @@ if TYPE_CHECKING:  # the public names, imported on first use by __getattr__ belo
 
 #: Module of each public name. ``import exudyn_bearing`` loads none of them (numba, scipy, the
 #: compiled kernels' dispatchers): ``python -m exudyn_bearing --help`` and every command import only
-#: what they use; ``exudyn_bearing.NAME`` imports its module on first access.
+#: what they use; the first ``exudyn_bearing.NAME`` imports them all (what this file imported before).
 _PUBLIC = {
     ".data": ("BallBearing", "Defect", "InputError", "Lubricant", "Material", "catalog", "get_bearing", "load_bearing",
               "load_lubricant", "lubricants", "materials"),
@@ -44,7 +44,7 @@ _PUBLIC = {
     ".solvers.quasistatic.thermal": ("ThermalSolution", "solve_thermal"),
 }
 _MODULE_OF = {name: module for module, names in _PUBLIC.items() for name in names}
-#: Submodules reachable as attributes (``eb.data.lubricants``), imported on first access too.
+#: Submodules reachable as attributes (``eb.data.lubricants``).
 _SUBMODULES = ("cli", "data", "datasets", "model", "outputs", "physics", "solvers", "sweep")
 
 __version__ = "0.1.0"
@@ -56,12 +56,15 @@ __all__ = ["CreateBallBearing", "filter_exudyn_notes", "BallBearing", "Defect", 
 
 
 def __getattr__(name):
-    if name in _SUBMODULES:
-        return import_module(f".{name}", __name__)  # the import binds it to the package
-    module = _MODULE_OF.get(name)
-    if module is None:
+    if name not in _SUBMODULES and name not in _MODULE_OF:
         raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-    value = getattr(import_module(module, __name__), name)
+    # the first access loads what the eager import loaded (so that eb.model.scenario and the like are
+    # there as before); the import binds each submodule to the package
+    for module in _PUBLIC:
+        import_module(module, __name__)
+    if name in _SUBMODULES:
+        return import_module(f".{name}", __name__)
+    value = getattr(import_module(_MODULE_OF[name], __name__), name)
     setattr(sys.modules[__name__], name, value)
     return value
 
