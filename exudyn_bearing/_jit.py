@@ -19,12 +19,14 @@ stderr when a run is about to compile instead of load them.
 """
 from __future__ import annotations
 
+import functools
 import hashlib
 import os
 import sys
 from pathlib import Path
 
-from numba import njit
+from numba import njit, types
+from numba.core.extending import overload
 
 FASTMATH = {"contract", "arcp", "reassoc", "afn"}
 
@@ -120,3 +122,57 @@ def kernel(fn=None, *, no_runtime=False, **kw):
     if fn is None:
         return njit(**opts)
     return njit(**opts)(fn)
+
+
+class LazyUfunc:
+    """A scalar relation as a NumPy ufunc built on its first Python call, and
+    in compiled code the scalar function itself.
+
+    ``numba.vectorize`` with signatures builds (LLVM-compiles) its ufunc
+    loop at import, in every process, even with ``cache=True`` (about 0.3 s
+    per function). This object defers that to the first call from Python,
+    where it behaves as that ufunc (broadcasting, ``out=``, NaN in, NaN or
+    the ufunc's value out); compiled kernels that call it with scalars get
+    ``fn`` through :func:`numba.core.extending.overload`, compiled as the
+    ufunc's kernel is (NumPy error model, no fast-math flags), so a kernel
+    computes what the ufunc computes. One source, ``fn``, for both.
+    """
+
+    def __init__(self, fn, signature):
+        functools.update_wrapper(self, fn)
+        self.signature = signature
+        self._ufunc = None
+        n_args = fn.__code__.co_argcount
+
+        def typer(*args):
+            if len(args) == n_args and all(isinstance(a, (types.Number, types.Boolean)) for a in args):
+                return fn
+            return None
+
+        overload(self, jit_options={"error_model": "numpy"}, strict=False)(typer)
+
+    @property
+    def ufunc(self):
+        """The NumPy ufunc (``numba.vectorize([signature], cache=True)`` of ``fn``), built on first use."""
+        if self._ufunc is None:
+            from numba import vectorize
+
+            self._ufunc = vectorize([self.signature], cache=True)(self.__wrapped__)
+        return self._ufunc
+
+    def __call__(self, *args, **kwargs):
+        return self.ufunc(*args, **kwargs)
+
+    def __get__(self, obj, objtype=None):  # a routine for doctest's finder, as the ufunc was; never bound
+        return self
+
+    def __reduce__(self):  # pickled by reference to its module attribute
+        return self.__qualname__
+
+    def __repr__(self):
+        return f"<lazy ufunc {self.__module__}.{self.__qualname__} {self.signature}>"
+
+
+def lazy_ufunc(signature):
+    """Decorator: ``LazyUfunc(fn, signature)`` (a ``numba.vectorize`` signature string)."""
+    return functools.partial(LazyUfunc, signature=signature)

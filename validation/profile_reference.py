@@ -42,15 +42,19 @@ time other processes hold the core), in ns per step (per call of the
 kernel); read them as proportions.
 
 With ``--compile`` it measures instead what a cold start compiles: the
-README's main job (a 2 ms run of it) in a fresh process with an empty
-numba cache (``NUMBA_CACHE_DIR`` a new temporary folder), every numba
-compilation timed through numba's event API (``numba:compile``): per
-function the number of specialisations and the CPU seconds spent in it
-(exclusive of the functions it compiled in turn), and the whole first
-``simulate`` call (wall and CPU).
+README's main job (a 2 ms run of it; ``--scene rk4``: the test suite's
+RK4 run, regularised friction, dt 1.5 us, 1 ms) in a fresh process with an
+empty numba cache (``NUMBA_CACHE_DIR`` a new temporary folder outside the
+repository), every numba compilation timed through numba's event API
+(``numba:compile``): per function the number of specialisations and the
+CPU seconds spent in it (exclusive of the functions it compiled in turn),
+and the whole first ``simulate`` call (wall and CPU). ``--cold-runs N``
+repeats that in N fresh processes and prints the medians. ``--after-readme``
+fills the cache with the README's job first (as CI does before pytest) and
+measures the scene's first run on that cache.
 
     python validation/profile_reference.py [--reps 20000] [--repeat 15] [--settle 0.01]
-    python validation/profile_reference.py --compile
+    python validation/profile_reference.py --compile [--scene readme|rk4] [--cold-runs 3] [--after-readme]
 """
 from __future__ import annotations
 
@@ -279,9 +283,10 @@ event.register("numba:compile", Timer())
 w0, c0 = time.perf_counter(), time.process_time()
 import exudyn_bearing as eb
 w1, c1 = time.perf_counter(), time.process_time()
-eb.simulate("6208", eb.Scenario(Fr=3000, omega=500, t_end=0.002, dt=5e-6))
+eb.simulate("6208", eb.Scenario(**SCENE))
 w2, c2 = time.perf_counter(), time.process_time()
 print(f"import: {w1 - w0:.1f} s wall, {c1 - c0:.1f} s CPU; first simulate: {w2 - w1:.1f} s wall, {c2 - c1:.1f} s CPU")
+print(f"TOTALS {w1 - w0} {c1 - c0} {w2 - w1} {c2 - c1}")
 print(f"{'compiled function':60s} {'specs':>5s} {'CPU s':>6s}")
 for name in sorted(excl, key=excl.get, reverse=True):
     print(f"{name:60s} {count[name]:5d} {excl[name]:6.2f}")
@@ -289,29 +294,55 @@ print(f"{'total':60s} {sum(count.values()):5d} {sum(excl.values()):6.2f}")
 """
 
 
-def cold_start():
-    """Run :data:`_COLD` in a fresh process with an empty numba cache and print its table."""
+#: Scenarios of ``--compile``: the README's main job (2 ms of it) and the suite's RK4 run (1 ms of it).
+COLD_SCENES = {"readme": {"Fr": 3000, "omega": 500, "t_end": 0.002, "dt": 5e-6},
+               "rk4": {"Fr": 3000.0, "omega": 500.0, "t_end": 0.001, "dt": 1.5e-6, "friction": "regularized",
+                       "integrator": "rk4"}}
+
+
+def cold_start(scene="readme", runs=1, after_readme=False):
+    """Run :data:`_COLD` for ``scene`` in ``runs`` fresh processes, each with an empty numba cache (filled
+    by the README's job first with ``after_readme``), print the table of the first run and the medians."""
     import os
     import subprocess
     import sys
     import tempfile
 
-    with tempfile.TemporaryDirectory() as cache:
-        env = dict(os.environ, NUMBA_CACHE_DIR=cache)
-        out = subprocess.run([sys.executable, "-c", _COLD], env=env, capture_output=True, text=True, check=True)
-    print("cold start of the README main job (6208, 2 ms), empty numba cache")
-    print(out.stdout, end="")
+    totals = []
+    for k in range(runs):
+        with tempfile.TemporaryDirectory(prefix="numba_cold_") as cache:
+            env = dict(os.environ, NUMBA_CACHE_DIR=cache)
+            if after_readme:
+                subprocess.run([sys.executable, "-c", f"SCENE = {COLD_SCENES['readme']!r}\n" + _COLD], env=env,
+                               capture_output=True, text=True, check=True)
+            out = subprocess.run([sys.executable, "-c", f"SCENE = {COLD_SCENES[scene]!r}\n" + _COLD], env=env,
+                                 capture_output=True, text=True, check=True)
+        lines = out.stdout.splitlines()
+        totals.append([float(x) for x in next(li for li in lines if li.startswith("TOTALS")).split()[1:]])
+        if k == 0:
+            print(f"cold start of {scene!r} {COLD_SCENES[scene]}, numba cache "
+                  f"{'filled by the README job only' if after_readme else 'empty'}")
+            print("\n".join(li for li in lines if not li.startswith("TOTALS")))
+    if runs > 1:
+        med = np.median(np.array(totals), axis=0)
+        print(f"median of {runs} fresh processes: import {med[0]:.1f} s wall, {med[1]:.1f} s CPU; first simulate "
+              f"{med[2]:.1f} s wall, {med[3]:.1f} s CPU (each: " +
+              ", ".join(f"{t[2]:.1f}/{t[3]:.1f}" for t in totals) + " s wall/CPU)")
 
 
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--compile", action="store_true", help="measure what a cold start compiles instead")
+    ap.add_argument("--scene", choices=sorted(COLD_SCENES), default="readme", help="with --compile: the run")
+    ap.add_argument("--cold-runs", type=int, default=1, help="with --compile: fresh processes (medians)")
+    ap.add_argument("--after-readme", action="store_true",
+                    help="with --compile: the cache filled by the README job first (as on CI)")
     ap.add_argument("--reps", type=int, default=20000)
     ap.add_argument("--repeat", type=int, default=15)
     ap.add_argument("--settle", type=float, default=0.01)
     args = ap.parse_args(argv)
     if args.compile:
-        cold_start()
+        cold_start(args.scene, args.cold_runs, args.after_readme)
         return
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")

@@ -39,11 +39,15 @@ input exits with status 2 and a one-line message naming the parameter.
 from __future__ import annotations
 
 import sys
+from importlib import import_module
+from typing import TYPE_CHECKING
 
 from ..data import InputError
 from ..model.stability import SimulationError
-from . import dataset, info, quasistatic, simulate, static, stiffness, vibration
 from .common import Parser
+
+if TYPE_CHECKING:  # the sub-command modules, imported by name below (a run imports only its own)
+    from . import dataset, info, quasistatic, simulate, static, stiffness, vibration  # noqa: F401
 
 __all__ = ["main"]
 
@@ -53,12 +57,19 @@ DESCRIPTION = ("Rolling-element ball bearings: data sheet (info), load distribut
                "ball (simulate), linear vibration models (vibration). BEARING is a catalogue name or a JSON file; "
                "'exudyn-bearing COMMAND --help' lists a command's options.")
 
-#: Sub-commands: name -> module with ``add_parser(subparsers)`` and ``run(args)``.
-COMMANDS = {"info": info, "static": static, "quasistatic": quasistatic, "simulate": simulate,
-            "stiffness": stiffness, "vibration": vibration, "dataset": dataset}
+#: Sub-commands: name -> module (of this package) with ``add_parser(subparsers)`` and ``run(args)``.
+COMMANDS = {"info": ".info", "static": ".static", "quasistatic": ".quasistatic", "simulate": ".simulate",
+            "stiffness": ".stiffness", "vibration": ".vibration", "dataset": ".dataset"}
 
 
-def _parser() -> Parser:
+def command_module(name):
+    """The module of sub-command ``name`` (imported on first use)."""
+    return import_module(COMMANDS[name], __name__)
+
+
+def _parser(argv=None) -> Parser:
+    """The command line parser; given ``argv`` whose first word is a sub-command, with that one
+    sub-command only (its options and help are the same; the others' modules stay unimported)."""
     from .. import __version__
 
     p = Parser(prog="exudyn-bearing", description=DESCRIPTION)
@@ -66,16 +77,18 @@ def _parser() -> Parser:
                    help="print the version and exit")
     sub = p.add_subparsers(dest="command", required=True, parser_class=Parser, metavar="COMMAND",
                            help="one of the sub-commands below ('COMMAND --help' for its options)")
-    for module in COMMANDS.values():
-        module.add_parser(sub)
+    names = [argv[0]] if argv and argv[0] in COMMANDS else COMMANDS
+    for name in names:
+        command_module(name).add_parser(sub)
     return p
 
 
 def main(argv=None) -> int:
     """Entry point; returns the exit status."""
-    args = _parser().parse_args(argv)
+    argv = sys.argv[1:] if argv is None else list(argv)
+    args = _parser(argv).parse_args(argv)
     try:
-        COMMANDS[args.command].run(args)
+        command_module(args.command).run(args)
     except (InputError, ValueError) as exc:
         print(f"exudyn-bearing: error: {exc}", file=sys.stderr)
         return 2

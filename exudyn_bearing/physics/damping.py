@@ -24,9 +24,8 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import vectorize
 
-from .._jit import kernel
+from .._jit import kernel, lazy_ufunc
 
 __all__ = [
     "BOUNDARY", "MIXED", "FULL_FILM", "REGIME_NAMES",
@@ -41,7 +40,7 @@ BOUNDARY, MIXED, FULL_FILM = 0, 1, 2
 REGIME_NAMES = ("boundary", "mixed", "full_film")
 
 
-@vectorize(["int64(float64, float64, float64)"], cache=True)
+@lazy_ufunc("int64(float64, float64, float64)")
 def lubrication_regime(film_parameter, lambda_mixed, lambda_full_film):
     """Regime code of a contact: 0 boundary (Lambda <= lambda_mixed),
     1 mixed (<= lambda_full_film), 2 full film (docs/theory/lubrication.md#normal-damping).
@@ -81,7 +80,7 @@ _damping_hysteretic = kernel(damping_hysteretic)
 _damping_fluid = kernel(damping_fluid)
 
 
-@vectorize(["float64(float64, float64, float64, float64, float64)"], cache=True)
+@lazy_ufunc("float64(float64, float64, float64, float64, float64)")
 def damping_coefficient(film_parameter, c_hyst, c_fluid, lambda_mixed, lambda_full_film):
     """Normal damping C_n(Lambda) [N s/m] of docs/theory/lubrication.md#normal-damping (table).
 

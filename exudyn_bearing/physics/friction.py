@@ -12,14 +12,13 @@ References
 from __future__ import annotations
 
 import numpy as np
-from numba import vectorize
 
-from .._jit import kernel
+from .._jit import kernel, lazy_ufunc
 
 __all__ = ["friction_coefficient", "regularized_coulomb", "sphere_tangential_mass", "implicit_tangential_stiffness"]
 
 
-@vectorize(["float64(float64, float64, float64, float64, float64)"], cache=True)
+@lazy_ufunc("float64(float64, float64, float64, float64, float64)")
 def friction_coefficient(film_parameter, mu_boundary, mu_full_film,
                          lambda_mixed, lambda_full_film):
     """mu(Lambda) [-], linear between the breakpoints (docs/theory/lubrication.md#normal-damping).

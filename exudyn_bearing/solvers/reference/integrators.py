@@ -194,8 +194,11 @@ def _rk_stage(t, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc
               kx, kv, kw, kxc, kvc, kr, stage, defect_path, ellipse_path, loss_path):
     """Derivatives of the state at (t, state) into stage ``stage`` of the k
     arrays; returns the largest overlap ratio."""
+    # want as a bool value, not the literal False: the literal compiled a copy of evaluate and of the
+    # contact kernel (about 15 s of CPU each on a cold cache); as a value it is the specialisation
+    # the engine's first evaluation (and velocity Verlet) already compiled
     worst = evaluate(t, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc, fr, fring, glob, diag,
-                     cage_load, False, defect_path, ellipse_path, loss_path)
+                     cage_load, np.bool_(False), defect_path, ellipse_path, loss_path)
     inv_mz = 1.0 / p[P_MZ] if p[P_CAGE] > 0.5 else 0.0
     for j in range(xb.shape[0]):
         for d in range(3):
@@ -208,6 +211,21 @@ def _rk_stage(t, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc
         kr[stage, d] = ring[3 + d]
         kr[stage, 3 + d] = fring[d] / p[P_MR]
     return worst
+
+
+@kernel(no_runtime=True)
+def _rk_save(xb, vb, wb, xc, vc, ring, y0x, y0v, y0w, y0xc, y0vc, y0r):
+    """y0 = state (element by element: numba's slice assignment ``y0x[:, :] = xb`` compiled its
+    shape-mismatch error message, about 4 s of a cold start)."""
+    for j in range(xb.shape[0]):
+        for d in range(3):
+            y0x[j, d] = xb[j, d]
+            y0v[j, d] = vb[j, d]
+            y0w[j, d] = wb[j, d]
+            y0xc[j, d] = xc[j, d]
+            y0vc[j, d] = vc[j, d]
+    for d in range(6):
+        y0r[d] = ring[d]
 
 
 @kernel
@@ -246,23 +264,18 @@ def run_rk4(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, f
     kxc = np.zeros((4, z, 3))
     kvc = np.zeros((4, z, 3))
     kr = np.zeros((4, 6))
-    y0x = xb.copy()
-    y0v = vb.copy()
-    y0w = wb.copy()
-    y0xc = xc.copy()
-    y0vc = vc.copy()
-    y0r = ring.copy()
+    y0x = np.zeros((z, 3))
+    y0v = np.zeros((z, 3))
+    y0w = np.zeros((z, 3))
+    y0xc = np.zeros((z, 3))
+    y0vc = np.zeros((z, 3))
+    y0r = np.zeros(6)
     n_samp = np.int64(0)  # not the literal 0: that compiled a second copy of _store
     # the stage numbers as int64 values, not literals: each literal compiled a copy of _rk_stage and _rk_set
     s0, s1, s2, s3 = np.int64(0), np.int64(1), np.int64(2), np.int64(3)
     for step in range(n_steps):
         t = t0 + step * dt
-        y0x[:, :] = xb
-        y0v[:, :] = vb
-        y0w[:, :] = wb
-        y0xc[:, :] = xc
-        y0vc[:, :] = vc
-        y0r[:] = ring
+        _rk_save(xb, vb, wb, xc, vc, ring, y0x, y0v, y0w, y0xc, y0vc, y0r)
         worst = _rk_stage(t, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc, fr, fring, glob, diag,
                           cage_load, kx, kv, kw, kxc, kvc, kr, s0, defect_path, ellipse_path, loss_path)
         accumulate_energy(glob, dt / 6.0)
@@ -293,7 +306,7 @@ def run_rk4(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, f
         want = (step0 + step + 1) % sample_every == 0 and n_samp < s_t.shape[0]
         if want:
             evaluate(t + dt, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc, fr, fring, glob, diag,
-                     cage_load, True, defect_path, ellipse_path, loss_path)
+                     cage_load, want, defect_path, ellipse_path, loss_path)  # want (True here), not the literal: see _rk_stage
             _store(n_samp, t + dt, glob, diag, cage_load, xb, vb, wb, xc, vc, ring,
                    s_t, s_glob, s_diag, s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring)
             n_samp += 1
