@@ -68,6 +68,7 @@ SCRIPTS = [
     ("levels_work_precision.py", []),
     ("mutation_run.py", ["--quick"]),
     ("profile_reference.py", []),
+    ("profile_suite.py", ["--startup", "--repeat", "3"]),
     ("bench_levels.py", ["--repeat", "3"]),
     ("bench_kernel_ab.py", []),
 ]
@@ -235,7 +236,14 @@ def section_new_checks():
             "running: the compiled contact kernel timed with stages switched off through the parameter vector on "
             "a frozen state (CPU time per step, interleaved rounds, medians). The cold start is measured by "
             "`python validation/profile_reference.py --compile` (a fresh process, empty numba cache).",
-            last_lines=40))
+            last_lines=40)
+        + section_printed(
+            "Start-up of a fresh process", "profile_suite.py",
+            "Wall and CPU time of fresh processes with warm caches (medians): `import exudyn_bearing` (lazy: "
+            "nothing loads until a public name is used), the imports `simulate` and `solve_quasistatic` need, "
+            "`python -m exudyn_bearing --help` and `info 6208`. The suite's per-test profile, cold and warm numba "
+            "cache: `python validation/profile_suite.py` (not part of this run: it runs the whole suite twice).",
+            last_lines=12))
 
 
 def section_reference():
