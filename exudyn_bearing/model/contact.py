@@ -121,11 +121,12 @@ def _ring_frame(rings, r, x, y, z):
 @kernel(inline="always")
 def _hertz_constants(p, table, hz, j, race, rx, ry):
     """k, F, E of contact (j, race) (hertz.py), re-evaluated only when R_y/R_x
-    moved by more than 1e-6 (relative) since the last evaluation (cache ``hz``)."""
-    aspect = ry / rx
-    if abs(aspect - hz[j, race, 0]) > 1e-6 * aspect:
+    moved by more than 1e-6 (relative) since the last evaluation (cache ``hz``).
+    The test |R_y/R_x - a| > 1e-6 R_y/R_x is taken times R_x > 0, without the
+    division (which then runs only on a miss)."""
+    if abs(ry - hz[j, race, 0] * rx) > 1e-6 * ry:
         kappa, ell_f, ell_e = _kfe_fast(rx, ry, int(p[P_HERTZ]), table)
-        hz[j, race, 0] = aspect
+        hz[j, race, 0] = ry / rx
         hz[j, race, 1] = kappa
         hz[j, race, 2] = ell_f
         hz[j, race, 3] = ell_e
@@ -218,7 +219,7 @@ def _lubrication_ln_g(p, u_r, q_el, rx, kappa, major, c_hyst, ln_g):
         return 0.0, 0.0, 0, p[P_LAW_D], p[P_MU_DRY]
     if p[P_LUB] > 0.5:
         h = _film_thickness_ln_g(int(p[P_FILM]), u_r, q_el, rx, kappa, p[P_EPRIME], p[P_ETA], ln_g)
-        lam = h / p[P_SIGMA]
+        lam = h * (1.0 / p[P_SIGMA])  # the reciprocal off the chain of h
         regime = lubrication_regime(lam, p[P_L1], p[P_L3])
         if regime == 0:
             c_n = c_hyst
@@ -776,10 +777,11 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb,
     :func:`scene_loss_path`); the defaults compile all. A scene that needs a
     path left out returns NaN (the engines stop on a non-finite state)."""
     z = xb.shape[0]
-    fb[:, :] = 0.0
-    tb[:, :] = 0.0
-    fc[:, :] = 0.0
-    fr[:, :] = 0.0
+    # the outputs are zeroed row by row below (fb, tb, fc of ball j before its contacts): stores the
+    # compiler keeps inline, where the whole-array assignments were calls of the C library's memset
+    for k in range(6):
+        fr[0, k] = 0.0
+        fr[1, k] = 0.0
     power_sum = 0.0
     damp_sum = 0.0
     worst = 0.0
@@ -798,6 +800,10 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb,
     drag_sum = 0.0
     ln_g = math.log(p[P_XI] * p[P_EPRIME]) if p[P_LUB] > 0.5 else 0.0  # the film's ln G, a scene constant
     for j in range(z):
+        for k in range(3):
+            fb[j, k] = 0.0
+            tb[j, k] = 0.0
+            fc[j, k] = 0.0
         if defect_path is not None:
             if defects:
                 _turn_ball_frame(p, hist, hist_out, dt_hist, wb, j)

@@ -101,8 +101,9 @@ def film_hd_ln_g(u_r, load, r_x, kappa, e_prime, eta, ln_g):
     which the simulation kernels compute once per force evaluation instead of
     once per contact."""
     # evaluated as exp(sum of logs): the same formula with fewer transcendental calls
-    ln_u = np.log(np.maximum(eta * np.abs(u_r) / (e_prime * r_x), 1e-300))
-    ln_w = np.log(np.maximum(load, 1e-300) / (e_prime * r_x * r_x))
+    c = 1.0 / (e_prime * r_x)  # U = eta u_r c, W = Q E' c^2: one division, off the kernels' chain of u_r and Q
+    ln_u = np.log(np.maximum(eta * np.abs(u_r) * c, 1e-300))
+    ln_w = np.log(np.maximum(load, 1e-300) * (e_prime * c * c))
     on = (load > 0.0) * (u_r != 0.0)  # no load or no rolling: no film
     return on * (3.63 * np.exp(0.68 * ln_u + 0.49 * ln_g - 0.073 * ln_w)
                  * (1.0 - np.exp(-0.68 * kappa)) * r_x)
@@ -146,8 +147,9 @@ def film_thickness_masjedi_khonsari(u_r, load, r_x, kappa, e_prime, eta, xi):
 def film_mk_ln_g(u_r, load, r_x, kappa, e_prime, eta, ln_g):
     """:func:`film_thickness_masjedi_khonsari` with ln_g = ln(xi E') given
     (as :func:`film_hd_ln_g`)."""
-    ln_u = np.log(np.maximum(eta * np.abs(u_r) / (e_prime * r_x), 1e-300))
-    ln_w = np.log(np.maximum(load, 1e-300) / (e_prime * r_x * r_x))
+    c = 1.0 / (e_prime * r_x)  # U = eta u_r c, W = Q E' c^2: one division, off the kernels' chain of u_r and Q
+    ln_u = np.log(np.maximum(eta * np.abs(u_r) * c, 1e-300))
+    ln_w = np.log(np.maximum(load, 1e-300) * (e_prime * c * c))
     ln_k = np.log(kappa)
     on = (load > 0.0) * (u_r != 0.0)
     return on * (1.637 * np.exp(0.711 * np.exp(-0.023 * ln_k) * ln_u
@@ -172,8 +174,9 @@ def film_thickness_central_hamrock_dowson(u_r, load, r_x, kappa, e_prime, eta, x
     >>> round(float(h) * 1e6, 2)
     0.99
     """
-    ln_u = np.log(np.maximum(eta * np.abs(u_r) / (e_prime * r_x), 1e-300))
-    ln_w = np.log(np.maximum(load, 1e-300) / (e_prime * r_x * r_x))
+    c = 1.0 / (e_prime * r_x)  # U = eta u_r c, W = Q E' c^2: one division, off the kernels' chain of u_r and Q
+    ln_u = np.log(np.maximum(eta * np.abs(u_r) * c, 1e-300))
+    ln_w = np.log(np.maximum(load, 1e-300) * (e_prime * c * c))
     on = (load > 0.0) * (u_r != 0.0)
     return on * (2.69 * np.exp(0.67 * ln_u + 0.53 * np.log(xi * e_prime) - 0.067 * ln_w)
                  * (1.0 - 0.61 * np.exp(-0.73 * kappa)) * r_x)
