@@ -777,11 +777,16 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb,
     :func:`scene_loss_path`); the defaults compile all. A scene that needs a
     path left out returns NaN (the engines stop on a non-finite state)."""
     z = xb.shape[0]
-    # the outputs are zeroed row by row below (fb, tb, fc of ball j before its contacts): stores the
-    # compiler keeps inline, where the whole-array assignments were calls of the C library's memset
+    # the outputs zeroed element by element: stores the compiler keeps inline, where the whole-array
+    # assignments were calls of the C library's memset
     for k in range(6):
         fr[0, k] = 0.0
         fr[1, k] = 0.0
+    for j in range(z):
+        for k in range(3):
+            fb[j, k] = 0.0
+            tb[j, k] = 0.0
+            fc[j, k] = 0.0
     power_sum = 0.0
     damp_sum = 0.0
     worst = 0.0
@@ -800,10 +805,6 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb,
     drag_sum = 0.0
     ln_g = math.log(p[P_XI] * p[P_EPRIME]) if p[P_LUB] > 0.5 else 0.0  # the film's ln G, a scene constant
     for j in range(z):
-        for k in range(3):
-            fb[j, k] = 0.0
-            tb[j, k] = 0.0
-            fc[j, k] = 0.0
         if defect_path is not None:
             if defects:
                 _turn_ball_frame(p, hist, hist_out, dt_hist, wb, j)
