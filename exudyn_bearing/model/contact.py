@@ -48,7 +48,9 @@ Inputs (all float64, world frame):
   (0) and outer (1) contact of every ball and, for balls with a defect, the
   ball's body frame; ``dt_hist`` the time since then, ``hist_out`` where the
   updated state goes;
-* ``hz`` (Z, 2, 4): cache of R_y/R_x, k, F, E per contact.
+* ``hz`` (Z, 2, 4) or (Z, 2, :data:`HZ_N`): cache of R_y/R_x, k, F, E per
+  contact and, with the fifth column, the ellipticity factor of the HD film
+  (``ehl.film_hd_ellipticity_factor``; computed at every evaluation without it).
 
 Outputs: ``fb, tb`` (Z, 3) force and moment on the balls, ``fc`` (Z, 3) on
 the cage balls, ``fr`` (2, 6) force and moment about its centre that balls
@@ -68,7 +70,7 @@ from ..physics.damping import (_damping_critical, _damping_fluid, _damping_hyste
 from ..data.traction import N_TRACTION_PARAMS
 from ..physics.contact_slip import _contact_traction
 from ..physics.defects import _spall_drop_k
-from ..physics.ehl import _film_central_hd, _film_thickness_ln_g
+from ..physics.ehl import _film_central_hd, _film_hd_ellipticity_factor, _film_thickness_ln_g_k
 from ..physics.traction import EHL as TRACTION_EHL
 from ..physics.friction import (_implicit_tangential_stiffness, _regularized_coulomb, _sphere_tangential_mass,
                                 friction_coefficient)
@@ -89,7 +91,10 @@ from .layout import (D_A, D_ANGLE, D_B, D_DEFECT, D_FRICTION, D_HMIN, D_LAMBDA, 
                      P_MU_DRY, P_MU_F, P_MZ, P_RB, P_RCI, P_RCO, P_RGUIDE, P_RHO_I, P_RHO_O, P_RP, P_RZ, P_SIGMA,
                      P_VREG, P_XI, P_ZG_I, P_ZG_O)
 
-__all__ = ["forces", "accumulate_energy", "scene_paths", "scene_loss_path"]
+__all__ = ["forces", "accumulate_energy", "scene_paths", "scene_loss_path", "HZ_N"]
+
+#: Columns of the Hertz cache ``hz``: R_y/R_x, k, F, E, the HD film's ellipticity factor.
+HZ_N = 5
 
 
 @kernel
@@ -121,14 +126,17 @@ def _ring_frame(rings, r, x, y, z):
 @kernel(inline="always")
 def _hertz_constants(p, table, hz, j, race, rx, ry):
     """k, F, E of contact (j, race) (hertz.py), re-evaluated only when R_y/R_x
-    moved by more than 1e-6 (relative) since the last evaluation (cache ``hz``)."""
-    aspect = ry / rx
-    if abs(aspect - hz[j, race, 0]) > 1e-6 * aspect:
+    moved by more than 1e-6 (relative) since the last evaluation (cache ``hz``).
+    The test |R_y/R_x - a| > 1e-6 R_y/R_x is taken times R_x > 0, without the
+    division (which then runs only on a miss)."""
+    if abs(ry - hz[j, race, 0] * rx) > 1e-6 * ry:
         kappa, ell_f, ell_e = _kfe_fast(rx, ry, int(p[P_HERTZ]), table)
-        hz[j, race, 0] = aspect
+        hz[j, race, 0] = ry / rx
         hz[j, race, 1] = kappa
         hz[j, race, 2] = ell_f
         hz[j, race, 3] = ell_e
+        if hz.shape[2] > 4:
+            hz[j, race, 4] = _film_hd_ellipticity_factor(kappa)
         return kappa, ell_f, ell_e
     return hz[j, race, 1], hz[j, race, 2], hz[j, race, 3]
 
@@ -207,18 +215,20 @@ def _lubrication(p, u_r, q_el, rx, kappa, major, c_hyst):
     friction coefficient mu of a contact: the Lambda-switched model of the
     DEM papers (ehl.py, damping.py, friction.py), constant mu_dry and C_hyst
     without lubrication, or the peer power law's own damping and mu."""
-    return _lubrication_ln_g(p, u_r, q_el, rx, kappa, major, c_hyst, math.log(p[P_XI] * p[P_EPRIME]))
+    return _lubrication_ln_g(p, u_r, q_el, rx, kappa, major, c_hyst, math.log(p[P_XI] * p[P_EPRIME]), -1.0)
 
 
 @kernel(no_runtime=True)
-def _lubrication_ln_g(p, u_r, q_el, rx, kappa, major, c_hyst, ln_g):
+def _lubrication_ln_g(p, u_r, q_el, rx, kappa, major, c_hyst, ln_g, factor_k):
     """:func:`_lubrication` with ``ln_g`` = ln(xi E') given: the kernel
-    computes it once per evaluation (:func:`forces`), not per contact."""
+    computes it once per evaluation (:func:`forces`), not per contact; and
+    ``factor_k`` the HD film's ellipticity factor of ``kappa`` (cached with
+    the Hertz constants; negative: computed here)."""
     if p[P_LAW] > 0.5:
         return 0.0, 0.0, 0, p[P_LAW_D], p[P_MU_DRY]
     if p[P_LUB] > 0.5:
-        h = _film_thickness_ln_g(int(p[P_FILM]), u_r, q_el, rx, kappa, p[P_EPRIME], p[P_ETA], ln_g)
-        lam = h / p[P_SIGMA]
+        h = _film_thickness_ln_g_k(int(p[P_FILM]), u_r, q_el, rx, kappa, factor_k, p[P_EPRIME], p[P_ETA], ln_g)
+        lam = h * (1.0 / p[P_SIGMA])  # the reciprocal off the chain of h
         regime = lubrication_regime(lam, p[P_L1], p[P_L3])
         if regime == 0:
             c_n = c_hyst
@@ -556,7 +566,8 @@ def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist,
     # as the quasi-static solver's kinematics do (Harris & Kotzalas)
     ddot, sx, sy, sz, slip, u_r, mx, my, mz, lx, ly, lz, px, py, pz = _surface_kinematics(
         rings, race, xb, vb, wb, j, dxw, dyw, dzw, cx, cy, nx, ny, nz, rb if ellipse else rb - 0.5 * delta)
-    h, lam, regime, c_n, mu = _lubrication_ln_g(p, u_r, q_el, rx, kappa, major, c_hyst, ln_g)
+    h, lam, regime, c_n, mu = _lubrication_ln_g(p, u_r, q_el, rx, kappa, major, c_hyst, ln_g,
+                                                hz[j, race, 4] if hz.shape[2] > 4 else -1.0)
     f_n = q_el + c_n * ddot
     if f_n < 0.0:
         f_n = 0.0
@@ -776,10 +787,16 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb,
     :func:`scene_loss_path`); the defaults compile all. A scene that needs a
     path left out returns NaN (the engines stop on a non-finite state)."""
     z = xb.shape[0]
-    fb[:, :] = 0.0
-    tb[:, :] = 0.0
-    fc[:, :] = 0.0
-    fr[:, :] = 0.0
+    # the outputs zeroed element by element: stores the compiler keeps inline, where the whole-array
+    # assignments were calls of the C library's memset
+    for k in range(6):
+        fr[0, k] = 0.0
+        fr[1, k] = 0.0
+    for j in range(z):
+        for k in range(3):
+            fb[j, k] = 0.0
+            tb[j, k] = 0.0
+            fc[j, k] = 0.0
     power_sum = 0.0
     damp_sum = 0.0
     worst = 0.0

@@ -10,6 +10,7 @@ import numpy as np
 from ..data import BallBearing, InputError
 from ..physics import kinematics
 from ..physics.load_distribution import static_equilibrium
+from .contact import HZ_N
 from .layout import H_E1, H_E2, HIST_N
 from .operating_geometry import start_geometry
 
@@ -76,7 +77,7 @@ def initial_state(bearing: BallBearing, scenario, start: dict | None = None) -> 
         vc[:, 0] = -wc * xc[:, 1]
         vc[:, 1] = wc * xc[:, 0]
     return {"xb": xb, "vb": vb, "wb": wb, "xc": xc, "vc": vc, "ring": ring,
-            "hist": initial_history(z), "hz": np.zeros((z, 2, 4)), "static": sol,
+            "hist": initial_history(z), "hz": np.zeros((z, 2, HZ_N)), "static": sol,
             "max_overlap": float(np.max(sol.overlap_outer))}
 
 
@@ -112,7 +113,7 @@ def state_from_ball_kinematics(bearing: BallBearing, psi, center_r, center_z, or
     ring = np.zeros(6)
     ring[:3] = np.asarray(ring_displacement, float)[:3]
     return {"xb": xb, "vb": vb, "wb": wb, "xc": xc, "vc": vc, "ring": ring,
-            "hist": initial_history(z), "hz": np.zeros((z, 2, 4)), "static": static,
+            "hist": initial_history(z), "hz": np.zeros((z, 2, HZ_N)), "static": static,
             "max_overlap": float(max_overlap)}
 
 

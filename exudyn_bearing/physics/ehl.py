@@ -101,11 +101,23 @@ def film_hd_ln_g(u_r, load, r_x, kappa, e_prime, eta, ln_g):
     which the simulation kernels compute once per force evaluation instead of
     once per contact."""
     # evaluated as exp(sum of logs): the same formula with fewer transcendental calls
-    ln_u = np.log(np.maximum(eta * np.abs(u_r) / (e_prime * r_x), 1e-300))
-    ln_w = np.log(np.maximum(load, 1e-300) / (e_prime * r_x * r_x))
+    return film_hd_ln_g_k(u_r, load, r_x, film_hd_ellipticity_factor(kappa), e_prime, eta, ln_g)
+
+
+def film_hd_ellipticity_factor(kappa):
+    """The ellipticity factor 1 - exp(-0.68 k) of :func:`film_thickness_hamrock_dowson` [-]."""
+    return 1.0 - np.exp(-0.68 * kappa)
+
+
+def film_hd_ln_g_k(u_r, load, r_x, factor_k, e_prime, eta, ln_g):
+    """:func:`film_hd_ln_g` with its ellipticity factor given
+    (:func:`film_hd_ellipticity_factor`), which the contact kernel keeps with
+    the Hertz constants of a contact (a function of k only)."""
+    c = 1.0 / (e_prime * r_x)  # U = eta u_r c, W = Q E' c^2: one division, off the kernels' chain of u_r and Q
+    ln_u = np.log(np.maximum(eta * np.abs(u_r) * c, 1e-300))
+    ln_w = np.log(np.maximum(load, 1e-300) * (e_prime * c * c))
     on = (load > 0.0) * (u_r != 0.0)  # no load or no rolling: no film
-    return on * (3.63 * np.exp(0.68 * ln_u + 0.49 * ln_g - 0.073 * ln_w)
-                 * (1.0 - np.exp(-0.68 * kappa)) * r_x)
+    return on * (3.63 * np.exp(0.68 * ln_u + 0.49 * ln_g - 0.073 * ln_w) * factor_k * r_x)
 
 
 def film_thickness_masjedi_khonsari(u_r, load, r_x, kappa, e_prime, eta, xi):
@@ -146,8 +158,9 @@ def film_thickness_masjedi_khonsari(u_r, load, r_x, kappa, e_prime, eta, xi):
 def film_mk_ln_g(u_r, load, r_x, kappa, e_prime, eta, ln_g):
     """:func:`film_thickness_masjedi_khonsari` with ln_g = ln(xi E') given
     (as :func:`film_hd_ln_g`)."""
-    ln_u = np.log(np.maximum(eta * np.abs(u_r) / (e_prime * r_x), 1e-300))
-    ln_w = np.log(np.maximum(load, 1e-300) / (e_prime * r_x * r_x))
+    c = 1.0 / (e_prime * r_x)  # U = eta u_r c, W = Q E' c^2: one division, off the kernels' chain of u_r and Q
+    ln_u = np.log(np.maximum(eta * np.abs(u_r) * c, 1e-300))
+    ln_w = np.log(np.maximum(load, 1e-300) * (e_prime * c * c))
     ln_k = np.log(kappa)
     on = (load > 0.0) * (u_r != 0.0)
     return on * (1.637 * np.exp(0.711 * np.exp(-0.023 * ln_k) * ln_u
@@ -172,15 +185,23 @@ def film_thickness_central_hamrock_dowson(u_r, load, r_x, kappa, e_prime, eta, x
     >>> round(float(h) * 1e6, 2)
     0.99
     """
-    ln_u = np.log(np.maximum(eta * np.abs(u_r) / (e_prime * r_x), 1e-300))
-    ln_w = np.log(np.maximum(load, 1e-300) / (e_prime * r_x * r_x))
+    c = 1.0 / (e_prime * r_x)  # U = eta u_r c, W = Q E' c^2: one division, off the kernels' chain of u_r and Q
+    ln_u = np.log(np.maximum(eta * np.abs(u_r) * c, 1e-300))
+    ln_w = np.log(np.maximum(load, 1e-300) * (e_prime * c * c))
     on = (load > 0.0) * (u_r != 0.0)
     return on * (2.69 * np.exp(0.67 * ln_u + 0.53 * np.log(xi * e_prime) - 0.067 * ln_w)
                  * (1.0 - 0.61 * np.exp(-0.73 * kappa)) * r_x)
 
 
 _film_central_hd = kernel(film_thickness_central_hamrock_dowson)
-_film_hd_ln_g = kernel(film_hd_ln_g)
+_film_hd_ln_g_k = kernel(film_hd_ln_g_k)
+_film_hd_ellipticity_factor = kernel(film_hd_ellipticity_factor)
+
+
+@kernel
+def _film_hd_ln_g(u_r, load, r_x, kappa, e_prime, eta, ln_g):
+    """Kernel of :func:`film_hd_ln_g`."""
+    return _film_hd_ln_g_k(u_r, load, r_x, _film_hd_ellipticity_factor(kappa), e_prime, eta, ln_g)
 _film_mk_ln_g = kernel(film_mk_ln_g)
 
 
@@ -191,6 +212,16 @@ def _film_thickness_ln_g(model, u_r, load, r_x, kappa, e_prime, eta, ln_g):
     if model == MASJEDI_KHONSARI:
         return _film_mk_ln_g(u_r, load, r_x, kappa, e_prime, eta, ln_g)
     return _film_hd_ln_g(u_r, load, r_x, kappa, e_prime, eta, ln_g)
+
+
+@kernel
+def _film_thickness_ln_g_k(model, u_r, load, r_x, kappa, factor_k, e_prime, eta, ln_g):
+    """:func:`_film_thickness_ln_g` with the HD ellipticity factor given
+    (``factor_k`` = :func:`film_hd_ellipticity_factor` of ``kappa``; a
+    negative value: not given, computed here; MK ignores it)."""
+    if model == MASJEDI_KHONSARI or factor_k < 0.0:
+        return _film_thickness_ln_g(model, u_r, load, r_x, kappa, e_prime, eta, ln_g)
+    return _film_hd_ln_g_k(u_r, load, r_x, factor_k, e_prime, eta, ln_g)
 
 
 @kernel

@@ -279,8 +279,11 @@ def _curvature_sum_radius(r_x, r_y):
 
 @kernel
 def _stiffness(kappa, ell_f, ell_e, r, e_prime):
-    """K = pi k E' sqrt(2 E R / (9 F^3)) [N/m^1.5] (docs/theory/hertz.md)."""
-    return math.pi * kappa * e_prime * math.sqrt(2.0 * ell_e * r / (9.0 * ell_f ** 3))
+    """K = pi k E' sqrt(2 E R / (9 F^3)) [N/m^1.5] (docs/theory/hertz.md).
+
+    Evaluated as sqrt(R (2 E / (9 F^3))): the factor of k, F, E (cached per
+    contact by the contact kernel) is off the dependency chain of R there."""
+    return math.pi * kappa * e_prime * math.sqrt(r * (2.0 * ell_e / (9.0 * ell_f ** 3)))
 
 
 @kernel
@@ -306,7 +309,7 @@ def _semi_axes_overlap(kappa, ell_f, ell_e, r, overlap):
     contact and step)."""
     if overlap <= 0.0:
         return 0.0, 0.0
-    b = math.sqrt(2.0 * ell_e * r * overlap / ell_f)
+    b = math.sqrt(r * overlap * (2.0 * ell_e / ell_f))
     return kappa * b, b
 
 
