@@ -13,20 +13,20 @@ from conftest import ROOT
 
 CLAIMS = [
     # fast mode of the Exudyn element (bench_element.py, fast_mode_checks.py)
-    ("reproduces the body mode at 0.46 of its cost", "With one sub-step the fast mode costs 0.46 of the body mode",
+    ("reproduces the body mode at 0.76 of its cost", "With one sub-step the fast mode costs 0.76 of the body mode",
      "python validation/bench_element.py"),
-    ("within 0.455 % in Q_max and 0.018 % in cage speed over 0.1 s",
-     "| element fast mode, 4 x 5 us sub-steps | 2.06 | 0.455 % | 0.018 % |", "python validation/bench_element.py"),
-    ("at 3.38 times the\nreference core's wall time", "Fast mode (4 x 5 us sub-steps) / reference core: **3.38**",
+    ("within 0.786 % in Q_max and 0.010 % in cage speed over 0.1 s",
+     "| element fast mode, 4 x 5 us sub-steps | 1.4 | 0.786 % | 0.010 % |", "python validation/bench_element.py"),
+    ("at 2.36 times the\nreference core's wall time", "Fast mode (4 x 5 us sub-steps) / reference core: **2.36**",
      "python validation/bench_element.py"),
-    ("3 and 4 reach 0.71 % and 0.14 %", "3: q_max_inner 1472.5 N (0.71 %); 4: q_max_inner 1464.3 N (0.14 %)",
+    ("3 and 4 reach 0.80 % and 0.11 %", "3: q_max_inner 1473.9 N (0.80 %); 4: q_max_inner 1463.7 N (0.11 %)",
      "python validation/fast_mode_checks.py"),
-    ("Q_max 3.6 times too high at 5, a blow-up at 6", "5: q_max_inner 5324.7 N (264.16 %); 6: dt: the bearing state became",
+    ("Q_max 3.0 times too high at 5, a blow-up at 6", "5: q_max_inner 4430.3 N (202.99 %); 6: dt: the bearing state became",
      "python validation/fast_mode_checks.py"),
     ("estimate 22.8 us", "estimate 22.8 us for the 81 g ring", "python validation/fast_mode_checks.py"),
     # defects: the cost of the defect feature in a scene without defects (bench_defects.py)
-    ("wall-time ratio against the code before the\ndefect feature is 0.692 against a noise floor of 1.109",
-     "median per-round ratio 0.692, against 1.109", "python validation/bench_defects.py"),
+    ("wall-time ratio against the code before the\ndefect feature is 0.774 against a noise floor of 1.007",
+     "median per-round ratio 0.774, against 1.007", "python validation/bench_defects.py"),
 ]
 
 

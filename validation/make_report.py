@@ -226,9 +226,10 @@ def section_new_checks():
             "orbital speed above half the ring speed under outer-race control (a real result, against the closed "
             "form).", last_lines=40)
         + section_printed(
-            "Step time against the code before this session's kernel work", "bench_kernel_ab.py",
+            "Step time against the code before the kernel work", "bench_kernel_ab.py",
             "The reference engine's step on the two headline settings of bench_reference.py, this code against "
-            "e61f1e5 (before the semi-axes from the overlap and ln(xi E') once per evaluation), both in one "
+            "e61f1e5 (before the semi-axes from the overlap, ln(xi E') once per evaluation, the divisions off the "
+            "dependency chains and the cached film ellipticity factor), both in one "
             "process, interleaved rounds, medians; the new/new control is the noise floor.", last_lines=20)
         + section_printed(
             "Where the reference engine's step time goes", "profile_reference.py",
