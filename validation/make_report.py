@@ -179,7 +179,9 @@ def section_new_checks():
             "Element body mode against the one-object layout", "bench_element_ab.py",
             "The body mode of this code against b8c12a7 (one ObjectGenericODE2 holding all balls), both in one "
             "process, interleaved rounds, medians; new/new is the noise floor; the sampled arrays compared bit "
-            "for bit.", last_lines=15)
+            "for bit (equal on the branch that changed the layout; not since the contact kernel's divisions were "
+            "reordered, whose summary differences bench_kernel_ab.py shows within the round-off floor).",
+            last_lines=15)
         + section_printed(
             "Bearing levels in Exudyn", "levels_checks.py",
             "The ball element, the quasi-static level and the linear level in Exudyn (docs/theory/levels.md): "
