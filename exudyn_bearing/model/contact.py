@@ -572,8 +572,11 @@ def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist,
     if f_n < 0.0:
         f_n = 0.0
     spin = roll = m_z = 0.0
-    if ellipse:
+    exx = exy = exz = eyx = eyy = eyz = 0.0
+    framed = ellipse or rolling_resistance  # the rolling frame, once per contact for both users
+    if framed:
         spin, roll, exx, exy, exz, eyx, eyy, eyz = _contact_frame(rings, race, wb, j, dxw, dyw, dzw, nx, ny, nz)
+    if ellipse:
         if ry >= rx:
             a_ax, b_ax = major, minor
         else:
@@ -598,10 +601,8 @@ def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist,
     if loss_path is not None:  # pruned at compile time when None
         if rolling_resistance:
             # the rolling-resistance moment pair about e_y: on the ball, and its reaction on the ring
-            _s, roll_r, _x, _y, _z, ryx, ryy, ryz = _contact_frame(rings, race, wb, j, dxw, dyw, dzw, nx, ny, nz)
-            m_rr, p_ehl, p_hyst = _rolling_resistance(p, f_n, u_r, rx, kappa, minor if ry >= rx else major,
-                                                      roll_r)
-            _moment_pair(tb, fr, j, race, m_rr * ryx, m_rr * ryy, m_rr * ryz)
+            m_rr, p_ehl, p_hyst = _rolling_resistance(p, f_n, u_r, rx, kappa, minor if ry >= rx else major, roll)
+            _moment_pair(tb, fr, j, race, m_rr * eyx, m_rr * eyy, m_rr * eyz)
     # forces on the ball: the normal pushes it back towards the groove centre
     fb[j, 0] += -f_n * nx + ftx
     fb[j, 1] += -f_n * ny + fty
@@ -622,7 +623,7 @@ def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist,
     fr[race, 4] += my_
     fr[race, 5] += mz_
     if want:
-        if not ellipse:
+        if not framed:
             spin, roll, _x, _y, _z, _u, _v, _w = _contact_frame(rings, race, wb, j, dxw, dyw, dzw, nx, ny, nz)
         if ry >= rx:
             a_ax, b_ax = major, minor
