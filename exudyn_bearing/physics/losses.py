@@ -76,9 +76,8 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import vectorize
 
-from .._jit import kernel
+from .._jit import kernel, lazy_ufunc
 from ..data.errors import InputError
 
 __all__ = [
@@ -280,7 +279,7 @@ def rolling_resistance_power(force, u_r, surfaces=1):
 # ----------------------------------------------------------------------------------------------------
 # ball drag in an oil-air mixture
 # ----------------------------------------------------------------------------------------------------
-@vectorize(["float64(float64)"], cache=True)
+@lazy_ufunc("float64(float64)")
 def sphere_drag_coefficient(reynolds):
     """Drag coefficient C_D [-] of a sphere against its Reynolds number Re = rho v D / eta.
 
@@ -292,8 +291,9 @@ def sphere_drag_coefficient(reynolds):
     Validity: a smooth sphere in a uniform stream, Re < 2e5 (below the drag
     crisis; above it C_D drops to about 0.1-0.2, not modelled: 0.44 is kept
     and is then an upper value). Re = 0 gives C_D = inf (the drag force
-    stays finite: use :func:`ball_drag_force`). A numba ufunc: the contact kernel calls
-    it on numbers, numpy on arrays (one implementation).
+    stays finite: use :func:`ball_drag_force`). A ufunc built on first use
+    (:class:`~exudyn_bearing._jit.LazyUfunc`): the contact kernel calls it on numbers, numpy on
+    arrays (one implementation).
     """
     if reynolds <= 0.0:
         return math.inf
@@ -328,7 +328,7 @@ def mixture_viscosity(oil_fraction, oil_viscosity, air_viscosity=AIR_VISCOSITY):
     return r if np.ndim(r) else float(r)
 
 
-@vectorize(["float64(float64, float64, float64, float64)"], cache=True)
+@lazy_ufunc("float64(float64, float64, float64, float64)")
 def ball_drag_force(speed, ball_diameter, density, viscosity):
     """Drag force on a ball moving through a fluid [N], Harris & Kotzalas [1]_ ch. 6.
 
@@ -348,7 +348,8 @@ def ball_drag_force(speed, ball_diameter, density, viscosity):
         Of the fluid or mixture (:func:`mixture_density`,
         :func:`mixture_viscosity`) [kg/m^3], [Pa s].
 
-    A numba ufunc (the contact kernel calls it on numbers, numpy on arrays)
+    A ufunc built on first use (:class:`~exudyn_bearing._jit.LazyUfunc`; the contact kernel calls it on
+    numbers, numpy on arrays)
     with C_D from :func:`sphere_drag_coefficient`; 0 at rest.
     """
     v = abs(speed)
