@@ -1,5 +1,5 @@
 """Rolling resistance and ball drag as forces in the dynamic engines (docs/theory/losses.md, "In the
-dynamic engines"): switched off they leave the contact kernel's forces bit-identical; switched on,
+dynamic engines"): switched off they leave the contact kernel's forces unchanged (to round-off); switched on,
 the rolling resistance is a moment pair of magnitude (F_h + 2 F_R) R_x at every loaded contact and
 the drag the force 1/2 C_D rho A v^2 on every ball, both taking from the bodies exactly the power the
 engines report, and a steady run reports the quasi-static solver's rolling and drag losses."""
@@ -47,16 +47,19 @@ def _scene(**kw):
 
 
 @pytest.mark.parametrize("level", ["point", "ellipse"])
-def test_switched_off_the_forces_are_bit_identical_to_the_kernel_without_the_loss_code(level):
+def test_switched_off_the_forces_equal_the_kernel_without_the_loss_code(level):
     # the same scene evaluated by the specialisation without the new code (loss_path None, what the
     # reference engine runs for a default scene) and by the one with it compiled in but switched off
-    # (what the Exudyn element runs): every output equal to the last bit
+    # (what the Exudyn element runs): every output the same. Not asserted to the last bit: the two are
+    # separately compiled functions, and with contraction allowed (fast-math 'contract') the compiler may
+    # fuse a multiply-add in one and not the other on some CPU; 1e-12 of each array's scale is far below
+    # any effect of the new code (its smallest term, the hysteresis moment, is ~1e-3 of the friction's)
     eng = _scene(traction_level=level)
     assert scene_loss_path(eng.params) is None
     a, b = _evaluate(eng, None), _evaluate(eng, True)
-    for k in ("fb", "tb", "fc", "fr", "glob", "cage_load"):
-        assert np.array_equal(a[k], b[k]), k
-    assert np.array_equal(a["diag"], b["diag"], equal_nan=True)
+    for k in ("fb", "tb", "fc", "fr", "glob", "cage_load", "diag"):
+        scale = float(np.nanmax(np.abs(a[k]))) if np.any(np.isfinite(a[k])) else 0.0
+        assert np.allclose(a[k], b[k], rtol=1e-12, atol=1e-12 * scale, equal_nan=True), k
     assert a["glob"][L.G_EHL_POWER] == a["glob"][L.G_HYST_POWER] == a["glob"][L.G_DRAG_POWER] == 0.0
 
 
