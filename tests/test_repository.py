@@ -1,5 +1,6 @@
 """The repository itself: no generated output tracked, and the session guard
 (tests/conftest.py) that keeps test runs from writing into the working tree."""
+import json
 import subprocess
 from pathlib import Path
 
@@ -125,6 +126,27 @@ def test_make_report_publishes_a_figure_small(tmp_path, monkeypatch):
 
     with Image.open(tmp_path / "report_figures" / "a.png") as im:
         assert im.mode == "P" and im.size == Image.open(tmp_path / "out" / "a.png").size
+
+
+def test_make_report_names_the_machine_of_its_run(tmp_path, monkeypatch):
+    """The report names the machine it measured on (CPU, cores, load average at the run's start and end),
+    as read off during the run (run_all), not when the text is written."""
+    import os
+    import sys
+
+    sys.path.insert(0, str(ROOT / "validation"))
+    import make_report
+
+    monkeypatch.setattr(make_report, "OUT", tmp_path)
+    monkeypatch.setattr(make_report, "SCRIPTS", [])
+    make_report.run_all()
+    record = json.loads((tmp_path / "make_report_machine.json").read_text())
+    assert record["start"]["cores"] == os.cpu_count() and record["end"]["cores"] == os.cpu_count()
+    sentence = make_report.machine_sentence(record)
+    assert record["start"]["cpu"] in sentence and f"{os.cpu_count()} logical cores" in sentence
+    if hasattr(os, "getloadavg"):
+        assert str(record["end"]["load"]) in sentence
+    assert make_report.machine_sentence({}) == ""
 
 
 def test_the_repository_cites_its_own_theory_document():

@@ -17,6 +17,7 @@ from __future__ import annotations
 import argparse
 import json
 import math
+import os
 import platform
 import subprocess
 import sys
@@ -110,9 +111,44 @@ def remove_unpublished():
                 f.unlink()
 
 
+def machine_facts():
+    """The machine a run measured on: CPU model (/proc/cpuinfo where there is one), logical cores, and the
+    load average now (os.getloadavg; None where the system has none)."""
+    cpu = platform.processor() or platform.machine()
+    try:
+        for line in Path("/proc/cpuinfo").read_text().splitlines():
+            if line.startswith("model name"):
+                cpu = line.split(":", 1)[1].strip()
+                break
+    except OSError:
+        pass
+    try:
+        load = [round(x, 2) for x in os.getloadavg()]
+    except (AttributeError, OSError):
+        load = None
+    return {"cpu": cpu, "cores": os.cpu_count(), "load": load, "time": time.strftime("%Y-%m-%d %H:%M")}
+
+
+def machine_sentence(machine):
+    """The report's sentence naming the machine of a run (``machine``: {"start": facts, "end": facts} as
+    run_all writes them), or "" without a record."""
+    if not machine:
+        return ""
+    start, end = machine.get("start", {}), machine.get("end", {})
+    load = "; load average (1, 5, 15 min) {} at the start ({}), {} at the end ({})".format(
+        start.get("load"), start.get("time"), end.get("load"), end.get("time")) if end else ""
+    return (f"Measured on: {start.get('cpu')}, {start.get('cores')} logical cores, shared with other jobs"
+            f"{load}.")
+
+
 def run_all(skip=(), start_at=None):
     walls_path = OUT / "make_report_walls.json"
+    machine_path = OUT / "make_report_machine.json"
     walls = json.loads(walls_path.read_text()) if start_at and walls_path.exists() else {}
+    machine = json.loads(machine_path.read_text()) if start_at and machine_path.exists() else {}
+    machine.setdefault("start", machine_facts())
+    machine.pop("end", None)
+    machine_path.write_text(json.dumps(machine, indent=2))
     names = [script for script, _ in SCRIPTS]
     first = names.index(start_at) if start_at else 0
     for script, args in SCRIPTS[first:]:
@@ -126,6 +162,8 @@ def run_all(skip=(), start_at=None):
         (OUT / f"{Path(script).stem}.stdout.txt").write_text(proc.stdout)  # what section_printed quotes
         walls[script] = time.perf_counter() - t0
     walls_path.write_text(json.dumps(walls, indent=2))
+    machine["end"] = machine_facts()
+    machine_path.write_text(json.dumps(machine, indent=2))
 
 
 def section_printed(title, script, intro, figures=(), last_lines=40):
@@ -1245,6 +1283,10 @@ def main(argv=None):
             f"Python {platform.python_version()}); every number below was printed by the command named in its "
             "section. The machines are shared and noisy: wall times are medians where repeated, ratios matter "
             "more than absolute values.", ""]
+    machine_path = OUT / "make_report_machine.json"
+    machine = machine_sentence(json.loads(machine_path.read_text()) if machine_path.exists() else {})
+    if machine:
+        head += [machine, ""]
     if walls:
         head += ["Wall time of each script in this regeneration: " +
                  ", ".join(f"{k} {v:.0f} s" for k, v in walls.items()) + ".", ""]
