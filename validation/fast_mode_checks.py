@@ -25,9 +25,10 @@
    ring speed and cage speed after 40 ms (the peer check gives the ring a
    large inertia instead).
 
-7. A lightly loaded rotor (50 N on two 6208, 500 rad/s, started from the
-   analytic state): bearing A's cage speed and orbit in the body mode at
-   5 us and in the fast mode with 1, 2, 4 and 8 sub-steps of 5 us
+7. A lightly loaded rotor (50 N and 5 N on two 6208, 500 rad/s, started
+   from the analytic state): bearing A's cage speed and orbit in the body
+   mode at 5 us (and 2.5 us: its own step error) and in the fast mode with
+   1, 2, 4 and 8 sub-steps of 5 us and 4, 8 and 16 of 2.5 us
    (``--light-load`` runs only this).
 
     python validation/fast_mode_checks.py [--light-load]
@@ -149,27 +150,39 @@ def light_rotor(sub, dt=5e-6, load=50.0, omega=500.0, t_end=0.02):
             "orbit_radius_um": float(1e6 * np.hypot(*(ring - centre).T).mean())}
 
 
-def light_load_sub_steps(load=50.0):
-    """Body mode at 5 us against the fast mode with 1, 2, 4 and 8 sub-steps of 5 us on :func:`light_rotor`:
-    relative deviation of the cage speed and of the orbit centre's distance from the bearing centre."""
+#: Light-load cases: (sub-steps, sub-step [s]) of the fast mode; 0 sub-steps: the body mode at that step.
+LIGHT_CASES = ((0, 2.5e-6), (1, 5e-6), (2, 5e-6), (4, 5e-6), (8, 5e-6), (4, 2.5e-6), (8, 2.5e-6), (16, 2.5e-6))
+
+
+def _case_label(sub, dt):
+    return f"bodies {dt * 1e6:g} us" if sub == 0 else f"fast {sub} x {dt * 1e6:g} us"
+
+
+def light_load_sub_steps(load=50.0, cases=LIGHT_CASES):
+    """Body mode at 5 us against ``cases`` ((sub-steps, sub-step) of the fast mode, 0 sub-steps: the body
+    mode at another step) on :func:`light_rotor`: relative deviation of the cage speed and of the orbit
+    centre's distance from the bearing centre. The body mode at 2.5 us is its own step error; the fast
+    mode's ring (the rotor) advances by Exudyn steps of sub-steps x sub-step."""
     rows = {"bodies 5 us": light_rotor(0, load=load)}
     body = rows["bodies 5 us"]
     print(f"light rotor, {load:g} N, bodies 5 us: {body}", flush=True)
-    for sub in (1, 2, 4, 8):
+    for sub, dt in cases:
+        label = _case_label(sub, dt)
         try:
-            r = light_rotor(sub, load=load)
+            r = light_rotor(sub, dt=dt, load=load)
         except Exception as exc:  # a blow-up is a result here
-            rows[f"fast {sub} x 5 us"] = {"error": _first_error_line(exc)}
-            print(f"light rotor, fast {sub} x 5 us: {rows[f'fast {sub} x 5 us']}", flush=True)
+            rows[label] = {"error": _first_error_line(exc)}
+            print(f"light rotor, {load:g} N, {label}: {rows[label]}", flush=True)
             continue
         r["dev_cage_speed"] = r["cage_speed"] / body["cage_speed"] - 1
         r["dev_centre"] = (math.hypot(r["centre_x_um"], r["centre_y_um"])
                            / math.hypot(body["centre_x_um"], body["centre_y_um"]) - 1)
-        rows[f"fast {sub} x 5 us"] = r
-        print(f"light rotor, fast {sub} x 5 us: cage speed {r['cage_speed']:.3f} rad/s ({100 * r['dev_cage_speed']:+.3f} "
-              f"%), orbit centre ({r['centre_x_um']:.3f}, {r['centre_y_um']:.3f}) um ({100 * r['dev_centre']:+.3f} % "
-              f"in distance), orbit radius {r['orbit_radius_um']:.4f} um (body mode {body['orbit_radius_um']:.4f})",
-              flush=True)
+        r["exudyn_step_us"] = (sub or 1) * dt * 1e6
+        rows[label] = r
+        print(f"light rotor, {load:g} N, {label} (Exudyn step {r['exudyn_step_us']:g} us): cage speed "
+              f"{r['cage_speed']:.3f} rad/s ({100 * r['dev_cage_speed']:+.3f} %), orbit centre ({r['centre_x_um']:.3f}, "
+              f"{r['centre_y_um']:.3f}) um ({100 * r['dev_centre']:+.3f} % in distance), orbit radius "
+              f"{r['orbit_radius_um']:.4f} um (body mode {body['orbit_radius_um']:.4f})", flush=True)
     return rows
 
 
@@ -262,9 +275,10 @@ def main():
     if sys.argv[1:] == ["--light-load"]:  # only the light-load comparison of body and fast mode
         out = HERE / "out"
         out.mkdir(exist_ok=True)
-        (out / "fast_mode_light_load.json").write_text(json.dumps(light_load_sub_steps(), indent=2))
+        (out / "fast_mode_light_load.json").write_text(json.dumps(
+            {f"{load:g} N": light_load_sub_steps(load) for load in (50.0, 5.0)}, indent=2))
         return
-    report = {"light_load_sub_steps": light_load_sub_steps(), "substeps_6208": substeps_6208(), "rotor_sub_steps": rotor_sub_steps(),
+    report = {"light_load_sub_steps": light_load_sub_steps(), "light_load_5N": light_load_sub_steps(5.0), "substeps_6208": substeps_6208(), "rotor_sub_steps": rotor_sub_steps(),
               "rotor_scenario_whirl": rotor_scenario_whirl(), "solvers_6208": solvers_6208(),
               "cage_7208": cage_7208(),
               "builtin_own_inertia": builtin_own_inertia()}
