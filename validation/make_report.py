@@ -399,9 +399,9 @@ def section_element():
               "over 10-20 ms, by Exudyn step of the ring (sub-steps x sub-step): "
               + "; ".join(f"{load}: " + ", ".join(light_txt(k, v) for k, v in rows.items() if k != "bodies 5 us")
                           for load, rows in (("50 N", c["light_load_sub_steps"]), ("5 N", c.get("light_load_5N", {}))))
-              + ". The body mode's own step error (2.5 against 5 us) is the yardstick. The deviation follows the "
-              "ring's Exudyn step, not the sub-step (the rotor, integrated by Exudyn, feels the balls' mean "
-              "reaction once per Exudyn step): largest orbit-centre deviation with Exudyn steps up to 20 us "
+              + ". The body mode's own step error (2.5 against 5 us) is the yardstick. The deviation grows with the "
+              "ring's Exudyn step (the rotor, integrated by Exudyn, feels the balls' mean reaction once per "
+              "Exudyn step; the sub-steps only integrate the balls): largest orbit-centre deviation with Exudyn steps up to 20 us "
               + ", ".join(f"{load} {light_worst(rows, 0, 20)}" for load, rows in
                           (("50 N", c["light_load_sub_steps"]), ("5 N", c.get("light_load_5N", {}))))
               + "; with 40 us " + ", ".join(f"{load} {light_worst(rows, 20, 40)}" for load, rows in
