@@ -1318,7 +1318,7 @@ def main(argv=None):
     if machine:
         head += [machine, ""]
     if walls:
-        head += ["Wall time of each script in this regeneration: " +
+        head += [f"Wall time of this regeneration: {sum(walls.values()) / 60:.0f} min in all; of each script: " +
                  ", ".join(f"{k} {v:.0f} s" for k, v in walls.items()) + ".", ""]
     body = (section_reference() + section_cage_step() + section_element() + section_cross() + section_peer()
             + section_figures()
