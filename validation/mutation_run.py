@@ -124,7 +124,7 @@ MUTANTS = [
     ("kernel_normal_law", True, "+2 %", KERNEL,
      "return kst * delta * sq, 1.5 * kst * sq,", "return 1.02 * kst * delta * sq, 1.5 * kst * sq,", [PUB]),
     ("kernel_lambda", True, "+2 %", KERNEL,
-     "lam = h / p[P_SIGMA]", "lam = 1.02 * h / p[P_SIGMA]", [PUB]),
+     "lam = h * (1.0 / p[P_SIGMA])", "lam = 1.02 * h * (1.0 / p[P_SIGMA])", [PUB]),
     ("kernel_fluid_damping", True, "+2 % eta", KERNEL,
      "c_fl = _damping_fluid(p[P_ETA], major,", "c_fl = _damping_fluid(1.02 * p[P_ETA], major,", [PUB]),
     ("kernel_traction_slip_sign", True, "sign of v0", KERNEL,
