@@ -164,8 +164,9 @@ def _ln_anchored(x, hz, j, race, col):
     the steady path."""
     r = x * hz[j, race, col] - 1.0
     if abs(r) < LN_REACH:
-        return hz[j, race, col + 1] + r * (1.0 - r * (1.0 / 2.0 - r * (1.0 / 3.0 - r * (
-            1.0 / 4.0 - r * (1.0 / 5.0 - r * (1.0 / 6.0 - r * (1.0 / 7.0)))))))
+        r2 = r * r  # Estrin's scheme: the same sum, a shorter chain of dependent operations than Horner's
+        return hz[j, race, col + 1] + (r + r2 * ((-1.0 / 2.0 + r * (1.0 / 3.0)) + r2 * (
+            (-1.0 / 4.0 + r * (1.0 / 5.0)) + r2 * (-1.0 / 6.0 + r * (1.0 / 7.0)))))
     ln_x = math.log(x)
     hz[j, race, col] = 1.0 / x if x < 1e300 else 0.0  # no subnormal reciprocal: a huge x is never anchored
     hz[j, race, col + 1] = ln_x
@@ -182,8 +183,9 @@ def _exp_anchored(e, hz, j, race, col):
     d = e - hz[j, race, col]
     ex0 = hz[j, race, col + 1]
     if abs(d) < EXP_REACH and ex0 > 0.0:
-        return ex0 * (1.0 + d * (1.0 + d * (1.0 / 2.0 + d * (1.0 / 6.0 + d * (1.0 / 24.0 + d * (
-            1.0 / 120.0 + d * (1.0 / 720.0 + d * (1.0 / 5040.0))))))))
+        d2 = d * d  # Estrin's scheme, as in _ln_anchored
+        return ex0 * (1.0 + d + d2 * ((1.0 / 2.0 + d * (1.0 / 6.0)) + d2 * (
+            (1.0 / 24.0 + d * (1.0 / 120.0)) + d2 * (1.0 / 720.0 + d * (1.0 / 5040.0)))))
     ex = math.exp(e)
     hz[j, race, col] = e
     hz[j, race, col + 1] = ex
