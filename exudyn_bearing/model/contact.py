@@ -56,7 +56,10 @@ Inputs (all float64, world frame):
   takes its two logarithms and its exponential (:func:`_film_hd_anchored`:
   ln x = ln x_0 + ln(1 + r), exp(e) = exp(e_0) exp(d) by short series near
   the anchor, the library functions and a new anchor beyond; equal to the
-  direct relation to round-off). Any content is valid (zeros: nothing
+  direct relation to round-off) and the scratch of the contact geometry,
+  which :func:`forces` then computes for all contacts first
+  (:func:`_race_geometry`, in a short loop whose square roots and
+  divisions the processor overlaps). Any content is valid (zeros: nothing
   cached yet); only the speed depends on it.
 
 Outputs: ``fb, tb`` (Z, 3) force and moment on the balls, ``fc`` (Z, 3) on
@@ -85,7 +88,7 @@ from ..physics.friction import (_implicit_tangential_stiffness, _regularized_cou
 from ..physics.geometry import _groove_geometry, _raceway_radii_cos
 from ..physics.hertz import _curvature_sum_radius, _kfe_fast, _semi_axes, _semi_axes_overlap, _stiffness
 from ..physics.losses import _ehl_rolling_force, _hysteresis_rolling_force, ball_drag_force
-from .layout import HZ_E, HZ_EXP, HZ_F, HZ_FILM_K, HZ_K, HZ_LN_U, HZ_LN_W, HZ_N, HZ_RATIO
+from .layout import HZ_E, HZ_EXP, HZ_F, HZ_FILM_K, HZ_GEO, HZ_K, HZ_LN_U, HZ_LN_W, HZ_N, HZ_RATIO
 from .layout import (D_ROLLRES, G_DRAG_POWER, G_EHL_POWER, G_HYST_POWER, P_ALPHA_H, P_DRAG, P_ETA_MIX, P_RHO_MIX,
                      P_ROLLRES)
 from .layout import (D_POWER, D_ROLL, D_SPIN, D_SPIN_MOMENT, P_GROWTH_I, P_GROWTH_O, P_N_ACROSS, P_N_STRIPS,
@@ -575,6 +578,25 @@ def _turn_ball_frame(p, hist, hist_out, dt_hist, wb, j):
 
 
 @kernel(inline="always")
+def _race_geometry(p, rings, xb, j, race):
+    """Ball j in the groove of race ``race``: its centre relative to the ring (:func:`_ring_frame`) and the
+    groove geometry (``geometry._groove_geometry``) at the groove centre circle, grown by the ring's
+    centrifugal growth."""
+    inner = race == 0
+    if inner:
+        rho, zg, rc, growth = p[P_RHO_I], p[P_ZG_I], p[P_RCI], p[P_GROWTH_I]
+    else:
+        rho, zg, rc, growth = p[P_RHO_O], p[P_ZG_O], p[P_RCO], p[P_GROWTH_O]
+    if growth != 0.0:
+        # centrifugal growth of a spinning ring: the groove moves out by growth * omega^2
+        w_ax = rings[race, 8] * rings[race, 15] + rings[race, 11] * rings[race, 16] + rings[race, 14] * rings[race, 17]
+        rho += growth * w_ax * w_ax
+    dxw, dyw, dzw, cx, cy, cz, rotated = _ring_frame(rings, race, xb[j, 0], xb[j, 1], xb[j, 2])
+    delta, nlx, nly, nlz, ca, sa, r_contact = _groove_geometry(cx, cy, cz, rho, zg, rc, p[P_RB], inner)
+    return dxw, dyw, dzw, cx, cy, rotated, delta, nlx, nly, nlz, ca, sa, r_contact
+
+
+@kernel(inline="always")
 def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist, hz, fb, tb, fr, diag, want, ln_g,
                   defect_path, ellipse_path, loss_path):
     """Ball j on the inner (race 0, ring 0) or outer (race 1, ring 1) groove.
@@ -588,17 +610,17 @@ def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist,
     without the defect drop, the ellipse traction or the rolling resistance
     (:func:`forces`)."""
     inner = race == 0
-    if inner:
-        rho, zg, rc, growth = p[P_RHO_I], p[P_ZG_I], p[P_RCI], p[P_GROWTH_I]
-    else:
-        rho, zg, rc, growth = p[P_RHO_O], p[P_ZG_O], p[P_RCO], p[P_GROWTH_O]
+    rc = p[P_RCI] if inner else p[P_RCO]
     rb = p[P_RB]
-    if growth != 0.0:
-        # centrifugal growth of a spinning ring: the groove moves out by growth * omega^2
-        w_ax = rings[race, 8] * rings[race, 15] + rings[race, 11] * rings[race, 16] + rings[race, 14] * rings[race, 17]
-        rho += growth * w_ax * w_ax
-    dxw, dyw, dzw, cx, cy, cz, rotated = _ring_frame(rings, race, xb[j, 0], xb[j, 1], xb[j, 2])
-    delta, nlx, nly, nlz, ca, sa, r_contact = _groove_geometry(cx, cy, cz, rho, zg, rc, rb, inner)
+    if hz.shape[2] >= HZ_N:  # computed by forces before the contacts, for all of them
+        g = HZ_GEO
+        dxw, dyw, dzw, cx, cy = hz[j, race, g], hz[j, race, g + 1], hz[j, race, g + 2], hz[j, race, g + 3], hz[j, race, g + 4]
+        rotated = hz[j, race, g + 5] != 0.0
+        delta, nlx, nly, nlz = hz[j, race, g + 6], hz[j, race, g + 7], hz[j, race, g + 8], hz[j, race, g + 9]
+        ca, sa, r_contact = hz[j, race, g + 10], hz[j, race, g + 11], hz[j, race, g + 12]
+    else:
+        (dxw, dyw, dzw, cx, cy, rotated, delta, nlx, nly, nlz, ca, sa,
+         r_contact) = _race_geometry(p, rings, xb, j, race)
     drop = 0.0
     if defect_path is not None:  # pruned at compile time when None
         if p[P_NDEF] > 0.0 and delta > 0.0:
@@ -891,6 +913,27 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb,
     hyst_sum = 0.0
     drag_sum = 0.0
     ln_g = math.log(p[P_XI] * p[P_EPRIME]) if p[P_LUB] > 0.5 else 0.0  # the film's ln G, a scene constant
+    if hz.shape[2] >= HZ_N:
+        # the geometry of every ball / raceway contact first: independent chains of square roots and
+        # divisions, which the processor overlaps in this short loop
+        for j in range(z):
+            for race in range(2):
+                (dxw, dyw, dzw, cx, cy, rotated, delta, nlx, nly, nlz, ca, sa,
+                 r_contact) = _race_geometry(p, rings, xb, j, race)
+                g = HZ_GEO
+                hz[j, race, g] = dxw
+                hz[j, race, g + 1] = dyw
+                hz[j, race, g + 2] = dzw
+                hz[j, race, g + 3] = cx
+                hz[j, race, g + 4] = cy
+                hz[j, race, g + 5] = 1.0 if rotated else 0.0
+                hz[j, race, g + 6] = delta
+                hz[j, race, g + 7] = nlx
+                hz[j, race, g + 8] = nly
+                hz[j, race, g + 9] = nlz
+                hz[j, race, g + 10] = ca
+                hz[j, race, g + 11] = sa
+                hz[j, race, g + 12] = r_contact
     for j in range(z):
         if defect_path is not None:
             if defects:
