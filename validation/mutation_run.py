@@ -54,7 +54,7 @@ MUTANTS = [
     ("ehl_mk_prefactor", True, "-2 %", PHYS + "ehl.py",
      "return on * (1.637 * np.exp(", "return on * (0.98 * 1.637 * np.exp(", [PUB, "tests/test_lubrication.py"]),
     ("ehl_hd_prefactor", True, "+2 %", PHYS + "ehl.py",
-     "return on * (3.63 * np.exp(", "return on * (1.02 * 3.63 * np.exp(", [PUB, "tests/test_lubrication.py"]),
+     "return 3.63 * exp_e", "return 1.02 * 3.63 * exp_e", [PUB, "tests/test_lubrication.py"]),
     ("ehl_hd_central_prefactor", False, "-2 %", PHYS + "ehl.py",
      "return on * (2.69 * np.exp(", "return on * (0.98 * 2.69 * np.exp(", [PUB, "tests/test_lubrication.py"]),
     ("ehl_film_parameter", False, "+2 %", PHYS + "ehl.py",

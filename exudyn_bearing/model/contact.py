@@ -48,9 +48,19 @@ Inputs (all float64, world frame):
   (0) and outer (1) contact of every ball and, for balls with a defect, the
   ball's body frame; ``dt_hist`` the time since then, ``hist_out`` where the
   updated state goes;
-* ``hz`` (Z, 2, 4) or (Z, 2, :data:`HZ_N`): cache of R_y/R_x, k, F, E per
-  contact and, with the fifth column, the ellipticity factor of the HD film
-  (``ehl.film_hd_ellipticity_factor``; computed at every evaluation without it).
+* ``hz`` (Z, 2, 4), (Z, 2, 5) or (Z, 2, :data:`HZ_N`): per-contact cache
+  (columns ``HZ_*`` of :mod:`.layout`) of R_y/R_x, k, F, E and, with the
+  fifth column, the ellipticity factor of the HD film
+  (``ehl.film_hd_ellipticity_factor``; computed at every evaluation without
+  it); with all :data:`HZ_N` columns also the anchors from which the HD film
+  takes its two logarithms and its exponential (:func:`_film_hd_anchored`:
+  ln x = ln x_0 + ln(1 + r), exp(e) = exp(e_0) exp(d) by short series near
+  the anchor, the library functions and a new anchor beyond; equal to the
+  direct relation to round-off) and the scratch of the contact geometry,
+  which :func:`forces` then computes for all contacts first
+  (:func:`_race_geometry`, in a short loop whose square roots and
+  divisions the processor overlaps). Any content is valid (zeros: nothing
+  cached yet); only the speed depends on it.
 
 Outputs: ``fb, tb`` (Z, 3) force and moment on the balls, ``fc`` (Z, 3) on
 the cage balls, ``fr`` (2, 6) force and moment about its centre that balls
@@ -70,13 +80,15 @@ from ..physics.damping import (_damping_critical, _damping_fluid, _damping_hyste
 from ..data.traction import N_TRACTION_PARAMS
 from ..physics.contact_slip import _contact_traction
 from ..physics.defects import _spall_drop_k
-from ..physics.ehl import _film_central_hd, _film_hd_ellipticity_factor, _film_thickness_ln_g_k
+from ..physics.ehl import (HAMROCK_DOWSON, _film_central_hd, _film_groups, _film_hd_ellipticity_factor,
+                           _film_hd_exponent, _film_hd_from_exponent, _film_thickness_ln_g_k)
 from ..physics.traction import EHL as TRACTION_EHL
 from ..physics.friction import (_implicit_tangential_stiffness, _regularized_coulomb, _sphere_tangential_mass,
                                 friction_coefficient)
 from ..physics.geometry import _groove_geometry, _raceway_radii_cos
 from ..physics.hertz import _curvature_sum_radius, _kfe_fast, _semi_axes, _semi_axes_overlap, _stiffness
 from ..physics.losses import _ehl_rolling_force, _hysteresis_rolling_force, ball_drag_force
+from .layout import HZ_E, HZ_EXP, HZ_F, HZ_FILM_K, HZ_GEO, HZ_K, HZ_LN_U, HZ_LN_W, HZ_N, HZ_RATIO
 from .layout import (D_ROLLRES, G_DRAG_POWER, G_EHL_POWER, G_HYST_POWER, P_ALPHA_H, P_DRAG, P_ETA_MIX, P_RHO_MIX,
                      P_ROLLRES)
 from .layout import (D_POWER, D_ROLL, D_SPIN, D_SPIN_MOMENT, P_GROWTH_I, P_GROWTH_O, P_N_ACROSS, P_N_STRIPS,
@@ -93,8 +105,12 @@ from .layout import (D_A, D_ANGLE, D_B, D_DEFECT, D_FRICTION, D_HMIN, D_LAMBDA, 
 
 __all__ = ["forces", "accumulate_energy", "scene_paths", "scene_loss_path", "HZ_N"]
 
-#: Columns of the Hertz cache ``hz``: R_y/R_x, k, F, E, the HD film's ellipticity factor.
-HZ_N = 5
+#: Relative distance |x/x_0 - 1| from its anchor up to which :func:`_ln_anchored` takes ln x from the
+#: anchor's logarithm and a series; the series' first omitted term, x^8/8, is below 1.3e-17 there.
+LN_REACH = 1e-2
+#: Distance |e - e_0| from its anchor up to which :func:`_exp_anchored` takes exp(e) from the anchor's
+#: exponential and a series; its first omitted term, (e - e_0)^8 / 8!, is below 1.7e-17 there.
+EXP_REACH = 3e-2
 
 
 @kernel
@@ -129,16 +145,66 @@ def _hertz_constants(p, table, hz, j, race, rx, ry):
     moved by more than 1e-6 (relative) since the last evaluation (cache ``hz``).
     The test |R_y/R_x - a| > 1e-6 R_y/R_x is taken times R_x > 0, without the
     division (which then runs only on a miss)."""
-    if abs(ry - hz[j, race, 0] * rx) > 1e-6 * ry:
+    if abs(ry - hz[j, race, HZ_RATIO] * rx) > 1e-6 * ry:
         kappa, ell_f, ell_e = _kfe_fast(rx, ry, int(p[P_HERTZ]), table)
-        hz[j, race, 0] = ry / rx
-        hz[j, race, 1] = kappa
-        hz[j, race, 2] = ell_f
-        hz[j, race, 3] = ell_e
-        if hz.shape[2] > 4:
-            hz[j, race, 4] = _film_hd_ellipticity_factor(kappa)
+        hz[j, race, HZ_RATIO] = ry / rx
+        hz[j, race, HZ_K] = kappa
+        hz[j, race, HZ_F] = ell_f
+        hz[j, race, HZ_E] = ell_e
+        if hz.shape[2] > HZ_FILM_K:
+            hz[j, race, HZ_FILM_K] = _film_hd_ellipticity_factor(kappa)
         return kappa, ell_f, ell_e
-    return hz[j, race, 1], hz[j, race, 2], hz[j, race, 3]
+    return hz[j, race, HZ_K], hz[j, race, HZ_F], hz[j, race, HZ_E]
+
+
+@kernel(inline="always")
+def _ln_anchored(x, hz, j, race, col):
+    """ln x of an x > 0 (at least 1e-300) from the anchor of contact (j, race) in the cache columns
+    (col, col + 1) = (1/x_0, ln x_0): within :data:`LN_REACH` of x_0, ln x = ln x_0 + ln(1 + r)
+    with r = x/x_0 - 1 and ln(1 + r) by its series to r^7 (truncation below 1.3e-17, so the result is
+    that of ``math.log`` to round-off); else ``math.log`` and x becomes the anchor. A zero anchor
+    (the cache's initial state) is never within reach. The anchor's reciprocal keeps the division off
+    the steady path."""
+    r = x * hz[j, race, col] - 1.0
+    if abs(r) < LN_REACH:
+        r2 = r * r  # Estrin's scheme: the same sum, a shorter chain of dependent operations than Horner's
+        return hz[j, race, col + 1] + (r + r2 * ((-1.0 / 2.0 + r * (1.0 / 3.0)) + r2 * (
+            (-1.0 / 4.0 + r * (1.0 / 5.0)) + r2 * (-1.0 / 6.0 + r * (1.0 / 7.0)))))
+    ln_x = math.log(x)
+    hz[j, race, col] = 1.0 / x if x < 1e300 else 0.0  # no subnormal reciprocal: a huge x is never anchored
+    hz[j, race, col + 1] = ln_x
+    return ln_x
+
+
+@kernel(inline="always")
+def _exp_anchored(e, hz, j, race, col):
+    """exp(e) from the anchor of contact (j, race) in the cache columns (col, col + 1) = (e_0,
+    exp(e_0)): within :data:`EXP_REACH` of e_0, exp(e) = exp(e_0) exp(d), d = e - e_0, exp(d) by its
+    series to d^7 (truncation below 1.7e-17 relative: the result is that of ``math.exp`` to
+    round-off); else ``math.exp`` and e becomes the anchor. An anchor whose exp(e_0) is not positive
+    (the cache's initial zeros) is never within reach."""
+    d = e - hz[j, race, col]
+    ex0 = hz[j, race, col + 1]
+    if abs(d) < EXP_REACH and ex0 > 0.0:
+        d2 = d * d  # Estrin's scheme, as in _ln_anchored
+        return ex0 * (1.0 + d + d2 * ((1.0 / 2.0 + d * (1.0 / 6.0)) + d2 * (
+            (1.0 / 24.0 + d * (1.0 / 120.0)) + d2 * (1.0 / 720.0 + d * (1.0 / 5040.0)))))
+    ex = math.exp(e)
+    hz[j, race, col] = e
+    hz[j, race, col + 1] = ex
+    return ex
+
+
+@kernel(inline="always")
+def _film_hd_anchored(hz, j, race, u_r, q_el, rx, e_prime, eta, ln_g):
+    """h_min [m] of contact (j, race) by the Hamrock-Dowson film (``ehl.film_hd_ln_g_k``, from its
+    parts ``film_groups``, ``film_hd_exponent``, ``film_hd_from_exponent``) with ln U, ln W and exp(E)
+    from the contact's anchors in ``hz`` (:func:`_ln_anchored`, :func:`_exp_anchored`; equal to the
+    direct relation to round-off) and the ellipticity factor cached with its Hertz constants."""
+    u, w = _film_groups(u_r, q_el, rx, e_prime, eta)
+    e = _film_hd_exponent(_ln_anchored(u, hz, j, race, HZ_LN_U), _ln_anchored(w, hz, j, race, HZ_LN_W), ln_g)
+    on = (q_el > 0.0) * (u_r != 0.0)  # no load or no rolling: no film
+    return on * _film_hd_from_exponent(_exp_anchored(e, hz, j, race, HZ_EXP), hz[j, race, HZ_FILM_K], rx)
 
 
 @kernel(no_runtime=True)
@@ -228,15 +294,23 @@ def _lubrication_ln_g(p, u_r, q_el, rx, kappa, major, c_hyst, ln_g, factor_k):
         return 0.0, 0.0, 0, p[P_LAW_D], p[P_MU_DRY]
     if p[P_LUB] > 0.5:
         h = _film_thickness_ln_g_k(int(p[P_FILM]), u_r, q_el, rx, kappa, factor_k, p[P_EPRIME], p[P_ETA], ln_g)
-        lam = h * (1.0 / p[P_SIGMA])  # the reciprocal off the chain of h
-        regime = lubrication_regime(lam, p[P_L1], p[P_L3])
-        if regime == 0:
-            c_n = c_hyst
-        else:
-            c_fl = _damping_fluid(p[P_ETA], major, p[P_RB], h)
-            c_n = damping_coefficient(lam, c_hyst, c_fl, p[P_L1], p[P_L3])
-        return h, lam, regime, c_n, friction_coefficient(lam, p[P_MU_B], p[P_MU_F], p[P_L1], p[P_L3])
+        lam, regime, c_n, mu = _lubrication_film(p, h, major, c_hyst)
+        return h, lam, regime, c_n, mu
     return 0.0, 0.0, 0, c_hyst, p[P_MU_DRY]
+
+
+@kernel(no_runtime=True)
+def _lubrication_film(p, h, major, c_hyst):
+    """Lambda, regime code, normal damping C_n [N s/m] and friction coefficient mu of a lubricated
+    Hertz contact with the film h_min = h [m] (:func:`_lubrication_ln_g`)."""
+    lam = h * (1.0 / p[P_SIGMA])  # the reciprocal off the chain of h
+    regime = lubrication_regime(lam, p[P_L1], p[P_L3])
+    if regime == 0:
+        c_n = c_hyst
+    else:
+        c_fl = _damping_fluid(p[P_ETA], major, p[P_RB], h)
+        c_n = damping_coefficient(lam, c_hyst, c_fl, p[P_L1], p[P_L3])
+    return lam, regime, c_n, friction_coefficient(lam, p[P_MU_B], p[P_MU_F], p[P_L1], p[P_L3])
 
 
 @kernel(inline="always")
@@ -504,6 +578,25 @@ def _turn_ball_frame(p, hist, hist_out, dt_hist, wb, j):
 
 
 @kernel(inline="always")
+def _race_geometry(p, rings, xb, j, race):
+    """Ball j in the groove of race ``race``: its centre relative to the ring (:func:`_ring_frame`) and the
+    groove geometry (``geometry._groove_geometry``) at the groove centre circle, grown by the ring's
+    centrifugal growth."""
+    inner = race == 0
+    if inner:
+        rho, zg, rc, growth = p[P_RHO_I], p[P_ZG_I], p[P_RCI], p[P_GROWTH_I]
+    else:
+        rho, zg, rc, growth = p[P_RHO_O], p[P_ZG_O], p[P_RCO], p[P_GROWTH_O]
+    if growth != 0.0:
+        # centrifugal growth of a spinning ring: the groove moves out by growth * omega^2
+        w_ax = rings[race, 8] * rings[race, 15] + rings[race, 11] * rings[race, 16] + rings[race, 14] * rings[race, 17]
+        rho += growth * w_ax * w_ax
+    dxw, dyw, dzw, cx, cy, cz, rotated = _ring_frame(rings, race, xb[j, 0], xb[j, 1], xb[j, 2])
+    delta, nlx, nly, nlz, ca, sa, r_contact = _groove_geometry(cx, cy, cz, rho, zg, rc, p[P_RB], inner)
+    return dxw, dyw, dzw, cx, cy, rotated, delta, nlx, nly, nlz, ca, sa, r_contact
+
+
+@kernel(inline="always")
 def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist, hz, fb, tb, fr, diag, want, ln_g,
                   defect_path, ellipse_path, loss_path):
     """Ball j on the inner (race 0, ring 0) or outer (race 1, ring 1) groove.
@@ -517,17 +610,17 @@ def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist,
     without the defect drop, the ellipse traction or the rolling resistance
     (:func:`forces`)."""
     inner = race == 0
-    if inner:
-        rho, zg, rc, growth = p[P_RHO_I], p[P_ZG_I], p[P_RCI], p[P_GROWTH_I]
-    else:
-        rho, zg, rc, growth = p[P_RHO_O], p[P_ZG_O], p[P_RCO], p[P_GROWTH_O]
+    rc = p[P_RCI] if inner else p[P_RCO]
     rb = p[P_RB]
-    if growth != 0.0:
-        # centrifugal growth of a spinning ring: the groove moves out by growth * omega^2
-        w_ax = rings[race, 8] * rings[race, 15] + rings[race, 11] * rings[race, 16] + rings[race, 14] * rings[race, 17]
-        rho += growth * w_ax * w_ax
-    dxw, dyw, dzw, cx, cy, cz, rotated = _ring_frame(rings, race, xb[j, 0], xb[j, 1], xb[j, 2])
-    delta, nlx, nly, nlz, ca, sa, r_contact = _groove_geometry(cx, cy, cz, rho, zg, rc, rb, inner)
+    if hz.shape[2] >= HZ_N:  # computed by forces before the contacts, for all of them
+        g = HZ_GEO
+        dxw, dyw, dzw, cx, cy = hz[j, race, g], hz[j, race, g + 1], hz[j, race, g + 2], hz[j, race, g + 3], hz[j, race, g + 4]
+        rotated = hz[j, race, g + 5] != 0.0
+        delta, nlx, nly, nlz = hz[j, race, g + 6], hz[j, race, g + 7], hz[j, race, g + 8], hz[j, race, g + 9]
+        ca, sa, r_contact = hz[j, race, g + 10], hz[j, race, g + 11], hz[j, race, g + 12]
+    else:
+        (dxw, dyw, dzw, cx, cy, rotated, delta, nlx, nly, nlz, ca, sa,
+         r_contact) = _race_geometry(p, rings, xb, j, race)
     drop = 0.0
     if defect_path is not None:  # pruned at compile time when None
         if p[P_NDEF] > 0.0 and delta > 0.0:
@@ -566,8 +659,13 @@ def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist,
     # as the quasi-static solver's kinematics do (Harris & Kotzalas)
     ddot, sx, sy, sz, slip, u_r, mx, my, mz, lx, ly, lz, px, py, pz = _surface_kinematics(
         rings, race, xb, vb, wb, j, dxw, dyw, dzw, cx, cy, nx, ny, nz, rb if ellipse else rb - 0.5 * delta)
-    h, lam, regime, c_n, mu = _lubrication_ln_g(p, u_r, q_el, rx, kappa, major, c_hyst, ln_g,
-                                                hz[j, race, 4] if hz.shape[2] > 4 else -1.0)
+    if hz.shape[2] >= HZ_N and p[P_LUB] > 0.5 and p[P_LAW] < 0.5 and int(p[P_FILM]) == HAMROCK_DOWSON:
+        # the steady path of the default film: its logarithms and exponential from the contact's anchors
+        h = _film_hd_anchored(hz, j, race, u_r, q_el, rx, p[P_EPRIME], p[P_ETA], ln_g)
+        lam, regime, c_n, mu = _lubrication_film(p, h, major, c_hyst)
+    else:
+        h, lam, regime, c_n, mu = _lubrication_ln_g(p, u_r, q_el, rx, kappa, major, c_hyst, ln_g,
+                                                    hz[j, race, HZ_FILM_K] if hz.shape[2] > HZ_FILM_K else -1.0)
     f_n = q_el + c_n * ddot
     if f_n < 0.0:
         f_n = 0.0
@@ -815,6 +913,27 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb,
     hyst_sum = 0.0
     drag_sum = 0.0
     ln_g = math.log(p[P_XI] * p[P_EPRIME]) if p[P_LUB] > 0.5 else 0.0  # the film's ln G, a scene constant
+    if hz.shape[2] >= HZ_N:
+        # the geometry of every ball / raceway contact first: independent chains of square roots and
+        # divisions, which the processor overlaps in this short loop
+        for j in range(z):
+            for race in range(2):
+                (dxw, dyw, dzw, cx, cy, rotated, delta, nlx, nly, nlz, ca, sa,
+                 r_contact) = _race_geometry(p, rings, xb, j, race)
+                g = HZ_GEO
+                hz[j, race, g] = dxw
+                hz[j, race, g + 1] = dyw
+                hz[j, race, g + 2] = dzw
+                hz[j, race, g + 3] = cx
+                hz[j, race, g + 4] = cy
+                hz[j, race, g + 5] = 1.0 if rotated else 0.0
+                hz[j, race, g + 6] = delta
+                hz[j, race, g + 7] = nlx
+                hz[j, race, g + 8] = nly
+                hz[j, race, g + 9] = nlz
+                hz[j, race, g + 10] = ca
+                hz[j, race, g + 11] = sa
+                hz[j, race, g + 12] = r_contact
     for j in range(z):
         if defect_path is not None:
             if defects:

@@ -34,7 +34,7 @@ from ..data.traction import N_TRACTION_PARAMS
 __all__ = ["ParameterEntry", "PARAMETERS", "N_PARAMS", "RING_N", "DIAG_FIELDS", "DIAG_UNITS", "NDIAG",
            "GLOBAL_FIELDS", "GLOBAL_UNITS", "NGLOBAL", "FRIC_HISTORY", "FRIC_REGULARIZED", "FRIC_NONE",
            "LAW_HERTZ", "LAW_POWER", "describe_parameters", "MAX_DEFECTS", "DEFECT_FIELDS", "DEF_N",
-           "DEF_INNER", "DEF_OUTER", "DEF_BALL", "HIST_N", "SIGNAL_FIELDS", "SIGNAL_UNITS", "NSIGNAL"]
+           "DEF_INNER", "DEF_OUTER", "DEF_BALL", "HIST_N", "HZ_N", "SIGNAL_FIELDS", "SIGNAL_UNITS", "NSIGNAL"]
 
 
 class ParameterEntry(NamedTuple):
@@ -198,6 +198,22 @@ RING_N = 19
 #: is accepted by the kernel and then ignores ball defects.
 H_INNER, H_OUTER, H_E1, H_E2 = 0, 1, 2, 3
 HIST_N = 4
+
+# -- per-contact cache ---------------------------------------------------------
+#: Columns of the per-contact cache ``hz`` (Z, 2, HZ_N) of the contact kernel: the Hertz
+#: constants R_y/R_x, k, F, E and the HD film's ellipticity factor of the last re-evaluation
+#: (``HZ_RATIO`` ... ``HZ_FILM_K``), then three anchors of the film's transcendental functions
+#: (``model.contact._ln_anchored``, ``_exp_anchored``): 1/U_0 and ln U_0 of the dimensionless
+#: speed, 1/W_0 and ln W_0 of the load, E_0 and exp(E_0) of the HD film's exponent; from ``HZ_GEO``
+#: on the contact's geometry of the current evaluation, which ``model.contact.forces`` computes for all
+#: contacts before their forces (``model.contact._race_geometry``: the ball centre relative to the ring,
+#: world (3) and ring frame (2), the ring's rotated flag, the overlap, the local normal (3), cos and sin
+#: of the contact angle, the contact radius). All zero: nothing cached (every entry is re-evaluated
+#: at its first use); a cache of fewer than HZ_N columns (the Exudyn element's four) is valid and
+#: evaluates what it does not hold.
+HZ_RATIO, HZ_K, HZ_F, HZ_E, HZ_FILM_K, HZ_LN_U, HZ_LN_W, HZ_EXP, HZ_GEO = 0, 1, 2, 3, 4, 5, 7, 9, 11
+#: Width of the per-contact cache ``hz``.
+HZ_N = 24
 
 # -- diagnostics ---------------------------------------------------------------
 #: Fields of the per-contact diagnostics, in order.

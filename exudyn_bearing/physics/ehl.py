@@ -113,11 +113,31 @@ def film_hd_ln_g_k(u_r, load, r_x, factor_k, e_prime, eta, ln_g):
     """:func:`film_hd_ln_g` with its ellipticity factor given
     (:func:`film_hd_ellipticity_factor`), which the contact kernel keeps with
     the Hertz constants of a contact (a function of k only)."""
-    c = 1.0 / (e_prime * r_x)  # U = eta u_r c, W = Q E' c^2: one division, off the kernels' chain of u_r and Q
-    ln_u = np.log(np.maximum(eta * np.abs(u_r) * c, 1e-300))
-    ln_w = np.log(np.maximum(load, 1e-300) * (e_prime * c * c))
+    u, w = film_groups(u_r, load, r_x, e_prime, eta)
     on = (load > 0.0) * (u_r != 0.0)  # no load or no rolling: no film
-    return on * (3.63 * np.exp(0.68 * ln_u + 0.49 * ln_g - 0.073 * ln_w) * factor_k * r_x)
+    return on * film_hd_from_exponent(np.exp(film_hd_exponent(np.log(u), np.log(w), ln_g)), factor_k, r_x)
+
+
+def film_groups(u_r, load, r_x, e_prime, eta):
+    """The dimensionless speed U = eta |u_r| / (E' R_x) and load W = Q / (E' R_x^2) of the film relations,
+    each at least 1e-300 (their logarithms stay finite; the relations switch the film off at zero speed
+    or load)."""
+    c = 1.0 / (e_prime * r_x)  # U = eta u_r c, W = Q E' c^2: one division, off the kernels' chain of u_r and Q
+    return np.maximum(eta * np.abs(u_r) * c, 1e-300), np.maximum(load, 1e-300) * (e_prime * c * c)
+
+
+def film_hd_exponent(ln_u, ln_w, ln_g):
+    """The exponent E = 0.68 ln U + 0.49 ln G - 0.073 ln W of :func:`film_thickness_hamrock_dowson`
+    (h_min = 3.63 exp(E) (1 - exp(-0.68 k)) R_x) from the logarithms of the groups [-]."""
+    return 0.68 * ln_u + 0.49 * ln_g - 0.073 * ln_w
+
+
+def film_hd_from_exponent(exp_e, factor_k, r_x):
+    """h_min = 3.63 exp(E) (1 - exp(-0.68 k)) R_x [m] of :func:`film_thickness_hamrock_dowson` from
+    exp(E) (:func:`film_hd_exponent`), the ellipticity factor (:func:`film_hd_ellipticity_factor`)
+    and R_x; the contact kernel evaluates exp(E) and the logarithms from per-contact anchors
+    (``model.contact._exp_anchored``)."""
+    return 3.63 * exp_e * factor_k * r_x
 
 
 def film_thickness_masjedi_khonsari(u_r, load, r_x, kappa, e_prime, eta, xi):
@@ -194,7 +214,19 @@ def film_thickness_central_hamrock_dowson(u_r, load, r_x, kappa, e_prime, eta, x
 
 
 _film_central_hd = kernel(film_thickness_central_hamrock_dowson)
-_film_hd_ln_g_k = kernel(film_hd_ln_g_k)
+_film_groups = kernel(film_groups)
+_film_hd_exponent = kernel(film_hd_exponent)
+_film_hd_from_exponent = kernel(film_hd_from_exponent)
+
+
+@kernel
+def _film_hd_ln_g_k(u_r, load, r_x, factor_k, e_prime, eta, ln_g):
+    """Kernel of :func:`film_hd_ln_g_k` (from the kernels of its parts)."""
+    u, w = _film_groups(u_r, load, r_x, e_prime, eta)
+    on = (load > 0.0) * (u_r != 0.0)
+    return on * _film_hd_from_exponent(np.exp(_film_hd_exponent(np.log(u), np.log(w), ln_g)), factor_k, r_x)
+
+
 _film_hd_ellipticity_factor = kernel(film_hd_ellipticity_factor)
 
 
