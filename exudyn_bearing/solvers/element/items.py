@@ -8,6 +8,7 @@ import math
 import numpy as np
 
 from ...model import layout as L
+from ...model.contact import HZ_N
 from ...model.motion import ring_poses
 from . import kernels as EK
 from .markers import initial_ring_pose
@@ -78,7 +79,9 @@ class ItemsMixin:
         # runs: [the Exudyn solver object of the current SolveDynamic, time of its first evaluation (inf: none)]
         self._run = [None, math.inf]
         self._sys = mbs.sys  # Exudyn keeps the running solver and its settings here (storeSolver=True)
-        self._hz = np.zeros((z, 2, 4))
+        # the Hertz cache with the HD film's ellipticity factor, as the reference engine's (without that column
+        # the contact kernel computes the factor at every evaluation)
+        self._hz = np.zeros((z, 2, HZ_N))
         self._work = np.zeros((8, z, 3))  # xb, vb, wb, xc, vc, fb, tb, fc
         if fast:  # the balls live here, not in Exudyn
             self._work[0], self._work[1], self._work[2] = xb, vb, wb
