@@ -15,6 +15,8 @@ from __future__ import annotations
 import math
 
 import numpy as np
+from numba.core import types
+from numba.experimental import structref
 
 from ..._jit import kernel
 from ...model.contact import accumulate_energy, forces
@@ -131,9 +133,54 @@ def ring_pose(kind, rq, rqt, local, fixed, spin, angle, rings, r):
 RD_OFF, RD_LOCAL, RD_FIXED, RD_SPIN, RD_ANGLE, RD_N = 0, 1, 4, 16, 17, 18
 
 
+@structref.register
+class ElementStateType(types.StructRef):
+    """numba type of :class:`ElementState`."""
+
+    def preprocess_fields(self, fields):
+        return tuple((name, types.unliteral(typ)) for name, typ in fields)
+
+
+class ElementState(structref.StructRefProxy):
+    """The arrays of one bearing element the compiled user-function calls
+    work on (:data:`STATE_FIELDS`), held in one numba structure that the
+    element's Python arrays share their memory with: a compiled call takes it
+    as one argument, where the 20-odd separate arrays cost numba's entry point
+    about 0.06 us each to unbox (validation/profile_element.py). Built by
+    :func:`element_state` (compiled and cached: constructing it from Python
+    would compile numba's constructor in every process)."""
+
+
+#: Fields of :class:`ElementState`: the system ODE2 index of each object
+#: coordinate and the object's coordinates gathered from the system (body
+#: mode), the reference coordinates, parameters, Hertz table, ring couplings
+#: (kinds, data rows), committed and trial contact history, Hertz cache, ball
+#: work rows, ring poses (the fast mode's at the last sub-step and at its end
+#: too), ring reactions, diagnostics, generalized forces ``out`` and those the
+#: body mode's user function returns (``out_uf``, indices ``uf_index``), and
+#: the body mode's clock (``CLK_*``).
+STATE_FIELDS = ("index", "q", "q_t", "ref", "p", "table", "ring_kind", "ring_data", "hist", "hist_trial", "hz", "work",
+                "rings", "rings0", "rings_sub", "fr", "glob", "diag", "cage_load", "out", "uf_index", "out_uf", "clock")
+structref.define_proxy(ElementState, ElementStateType, list(STATE_FIELDS))
+
+#: Entries of the body mode's clock (``ElementState.clock``): the latest
+#: evaluated time (-inf: none yet), the last committed time (its Cundall-Strack
+#: history is ``hist``), the last time whose powers entered the energy
+#: integrals, the next sample time, and whether the last evaluation sampled.
+CLK_TRIAL, CLK_COMMIT, CLK_ENERGY, CLK_NEXT_SAMPLE, CLK_WANT, CLK_N = 0, 1, 2, 3, 4, 5
+
+
+@kernel
+def element_state(index, q, q_t, ref, p, table, ring_kind, ring_data, hist, hist_trial, hz, work, rings, rings0,
+                  rings_sub, fr, glob, diag, cage_load, out, uf_index, out_uf, clock):
+    """An :class:`ElementState` of these arrays (fields :data:`STATE_FIELDS`; it shares their memory)."""
+    return ElementState(index, q, q_t, ref, p, table, ring_kind, ring_data, hist, hist_trial, hz, work, rings, rings0,
+                        rings_sub, fr, glob, diag, cage_load, out, uf_index, out_uf, clock)
+
+
 @kernel
 def element_rhs(q, q_t, ref, p, table, z, n_cage, ring_kind, ring_data, hist, hist_out, dt_hist, hz, work,
-                rings, fr, glob, diag, cage_load, want, out):
+                rings, fr, glob, diag, cage_load, want, out, defect_path=True, ellipse_path=True, loss_path=True):
     """Generalized forces ``out`` of the bearing object for q, q_t.
 
     The object's coordinates are those of the balls, the cage balls and then
@@ -142,6 +189,9 @@ def element_rhs(q, q_t, ref, p, table, z, n_cage, ring_kind, ring_data, hist, hi
     the position coordinates, G^T times the torque about the node point on
     Tait-Bryan rotation coordinates. ``work`` (8, >= Z, 3) is scratch space
     for ball and cage states and forces. Returns the largest overlap / R_b.
+    ``defect_path``, ``ellipse_path``, ``loss_path``: what of the contact
+    kernel is compiled (:func:`~exudyn_bearing.model.contact.forces`; the
+    element passes the scene's, as the reference engine does).
     """
     xb = work[0, :z]
     vb = work[1, :z]
@@ -164,7 +214,7 @@ def element_rhs(q, q_t, ref, p, table, z, n_cage, ring_kind, ring_data, hist, hi
             vc[k, d] = q_t[b + d]
     ring_poses_from(q, q_t, ref, ring_kind, ring_data, rings)
     worst = forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb, tb, fc, fr, glob,
-                   diag, cage_load, want)
+                   diag, cage_load, want, defect_path, ellipse_path, loss_path)
     out[:] = 0.0
     for j in range(z):
         for d in range(3):
@@ -179,7 +229,8 @@ def element_rhs(q, q_t, ref, p, table, z, n_cage, ring_kind, ring_data, hist, hi
 
 @kernel
 def body_rhs(qs, qs_t, index, q, q_t, ref, p, table, z, n_cage, ring_kind, ring_data, hist, hist_out, dt_hist, hz,
-             work, rings, fr, glob, diag, cage_load, want, dt_energy, out):
+             work, rings, fr, glob, diag, cage_load, want, dt_energy, out, defect_path=True, ellipse_path=True,
+             loss_path=True):
     """Body mode, one force evaluation in one compiled call: the object-layout
     coordinates ``q``, ``q_t`` gathered from the system's ODE2 coordinates
     ``qs``, ``qs_t`` (``index``: their system index), :func:`element_rhs`
@@ -190,9 +241,49 @@ def body_rhs(qs, qs_t, index, q, q_t, ref, p, table, z, n_cage, ring_kind, ring_
         q[i] = qs[index[i]]
         q_t[i] = qs_t[index[i]]
     worst = element_rhs(q, q_t, ref, p, table, z, n_cage, ring_kind, ring_data, hist, hist_out, dt_hist, hz, work,
-                        rings, fr, glob, diag, cage_load, want, out)
+                        rings, fr, glob, diag, cage_load, want, out, defect_path, ellipse_path, loss_path)
     if dt_energy > 0.0:
         accumulate_energy(glob, dt_energy)
+    return worst
+
+
+@kernel
+def body_step(qs, qs_t, st, t, n_cage, defect_path=True, ellipse_path=True, loss_path=True):
+    """Body mode, one force evaluation at t in one compiled call on the
+    element's state ``st`` (:class:`ElementState`) and the system's ODE2
+    coordinates ``qs``, ``qs_t``: the Cundall-Strack history committed when
+    time advances past the last evaluated time (the trial state of that
+    evaluation becomes the committed one), whether to sample (t at or past
+    the next sample time, ``clock[CLK_WANT]``), :func:`body_rhs`, the energy
+    integrals over the time since the last evaluation that advanced, and the
+    forces the user function returns into ``out_uf``. ``n_cage``: cage balls
+    (0 without cage). Returns the largest overlap / R_b."""
+    clock = st.clock
+    hist = st.hist
+    hist_trial = st.hist_trial
+    t_trial = clock[CLK_TRIAL]
+    if t > t_trial:
+        if t_trial > -math.inf:
+            for j in range(hist.shape[0]):
+                for k in range(hist.shape[1]):
+                    for d in range(hist.shape[2]):
+                        hist[j, k, d] = hist_trial[j, k, d]
+            clock[CLK_COMMIT] = t_trial
+        clock[CLK_TRIAL] = t
+    want = t >= clock[CLK_NEXT_SAMPLE] - 1e-12
+    t_energy = clock[CLK_ENERGY]
+    dt_energy = t - t_energy if t > t_energy else 0.0
+    worst = body_rhs(qs, qs_t, st.index, st.q, st.q_t, st.ref, st.p, st.table, hist.shape[0], n_cage, st.ring_kind,
+                     st.ring_data, hist, hist_trial, t - clock[CLK_COMMIT], st.hz, st.work, st.rings, st.fr, st.glob,
+                     st.diag, st.cage_load, want, dt_energy, st.out, defect_path, ellipse_path, loss_path)
+    if dt_energy > 0.0:
+        clock[CLK_ENERGY] = t
+    clock[CLK_WANT] = 1.0 if want else 0.0
+    out = st.out
+    out_uf = st.out_uf
+    uf_index = st.uf_index
+    for i in range(uf_index.shape[0]):
+        out_uf[i] = out[uf_index[i]]
     return worst
 
 
@@ -246,7 +337,7 @@ def ring_poses_from(q, q_t, ref, ring_kind, ring_data, rings):
 
 @kernel
 def advance_balls(n_sub, tau, t, t_end, p, table, work, rings0, rings1, rings, hist, hz, fr, glob, diag, cage_load,
-                  want):
+                  want, defect_path=True, ellipse_path=True, loss_path=True):
     """Fast mode: integrate balls and cage balls in ``n_sub`` velocity-Verlet
     sub-steps from their last force evaluation at ``tau`` to ``t_end``.
 
@@ -303,7 +394,7 @@ def advance_balls(n_sub, tau, t, t_end, p, table, work, rings0, rings1, rings, h
                 rings[r, R_ANGLE] = rings1[r, R_ANGLE] + (s - t) * (
                     rings1[r, 8] * rings1[r, 15] + rings1[r, 11] * rings1[r, 16] + rings1[r, 14] * rings1[r, 17])
         w = forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist, dt, hz, fb, tb, fc, fr, glob, diag,
-                   cage_load, want and i == n_sub - 1)
+                   cage_load, want and i == n_sub - 1, defect_path, ellipse_path, loss_path)
         accumulate_energy(glob, dt)
         if w > worst or w != w:  # a NaN state is the worst (and stays it): the element stops on it
             worst = w
@@ -320,20 +411,24 @@ def advance_balls(n_sub, tau, t, t_end, p, table, work, rings0, rings1, rings, h
 
 
 @kernel
-def fast_step(q, q_t, ref, p, table, ring_kind, ring_data, n_sub, tau, t, t_end, work, rings0, rings, rings_sub,
-              hist, hz, fr, glob, diag, cage_load, want, out):
-    """Fast mode, one Exudyn evaluation in one compiled call: ring poses from
-    the object coordinates, ``n_sub`` ball sub-steps from ``tau`` to ``t_end``
+def fast_step(q, q_t, st, n_sub, tau, t, t_end, want, defect_path=True, ellipse_path=True, loss_path=True):
+    """Fast mode, one Exudyn evaluation in one compiled call on the element's
+    state ``st`` (:class:`ElementState`): ring poses from the object
+    coordinates, ``n_sub`` ball sub-steps from ``tau`` to ``t_end``
     (:func:`advance_balls`; none when ``n_sub`` is 0), the mean ring
     reactions ``fr`` as generalized forces ``out``. Returns the largest
     overlap / R_b."""
-    ring_poses_from(q, q_t, ref, ring_kind, ring_data, rings)
+    ref = st.ref
+    rings = st.rings
+    fr = st.fr
+    out = st.out
+    ring_poses_from(q, q_t, ref, st.ring_kind, st.ring_data, rings)
     worst = 0.0
     if n_sub > 0:
-        worst = advance_balls(n_sub, tau, t, t_end, p, table, work, rings0, rings, rings_sub, hist, hz, fr, glob,
-                              diag, cage_load, want)
+        worst = advance_balls(n_sub, tau, t, t_end, st.p, st.table, st.work, st.rings0, rings, st.rings_sub, st.hist,
+                              st.hz, fr, st.glob, st.diag, st.cage_load, want, defect_path, ellipse_path, loss_path)
     out[:] = 0.0
-    ring_generalized_forces(q, ref, ring_kind, ring_data, rings, fr, out)
+    ring_generalized_forces(q, ref, st.ring_kind, st.ring_data, rings, fr, out)
     return worst
 
 
