@@ -74,12 +74,12 @@ def _g_xyz(a0, a1):
             0.0, s0, c0 * c1)
 
 
-@kernel
+@kernel(no_runtime=True)
 def ring_pose(kind, rq, rqt, local, fixed, spin, angle, rings, r):
     """Row r of ``rings`` (centre, velocity, rotation matrix, angular velocity,
     spin angle beyond the matrix).
 
-    ``rq``, ``rqt`` (6,): total coordinates and velocities of the ring node
+    ``rq``, ``rqt`` (6 values): total coordinates and velocities of the ring node
     (position, Tait-Bryan angles; point nodes use the first three);
     ``local`` (3,): ring centre in the body frame (rigid nodes); ``fixed``
     (12,): position (fixed ring) or offset (point ring) and rotation matrix
@@ -178,7 +178,7 @@ def element_state(index, q, q_t, ref, p, table, ring_kind, ring_data, hist, hist
                         rings_sub, fr, glob, diag, cage_load, out, uf_index, out_uf, clock)
 
 
-@kernel
+@kernel(no_runtime=True)
 def element_rhs(q, q_t, ref, p, table, z, n_cage, ring_kind, ring_data, hist, hist_out, dt_hist, hz, work,
                 rings, fr, glob, diag, cage_load, want, out, defect_path=True, ellipse_path=True, loss_path=True):
     """Generalized forces ``out`` of the bearing object for q, q_t.
@@ -227,7 +227,7 @@ def element_rhs(q, q_t, ref, p, table, z, n_cage, ring_kind, ring_data, hist, hi
     return worst
 
 
-@kernel
+@kernel(no_runtime=True)
 def body_rhs(qs, qs_t, index, q, q_t, ref, p, table, z, n_cage, ring_kind, ring_data, hist, hist_out, dt_hist, hz,
              work, rings, fr, glob, diag, cage_load, want, dt_energy, out, defect_path=True, ellipse_path=True,
              loss_path=True):
@@ -287,7 +287,7 @@ def body_step(qs, qs_t, st, t, n_cage, defect_path=True, ellipse_path=True, loss
     return worst
 
 
-@kernel
+@kernel(no_runtime=True)
 def ring_generalized_forces(q, ref, ring_kind, ring_data, rings, fr, out):
     """Ring reactions ``fr`` (force, torque about the ring centre) as generalized
     forces of the ring-node coordinates in ``out``: the force on the position
@@ -319,20 +319,24 @@ def ring_generalized_forces(q, ref, ring_kind, ring_data, rings, fr, out):
             out[off + 5] += g[2] * t0 + g[5] * t1 + g[8] * t2
 
 
-@kernel
+@kernel(no_runtime=True)
 def ring_poses_from(q, q_t, ref, ring_kind, ring_data, rings):
-    """Both ring poses from the object coordinates (see :func:`ring_pose`)."""
-    rq = np.zeros(6)
-    rqt = np.zeros(6)
+    """Both ring poses from the object coordinates (see :func:`ring_pose`; the
+    node's coordinates as tuples, 0 beyond a point node's three: nothing to
+    allocate)."""
     for r in range(2):
         off = int(ring_data[r, RD_OFF])
-        n_r = 3 if ring_kind[r] == RING_POINT else 6
+        x0 = x1 = x2 = x3 = x4 = x5 = 0.0
+        v0 = v1 = v2 = v3 = v4 = v5 = 0.0
         if off >= 0:
-            for d in range(n_r):
-                rq[d] = ref[off + d] + q[off + d]
-                rqt[d] = q_t[off + d]
-        ring_pose(ring_kind[r], rq, rqt, ring_data[r, RD_LOCAL:RD_LOCAL + 3],
-                  ring_data[r, RD_FIXED:RD_FIXED + 12], ring_data[r, RD_SPIN], ring_data[r, RD_ANGLE], rings, r)
+            x0, x1, x2 = ref[off] + q[off], ref[off + 1] + q[off + 1], ref[off + 2] + q[off + 2]
+            v0, v1, v2 = q_t[off], q_t[off + 1], q_t[off + 2]
+            if ring_kind[r] != RING_POINT:
+                x3, x4, x5 = ref[off + 3] + q[off + 3], ref[off + 4] + q[off + 4], ref[off + 5] + q[off + 5]
+                v3, v4, v5 = q_t[off + 3], q_t[off + 4], q_t[off + 5]
+        ring_pose(ring_kind[r], (x0, x1, x2, x3, x4, x5), (v0, v1, v2, v3, v4, v5),
+                  ring_data[r, RD_LOCAL:RD_LOCAL + 3], ring_data[r, RD_FIXED:RD_FIXED + 12], ring_data[r, RD_SPIN],
+                  ring_data[r, RD_ANGLE], rings, r)
 
 
 @kernel
