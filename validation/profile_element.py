@@ -111,7 +111,9 @@ def wrapper_parts(el, number=20000):
     (SetObjectParameter), converting the returned forces to a list, the prescribed ring speed functions,
     and numba's entry point unboxing the compiled call's arguments (a compiled function that does nothing,
     with the arguments of kernels.body_step: the element's state as one structure, and for comparison with
-    the 25 separate arrays and scalars kernels.body_rhs takes)."""
+    the 25 separate arrays and scalars the user function passed before kernels.ElementState, into a
+    function compiled with numba's memory runtime as that call was: the runtime's reference counting of
+    every array argument is most of its cost)."""
     import numba
 
     from exudyn_bearing.solvers.element.userfunctions import _entry_point
@@ -126,11 +128,16 @@ def wrapper_parts(el, number=20000):
               el._fr, el._glob, el._diag, el._cage_load, False, 0.0, el._out)
 
     @numba.njit
-    def nothing(*a):
+    def nothing(qs, qs_t, st, t, n_cage, defect_path, ellipse_path, loss_path):
+        return 0.0
+
+    @numba.njit
+    def nothing25(qs, qs_t, index, q, q_t, ref, p, table, z, n_cage, ring_kind, ring_data, hist, hist_out, dt_hist,
+                  hz, work, rings, fr, glob, diag, cage_load, want, dt_energy, out):
         return 0.0
 
     unbox = _entry_point(nothing, args)
-    unbox25 = _entry_point(nothing, args25)
+    unbox25 = _entry_point(nothing25, args25)
     return {"get_coordinates": _best(lambda: (sd.GetODE2Coordinates(), sd.GetODE2Coordinates_t()), number),
             "set_force_vector": _best(lambda: mbs.SetObjectParameter(ball, "forceVector", out_balls), number),
             "return_list": _best(out_uf.tolist, number),

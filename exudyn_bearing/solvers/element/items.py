@@ -120,7 +120,7 @@ class ItemsMixin:
             self._sys_index, np.zeros(self._sys_index.size), np.zeros(self._sys_index.size), self.ref, self.params,
             self.table, self._ring_kind, self._ring_data, self._hist, self._hist_trial, self._hz, self._work,
             self._rings, self._rings0 if fast else ring_poses(), self._rings_sub if fast else ring_poses(), self._fr,
-            self._glob, self._diag, self._cage_load, self._out, self._out_uf_index, self._out_uf, self._times)
+            np.zeros((2, 6)), self._glob, self._diag, self._cage_load, self._out, self._out_uf_index, self._out_uf, self._times)
         if fast:
             self._force_uf_fast = self._make_fast_uf()
             obj = mbs.AddObject(ObjectGenericODE2(nodeNumbers=ring_nodes, massMatrix=np.diag(mass),

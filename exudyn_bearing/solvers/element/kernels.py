@@ -156,11 +156,12 @@ class ElementState(structref.StructRefProxy):
 #: mode), the reference coordinates, parameters, Hertz table, ring couplings
 #: (kinds, data rows), committed and trial contact history, Hertz cache, ball
 #: work rows, ring poses (the fast mode's at the last sub-step and at its end
-#: too), ring reactions, diagnostics, generalized forces ``out`` and those the
+#: too), ring reactions (and the fast mode's sums of them over its sub-steps), diagnostics, generalized forces ``out`` and those the
 #: body mode's user function returns (``out_uf``, indices ``uf_index``), and
 #: the body mode's clock (``CLK_*``).
 STATE_FIELDS = ("index", "q", "q_t", "ref", "p", "table", "ring_kind", "ring_data", "hist", "hist_trial", "hz", "work",
-                "rings", "rings0", "rings_sub", "fr", "glob", "diag", "cage_load", "out", "uf_index", "out_uf", "clock")
+                "rings", "rings0", "rings_sub", "fr", "fsum", "glob", "diag", "cage_load", "out", "uf_index", "out_uf",
+                "clock")
 structref.define_proxy(ElementState, ElementStateType, list(STATE_FIELDS))
 
 #: Entries of the body mode's clock (``ElementState.clock``): the latest
@@ -172,10 +173,10 @@ CLK_TRIAL, CLK_COMMIT, CLK_ENERGY, CLK_NEXT_SAMPLE, CLK_WANT, CLK_N = 0, 1, 2, 3
 
 @kernel
 def element_state(index, q, q_t, ref, p, table, ring_kind, ring_data, hist, hist_trial, hz, work, rings, rings0,
-                  rings_sub, fr, glob, diag, cage_load, out, uf_index, out_uf, clock):
+                  rings_sub, fr, fsum, glob, diag, cage_load, out, uf_index, out_uf, clock):
     """An :class:`ElementState` of these arrays (fields :data:`STATE_FIELDS`; it shares their memory)."""
     return ElementState(index, q, q_t, ref, p, table, ring_kind, ring_data, hist, hist_trial, hz, work, rings, rings0,
-                        rings_sub, fr, glob, diag, cage_load, out, uf_index, out_uf, clock)
+                        rings_sub, fr, fsum, glob, diag, cage_load, out, uf_index, out_uf, clock)
 
 
 @kernel(no_runtime=True)
@@ -339,9 +340,9 @@ def ring_poses_from(q, q_t, ref, ring_kind, ring_data, rings):
                   ring_data[r, RD_ANGLE], rings, r)
 
 
-@kernel
-def advance_balls(n_sub, tau, t, t_end, p, table, work, rings0, rings1, rings, hist, hz, fr, glob, diag, cage_load,
-                  want, defect_path=True, ellipse_path=True, loss_path=True):
+@kernel(no_runtime=True)
+def advance_balls(n_sub, tau, t, t_end, p, table, work, rings0, rings1, rings, hist, hz, fr, fsum, glob, diag,
+                  cage_load, want, defect_path=True, ellipse_path=True, loss_path=True):
     """Fast mode: integrate balls and cage balls in ``n_sub`` velocity-Verlet
     sub-steps from their last force evaluation at ``tau`` to ``t_end``.
 
@@ -351,7 +352,8 @@ def advance_balls(n_sub, tau, t, t_end, p, table, work, rings0, rings1, rings, h
     rotation and angular velocity those of ``rings1``). ``work`` holds the
     ball state and the forces of the last evaluation on entry and exit.
 
-    ``fr`` returns the mean ring reaction over the sub-step evaluations: with
+    ``fr`` returns the mean ring reaction over the sub-step evaluations (their sum
+    in ``fsum``, (2, 6) scratch: nothing allocated here): with
     the windows centred on the Exudyn times (``t_end = t + (H - dt) / 2``),
     the impulse Exudyn's velocity-Verlet step gives the ring, ``H fr``, is
     the sum of the sub-step impulses the balls received (momentum exchange
@@ -375,7 +377,9 @@ def advance_balls(n_sub, tau, t, t_end, p, table, work, rings0, rings1, rings, h
     dt = (t_end - tau) / n_sub
     h = 0.5 * dt
     worst = 0.0
-    fsum = np.zeros((2, 6))
+    for r in range(2):
+        for k in range(6):
+            fsum[r, k] = 0.0
     span = t - tau
     for r in range(2):  # velocities, rotation and angular velocity: those at t throughout
         for k in range(3, RING_N):
@@ -430,7 +434,8 @@ def fast_step(q, q_t, st, n_sub, tau, t, t_end, want, defect_path=True, ellipse_
     worst = 0.0
     if n_sub > 0:
         worst = advance_balls(n_sub, tau, t, t_end, st.p, st.table, st.work, st.rings0, rings, st.rings_sub, st.hist,
-                              st.hz, fr, st.glob, st.diag, st.cage_load, want, defect_path, ellipse_path, loss_path)
+                              st.hz, fr, st.fsum, st.glob, st.diag, st.cage_load, want, defect_path, ellipse_path,
+                              loss_path)
     out[:] = 0.0
     ring_generalized_forces(q, ref, st.ring_kind, st.ring_data, rings, fr, out)
     return worst
