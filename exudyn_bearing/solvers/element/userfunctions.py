@@ -160,8 +160,8 @@ class UserFunctionsMixin:
         run[0] = self._sys.get("dynamicSolver")
         settings = self._sys.get("simulationSettings")
         if self.mode != "fast":
-            self._sysdata = self.mbs.systemData
             self._sys_index[:] = self._system_index()
+            self._take_coordinates()
             err = body_settings_error(run[0], settings)
             if err is not None:
                 raise err
@@ -221,6 +221,23 @@ class UserFunctionsMixin:
         if self._sys.get("dynamicSolver") is not self._run[0] or t <= self._run[1] + _T_EPS:
             self._new_run(t, self._clock[0] if self.mode == "fast" else self._t_trial)
 
+    def _take_coordinates(self):
+        """The body mode's views of the system's current ODE2 coordinates and velocities
+        (``GetODE2Coordinates(copy=False)``: Exudyn's own vectors, no copy), taken at each run's start and kept
+        in ``_coordinates`` [coordinates, velocities, system index of the first ball's first coordinate].
+
+        Exudyn allocates these vectors when it assembles and initializes a solve and writes every state of the
+        run into them in place: a view taken at the run's first evaluation shows the state of each later one
+        (checked at every evaluation of VelocityVerlet, RK44, RK67, ODE23, DOPRI5, GeneralizedAlpha with its
+        numerical Jacobian and TrapezoidalIndex2 runs: equal to the copy, the same memory throughout;
+        tests/test_element_state.py checks VelocityVerlet and GeneralizedAlpha). It replaces two copying calls
+        per evaluation. The views do not keep the
+        vectors alive, so the user function compares the first ball's first coordinate Exudyn hands it with
+        the view's at every evaluation and takes them anew when they differ."""
+        sd = self.mbs.systemData
+        cell = self.__dict__.setdefault("_coordinates", [None, None, 0])
+        cell[:] = [sd.GetODE2Coordinates(copy=False), sd.GetODE2Coordinates_t(copy=False), int(self._sys_index[0])]
+
     def _system_index(self):
         """System ODE2 index of each object-layout coordinate (after ``mbs.Assemble``)."""
         mbs = self.mbs
@@ -237,7 +254,8 @@ class UserFunctionsMixin:
         per coordinate), returns the first ball's and the rings' and writes
         the other balls' into the force vector of the ball object. The
         system index of each coordinate is set at each run's start
-        (:meth:`_new_run`). The Cundall-Strack commit, the sample and energy
+        (:meth:`_new_run`), and so are the views of the system's coordinate
+        vectors it reads (:meth:`_take_coordinates`). The Cundall-Strack commit, the sample and energy
         clocks and the gathering of the returned forces run in the compiled
         call, which takes the element's arrays as one structure
         (:class:`~.kernels.ElementState`); bound locals instead of attribute
@@ -253,6 +271,8 @@ class UserFunctionsMixin:
         want_at = EK.CLK_WANT
         perf_counter = time.perf_counter
         step = _entry_point(EK.body_step, (self._out, self._out, st, 0.0, n_cage, *paths))
+        take_coordinates = self._take_coordinates
+        coordinates = self.__dict__.setdefault("_coordinates", [None, None, 0])  # set at each run's start
 
         def force_uf(mbs, t, itemNumber, q_object, q_t_object):
             t0 = perf_counter()
@@ -262,8 +282,11 @@ class UserFunctionsMixin:
                 rdata[r, spin] = f(t)
             if spin_angles is not None:
                 spin_angles(t)
-            sd = self._sysdata
-            worst = step(sd.GetODE2Coordinates(), sd.GetODE2Coordinates_t(), st, t, n_cage, *paths)
+            qs, qs_t, first = coordinates
+            if qs[first] != q_object[0]:  # not Exudyn's current vectors (never seen within a run): take them anew
+                take_coordinates()
+                qs, qs_t, first = coordinates
+            worst = step(qs, qs_t, st, t, n_cage, *paths)
             mbs.SetObjectParameter(self._ball_object, "forceVector", out_balls)
             # _after_advance, its checks inline (this runs at every evaluation)
             if not worst <= max_overlap:  # also catches NaN

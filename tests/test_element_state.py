@@ -1,0 +1,79 @@
+"""Exudyn bearing element, body mode: the views of Exudyn's coordinate vectors its user function reads."""
+import warnings
+
+import numpy as np
+import pytest
+
+exu = pytest.importorskip("exudyn")
+
+import exudyn_bearing as eb  # noqa: E402
+from exudyn_bearing.solvers.element.engine import ExudynEngine, solve_dynamic  # noqa: E402
+
+SCENE = dict(Fr=3000.0, omega=500.0, sample_dt=1e-4, t_end=1e-4, dt=5e-6)
+
+
+def _engine():
+    return ExudynEngine("6208", eb.Scenario(**SCENE))
+
+
+def _spy(el, check):
+    """Wrap the element's user function: ``check(t)`` before each evaluation; returns the evaluation count."""
+    inner = el._force_uf
+    count = [0]
+
+    def uf(mbs, t, i, q, q_t):
+        check(t)
+        count[0] += 1
+        return inner(mbs, t, i, q, q_t)
+
+    el.mbs.SetObjectParameter(el.items["object"], "forceUserFunction", uf)
+    return count
+
+
+@pytest.mark.parametrize("solver, end, step", [("VelocityVerlet", 1e-4, None),
+                                                 # its numerical Jacobian perturbs every system coordinate
+                                                 ("GeneralizedAlpha", 3e-5, 1e-5)])
+def test_coordinate_views_show_every_evaluated_state(solver, end, step):
+    # the user function reads views of Exudyn's coordinate vectors taken at the run's start
+    # (GetODE2Coordinates(copy=False)); they must hold, at each evaluation, exactly what Exudyn's
+    # copying call returns then, with the Jacobian's perturbed states of the implicit solver included
+    eng = _engine()
+    el = eng.element
+    sd = eng.mbs.systemData
+    seen = []
+
+    def check(t):
+        if el.__dict__.get("_coordinates", [None])[0] is None:
+            return  # the first evaluation takes the views
+        qs, qs_t, _first = el._coordinates
+        seen.append(np.array_equal(qs, sd.GetODE2Coordinates())
+                    and np.array_equal(qs_t, sd.GetODE2Coordinates_t()))
+
+    count = _spy(el, check)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        ss = el.SimulationSettings(end, step, solverType=solver)
+        solve_dynamic(eng.mbs, ss)
+    assert count[0] > 5 and len(seen) >= count[0] - 1
+    assert all(seen)
+
+
+def test_stale_coordinate_views_are_taken_anew():
+    # a view that no longer shows Exudyn's current vector (here a frozen copy put in its place halfway)
+    # is noticed at the next evaluation and replaced: the run ends bitwise as an undisturbed one; with
+    # the frozen copy used, the balls would feel the forces of a state Exudyn has left
+    base = _engine().run()
+    eng = _engine()
+    el = eng.element
+    calls = [0]
+
+    def check(t):
+        calls[0] += 1
+        if calls[0] == 10:
+            el._coordinates[0] = el._coordinates[0].copy()
+
+    _spy(el, check)
+    rec = eng.run()
+    assert calls[0] > 10
+    for key, value in base.data.items():
+        np.testing.assert_array_equal(rec.data[key], value, err_msg=key)
