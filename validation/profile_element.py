@@ -12,7 +12,8 @@ Per Exudyn step (VelocityVerlet, the body mode's solver), medians of
   ``kernels.body_step`` through numba's entry point, on the element's state
   at the end of a run, timed with ``timeit``);
 * the parts of the Python wrapper, each timed alone at the end of a run
-  (``wrapper_parts``): reading the system's coordinates, handing the other
+  (``wrapper_parts``): copying the system's coordinates (replaced by
+  views), handing the other
   balls' forces to their object, converting the returned forces, the ring
   speed functions, numba's unboxing of the compiled call's arguments (part
   of the kernel's time; also for the 25 separate arguments the call took
@@ -106,8 +107,9 @@ def _best(fn, number):
 
 def wrapper_parts(el, number=20000):
     """Seconds per call of the parts of the body mode's user function outside the compiled physics, each
-    timed alone (timeit, best of 5) on the element at the end of a run: reading the system's coordinates
-    and velocities (two GetODE2Coordinates calls), handing the other balls' forces to their object
+    timed alone (timeit, best of 5) on the element at the end of a run: reading copies of the system's
+    coordinates and velocities (two GetODE2Coordinates calls, which the user function no longer makes: it
+    reads views of Exudyn's vectors taken at the run's start), handing the other balls' forces to their object
     (SetObjectParameter), converting the returned forces to a list, the prescribed ring speed functions,
     and numba's entry point unboxing the compiled call's arguments (a compiled function that does nothing,
     with the arguments of kernels.body_step: the element's state as one structure, and for comparison with
@@ -183,14 +185,15 @@ def main(argv=None):
     print(f"  compiled kernel alone                   {f['kernel'] * us:7.2f}")
     print(f"  Python wrapper (UF - kernel)            {(f['uf'] - f['kernel'] * f['evaluations']) * us:7.2f}")
     print("  its parts, each timed alone at the run's end:")
-    print(f"    two GetODE2Coordinates calls          {f['get_coordinates'] * us:7.2f}")
+    print(f"    two GetODE2Coordinates calls          {f['get_coordinates'] * us:7.2f}   (not made: the user function "
+          "reads views taken at the run's start)")
     print(f"    SetObjectParameter(forceVector)       {f['set_force_vector'] * us:7.2f}")
     print(f"    returned forces to a list             {f['return_list'] * us:7.2f}")
     print(f"    ring speed functions                  {f['speed_functions'] * us:7.2f}")
     print(f"    entry point, unboxing the arguments   {f['unbox_state'] * us:7.2f}   (25 separate ones: "
           f"{f['unbox_25'] * us:.2f}; in the kernel's time)")
-    rest = f["uf"] - f["evaluations"] * (f["kernel"] + f["get_coordinates"] + f["set_force_vector"]
-                                         + f["return_list"] + f["speed_functions"])
+    rest = f["uf"] - f["evaluations"] * (f["kernel"] + f["set_force_vector"] + f["return_list"]
+                                         + f["speed_functions"])
     print(f"    the rest (Python bookkeeping)         {rest * us:7.2f}")
     print(f"  Exudyn alone, constant user function    {c['step'] * us:7.2f}")
     print(f"  Exudyn alone, no user function          {n['step'] * us:7.2f}")

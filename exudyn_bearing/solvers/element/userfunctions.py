@@ -268,7 +268,7 @@ class UserFunctionsMixin:
         run, sysd, new_run = self._run, self._sys, self._new_run
         evidence = self._runaway_evidence()  # created here: the runaway checks update it
         max_overlap, check_worst = self._max_overlap, self._check_worst
-        want_at = EK.CLK_WANT
+        want_at, signals = EK.CLK_WANT, self._sig is not None
         perf_counter = time.perf_counter
         step = _entry_point(EK.body_step, (self._out, self._out, st, 0.0, n_cage, *paths))
         take_coordinates = self._take_coordinates
@@ -295,7 +295,7 @@ class UserFunctionsMixin:
                 evidence[0] = worst
             if times[want_at]:
                 self._sample(t, rings)
-            if self._sig is not None:
+            if signals:
                 self._signal_sample(t)
             self._evaluations += 1
             self._wall += perf_counter() - t0
