@@ -1,4 +1,4 @@
-"""Exudyn bearing element, body mode: the views of Exudyn's coordinate vectors its user function reads."""
+"""Exudyn bearing element: the views of Exudyn's coordinate vectors its user functions read."""
 import warnings
 
 import numpy as np
@@ -12,13 +12,13 @@ from exudyn_bearing.solvers.element.engine import ExudynEngine, solve_dynamic  #
 SCENE = dict(Fr=3000.0, omega=500.0, sample_dt=1e-4, t_end=1e-4, dt=5e-6)
 
 
-def _engine():
-    return ExudynEngine("6208", eb.Scenario(**SCENE))
+def _engine(mode="bodies"):
+    return ExudynEngine("6208", eb.Scenario(**SCENE), mode=mode)
 
 
 def _spy(el, check):
     """Wrap the element's user function: ``check(t)`` before each evaluation; returns the evaluation count."""
-    inner = el._force_uf
+    inner = el._force_uf_fast if el.mode == "fast" else el._force_uf
     count = [0]
 
     def uf(mbs, t, i, q, q_t):
@@ -30,14 +30,15 @@ def _spy(el, check):
     return count
 
 
-@pytest.mark.parametrize("solver, end, step", [("VelocityVerlet", 1e-4, None),
-                                                 # its numerical Jacobian perturbs every system coordinate
-                                                 ("GeneralizedAlpha", 3e-5, 1e-5)])
-def test_coordinate_views_show_every_evaluated_state(solver, end, step):
+@pytest.mark.parametrize("mode, solver, end, step", [("bodies", "VelocityVerlet", 1e-4, None),
+                                                       # its numerical Jacobian perturbs every system coordinate
+                                                       ("bodies", "GeneralizedAlpha", 3e-5, 1e-5),
+                                                       ("fast", "VelocityVerlet", 1e-4, None)])
+def test_coordinate_views_show_every_evaluated_state(mode, solver, end, step):
     # the user function reads views of Exudyn's coordinate vectors taken at the run's start
     # (GetODE2Coordinates(copy=False)); they must hold, at each evaluation, exactly what Exudyn's
     # copying call returns then, with the Jacobian's perturbed states of the implicit solver included
-    eng = _engine()
+    eng = _engine(mode)
     el = eng.element
     sd = eng.mbs.systemData
     seen = []
@@ -58,12 +59,13 @@ def test_coordinate_views_show_every_evaluated_state(solver, end, step):
     assert all(seen)
 
 
-def test_stale_coordinate_views_are_taken_anew():
+@pytest.mark.parametrize("mode", ["bodies", "fast"])
+def test_stale_coordinate_views_are_taken_anew(mode):
     # a view that no longer shows Exudyn's current vector (here a frozen copy put in its place halfway)
     # is noticed at the next evaluation and replaced: the run ends bitwise as an undisturbed one; with
-    # the frozen copy used, the balls would feel the forces of a state Exudyn has left
-    base = _engine().run()
-    eng = _engine()
+    # the frozen copy used, the balls (rings) would feel the forces of a state Exudyn has left
+    base = _engine(mode).run()
+    eng = _engine(mode)
     el = eng.element
     calls = [0]
 

@@ -115,7 +115,7 @@ class ItemsMixin:
         nb = 6 * (z + n_cage)
         self._out_uf_index = np.r_[0:6, nb:n] if not fast else np.zeros(0, np.int64)
         self._out_uf = np.zeros(self._out_uf_index.size)
-        self._sys_index = np.arange(0 if fast else n, dtype=np.int64)  # body mode: set at each run's start
+        self._sys_index = np.arange(n, dtype=np.int64)  # the coordinates' system index: set at each run's start
         self._state = EK.element_state(
             self._sys_index, np.zeros(self._sys_index.size), np.zeros(self._sys_index.size), self.ref, self.params,
             self.table, self._ring_kind, self._ring_data, self._hist, self._hist_trial, self._hz, self._work,

@@ -419,10 +419,11 @@ def advance_balls(n_sub, tau, t, t_end, p, table, work, rings0, rings1, rings, h
 
 
 @kernel
-def fast_step(q, q_t, st, n_sub, tau, t, t_end, want, defect_path=True, ellipse_path=True, loss_path=True):
+def fast_step(qs, qs_t, st, n_sub, tau, t, t_end, want, defect_path=True, ellipse_path=True, loss_path=True):
     """Fast mode, one Exudyn evaluation in one compiled call on the element's
     state ``st`` (:class:`ElementState`): ring poses from the object
-    coordinates, ``n_sub`` ball sub-steps from ``tau`` to ``t_end``
+    coordinates (gathered from the system's ODE2 coordinates ``qs``,
+    ``qs_t`` at their system index ``st.index``), ``n_sub`` ball sub-steps from ``tau`` to ``t_end``
     (:func:`advance_balls`; none when ``n_sub`` is 0), the mean ring
     reactions ``fr`` as generalized forces ``out``. Returns the largest
     overlap / R_b."""
@@ -430,6 +431,12 @@ def fast_step(q, q_t, st, n_sub, tau, t, t_end, want, defect_path=True, ellipse_
     rings = st.rings
     fr = st.fr
     out = st.out
+    q = st.q
+    q_t = st.q_t
+    index = st.index
+    for i in range(index.shape[0]):
+        q[i] = qs[index[i]]
+        q_t[i] = qs_t[index[i]]
     ring_poses_from(q, q_t, ref, st.ring_kind, st.ring_data, rings)
     worst = 0.0
     if n_sub > 0:

@@ -159,9 +159,9 @@ class UserFunctionsMixin:
         run = self._run
         run[0] = self._sys.get("dynamicSolver")
         settings = self._sys.get("simulationSettings")
+        self._sys_index[:] = self._system_index()
+        self._take_coordinates()
         if self.mode != "fast":
-            self._sys_index[:] = self._system_index()
-            self._take_coordinates()
             err = body_settings_error(run[0], settings)
             if err is not None:
                 raise err
@@ -222,18 +222,19 @@ class UserFunctionsMixin:
             self._new_run(t, self._clock[0] if self.mode == "fast" else self._t_trial)
 
     def _take_coordinates(self):
-        """The body mode's views of the system's current ODE2 coordinates and velocities
-        (``GetODE2Coordinates(copy=False)``: Exudyn's own vectors, no copy), taken at each run's start and kept
-        in ``_coordinates`` [coordinates, velocities, system index of the first ball's first coordinate].
+        """Views of the system's current ODE2 coordinates and velocities (``GetODE2Coordinates(copy=False)``:
+        Exudyn's own vectors, no copy), taken at each run's start and kept in ``_coordinates`` [coordinates,
+        velocities, system index of the first coordinate of the user function's object: the first ball's in
+        the body mode, the first ring node's in the fast mode].
 
         Exudyn allocates these vectors when it assembles and initializes a solve and writes every state of the
         run into them in place: a view taken at the run's first evaluation shows the state of each later one
         (checked at every evaluation of VelocityVerlet, RK44, RK67, ODE23, DOPRI5, GeneralizedAlpha with its
         numerical Jacobian and TrapezoidalIndex2 runs: equal to the copy, the same memory throughout;
         tests/test_element_state.py checks VelocityVerlet and GeneralizedAlpha). It replaces two copying calls
-        per evaluation. The views do not keep the
-        vectors alive, so the user function compares the first ball's first coordinate Exudyn hands it with
-        the view's at every evaluation and takes them anew when they differ."""
+        per evaluation (in the fast mode two conversions of
+        Exudyn's lists). The views do not keep the vectors alive, so the user functions compare the first
+        coordinate Exudyn hands them with the view's at every evaluation and take them anew when they differ."""
         sd = self.mbs.systemData
         cell = self.__dict__.setdefault("_coordinates", [None, None, 0])
         cell[:] = [sd.GetODE2Coordinates(copy=False), sd.GetODE2Coordinates_t(copy=False), int(self._sys_index[0])]
@@ -329,8 +330,9 @@ class UserFunctionsMixin:
         self._runaway_evidence()  # created here: _after_advance updates it
         asarray = np.asarray
         perf_counter = time.perf_counter
-        step = _entry_point(EK.fast_step, (asarray(np.zeros(1)), asarray(np.zeros(1)), st, 1, 0.0, 0.0, 0.0, False,
-                                           *paths))
+        step = _entry_point(EK.fast_step, (out, out, st, 1, 0.0, 0.0, 0.0, False, *paths))
+        take_coordinates = self._take_coordinates
+        coordinates = self.__dict__.setdefault("_coordinates", [None, None, 0])  # set at each run's start
 
         def force_uf_fast(mbs, t, itemNumber, q, q_t):
             t0 = perf_counter()
@@ -338,11 +340,12 @@ class UserFunctionsMixin:
                 rdata[r, spin] = f(t)
             if spin_angles is not None:
                 spin_angles(t)
-            # Exudyn's vectors become contiguous float64 arrays (one compiled signature)
-            q = asarray(q, float)
-            q_t = asarray(q_t, float)
             t_int = clock[0]
             if t > t_int + 1e-15:  # False before the first evaluation (nan)
+                qs, qs_t, first = coordinates
+                if qs[first] != q[0]:  # not Exudyn's current vectors (never seen within a run): take them anew
+                    take_coordinates()
+                    qs, qs_t, first = coordinates
                 big = t - t_int
                 if not clock[3]:
                     self._check_fast_step(big)
@@ -351,7 +354,7 @@ class UserFunctionsMixin:
                 tau = clock[1]
                 n_sub = int((t_end - tau) * m / big + 0.5) or 1
                 want = t >= clock[2] - 1e-12
-                worst = step(q, q_t, st, n_sub, tau, t, t_end, want, *paths)
+                worst = step(qs, qs_t, st, n_sub, tau, t, t_end, want, *paths)
                 clock[0] = t
                 clock[1] = t_end
                 clock[4] += 1
@@ -364,6 +367,9 @@ class UserFunctionsMixin:
             if sysd.get("dynamicSolver") is not run[0] or t <= run[1] + 1e-12:
                 new_run(t, t_int)
                 t_int = clock[0]
+            # Exudyn's lists as contiguous float64 arrays
+            q = asarray(q, float)
+            q_t = asarray(q_t, float)
             if t_int != t_int:
                 # first evaluation: forces at the initial state, nothing to integrate yet (the balls' body
                 # frames start the first sub-step unturned, as in the reference engine)
@@ -380,7 +386,11 @@ class UserFunctionsMixin:
                                  "(VelocityVerlet, or RK44 with friction='regularized'); a new SolveDynamic starts "
                                  "at the first run's start time (restart) or at its end time (continuation)")
             # no time advance: the last reactions at the current ring poses
-            step(q, q_t, st, 0, clock[1], t, t, False, *paths)
+            qs, qs_t, first = coordinates
+            if qs[first] != q[0]:
+                take_coordinates()
+                qs, qs_t, first = coordinates
+            step(qs, qs_t, st, 0, clock[1], t, t, False, *paths)
             self._wall += perf_counter() - t0
             return out
 
