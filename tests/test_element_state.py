@@ -79,3 +79,16 @@ def test_stale_coordinate_views_are_taken_anew(mode):
     assert calls[0] > 10
     for key, value in base.data.items():
         np.testing.assert_array_equal(rec.data[key], value, err_msg=key)
+
+
+def test_engine_speed_function_is_the_protocols_speed():
+    # the engine hands the element a closure instead of Scenario.omega_at: on ramps, the steady
+    # phase and at rest it must return omega_at's value to the last bit (the runs stay bitwise the same)
+    from exudyn_bearing.solvers.element.engine import speed_function
+
+    sc = eb.Scenario.papers_protocol(omega=500.0, t_ramp_up=0.02, t_steady=0.06, t_ramp_down=0.02)
+    f = speed_function(sc)
+    times = np.concatenate([np.linspace(-1e-3, 0.11, 1001), [0.0, 0.02, 0.08, 0.1]])
+    assert [f(t) for t in times] == [sc.omega_at(t) for t in times]
+    # the protocol's values by hand (to round-off: the compiled ramp may divide by a reciprocal)
+    assert (f(0.05), f(0.01), f(0.09), f(0.2)) == pytest.approx((500.0, 250.0, 250.0, 0.0), rel=1e-12, abs=1e-12)
