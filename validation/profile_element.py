@@ -11,6 +11,9 @@ Per Exudyn step (VelocityVerlet, the body mode's solver), medians of
 * the compiled kernel alone (the user function's compiled call,
   ``kernels.body_step`` through numba's entry point, on the element's state
   at the end of a run, timed with ``timeit``);
+* the shared contact kernel alone on the same arrays, as the element calls
+  it and as it did before (all paths compiled; Hertz cache without the
+  film column) (``contact_kernel_times``);
 * the parts of the Python wrapper, each timed alone at the end of a run
   (``wrapper_parts``): copying the system's coordinates (replaced by
   views), handing the other
@@ -79,6 +82,7 @@ def body_run(t_end, variant="full"):
     if variant == "full":
         row["kernel"] = kernel_time(el)
         row.update(wrapper_parts(el))
+        row.update(contact_kernel_times(el))
     return row
 
 
@@ -93,11 +97,37 @@ def kernel_time(el, number=2000):
     """Seconds per call of the body mode's compiled call (kernels.body_step through numba's entry point, as
     the user function calls it) on the element's state at the end of the run."""
     from exudyn_bearing.solvers.element import kernels as EK
-    from exudyn_bearing.solvers.element.userfunctions import _entry_point
+    from exudyn_bearing.solvers.element.userfunctions import entry_point
 
     args = _body_args(el)
-    step = _entry_point(EK.body_step, args)
+    step = entry_point(EK.body_step, args)
     return _best(lambda: step(*args), number)
+
+
+def contact_kernel_times(el, number=2000):
+    """Seconds per call of the shared contact kernel alone (model.contact.forces through numba's entry
+    point) on the element's arrays at the end of a run: as the element calls it (its scene's paths, the
+    Hertz cache with the film column), with every path compiled (defect, ellipse and loss code, as the
+    element compiled it before) and with a four-column Hertz cache (the film's ellipticity factor computed
+    at every evaluation, as before)."""
+    from exudyn_bearing.model.contact import forces
+    from exudyn_bearing.solvers.element.userfunctions import entry_point
+
+    w, z = el._work, el.z
+    hz4 = np.ascontiguousarray(el._hz[:, :, :4])
+
+    def args(hz, paths):
+        return (el.params, el.table, w[0, :z], w[1, :z], w[2, :z], w[3], w[4], el._rings, el._hist,
+                el._hist_trial.copy(), 5e-6, hz.copy(), w[5, :z].copy(), w[6, :z].copy(), w[7].copy(), el._fr.copy(),
+                el._glob.copy(), el._diag.copy(), el._cage_load.copy(), False, *paths)
+
+    times = {}
+    for name, hz, paths in (("contact_kernel", el._hz, el._paths), ("contact_kernel_all_paths", el._hz, ()),
+                            ("contact_kernel_all_paths_hz4", hz4, ())):
+        a = args(hz, paths)
+        call = entry_point(forces, a)
+        times[name] = _best(lambda call=call, a=a: call(*a), number)
+    return times
 
 
 def _best(fn, number):
@@ -118,7 +148,7 @@ def wrapper_parts(el, number=20000):
     every array argument is most of its cost)."""
     import numba
 
-    from exudyn_bearing.solvers.element.userfunctions import _entry_point
+    from exudyn_bearing.solvers.element.userfunctions import entry_point
 
     sd, mbs = el.mbs.systemData, el.mbs
     ball, out_balls, out_uf = el._ball_object, el._out_balls, el._out_uf
@@ -138,8 +168,8 @@ def wrapper_parts(el, number=20000):
                   hz, work, rings, fr, glob, diag, cage_load, want, dt_energy, out):
         return 0.0
 
-    unbox = _entry_point(nothing, args)
-    unbox25 = _entry_point(nothing25, args25)
+    unbox = entry_point(nothing, args)
+    unbox25 = entry_point(nothing25, args25)
     return {"get_coordinates": _best(lambda: (sd.GetODE2Coordinates(), sd.GetODE2Coordinates_t()), number),
             "set_force_vector": _best(lambda: mbs.SetObjectParameter(ball, "forceVector", out_balls), number),
             "return_list": _best(out_uf.tolist, number),
@@ -183,6 +213,9 @@ def main(argv=None):
                                                     "overhead")))
     print(f"  user function, entry to return          {f['uf'] * us:7.2f}")
     print(f"  compiled kernel alone                   {f['kernel'] * us:7.2f}")
+    print(f"    of it the contact kernel alone        {f['contact_kernel'] * us:7.2f}   (all paths compiled: "
+          f"{f['contact_kernel_all_paths'] * us:.2f}; and a 4-column Hertz cache: "
+          f"{f['contact_kernel_all_paths_hz4'] * us:.2f})")
     print(f"  Python wrapper (UF - kernel)            {(f['uf'] - f['kernel'] * f['evaluations']) * us:7.2f}")
     print("  its parts, each timed alone at the run's end:")
     print(f"    two GetODE2Coordinates calls          {f['get_coordinates'] * us:7.2f}   (not made: the user function "

@@ -84,7 +84,7 @@ def body_settings_error(solver, settings):
 
 
 __all__ = ["UserFunctionsMixin", "body_settings_error", "IMPLICIT_SOLVERS", "UNSTABLE_SOLVERS", "MIDPOINT_STEP_RATIO", "BACKWARD_SOLVERS",
-           "implicit_solver_error", "solver_error"]
+           "implicit_solver_error", "solver_error", "entry_point"]
 
 
 def overlap_contacts(bearing, overlap, method="exact"):
@@ -109,7 +109,7 @@ _POSE_POSITION = np.r_[0:3, 6:15]
 _POSE_VELOCITY = np.r_[3:6, 15:18]
 
 
-def _entry_point(dispatcher, args):
+def entry_point(dispatcher, args):
     """numba's compiled entry point of ``dispatcher`` for the types of
     ``args`` (compiled or loaded from the cache now): calling it skips
     numba's per-call type dispatch. The dispatcher itself where numba does not
@@ -271,7 +271,7 @@ class UserFunctionsMixin:
         max_overlap, check_worst = self._max_overlap, self._check_worst
         want_at, signals = EK.CLK_WANT, self._sig is not None
         perf_counter = time.perf_counter
-        step = _entry_point(EK.body_step, (self._out, self._out, st, 0.0, n_cage, *paths))
+        step = entry_point(EK.body_step, (self._out, self._out, st, 0.0, n_cage, *paths))
         take_coordinates = self._take_coordinates
         coordinates = self.__dict__.setdefault("_coordinates", [None, None, 0])  # set at each run's start
 
@@ -330,7 +330,7 @@ class UserFunctionsMixin:
         self._runaway_evidence()  # created here: _after_advance updates it
         asarray = np.asarray
         perf_counter = time.perf_counter
-        step = _entry_point(EK.fast_step, (out, out, st, 1, 0.0, 0.0, 0.0, False, *paths))
+        step = entry_point(EK.fast_step, (out, out, st, 1, 0.0, 0.0, 0.0, False, *paths))
         take_coordinates = self._take_coordinates
         coordinates = self.__dict__.setdefault("_coordinates", [None, None, 0])  # set at each run's start
 
