@@ -240,7 +240,7 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
                  temperatures=None, control="auto", initialState=None, defects=(),
                  signalInterval=None, rollingResistance=False, ballDrag=False, oilVolumeFraction=0.0,
                  hysteresisLossFactor=HYSTERESIS_LOSS_FACTOR_STEEL, show=False):
-        announce_compilation(forces, EK.fast_step if mode == "fast" else EK.element_rhs)
+        announce_compilation(forces, EK.fast_step if mode == "fast" else EK.body_step)
         self.mbs = mbs
         self.bearing = b = load_bearing(bearing)
         self.lubricant = load_lubricant(lubricant, bearing=b)   # None: the bearing's

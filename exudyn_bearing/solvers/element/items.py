@@ -8,6 +8,7 @@ import math
 import numpy as np
 
 from ...model import layout as L
+from ...model.contact import HZ_N, scene_loss_path, scene_paths
 from ...model.motion import ring_poses
 from . import kernels as EK
 from .markers import initial_ring_pose
@@ -72,13 +73,16 @@ class ItemsMixin:
         self.ref = np.concatenate(ref)
         outer_axes = initial_ring_pose(mbs, *self.rings_spec[1])[1]
         self._setup_defects_and_signals(outer_axes, float(self.scenario.dt) * (self.subSteps if fast else 1))
-        self._t_commit = 0.0
-        self._t_energy = 0.0  # body mode: the last time whose powers entered the energy integrals
-        self._t_trial = -math.inf  # body mode: the latest time evaluated (-inf: none yet)
+        # the latest time evaluated (-inf: none yet), the last committed time, the last time whose powers entered
+        # the energy integrals (body mode), the next sample time, whether the last evaluation sampled (kernels.CLK_*;
+        # _t_trial, _t_commit, _t_energy and _next_sample read and write it)
+        self._times = np.array([-math.inf, 0.0, 0.0, self.sampleInterval, 0.0])
         # runs: [the Exudyn solver object of the current SolveDynamic, time of its first evaluation (inf: none)]
         self._run = [None, math.inf]
         self._sys = mbs.sys  # Exudyn keeps the running solver and its settings here (storeSolver=True)
-        self._hz = np.zeros((z, 2, 4))
+        # the Hertz cache with the HD film's ellipticity factor, as the reference engine's (without that column
+        # the contact kernel computes the factor at every evaluation)
+        self._hz = np.zeros((z, 2, HZ_N))
         self._work = np.zeros((8, z, 3))  # xb, vb, wb, xc, vc, fb, tb, fc
         if fast:  # the balls live here, not in Exudyn
             self._work[0], self._work[1], self._work[2] = xb, vb, wb
@@ -96,7 +100,6 @@ class ItemsMixin:
         # samples: times and flat rows filled by compiled code (kernels.sample_row)
         self._sample_t, self._sample_rows = [], []
         self._row = np.zeros(sum(int(np.prod(shape)) for _name, shape in EK.sample_layout(z)))
-        self._next_sample = self.sampleInterval
         self._evaluations = 0
         self._wall = 0.0
         self._speeds = [(r, f) for r, f in enumerate(self.speed) if f is not None]
@@ -107,6 +110,17 @@ class ItemsMixin:
         self._layout_nodes = [(nd, 6) for nd in nodes + cage_nodes] + [(nd, int(np.size(
             mbs.GetNode(nd)["referenceCoordinates"]))) for nd in ring_nodes]
         vis = VObjectGenericODE2(show=bool(show), graphicsDataUserFunction=self._graphics if show else 0)
+        # what of the contact kernel the compiled calls compile (model.contact.forces), as in the reference engine
+        self._paths = (*scene_paths(self.params), scene_loss_path(self.params))
+        nb = 6 * (z + n_cage)
+        self._out_uf_index = np.r_[0:6, nb:n] if not fast else np.zeros(0, np.int64)
+        self._out_uf = np.zeros(self._out_uf_index.size)
+        self._sys_index = np.arange(n, dtype=np.int64)  # the coordinates' system index: set at each run's start
+        self._state = EK.element_state(
+            self._sys_index, np.zeros(self._sys_index.size), np.zeros(self._sys_index.size), self.ref, self.params,
+            self.table, self._ring_kind, self._ring_data, self._hist, self._hist_trial, self._hz, self._work,
+            self._rings, self._rings0 if fast else ring_poses(), self._rings_sub if fast else ring_poses(), self._fr,
+            np.zeros((2, 6)), self._glob, self._diag, self._cage_load, self._out, self._out_uf_index, self._out_uf, self._times)
         if fast:
             self._force_uf_fast = self._make_fast_uf()
             obj = mbs.AddObject(ObjectGenericODE2(nodeNumbers=ring_nodes, massMatrix=np.diag(mass),
@@ -118,8 +132,6 @@ class ItemsMixin:
         # function's object holds only the first ball and the ring nodes, and the user function reads all
         # coordinates from the system at once and hands the other balls' forces to the force vector of a
         # second object, evaluated after it (the objects' forces are evaluated in the order of their numbers)
-        nb = 6 * (z + n_cage)
-        self._out_uf_index = np.r_[0:6, nb:n]
         self._out_balls = self._out[6:nb]
         self._force_uf = self._make_body_uf()
         obj = mbs.AddObject(ObjectGenericODE2(nodeNumbers=nodes[:1] + ring_nodes,

@@ -15,6 +15,8 @@ from __future__ import annotations
 import math
 
 import numpy as np
+from numba.core import types
+from numba.experimental import structref
 
 from ..._jit import kernel
 from ...model.contact import accumulate_energy, forces
@@ -72,12 +74,12 @@ def _g_xyz(a0, a1):
             0.0, s0, c0 * c1)
 
 
-@kernel
+@kernel(no_runtime=True)
 def ring_pose(kind, rq, rqt, local, fixed, spin, angle, rings, r):
     """Row r of ``rings`` (centre, velocity, rotation matrix, angular velocity,
     spin angle beyond the matrix).
 
-    ``rq``, ``rqt`` (6,): total coordinates and velocities of the ring node
+    ``rq``, ``rqt`` (6 values): total coordinates and velocities of the ring node
     (position, Tait-Bryan angles; point nodes use the first three);
     ``local`` (3,): ring centre in the body frame (rigid nodes); ``fixed``
     (12,): position (fixed ring) or offset (point ring) and rotation matrix
@@ -131,9 +133,55 @@ def ring_pose(kind, rq, rqt, local, fixed, spin, angle, rings, r):
 RD_OFF, RD_LOCAL, RD_FIXED, RD_SPIN, RD_ANGLE, RD_N = 0, 1, 4, 16, 17, 18
 
 
+@structref.register
+class ElementStateType(types.StructRef):
+    """numba type of :class:`ElementState`."""
+
+    def preprocess_fields(self, fields):
+        return tuple((name, types.unliteral(typ)) for name, typ in fields)
+
+
+class ElementState(structref.StructRefProxy):
+    """The arrays of one bearing element the compiled user-function calls
+    work on (:data:`STATE_FIELDS`), held in one numba structure that the
+    element's Python arrays share their memory with: a compiled call takes it
+    as one argument, where the 20-odd separate arrays cost numba's entry point
+    about 0.06 us each to unbox (validation/profile_element.py). Built by
+    :func:`element_state` (compiled and cached: constructing it from Python
+    would compile numba's constructor in every process)."""
+
+
+#: Fields of :class:`ElementState`: the system ODE2 index of each object
+#: coordinate and the object's coordinates gathered from the system (body
+#: mode), the reference coordinates, parameters, Hertz table, ring couplings
+#: (kinds, data rows), committed and trial contact history, Hertz cache, ball
+#: work rows, ring poses (the fast mode's at the last sub-step and at its end
+#: too), ring reactions (and the fast mode's sums of them over its sub-steps), diagnostics, generalized forces ``out`` and those the
+#: body mode's user function returns (``out_uf``, indices ``uf_index``), and
+#: the body mode's clock (``CLK_*``).
+STATE_FIELDS = ("index", "q", "q_t", "ref", "p", "table", "ring_kind", "ring_data", "hist", "hist_trial", "hz", "work",
+                "rings", "rings0", "rings_sub", "fr", "fsum", "glob", "diag", "cage_load", "out", "uf_index", "out_uf",
+                "clock")
+structref.define_proxy(ElementState, ElementStateType, list(STATE_FIELDS))
+
+#: Entries of the body mode's clock (``ElementState.clock``): the latest
+#: evaluated time (-inf: none yet), the last committed time (its Cundall-Strack
+#: history is ``hist``), the last time whose powers entered the energy
+#: integrals, the next sample time, and whether the last evaluation sampled.
+CLK_TRIAL, CLK_COMMIT, CLK_ENERGY, CLK_NEXT_SAMPLE, CLK_WANT, CLK_N = 0, 1, 2, 3, 4, 5
+
+
 @kernel
+def element_state(index, q, q_t, ref, p, table, ring_kind, ring_data, hist, hist_trial, hz, work, rings, rings0,
+                  rings_sub, fr, fsum, glob, diag, cage_load, out, uf_index, out_uf, clock):
+    """An :class:`ElementState` of these arrays (fields :data:`STATE_FIELDS`; it shares their memory)."""
+    return ElementState(index, q, q_t, ref, p, table, ring_kind, ring_data, hist, hist_trial, hz, work, rings, rings0,
+                        rings_sub, fr, fsum, glob, diag, cage_load, out, uf_index, out_uf, clock)
+
+
+@kernel(no_runtime=True)
 def element_rhs(q, q_t, ref, p, table, z, n_cage, ring_kind, ring_data, hist, hist_out, dt_hist, hz, work,
-                rings, fr, glob, diag, cage_load, want, out):
+                rings, fr, glob, diag, cage_load, want, out, defect_path=True, ellipse_path=True, loss_path=True):
     """Generalized forces ``out`` of the bearing object for q, q_t.
 
     The object's coordinates are those of the balls, the cage balls and then
@@ -142,6 +190,9 @@ def element_rhs(q, q_t, ref, p, table, z, n_cage, ring_kind, ring_data, hist, hi
     the position coordinates, G^T times the torque about the node point on
     Tait-Bryan rotation coordinates. ``work`` (8, >= Z, 3) is scratch space
     for ball and cage states and forces. Returns the largest overlap / R_b.
+    ``defect_path``, ``ellipse_path``, ``loss_path``: what of the contact
+    kernel is compiled (:func:`~exudyn_bearing.model.contact.forces`; the
+    element passes the scene's, as the reference engine does).
     """
     xb = work[0, :z]
     vb = work[1, :z]
@@ -164,7 +215,7 @@ def element_rhs(q, q_t, ref, p, table, z, n_cage, ring_kind, ring_data, hist, hi
             vc[k, d] = q_t[b + d]
     ring_poses_from(q, q_t, ref, ring_kind, ring_data, rings)
     worst = forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb, tb, fc, fr, glob,
-                   diag, cage_load, want)
+                   diag, cage_load, want, defect_path, ellipse_path, loss_path)
     out[:] = 0.0
     for j in range(z):
         for d in range(3):
@@ -177,9 +228,10 @@ def element_rhs(q, q_t, ref, p, table, z, n_cage, ring_kind, ring_data, hist, hi
     return worst
 
 
-@kernel
+@kernel(no_runtime=True)
 def body_rhs(qs, qs_t, index, q, q_t, ref, p, table, z, n_cage, ring_kind, ring_data, hist, hist_out, dt_hist, hz,
-             work, rings, fr, glob, diag, cage_load, want, dt_energy, out):
+             work, rings, fr, glob, diag, cage_load, want, dt_energy, out, defect_path=True, ellipse_path=True,
+             loss_path=True):
     """Body mode, one force evaluation in one compiled call: the object-layout
     coordinates ``q``, ``q_t`` gathered from the system's ODE2 coordinates
     ``qs``, ``qs_t`` (``index``: their system index), :func:`element_rhs`
@@ -190,13 +242,53 @@ def body_rhs(qs, qs_t, index, q, q_t, ref, p, table, z, n_cage, ring_kind, ring_
         q[i] = qs[index[i]]
         q_t[i] = qs_t[index[i]]
     worst = element_rhs(q, q_t, ref, p, table, z, n_cage, ring_kind, ring_data, hist, hist_out, dt_hist, hz, work,
-                        rings, fr, glob, diag, cage_load, want, out)
+                        rings, fr, glob, diag, cage_load, want, out, defect_path, ellipse_path, loss_path)
     if dt_energy > 0.0:
         accumulate_energy(glob, dt_energy)
     return worst
 
 
 @kernel
+def body_step(qs, qs_t, st, t, n_cage, defect_path=True, ellipse_path=True, loss_path=True):
+    """Body mode, one force evaluation at t in one compiled call on the
+    element's state ``st`` (:class:`ElementState`) and the system's ODE2
+    coordinates ``qs``, ``qs_t``: the Cundall-Strack history committed when
+    time advances past the last evaluated time (the trial state of that
+    evaluation becomes the committed one), whether to sample (t at or past
+    the next sample time, ``clock[CLK_WANT]``), :func:`body_rhs`, the energy
+    integrals over the time since the last evaluation that advanced, and the
+    forces the user function returns into ``out_uf``. ``n_cage``: cage balls
+    (0 without cage). Returns the largest overlap / R_b."""
+    clock = st.clock
+    hist = st.hist
+    hist_trial = st.hist_trial
+    t_trial = clock[CLK_TRIAL]
+    if t > t_trial:
+        if t_trial > -math.inf:
+            for j in range(hist.shape[0]):
+                for k in range(hist.shape[1]):
+                    for d in range(hist.shape[2]):
+                        hist[j, k, d] = hist_trial[j, k, d]
+            clock[CLK_COMMIT] = t_trial
+        clock[CLK_TRIAL] = t
+    want = t >= clock[CLK_NEXT_SAMPLE] - 1e-12
+    t_energy = clock[CLK_ENERGY]
+    dt_energy = t - t_energy if t > t_energy else 0.0
+    worst = body_rhs(qs, qs_t, st.index, st.q, st.q_t, st.ref, st.p, st.table, hist.shape[0], n_cage, st.ring_kind,
+                     st.ring_data, hist, hist_trial, t - clock[CLK_COMMIT], st.hz, st.work, st.rings, st.fr, st.glob,
+                     st.diag, st.cage_load, want, dt_energy, st.out, defect_path, ellipse_path, loss_path)
+    if dt_energy > 0.0:
+        clock[CLK_ENERGY] = t
+    clock[CLK_WANT] = 1.0 if want else 0.0
+    out = st.out
+    out_uf = st.out_uf
+    uf_index = st.uf_index
+    for i in range(uf_index.shape[0]):
+        out_uf[i] = out[uf_index[i]]
+    return worst
+
+
+@kernel(no_runtime=True)
 def ring_generalized_forces(q, ref, ring_kind, ring_data, rings, fr, out):
     """Ring reactions ``fr`` (force, torque about the ring centre) as generalized
     forces of the ring-node coordinates in ``out``: the force on the position
@@ -228,25 +320,29 @@ def ring_generalized_forces(q, ref, ring_kind, ring_data, rings, fr, out):
             out[off + 5] += g[2] * t0 + g[5] * t1 + g[8] * t2
 
 
-@kernel
+@kernel(no_runtime=True)
 def ring_poses_from(q, q_t, ref, ring_kind, ring_data, rings):
-    """Both ring poses from the object coordinates (see :func:`ring_pose`)."""
-    rq = np.zeros(6)
-    rqt = np.zeros(6)
+    """Both ring poses from the object coordinates (see :func:`ring_pose`; the
+    node's coordinates as tuples, 0 beyond a point node's three: nothing to
+    allocate)."""
     for r in range(2):
         off = int(ring_data[r, RD_OFF])
-        n_r = 3 if ring_kind[r] == RING_POINT else 6
+        x0 = x1 = x2 = x3 = x4 = x5 = 0.0
+        v0 = v1 = v2 = v3 = v4 = v5 = 0.0
         if off >= 0:
-            for d in range(n_r):
-                rq[d] = ref[off + d] + q[off + d]
-                rqt[d] = q_t[off + d]
-        ring_pose(ring_kind[r], rq, rqt, ring_data[r, RD_LOCAL:RD_LOCAL + 3],
-                  ring_data[r, RD_FIXED:RD_FIXED + 12], ring_data[r, RD_SPIN], ring_data[r, RD_ANGLE], rings, r)
+            x0, x1, x2 = ref[off] + q[off], ref[off + 1] + q[off + 1], ref[off + 2] + q[off + 2]
+            v0, v1, v2 = q_t[off], q_t[off + 1], q_t[off + 2]
+            if ring_kind[r] != RING_POINT:
+                x3, x4, x5 = ref[off + 3] + q[off + 3], ref[off + 4] + q[off + 4], ref[off + 5] + q[off + 5]
+                v3, v4, v5 = q_t[off + 3], q_t[off + 4], q_t[off + 5]
+        ring_pose(ring_kind[r], (x0, x1, x2, x3, x4, x5), (v0, v1, v2, v3, v4, v5),
+                  ring_data[r, RD_LOCAL:RD_LOCAL + 3], ring_data[r, RD_FIXED:RD_FIXED + 12], ring_data[r, RD_SPIN],
+                  ring_data[r, RD_ANGLE], rings, r)
 
 
-@kernel
-def advance_balls(n_sub, tau, t, t_end, p, table, work, rings0, rings1, rings, hist, hz, fr, glob, diag, cage_load,
-                  want):
+@kernel(no_runtime=True)
+def advance_balls(n_sub, tau, t, t_end, p, table, work, rings0, rings1, rings, hist, hz, fr, fsum, glob, diag,
+                  cage_load, want, defect_path=True, ellipse_path=True, loss_path=True):
     """Fast mode: integrate balls and cage balls in ``n_sub`` velocity-Verlet
     sub-steps from their last force evaluation at ``tau`` to ``t_end``.
 
@@ -256,7 +352,8 @@ def advance_balls(n_sub, tau, t, t_end, p, table, work, rings0, rings1, rings, h
     rotation and angular velocity those of ``rings1``). ``work`` holds the
     ball state and the forces of the last evaluation on entry and exit.
 
-    ``fr`` returns the mean ring reaction over the sub-step evaluations: with
+    ``fr`` returns the mean ring reaction over the sub-step evaluations (their sum
+    in ``fsum``, (2, 6) scratch: nothing allocated here): with
     the windows centred on the Exudyn times (``t_end = t + (H - dt) / 2``),
     the impulse Exudyn's velocity-Verlet step gives the ring, ``H fr``, is
     the sum of the sub-step impulses the balls received (momentum exchange
@@ -280,7 +377,9 @@ def advance_balls(n_sub, tau, t, t_end, p, table, work, rings0, rings1, rings, h
     dt = (t_end - tau) / n_sub
     h = 0.5 * dt
     worst = 0.0
-    fsum = np.zeros((2, 6))
+    for r in range(2):
+        for k in range(6):
+            fsum[r, k] = 0.0
     span = t - tau
     for r in range(2):  # velocities, rotation and angular velocity: those at t throughout
         for k in range(3, RING_N):
@@ -303,7 +402,7 @@ def advance_balls(n_sub, tau, t, t_end, p, table, work, rings0, rings1, rings, h
                 rings[r, R_ANGLE] = rings1[r, R_ANGLE] + (s - t) * (
                     rings1[r, 8] * rings1[r, 15] + rings1[r, 11] * rings1[r, 16] + rings1[r, 14] * rings1[r, 17])
         w = forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist, dt, hz, fb, tb, fc, fr, glob, diag,
-                   cage_load, want and i == n_sub - 1)
+                   cage_load, want and i == n_sub - 1, defect_path, ellipse_path, loss_path)
         accumulate_energy(glob, dt)
         if w > worst or w != w:  # a NaN state is the worst (and stays it): the element stops on it
             worst = w
@@ -320,20 +419,32 @@ def advance_balls(n_sub, tau, t, t_end, p, table, work, rings0, rings1, rings, h
 
 
 @kernel
-def fast_step(q, q_t, ref, p, table, ring_kind, ring_data, n_sub, tau, t, t_end, work, rings0, rings, rings_sub,
-              hist, hz, fr, glob, diag, cage_load, want, out):
-    """Fast mode, one Exudyn evaluation in one compiled call: ring poses from
-    the object coordinates, ``n_sub`` ball sub-steps from ``tau`` to ``t_end``
+def fast_step(qs, qs_t, st, n_sub, tau, t, t_end, want, defect_path=True, ellipse_path=True, loss_path=True):
+    """Fast mode, one Exudyn evaluation in one compiled call on the element's
+    state ``st`` (:class:`ElementState`): ring poses from the object
+    coordinates (gathered from the system's ODE2 coordinates ``qs``,
+    ``qs_t`` at their system index ``st.index``), ``n_sub`` ball sub-steps from ``tau`` to ``t_end``
     (:func:`advance_balls`; none when ``n_sub`` is 0), the mean ring
     reactions ``fr`` as generalized forces ``out``. Returns the largest
     overlap / R_b."""
-    ring_poses_from(q, q_t, ref, ring_kind, ring_data, rings)
+    ref = st.ref
+    rings = st.rings
+    fr = st.fr
+    out = st.out
+    q = st.q
+    q_t = st.q_t
+    index = st.index
+    for i in range(index.shape[0]):
+        q[i] = qs[index[i]]
+        q_t[i] = qs_t[index[i]]
+    ring_poses_from(q, q_t, ref, st.ring_kind, st.ring_data, rings)
     worst = 0.0
     if n_sub > 0:
-        worst = advance_balls(n_sub, tau, t, t_end, p, table, work, rings0, rings, rings_sub, hist, hz, fr, glob,
-                              diag, cage_load, want)
+        worst = advance_balls(n_sub, tau, t, t_end, st.p, st.table, st.work, st.rings0, rings, st.rings_sub, st.hist,
+                              st.hz, fr, st.fsum, st.glob, st.diag, st.cage_load, want, defect_path, ellipse_path,
+                              loss_path)
     out[:] = 0.0
-    ring_generalized_forces(q, ref, ring_kind, ring_data, rings, fr, out)
+    ring_generalized_forces(q, ref, st.ring_kind, st.ring_data, rings, fr, out)
     return worst
 
 

@@ -84,7 +84,7 @@ def body_settings_error(solver, settings):
 
 
 __all__ = ["UserFunctionsMixin", "body_settings_error", "IMPLICIT_SOLVERS", "UNSTABLE_SOLVERS", "MIDPOINT_STEP_RATIO", "BACKWARD_SOLVERS",
-           "implicit_solver_error", "solver_error"]
+           "implicit_solver_error", "solver_error", "entry_point"]
 
 
 def overlap_contacts(bearing, overlap, method="exact"):
@@ -109,7 +109,7 @@ _POSE_POSITION = np.r_[0:3, 6:15]
 _POSE_VELOCITY = np.r_[3:6, 15:18]
 
 
-def _entry_point(dispatcher, args):
+def entry_point(dispatcher, args):
     """numba's compiled entry point of ``dispatcher`` for the types of
     ``args`` (compiled or loaded from the cache now): calling it skips
     numba's per-call type dispatch. The dispatcher itself where numba does not
@@ -124,8 +124,25 @@ def _entry_point(dispatcher, args):
         return dispatcher
 
 
+def _clock_entry(k, doc):
+    """A property for entry ``k`` of the element's clock array ``_times`` (kernels.CLK_*), which the body mode's
+    compiled call keeps."""
+    def get(self):
+        return float(self._times[k])
+
+    def set_(self, value):
+        self._times[k] = value
+
+    return property(get, set_, doc=doc)
+
+
 class UserFunctionsMixin:
     """Part of :class:`~.element.BallBearingElement`: the user functions."""
+
+    _t_trial = _clock_entry(EK.CLK_TRIAL, "Body mode: the latest time evaluated [s] (-inf: none yet).")
+    _t_commit = _clock_entry(EK.CLK_COMMIT, "Body mode: the time of the committed Cundall-Strack history [s].")
+    _t_energy = _clock_entry(EK.CLK_ENERGY, "Body mode: the last time whose powers entered the energy integrals [s].")
+    _next_sample = _clock_entry(EK.CLK_NEXT_SAMPLE, "The next sample time [s] (both modes).")
 
     def _new_run(self, t, t_last):
         """First evaluation of a SolveDynamic (Exudyn's solver object in
@@ -142,9 +159,9 @@ class UserFunctionsMixin:
         run = self._run
         run[0] = self._sys.get("dynamicSolver")
         settings = self._sys.get("simulationSettings")
+        self._sys_index[:] = self._system_index()
+        self._take_coordinates()
         if self.mode != "fast":
-            self._sysdata = self.mbs.systemData
-            self._sys_index[:] = self._system_index()
             err = body_settings_error(run[0], settings)
             if err is not None:
                 raise err
@@ -204,6 +221,24 @@ class UserFunctionsMixin:
         if self._sys.get("dynamicSolver") is not self._run[0] or t <= self._run[1] + _T_EPS:
             self._new_run(t, self._clock[0] if self.mode == "fast" else self._t_trial)
 
+    def _take_coordinates(self):
+        """Views of the system's current ODE2 coordinates and velocities (``GetODE2Coordinates(copy=False)``:
+        Exudyn's own vectors, no copy), taken at each run's start and kept in ``_coordinates`` [coordinates,
+        velocities, system index of the first coordinate of the user function's object: the first ball's in
+        the body mode, the first ring node's in the fast mode].
+
+        Exudyn allocates these vectors when it assembles and initializes a solve and writes every state of the
+        run into them in place: a view taken at the run's first evaluation shows the state of each later one
+        (checked at every evaluation of VelocityVerlet, RK44, RK67, ODE23, DOPRI5, GeneralizedAlpha with its
+        numerical Jacobian and TrapezoidalIndex2 runs: equal to the copy, the same memory throughout;
+        tests/test_element_state.py checks VelocityVerlet and GeneralizedAlpha). It replaces two copying calls
+        per evaluation (in the fast mode two conversions of
+        Exudyn's lists). The views do not keep the vectors alive, so the user functions compare the first
+        coordinate Exudyn hands them with the view's at every evaluation and take them anew when they differ."""
+        sd = self.mbs.systemData
+        cell = self.__dict__.setdefault("_coordinates", [None, None, 0])
+        cell[:] = [sd.GetODE2Coordinates(copy=False), sd.GetODE2Coordinates_t(copy=False), int(self._sys_index[0])]
+
     def _system_index(self):
         """System ODE2 index of each object-layout coordinate (after ``mbs.Assemble``)."""
         mbs = self.mbs
@@ -212,7 +247,7 @@ class UserFunctionsMixin:
 
     def _make_body_uf(self):
         """The body mode's force user function, a closure over the element's
-        arrays and the compiled call's entry point (:func:`~.kernels.body_rhs`).
+        state and the compiled call's entry point (:func:`~.kernels.body_step`).
 
         Per evaluation it computes the forces of all balls, cage balls and
         rings from the system's current coordinates (its arguments ``q``,
@@ -220,55 +255,52 @@ class UserFunctionsMixin:
         per coordinate), returns the first ball's and the rings' and writes
         the other balls' into the force vector of the ball object. The
         system index of each coordinate is set at each run's start
-        (:meth:`_new_run`). Bound locals instead of attribute look-ups and
-        the entry point instead of numba's type dispatch, as in the fast mode
+        (:meth:`_new_run`), and so are the views of the system's coordinate
+        vectors it reads (:meth:`_take_coordinates`). The Cundall-Strack commit, the sample and energy
+        clocks and the gathering of the returned forces run in the compiled
+        call, which takes the element's arrays as one structure
+        (:class:`~.kernels.ElementState`); bound locals instead of attribute
+        look-ups and the entry point instead of numba's type dispatch
         (validation/profile_element.py times the parts)."""
-        n = self.ref.size
-        q, q_t = np.zeros(n), np.zeros(n)
-        self._sys_index = index = np.arange(n, dtype=np.int64)
-        ref, params, table, z, n_cage = self.ref, self.params, self.table, self.z, self.n_cage
-        kind, rdata, hist, hist_trial, hz = self._ring_kind, self._ring_data, self._hist, self._hist_trial, self._hz
-        work, rings, fr, glob, diag, cload, out = (self._work, self._rings, self._fr, self._glob, self._diag,
-                                                   self._cage_load, self._out)
-        out_balls, out_uf_index = self._out_balls, self._out_uf_index
+        st, n_cage, paths = self._state, self.n_cage, self._paths
+        rdata, rings, times, out_balls, out_uf = self._ring_data, self._rings, self._times, self._out_balls, self._out_uf
         speeds, spin = self._speeds, EK.RD_SPIN
         spin_angles = self._spin_angles if self._track_angle else None
         run, sysd, new_run = self._run, self._sys, self._new_run
-        self._runaway_evidence()  # created here: _after_advance updates it
+        evidence = self._runaway_evidence()  # created here: the runaway checks update it
+        max_overlap, check_worst = self._max_overlap, self._check_worst
+        want_at, signals = EK.CLK_WANT, self._sig is not None
         perf_counter = time.perf_counter
-        step = _entry_point(EK.body_rhs, (q, q_t, index, q, q_t, ref, params, table, z, n_cage, kind, rdata, hist,
-                                          hist_trial, 0.0, hz, work, rings, fr, glob, diag, cload, False, 0.0, out))
+        step = entry_point(EK.body_step, (self._out, self._out, st, 0.0, n_cage, *paths))
+        take_coordinates = self._take_coordinates
+        coordinates = self.__dict__.setdefault("_coordinates", [None, None, 0])  # set at each run's start
 
         def force_uf(mbs, t, itemNumber, q_object, q_t_object):
             t0 = perf_counter()
             if sysd.get("dynamicSolver") is not run[0] or t <= run[1] + _T_EPS:
-                new_run(t, self._t_trial)
+                new_run(t, times[EK.CLK_TRIAL])
             for r, f in speeds:
                 rdata[r, spin] = f(t)
             if spin_angles is not None:
                 spin_angles(t)
-            # Cundall-Strack history: commit the last trial state when time advances
-            t_trial = self._t_trial
-            if t > t_trial:
-                if t_trial > -math.inf:
-                    hist[:] = hist_trial
-                    self._t_commit = t_trial
-                self._t_trial = t
-            want = t >= self._next_sample - 1e-12
-            # the energy integrals: this evaluation's powers over the time since the last one that advanced
-            t_energy = self._t_energy
-            dt_energy = t - t_energy if t > t_energy else 0.0
-            sd = self._sysdata
-            worst = step(sd.GetODE2Coordinates(), sd.GetODE2Coordinates_t(), index, q, q_t, ref, params, table, z,
-                         n_cage, kind, rdata, hist, hist_trial, t - self._t_commit, hz, work, rings, fr, glob, diag,
-                         cload, want, dt_energy, out)
-            if dt_energy > 0.0:
-                self._t_energy = t
+            qs, qs_t, first = coordinates
+            if qs[first] != q_object[0]:  # not Exudyn's current vectors (never seen within a run): take them anew
+                take_coordinates()
+                qs, qs_t, first = coordinates
+            worst = step(qs, qs_t, st, t, n_cage, *paths)
             mbs.SetObjectParameter(self._ball_object, "forceVector", out_balls)
-            self._after_advance(worst, t, want, t, rings)
+            # _after_advance, its checks inline (this runs at every evaluation)
+            if not worst <= max_overlap:  # also catches NaN
+                check_worst(worst, t)
+            if worst > evidence[0]:
+                evidence[0] = worst
+            if times[want_at]:
+                self._sample(t, rings)
+            if signals:
+                self._signal_sample(t)
             self._evaluations += 1
             self._wall += perf_counter() - t0
-            return out[out_uf_index].tolist()
+            return out_uf.tolist()
 
         return force_uf
 
@@ -285,10 +317,11 @@ class UserFunctionsMixin:
         attribute look-ups and the compiled entry point instead of numba's
         type dispatch take about a tenth off the step
         (validation/bench_element.py times the result)."""
-        ref, params, table, kind, rdata = self.ref, self.params, self.table, self._ring_kind, self._ring_data
-        work, rings0, rings, rings_sub = self._work, self._rings0, self._rings, self._rings_sub
-        hist, hz, fr, glob, diag, cload, out = (self._hist, self._hz, self._fr, self._glob, self._diag,
-                                                self._cage_load, self._out)
+        st, paths, rdata, rings, rings_sub, out = (self._state, self._paths, self._ring_data, self._rings,
+                                                   self._rings_sub, self._out)
+        ref, params, table, kind, work, rings0, hist, hz = (self.ref, self.params, self.table, self._ring_kind,
+                                                            self._work, self._rings0, self._hist, self._hz)
+        fr, glob, diag, cload = self._fr, self._glob, self._diag, self._cage_load
         speeds, dt_sub, spin = self._speeds, self._dt_sub, EK.RD_SPIN
         spin_angles = self._spin_angles if self._track_angle else None
         # [t of the last Exudyn evaluation (nan: none yet), tau, next sample, step checked, Exudyn steps]
@@ -297,9 +330,9 @@ class UserFunctionsMixin:
         self._runaway_evidence()  # created here: _after_advance updates it
         asarray = np.asarray
         perf_counter = time.perf_counter
-        step = _entry_point(EK.fast_step, (asarray(np.zeros(1)), asarray(np.zeros(1)), ref, params, table, kind,
-                                           rdata, 1, 0.0, 0.0, 0.0, work, rings0, rings, rings_sub, hist, hz, fr,
-                                           glob, diag, cload, False, out))
+        step = entry_point(EK.fast_step, (out, out, st, 1, 0.0, 0.0, 0.0, False, *paths))
+        take_coordinates = self._take_coordinates
+        coordinates = self.__dict__.setdefault("_coordinates", [None, None, 0])  # set at each run's start
 
         def force_uf_fast(mbs, t, itemNumber, q, q_t):
             t0 = perf_counter()
@@ -307,11 +340,12 @@ class UserFunctionsMixin:
                 rdata[r, spin] = f(t)
             if spin_angles is not None:
                 spin_angles(t)
-            # Exudyn's vectors become contiguous float64 arrays (one compiled signature)
-            q = asarray(q, float)
-            q_t = asarray(q_t, float)
             t_int = clock[0]
             if t > t_int + 1e-15:  # False before the first evaluation (nan)
+                qs, qs_t, first = coordinates
+                if qs[first] != q[0]:  # not Exudyn's current vectors (never seen within a run): take them anew
+                    take_coordinates()
+                    qs, qs_t, first = coordinates
                 big = t - t_int
                 if not clock[3]:
                     self._check_fast_step(big)
@@ -320,8 +354,7 @@ class UserFunctionsMixin:
                 tau = clock[1]
                 n_sub = int((t_end - tau) * m / big + 0.5) or 1
                 want = t >= clock[2] - 1e-12
-                worst = step(q, q_t, ref, params, table, kind, rdata, n_sub, tau, t, t_end, work, rings0, rings,
-                             rings_sub, hist, hz, fr, glob, diag, cload, want, out)
+                worst = step(qs, qs_t, st, n_sub, tau, t, t_end, want, *paths)
                 clock[0] = t
                 clock[1] = t_end
                 clock[4] += 1
@@ -334,6 +367,9 @@ class UserFunctionsMixin:
             if sysd.get("dynamicSolver") is not run[0] or t <= run[1] + 1e-12:
                 new_run(t, t_int)
                 t_int = clock[0]
+            # Exudyn's lists as contiguous float64 arrays
+            q = asarray(q, float)
+            q_t = asarray(q_t, float)
             if t_int != t_int:
                 # first evaluation: forces at the initial state, nothing to integrate yet (the balls' body
                 # frames start the first sub-step unturned, as in the reference engine)
@@ -350,8 +386,11 @@ class UserFunctionsMixin:
                                  "(VelocityVerlet, or RK44 with friction='regularized'); a new SolveDynamic starts "
                                  "at the first run's start time (restart) or at its end time (continuation)")
             # no time advance: the last reactions at the current ring poses
-            step(q, q_t, ref, params, table, kind, rdata, 0, clock[1], t, t, work, rings0, rings, rings_sub, hist,
-                 hz, fr, glob, diag, cload, False, out)
+            qs, qs_t, first = coordinates
+            if qs[first] != q[0]:
+                take_coordinates()
+                qs, qs_t, first = coordinates
+            step(qs, qs_t, st, 0, clock[1], t, t, False, *paths)
             self._wall += perf_counter() - t0
             return out
 
