@@ -22,6 +22,7 @@ from __future__ import annotations
 import copy
 import functools
 import hashlib
+import inspect
 import os
 import sys
 from pathlib import Path
@@ -100,13 +101,25 @@ def _copy_inlined_blocks_with_one_memo() -> bool:
                 memo = memos[-1].setdefault(id(x.scope), {})  # the memo keeps x.scope alive: its id stays unique
             return copy.deepcopy(x, memo)
 
+    try:
+        signature = inspect.signature(inline_ir)
+    except (TypeError, ValueError):  # pragma: no cover
+        return False
+    if "callee_ir" not in signature.parameters:  # pragma: no cover - another numba layout
+        return False
+
     @functools.wraps(inline_ir)
-    def patched(self, caller_ir, block, i, callee_ir, callee_freevars, arg_typs=None):
-        func = getattr(callee_ir.func_id, "func", None)
-        ours = arg_typs is None and (getattr(func, "__module__", None) or "").startswith(__package__ + ".")
+    def patched(*args, **kwargs):
+        try:
+            bound = signature.bind(*args, **kwargs).arguments
+            func = getattr(bound["callee_ir"].func_id, "func", None)
+            ours = bound.get("arg_typs") is None and (getattr(func, "__module__", None) or "").startswith(
+                __package__ + ".")
+        except (TypeError, AttributeError, KeyError):
+            ours = False
         memos.append({} if ours else None)
         try:
-            return inline_ir(self, caller_ir, block, i, callee_ir, callee_freevars, arg_typs=arg_typs)
+            return inline_ir(*args, **kwargs)
         finally:
             memos.pop()
 
