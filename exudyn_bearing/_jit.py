@@ -234,13 +234,15 @@ def kernel(fn=None, *, no_runtime=False, internal=False, **kw):
 
     Every kernel is compiled without numba's C-callable wrapper
     (``no_cfunc_wrapper``: it serves only first-class function values, which
-    the package does not use; about 15 % of the compilation of a small
-    kernel). ``internal=True`` also leaves out the wrapper that makes the
-    kernel callable from Python (``no_cpython_wrapper``), for helpers only
-    compiled code calls: that wrapper unboxes every argument, about 0.1 s of
-    a cold start for a helper taking ten arrays; such a kernel raises when
-    called from Python. The dispatcher is a :class:`KernelDispatcher` (one
-    specialisation per argument type, literal or not).
+    the package does not use, and is a sizeable share of the compilation of
+    a small kernel). ``internal=True`` also leaves out the wrapper that makes
+    the kernel callable from Python (``no_cpython_wrapper``), for helpers
+    only compiled code calls: that wrapper unboxes every argument (for the
+    integrators' ``_store``, eleven arrays, about a quarter of its
+    compilation in ``validation/profile_reference.py --compile``); such a
+    kernel raises when called from Python. The dispatcher is a
+    :class:`KernelDispatcher` (one specialisation per argument type, literal
+    or not).
     """
     opts = dict(cache=True, fastmath=FASTMATH, error_model="numpy", no_cfunc_wrapper=True)
     if no_runtime and NO_RUNTIME_SUPPORTED:

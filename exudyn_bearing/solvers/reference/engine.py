@@ -118,8 +118,8 @@ class ReferenceEngine:
                   sig_every, sig_acc, s_sig, glob, defect_path, ellipse_path, signal_path, loss_path)
         # forces at t = 0 (Verlet needs them on entry); the ball body frames start the first step unturned.
         # evaluate's Python body: its three calls run the specialisations the integrator has just compiled
-        # (a compiled evaluate would link, optimise and compile the contact kernel once more, about 1 s of a
-        # cold start)
+        # (a compiled evaluate linked, optimised and compiled the contact kernel once more: 0.8 s of CPU of a
+        # cold start, python validation/profile_reference.py --compile)
         frames = hist[:, H_E1:].copy()
         first = getattr(evaluate, "py_func", evaluate)  # evaluate itself where numba's JIT is disabled
         first(0.0, p, self.table, xb, vb, wb, xc, vc, ring, ring_poses(), hist, hz, fb, tb, fc, np.zeros((2, 6)), fring,
