@@ -19,14 +19,18 @@ stderr when a run is about to compile instead of load them.
 """
 from __future__ import annotations
 
+import copy
 import functools
 import hashlib
+import inspect
 import os
 import sys
 from pathlib import Path
 
-from numba import njit, types
+from numba import types
+from numba.core import config
 from numba.core.extending import overload
+from numba.core.registry import CPUDispatcher
 
 FASTMATH = {"contract", "arcp", "reassoc", "afn"}
 
@@ -56,6 +60,76 @@ def _drop_stale_caches() -> None:
 
 
 _drop_stale_caches()
+
+
+def _copy_inlined_blocks_with_one_memo() -> bool:
+    """Make numba's inlining of ``inline="always"`` kernels copy a callee's
+    IR in time linear in its size; returns whether it applied.
+
+    numba's ``InlineWorker.inline_ir`` copies the callee's IR block by block,
+    each block with a ``copy.deepcopy`` of its own; every variable refers to
+    the function's scope (which lists all its variables), so every block
+    copied the whole scope again: time blocks x variables. For the contact
+    kernel's ball / raceway contact (itself built of inlined helpers) that
+    copying was about 2 s of the cold start's compilation (numba issue
+    #8989). Here the blocks of one scope are copied with one memo, so the
+    scope is copied once and shared by the copied blocks, as it is by the
+    originals; the copy is otherwise the same deep copy (the compiled code is
+    unchanged). Only for the untyped inlining (no argument types) of the
+    package's own kernels; left alone where numba's layout differs.
+    """
+    try:
+        from numba.core import inline_closurecall as icc
+        from numba.core import ir
+    except ImportError:  # pragma: no cover - another numba layout
+        return False
+    worker = getattr(icc, "InlineWorker", None)
+    inline_ir = getattr(worker, "inline_ir", None)
+    if inline_ir is None or getattr(icc, "copy", None) is not copy or getattr(inline_ir, "_eb_one_memo", False):
+        return False
+    memos = []  # a stack: one dict (scope id -> memo) per active inlining of a package kernel
+
+    class _Copy:
+        """The ``copy`` module as ``inline_closurecall`` sees it."""
+
+        def __getattr__(self, name):
+            return getattr(copy, name)
+
+        @staticmethod
+        def deepcopy(x, memo=None):
+            if memo is None and memos and memos[-1] is not None and type(x) is ir.Block:
+                memo = memos[-1].setdefault(id(x.scope), {})  # the memo keeps x.scope alive: its id stays unique
+            return copy.deepcopy(x, memo)
+
+    try:
+        signature = inspect.signature(inline_ir)
+    except (TypeError, ValueError):  # pragma: no cover
+        return False
+    if "callee_ir" not in signature.parameters:  # pragma: no cover - another numba layout
+        return False
+
+    @functools.wraps(inline_ir)
+    def patched(*args, **kwargs):
+        try:
+            bound = signature.bind(*args, **kwargs).arguments
+            func = getattr(bound["callee_ir"].func_id, "func", None)
+            ours = bound.get("arg_typs") is None and (getattr(func, "__module__", None) or "").startswith(
+                __package__ + ".")
+        except (TypeError, AttributeError, KeyError):
+            ours = False
+        memos.append({} if ours else None)
+        try:
+            return inline_ir(*args, **kwargs)
+        finally:
+            memos.pop()
+
+    patched._eb_one_memo = True
+    icc.copy = _Copy()
+    worker.inline_ir = patched
+    return True
+
+
+_copy_inlined_blocks_with_one_memo()
 
 
 #: The line :func:`announce_compilation` prints (measured with an empty cache on the 2-core
@@ -102,7 +176,50 @@ def _runtime_option_supported() -> bool:
 NO_RUNTIME_SUPPORTED = _runtime_option_supported()
 
 
-def kernel(fn=None, *, no_runtime=False, **kw):
+class KernelDispatcher(CPUDispatcher):
+    """numba's CPU dispatcher, typing calls from compiled code on the
+    non-literal argument types.
+
+    numba compiles a separate specialisation of a called kernel for every
+    literal argument a call site passes (``_groove_geometry(..., False)``
+    beside ``_groove_geometry(..., inner)``: the same code compiled twice,
+    once with ``Literal[bool](False)``); no kernel of the package depends on
+    a literal argument, so every call types as a call from Python does (one
+    specialisation per argument type; ``None`` stays the ``none`` type that
+    prunes the optional code paths).
+    """
+
+    def get_call_template(self, args, kws):
+        return super().get_call_template(tuple(types.unliteral(a) for a in args),
+                                         {k: types.unliteral(v) for k, v in kws.items()})
+
+
+class InternalKernelDispatcher(KernelDispatcher):
+    """A :class:`KernelDispatcher` compiled without the wrapper that makes it
+    callable from Python (``kernel(internal=True)``): a call from Python
+    raises (without the wrapper numba's call would crash the interpreter)."""
+
+    def __call__(self, *args, **kwargs):
+        raise TypeError(f"{self.py_func.__module__}.{self.py_func.__qualname__} is compiled for calls from "
+                        "compiled kernels only (kernel(internal=True)); call it from a kernel")
+
+
+def _njit(fn, options):
+    """``numba.njit(**options)(fn)`` with :class:`KernelDispatcher` (numba's own ``jit`` wrapper, minus the
+    options the package does not use)."""
+    if config.DISABLE_JIT:
+        return fn
+    options = dict(options)
+    cache = options.pop("cache", False)
+    options.update(nopython=True, boundscheck=None)
+    cls = InternalKernelDispatcher if options.get("no_cpython_wrapper") else KernelDispatcher
+    disp = cls(py_func=fn, locals={}, targetoptions=options)
+    if cache:
+        disp.enable_caching()
+    return disp
+
+
+def kernel(fn=None, *, no_runtime=False, internal=False, **kw):
     """``numba.njit(cache=True, fastmath=FASTMATH)``, usable bare or with options.
 
     ``no_runtime=True`` compiles without numba's memory runtime (numba's
@@ -114,14 +231,28 @@ def kernel(fn=None, *, no_runtime=False, **kw):
     about 45 % slower (measured on the 6208 scene, 3.6 against 5.3 us per
     step). Where a numba version does not offer the option it is dropped
     (the kernels stay correct, only slower).
+
+    Every kernel is compiled without numba's C-callable wrapper
+    (``no_cfunc_wrapper``: it serves only first-class function values, which
+    the package does not use, and is a sizeable share of the compilation of
+    a small kernel). ``internal=True`` also leaves out the wrapper that makes
+    the kernel callable from Python (``no_cpython_wrapper``), for helpers
+    only compiled code calls: that wrapper unboxes every argument (for the
+    integrators' ``_store``, eleven arrays, about a quarter of its
+    compilation in ``validation/profile_reference.py --compile``); such a
+    kernel raises when called from Python. The dispatcher is a
+    :class:`KernelDispatcher` (one specialisation per argument type, literal
+    or not).
     """
-    opts = dict(cache=True, fastmath=FASTMATH, error_model="numpy")
+    opts = dict(cache=True, fastmath=FASTMATH, error_model="numpy", no_cfunc_wrapper=True)
     if no_runtime and NO_RUNTIME_SUPPORTED:
         opts["_nrt"] = False
+    if internal:
+        opts.update(no_cpython_wrapper=True, no_cfunc_wrapper=True)
     opts.update(kw)
     if fn is None:
-        return njit(**opts)
-    return njit(**opts)(fn)
+        return functools.partial(_njit, options=opts)
+    return _njit(fn, opts)
 
 
 class LazyUfunc:

@@ -19,10 +19,11 @@ relative +1e-15, -1e-15 and 1e-14: the round-off floor, the differences a
 reordering of floating-point operations makes in this scene).
 
 With ``--cold N`` it measures instead the cold start of both versions: the
-``profile_reference.py --compile`` job (import, then a 2 ms run of the 6208
-scene, which compiles the kernels) in a fresh process with an empty numba
+``profile_reference.py --compile`` job (import, then the README's main job
+for 2 ms, which compiles the kernels) in a fresh process with an empty numba
 cache (``NUMBA_CACHE_DIR`` a new temporary folder), N times each version,
-alternately; medians of the wall and CPU seconds of import + first run.
+alternately; medians of the wall and CPU seconds of the first run and of
+import + first run.
 
 Usage::
 
@@ -51,7 +52,7 @@ from exudyn_bearing.outputs.jsonio import to_jsonable
 from _bench import interleaved_ab  # validation/ (the script's folder is on sys.path)
 from bench_defects import baseline_source, compare, import_baseline  # validation/ (the script's folder is on sys.path)
 from bench_reference import KEYS, SCENE
-from profile_reference import _COLD
+from profile_reference import _COLD, COLD_SCENES
 
 HERE = Path(__file__).resolve().parent
 #: main before this step-time work (the semi-axes by a square root, ln(xi E') once per evaluation).
@@ -69,29 +70,32 @@ def run(pkg, t_end, kw):
 
 def cold_starts(baseline, out, n):
     """Cold start (empty numba cache) of the baseline and of this code, ``n``
-    times each, alternately: medians of the wall and CPU seconds of import +
-    first run (the job of ``profile_reference.py --compile``)."""
+    times each, alternately: medians of the wall and CPU seconds of the first
+    run and of import + first run (the README job of ``profile_reference.py
+    --compile``)."""
     import re
     import subprocess
 
     roots = {"baseline": str(baseline_source(baseline, out)), "new": str(HERE.parent)}
+    job = f"SCENE = {COLD_SCENES['readme']!r}\n" + _COLD
     times = {k: [] for k in roots}
     for i in range(n):
         for name in (("baseline", "new") if i % 2 == 0 else ("new", "baseline")):
             with tempfile.TemporaryDirectory() as cache:
                 env = dict(os.environ, NUMBA_CACHE_DIR=cache, PYTHONPATH=roots[name])
-                res = subprocess.run([sys.executable, "-c", _COLD], env=env, capture_output=True, text=True,
+                res = subprocess.run([sys.executable, "-c", job], env=env, capture_output=True, text=True,
                                      check=True, cwd=cache)
             m = re.search(r"import: ([\d.]+) s wall, ([\d.]+) s CPU; first simulate: ([\d.]+) s wall, ([\d.]+) s CPU",
                           res.stdout)
             w_imp, c_imp, w_run, c_run = (float(x) for x in m.groups())
-            times[name].append((w_imp + w_run, c_imp + c_run))
-    print(f"cold start (import + first 2 ms run of the 6208 scene, empty numba cache), {n} runs each, alternately; "
-          "medians [s]:")
+            times[name].append((w_run, c_run, w_imp + w_run, c_imp + c_run))
+    print(f"cold start (first 2 ms run of the 6208 scene {COLD_SCENES['readme']}, empty numba cache), {n} fresh "
+          "processes each, alternately; medians [s]:")
     for name, rows in times.items():
-        w, c = np.median(np.array(rows), axis=0)
-        runs = ", ".join(f"{a:.1f}/{b:.1f}" for a, b in rows)
-        print(f"  {name:8s} wall {w:6.1f}  CPU {c:6.1f}   (runs, wall/CPU: {runs})")
+        w, c, wt, ct = np.median(np.array(rows), axis=0)
+        runs = ", ".join(f"{a:.1f}/{b:.1f}" for a, b, _, _ in rows)
+        print(f"  {name:8s} first simulate: wall {w:6.1f}  CPU {c:6.1f};  import + first simulate: wall {wt:6.1f}  "
+              f"CPU {ct:6.1f}   (first simulate per process, wall/CPU: {runs})")
     return times
 
 

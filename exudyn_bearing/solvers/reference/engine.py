@@ -16,7 +16,7 @@ import numpy as np
 
 from ..._jit import announce_compilation
 from ...data import InputError, Lubricant, default_lubricant, load_bearing
-from ...model.contact import scene_loss_path, scene_paths
+from ...model.contact import forces, scene_loss_path, scene_paths
 from ...model.initial_state import initial_state
 from ...model.layout import H_E1, NDIAG, NGLOBAL, NSIGNAL
 from ...model.motion import ring_poses
@@ -49,7 +49,7 @@ class ReferenceEngine:
     name = "reference"
 
     def __init__(self, bearing, scenario: Scenario, lubricant: Lubricant | None = None, start: dict | None = None):
-        announce_compilation(evaluate, run_verlet if scenario.integrator == "verlet" else run_rk4)
+        announce_compilation(forces, run_verlet if scenario.integrator == "verlet" else run_rk4)
         b = load_bearing(bearing)
         if scenario.Pd is not None:
             b = b.with_clearance(scenario.Pd)
@@ -105,12 +105,6 @@ class ReferenceEngine:
         defect_path, ellipse_path = scene_paths(p)
         loss_path = scene_loss_path(p)
         signal_path = True if sig_every else None
-        # forces at t = 0 (Verlet needs them on entry); the ball body frames start the first step unturned
-        frames = hist[:, H_E1:].copy()
-        evaluate(0.0, p, self.table, xb, vb, wb, xc, vc, ring, ring_poses(), hist, hz, fb, tb, fc,
-                    np.zeros((2, 6)), fring, np.zeros(NGLOBAL), np.zeros((z, 2, NDIAG)), np.zeros((z, 2)),
-                    False, defect_path, ellipse_path, loss_path)
-        hist[:, H_E1:] = frames
         integrate = run_verlet if s.integrator == "verlet" else run_rk4
         if progress is None:
             progress = n_steps > 2_000_000
@@ -122,6 +116,15 @@ class ReferenceEngine:
                   buf["t"][:0], buf["glob"][:0], buf["diag"][:0], buf["cage_load"][:0], buf["xb"][:0],
                   buf["vb"][:0], buf["wb"][:0], buf["xc"][:0], buf["vc"][:0], buf["ring"][:0],
                   sig_every, sig_acc, s_sig, glob, defect_path, ellipse_path, signal_path, loss_path)
+        # forces at t = 0 (Verlet needs them on entry); the ball body frames start the first step unturned.
+        # evaluate's Python body: its three calls run the specialisations the integrator has just compiled
+        # (a compiled evaluate linked, optimised and compiled the contact kernel once more: 0.8 s of CPU of a
+        # cold start, python validation/profile_reference.py --compile)
+        frames = hist[:, H_E1:].copy()
+        first = getattr(evaluate, "py_func", evaluate)  # evaluate itself where numba's JIT is disabled
+        first(0.0, p, self.table, xb, vb, wb, xc, vc, ring, ring_poses(), hist, hz, fb, tb, fc, np.zeros((2, 6)), fring,
+              np.zeros(NGLOBAL), np.zeros((z, 2, NDIAG)), np.zeros((z, 2)), False, defect_path, ellipse_path, loss_path)
+        hist[:, H_E1:] = frames
         wall0 = time.perf_counter()
         last_print = wall0
         while done < n_steps:

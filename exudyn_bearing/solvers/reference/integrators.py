@@ -65,7 +65,7 @@ def evaluate(t, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc,
     return worst
 
 
-@kernel(no_runtime=True)
+@kernel(no_runtime=True, internal=True)
 def _store(k, t, glob, diag, cage_load, xb, vb, wb, xc, vc, ring,
            s_t, s_glob, s_diag, s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring):
     """Copy the state and diagnostics into row k of the sample buffers
@@ -89,7 +89,7 @@ def _store(k, t, glob, diag, cage_load, xb, vb, wb, xc, vc, ring,
             s_vc[k, j, d] = vc[j, d]
 
 
-@kernel
+@kernel(internal=True)
 def _signal_step(k_step, t, p, rings, fr, fring, sig_every, sig_acc, s_sig):
     """Add this evaluation to the running signal sums; every ``sig_every``-th
     step write their means with the time into the next row of ``s_sig``."""
@@ -109,7 +109,7 @@ def _signal_step(k_step, t, p, rings, fr, fring, sig_every, sig_acc, s_sig):
             sig_acc[c] = 0.0
 
 
-@kernel(no_runtime=True)
+@kernel(no_runtime=True, internal=True)
 def _finite(a):
     """True when every entry of the 2-D array ``a`` is finite (a loop: numba's
     np.all(np.isfinite(...)) compiled for about 0.6 s of a cold start)."""
@@ -189,7 +189,7 @@ def run_verlet(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb
     return n_steps, n_samp, 0
 
 
-@kernel
+@kernel(internal=True)
 def _rk_stage(t, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc, fr, fring, glob, diag, cage_load,
               kx, kv, kw, kxc, kvc, kr, stage, defect_path, ellipse_path, loss_path):
     """Derivatives of the state at (t, state) into stage ``stage`` of the k
@@ -213,7 +213,7 @@ def _rk_stage(t, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc
     return worst
 
 
-@kernel(no_runtime=True)
+@kernel(no_runtime=True, internal=True)
 def _rk_save(xb, vb, wb, xc, vc, ring, y0x, y0v, y0w, y0xc, y0vc, y0r):
     """y0 = state (element by element: numba's slice assignment ``y0x[:, :] = xb`` compiled its
     shape-mismatch error message, about 4 s of a cold start)."""
@@ -228,7 +228,7 @@ def _rk_save(xb, vb, wb, xc, vc, ring, y0x, y0v, y0w, y0xc, y0vc, y0r):
         y0r[d] = ring[d]
 
 
-@kernel
+@kernel(internal=True)
 def _rk_set(y0x, y0v, y0w, y0xc, y0vc, y0r, kx, kv, kw, kxc, kvc, kr, stage, f,
             xb, vb, wb, xc, vc, ring):
     """state = y0 + f k[stage]."""
