@@ -113,7 +113,7 @@ LN_REACH = 1e-2
 EXP_REACH = 3e-2
 
 
-@kernel
+@kernel(internal=True)
 def _cross(a0, a1, a2, b0, b1, b2):
     """a x b of two vectors given by their components. Called, not inlined by
     numba (LLVM inlines it): numba's inlining of its many call sites cost
@@ -284,7 +284,7 @@ def _lubrication(p, u_r, q_el, rx, kappa, major, c_hyst):
     return _lubrication_ln_g(p, u_r, q_el, rx, kappa, major, c_hyst, math.log(p[P_XI] * p[P_EPRIME]), -1.0)
 
 
-@kernel(no_runtime=True)
+@kernel(no_runtime=True, internal=True)
 def _lubrication_ln_g(p, u_r, q_el, rx, kappa, major, c_hyst, ln_g, factor_k):
     """:func:`_lubrication` with ``ln_g`` = ln(xi E') given: the kernel
     computes it once per evaluation (:func:`forces`), not per contact; and
@@ -364,7 +364,7 @@ def _tangential_force(p, hist, hist_out, dt_hist, j, race, nx, ny, nz, sx, sy, s
     return 0.0, 0.0, 0.0
 
 
-@kernel(no_runtime=True)
+@kernel(no_runtime=True, internal=True)
 def _contact_frame(rings, r, wb, j, dxw, dyw, dzw, nx, ny, nz):
     """Rolling frame of a contact and the ball's angular velocity relative to
     the race: e_x the rolling (circumferential) direction at the ball, e_y =
@@ -424,7 +424,7 @@ def _moment_pair(tb, fr, j, race, mx, my, mz):
     fr[race, 5] -= mz
 
 
-@kernel(no_runtime=True)
+@kernel(no_runtime=True, internal=True)
 def _rolling_resistance(p, f_n, u_r, rx, kappa, b_roll, roll):
     """Rolling-resistance moment of a ball / raceway contact (docs/theory/losses.md, "In the dynamic
     engines"): magnitude (F_h + 2 F_R) R_x, F_h the hysteresis force (Johnson) at the normal force f_n and
@@ -445,7 +445,7 @@ def _rolling_resistance(p, f_n, u_r, rx, kappa, b_roll, roll):
     return (-m_act if roll > 0.0 else m_act), power - p_h, p_h
 
 
-@kernel(no_runtime=True)
+@kernel(no_runtime=True, internal=True)
 def _ball_drag(p, xb, vb, rings, fb, fr):
     """Drag of the oil-air mixture on every ball centre (docs/theory/losses.md): F_D = 1/2 C_D(Re)
     rho A |v| v against the ball's velocity v relative to the mixture, which moves with the outer
@@ -500,7 +500,7 @@ def _open_contact(hist_out, diag, j, race, delta, ca, sa, drop, want):
         diag[j, race, D_MU] = np.nan
 
 
-@kernel(no_runtime=True)
+@kernel(no_runtime=True, internal=True)
 def _defect_drop(p, hist_out, rings, j, race, rotated, cx, cy, nlx, nly, nlz, ca, sa, r_contact, rb, rc, inner):
     """Drop [m] of ball j's contact with race ``race`` into the scene's
     defects (:func:`exudyn_bearing.physics.defects.spall_drop`; the deepest
@@ -563,7 +563,7 @@ def _defect_drop(p, hist_out, rings, j, race, rotated, cx, cy, nlx, nly, nlz, ca
     return drop
 
 
-@kernel(no_runtime=True)
+@kernel(no_runtime=True, internal=True)
 def _turn_ball_frame(p, hist, hist_out, dt_hist, wb, j):
     """If ball j carries a defect, turn its body frame (hist rows H_E1, H_E2)
     from the committed state by its angular velocity over ``dt_hist`` into
@@ -837,20 +837,20 @@ def _drive_power(rings, fr):
     return total
 
 
-@kernel(no_runtime=True)
+@kernel(no_runtime=True, internal=True)
 def _kinetic_energy(p, vb, wb, vc):
     """Kinetic energy of the balls (translation, rotation) and cage balls (translation) [J]."""
     e = 0.0
     for j in range(vb.shape[0]):
-        e += 0.5 * p[P_MB] * (vb[j, 0] ** 2 + vb[j, 1] ** 2 + vb[j, 2] ** 2)
-        e += 0.5 * p[P_IB] * (wb[j, 0] ** 2 + wb[j, 1] ** 2 + wb[j, 2] ** 2)
+        e += 0.5 * p[P_MB] * (vb[j, 0] * vb[j, 0] + vb[j, 1] * vb[j, 1] + vb[j, 2] * vb[j, 2])
+        e += 0.5 * p[P_IB] * (wb[j, 0] * wb[j, 0] + wb[j, 1] * wb[j, 1] + wb[j, 2] * wb[j, 2])
     if p[P_CAGE] > 0.5:
         for k in range(vb.shape[0]):
-            e += 0.5 * p[P_MZ] * (vc[k, 0] ** 2 + vc[k, 1] ** 2 + vc[k, 2] ** 2)
+            e += 0.5 * p[P_MZ] * (vc[k, 0] * vc[k, 0] + vc[k, 1] * vc[k, 1] + vc[k, 2] * vc[k, 2])
     return e
 
 
-@kernel(no_runtime=True)
+@kernel(no_runtime=True, internal=True)
 def _global_diagnostics(rings, fr, power, worst, glob):
     """Ring speeds, reactions and torques about the ring axes, frictional power, worst overlap."""
     ex, ey, ez = rings[0, 8], rings[0, 11], rings[0, 14]
