@@ -72,7 +72,22 @@ SCRIPTS = [
     ("profile_suite.py", ["--startup", "--repeat", "3"]),
     ("bench_levels.py", ["--repeat", "3"]),
     ("bench_kernel_ab.py", []),
+    # (script, arguments, tag): a second run of a script under another name (its printout "<stem>_<tag>")
+    ("bench_kernel_ab.py", ["--cold", "3", "--baseline", "58652e8"], "cold"),
+    ("bench_kernel_ab.py", ["--baseline", "58652e8"], "session"),
+    ("bench_element_ab.py", ["--baseline", "58652e8"], "session"),
+    ("bench_element_ab.py", ["--baseline", "58652e8", "--mode", "fast"], "session_fast"),
 ]
+
+
+def script_entry(entry):
+    """(script, arguments, tag or None) of a SCRIPTS entry."""
+    return (*entry, None) if len(entry) == 2 else tuple(entry)
+
+
+def printout_name(script, tag=None):
+    """File under OUT holding what ``script`` (run under ``tag``) printed in this run."""
+    return f"{Path(script).stem}{'_' + tag if tag else ''}.stdout.txt"
 
 
 def load(name):
@@ -149,9 +164,10 @@ def run_all(skip=(), start_at=None):
     machine.setdefault("start", machine_facts())
     machine.pop("end", None)
     machine_path.write_text(json.dumps(machine, indent=2))
-    names = [script for script, _ in SCRIPTS]
+    names = [script_entry(e)[0] for e in SCRIPTS]
     first = names.index(start_at) if start_at else 0
-    for script, args in SCRIPTS[first:]:
+    for entry in SCRIPTS[first:]:
+        script, args, tag = script_entry(entry)
         if script in skip:
             continue
         t0 = time.perf_counter()
@@ -159,18 +175,21 @@ def run_all(skip=(), start_at=None):
         proc = subprocess.run([sys.executable, str(HERE / script), *args], check=True, stdout=subprocess.PIPE,
                               text=True)
         print(proc.stdout, end="", flush=True)
-        (OUT / f"{Path(script).stem}.stdout.txt").write_text(proc.stdout)  # what section_printed quotes
-        walls[script] = time.perf_counter() - t0
+        (OUT / printout_name(script, tag)).write_text(proc.stdout)  # what section_printed quotes
+        walls[f"{script} {' '.join(args)}" if tag else script] = time.perf_counter() - t0
     walls_path.write_text(json.dumps(walls, indent=2))
     machine["end"] = machine_facts()
     machine_path.write_text(json.dumps(machine, indent=2))
 
 
-def section_printed(title, script, intro, figures=(), last_lines=40):
+def section_printed(title, script, intro, figures=(), last_lines=40, tag=None):
     """A report section quoting what ``script`` printed in this run (its last ``last_lines`` lines), with
-    ``figures`` ((file under validation/out, sentence), ...) below."""
-    path = OUT / f"{Path(script).stem}.stdout.txt"
-    lines = [f"## {title}", "", intro, "", f"Command: `python validation/{script}`; what it printed in this run:", ""]
+    ``figures`` ((file under validation/out, sentence), ...) below; ``tag``: the SCRIPTS entry run under
+    that tag (its arguments named in the command)."""
+    path = OUT / printout_name(script, tag)
+    args = next((" ".join(a) for e in SCRIPTS for sc, a, t in [script_entry(e)] if sc == script and t == tag), "")
+    command = f"python validation/{script}{' ' + args if args else ''}"
+    lines = [f"## {title}", "", intro, "", f"Command: `{command}`; what it printed in this run:", ""]
     if path.exists():
         printed = [ln for ln in path.read_text().splitlines() if ln.strip()][-last_lines:]
         lines += ["```text", *printed, "```", ""]
@@ -271,6 +290,29 @@ def section_new_checks():
             "e61f1e5 (before the semi-axes from the overlap, ln(xi E') once per evaluation, the divisions off the "
             "dependency chains and the cached film ellipticity factor), both in one "
             "process, interleaved rounds, medians; the new/new control is the noise floor.", last_lines=20)
+        + section_printed(
+            "Step time against the start of this work", "bench_kernel_ab.py",
+            "As above, against 58652e8: before the HD film's logarithms and exponential came from per-contact "
+            "anchors (series near the anchor, equal to the library functions to round-off: "
+            "tests/test_kernel_cache.py) and before the ball / raceway geometry was computed for all contacts "
+            "first.", last_lines=20, tag="session")
+        + section_printed(
+            "Element step against the start of this work", "bench_element_ab.py",
+            "The element's body and fast modes against 58652e8: before one compiled call on one structure of the "
+            "element's arrays, views of Exudyn's coordinate vectors instead of copies, the element's kernels "
+            "without numba's memory runtime and the scene's contact-kernel paths only; interleaved rounds, "
+            "medians; sampled arrays compared bit for bit.", last_lines=20, tag="session")
+        + section_printed(
+            "Element fast mode against the start of this work", "bench_element_ab.py",
+            "As above, the fast mode (one sub-step per Exudyn step).", last_lines=20, tag="session_fast")
+        + section_printed(
+            "Cold start against the start of this work", "bench_kernel_ab.py",
+            "The README's first run on an empty numba cache (a fresh process with a new NUMBA_CACHE_DIR: import, "
+            "then a 2 ms run of the 6208 scene, which compiles the kernels it uses), this code against 58652e8 "
+            "(before numba's inlining copied a callee's scope once per block, before one specialisation per "
+            "argument type and kernels without the wrappers nothing calls), the two alternately; medians of the "
+            "wall and CPU seconds. Per compiled function: `python validation/profile_reference.py --compile`.",
+            last_lines=8, tag="cold")
         + section_printed(
             "Where the reference engine's step time goes", "profile_reference.py",
             "The bench_reference scene (6208, 3000 N, 500 rad/s, cage, lubrication, tangential history) in steady "
@@ -1295,7 +1337,7 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--no-run", action="store_true", help="only write the report from existing outputs")
     ap.add_argument("--fresh", action="store_true", help="delete validation/out first (sweeps otherwise resume)")
-    ap.add_argument("--start-at", metavar="SCRIPT", choices=[s for s, _ in SCRIPTS],
+    ap.add_argument("--start-at", metavar="SCRIPT", choices=[script_entry(e)[0] for e in SCRIPTS],
                     help="run the scripts from this one on (the earlier ones' outputs kept)")
     args = ap.parse_args(argv)
     if args.fresh and OUT.exists():
