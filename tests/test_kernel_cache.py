@@ -3,8 +3,8 @@
 ``model.layout``): ln(1 + r) and exp(d) by their Taylor series about a cached anchor give the direct
 relations (``math.log``, ``math.exp``, ``physics.ehl.film_hd_ln_g_k``) to round-off, within the reach
 and out of it, from a zero cache and along drifting sequences, and the kernel gives the same forces
-with the anchors as without them (a cache of the width without the anchor columns, as the Exudyn
-element's)."""
+from the anchors as from the direct relations (an empty cache, whose anchors all miss); a cache without
+the geometry columns is refused."""
 import math
 
 import numpy as np
@@ -104,18 +104,18 @@ def test_film_from_the_anchors_equals_the_hamrock_dowson_relation():
 
 
 @pytest.mark.parametrize("film", ["hd", "mk"])
-def test_the_kernel_gives_the_same_forces_with_and_without_the_anchor_columns(film):
-    # the 6208 at 500 rad/s, analytic state: the reference engine's cache (HZ_N columns, the film from its
-    # anchors, two evaluations so that the second hits them) against the element's four-column cache
-    # (the direct relations); every output within 1e-12 of its array's scale (the anchors' round-off,
+def test_the_kernel_gives_the_same_forces_from_the_anchors_and_from_the_direct_relations(film):
+    # the 6208 at 500 rad/s, analytic state: the film from the anchors (two evaluations on one cache, so
+    # that the second hits them) against the direct relations (one evaluation on an empty cache: every
+    # anchor misses and takes the library functions); every output within 1e-12 of its array's scale (the anchors' round-off,
     # 1e-14 of the film, reaches the forces through C_n; a wrong series term or anchor would show at the
     # scale of the lubrication's effect on the forces, 1e-3 and above)
     eng = ReferenceEngine("6208", eb.Scenario(Fr=3000.0, omega=500.0, dt=2e-6, film=film))
     st = eng.initial_state()
     z = eng.bearing.n_balls
     outs = []
-    for width, calls in ((L.HZ_N, 2), (4, 1)):
-        hz = np.zeros((z, 2, width))
+    for calls in (2, 1):
+        hz = np.zeros((z, 2, L.HZ_N))
         for _ in range(calls):
             out = {"fb": np.zeros((z, 3)), "tb": np.zeros((z, 3)), "fc": np.zeros((z, 3)), "fr": np.zeros((2, 6)),
                    "glob": np.zeros(L.NGLOBAL), "diag": np.zeros((z, 2, L.NDIAG)), "cage_load": np.zeros((z, 2))}
@@ -124,10 +124,26 @@ def test_the_kernel_gives_the_same_forces_with_and_without_the_anchor_columns(fi
                      out["fc"], out["fr"], np.zeros(3), out["glob"], out["diag"], out["cage_load"], True,
                      *scene_paths(eng.params), scene_loss_path(eng.params))
         outs.append(out)
-        if width == L.HZ_N and film == "hd":
+        if calls == 2 and film == "hd":
             assert np.any(hz[:, :, L.HZ_EXP + 1] > 0.0)  # the anchors were used
     a, b = outs
     assert np.any(a["diag"][:, :, L.D_HMIN] > 0.0)
     for k in ("fb", "tb", "fc", "fr", "glob", "diag"):
         scale = float(np.nanmax(np.abs(a[k])))
         assert np.allclose(a[k], b[k], rtol=1e-12, atol=1e-12 * scale, equal_nan=True), k
+
+
+def test_a_cache_without_the_geometry_columns_is_refused_with_nan():
+    # the kernel writes the contact geometry into the cache's HZ_GEO columns: a narrower cache would be
+    # written beyond its end, so the kernel returns NaN (which every caller stops on) and leaves it alone
+    eng = ReferenceEngine("6208", eb.Scenario(Fr=3000.0, omega=500.0, dt=2e-6))
+    st = eng.initial_state()
+    z = eng.bearing.n_balls
+    hz = np.zeros((z, 2, L.HZ_GEO))
+    worst = evaluate(0.0, eng.params, eng.table, st["xb"].copy(), st["vb"].copy(), st["wb"].copy(), st["xc"].copy(),
+                     st["vc"].copy(), st["ring"].copy(), ring_poses(), st["hist"].copy(), hz, np.zeros((z, 3)),
+                     np.zeros((z, 3)), np.zeros((z, 3)), np.zeros((2, 6)), np.zeros(3), np.zeros(L.NGLOBAL),
+                     np.zeros((z, 2, L.NDIAG)), np.zeros((z, 2)), False, *scene_paths(eng.params),
+                     scene_loss_path(eng.params))
+    assert math.isnan(worst)
+    assert not hz.any()

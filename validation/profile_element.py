@@ -107,14 +107,12 @@ def kernel_time(el, number=2000):
 def contact_kernel_times(el, number=2000):
     """Seconds per call of the shared contact kernel alone (model.contact.forces through numba's entry
     point) on the element's arrays at the end of a run: as the element calls it (its scene's paths, the
-    Hertz cache with the film column), with every path compiled (defect, ellipse and loss code, as the
-    element compiled it before) and with a four-column Hertz cache (the film's ellipticity factor computed
-    at every evaluation, as before)."""
+    Hertz cache with the film column), and with every path compiled (defect, ellipse and loss code, as the
+    element compiled it before)."""
     from exudyn_bearing.model.contact import forces
     from exudyn_bearing.solvers.element.userfunctions import entry_point
 
     w, z = el._work, el.z
-    hz4 = np.ascontiguousarray(el._hz[:, :, :4])
 
     def args(hz, paths):
         return (el.params, el.table, w[0, :z], w[1, :z], w[2, :z], w[3], w[4], el._rings, el._hist,
@@ -122,8 +120,7 @@ def contact_kernel_times(el, number=2000):
                 el._glob.copy(), el._diag.copy(), el._cage_load.copy(), False, *paths)
 
     times = {}
-    for name, hz, paths in (("contact_kernel", el._hz, el._paths), ("contact_kernel_all_paths", el._hz, ()),
-                            ("contact_kernel_all_paths_hz4", hz4, ())):
+    for name, hz, paths in (("contact_kernel", el._hz, el._paths), ("contact_kernel_all_paths", el._hz, ())):
         a = args(hz, paths)
         call = entry_point(forces, a)
         times[name] = _best(lambda call=call, a=a: call(*a), number)
@@ -214,8 +211,7 @@ def main(argv=None):
     print(f"  user function, entry to return          {f['uf'] * us:7.2f}")
     print(f"  compiled kernel alone                   {f['kernel'] * us:7.2f}")
     print(f"    of it the contact kernel alone        {f['contact_kernel'] * us:7.2f}   (all paths compiled: "
-          f"{f['contact_kernel_all_paths'] * us:.2f}; and a 4-column Hertz cache: "
-          f"{f['contact_kernel_all_paths_hz4'] * us:.2f})")
+          f"{f['contact_kernel_all_paths'] * us:.2f})")
     print(f"  Python wrapper (UF - kernel)            {(f['uf'] - f['kernel'] * f['evaluations']) * us:7.2f}")
     print("  its parts, each timed alone at the run's end:")
     print(f"    two GetODE2Coordinates calls          {f['get_coordinates'] * us:7.2f}   (not made: the user function "

@@ -48,19 +48,19 @@ Inputs (all float64, world frame):
   (0) and outer (1) contact of every ball and, for balls with a defect, the
   ball's body frame; ``dt_hist`` the time since then, ``hist_out`` where the
   updated state goes;
-* ``hz`` (Z, 2, 4), (Z, 2, 5) or (Z, 2, :data:`HZ_N`): per-contact cache
-  (columns ``HZ_*`` of :mod:`.layout`) of R_y/R_x, k, F, E and, with the
-  fifth column, the ellipticity factor of the HD film
-  (``ehl.film_hd_ellipticity_factor``; computed at every evaluation without
-  it); with all :data:`HZ_N` columns also the anchors from which the HD film
-  takes its two logarithms and its exponential (:func:`_film_hd_anchored`:
-  ln x = ln x_0 + ln(1 + r), exp(e) = exp(e_0) exp(d) by short series near
-  the anchor, the library functions and a new anchor beyond; equal to the
-  direct relation to round-off) and the scratch of the contact geometry,
-  which :func:`forces` then computes for all contacts first
-  (:func:`_race_geometry`, in a short loop whose square roots and
-  divisions the processor overlaps). Any content is valid (zeros: nothing
-  cached yet); only the speed depends on it.
+* ``hz`` (Z, 2, :data:`HZ_N`): per-contact cache (columns ``HZ_*`` of
+  :mod:`.layout`): R_y/R_x, k, F, E and the ellipticity factor of the HD
+  film (``ehl.film_hd_ellipticity_factor``), re-evaluated when R_y/R_x
+  moves; the anchors from which the HD film takes its two logarithms and
+  its exponential (:func:`_film_hd_anchored`: ln x = ln x_0 + ln(1 + r),
+  exp(e) = exp(e_0) exp(d) by short series near the anchor, the library
+  functions and a new anchor beyond; equal to the direct relation to
+  round-off); and the scratch of the contact geometry, which
+  :func:`forces` computes for all contacts first (:func:`_race_geometry`,
+  in a short loop whose square roots and divisions the processor
+  overlaps). Any content is valid (zeros: nothing cached yet); only the
+  speed depends on it. A narrower array is refused (the kernel returns NaN,
+  which every caller stops on).
 
 Outputs: ``fb, tb`` (Z, 3) force and moment on the balls, ``fc`` (Z, 3) on
 the cage balls, ``fr`` (2, 6) force and moment about its centre that balls
@@ -151,8 +151,7 @@ def _hertz_constants(p, table, hz, j, race, rx, ry):
         hz[j, race, HZ_K] = kappa
         hz[j, race, HZ_F] = ell_f
         hz[j, race, HZ_E] = ell_e
-        if hz.shape[2] > HZ_FILM_K:
-            hz[j, race, HZ_FILM_K] = _film_hd_ellipticity_factor(kappa)
+        hz[j, race, HZ_FILM_K] = _film_hd_ellipticity_factor(kappa)
         return kappa, ell_f, ell_e
     return hz[j, race, HZ_K], hz[j, race, HZ_F], hz[j, race, HZ_E]
 
@@ -612,15 +611,11 @@ def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist,
     inner = race == 0
     rc = p[P_RCI] if inner else p[P_RCO]
     rb = p[P_RB]
-    if hz.shape[2] >= HZ_N:  # computed by forces before the contacts, for all of them
-        g = HZ_GEO
-        dxw, dyw, dzw, cx, cy = hz[j, race, g], hz[j, race, g + 1], hz[j, race, g + 2], hz[j, race, g + 3], hz[j, race, g + 4]
-        rotated = hz[j, race, g + 5] != 0.0
-        delta, nlx, nly, nlz = hz[j, race, g + 6], hz[j, race, g + 7], hz[j, race, g + 8], hz[j, race, g + 9]
-        ca, sa, r_contact = hz[j, race, g + 10], hz[j, race, g + 11], hz[j, race, g + 12]
-    else:
-        (dxw, dyw, dzw, cx, cy, rotated, delta, nlx, nly, nlz, ca, sa,
-         r_contact) = _race_geometry(p, rings, xb, j, race)
+    g = HZ_GEO  # the geometry, computed by forces before the contacts, for all of them
+    dxw, dyw, dzw, cx, cy = hz[j, race, g], hz[j, race, g + 1], hz[j, race, g + 2], hz[j, race, g + 3], hz[j, race, g + 4]
+    rotated = hz[j, race, g + 5] != 0.0
+    delta, nlx, nly, nlz = hz[j, race, g + 6], hz[j, race, g + 7], hz[j, race, g + 8], hz[j, race, g + 9]
+    ca, sa, r_contact = hz[j, race, g + 10], hz[j, race, g + 11], hz[j, race, g + 12]
     drop = 0.0
     if defect_path is not None:  # pruned at compile time when None
         if p[P_NDEF] > 0.0 and delta > 0.0:
@@ -659,13 +654,13 @@ def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist,
     # as the quasi-static solver's kinematics do (Harris & Kotzalas)
     ddot, sx, sy, sz, slip, u_r, mx, my, mz, lx, ly, lz, px, py, pz = _surface_kinematics(
         rings, race, xb, vb, wb, j, dxw, dyw, dzw, cx, cy, nx, ny, nz, rb if ellipse else rb - 0.5 * delta)
-    if hz.shape[2] >= HZ_N and p[P_LUB] > 0.5 and p[P_LAW] < 0.5 and int(p[P_FILM]) == HAMROCK_DOWSON:
+    if p[P_LUB] > 0.5 and p[P_LAW] < 0.5 and int(p[P_FILM]) == HAMROCK_DOWSON:
         # the steady path of the default film: its logarithms and exponential from the contact's anchors
         h = _film_hd_anchored(hz, j, race, u_r, q_el, rx, p[P_EPRIME], p[P_ETA], ln_g)
         lam, regime, c_n, mu = _lubrication_film(p, h, major, c_hyst)
     else:
         h, lam, regime, c_n, mu = _lubrication_ln_g(p, u_r, q_el, rx, kappa, major, c_hyst, ln_g,
-                                                    hz[j, race, HZ_FILM_K] if hz.shape[2] > HZ_FILM_K else -1.0)
+                                                    hz[j, race, HZ_FILM_K])
     f_n = q_el + c_n * ddot
     if f_n < 0.0:
         f_n = 0.0
@@ -913,27 +908,28 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb,
     hyst_sum = 0.0
     drag_sum = 0.0
     ln_g = math.log(p[P_XI] * p[P_EPRIME]) if p[P_LUB] > 0.5 else 0.0  # the film's ln G, a scene constant
-    if hz.shape[2] >= HZ_N:
-        # the geometry of every ball / raceway contact first: independent chains of square roots and
-        # divisions, which the processor overlaps in this short loop
-        for j in range(z):
-            for race in range(2):
-                (dxw, dyw, dzw, cx, cy, rotated, delta, nlx, nly, nlz, ca, sa,
-                 r_contact) = _race_geometry(p, rings, xb, j, race)
-                g = HZ_GEO
-                hz[j, race, g] = dxw
-                hz[j, race, g + 1] = dyw
-                hz[j, race, g + 2] = dzw
-                hz[j, race, g + 3] = cx
-                hz[j, race, g + 4] = cy
-                hz[j, race, g + 5] = 1.0 if rotated else 0.0
-                hz[j, race, g + 6] = delta
-                hz[j, race, g + 7] = nlx
-                hz[j, race, g + 8] = nly
-                hz[j, race, g + 9] = nlz
-                hz[j, race, g + 10] = ca
-                hz[j, race, g + 11] = sa
-                hz[j, race, g + 12] = r_contact
+    if hz.shape[2] < HZ_N:
+        return np.nan  # a cache without the geometry columns (the callers allocate HZ_N)
+    # the geometry of every ball / raceway contact first: independent chains of square roots and
+    # divisions, which the processor overlaps in this short loop
+    for j in range(z):
+        for race in range(2):
+            (dxw, dyw, dzw, cx, cy, rotated, delta, nlx, nly, nlz, ca, sa,
+             r_contact) = _race_geometry(p, rings, xb, j, race)
+            g = HZ_GEO
+            hz[j, race, g] = dxw
+            hz[j, race, g + 1] = dyw
+            hz[j, race, g + 2] = dzw
+            hz[j, race, g + 3] = cx
+            hz[j, race, g + 4] = cy
+            hz[j, race, g + 5] = 1.0 if rotated else 0.0
+            hz[j, race, g + 6] = delta
+            hz[j, race, g + 7] = nlx
+            hz[j, race, g + 8] = nly
+            hz[j, race, g + 9] = nlz
+            hz[j, race, g + 10] = ca
+            hz[j, race, g + 11] = sa
+            hz[j, race, g + 12] = r_contact
     for j in range(z):
         if defect_path is not None:
             if defects:

@@ -362,7 +362,7 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
         z = self.bearing.n_balls
         diag = np.zeros((z, 2, L.NDIAG))
         forces(self.params, self.table, xb, np.zeros((z, 3)), np.zeros((z, 3)), np.zeros((z, 3)),
-                 np.zeros((z, 3)), rings, np.zeros((z, 2, 3)), np.zeros((z, 2, 3)), 0.0, np.zeros((z, 2, 4)),
+                 np.zeros((z, 3)), rings, np.zeros((z, 2, 3)), np.zeros((z, 2, 3)), 0.0, np.zeros((z, 2, L.HZ_N)),
                  np.zeros((z, 3)), np.zeros((z, 3)), np.zeros((z, 3)), np.zeros((2, 6)), np.zeros(L.NGLOBAL),
                  diag, np.zeros((z, 2)), True)
         worst = float(np.max(diag[:, :, 1]))

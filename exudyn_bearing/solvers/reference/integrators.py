@@ -6,7 +6,7 @@ State: ``xb, vb, wb`` (Z, 3) ball centre, velocity, angular velocity;
 ``xc, vc`` (Z, 3) cage balls; ``ring`` (6,) inner-ring position and velocity
 (the ring translates, its spin follows the protocol, the outer ring is the
 fixed frame); ``hist`` (Z, 2, 3) Cundall-Strack displacements; ``hz``
-(Z, 2, 4) the Hertz cache of the contact kernel. Sample buffers ``s_*`` get
+(Z, 2, HZ_N) the per-contact cache of the contact kernel. Sample buffers ``s_*`` get
 one row per sample.
 
 Condition-monitoring signals (velocity Verlet): every ``sig_every`` steps
