@@ -49,11 +49,19 @@ def _alive(pid):
     return state != "Z"
 
 
+def _interruptible():
+    """In the child before exec: SIGINT to its default, so that Python installs its KeyboardInterrupt
+    handler. A test session started in the background of a non-interactive shell (``pytest ... &``, as
+    some CI runners do) inherits SIGINT ignored, and an ignored SIGINT stays ignored across exec: the
+    command under test would then rightly ignore the test's SIGINT, as a background job does Ctrl-C."""
+    signal.signal(signal.SIGINT, signal.SIG_DFL)
+
+
 def _start(argv, tmp_path):
     """Start ``argv`` (a Python command line) and wait (at most 120 s) until it runs two workers."""
     env = dict(os.environ, PYTHONPATH=str(ROOT))
     proc = subprocess.Popen([sys.executable, *argv], cwd=tmp_path, env=env, stdout=subprocess.PIPE,
-                            stderr=subprocess.PIPE, text=True)
+                            stderr=subprocess.PIPE, text=True, preexec_fn=_interruptible)
     workers = []
     deadline = time.monotonic() + 120
     while len(workers) < 2 and time.monotonic() < deadline and proc.poll() is None:
@@ -221,7 +229,7 @@ def test_a_signal_to_the_parent_stops_the_workers(tmp_path, sig):
         except KeyboardInterrupt:
             sys.exit(42)
     """)
-    proc = subprocess.Popen([sys.executable, "-c", script])
+    proc = subprocess.Popen([sys.executable, "-c", script], preexec_fn=_interruptible)
     workers = []
     try:
         deadline = time.monotonic() + 120
