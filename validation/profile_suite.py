@@ -32,7 +32,6 @@ import argparse
 import csv
 import os
 import resource
-import signal
 import subprocess
 import sys
 import tempfile
@@ -83,12 +82,6 @@ def pytest_sessionfinish(session):
 
 
 # ---------------------------------------------------------------- the driver
-def _default_sigint():
-    """SIGINT back to its default in pytest's process: a shell starts a background job with SIGINT
-    ignored, its children inherit that, and the tests that interrupt a sweep with SIGINT then time out."""
-    signal.signal(signal.SIGINT, signal.SIG_DFL)
-
-
 def write_csv(path, rows):
     path.parent.mkdir(parents=True, exist_ok=True)
     with open(path, "w", newline="") as f:
@@ -118,7 +111,7 @@ def run(name, cache, pytest_args, top):
     k0 = _children_cpu()
     w0 = time.perf_counter()
     proc = subprocess.run([sys.executable, "-m", "pytest", "-q", "-p", "profile_suite", *pytest_args],
-                          cwd=ROOT, env=env, capture_output=True, text=True, preexec_fn=_default_sigint)
+                          cwd=ROOT, env=env, capture_output=True, text=True)
     wall = time.perf_counter() - w0
     cpu = _children_cpu() - k0
     OUT.mkdir(parents=True, exist_ok=True)
@@ -188,7 +181,6 @@ def main(argv=None):
         if args.runs == ["warm"]:
             print("filling the numba cache (one unreported run) ...", flush=True)
             subprocess.run([sys.executable, "-m", "pytest", "-q", *extra], cwd=ROOT, capture_output=True,
-                           preexec_fn=_default_sigint,
                            env=dict(os.environ, NUMBA_CACHE_DIR=cache,
                                     PYTHONPATH=os.pathsep.join([str(ROOT), os.environ.get("PYTHONPATH", "")])))
         for name in args.runs:
