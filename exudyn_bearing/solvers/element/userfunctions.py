@@ -267,9 +267,8 @@ class UserFunctionsMixin:
         speeds, spin = self._speeds, EK.RD_SPIN
         spin_angles = self._spin_angles if self._track_angle else None
         run, sysd, new_run = self._run, self._sys, self._new_run
-        evidence = self._runaway_evidence()  # created here: the runaway checks update it
-        max_overlap, check_worst = self._max_overlap, self._check_worst
-        want_at, signals = EK.CLK_WANT, self._sig is not None
+        self._runaway_evidence()  # created here: _after_advance updates it
+        after_advance, want_at = self._after_advance, EK.CLK_WANT
         perf_counter = time.perf_counter
         step = entry_point(EK.body_step, (self._out, self._out, st, 0.0, n_cage, *paths))
         take_coordinates = self._take_coordinates
@@ -289,15 +288,7 @@ class UserFunctionsMixin:
                 qs, qs_t, first = coordinates
             worst = step(qs, qs_t, st, t, n_cage, *paths)
             mbs.SetObjectParameter(self._ball_object, "forceVector", out_balls)
-            # _after_advance, its checks inline (this runs at every evaluation)
-            if not worst <= max_overlap:  # also catches NaN
-                check_worst(worst, t)
-            if worst > evidence[0]:
-                evidence[0] = worst
-            if times[want_at]:
-                self._sample(t, rings)
-            if signals:
-                self._signal_sample(t)
+            after_advance(worst, t, times[want_at], t, rings)
             self._evaluations += 1
             self._wall += perf_counter() - t0
             return out_uf.tolist()
