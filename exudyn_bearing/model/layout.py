@@ -209,8 +209,8 @@ HIST_N = 4
 #: contacts before their forces (``model.contact._race_geometry``: the ball centre relative to the ring,
 #: world (3) and ring frame (2), the ring's rotated flag, the overlap, the local normal (3), cos and sin
 #: of the contact angle, the contact radius). All zero: nothing cached (every entry is re-evaluated
-#: at its first use); a cache of fewer than HZ_N columns (the Exudyn element's four) is valid and
-#: evaluates what it does not hold.
+#: at its first use). Every caller allocates all HZ_N columns: the kernel refuses a narrower cache
+#: (it returns NaN, which every caller stops on).
 HZ_RATIO, HZ_K, HZ_F, HZ_E, HZ_FILM_K, HZ_LN_U, HZ_LN_W, HZ_EXP, HZ_GEO = 0, 1, 2, 3, 4, 5, 7, 9, 11
 #: Width of the per-contact cache ``hz``.
 HZ_N = 24
