@@ -15,7 +15,8 @@ excluded), the median of the per-round ratios new/baseline and new/new, and
 whether the sampled arrays of the last baseline and new runs are bitwise
 equal (else the relative differences of the summary quantities, beside
 the largest of those of the baseline run again with F_r changed by a
-relative +1e-15, -1e-15 and 1e-14: the round-off floor, the differences a
+relative +-1, 2, 3, 5, 7 and 10 x 1e-15 (``--perturbations``): the
+round-off floor, the differences a
 reordering of floating-point operations makes in this scene).
 
 With ``--cold N`` it measures instead the cold start of both versions: the
@@ -60,6 +61,14 @@ BASELINE_REV = "e61f1e5"
 SETTINGS = {"implicit spring, dt 8 us": {"dt": 8e-6, "tangential": "implicit"},
             "explicit spring, dt 5 us": {"dt": 5e-6, "tangential": "explicit"}}
 SUMMARY_KEYS = (*KEYS, "friction_power", "friction_torque", "ball_spin")
+#: relative moves of F_r whose summary differences from the unmoved baseline make the round-off floor: the last
+#: bits of the input (1e-15 is about 5 units of the last place), both signs, up to 1e-14
+PERTURBATIONS = tuple(s * k * 1e-15 for k in (1, 2, 3, 5, 7, 10) for s in (1.0, -1.0))
+
+
+def _moves(n):
+    eps = sorted(abs(e) for e in PERTURBATIONS[:n])
+    return f"{n} relative amounts (+- {eps[0]:.0e} ... {eps[-1]:.0e})"
 
 
 def run(pkg, t_end, kw):
@@ -110,6 +119,9 @@ def main(argv=None):
                          f"(default {BASELINE_REV})")
     ap.add_argument("--rounds", type=int, default=9)
     ap.add_argument("--t-end", type=float, default=0.2, help="simulated time per run [s]")
+    ap.add_argument("--perturbations", type=int, default=len(PERTURBATIONS), choices=range(1, len(PERTURBATIONS) + 1),
+                    metavar=f"1..{len(PERTURBATIONS)}",
+                    help="moves of F_r that make the round-off floor (default all: +-1, 2, 3, 5, 7, 10 x 1e-15)")
     ap.add_argument("--cold", type=int, default=0, help="measure N cold starts of each version instead")
     ap.add_argument("--out", default=str(HERE / "out"))
     args = ap.parse_args(argv)
@@ -147,9 +159,9 @@ def main(argv=None):
                 arrays = compare(Path(tmp) / "baseline.npz", Path(tmp) / "new.npz")
             sb, sn = last["baseline"].summary(), last["new"].summary()
             rel = {k: _rel(float(sn[k]), float(sb[k])) for k in SUMMARY_KEYS}
-            # round-off floor: the baseline again with F_r moved by its last bits (the largest of three moves)
+            # round-off floor: the baseline again with F_r moved by its last bits (the largest of the moves)
             floor = dict.fromkeys(SUMMARY_KEYS, 0.0)
-            for eps in (1e-15, -1e-15, 1e-14):
+            for eps in PERTURBATIONS[:args.perturbations]:
                 sp = run(base, args.t_end, dict(kw, Fr=SCENE["Fr"] * (1.0 + eps))).summary()
                 floor = {k: max(floor[k], _rel(float(sp[k]), float(sb[k]))) for k in SUMMARY_KEYS}
             equal = all(r["equal"] for r in arrays.values())
@@ -158,9 +170,13 @@ def main(argv=None):
                                              roundoff_rel_diff=floor)
             print(f"{label:28s} {med['baseline']:9.3f} {med['new']:9.3f} {ratio:9.3f} {control:8.3f}")
             what = "bitwise equal" if equal else "not bitwise equal"
-            print(f"  sampled arrays {what}; summary, relative difference new/baseline (in brackets: baseline "
-                  "with F_r moved by 1e-15 or 1e-14 against baseline, largest: the round-off floor): "
+            beyond = [k for k in SUMMARY_KEYS if rel[k] > floor[k]]
+            report["settings"][label]["beyond_roundoff"] = beyond
+            print(f"  sampled arrays {what}; summary, relative difference new/baseline (in brackets: the largest "
+                  f"difference of the baseline with F_r moved by {_moves(args.perturbations)} against the "
+                  "baseline: the round-off floor): "
                   + ", ".join(f"{k} {v:.1e} [{floor[k]:.1e}]" for k, v in rel.items()))
+            print("  beyond the round-off floor: " + (", ".join(beyond) if beyond else "none"))
     (out / "bench_kernel_ab.json").write_text(json.dumps(to_jsonable(report), indent=2))
     print(f"written {out / 'bench_kernel_ab.json'}")
 
