@@ -129,8 +129,11 @@ def main(argv=None):
     est = {t: ReferenceEngine("6208", eb.Scenario(**SCENE, tangential=t)).stable for t in ("explicit", "implicit")}
     limits = {t: largest_stable_step(t) for t in ("explicit", "implicit")}
     for t in ("explicit", "implicit"):
-        print(f"stable step, {t} spring: estimate {est[t].dt * 1e6:.2f} us (limited by {est[t].limited_by}), "
-              f"measured largest {limits[t] * 1e6:.2f} us")
+        e = est[t]
+        print(f"stable step, {t} spring: estimate {e.dt * 1e6:.2f} us (limited by {e.limited_by}), "
+              f"measured largest {limits[t] * 1e6:.2f} us; limits before the safety factor: normal "
+              f"{e.normal * 1e6:.2f} us, tangential {e.tangential * 1e6:.2f} us, friction {e.friction * 1e6:.2f} us, "
+              f"cage {e.cage * 1e6:.2f} us (cage load {e.cage_load:.2f} N: {e.cage_basis})")
     start = second_start_seconds()
     print(f"second process start-up and a 1 ms run: {start:.2f} s (numba cache)")
     m1 = buffer_memory(0.05, 50, 8e-6)
@@ -139,6 +142,10 @@ def main(argv=None):
           f"(ratio {m4 / m1:.2f})")
     report = dict(scene=SCENE, t_end=args.t_end, repeat=args.repeat, settings=rows,
                   stable_step_estimate={t: est[t].dt for t in est}, stable_step_measured=limits,
+                  stable_step_limits={t: dict(normal=est[t].normal, tangential=est[t].tangential,
+                                              friction=est[t].friction, cage=est[t].cage,
+                                              limited_by=est[t].limited_by, cage_load=est[t].cage_load,
+                                              cage_basis=est[t].cage_basis) for t in est},
                   second_start_s=start, memory_bytes={"T=0.05": m1, "T=0.2": m4},
                   machine=dict(cpu_count=os.cpu_count(), python=sys.version.split()[0]),
                   date=time.strftime("%Y-%m-%d %H:%M"))

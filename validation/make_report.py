@@ -348,16 +348,30 @@ def section_reference():
           and r["summary"]["friction_power"] < 1.0]
     lines += ["", "- Requirement (at most 0.5 s per simulated second, errors of q_max and cage_speed <= 0.5 %, "
               "tangential springs resolved): met in this run by " + ("; ".join(ok) if ok else "no setting") + "."]
+    lim = d["stable_step_limits"]
+
+    def limits_text(t):
+        names = {"normal": "normal Hertz mode of a ball between its races",
+                 "tangential": "rocking mode of the Cundall-Strack springs", "friction": "regularised friction",
+                 "cage": f"critically damped ball / cage-ball contacts at {lim[t]['cage_load']:.2f} N "
+                         f"({lim[t]['cage_basis']})"}
+        return ", ".join(f"{names[k]} {lim[t][k] * 1e6:.2f} us" for k in names
+                         if lim[t][k] is not None and math.isfinite(lim[t][k]))  # inf is null in the JSON
+
+    imp = lim["implicit"]
     lines += [
-              f"- Stable step: estimate {est['explicit'] * 1e6:.2f} us (explicit spring) and "
-              f"{est['implicit'] * 1e6:.2f} us (implicit); the largest step that did not blow up (bisection on "
-              f"10 ms runs) was {meas['explicit'] * 1e6:.2f} and {meas['implicit'] * 1e6:.2f} us. The estimate is set "
-              "by the critically damped ball / cage-ball contacts at an assumed tenth of the ball load (start-up and "
-              "slow-down loads; next section), the blow-up of this steady scene, whose cage loads are about 1 N, by "
-              "the normal Hertz mode of a ball between its races; the explicit Cundall-Strack spring does not blow "
-              "up above its rocking-mode limit because its force is capped at mu F_n, but it chatters at the cap "
-              "(the large frictional power of the explicit 8 us row, against about 1e-4 W when resolved); the "
-              "implicit spring (K_t / (1 + K_t dt^2 / m_t)) removes that limit.",
+              f"- Stable step: estimate {est['explicit'] * 1e6:.2f} us (explicit spring, limited by "
+              f"{lim['explicit']['limited_by']}) and {est['implicit'] * 1e6:.2f} us (implicit, limited by "
+              f"{imp['limited_by']}): `stable_step`, the safety factor times the smallest of its limits (explicit "
+              f"spring: {limits_text('explicit')}; implicit: {limits_text('implicit')}). The largest step that did "
+              f"not blow up (bisection on 10 ms runs) was {meas['explicit'] * 1e6:.2f} and "
+              f"{meas['implicit'] * 1e6:.2f} us. The explicit Cundall-Strack spring does not blow up above its "
+              "rocking-mode limit because its force is capped at mu F_n, but it chatters at the cap (the large "
+              "frictional power of the explicit 8 us row, against about 1e-4 W when resolved); the implicit spring "
+              "(K_t / (1 + K_t dt^2 / m_t)) removes that limit. Beyond the normal mode the cage contacts come next, "
+              f"at {imp['cage'] / imp['normal']:.2f} times its limit in this steady scene (their loads are small "
+              "here; in start-up and slow-down they limit first: next section): a step twice as large needs both "
+              "integrated implicitly.",
               "- Cost: one kernel call per force evaluation, the contact laws being scalar physics functions "
               "compiled into the force loop (no calls that pass arrays inside it), the exact Hertz level "
               "tabulated (relative error "
