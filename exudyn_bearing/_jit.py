@@ -12,7 +12,7 @@ upgrade, :func:`_drop_stale_caches` hashes all kernel sources at import and
 clears the package's numba cache files when the hash differs from the one
 stored beside them.
 
-Compiling the kernels a run needs takes 20-30 s of CPU time on the 2-core
+Compiling the kernels a run needs takes about 17-30 s of CPU time on the 2-core
 test machine (once per installation and after every update; ``python
 validation/bench_kernel_ab.py --cold 3`` measures it, ``python
 validation/profile_reference.py --compile`` lists what compiles); :func:`announce_compilation` says so on
@@ -134,10 +134,11 @@ _copy_inlined_blocks_with_one_memo()
 
 
 #: The line :func:`announce_compilation` prints (measured with an empty cache on the 2-core
-#: test machine: 19.5-28.5 s from import to the end of the README's first reference run in
-#: single fresh processes on one day, 25.8 s the median of three in validation/REPORT.md;
-#: several times that when the machine is busy; a warm start takes 1-3 s).
-COMPILE_NOTICE = ("exudyn_bearing: compiling the numba kernels (first run after installing or updating; 20-30 s, "
+#: test machine: 16.4-28.5 s from import to the end of the README's first reference run in
+#: single fresh processes, 16.7 s the median of three in validation/REPORT.md's last run (25.8 s in
+#: the one before, on a busier day); several times that when the machine is busy; a warm start
+#: takes 1-3 s).
+COMPILE_NOTICE = ("exudyn_bearing: compiling the numba kernels (first run after installing or updating; about 17-30 s, "
                   "up to a minute on a busy machine; later runs load them from the cache)")
 _announced = False
 

@@ -13,11 +13,11 @@ from conftest import ROOT
 
 CLAIMS = [
     # fast mode of the Exudyn element (bench_element.py, fast_mode_checks.py)
-    ("reproduces the body mode at 0.58 of its cost", "With one sub-step the fast mode costs 0.58 of the body mode",
+    ("reproduces the body mode at 0.60 of its cost", "With one sub-step the fast mode costs 0.60 of the body mode",
      "python validation/bench_element.py"),
     ("within 1.320 % in Q_max and 0.001 % in cage speed over 0.1 s",
-     "| element fast mode, 4 x 5 us sub-steps | 1.12 | 1.320 % | 0.001 % |", "python validation/bench_element.py"),
-    ("at 2.24 times the reference core's wall time", "Fast mode (4 x 5 us sub-steps) / reference core: **2.24**",
+     "| element fast mode, 4 x 5 us sub-steps | 1.11 | 1.320 % | 0.001 % |", "python validation/bench_element.py"),
+    ("at 2.01 times the reference core's wall time", "Fast mode (4 x 5 us sub-steps) / reference core: **2.01**",
      "python validation/bench_element.py"),
     ("3 and 4 reach 0.64 % and 1.85 %", "3: q_max_inner 1471.5 N (0.64 %); 4: q_max_inner 1489.3 N (1.85 %)",
      "python validation/fast_mode_checks.py"),
@@ -29,14 +29,39 @@ CLAIMS = [
     ("body mode's own step error, 2.5 against 5 us, is 0.41 % at 5 N) and moves by 1.18 %\nat 40 us",
      "with 40 us 50 N 0.19 %, 5 N 1.18 % (against the yardstick's 50 N 0.04 %, 5 N 0.41 %)",
      "python validation/fast_mode_checks.py"),
-    ("26 min in all on the 2-core test machine", "Wall time of this regeneration: 26 min in all",
+    ("22 min in all on the 2-core test machine", "Wall time of this regeneration: 22 min in all",
      "python validation/make_report.py"),
-    ("25.8 s, the median of three fresh processes", "new      first simulate: wall   25.8",
+    ("16.7 s, the median of three fresh processes", "new      first simulate: wall   16.7",
      "python validation/bench_kernel_ab.py --cold 3"),
     ("estimate 22.8 us", "estimate 22.8 us for the 81 g ring", "python validation/fast_mode_checks.py"),
+    # the reference engine's step (bench_reference.py, bench_kernel_ab.py)
+    ("0.572 s wall per simulated\nsecond at dt = 5 us", "| explicit spring, dt 5 us | 0.572 |",
+     "python validation/bench_reference.py"),
+    ("0.330 s at dt = 8 us with the\nimplicit tangential spring", "| implicit spring, dt 8 us | 0.330 |",
+     "python validation/bench_reference.py"),
+    ("2.76 s at the papers' 1 us", "| explicit spring, dt 1 us (papers) | 2.762 |", "python validation/bench_reference.py"),
+    ("0.630 and 0.615 of its time (8 us implicit, 5 us explicit)", "implicit spring, dt 8 us 0.507 0.319 0.630",
+     "python validation/bench_kernel_ab.py"),
+    ("0.860 and 0.863 against\n58652e8", "implicit spring, dt 8 us 0.377 0.322 0.860", "python validation/bench_kernel_ab.py --baseline 58652e8"),
+    # the bearing levels (bench_levels.py, levels_work_precision.py) and the thermal solution (bench_thermal.py)
+    ("| 20.8 (body mode), 4.48 (fast mode), VelocityVerlet at 3.5 us |",
+     "balls, body mode VelocityVerlet 3.5e-06 0.010 20.777", "python validation/bench_levels.py --repeat 3"),
+    ("| 0.546 (exact Hertz), 0.547 (`hertzModel=\"hamrock_brewe\"`) |",
+     "quasistatic, exact Hertz GeneralizedAlpha 1.0e-04 0.050 0.546", "python validation/bench_levels.py --repeat 3"),
+    ("exact Hertz is 38.0 times cheaper than the ball\nelement in body mode and 8.2 times cheaper",
+     "quasistatic, exact Hertz 38.0 x body mode, 8.2 x fast mode", "python validation/bench_levels.py --repeat 3"),
+    ("takes 2.7 s of wall time at the quasi-static level\nwith exact Hertz, 2.6 s with Hamrock-Brewe and 1.6 s",
+     "quasistatic, exact Hertz 2.7 s wall", "python validation/bench_levels.py --repeat 3"),
+    ("balls body mode 2 us 3.7e-5 (74.8 s per simulated s)",
+     "balls (bodies), VelocityVerlet 2e-06 s wall 1.50 s ( 74.8 s per simulated s), error 3.65e-05",
+     "python validation/levels_work_precision.py"),
+    ("one solution at 25,000 rpm in 0.358 s", "thermal solution ACBB-120, 25000 rpm: median 0.358 s",
+     "python validation/bench_thermal.py"),
+    ("a warm-started sweep of 20 speeds in 2.76 s", "(warm started): median 2.76 s", "python validation/bench_thermal.py"),
+    ("at dt = 5.21 us takes 0.61-0.70 s wall", "| outer | 0.698 s |", "python validation/bench_defects.py"),
     # defects: the cost of the defect feature in a scene without defects (bench_defects.py)
-    ("wall-time ratio against the code before the\ndefect feature is 0.659 against a noise floor of 0.988",
-     "median per-round ratio 0.659, against 0.988", "python validation/bench_defects.py"),
+    ("wall-time ratio against the code before the\ndefect feature is 0.650 against a noise floor of 0.993",
+     "median per-round ratio 0.650, against 0.993", "python validation/bench_defects.py"),
 ]
 
 

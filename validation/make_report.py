@@ -252,7 +252,7 @@ def section_new_checks():
             "Wall time per simulated second of the ball element (body and fast mode) and of the two levels "
             "without ball degrees of freedom on a 2.5 kg shaft on one 6208 at 3000 N and 500 rad/s, medians of "
             "three runs, and the two-bearing run-up of scenarios/rotor_two_6208.py built with each level.",
-            last_lines=30)
+            last_lines=60)
         + section_printed(
             "Varying compliance against the published theory", "levels_published_vc.py",
             "The quasi-static level's ball-pass motion against the rigid-ring Hertz theory of Sunnersjo (1978) "
