@@ -832,7 +832,7 @@ def _drive_power(rings, fr):
     return total
 
 
-@kernel(no_runtime=True, internal=True)
+@kernel(inline="always")
 def _kinetic_energy(p, vb, wb, vc):
     """Kinetic energy of the balls (translation, rotation) and cage balls (translation) [J]."""
     e = 0.0
@@ -845,7 +845,7 @@ def _kinetic_energy(p, vb, wb, vc):
     return e
 
 
-@kernel(no_runtime=True, internal=True)
+@kernel(inline="always")
 def _global_diagnostics(rings, fr, power, worst, glob):
     """Ring speeds, reactions and torques about the ring axes, frictional power, worst overlap."""
     ex, ey, ez = rings[0, 8], rings[0, 11], rings[0, 14]

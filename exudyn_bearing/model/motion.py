@@ -87,7 +87,7 @@ def rotate_frame(src, dst, j, r1, r2, wx, wy, wz, dt):
             dst[j, r2, d] /= n2
 
 
-@kernel
+@kernel(inline="always")
 def kick_drift(h, dt, xb, vb, wb, xc, vc, fb, tb, fc, inv_mb, inv_ib, inv_mz):
     """Velocity-Verlet half kick of balls and cage balls by h, then a drift by dt."""
     for j in range(xb.shape[0]):

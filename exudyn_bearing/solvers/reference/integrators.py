@@ -31,7 +31,7 @@ from ...model.motion import kick_drift, omega_profile, ring_poses, spin_angle
 __all__ = ["run_verlet", "run_rk4", "evaluate"]
 
 
-@kernel
+@kernel(inline="always")
 def _set_inner_ring(t, p, ring, rings, defect_path):
     """Reference engine: the inner ring translates (state ``ring``: position,
     velocity) and spins at the protocol speed; the outer ring stays fixed.
@@ -45,7 +45,7 @@ def _set_inner_ring(t, p, ring, rings, defect_path):
         rings[0, R_ANGLE] = spin_angle(t, p[P_W_MAX], p[P_T_UP], p[P_T_STEADY], p[P_T_DOWN])
 
 
-@kernel
+@kernel(inline="always")
 def _inner_ring_force(p, fr, fring):
     """Force that accelerates the inner ring: applied load plus the ball reactions."""
     fring[0] = p[P_FR] + fr[0, 0]
@@ -65,7 +65,7 @@ def evaluate(t, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc,
     return worst
 
 
-@kernel(no_runtime=True, internal=True)
+@kernel(inline="always")
 def _store(k, t, glob, diag, cage_load, xb, vb, wb, xc, vc, ring,
            s_t, s_glob, s_diag, s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring):
     """Copy the state and diagnostics into row k of the sample buffers
