@@ -80,8 +80,8 @@ from ..physics.damping import (_damping_critical, _damping_fluid, _damping_hyste
 from ..data.traction import N_TRACTION_PARAMS
 from ..physics.contact_slip import _contact_traction
 from ..physics.defects import _spall_drop_k
-from ..physics.ehl import (HAMROCK_DOWSON, _film_central_hd, _film_groups, _film_hd_ellipticity_factor,
-                           _film_hd_exponent, _film_hd_from_exponent, _film_thickness_ln_g_k)
+from ..physics.ehl import (HAMROCK_DOWSON, _film_central_hd, _film_hd_ellipticity_factor, _film_thickness_ln_g_k,
+                           film_groups, film_hd_exponent, film_hd_from_exponent)
 from ..physics.traction import EHL as TRACTION_EHL
 from ..physics.friction import (_implicit_tangential_stiffness, _regularized_coulomb, _sphere_tangential_mass,
                                 friction_coefficient)
@@ -200,10 +200,10 @@ def _film_hd_anchored(hz, j, race, u_r, q_el, rx, e_prime, eta, ln_g):
     parts ``film_groups``, ``film_hd_exponent``, ``film_hd_from_exponent``) with ln U, ln W and exp(E)
     from the contact's anchors in ``hz`` (:func:`_ln_anchored`, :func:`_exp_anchored`; equal to the
     direct relation to round-off) and the ellipticity factor cached with its Hertz constants."""
-    u, w = _film_groups(u_r, q_el, rx, e_prime, eta)
-    e = _film_hd_exponent(_ln_anchored(u, hz, j, race, HZ_LN_U), _ln_anchored(w, hz, j, race, HZ_LN_W), ln_g)
+    u, w = film_groups(u_r, q_el, rx, e_prime, eta)
+    e = film_hd_exponent(_ln_anchored(u, hz, j, race, HZ_LN_U), _ln_anchored(w, hz, j, race, HZ_LN_W), ln_g)
     on = (q_el > 0.0) * (u_r != 0.0)  # no load or no rolling: no film
-    return on * _film_hd_from_exponent(_exp_anchored(e, hz, j, race, HZ_EXP), hz[j, race, HZ_FILM_K], rx)
+    return on * film_hd_from_exponent(_exp_anchored(e, hz, j, race, HZ_EXP), hz[j, race, HZ_FILM_K], rx)
 
 
 @kernel(no_runtime=True)

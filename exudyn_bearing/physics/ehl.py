@@ -119,7 +119,7 @@ def film_hd_ln_g_k(u_r, load, r_x, factor_k, e_prime, eta, ln_g):
     return on * film_hd_from_exponent(np.exp(film_hd_exponent(np.log(u), np.log(w), ln_g)), factor_k, r_x)
 
 
-@register_jitable  # callable from compiled code too: film_hd_ln_g_k and its kernel share it
+@register_jitable  # callable from compiled code too: film_hd_ln_g_k and the contact kernel share it
 def film_groups(u_r, load, r_x, e_prime, eta):
     """The dimensionless speed U = eta |u_r| / (E' R_x) and load W = Q / (E' R_x^2) of the film relations,
     each at least 1e-300 (their logarithms stay finite; the relations switch the film off at zero speed
@@ -128,14 +128,14 @@ def film_groups(u_r, load, r_x, e_prime, eta):
     return np.maximum(eta * np.abs(u_r) * c, 1e-300), np.maximum(load, 1e-300) * (e_prime * c * c)
 
 
-@register_jitable  # callable from compiled code too: film_hd_ln_g_k and its kernel share it
+@register_jitable  # callable from compiled code too: film_hd_ln_g_k and the contact kernel share it
 def film_hd_exponent(ln_u, ln_w, ln_g):
     """The exponent E = 0.68 ln U + 0.49 ln G - 0.073 ln W of :func:`film_thickness_hamrock_dowson`
     (h_min = 3.63 exp(E) (1 - exp(-0.68 k)) R_x) from the logarithms of the groups [-]."""
     return 0.68 * ln_u + 0.49 * ln_g - 0.073 * ln_w
 
 
-@register_jitable  # callable from compiled code too: film_hd_ln_g_k and its kernel share it
+@register_jitable  # callable from compiled code too: film_hd_ln_g_k and the contact kernel share it
 def film_hd_from_exponent(exp_e, factor_k, r_x):
     """h_min = 3.63 exp(E) (1 - exp(-0.68 k)) R_x [m] of :func:`film_thickness_hamrock_dowson` from
     exp(E) (:func:`film_hd_exponent`), the ellipticity factor (:func:`film_hd_ellipticity_factor`)
@@ -218,9 +218,6 @@ def film_thickness_central_hamrock_dowson(u_r, load, r_x, kappa, e_prime, eta, x
 
 
 _film_central_hd = kernel(film_thickness_central_hamrock_dowson)
-_film_groups = kernel(film_groups)
-_film_hd_exponent = kernel(film_hd_exponent)
-_film_hd_from_exponent = kernel(film_hd_from_exponent)
 
 
 _film_hd_ln_g_k = kernel(film_hd_ln_g_k)
