@@ -12,7 +12,7 @@ upgrade, :func:`_drop_stale_caches` hashes all kernel sources at import and
 clears the package's numba cache files when the hash differs from the one
 stored beside them.
 
-Compiling the kernels a run needs takes about 17-30 s of CPU time on the 2-core
+Compiling the kernels a run needs takes about 15-30 s of CPU time on the 2-core
 test machine (once per installation and after every update; ``python
 validation/bench_kernel_ab.py --cold 3`` measures it, ``python
 validation/profile_reference.py --compile`` lists what compiles); :func:`announce_compilation` says so on
@@ -134,11 +134,10 @@ _copy_inlined_blocks_with_one_memo()
 
 
 #: The line :func:`announce_compilation` prints (measured with an empty cache on the 2-core
-#: test machine: 16.4-28.5 s from import to the end of the README's first reference run in
-#: single fresh processes, 16.7 s the median of three in validation/REPORT.md's last run (25.8 s in
-#: the one before, on a busier day); several times that when the machine is busy; a warm start
-#: takes 1-3 s).
-COMPILE_NOTICE = ("exudyn_bearing: compiling the numba kernels (first run after installing or updating; about 17-30 s, "
+#: test machine: 15.3-28.5 s from import to the end of the README's first reference run in
+#: single fresh processes, 15.4 s the median of three in validation/REPORT.md's last run (25.8 s in
+#: a run on a busier day); several times that when the machine is busy; a warm start takes 1-3 s).
+COMPILE_NOTICE = ("exudyn_bearing: compiling the numba kernels (first run after installing or updating; about 15-30 s, "
                   "up to a minute on a busy machine; later runs load them from the cache)")
 _announced = False
 
@@ -249,8 +248,9 @@ def kernel(fn=None, *, no_runtime=False, internal=False, **kw):
     integrators' ring force and sampling, the kick-drift, the kinetic energy
     and the global diagnostics) are ``inline="always"``: numba copies them
     into their caller instead of running its compilation pipeline once more
-    for each (about 0.1-0.7 s apiece on a cold start, 1.1 s in all on the
-    README's scene), with bitwise equal results and step time
+    for each (about 0.1-0.7 s apiece; the cold start of the README's scene
+    15.7 against 16.4 s, ``validation/bench_kernel_ab.py --cold 3 --baseline
+    95cba4f``), with bitwise equal results and step time
     (``validation/bench_kernel_ab.py --baseline 95cba4f``). Inlining the small
     physics relations as well saved nothing measurable.
     """
