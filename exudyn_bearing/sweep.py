@@ -179,7 +179,9 @@ def _run_case(name, spec, out_dir, caught) -> str:
     while True:
         mark = len(caught)
         try:
-            run = simulate(bearing, sc, engine=engine, lubricant=lub)
+            # no progress line of the case's own: the sweep keeps one for all cases, and the automatic lines
+            # of long cases on parallel workers would overwrite each other and the sweep's
+            run = simulate(bearing, sc, engine=engine, lubricant=lub, progress=False)
             why = next((str(w.message) for w in caught[mark:] if issubclass(w.category, StepSizeWarning)), None)
         except SimulationError as exc:
             if len(retries) == refine:

@@ -15,6 +15,7 @@ import pytest
 
 from exudyn_bearing import StepSizeWarning, load_bearing
 from exudyn_bearing import sweep as sw
+from exudyn_bearing.sweep import run_sweep
 from exudyn_bearing.datasets import build_dataset, dataset_cases, read_index
 from exudyn_bearing.model.scenario import Scenario
 from exudyn_bearing.model.stability import SimulationError, stable_step
@@ -120,6 +121,52 @@ def test_a_signal_stops_a_dataset_with_one_line_and_the_conventional_status(tmp_
         assert json.loads((tmp_path / "ds" / "index.json").read_text())["counts"]["pending"] == 2
     finally:
         _cleanup(proc, workers)
+
+
+# -- progress lines: one per sweep, and an interrupted run ends its own -------------------------------------------
+def test_the_cases_of_a_sweep_print_no_progress_line_of_their_own(tmp_path, monkeypatch):
+    """Long cases would print the engine's automatic progress line; on parallel workers those lines overwrite each
+    other and the sweep's own (and broke the one-line stop message of the signal tests above)."""
+    seen = []
+
+    def recording(bearing, scenario, **kw):
+        seen.append(kw.get("progress", "not given"))
+        return real(bearing, scenario, **kw)
+
+    real = sw.simulate
+    monkeypatch.setattr(sw, "simulate", recording)
+    cases = {"c": dict(bearing="6208", scenario=dict(Fr=1000.0, t_end=1e-3, dt=5e-6, tangential="implicit"))}
+    run_sweep(cases, tmp_path, workers=1, progress=False)
+    assert seen == [False]
+
+
+def test_an_interrupted_run_ends_its_progress_line(monkeypatch, capsys):
+    """Ctrl-C (or an error) after a progress line (printed with a carriage return and no newline) ends that line,
+    so that the traceback or the stop message that follows starts a line of its own."""
+    import exudyn_bearing.solvers.reference.engine as engine_module
+
+    class Clock:  # one second per reading: every chunk prints its progress line
+        now = 0.0
+
+        def perf_counter(self):
+            Clock.now += 1.0
+            return Clock.now
+
+    real, calls = engine_module.run_verlet, []
+
+    def interrupted(n_steps, *args):
+        calls.append(n_steps)
+        if len([n for n in calls if n > 0]) == 2:
+            raise KeyboardInterrupt
+        return real(n_steps, *args)
+
+    monkeypatch.setattr(engine_module, "time", Clock())
+    monkeypatch.setattr(engine_module, "run_verlet", interrupted)
+    eng = engine_module.ReferenceEngine("6208", Scenario(Fr=1000.0, t_end=2e-3, dt=5e-6, tangential="implicit"))
+    with pytest.raises(KeyboardInterrupt):
+        eng.run(progress=True, chunk_steps=100)
+    err = capsys.readouterr().err
+    assert "[reference] t =" in err and err.endswith("\n"), repr(err)
 
 
 # -- datasets: failures, per-case step, refinement ---------------------------------------------------------

@@ -127,27 +127,34 @@ class ReferenceEngine:
         hist[:, H_E1:] = frames
         wall0 = time.perf_counter()
         last_print = wall0
-        while done < n_steps:
-            m = min(chunk, n_steps - done)
-            sl = slice(k_samp, n_samples)
-            steps, ns, status = integrate(
-                m, done * s.dt, p, self.table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring,
-                every, done, buf["t"][sl], buf["glob"][sl], buf["diag"][sl], buf["cage_load"][sl],
-                buf["xb"][sl], buf["vb"][sl], buf["wb"][sl], buf["xc"][sl], buf["vc"][sl], buf["ring"][sl],
-                sig_every, sig_acc, s_sig, glob, defect_path, ellipse_path, signal_path, loss_path)
-            done += steps
-            k_samp += ns
-            if status != 0:
-                t_fail = done * s.dt
-                what = "non-finite" if status == 1 else "runaway (overlap above 5 % of the ball radius)"
-                raise runaway_error("dt", t_fail, self.stable, what, step=f" with dt = {s.dt:.3g} s", remedy="dt")
-            if progress and (time.perf_counter() - last_print > 0.5 or done >= n_steps):
-                last_print = time.perf_counter()
-                el = time.perf_counter() - wall0
-                frac = done / n_steps
-                eta = el / frac * (1 - frac) if frac > 0 else float("nan")
-                print(f"\r[reference] t = {done * s.dt:.4f}/{s.t_end:.4f} s  {100 * frac:5.1f} %  "
-                      f"wall {el:6.1f} s  eta {eta:6.1f} s", end="", file=sys.stderr, flush=True)
+        line_open = False  # a progress line printed, not yet ended
+        try:
+            while done < n_steps:
+                m = min(chunk, n_steps - done)
+                sl = slice(k_samp, n_samples)
+                steps, ns, status = integrate(
+                    m, done * s.dt, p, self.table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring,
+                    every, done, buf["t"][sl], buf["glob"][sl], buf["diag"][sl], buf["cage_load"][sl],
+                    buf["xb"][sl], buf["vb"][sl], buf["wb"][sl], buf["xc"][sl], buf["vc"][sl], buf["ring"][sl],
+                    sig_every, sig_acc, s_sig, glob, defect_path, ellipse_path, signal_path, loss_path)
+                done += steps
+                k_samp += ns
+                if status != 0:
+                    t_fail = done * s.dt
+                    what = "non-finite" if status == 1 else "runaway (overlap above 5 % of the ball radius)"
+                    raise runaway_error("dt", t_fail, self.stable, what, step=f" with dt = {s.dt:.3g} s", remedy="dt")
+                if progress and (time.perf_counter() - last_print > 0.5 or done >= n_steps):
+                    last_print = time.perf_counter()
+                    el = time.perf_counter() - wall0
+                    frac = done / n_steps
+                    eta = el / frac * (1 - frac) if frac > 0 else float("nan")
+                    print(f"\r[reference] t = {done * s.dt:.4f}/{s.t_end:.4f} s  {100 * frac:5.1f} %  "
+                          f"wall {el:6.1f} s  eta {eta:6.1f} s", end="", file=sys.stderr, flush=True)
+                    line_open = True
+        except BaseException:  # an error or Ctrl-C: close the progress line, so that what follows starts a line
+            if line_open:
+                print(file=sys.stderr)
+            raise
         wall = time.perf_counter() - wall0
         if progress:
             print(file=sys.stderr)
