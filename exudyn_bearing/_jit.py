@@ -258,7 +258,7 @@ def kernel(fn=None, *, no_runtime=False, internal=False, **kw):
     if no_runtime and NO_RUNTIME_SUPPORTED:
         opts["_nrt"] = False
     if internal:
-        opts.update(no_cpython_wrapper=True, no_cfunc_wrapper=True)
+        opts["no_cpython_wrapper"] = True
     opts.update(kw)
     if fn is None:
         return functools.partial(_njit, options=opts)

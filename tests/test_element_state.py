@@ -82,12 +82,11 @@ def test_stale_coordinate_views_are_taken_anew(mode):
 
 
 def test_engine_speed_function_is_the_protocols_speed():
-    # the engine hands the element a closure instead of Scenario.omega_at: on ramps, the steady
-    # phase and at rest it must return omega_at's value to the last bit (the runs stay bitwise the same)
-    from exudyn_bearing.solvers.element.engine import speed_function
-
+    # the engine hands the element Scenario.speed_function(), a closure, instead of Scenario.omega_at:
+    # on ramps, the steady phase and at rest it must return omega_at's value to the last bit (the runs
+    # stay bitwise the same)
     sc = eb.Scenario.papers_protocol(omega=500.0, t_ramp_up=0.02, t_steady=0.06, t_ramp_down=0.02)
-    f = speed_function(sc)
+    f = sc.speed_function()
     times = np.concatenate([np.linspace(-1e-3, 0.11, 1001), [0.0, 0.02, 0.08, 0.1]])
     assert [f(t) for t in times] == [sc.omega_at(t) for t in times]
     # the protocol's values by hand (to round-off: the compiled ramp may divide by a reciprocal)

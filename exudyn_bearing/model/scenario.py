@@ -356,11 +356,23 @@ class Scenario:
         """Steps per signal sample (0: no signals)."""
         return 0 if self.signal_dt is None else int(round(self.signal_dt / self.dt))
 
+    def _profile(self):
+        """(omega, t_ramp_up, t_steady, t_ramp_down) as floats: the protocol's arguments of
+        :func:`~exudyn_bearing.model.motion.omega_profile`."""
+        return float(self.omega), float(self.t_ramp_up), float(self.t_steady), float(self.t_ramp_down)
+
     def omega_at(self, t):
         """Prescribed inner-ring speed omega(t) [rad/s] of the protocol (the
         kernels' :func:`~exudyn_bearing.model.motion.omega_profile`)."""
-        return float(omega_profile(float(t), float(self.omega), float(self.t_ramp_up), float(self.t_steady),
-                                   float(self.t_ramp_down)))
+        return float(omega_profile(float(t), *self._profile()))
+
+    def speed_function(self):
+        """omega(t) [rad/s] of the protocol as a closure over its numbers: the values of
+        :meth:`omega_at`, without its attribute look-ups and conversions at every call (about half
+        of its 0.6 us), for a caller that evaluates it at every step (the Exudyn element's
+        ``innerRingSpeed``, or a user's own speed function)."""
+        w, up, steady, down = self._profile()
+        return lambda t: omega_profile(float(t), w, up, steady, down)
 
     def replace(self, **changes) -> "Scenario":
         return dataclasses.replace(self, **changes)

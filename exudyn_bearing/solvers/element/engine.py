@@ -11,13 +11,12 @@ import time
 
 from ...data import InputError, Lubricant, load_bearing
 from ...model.initial_state import initial_state, ring_mass_estimate
-from ...model.motion import omega_profile
 from ...model.scenario import Scenario
 from ...model.stability import SimulationError, stable_step
 from .console import filter_exudyn_notes
 from .element import BallBearingElement
 
-__all__ = ["ExudynEngine", "SOLVERS", "solve_dynamic", "speed_function"]
+__all__ = ["ExudynEngine", "SOLVERS", "solve_dynamic"]
 
 #: Scenario integrator -> Exudyn explicit solver.
 SOLVERS = {"verlet": "VelocityVerlet", "rk4": "RK44"}
@@ -57,17 +56,6 @@ def solve_dynamic(mbs, settings, solverType=None, quiet=True):
             raise err from None
 
 
-def speed_function(scenario: Scenario):
-    """The prescribed inner-ring speed omega(t) [rad/s] of ``scenario``'s
-    protocol, ``scenario.omega_at``, as a closure over the protocol's numbers:
-    the element calls it at every force evaluation, and the closure skips
-    omega_at's attribute look-ups and conversions (about 0.3 of its 0.6 us
-    per call); the same compiled profile, the same values."""
-    w, up, steady, down = (float(scenario.omega), float(scenario.t_ramp_up), float(scenario.t_steady),
-                           float(scenario.t_ramp_down))
-    return lambda t: omega_profile(float(t), w, up, steady, down)
-
-
 class ExudynEngine:
     """Run a :class:`~exudyn_bearing.model.scenario.Scenario` with the Exudyn element; ``run()`` returns the
     :class:`~exudyn_bearing.model.record.RunRecord`."""
@@ -102,7 +90,7 @@ class ExudynEngine:
             mbs, b, m_inner, m_outer, lubricant=lubricant, cage=s.cage, lubrication=s.lubrication,
             friction=s.friction, tangential=s.tangential, hertzModel=s.hertz, film=s.film,
             guideClearance=s.guide_clearance, muDry=s.mu_dry, regularizingSpeed=s.regularizing_speed,
-            tangentialStiffnessRatio=s.tangential_stiffness_ratio, stepSize=s.dt, innerRingSpeed=speed_function(s),
+            tangentialStiffnessRatio=s.tangential_stiffness_ratio, stepSize=s.dt, innerRingSpeed=s.speed_function(),
             initialOmega=s.omega, initialLoad=(s.Fr, s.Fa), initial=s.initial, sampleInterval=s.sample_dt,
             mode=mode, subSteps=sub_steps, contactLaw=s.contact_law, powerLaw=s.power_law,
             tractionLevel=s.traction_level, traction=s.traction, nStrips=s.n_strips, nAcross=s.n_across,

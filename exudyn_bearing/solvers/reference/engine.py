@@ -151,13 +151,10 @@ class ReferenceEngine:
                     print(f"\r[reference] t = {done * s.dt:.4f}/{s.t_end:.4f} s  {100 * frac:5.1f} %  "
                           f"wall {el:6.1f} s  eta {eta:6.1f} s", end="", file=sys.stderr, flush=True)
                     line_open = True
-        except BaseException:  # an error or Ctrl-C: close the progress line, so that what follows starts a line
+            wall = time.perf_counter() - wall0
+        finally:  # end the progress line, also when an error or Ctrl-C stops the run (what follows starts a line)
             if line_open:
                 print(file=sys.stderr)
-            raise
-        wall = time.perf_counter() - wall0
-        if progress:
-            print(file=sys.stderr)
         for k in buf:
             buf[k] = buf[k][:k_samp]
         if sig_every:
