@@ -164,7 +164,8 @@ class Scene:
         run_verlet(n, self.t, self.p, self.table, self.xb, self.vb, self.wb, self.xc, self.vc, self.ring,
                    self.hist, self.hz, self.fb, self.tb, self.fc, self.fring, sample_every, 0, e, e2,
                    np.zeros((0, z, 2, NDIAG)), np.zeros((0, z, 2)), e3, e3, e3, e3, e3, np.zeros((0, 6)),
-                   0, np.zeros(8), np.zeros((0, 8)), self.glob, *self.paths, None)
+                   0, np.zeros(8), np.zeros((0, 8)), self.glob, self.diag, self.cage_load, self.rings, self.fr,
+                   *self.paths, None)
         self.t += n * self.dt
 
     def forces(self, p, reps, want=False):

@@ -99,9 +99,9 @@ def kick_drift(h, dt, xb, vb, wb, xc, vc, fb, tb, fc, inv_mb, inv_ib, inv_mz):
             xc[j, d] += dt * vc[j, d]
 
 
-@kernel
 def ring_poses():
-    """Ring pose array (2, RING_N): both rings at the origin, at rest, unrotated."""
+    """Ring pose array (2, RING_N): both rings at the origin, at rest, unrotated (plain NumPy: the
+    compiled callers get it from Python)."""
     rings = np.zeros((2, RING_N))
     for r in range(2):
         rings[r, 6] = 1.0

@@ -101,6 +101,7 @@ class ReferenceEngine:
         s_sig = np.zeros((n_steps // sig_every if sig_every else 0, 1 + NSIGNAL))
         sig_acc = np.zeros(NSIGNAL + 1)
         glob = np.zeros(NGLOBAL)  # the run's energy integrals accumulate here
+        work = (np.zeros((z, 2, NDIAG)), np.zeros((z, 2)), ring_poses(), np.zeros((2, 6)))  # diag, cage_load, rings, fr
         # compile only the code paths the scene uses (defects, ellipse traction, signals)
         defect_path, ellipse_path = scene_paths(p)
         loss_path = scene_loss_path(p)
@@ -115,15 +116,16 @@ class ReferenceEngine:
         integrate(0, 0.0, p, self.table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring, every, 0,
                   buf["t"][:0], buf["glob"][:0], buf["diag"][:0], buf["cage_load"][:0], buf["xb"][:0],
                   buf["vb"][:0], buf["wb"][:0], buf["xc"][:0], buf["vc"][:0], buf["ring"][:0],
-                  sig_every, sig_acc, s_sig, glob, defect_path, ellipse_path, signal_path, loss_path)
+                  sig_every, sig_acc, s_sig, glob, *work, defect_path, ellipse_path, signal_path, loss_path)
         # forces at t = 0 (Verlet needs them on entry); the ball body frames start the first step unturned.
         # evaluate's Python body: its three calls run the specialisations the integrator has just compiled
         # (a compiled evaluate linked, optimised and compiled the contact kernel once more: 0.8 s of CPU of a
         # cold start, python validation/profile_reference.py --compile)
         frames = hist[:, H_E1:].copy()
         first = getattr(evaluate, "py_func", evaluate)  # evaluate itself where numba's JIT is disabled
-        first(0.0, p, self.table, xb, vb, wb, xc, vc, ring, ring_poses(), hist, hz, fb, tb, fc, np.zeros((2, 6)), fring,
-              np.zeros(NGLOBAL), np.zeros((z, 2, NDIAG)), np.zeros((z, 2)), False, defect_path, ellipse_path, loss_path)
+        diag, cage_load, rings, fr = work
+        first(0.0, p, self.table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc, fr, fring,
+              np.zeros(NGLOBAL), diag, cage_load, False, defect_path, ellipse_path, loss_path)
         hist[:, H_E1:] = frames
         wall0 = time.perf_counter()
         last_print = wall0
@@ -136,7 +138,7 @@ class ReferenceEngine:
                     m, done * s.dt, p, self.table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring,
                     every, done, buf["t"][sl], buf["glob"][sl], buf["diag"][sl], buf["cage_load"][sl],
                     buf["xb"][sl], buf["vb"][sl], buf["wb"][sl], buf["xc"][sl], buf["vc"][sl], buf["ring"][sl],
-                    sig_every, sig_acc, s_sig, glob, defect_path, ellipse_path, signal_path, loss_path)
+                    sig_every, sig_acc, s_sig, glob, *work, defect_path, ellipse_path, signal_path, loss_path)
                 done += steps
                 k_samp += ns
                 if status != 0:

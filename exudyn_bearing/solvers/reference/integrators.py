@@ -26,7 +26,7 @@ from ..._jit import kernel
 from ...model.contact import accumulate_energy, forces
 from ...model.layout import (NSIGNAL, P_AXIAL_FREE, P_CAGE, P_DT, P_FA, P_FR, P_IB, P_MAX_OVERLAP, P_MB, P_MR,
                              P_MZ, P_NDEF, P_T_DOWN, P_T_STEADY, P_T_UP, P_W_MAX, R_ANGLE)
-from ...model.motion import kick_drift, omega_profile, ring_poses, spin_angle
+from ...model.motion import kick_drift, omega_profile, spin_angle
 
 __all__ = ["run_verlet", "run_rk4", "evaluate"]
 
@@ -120,11 +120,21 @@ def _finite(a):
     return True
 
 
-@kernel
+@kernel(inline="always")
+def _finite_ring(ring):
+    """True when the ring state (6,) is finite (the 2-D check on a reshaped view made the integrator
+    need numba's memory runtime for the view)."""
+    for d in range(ring.shape[0]):
+        if not math.isfinite(ring[d]):
+            return False
+    return True
+
+
+@kernel(no_runtime=True)
 def run_verlet(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring,
                sample_every, step0, s_t, s_glob, s_diag, s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring,
-               sig_every, sig_acc, s_sig, glob, defect_path=True, ellipse_path=True, signal_path=True,
-               loss_path=True):
+               sig_every, sig_acc, s_sig, glob, diag, cage_load, rings, fr, defect_path=True, ellipse_path=True,
+               signal_path=True, loss_path=True):
     """Velocity-Verlet (the DEM papers' scheme) for ``n_steps`` steps from t0.
 
     Forces must hold the values at t0 on entry; damping and friction see the
@@ -133,6 +143,11 @@ def run_verlet(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb
     buffers; with ``sig_every`` > 0 the signals go to ``s_sig`` (module
     docstring). ``glob`` (NGLOBAL) is kept by the caller for the whole run:
     its drive_work and dissipated_work accumulate the powers of every step.
+    ``diag`` (Z, 2, NDIAG), ``cage_load`` (Z, 2), ``rings`` (2, RING_N, from
+    :func:`~exudyn_bearing.model.motion.ring_poses`) and ``fr`` (2, 6) are
+    the force evaluation's work arrays, allocated by the caller (every entry
+    is written before it is read; numba's own np.zeros compiled for about
+    0.4 s of a cold start).
     Returns (steps done, samples written, status): status 0 ok,
     1 non-finite state, 2 runaway overlap (> P_MAX_OVERLAP R_b).
     ``defect_path``, ``ellipse_path``, ``loss_path`` as in :func:`~exudyn_bearing.model.contact.forces`;
@@ -146,10 +161,6 @@ def run_verlet(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb
     inv_ib = 1.0 / p[P_IB]
     inv_mz = 1.0 / p[P_MZ] if p[P_CAGE] > 0.5 else 0.0
     inv_mr = 1.0 / p[P_MR]
-    diag = np.zeros((z, 2, s_diag.shape[3]))
-    cage_load = np.zeros((z, 2))
-    rings = ring_poses()
-    fr = np.zeros((2, 6))
     n_samp = np.int64(0)  # not the literal 0: that compiled a second copy of _store
     t = t0
     for step in range(n_steps):
@@ -180,7 +191,7 @@ def run_verlet(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb
             _store(n_samp, t, glob, diag, cage_load, xb, vb, wb, xc, vc, ring,
                    s_t, s_glob, s_diag, s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring)
             n_samp += 1
-            if not (_finite(xb) and _finite(vb) and _finite(ring.reshape((1, ring.shape[0])))):
+            if not (_finite(xb) and _finite(vb) and _finite_ring(ring)):
                 return step + 1, n_samp, 1
         if worst > p[P_MAX_OVERLAP] or not math.isfinite(worst):
             return step + 1, n_samp, 2
@@ -246,18 +257,15 @@ def _rk_set(y0x, y0v, y0w, y0xc, y0vc, y0r, kx, kv, kw, kxc, kvc, kr, stage, f,
 @kernel
 def run_rk4(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, fc, fring,
             sample_every, step0, s_t, s_glob, s_diag, s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring,
-            sig_every, sig_acc, s_sig, glob, defect_path=True, ellipse_path=True, signal_path=True,
-               loss_path=True):
+            sig_every, sig_acc, s_sig, glob, diag, cage_load, rings, fr, defect_path=True, ellipse_path=True,
+            signal_path=True, loss_path=True):
     """Classical fourth-order Runge-Kutta, for history-free scenes (same
     interface and status codes as :func:`run_verlet`; it records no signals
     and keeps no ball orientation: Scenario allows neither with rk4). The
-    energy integrals take the stage powers with the method's weights."""
+    energy integrals take the stage powers with the method's weights. The
+    work arrays ``diag``, ``cage_load``, ``rings``, ``fr`` as in run_verlet."""
     dt = p[P_DT]
     z = xb.shape[0]
-    diag = np.zeros((z, 2, s_diag.shape[3]))
-    cage_load = np.zeros((z, 2))
-    rings = ring_poses()
-    fr = np.zeros((2, 6))
     kx = np.zeros((4, z, 3))
     kv = np.zeros((4, z, 3))
     kw = np.zeros((4, z, 3))
@@ -310,6 +318,6 @@ def run_rk4(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, f
             _store(n_samp, t + dt, glob, diag, cage_load, xb, vb, wb, xc, vc, ring,
                    s_t, s_glob, s_diag, s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring)
             n_samp += 1
-        if not (_finite(xb) and _finite(vb) and _finite(ring.reshape((1, ring.shape[0])))):
+        if not (_finite(xb) and _finite(vb) and _finite_ring(ring)):
             return step + 1, n_samp, 1
     return n_steps, n_samp, 0
