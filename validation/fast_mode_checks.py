@@ -1,8 +1,6 @@
 """Measurements behind the limits stated for the fast mode, the 7208 cage and the peer check.
 
-1. Fast mode against sub-steps on the 6208 test scene (point-mass ring of
-   81 g, prescribed spin): q_max_inner and cage speed for 1-6 sub-steps of
-   5 us, and the ring's stable-step estimate (ring_stable_step).
+1. (The fast mode against sub-steps and ring mass: validation/fast_mode_limits.py.)
 2. Fast mode on a rigid rotor (2.5 kg) held by two 6208 bearings 0.2 m
    apart, motor torque 5 N m from rest, radial load 24.5 / 600 / 3000 N:
    mean cage speed of bearing A over 10-20 ms (sampled every 20 us) and at
@@ -48,8 +46,6 @@ from exudyn.itemInterface import (LoadForceVector, LoadTorqueVector, MarkerBodyR
 import exudyn_bearing as eb
 from exudyn_bearing.solvers.element.engine import ExudynEngine, solve_dynamic
 from exudyn_bearing.model.stability import SimulationError
-from exudyn_bearing.model.initial_state import ring_mass_estimate
-from exudyn_bearing.model.stability import ring_stable_step
 from exudyn_bearing.solvers.reference import ReferenceEngine
 
 HERE = Path(__file__).resolve().parent
@@ -59,23 +55,6 @@ def _first_error_line(exc):
     """The element's own message (the line naming stepSize) out of Exudyn's wrapped error."""
     lines = [ln for ln in str(exc).splitlines() if "stepSize" in ln] or str(exc).splitlines() or ["failed"]
     return lines[0].replace("RuntimeError: ", "").strip()[:200]
-
-
-def substeps_6208():
-    sc = eb.Scenario(Fr=3000.0, omega=500.0, t_end=0.04, dt=5e-6, tangential="implicit", sample_dt=1e-4)
-    ref = eb.simulate("6208", sc).summary()
-    b = eb.catalog["6208"]
-    rows = {"reference": {k: ref[k] for k in ("q_max_inner", "cage_speed")},
-            "ring_stable_step": ring_stable_step(b, sc, ring_mass_estimate(b))}
-    print(f"6208 scene: ring stable-step estimate {rows['ring_stable_step']:.3g} s")
-    for sub in range(1, 7):
-        try:
-            s = eb.Results(ExudynEngine("6208", sc, mode="fast", sub_steps=sub).run()).summary()
-            rows[f"fast {sub}"] = {k: s[k] for k in ("q_max_inner", "cage_speed")}
-        except Exception as exc:  # a blow-up is a result here
-            rows[f"fast {sub}"] = {"error": _first_error_line(exc)}
-        print(f"6208 scene, fast mode {sub} sub-step(s): {rows[f'fast {sub}']}")
-    return rows
 
 
 def rotor(load, sub, dt=5e-6):
@@ -278,7 +257,8 @@ def main():
         (out / "fast_mode_light_load.json").write_text(json.dumps(
             {f"{load:g} N": light_load_sub_steps(load) for load in (50.0, 5.0)}, indent=2))
         return
-    report = {"light_load_sub_steps": light_load_sub_steps(), "light_load_5N": light_load_sub_steps(5.0), "substeps_6208": substeps_6208(), "rotor_sub_steps": rotor_sub_steps(),
+    report = {"light_load_sub_steps": light_load_sub_steps(), "light_load_5N": light_load_sub_steps(5.0),
+              "rotor_sub_steps": rotor_sub_steps(),
               "rotor_scenario_whirl": rotor_scenario_whirl(), "solvers_6208": solvers_6208(),
               "cage_7208": cage_7208(),
               "builtin_own_inertia": builtin_own_inertia()}

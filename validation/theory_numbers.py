@@ -16,7 +16,7 @@ import numpy as np
 import exudyn_bearing as eb
 from exudyn_bearing.data import default_lubricant
 from exudyn_bearing.model.initial_state import ring_mass_estimate
-from exudyn_bearing.model.stability import explicit_step_factor, ring_stable_step, stable_step
+from exudyn_bearing.model.stability import FAST_STEP_SHARE, explicit_step_factor, ring_stable_step, stable_step
 from exudyn_bearing.physics import ehl, friction, hertz, kinematics
 from exudyn_bearing.physics import load_distribution as ld
 from exudyn_bearing.physics.geometry import raceway_radii
@@ -222,9 +222,10 @@ def dynamics():
         line(f"stable step {label}", f"{s.dt * 1e6:.3f} us (normal {s.normal * 1e6:.2f}, tangential "
              f"{s.tangential * 1e6:.2f}, friction {s.friction * 1e6:.2f}, cage {s.cage * 1e6:.2f} us; "
              f"limited by {s.limited_by})")
-    line("6208 ring stable step (81 g estimate, 3000 N)",
-         ring_stable_step(B6208, eb.Scenario(Fr=3000.0, omega=500.0), ring_mass_estimate(B6208)) * 1e6,
-         "{:.1f}", "us")
+    for label, mass in (("81 g estimate", ring_mass_estimate(B6208)), ("1.25 kg", 1.25)):
+        h = ring_stable_step(B6208, eb.Scenario(Fr=3000.0, omega=500.0), mass)
+        line(f"6208 ring stable step ({label}, 3000 N); fast-mode limit, 5 us sub-steps",
+             f"{h * 1e6:.1f} us; {FAST_STEP_SHARE * h * 1e6:.1f} us, {max(1, int(FAST_STEP_SHARE * h / 5e-6))}")
 
 
 # -- load_distribution.md -----------------------------------------------------------------

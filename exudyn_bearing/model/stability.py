@@ -378,14 +378,24 @@ def ring_contact_stiffness(bearing: BallBearing, scenario: Scenario, race: str =
     return float(np.sum(hertz.tangent_stiffness(ki if race == "inner" else ko, q)))
 
 
+#: Share of the ring's stable-step estimate (:func:`ring_stable_step`) that the fast mode's Exudyn step
+#: may take. The fast mode couples ring and balls staggered (the ring, in Exudyn, gets the mean reaction of
+#: the balls' sub-steps), and that coupling, not the ring's own Verlet limit, sets the step: in
+#: ``validation/fast_mode_limits.py`` (6208, ring masses 81 g ... 5 kg, F_r = 3000 and 600 N) every run
+#: with H up to 0.26 of the estimate kept q_max_inner within 0.2 % of the reference engine, the first run
+#: off by more than 0.5 % came at 0.30 ... 0.80 of it, and from 0.5 ... 1.1 of it a growing ring vibration
+#: put the loads several times too high or blew the run up.
+FAST_STEP_SHARE = 0.3
+
+
 def ring_stable_step(bearing: BallBearing, scenario: Scenario, ring_mass: float, race: str = "inner") -> float:
     """Largest stable velocity-Verlet step [s] for a ring of mass ``ring_mass``
-    on the ball contacts of its race (the Exudyn step of the fast mode).
+    on the ball contacts of its race, alone (the balls held).
 
-    2/omega with omega^2 = :func:`ring_contact_stiffness` / m_ring. No safety
+    2/omega with omega^2 = :func:`ring_contact_stiffness` / m_ring, no safety
     factor: the 81 g ring of the 6208 test scene at F_r = 3000 N gets
-    22.8 us; the fast mode runs at 20 us, puts Q_max 5.6 times too high at 25 us and blows up
-    at 30 us (validation/fast_mode_checks.py). For a ring on a rigid body
+    22.8 us. The fast mode's Exudyn step must stay well below it
+    (:data:`FAST_STEP_SHARE`). For a ring on a rigid body
     with several bearings the element uses the body's mass matrix and all
     its bearings (``BallBearingElement.ringStableStep``).
     """

@@ -48,11 +48,13 @@ mean reaction: the impulse Exudyn's velocity-Verlet step gives the ring then
 equals the sum of the impulses the balls received, without lag. With
 ``subSteps=1`` (default) it reproduces the body mode at about 0.6 of its cost.
 More sub-steps spread the per-step overhead further; the Exudyn step H =
-subSteps * stepSize then also has to integrate the ring bodies against the
-contact stiffness: keep it below ``ringStableStep`` (estimated from the ring
-bodies' mass matrices and the contact stiffness of all bearings on them at
-their ``initialLoad``; a larger step warns). See validation/REPORT.md for
-the measured limits.
+subSteps * stepSize then also integrates the ring bodies against the contact
+stiffness, staggered with the balls: keep it below ``fastStepLimit``, 0.3 of
+``ringStableStep`` (estimated from the ring bodies' mass matrices and the
+contact stiffness of all bearings on them at their ``initialLoad``); a
+larger step warns. Heavy rings (a ring on a rotor) take more sub-steps than
+a bare ring, which takes one or two. See validation/REPORT.md for the
+measured limits (``validation/fast_mode_limits.py``).
 
 Defects and signals (both modes): ``defects`` (:class:`exudyn_bearing.data.Defect`
 objects or dicts) puts localized spalls into the contact model; an
@@ -118,7 +120,8 @@ from ...model.motion import ring_poses
 from ...model.parameters import scene_parameters
 from ...physics.losses import HYSTERESIS_LOSS_FACTOR_STEEL
 from ...model.scenario import Scenario
-from ...model.stability import StepSizeWarning, ring_contact_stiffness, stable_step, step_warning
+from ...model.stability import (FAST_STEP_SHARE, StepSizeWarning, ring_contact_stiffness, stable_step,
+                                step_warning)
 from ...physics import hertz
 from ...physics.contact_slip import DEFAULT_N_ACROSS, DEFAULT_N_STRIPS
 from . import kernels as EK
@@ -220,8 +223,11 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
     stable : StableStep
         Stable-step estimate of the ball contacts (``stable.dt``).
     ringStableStep : float
-        Fast mode: the largest Exudyn step [s] for the ring bodies on the
-        ball contacts of all bearings on them (property, see its docstring).
+        Fast mode: the largest stable Verlet step [s] of the ring bodies alone
+        on the ball contacts of all bearings on them (property, see its docstring).
+    fastStepLimit : float
+        Fast mode: the largest Exudyn step [s] that keeps the ball loads, 0.3
+        of ``ringStableStep`` (property).
 
     Options are those of :func:`exudyn_bearing.CreateBallBearing`;
     ``initialLoad`` is (Fr, Fa) [N] or a radial load Fr; an invalid option
@@ -351,6 +357,13 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
                      if el._ring_mobility[rr] is not None)
             best = min(best, 2.0 / math.sqrt(w2))
         return best
+
+    @property
+    def fastStepLimit(self):
+        """Largest Exudyn step [s] of the fast mode (subSteps * stepSize) that keeps the ball loads:
+        ``FAST_STEP_SHARE`` (0.3) of ``ringStableStep`` (the staggered coupling of ring and balls, not the
+        ring's own Verlet limit, sets it: ``model.stability.FAST_STEP_SHARE``); a larger step warns."""
+        return FAST_STEP_SHARE * self.ringStableStep
 
     def _check_overlap(self, xb, poses, allowed):
         """Initial overlaps must not exceed what the analytic state (preload) gives."""

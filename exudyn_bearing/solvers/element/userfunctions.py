@@ -14,7 +14,7 @@ from ...model.contact import forces
 from ...model.layout import H_E1
 from ...model.load_range import pressure_excess
 from ...model.solver_types import IMPLICIT_SOLVERS, UNSTABLE_SOLVERS, settings_solver, unstable_solver_error
-from ...model.stability import StepSizeWarning, runaway_error, step_warning
+from ...model.stability import FAST_STEP_SHARE, StepSizeWarning, runaway_error, step_warning
 from ...physics import hertz
 from ...physics.geometry import raceway_radii
 from . import kernels as EK
@@ -402,16 +402,20 @@ class UserFunctionsMixin:
             self._signal_sample(t)
 
     def _check_fast_step(self, h, stacklevel=4):
-        """Warn (once) when the fast mode's Exudyn step ``h`` exceeds the ring
-        bodies' stable step or its ball sub-step the balls' stable step."""
+        """Warn (once) when the fast mode's Exudyn step ``h`` exceeds its limit
+        (``fastStepLimit``) or its ball sub-step the balls' stable step."""
         self._clock[3] = True
         dt = h / max(1, int(h / self._dt_sub + 0.5))
-        self._runaway_evidence()[1] = h > self.ringStableStep or dt > self.stable.dt
-        if h > self.ringStableStep:
-            warnings.warn(f"subSteps: the Exudyn step {h:.3g} s exceeds the ring bodies' stable-step estimate "
-                          f"{self.ringStableStep:.3g} s (ring bodies' inertia against their bearings' contact "
-                          "stiffness at initialLoad); the ring motion will be wrong or blow up: use fewer sub-steps",
-                          StepSizeWarning, stacklevel=stacklevel)
+        limit = self.fastStepLimit
+        self._runaway_evidence()[1] = h > limit or dt > self.stable.dt
+        if h > limit:
+            warnings.warn(f"subSteps: the Exudyn step {h:.3g} s exceeds the fast mode's limit {limit:.3g} s "
+                          f"({FAST_STEP_SHARE:g} of the ring bodies' stable-step estimate {self.ringStableStep:.3g} s: "
+                          "their inertia against their bearings' contact stiffness at initialLoad); the staggered "
+                          "coupling of ring and balls then puts the ball loads off by more than 0.5 % and, from "
+                          "about half the estimate on, grows a ring vibration that multiplies them or blows the run "
+                          f"up (validation/fast_mode_limits.py): use at most {max(1, int(limit / dt))} sub-steps of "
+                          f"{dt:.3g} s", StepSizeWarning, stacklevel=stacklevel)
         msg = step_warning(f"stepSize: the ball sub-step {dt:.3g} s", dt, self.stable)
         if msg:
             warnings.warn(msg, StepSizeWarning, stacklevel=stacklevel)
@@ -443,6 +447,7 @@ class UserFunctionsMixin:
             excess = pressure_excess([contacts[0][1] if low == 0 else 0.0], [contacts[1][1] if low == 1 else 0.0])
             if excess is not None:
                 raise runaway_error("load", t, self.stable, what, excess=(contacts[low][0], excess[0], excess[1]))
-        ring = (f" and the ring bodies' {self.ringStableStep:.3g} s for the fast mode's Exudyn step (subSteps * "
-                "stepSize)" if self.mode == "fast" and math.isfinite(self.ringStableStep) else "")
+        ring = (f" and the fast mode's limit {self.fastStepLimit:.3g} s for its Exudyn step (subSteps * stepSize; "
+                f"{FAST_STEP_SHARE:g} of the ring bodies' stable-step estimate)"
+                if self.mode == "fast" and math.isfinite(self.ringStableStep) else "")
         raise runaway_error("stepSize", t, self.stable, what, ring=ring)
