@@ -105,7 +105,7 @@ def test_fast_mode_element_counts_its_steps_and_wall_time(monkeypatch):
         return readings[0]
 
     monkeypatch.setattr(uf, "time", types.SimpleNamespace(perf_counter=perf_counter))
-    t_end, dt = 0.002, 2.5e-6  # two sub-steps of 2.5 us: within the fast mode's 6.9 us limit (no warning)
+    t_end, dt = 0.002, 2.5e-6  # two sub-steps of 2.5 us: within the fast mode's 5.7 us limit (no warning)
     for sub in (1, 2):
         eng = ExudynEngine("6208", eb.Scenario(t_end=t_end, dt=dt, tangential="implicit"), mode="fast",
                            sub_steps=sub)

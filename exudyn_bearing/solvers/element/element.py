@@ -49,7 +49,7 @@ equals the sum of the impulses the balls received, without lag. With
 ``subSteps=1`` (default) it reproduces the body mode at about 0.6 of its cost.
 More sub-steps spread the per-step overhead further; the Exudyn step H =
 subSteps * stepSize then also integrates the ring bodies against the contact
-stiffness, staggered with the balls: keep it below ``fastStepLimit``, 0.3 of
+stiffness, staggered with the balls: keep it below ``fastStepLimit``, 0.25 of
 ``ringStableStep`` (estimated from the ring bodies' mass matrices and the
 contact stiffness of all bearings on them at their ``initialLoad``); a
 larger step warns. Heavy rings (a ring on a rotor) take more sub-steps than
@@ -226,7 +226,7 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
         Fast mode: the largest stable Verlet step [s] of the ring bodies alone
         on the ball contacts of all bearings on them (property, see its docstring).
     fastStepLimit : float
-        Fast mode: the largest Exudyn step [s] that keeps the ball loads, 0.3
+        Fast mode: the largest Exudyn step [s] that keeps the ball loads, 0.25
         of ``ringStableStep`` (property).
 
     Options are those of :func:`exudyn_bearing.CreateBallBearing`;
@@ -361,7 +361,7 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
     @property
     def fastStepLimit(self):
         """Largest Exudyn step [s] of the fast mode (subSteps * stepSize) that keeps the ball loads:
-        ``FAST_STEP_SHARE`` (0.3) of ``ringStableStep`` (the staggered coupling of ring and balls, not the
+        ``FAST_STEP_SHARE`` (0.25) of ``ringStableStep`` (the staggered coupling of ring and balls, not the
         ring's own Verlet limit, sets it: ``model.stability.FAST_STEP_SHARE``); a larger step warns."""
         return FAST_STEP_SHARE * self.ringStableStep
 
