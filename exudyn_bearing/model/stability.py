@@ -384,7 +384,8 @@ def ring_contact_stiffness(bearing: BallBearing, scenario: Scenario, race: str =
 #: ``validation/fast_mode_limits.py`` (6208, ring masses 81 g ... 5 kg at F_r = 3000 N, 81 g and 1.25 kg at
 #: 600 N; it prints these figures) every run with H up to a quarter of the estimate kept q_max_inner within
 #: 0.2 % of the reference engine, the first run off by more than 0.5 % came at 0.30 ... 0.80 of it, and
-#: from 0.5 ... 1.1 of it a growing ring vibration put the loads several times too high or blew the run up.
+#: from 0.5 ... 1.1 of it a growing ring vibration put them more than 10 % off (several times, further out)
+#: or blew the run up.
 FAST_STEP_SHARE = 0.25
 
 
