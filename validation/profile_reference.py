@@ -292,6 +292,25 @@ class Timer(event.Listener):
 
 
 event.register("numba:compile", Timer())
+
+# LLVM's share: each library's final module is optimised after its callees' modules are linked in, then
+# turned into machine code (numba.core.codegen.CPUCodeLibrary); timed per library
+from numba.core import codegen
+
+llvm = defaultdict(float)
+
+
+def _timed(stage, orig):
+    def run(self):
+        t0 = time.thread_time()
+        out = orig(self)
+        llvm[(stage, self.name)] += time.thread_time() - t0
+        return out
+    return run
+
+
+codegen.CPUCodeLibrary._optimize_final_module = _timed("optimise", codegen.CPUCodeLibrary._optimize_final_module)
+codegen.CPUCodeLibrary._finalize_final_module = _timed("machine code", codegen.CPUCodeLibrary._finalize_final_module)
 w0, c0 = time.perf_counter(), time.process_time()
 import exudyn_bearing as eb
 w1, c1 = time.perf_counter(), time.process_time()
@@ -303,6 +322,12 @@ print(f"{'compiled function':60s} {'specs':>5s} {'CPU s':>6s}")
 for name in sorted(excl, key=excl.get, reverse=True):
     print(f"{name:60s} {count[name]:5d} {excl[name]:6.2f}")
 print(f"{'total':60s} {sum(count.values()):5d} {sum(excl.values()):6.2f}")
+libs = sorted({name for _stage, name in llvm}, key=lambda n: -(llvm[("optimise", n)] + llvm[("machine code", n)]))
+print("of it LLVM, per library (its final module: optimised with the linked callees, then machine code), CPU s:")
+for name in libs[:6]:
+    print(f"  {name[:58]:58s} optimise {llvm[('optimise', name)]:5.2f}  machine code {llvm[('machine code', name)]:5.2f}")
+print(f"  {'all ' + str(len(libs)) + ' libraries':58s} optimise {sum(v for (st, _n), v in llvm.items() if st == 'optimise'):5.2f}"
+      f"  machine code {sum(v for (st, _n), v in llvm.items() if st == 'machine code'):5.2f}")
 """
 
 
