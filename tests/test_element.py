@@ -344,6 +344,17 @@ def test_fast_step_limit_grows_with_the_ring_mass():
     over = ExudynEngine("6208", sc.replace(ring_mass=1.25), mode="fast", sub_steps=5).element
     with pytest.warns(eb.StepSizeWarning, match="use at most 4 sub-steps of 5e-06 s$"):
         over.SimulationSettings(1e-3)
+    # a 20 g ring: its limit (0.25 x 11.4 us = 2.8 us) lies below one 5 us sub-step. One sub-step is the body
+    # mode's scheme, not staggered: bounded by the ring's own 11.4 us, no warning; two warn and name one
+    light = ExudynEngine("6208", sc.replace(ring_mass=0.02), mode="fast", sub_steps=1).element
+    assert light.fastStepLimit == pytest.approx(bare.fastStepLimit * math.sqrt(0.02 / ring_mass_estimate(
+        eb.catalog["6208"])), rel=1e-9) and light.fastStepLimit < 5e-6 < light.ringStableStep
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", eb.StepSizeWarning)
+        light.SimulationSettings(1e-3)
+    two = ExudynEngine("6208", sc.replace(ring_mass=0.02), mode="fast", sub_steps=2).element
+    with pytest.warns(eb.StepSizeWarning, match="use at most 1 sub-step of 5e-06 s$"):
+        two.SimulationSettings(1e-3)
 
 
 def test_ring_stable_step_of_a_rotor_adds_its_bearings():

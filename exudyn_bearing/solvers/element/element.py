@@ -49,10 +49,11 @@ equals the sum of the impulses the balls received, without lag. With
 ``subSteps=1`` (default) it reproduces the body mode at about 0.6 of its cost.
 More sub-steps spread the per-step overhead further; the Exudyn step H =
 subSteps * stepSize then also integrates the ring bodies against the contact
-stiffness, staggered with the balls: keep it below ``fastStepLimit``, 0.25 of
-``ringStableStep`` (estimated from the ring bodies' mass matrices and the
-contact stiffness of all bearings on them at their ``initialLoad``); a
-larger step warns. Heavy rings (a ring on a rotor) take more sub-steps than
+stiffness, staggered with the balls: with two or more sub-steps keep it below
+``fastStepLimit``, 0.25 of ``ringStableStep`` (estimated from the ring
+bodies' mass matrices and the contact stiffness of all bearings on them at
+their ``initialLoad``; one sub-step is the body mode's scheme, bounded by
+``ringStableStep``); a larger step warns. Heavy rings (a ring on a rotor) take more sub-steps than
 a bare ring, which takes one or two. See validation/REPORT.md for the
 measured limits (``validation/fast_mode_limits.py``).
 
@@ -226,8 +227,8 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
         Fast mode: the largest stable Verlet step [s] of the ring bodies alone
         on the ball contacts of all bearings on them (property, see its docstring).
     fastStepLimit : float
-        Fast mode: the largest Exudyn step [s] that keeps the ball loads, 0.25
-        of ``ringStableStep`` (property).
+        Fast mode with two or more sub-steps: the largest Exudyn step [s] that
+        keeps the ball loads, 0.25 of ``ringStableStep`` (property).
 
     Options are those of :func:`exudyn_bearing.CreateBallBearing`;
     ``initialLoad`` is (Fr, Fa) [N] or a radial load Fr; an invalid option
@@ -360,9 +361,10 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
 
     @property
     def fastStepLimit(self):
-        """Largest Exudyn step [s] of the fast mode (subSteps * stepSize) that keeps the ball loads:
-        ``FAST_STEP_SHARE`` (0.25) of ``ringStableStep`` (the staggered coupling of ring and balls, not the
-        ring's own Verlet limit, sets it: ``model.stability.FAST_STEP_SHARE``); a larger step warns."""
+        """Largest Exudyn step [s] of the fast mode with two or more sub-steps (subSteps * stepSize) that
+        keeps the ball loads: ``FAST_STEP_SHARE`` (0.25) of ``ringStableStep`` (the staggered coupling of
+        ring and balls, not the ring's own Verlet limit, sets it: ``model.stability.FAST_STEP_SHARE``); a
+        larger step warns. One sub-step is the body mode's scheme, bounded by ``ringStableStep`` alone."""
         return FAST_STEP_SHARE * self.ringStableStep
 
     def _check_overlap(self, xb, poses, allowed):

@@ -403,13 +403,16 @@ class UserFunctionsMixin:
 
     def _check_fast_step(self, h, stacklevel=4):
         """Warn (once) when the fast mode's Exudyn step ``h`` exceeds its limit
-        (``fastStepLimit``) or its ball sub-step the balls' stable step."""
+        or its ball sub-step the balls' stable step. With two or more
+        sub-steps the limit is ``fastStepLimit`` (the staggered coupling); one
+        sub-step is the body mode's scheme, bounded by ``ringStableStep``."""
         self._clock[3] = True
-        dt = h / max(1, int(h / self._dt_sub + 0.5))
-        limit = self.fastStepLimit
+        n_sub = max(1, int(h / self._dt_sub + 0.5))
+        dt = h / n_sub
+        limit = self.fastStepLimit if n_sub > 1 else self.ringStableStep
         self._runaway_evidence()[1] = h > limit or dt > self.stable.dt
-        if h > limit:
-            fits = max(1, int(limit / dt))
+        if h > limit and n_sub > 1:
+            fits = max(1, int(limit / dt))  # one sub-step is the body mode's scheme, not staggered
             warnings.warn(f"subSteps: the Exudyn step {h:.3g} s exceeds the fast mode's limit {limit:.3g} s "
                           f"({FAST_STEP_SHARE:g} of the ring bodies' stable-step estimate {self.ringStableStep:.3g} s: "
                           "their inertia against their bearings' contact stiffness at initialLoad); beyond it the "
@@ -418,6 +421,11 @@ class UserFunctionsMixin:
                           "multiplies them or blows the run up (validation/fast_mode_limits.py): use at most "
                           f"{fits} sub-step{'s' if fits > 1 else ''} of {dt:.3g} s", StepSizeWarning,
                           stacklevel=stacklevel)
+        elif h > limit:
+            warnings.warn(f"stepSize: the Exudyn step {h:.3g} s (one sub-step) exceeds the ring bodies' stable-step "
+                          f"estimate {limit:.3g} s (their inertia against their bearings' contact stiffness at "
+                          "initialLoad): the ring motion will be wrong or blow up; use a smaller stepSize",
+                          StepSizeWarning, stacklevel=stacklevel)
         msg = step_warning(f"stepSize: the ball sub-step {dt:.3g} s", dt, self.stable)
         if msg:
             warnings.warn(msg, StepSizeWarning, stacklevel=stacklevel)
@@ -449,7 +457,8 @@ class UserFunctionsMixin:
             excess = pressure_excess([contacts[0][1] if low == 0 else 0.0], [contacts[1][1] if low == 1 else 0.0])
             if excess is not None:
                 raise runaway_error("load", t, self.stable, what, excess=(contacts[low][0], excess[0], excess[1]))
-        ring = (f" and the fast mode's limit {self.fastStepLimit:.3g} s for its Exudyn step (subSteps * stepSize; "
-                f"{FAST_STEP_SHARE:g} of the ring bodies' stable-step estimate)"
+        ring = ((f" and the fast mode's limit {self.fastStepLimit:.3g} s for its Exudyn step (subSteps * stepSize; "
+                 f"{FAST_STEP_SHARE:g} of the ring bodies' stable-step estimate)" if self.subSteps > 1 else
+                 f" and the ring bodies' {self.ringStableStep:.3g} s for the fast mode's Exudyn step")
                 if self.mode == "fast" and math.isfinite(self.ringStableStep) else "")
         raise runaway_error("stepSize", t, self.stable, what, ring=ring)
