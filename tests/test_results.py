@@ -87,12 +87,12 @@ def test_run_shorter_than_one_sample_is_refused():
     eb.Scenario(t_end=1e-4, sample_dt=1e-4)  # one sample is enough
 
 
-def test_fast_mode_element_counts_its_steps_and_wall_time(monkeypatch):
+def test_fast_mode_element_counts_its_steps_and_timed_calls(monkeypatch):
     # the fast mode's user function integrates the balls: its record counts the Exudyn
-    # steps and the time spent in it (it reported steps = 0 and wall_s = 0). The user
-    # functions read a fake clock that advances 1 s per reading, so the recorded time is
-    # exactly 1 s per user-function call (two readings each: the steps, and the evaluation
-    # at the start that advances nothing), whatever the machine's speed
+    # steps and adds up the clock intervals of its calls (it reported steps = 0 and wall_s = 0).
+    # Bookkeeping, not speed: the user functions read a fake clock that advances 1 s per
+    # reading, so the sum is exactly 1 s per user-function call (two readings each: the
+    # steps, and the evaluation at the start that advances nothing), whatever the machine
     import types
 
     import exudyn_bearing.solvers.element.userfunctions as uf

@@ -1,7 +1,6 @@
 """Sweep and dataset robustness: workers end with their parent, signals give one line and the conventional exit
 status, a failing case does not break a dataset, warnings name their case, unstable steps are refined."""
 import json
-import math
 import os
 import signal
 import subprocess
@@ -59,16 +58,32 @@ def _interruptible():
 
 
 def _start(argv, tmp_path):
-    """Start ``argv`` (a Python command line) and wait (at most 120 s) until it runs two workers."""
+    """Start ``argv`` (a Python command line) and wait until it runs two workers (:func:`_wait_for_workers`)."""
     env = dict(os.environ, PYTHONPATH=str(ROOT))
     proc = subprocess.Popen([sys.executable, *argv], cwd=tmp_path, env=env, stdout=subprocess.PIPE,
                             stderr=subprocess.PIPE, text=True, preexec_fn=_interruptible)
+    return proc, _wait_for_workers(proc)
+
+
+def _wait_for_workers(proc, limit=120.0):
+    """The descendants of ``proc`` once it runs two workers (polled; after ``limit`` s, or when ``proc``
+    ends, whatever runs then: the caller asserts on it)."""
     workers = []
-    deadline = time.monotonic() + 120
+    deadline = time.monotonic() + limit
     while len(workers) < 2 and time.monotonic() < deadline and proc.poll() is None:
         time.sleep(0.2)
         workers = _descendants(proc.pid)
-    return proc, workers
+    return workers
+
+
+def _still_alive(workers, limit=60.0):
+    """The ``workers`` still alive once all have ended or ``limit`` s have passed (polled). The tests
+    assert that the workers end, not how fast: the bound only keeps a broken run from hanging the suite,
+    and is far above the fraction of a second they take on an idle machine."""
+    deadline = time.monotonic() + limit
+    while any(_alive(p) for p in workers) and time.monotonic() < deadline:
+        time.sleep(0.05)
+    return [p for p in workers if _alive(p)]
 
 
 def _cleanup(proc, workers):
@@ -96,10 +111,7 @@ def test_workers_end_when_the_parent_is_killed(tmp_path, argv):
         assert len(workers) >= 2, "the run did not start its workers"
         proc.kill()  # SIGKILL: no handler runs in the parent
         proc.wait(10)
-        deadline = time.monotonic() + 5.0
-        while any(_alive(p) for p in workers) and time.monotonic() < deadline:
-            time.sleep(0.1)
-        assert [p for p in workers if _alive(p)] == []
+        assert _still_alive(workers) == []
     finally:
         _cleanup(proc, workers)
 
@@ -256,7 +268,7 @@ def test_refine_must_be_a_small_integer(tmp_path):
     spec = dict(bearing="6208", scenario=dict(Fr=1000.0, t_end=0.001), refine=-1)
     res = sw.run_sweep({"c": spec}, tmp_path, workers=1, progress=False)
     assert res["c"]["error"]["type"] == "InputError" and res["c"]["error"]["message"].startswith("refine")
-    assert math.isfinite(res["c"]["wall_case_s"])
+    assert {"error", "wall_case_s"} <= set(res["c"])  # a refused case keeps the record's fields
 
 
 @linux
@@ -279,21 +291,15 @@ def test_a_signal_to_the_parent_stops_the_workers(tmp_path, sig):
     proc = subprocess.Popen([sys.executable, "-c", script], preexec_fn=_interruptible)
     workers = []
     try:
-        deadline = time.monotonic() + 120
-        while len(workers) < 2 and time.monotonic() < deadline and proc.poll() is None:
-            time.sleep(0.2)
-            workers = _descendants(proc.pid)
+        workers = _wait_for_workers(proc)
         assert len(workers) >= 2, "the sweep did not start its workers"
         time.sleep(1.0)
         workers = _descendants(proc.pid)
         proc.send_signal(sig)
         rc = proc.wait(60)
         assert rc == 43  # SweepInterrupted for both (a KeyboardInterrupt)
-        # none alive 0.5 s after the parent's exit (polled: a worker that has ended stays ended)
-        deadline = time.monotonic() + 0.5
-        while any(_alive(p) for p in workers) and time.monotonic() < deadline:
-            time.sleep(0.05)
-        assert [p for p in workers if _alive(p)] == []
+        # the workers end with the parent (polled: a worker that has ended stays ended)
+        assert _still_alive(workers) == []
         index = json.loads((tmp_path / "index.json").read_text())
         assert index["counts"]["pending"] == 6
         assert not list(tmp_path.glob("c*.json"))
