@@ -319,7 +319,8 @@ def test_ring_stable_step_brackets_the_fast_mode_limit():
     # a blow-up, planted: ball 0 pushed 2 % of the pitch radius out (0.6 mm into the outer
     # race, past the runaway limit of 0.05 R_b = 0.32 mm)
     el._work[0][0] *= 1.02
-    with pytest.raises(SimulationError, match="^stepSize: the bearing state became non-finite or runaway .*fast mode's limit"):
+    with pytest.raises(SimulationError,
+                       match="^stepSize: the bearing state became non-finite or runaway .*fast mode's limit"):
         el._force_uf_fast(eng.mbs, 2 * h, 0, q, q_t)
     with pytest.raises(InputError, match="^ring_mass"):
         ring_stable_step(b, sc, 0.0)

@@ -114,8 +114,9 @@ def main(argv=None):
     ap.add_argument("--out", default=str(HERE / "out"))
     args = ap.parse_args(argv)
     masses = args.masses or [ring_mass_estimate(eb.catalog["6208"]), 0.3, 1.25, 5.0]
-    print(f"6208, Fr = {args.Fr:g} N, 500 rad/s, fast mode with n sub-steps of {DT * 1e6:g} us (Exudyn step H = n x 5 us), "
-          f"T = {args.t_end} s; errors of the summary (last quarter) against the reference engine at 1.25 us with the "
+    print(f"6208, Fr = {args.Fr:g} N, 500 rad/s, fast mode with n sub-steps of {DT * 1e6:g} us "
+          f"(Exudyn step H = n x 5 us), T = {args.t_end} s; errors of the summary (last quarter) against the "
+          f"reference engine at 1.25 us with the "
           f"same ring mass; growth: rms ring-centre speed of the last 5 ms / the 5 ms before", flush=True)
     out = []
     for m in masses:
@@ -128,8 +129,9 @@ def main(argv=None):
                       f"blew up: {r['blew_up']}", flush=True)
             else:
                 print(f"  n {r['n']:2d}  H {r['H'] * 1e6:5.1f} us  H/estimate {r['H_over_ring_stable_step']:4.2f}  "
-                      f"err q_max_inner {100 * r['err_q_max_inner']:+8.3f} %  err cage {100 * r['err_cage_speed']:+7.4f} %"
-                      f"  steady {'yes' if r['steady'] else 'no ':3s}  growth {r['growth']:6.2f}  "
+                      f"err q_max_inner {100 * r['err_q_max_inner']:+8.3f} %  "
+                      f"err cage {100 * r['err_cage_speed']:+7.4f} %  steady {'yes' if r['steady'] else 'no ':3s}  "
+                      f"growth {r['growth']:6.2f}  "
                       f"warnings {', '.join(r['warned']) or '-'}", flush=True)
         below, off, wild = res["largest_err_within_limit"], res["first_off"], res["first_wild"] = thresholds(
             res["rows"], FAST_STEP_SHARE)

@@ -379,8 +379,9 @@ def ring_contact_stiffness(bearing: BallBearing, scenario: Scenario, race: str =
 
 
 #: Share of the ring's stable-step estimate (:func:`ring_stable_step`) that the fast mode's Exudyn step
-#: may take with two or more sub-steps (one sub-step is the body mode's scheme). The fast mode couples ring and balls staggered (the ring, in Exudyn, gets the mean reaction of
-#: the balls' sub-steps), and that coupling, not the ring's own Verlet limit, sets the step: in
+#: may take with two or more sub-steps (one sub-step is the body mode's scheme). The fast mode couples
+#: ring and balls staggered (the ring, in Exudyn, gets the mean reaction of the balls' sub-steps), and
+#: that coupling, not the ring's own Verlet limit, sets the step: in
 #: ``validation/fast_mode_limits.py`` (6208, ring masses 81 g ... 5 kg at F_r = 3000 N, 81 g and 1.25 kg at
 #: 600 N; it prints these figures) every run with H up to a quarter of the estimate kept q_max_inner within
 #: 0.2 % of the reference engine, the first run off by more than 0.5 % came at 0.30 ... 0.80 of it, and

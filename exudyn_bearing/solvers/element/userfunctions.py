@@ -409,7 +409,8 @@ class UserFunctionsMixin:
         self._clock[3] = True
         n_sub = max(1, int(h / self._dt_sub + 0.5))
         dt = h / n_sub
-        limit = self.fastStepLimit if n_sub > 1 else self.ringStableStep
+        self._staggered = n_sub > 1  # the bound the runaway message names (_check_worst)
+        limit = self.fastStepLimit if self._staggered else self.ringStableStep
         self._runaway_evidence()[1] = h > limit or dt > self.stable.dt
         if h > limit and n_sub > 1:
             fits = max(1, int(limit / dt))  # one sub-step is the body mode's scheme, not staggered
@@ -458,7 +459,8 @@ class UserFunctionsMixin:
             if excess is not None:
                 raise runaway_error("load", t, self.stable, what, excess=(contacts[low][0], excess[0], excess[1]))
         ring = ((f" and the fast mode's limit {self.fastStepLimit:.3g} s for its Exudyn step (subSteps * stepSize; "
-                 f"{FAST_STEP_SHARE:g} of the ring bodies' stable-step estimate)" if self.subSteps > 1 else
+                 f"{FAST_STEP_SHARE:g} of the ring bodies' stable-step estimate)"
+                 if self.__dict__.get("_staggered", self.subSteps > 1) else
                  f" and the ring bodies' {self.ringStableStep:.3g} s for the fast mode's Exudyn step")
                 if self.mode == "fast" and math.isfinite(self.ringStableStep) else "")
         raise runaway_error("stepSize", t, self.stable, what, ring=ring)
