@@ -125,6 +125,7 @@ def light_rotor(sub, dt=5e-6, load=50.0, omega=500.0, t_end=0.02):
     ring = r.record.data["ring"][late, :2]
     centre = ring.mean(axis=0)
     return {"cage_speed": float(r.cage_speed_series()[late].mean()), "centre_x_um": float(1e6 * centre[0]),
+            "fast_step_limit_us": float(1e6 * bearings[0].fastStepLimit),
             "centre_y_um": float(1e6 * centre[1]),
             "orbit_radius_um": float(1e6 * np.hypot(*(ring - centre).T).mean())}
 
@@ -158,7 +159,8 @@ def light_load_sub_steps(load=50.0, cases=LIGHT_CASES):
                            / math.hypot(body["centre_x_um"], body["centre_y_um"]) - 1)
         r["exudyn_step_us"] = (sub or 1) * dt * 1e6
         rows[label] = r
-        print(f"light rotor, {load:g} N, {label} (Exudyn step {r['exudyn_step_us']:g} us): cage speed "
+        print(f"light rotor, {load:g} N, {label} (Exudyn step {r['exudyn_step_us']:g} us, the fast mode's limit "
+              f"{r['fast_step_limit_us']:.1f} us): cage speed "
               f"{r['cage_speed']:.3f} rad/s ({100 * r['dev_cage_speed']:+.3f} %), orbit centre ({r['centre_x_um']:.3f}, "
               f"{r['centre_y_um']:.3f}) um ({100 * r['dev_centre']:+.3f} % in distance), orbit radius "
               f"{r['orbit_radius_um']:.4f} um (body mode {body['orbit_radius_um']:.4f})", flush=True)
