@@ -199,7 +199,7 @@ def CreateBallBearing(mbs, bearing: BallBearing | str, markerInnerRing, markerOu
     **options
         Keyword options of :class:`~exudyn_bearing.solvers.element.BallBearingElement`
         (``lubricant``, ``cage``, ``lubrication``, ``friction``, ``tangential``,
-        ``hertzModel``, ``film``, ``stepSize``, ``innerRingSpeed``,
+        ``cageDamping`` (Scenario's ``cage_damping``; "implicit" needs VelocityVerlet), ``hertzModel``, ``film``, ``stepSize``, ``innerRingSpeed``,
         ``initialOmega``, ``initialLoad`` ((Fr, Fa) [N] or a radial load Fr),
         ``sampleInterval``, ``show``, the loss switches ``rollingResistance``,
         ``ballDrag``, ``oilVolumeFraction``, ``hysteresisLossFactor`` of

@@ -116,3 +116,27 @@ def test_both_engines_agree_on_the_7208(runs_7208):
     assert np.mean(exu["glob"][:, p]) == pytest.approx(np.mean(ref["glob"][:, p]), rel=1e-3)
     j = int(np.argmax(ref["diag"][-1, :, 0, D_LOAD]))
     assert exu["diag"][-1, j, :, D_LOAD] == pytest.approx(ref["diag"][-1, j, :, D_LOAD], rel=1e-3)
+
+
+def test_the_exudyn_engine_hands_every_scenario_field_to_the_element():
+    # simulate(engine="exudyn") builds the element from the Scenario: a field it left out would run with the
+    # element's default, silently another model than the reference engine's (cage_damping was the last one
+    # added). Built from a scene with the switches away from their defaults, the element's own Scenario must
+    # equal it in every field but t_end (the Exudyn solve sets the run's end), traction (None: the bearing's
+    # model, which the element fills in) and the speed protocol (the element drives the ring with the
+    # scenario's speed function: checked below)
+    import dataclasses
+
+    from exudyn_bearing.solvers.element.engine import ExudynEngine
+
+    s = eb.Scenario(Fr=2000.0, Fa=100.0, omega=400.0, dt=4e-6, t_end=0.01, sample_dt=2e-4, cage_damping="implicit",
+                    tangential="implicit", tangential_stiffness_ratio=0.8, guide_clearance=40e-6, film="mk",
+                    hertz="hamrock_brewe", ring_growth=False, rolling_resistance=True, ball_drag=True,
+                    oil_volume_fraction=0.02, hysteresis_loss_factor=0.01, t_ramp_up=0.002)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        element = ExudynEngine("6208", s).element
+    differ = {f.name for f in dataclasses.fields(s) if getattr(s, f.name) != getattr(element.scenario, f.name)}
+    assert differ <= {"t_end", "traction", "t_ramp_up"}
+    t = np.linspace(0.0, 0.004, 9)
+    assert [element.speed[0](x) for x in t] == pytest.approx([s.omega_at(x) for x in t], abs=1e-12)

@@ -208,6 +208,10 @@ def dynamics():
     line("Verlet step factor, zeta = 0 and 1", f"{explicit_step_factor(0.0):.4f}, {explicit_step_factor(1.0):.4f}")
     line("RK4 step factor, zeta = 0 and 1",
          f"{explicit_step_factor(0.0, 'rk4'):.4f}, {explicit_step_factor(1.0, 'rk4'):.4f}")
+    f_impl = explicit_step_factor(1.0, "verlet", "implicit")
+    line("Verlet step factor, zeta = 1, implicit damping; ratio to explicit",
+         f"{f_impl:.4f}; {f_impl / explicit_step_factor(1.0):.3f}")
+    line("damping ratio at the implicit limit, zeta = 1", 1.0 / (1.0 + 2.0 * f_impl), "{:.3f}")
     line("6208 ring-mass estimate", ring_mass_estimate(B6208) * 1e3, "{:.1f}", "g")
     scenes = {
         "6208 3000 N 500 rad/s, explicit spring": ("6208", eb.Scenario(Fr=3000.0, omega=500.0)),
@@ -216,6 +220,10 @@ def dynamics():
         "6208 regularized friction, rk4": ("6208", eb.Scenario(Fr=3000.0, omega=500.0, friction="regularized",
                                                               integrator="rk4")),
         "7208 3000 + 3000 N 500 rad/s": ("7208", eb.Scenario(Fr=3000.0, Fa=3000.0, omega=500.0)),
+        "7208 3000 + 3000 N 500 rad/s, implicit cage damping": ("7208", eb.Scenario(
+            Fr=3000.0, Fa=3000.0, omega=500.0, cage_damping="implicit")),
+        "6208 protocol from rest, implicit spring and cage damping": ("6208", eb.Scenario(
+            Fr=3000.0, omega=500.0, t_ramp_up=0.05, initial="rest", tangential="implicit", cage_damping="implicit")),
     }
     for label, (name, sc) in scenes.items():
         s = stable_step(eb.catalog[name], sc)

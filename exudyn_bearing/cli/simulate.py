@@ -45,6 +45,9 @@ def add_parser(sub):
                    help="tangential force: Cundall-Strack spring with contact history, regularised Coulomb, none")
     p.add_argument("--tangential", choices=("explicit", "implicit"), default="explicit",
                    help="update of the Cundall-Strack spring")
+    p.add_argument("--cage-damping", choices=("explicit", "implicit"), default="explicit",
+                   help="damping of the ball / cage-ball contacts: explicit (the papers'), or implicit (backward "
+                        "Euler over the step: lifts the cage contacts' step limit about 1.9 times; verlet only)")
     p.add_argument("--hertz", choices=METHODS, default="exact", help="Hertz fidelity level")
     p.add_argument("--film", choices=("hd", "mk"), default="hd",
                    help="film model: Hamrock-Dowson or Masjedi-Khonsari reading")
@@ -85,7 +88,8 @@ def scenario_from_args(args) -> Scenario:
     t_end = args.t_end
     kw = dict(Fr=args.Fr, Fa=args.Fa, omega=omega_from_args(args), Pd=args.Pd, dt=args.dt,
               sample_dt=args.sample_dt, integrator=args.integrator, friction=args.friction,
-              tangential=args.tangential, hertz=args.hertz, film=args.film, cage=args.cage,
+              tangential=args.tangential, cage_damping=args.cage_damping, hertz=args.hertz, film=args.film,
+              cage=args.cage,
               lubrication=args.lubrication, initial=args.initial, control=args.control,
               traction_level=args.traction_level, traction=args.traction, n_strips=args.strips, n_across=args.points_across,
               ring_growth=args.ring_growth, rolling_resistance=args.rolling_resistance, ball_drag=args.ball_drag,

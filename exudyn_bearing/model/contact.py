@@ -75,8 +75,8 @@ import numpy as np
 
 from .._jit import kernel
 from .motion import rotate_frame
-from ..physics.damping import (_damping_critical, _damping_fluid, _damping_hysteretic, damping_coefficient,
-                               lubrication_regime)
+from ..physics.damping import (_damping_critical, _damping_fluid, _damping_hysteretic, _implicit_damping,
+                               damping_coefficient, lubrication_regime)
 from ..data.traction import N_TRACTION_PARAMS
 from ..physics.contact_slip import _contact_traction
 from ..physics.defects import _spall_drop_k
@@ -98,9 +98,9 @@ from .layout import (D_A, D_ANGLE, D_B, D_DEFECT, D_FRICTION, D_HMIN, D_LAMBDA, 
                      G_DAMP_POWER, G_DISS_WORK, G_DRIVE_POWER, G_DRIVE_WORK, G_KINETIC, P_IB,
                      DF_HL, DF_HW, DF_POS, DF_RACE, FRIC_HISTORY, H_E1, H_E2, P_DEF0, P_NDEF, R_ANGLE, FRIC_REGULARIZED, G_OMEGA, G_OUTER_FX, G_OUTER_FY,
                      G_OUTER_FZ, G_OUTER_TORQUE, G_POWER, G_RING_FX, G_RING_FY, G_RING_FZ, G_RING_TORQUE, G_WORST,
-                     P_ALPHA_E, P_CAGE, P_DT, P_EPRIME, P_ETA, P_FILM, P_FRIC, P_HERTZ, P_K_BB, P_K_BZ, P_K_GUIDE,
-                     P_KT_IMPLICIT, P_KT_RATIO, P_L1, P_L3, P_LAW, P_LAW_D, P_LAW_K, P_LAW_N, P_LUB, P_MB, P_MU_B,
-                     P_MU_DRY, P_MU_F, P_MZ, P_RB, P_RCI, P_RCO, P_RGUIDE, P_RHO_I, P_RHO_O, P_RP, P_RZ, P_SIGMA,
+                     P_ALPHA_E, P_CAGE, P_CAGE_TAU, P_DT, P_EPRIME, P_ETA, P_FILM, P_FRIC, P_HERTZ, P_K_BB, P_K_BZ,
+                     P_K_GUIDE, P_KT_IMPLICIT, P_KT_RATIO, P_L1, P_L3, P_LAW, P_LAW_D, P_LAW_K, P_LAW_N, P_LUB,
+                     P_MAX_OVERLAP, P_MB, P_MU_B, P_MU_DRY, P_MU_F, P_MZ, P_RB, P_RCI, P_RCO, P_RGUIDE, P_RHO_I, P_RHO_O, P_RP, P_RZ, P_SIGMA,
                      P_VREG, P_XI, P_ZG_I, P_ZG_O)
 
 __all__ = ["forces", "accumulate_energy", "scene_paths", "scene_loss_path", "HZ_N"]
@@ -747,23 +747,27 @@ def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist,
 
 
 @kernel(inline="always")
-def _pair_contact(ia, ib, xb, vb, fb, px_, pv_, pf_, r_sum, k_pair, m_pair):
+def _pair_contact(ia, ib, xb, vb, fb, px_, pv_, pf_, r_sum, k_pair, m_pair, tau, r_ref):
     """Ball ia against sphere ib of (px_, pv_) (a cage ball, or the next ball
-    without cage): frictionless Hertz with critical damping; adds the force
-    to fb[ia] and its reaction to pf_[ib]; returns the contact force [N] and
-    the dissipation of its damping [W]."""
+    without cage): frictionless Hertz with critical damping, taken implicit
+    over the step ``tau`` (:func:`_implicit_damping`; 0: explicit); adds the
+    force to fb[ia] and its reaction to pf_[ib]; returns the contact force
+    [N], the dissipation of its damping [W] and its overlap / ``r_ref`` (the
+    runaway measure of :func:`forces`)."""
     dx = xb[ia, 0] - px_[ib, 0]
     dy = xb[ia, 1] - px_[ib, 1]
     dz = xb[ia, 2] - px_[ib, 2]
     d2 = dx * dx + dy * dy + dz * dz
     if not (d2 < r_sum * r_sum and d2 > 0.0):
-        return 0.0, 0.0
+        return 0.0, 0.0, 0.0
     dist = math.sqrt(d2)
     delta = r_sum - dist
     inv = 1.0 / dist
     nx, ny, nz = dx * inv, dy * inv, dz * inv
     sq = math.sqrt(delta)
     c = _damping_critical(m_pair, 1.5 * k_pair * sq)
+    if tau > 0.0:  # a scene constant: the explicit damping's arithmetic stays as it was (fastmath may fuse)
+        c = _implicit_damping(c, m_pair, tau)
     ddot = -((vb[ia, 0] - pv_[ib, 0]) * nx + (vb[ia, 1] - pv_[ib, 1]) * ny + (vb[ia, 2] - pv_[ib, 2]) * nz)
     f_el = k_pair * delta * sq
     f = f_el + c * ddot
@@ -775,7 +779,7 @@ def _pair_contact(ia, ib, xb, vb, fb, px_, pv_, pf_, r_sum, k_pair, m_pair):
     pf_[ib, 0] -= f * nx
     pf_[ib, 1] -= f * ny
     pf_[ib, 2] -= f * nz
-    return f, (f - f_el) * ddot
+    return f, (f - f_el) * ddot, delta / r_ref
 
 
 @kernel(inline="always")
@@ -784,16 +788,18 @@ def _guide_contact(k, p, xc, vc, rings, fc, fr):
     centre circle r_p in the ring's radial plane, tube radius R_z + guide
     clearance; frictionless Hertz, R_eq = R_z, critical damping. Adds the
     force to fc[k] and its reaction to fr[1]; returns the dissipation of its
-    damping [W]."""
+    damping [W] and the overlap / R_z (the runaway measure of :func:`forces`;
+    NaN for a non-finite cage ball)."""
     rz = p[P_RZ]
     free = p[P_RGUIDE] - rz
     dxw, dyw, dzw, cx, cy, cz, _rot = _ring_frame(rings, 1, xc[k, 0], xc[k, 1], xc[k, 2])
     dr = math.sqrt(cx * cx + cy * cy) - p[P_RP]
-    if dr * dr + cz * cz <= free * free:
-        return 0.0
+    if dr * dr + cz * cz <= free * free:  # False for a non-finite cage ball: its NaN reaches the ratio
+        return 0.0, 0.0
     delta, nlx, nly, nlz, _ca, _sa, _rc = _groove_geometry(cx, cy, cz, p[P_RP], 0.0, p[P_RGUIDE], rz, False)
     if delta <= 0.0:
-        return 0.0
+        return 0.0, 0.0
+    ratio = delta / rz
     nx = rings[1, 6] * nlx + rings[1, 7] * nly + rings[1, 8] * nlz
     ny = rings[1, 9] * nlx + rings[1, 10] * nly + rings[1, 11] * nlz
     nz = rings[1, 12] * nlx + rings[1, 13] * nly + rings[1, 14] * nlz
@@ -803,6 +809,8 @@ def _guide_contact(k, p, xc, vc, rings, fc, fr):
     sq = math.sqrt(delta)
     kst = p[P_K_GUIDE]
     c = _damping_critical(p[P_MZ], 1.5 * kst * sq)
+    if p[P_CAGE_TAU] > 0.0:
+        c = _implicit_damping(c, p[P_MZ], p[P_CAGE_TAU])
     f_el = kst * delta * sq
     f = f_el + c * vn
     if f > 0.0:
@@ -816,8 +824,8 @@ def _guide_contact(k, p, xc, vc, rings, fc, fr):
         fr[1, 3] += mx_
         fr[1, 4] += my_
         fr[1, 5] += mz_
-        return (f - f_el) * vn
-    return 0.0
+        return (f - f_el) * vn, ratio
+    return 0.0, ratio
 
 
 @kernel(inline="always")
@@ -869,7 +877,11 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb,
     """All contact forces of the bearing (one call; inputs and outputs in the
     module docstring). ``hist_out`` may be ``hist`` (every evaluation a
     committed step, as in the reference engine). Returns the largest
-    overlap / R_b of the ball / raceway contacts.
+    overlap / R_b of the ball / raceway contacts (NaN for a non-finite ball), or
+    the largest overlap of a cage contact over its sphere's radius (ball /
+    cage-ball and guide: R_z; ball / ball: R_b) when that exceeds the runaway
+    limit ``P_MAX_OVERLAP`` or is NaN (a non-finite cage ball): the engines stop
+    on either.
 
     ``defect_path``, ``ellipse_path`` and ``loss_path`` choose what is
     compiled: None leaves the defect code (:func:`_defect_drop`,
@@ -952,25 +964,37 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb,
         k_pair = p[P_K_BZ]
         m_pair = p[P_MB] * p[P_MZ] / (p[P_MB] + p[P_MZ])
         n_pair = 2
+        tau = p[P_CAGE_TAU]
+        r_ref = p[P_RZ]
     else:
         px_, pv_, pf_ = xb, vb, fb
         r_sum = 2.0 * p[P_RB]
         k_pair = p[P_K_BB]
         m_pair = 0.5 * p[P_MB]
         n_pair = 1
+        tau = 0.0  # the ball / ball contacts of a scene without cage: explicit
+        r_ref = p[P_RB]
+    cage_worst = 0.0
     for k in range(z):
         k2 = k + 1 if k + 1 < z else 0
         for m in range(n_pair):
             ia = k if m == 0 else k2          # ball
             ib = k if cage else k2            # cage ball k, or the next ball
-            f, damp = _pair_contact(ia, ib, xb, vb, fb, px_, pv_, pf_, r_sum, k_pair, m_pair)
+            f, damp, ratio = _pair_contact(ia, ib, xb, vb, fb, px_, pv_, pf_, r_sum, k_pair, m_pair, tau, r_ref)
             damp_sum += damp
+            if ratio > cage_worst:
+                cage_worst = ratio
             if want:
                 cage_load[k, m] = f
         if want and not cage:
             cage_load[k, 1] = 0.0
         if cage:
-            damp_sum += _guide_contact(k, p, xc, vc, rings, fc, fr)
+            damp, ratio = _guide_contact(k, p, xc, vc, rings, fc, fr)
+            damp_sum += damp
+            if ratio > cage_worst or ratio != ratio:  # NaN: a non-finite cage ball (stays the worst)
+                cage_worst = ratio
+    if cage_worst > p[P_MAX_OVERLAP] or cage_worst != cage_worst:
+        worst = cage_worst  # a runaway (or non-finite) cage contact stops the engines like a ball contact
     if loss_path is not None:  # pruned at compile time when None
         if p[P_DRAG] > 0.5:
             drag_sum = _ball_drag(p, xb, vb, rings, fb, fr)

@@ -103,8 +103,11 @@ P_K_GUIDE = _entry("k_guide", "N/m^1.5", "Hertz constant of a cage-ball / guide 
 # -- solver ----------------------------------------------------------------
 P_DT = _entry("dt", "s", "time step (implicit tangential spring, Cundall-Strack increment)")
 P_AXIAL_FREE = _entry("axial_free", "switch", "the inner ring moves axially (1) or not (0)")
-P_MAX_OVERLAP = _entry("max_overlap", "-", "overlap / R_b above which a run stops as runaway")
+P_MAX_OVERLAP = _entry("max_overlap", "-", "overlap / R_b (cage contacts: over the radius of their sphere) above which "
+                       "a run stops as runaway")
 P_KT_IMPLICIT = _entry("tangential_implicit", "switch", "implicit (1) or explicit (0) Cundall-Strack spring")
+P_CAGE_TAU = _entry("cage_damping_step", "s", "step of the backward-Euler damping of the cage contacts "
+                    "(cage_damping='implicit': dt; 0: explicit damping)")
 # -- peer contact law ------------------------------------------------------
 P_LAW = _entry("contact_law", "code", "ball / raceway contact law LAW_*")
 P_LAW_K = _entry("power_law_k", "N/m^n", "power-law stiffness k of F = k delta^n + d d(delta)/dt")

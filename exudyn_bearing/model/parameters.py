@@ -77,6 +77,7 @@ def scene_parameters(bearing: BallBearing, scenario: Scenario, lubricant: Lubric
     p[L.P_AXIAL_FREE] = 1.0
     p[L.P_MAX_OVERLAP] = 0.05
     p[L.P_KT_IMPLICIT] = 1.0 if s.tangential == "implicit" else 0.0
+    p[L.P_CAGE_TAU] = s.dt if s.cage_damping == "implicit" else 0.0
     p[L.P_LAW] = L.LAW_POWER if s.contact_law == "power" else L.LAW_HERTZ
     p[L.P_LAW_K], p[L.P_LAW_N], p[L.P_LAW_D] = (float(x) for x in s.power_law)
     _set_traction(p, b, s)

@@ -87,6 +87,16 @@ class Scenario:
         solid sphere at its surface: the backward-Euler response of the
         contact to its own force over one step. Stable at any step and equal
         to the explicit spring as dt -> 0; lifts the tangential step limit.
+    cage_damping : {"explicit", "implicit"}
+        Damping of the critically damped ball / cage-ball and cage-ball /
+        guide contacts: explicit (the DEM papers' C = 2 sqrt(m k_t), whose
+        step limit is 0.83/omega under velocity Verlet and limits start-up,
+        slow-down and the 7208 under combined load) or implicit, where the
+        contact damps with C / (1 + C dt / m), m the contact's reduced mass:
+        the backward-Euler response of the contact's approach speed to its
+        own damping over one step. Equal to the explicit damping as dt -> 0;
+        stable up to 1.58/omega (docs/theory/dynamics.md#stable-step).
+        ``integrator='verlet'`` only.
     hertz : {"exact", "hamrock_brewe", "simplified"}
         Hertz fidelity level (exact is tabulated in the kernels).
     contact_law : {"hertz", "power"}
@@ -198,6 +208,7 @@ class Scenario:
     regularizing_speed: float = DEFAULT_REGULARIZING_SPEED
     tangential_stiffness_ratio: float = 2.0 / 3.0
     tangential: str = "explicit"
+    cage_damping: str = "explicit"
     hertz: str = "exact"
     contact_law: str = "hertz"
     power_law: tuple = (0.0, 1.5, 0.0)
@@ -263,6 +274,11 @@ class Scenario:
             raise InputError(f"tangential: must be 'explicit' or 'implicit', got {self.tangential!r}")
         if self.integrator not in INTEGRATORS:
             raise InputError(f"integrator: unknown {self.integrator!r} (valid: {', '.join(INTEGRATORS)})")
+        if self.cage_damping not in ("explicit", "implicit"):
+            raise InputError(f"cage_damping: must be 'explicit' or 'implicit', got {self.cage_damping!r}")
+        if self.cage_damping == "implicit" and self.integrator != "verlet":
+            raise InputError("cage_damping: 'implicit' is the backward-Euler damping of one velocity-Verlet step "
+                             f"and needs integrator='verlet', got {self.integrator!r}")
         if self.integrator == "rk4" and self.friction == "history":
             raise InputError("integrator: rk4 needs a history-free friction model "
                              "(friction='regularized' or 'none'); the Cundall-Strack spring is "

@@ -137,7 +137,7 @@ __all__ = ["BallBearingElement", "OPTION_NAMES"]
 #: Scenario field -> the element's option of the same meaning (for error messages).
 OPTION_NAMES = {"Fr": "initialLoad", "Fa": "initialLoad", "omega": "initialOmega", "dt": "stepSize",
                 "sample_dt": "sampleInterval", "hertz": "hertzModel", "guide_clearance": "guideClearance",
-                "mu_dry": "muDry", "regularizing_speed": "regularizingSpeed",
+                "mu_dry": "muDry", "regularizing_speed": "regularizingSpeed", "cage_damping": "cageDamping",
                 "tangential_stiffness_ratio": "tangentialStiffnessRatio", "contact_law": "contactLaw",
                 "power_law": "powerLaw", "traction_level": "tractionLevel", "n_strips": "nStrips",
                 "n_across": "nAcross", "traction_regularizing_srr": "tractionRegularizingSrr",
@@ -172,6 +172,7 @@ def _scenario_from_options(o: dict, bearing) -> Scenario:
     try:
         return Scenario(Fr=fr, Fa=fa, omega=check_finite("initialOmega", o["initialOmega"]), cage=o["cage"],
                         lubrication=o["lubrication"], friction=o["friction"], tangential=o["tangential"],
+                        cage_damping=o["cageDamping"],
                         hertz=o["hertzModel"], film=o["film"], guide_clearance=o["guideClearance"], mu_dry=o["muDry"],
                         regularizing_speed=o["regularizingSpeed"],
                         tangential_stiffness_ratio=o["tangentialStiffnessRatio"], dt=step,
@@ -246,7 +247,7 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
                  tractionRegularizingSrr=DEFAULT_REGULARIZING_SRR, ringGrowth=True,
                  temperatures=None, control="auto", initialState=None, defects=(),
                  signalInterval=None, rollingResistance=False, ballDrag=False, oilVolumeFraction=0.0,
-                 hysteresisLossFactor=HYSTERESIS_LOSS_FACTOR_STEEL, show=False):
+                 hysteresisLossFactor=HYSTERESIS_LOSS_FACTOR_STEEL, cageDamping="explicit", show=False):
         announce_compilation(forces, EK.fast_step if mode == "fast" else EK.body_step)
         self.mbs = mbs
         self.bearing = b = load_bearing(bearing)
@@ -401,7 +402,7 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
             check_positive("stepSize", stepSize)
         ss = exu.SimulationSettings()
         h = float(stepSize or self.scenario.dt * (self.subSteps if self.mode == "fast" else 1))
-        err = solver_error(self.mode, name, h, self.stable.dt)
+        err = solver_error(self.mode, name, h, self.stable.dt, self.scenario.cage_damping)
         if err is not None:
             raise err
         if solverType != "VelocityVerlet" and (self._sig is not None

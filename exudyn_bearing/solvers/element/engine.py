@@ -88,7 +88,7 @@ class ExudynEngine:
         mbs.AddLoad(LoadForceVector(markerNumber=m_inner, loadVector=[s.Fr, 0.0, s.Fa]))
         self.element = BallBearingElement(
             mbs, b, m_inner, m_outer, lubricant=lubricant, cage=s.cage, lubrication=s.lubrication,
-            friction=s.friction, tangential=s.tangential, hertzModel=s.hertz, film=s.film,
+            friction=s.friction, tangential=s.tangential, cageDamping=s.cage_damping, hertzModel=s.hertz, film=s.film,
             guideClearance=s.guide_clearance, muDry=s.mu_dry, regularizingSpeed=s.regularizing_speed,
             tangentialStiffnessRatio=s.tangential_stiffness_ratio, stepSize=s.dt, innerRingSpeed=s.speed_function(),
             initialOmega=s.omega, initialLoad=(s.Fr, s.Fa), initial=s.initial, sampleInterval=s.sample_dt,

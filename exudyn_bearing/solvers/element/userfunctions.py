@@ -40,9 +40,11 @@ def implicit_solver_error(solver):
                       "implicit solvers")
 
 
-def solver_error(mode, solver, step=None, stable=None):
+def solver_error(mode, solver, step=None, stable=None, cage_damping="explicit"):
     """The InputError for a ``solver`` (a name) the element in ``mode`` cannot run with at the Exudyn step
-    ``step`` [s] (None: not known yet) and the stable-step estimate ``stable`` [s], else None."""
+    ``step`` [s] (None: not known yet) and the stable-step estimate ``stable`` [s], else None.
+    ``cage_damping="implicit"`` (the backward-Euler damping of one velocity-Verlet step of the balls) needs
+    VelocityVerlet in the body mode; the fast mode's balls always take velocity-Verlet sub-steps."""
     err = unstable_solver_error(solver, "the ball contacts", "VelocityVerlet (recommended), RK33 or RK44",
                                 " unless the step is about 1/16 of the stable-step estimate")
     if err is not None:
@@ -51,6 +53,9 @@ def solver_error(mode, solver, step=None, stable=None):
         return InputError(f"stepSize: ExplicitMidpoint needs a step of at most {MIDPOINT_STEP_RATIO:g} of the "
                           f"stable-step estimate, {MIDPOINT_STEP_RATIO * stable:.3g} s, got {step:.3g} s (above it the "
                           "ball loads end wrong); use VelocityVerlet (recommended) or a smaller step")
+    if mode != "fast" and cage_damping == "implicit" and solver != "VelocityVerlet":
+        return InputError(f"cageDamping: 'implicit' is the backward-Euler damping of one velocity-Verlet step and "
+                          f"needs the VelocityVerlet solver in the body mode (or mode='fast'), not {solver}")
     if mode == "fast" and solver in IMPLICIT_SOLVERS:
         return implicit_solver_error(solver)
     if mode == "fast" and solver in BACKWARD_SOLVERS:
@@ -168,7 +173,7 @@ class UserFunctionsMixin:
         solver = settings_solver(settings)
         ti = getattr(settings, "timeIntegration", None)
         step = ((ti.endTime - ti.startTime) / max(1, ti.numberOfSteps)) if ti is not None else None
-        err = solver_error(self.mode, solver, step, self.stable.dt)
+        err = solver_error(self.mode, solver, step, self.stable.dt, self.scenario.cage_damping)
         if err is not None:
             raise err
         evidence = self._runaway_evidence()

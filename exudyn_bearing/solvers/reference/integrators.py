@@ -149,7 +149,8 @@ def run_verlet(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb
     is written before it is read; numba's own np.zeros compiled for about
     0.4 s of a cold start).
     Returns (steps done, samples written, status): status 0 ok,
-    1 non-finite state, 2 runaway overlap (> P_MAX_OVERLAP R_b).
+    1 non-finite state, 2 runaway overlap (> P_MAX_OVERLAP R_b, or a cage
+    contact beyond P_MAX_OVERLAP of its radius; NaN overlap: non-finite state).
     ``defect_path``, ``ellipse_path``, ``loss_path`` as in :func:`~exudyn_bearing.model.contact.forces`;
     ``signal_path`` None compiles the loop without the signals (then
     ``sig_every`` must be 0).
@@ -191,11 +192,11 @@ def run_verlet(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb
             _store(n_samp, t, glob, diag, cage_load, xb, vb, wb, xc, vc, ring,
                    s_t, s_glob, s_diag, s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring)
             n_samp += 1
-            if not (_finite(xb) and _finite(vb) and _finite_ring(ring)):
+            if not (_finite(xb) and _finite(vb) and _finite_ring(ring) and _finite(xc) and _finite(vc)):
                 return step + 1, n_samp, 1
         if worst > p[P_MAX_OVERLAP] or not math.isfinite(worst):
             return step + 1, n_samp, 2
-    if not (_finite(xb) and _finite(vb) and _finite(wb)):
+    if not (_finite(xb) and _finite(vb) and _finite(wb) and _finite(xc) and _finite(vc)):
         return n_steps, n_samp, 1
     return n_steps, n_samp, 0
 
@@ -318,6 +319,6 @@ def run_rk4(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb, f
             _store(n_samp, t + dt, glob, diag, cage_load, xb, vb, wb, xc, vc, ring,
                    s_t, s_glob, s_diag, s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring)
             n_samp += 1
-        if not (_finite(xb) and _finite(vb) and _finite_ring(ring)):
+        if not (_finite(xb) and _finite(vb) and _finite_ring(ring) and _finite(xc) and _finite(vc)):
             return step + 1, n_samp, 1
     return n_steps, n_samp, 0
