@@ -63,7 +63,7 @@ def one_run(bearing, sc):
     said = [str(w.message) for w in caught if issubclass(w.category, StepSizeWarning)]
     return {"max_cage_load_N": float(cl.max()), "p99_9_cage_load_N": float(np.percentile(cl, 99.9)),
             "q_max_inner": s["q_max_inner"], "cage_speed": s["cage_speed"], "steady": s["steady"]["steady"],
-            "q_max_inner_drift": s["steady"]["drift"]["q_max_inner"],
+            "q_max_inner_drift": s["steady"]["drift"]["q_max_inner"], "wall_s": r.wall_s,
             "a_priori_warning": any(m.startswith("dt =") for m in said),
             "cage_load_warning": any("contacts reached" in m for m in said)}
 
