@@ -526,20 +526,21 @@ def section_cage_step():
              "against the amplification matrix), 1.9 times the explicit limit; the main job's implicit runs take "
              "the implicit tangential spring too (the explicit one limits at 6.3 us). Sampled cage loads, and "
              "what the engine said (a priori: dt above "
-             "`stable_step`; after the run: the loads reached put the contacts' stable step below dt):", "",
+             "`stable_step`; after the run: the loads reached put the contacts' stable step below dt), and the "
+             "integration's wall time (one run each, on the machine of the header):", "",
              "| scene | cage damping | tangential spring | dt | dt / estimate | largest cage load [N] | "
-             "99.9 % cage load [N] | q_max_inner [N] | cage [rad/s] | a-priori warning | cage-load warning |",
-             "|---|---|---|---|---|---|---|---|---|---|---|"]
+             "99.9 % cage load [N] | q_max_inner [N] | cage [rad/s] | a-priori warning | cage-load warning | "
+             "wall [s] |", "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for scene, rows in d.items():
         for r in rows["runs"].values():
             head = (f"| {scene} | {r['cage_damping']} | {r['tangential']} | {r['dt_s'] * 1e6:g} us | "
                     f"{r['dt_over_estimate']:.2f} |")
             if "blew_up" in r:
-                lines.append(head + f" blew up: {r['blew_up']} | | | | | |")
+                lines.append(head + f" blew up: {r['blew_up']} | | | | | | |")
                 continue
             lines.append(head + f" {r['max_cage_load_N']:.1f} | {r['p99_9_cage_load_N']:.1f} | "
                          f"{r['q_max_inner']:.1f} | {r['cage_speed']:.2f} | {'yes' if r['a_priori_warning'] else 'no'} "
-                         f"| {'yes' if r['cage_load_warning'] else 'no'} |")
+                         f"| {'yes' if r['cage_load_warning'] else 'no'} | {r['wall_s']:.2f} |")
 
     def spread(scene_rows, key):
         v = [r[key] for r in scene_rows["runs"].values()
