@@ -180,3 +180,74 @@ def test_the_exudyn_element_damps_the_cage_contacts_like_the_reference_engine():
     assert b["cage_speed"] == pytest.approx(a["cage_speed"], rel=1e-3)
     p_a, p_b = (np.percentile(r.data["cage_load"], 99.9) for r in (ref, ex))
     assert p_b == pytest.approx(p_a, rel=0.15)
+
+
+def test_the_kernel_applies_and_counts_the_implicit_damping_on_a_cage_contact():
+    # cage ball 0 placed 2 um into ball 0 and approaching it at 0.05 m/s: the kernel's contact force is
+    # K delta^1.5 + C' u with C' = C / (1 + C dt / m) (C = 2 sqrt(m 1.5 K sqrt(delta)), m the pair's reduced
+    # mass), and the damping power it counts changes by (C - C') u^2 from the explicit damping
+    from exudyn_bearing.model import layout as L
+    from exudyn_bearing.model.contact import scene_loss_path, scene_paths
+    from exudyn_bearing.model.motion import ring_poses
+    from exudyn_bearing.solvers.reference.engine import ReferenceEngine
+    from exudyn_bearing.solvers.reference.integrators import evaluate
+
+    dt, delta, u = 5e-6, 2e-6, 0.05
+    out = {}
+    for damping in ("explicit", "implicit"):
+        eng = ReferenceEngine("6208", eb.Scenario(Fr=3000.0, omega=500.0, dt=dt, cage_damping=damping))
+        st = eng.initial_state()
+        p = eng.params
+        z = eng.bearing.n_balls
+        xb, xc, vb, vc = st["xb"].copy(), st["xc"].copy(), st["vb"].copy(), st["vc"].copy()
+        n = (xb[0] - xc[0]) / np.linalg.norm(xb[0] - xc[0])      # from the cage ball to the ball
+        xc[0] = xb[0] - n * (p[L.P_RB] + p[L.P_RZ] - delta)
+        vc[0] = vb[0] + u * n                                     # closing: d(delta)/dt = u
+        glob, cage_load = np.zeros(L.NGLOBAL), np.zeros((z, 2))
+        evaluate(0.0, p, eng.table, xb, vb, st["wb"].copy(), xc, vc, st["ring"].copy(), ring_poses(),
+                 st["hist"].copy(), np.zeros((z, 2, L.HZ_N)), np.zeros((z, 3)), np.zeros((z, 3)), np.zeros((z, 3)),
+                 np.zeros((2, 6)), np.zeros(3), glob, np.zeros((z, 2, L.NDIAG)), cage_load, True,
+                 *scene_paths(p), scene_loss_path(p))
+        out[damping] = (cage_load[0, 0], glob[L.GLOBAL_FIELDS.index("damping_power")])
+        k, m = p[L.P_K_BZ], p[L.P_MB] * p[L.P_MZ] / (p[L.P_MB] + p[L.P_MZ])
+    c = 2.0 * math.sqrt(m * 1.5 * k * math.sqrt(delta))
+    c_impl = c / (1.0 + c * dt / m)
+    assert c_impl < 0.9 * c   # the test point is where the two differ
+    f_el = k * delta ** 1.5
+    assert out["explicit"][0] == pytest.approx(f_el + c * u, rel=1e-9)
+    assert out["implicit"][0] == pytest.approx(f_el + c_impl * u, rel=1e-9)
+    assert out["explicit"][1] - out["implicit"][1] == pytest.approx((c - c_impl) * u * u, rel=1e-6)
+
+
+def test_a_non_finite_cage_ball_stops_the_reference_engine(monkeypatch):
+    # the engine's run on a state whose cage ball 0 is NaN ends with an error naming dt, not with a result
+    from exudyn_bearing.solvers.reference.engine import ReferenceEngine
+
+    eng = ReferenceEngine("6208", eb.Scenario(Fr=3000.0, omega=500.0, dt=5e-6, t_end=1e-3))
+    st = eng.initial_state()
+    st["xc"][0] = np.nan
+    monkeypatch.setattr(eng, "initial_state", lambda: st)
+    with pytest.raises(eb.SimulationError, match=r"^dt: the bearing state became"):
+        eng.run()
+
+
+def test_the_command_line_and_the_scene_without_cage():
+    from exudyn_bearing.cli import _parser
+    from exudyn_bearing.cli.simulate import scenario_from_args
+
+    argv = ["simulate", "6208", "--Fr", "3000", "--omega", "500", "--dt", "7e-6", "--cage-damping", "implicit"]
+    assert scenario_from_args(_parser(argv).parse_args(argv)).cage_damping == "implicit"
+    with pytest.raises(InputError, match="^cage_damping: 'implicit' damps .* no cage"):
+        eb.Scenario(cage=False, cage_damping="implicit")
+
+
+def test_the_element_refuses_a_solver_step_other_than_the_damping_step():
+    # cageDamping="implicit" takes the damping over stepSize: a solver stepping otherwise (here 4 instead of
+    # 5 us) is refused at the run's start; the element's own SimulationSettings step by stepSize
+    from exudyn_bearing.solvers.element.engine import ExudynEngine, solve_dynamic
+
+    eng = ExudynEngine("6208", START.replace(dt=5e-6, cage_damping="implicit", t_end=2e-4))
+    with pytest.raises(InputError, match=r"^cageDamping: 'implicit' .* stepSize = 5e-06 s, but the balls step"):
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            solve_dynamic(eng.mbs, eng.element.SimulationSettings(2e-4, stepSize=4e-6))

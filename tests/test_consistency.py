@@ -140,3 +140,12 @@ def test_the_exudyn_engine_hands_every_scenario_field_to_the_element():
     assert differ <= {"t_end", "traction", "t_ramp_up"}
     t = np.linspace(0.0, 0.004, 9)
     assert [element.speed[0](x) for x in t] == pytest.approx([s.omega_at(x) for x in t], abs=1e-12)
+    # and every field is read where the engine builds the element (the scene above leaves some at their
+    # defaults, where a dropped field would not show): the protocol's three through s.speed_function()
+    import inspect
+
+    from exudyn_bearing.solvers.element import engine as element_engine
+
+    src = inspect.getsource(element_engine.ExudynEngine)
+    unread = {f.name for f in dataclasses.fields(s) if f"s.{f.name}" not in src and f"scenario.{f.name}" not in src}
+    assert unread == {"t_ramp_up", "t_steady", "t_ramp_down"} and "s.speed_function()" in src

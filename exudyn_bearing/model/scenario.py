@@ -95,8 +95,8 @@ class Scenario:
         contact damps with C / (1 + C dt / m), m the contact's reduced mass:
         the backward-Euler response of the contact's approach speed to its
         own damping over one step. Equal to the explicit damping as dt -> 0;
-        stable up to 1.58/omega (docs/theory/dynamics.md#stable-step).
-        ``integrator='verlet'`` only.
+        stable up to 1.58/omega (docs/theory/dynamics.md#implicit-cage-damping).
+        ``integrator='verlet'`` and a scene with cage only.
     hertz : {"exact", "hamrock_brewe", "simplified"}
         Hertz fidelity level (exact is tabulated in the kernels).
     contact_law : {"hertz", "power"}
@@ -279,6 +279,9 @@ class Scenario:
         if self.cage_damping == "implicit" and self.integrator != "verlet":
             raise InputError("cage_damping: 'implicit' is the backward-Euler damping of one velocity-Verlet step "
                              f"and needs integrator='verlet', got {self.integrator!r}")
+        if self.cage_damping == "implicit" and not self.cage:
+            raise InputError("cage_damping: 'implicit' damps the ball / cage-ball and guide contacts, and the scene "
+                             "has no cage (cage=False; its ball / ball contacts keep the explicit damping)")
         if self.integrator == "rk4" and self.friction == "history":
             raise InputError("integrator: rk4 needs a history-free friction model "
                              "(friction='regularized' or 'none'); the Cundall-Strack spring is "

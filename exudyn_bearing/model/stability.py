@@ -107,7 +107,8 @@ def explicit_step_factor(zeta=0.0, integrator="verlet", damping="explicit"):
     if integrator == "verlet":
         if damping == "explicit" or zeta == 0.0:
             return 2.0 * (math.sqrt(1.0 + zeta * zeta) - zeta)
-        # x - f(x) rises from -2 (x = 0) to > 0 at x = 2 (f <= 2): bisection to round-off
+        # x < f(x) is x^2 + 4 z(x) x < 4, whose left side grows with x (from 0 at x = 0 to above 4 at x = 2):
+        # one root in (0, 2), found by bisection to round-off
         lo, hi = 0.0, 2.0
         for _ in range(200):
             x = 0.5 * (lo + hi)

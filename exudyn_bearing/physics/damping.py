@@ -113,7 +113,7 @@ def implicit_damping(damping, effective_mass, dt):
     Backward Euler of a contact's approach speed u under its own damping,
     m u' = -C u, over one step: u_1 = u_0 / (1 + C dt / m), which the
     coefficient C / (1 + C dt / m) applied to u_0 reproduces
-    (``Scenario(cage_damping="implicit")``, docs/theory/dynamics.md#stable-step;
+    (``Scenario(cage_damping="implicit")``, docs/theory/dynamics.md#implicit-cage-damping;
     the same construction as the implicit Cundall-Strack spring,
     :func:`~exudyn_bearing.physics.friction.implicit_tangential_stiffness`).
     Equal to C at dt = 0 (bit for bit: the explicit damping) and bounded by

@@ -176,6 +176,17 @@ class UserFunctionsMixin:
         err = solver_error(self.mode, solver, step, self.stable.dt, self.scenario.cage_damping)
         if err is not None:
             raise err
+        if self.scenario.cage_damping == "implicit" and step is not None:
+            # the kernel takes the cage damping implicit over stepSize: the balls must step by it, within 1 % (a
+            # run's end rounds the solver's step; the fast mode fits whole sub-steps into it, as
+            # _check_fast_step does)
+            n_sub = max(1, int(step / self.scenario.dt + 0.5)) if self.mode == "fast" else 1
+            ball_step = step / n_sub
+            if abs(ball_step - self.scenario.dt) > 0.01 * self.scenario.dt:
+                raise InputError(f"cageDamping: 'implicit' takes the cage contacts' damping over stepSize = "
+                                 f"{self.scenario.dt:.6g} s, but the balls step by {ball_step:.6g} s (the solver's "
+                                 f"step {step:.6g} s{f' in {n_sub} sub-steps' if self.mode == 'fast' else ''}); set "
+                                 "stepSize to the balls' step or use the element's SimulationSettings")
         evidence = self._runaway_evidence()
         if self.mode != "fast":  # the fast mode's steps are checked at its first step (_check_fast_step)
             evidence[1] = step is not None and step > self.stable.dt

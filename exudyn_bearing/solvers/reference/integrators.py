@@ -149,8 +149,9 @@ def run_verlet(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb
     is written before it is read; numba's own np.zeros compiled for about
     0.4 s of a cold start).
     Returns (steps done, samples written, status): status 0 ok,
-    1 non-finite state, 2 runaway overlap (> P_MAX_OVERLAP R_b, or a cage
-    contact beyond P_MAX_OVERLAP of its radius; NaN overlap: non-finite state).
+    1 non-finite state found at a sample or at the end, 2 runaway overlap
+    (> P_MAX_OVERLAP R_b, or a cage contact beyond P_MAX_OVERLAP of its radius)
+    or a NaN overlap (a non-finite ball or cage ball between samples).
     ``defect_path``, ``ellipse_path``, ``loss_path`` as in :func:`~exudyn_bearing.model.contact.forces`;
     ``signal_path`` None compiles the loop without the signals (then
     ``sig_every`` must be 0).
