@@ -13,7 +13,9 @@ rename, with the usual permissions of the process umask, 0644 under umask
     "retries"}`` (written last: its presence marks the case as done).
 ``<name>.error.json``
     A failed case: ``{"name", "status": "failed", "spec", "spec_hash",
-    "error": {"type", "message"}, "traceback", "wall_case_s", "warnings"}``. It does not
+    "error": {"type", "message"}, "traceback", "wall_case_s", "warnings"}``
+    (:data:`FAILED_RECORD_FIELDS`; ``wall_case_s`` null and ``warnings`` empty
+    when the worker itself died, so that nothing was measured). It does not
     mark the case as done: the next run tries the case again (and removes the
     error record when the case then succeeds).
 ``index.json``, ``index.csv``
@@ -225,10 +227,16 @@ def _warning_list(caught) -> list:
     return out
 
 
-def _error_record(name, spec, exc, wall):
-    return {"name": name, "status": "failed", "spec": spec, "spec_hash": spec_hash(spec),
-            "error": {"type": type(exc).__name__, "message": str(exc)},
-            "traceback": "".join(traceback.format_exception(type(exc), exc, exc.__traceback__)), "wall_case_s": wall}
+#: Fields of a failed case's record (``<name>.error.json``).
+FAILED_RECORD_FIELDS = ("name", "status", "spec", "spec_hash", "error", "traceback", "wall_case_s", "warnings")
+
+
+def _error_record(name, spec, exc, wall=None, warning_list=()):
+    """The record of a failed case (:data:`FAILED_RECORD_FIELDS`); ``wall`` [s] None and no warnings when the
+    worker died before it could report them."""
+    return dict(zip(FAILED_RECORD_FIELDS, (
+        name, "failed", spec, spec_hash(spec), {"type": type(exc).__name__, "message": str(exc)},
+        "".join(traceback.format_exception(type(exc), exc, exc.__traceback__)), wall, list(warning_list))))
 
 
 def _run_case_recorded(name: str, spec: dict, out_dir: str):
@@ -242,8 +250,7 @@ def _run_case_recorded(name: str, spec: dict, out_dir: str):
             _run_case(name, spec, out_dir, caught)
             return name, None, _warning_list(caught)
         except Exception as exc:  # noqa: BLE001 - every failure of a case is recorded, the sweep goes on
-            rec = _error_record(name, spec, exc, time.perf_counter() - t0)
-            rec["warnings"] = _warning_list(caught)
+            rec = _error_record(name, spec, exc, time.perf_counter() - t0, _warning_list(caught))
             _write_json(Path(out_dir) / f"{name}.error.json", rec)
             return name, rec, rec["warnings"]
 
@@ -488,7 +495,7 @@ def _run_pool(cases, todo, out, workers, finished):
             try:
                 finished(*fut.result())
             except Exception as exc:  # noqa: BLE001 - the worker died (killed, out of memory): record it
-                rec = _error_record(n, cases[n], exc, 0.0)
+                rec = _error_record(n, cases[n], exc)
                 _write_json(out / f"{n}.error.json", rec)
                 finished(n, rec)
     except BaseException:
@@ -509,7 +516,7 @@ def _run_dask(cases, todo, out, scheduler, finished):
             try:
                 finished(*fut.result())
             except Exception as exc:  # noqa: BLE001 - the worker was lost: record it
-                rec = _error_record(n, cases[n], exc, 0.0)
+                rec = _error_record(n, cases[n], exc)
                 _write_json(out / f"{n}.error.json", rec)
                 finished(n, rec)
     except BaseException:
