@@ -143,7 +143,8 @@ class ReferenceEngine:
                 k_samp += ns
                 if status != 0:
                     t_fail = done * s.dt
-                    what = "non-finite" if status == 1 else "runaway (overlap above 5 % of the radius of a ball or cage ball)"
+                    what = ("non-finite" if status == 1 else
+                            "runaway (overlap above 5 % of the radius of a ball or cage ball)")
                     raise runaway_error("dt", t_fail, self.stable, what, step=f" with dt = {s.dt:.3g} s", remedy="dt")
                 if progress and (time.perf_counter() - last_print > 0.5 or done >= n_steps):
                     last_print = time.perf_counter()
