@@ -212,6 +212,15 @@ def dynamics():
     line("Verlet step factor, zeta = 1, implicit damping; ratio to explicit",
          f"{f_impl:.4f}; {f_impl / explicit_step_factor(1.0):.3f}")
     line("damping ratio at the implicit limit, zeta = 1", 1.0 / (1.0 + 2.0 * f_impl), "{:.3f}")
+    # the estimate's cage mode, omega^2 = 2 k / m, with each of its two contacts critically damped on its own:
+    # zeta = sqrt 2 in the mode, and C dt / m = sqrt 2 omega dt for the implicit coefficient
+    lo, hi = 0.0, 2.0
+    for _ in range(200):
+        x = 0.5 * (lo + hi)
+        z = math.sqrt(2.0) / (1.0 + math.sqrt(2.0) * x)
+        lo, hi = (x, hi) if x < 2.0 * (math.sqrt(1.0 + z * z) - z) else (lo, x)
+    line("two-contact cage mode (zeta = sqrt 2): Verlet limit explicit, implicit damping",
+         f"{explicit_step_factor(math.sqrt(2.0)):.3f}, {0.5 * (lo + hi):.3f}")
     line("6208 ring-mass estimate", ring_mass_estimate(B6208) * 1e3, "{:.1f}", "g")
     # the table of dynamics.md: the 6208 in its protocol from rest (cage limit at a tenth of the ball load), the
     # 7208 from the analytic state (unequal contact angles: a tenth too)
