@@ -747,12 +747,12 @@ def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist,
 
 
 @kernel(inline="always")
-def _pair_contact(ia, ib, xb, vb, fb, px_, pv_, pf_, r_sum, k_pair, m_pair, tau, r_ref):
+def _pair_contact(ia, ib, xb, vb, fb, px_, pv_, pf_, r_sum, k_pair, m_pair, tau):
     """Ball ia against sphere ib of (px_, pv_) (a cage ball, or the next ball
     without cage): frictionless Hertz with critical damping, taken implicit
     over the step ``tau`` (:func:`_implicit_damping`; 0: explicit); adds the
     force to fb[ia] and its reaction to pf_[ib]; returns the contact force
-    [N], the dissipation of its damping [W] and its overlap / ``r_ref`` (the
+    [N], the dissipation of its damping [W] and its overlap [m] (for the
     runaway measure of :func:`forces`)."""
     dx = xb[ia, 0] - px_[ib, 0]
     dy = xb[ia, 1] - px_[ib, 1]
@@ -779,7 +779,7 @@ def _pair_contact(ia, ib, xb, vb, fb, px_, pv_, pf_, r_sum, k_pair, m_pair, tau,
     pf_[ib, 0] -= f * nx
     pf_[ib, 1] -= f * ny
     pf_[ib, 2] -= f * nz
-    return f, (f - f_el) * ddot, delta / r_ref
+    return f, (f - f_el) * ddot, delta
 
 
 @kernel(inline="always")
@@ -788,7 +788,7 @@ def _guide_contact(k, p, xc, vc, rings, fc, fr):
     centre circle r_p in the ring's radial plane, tube radius R_z + guide
     clearance; frictionless Hertz, R_eq = R_z, critical damping. Adds the
     force to fc[k] and its reaction to fr[1]; returns the dissipation of its
-    damping [W] and the overlap / R_z (the runaway measure of :func:`forces`;
+    damping [W] and the overlap [m] (for the runaway measure of :func:`forces`;
     NaN for a non-finite cage ball)."""
     rz = p[P_RZ]
     free = p[P_RGUIDE] - rz
@@ -799,7 +799,6 @@ def _guide_contact(k, p, xc, vc, rings, fc, fr):
     delta, nlx, nly, nlz, _ca, _sa, _rc = _groove_geometry(cx, cy, cz, p[P_RP], 0.0, p[P_RGUIDE], rz, False)
     if delta <= 0.0:
         return 0.0, 0.0
-    ratio = delta / rz
     nx = rings[1, 6] * nlx + rings[1, 7] * nly + rings[1, 8] * nlz
     ny = rings[1, 9] * nlx + rings[1, 10] * nly + rings[1, 11] * nlz
     nz = rings[1, 12] * nlx + rings[1, 13] * nly + rings[1, 14] * nlz
@@ -824,8 +823,8 @@ def _guide_contact(k, p, xc, vc, rings, fc, fr):
         fr[1, 3] += mx_
         fr[1, 4] += my_
         fr[1, 5] += mz_
-        return (f - f_el) * vn, ratio
-    return 0.0, ratio
+        return (f - f_el) * vn, delta
+    return 0.0, delta
 
 
 @kernel(inline="always")
@@ -965,7 +964,7 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb,
         m_pair = p[P_MB] * p[P_MZ] / (p[P_MB] + p[P_MZ])
         n_pair = 2
         tau = p[P_CAGE_TAU]
-        r_ref = p[P_RZ]
+        r_ref = p[P_RZ]  # both contacts of a cage ball: their overlap over its radius
     else:
         px_, pv_, pf_ = xb, vb, fb
         r_sum = 2.0 * p[P_RB]
@@ -974,27 +973,28 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb,
         n_pair = 1
         tau = 0.0  # the ball / ball contacts of a scene without cage: explicit
         r_ref = p[P_RB]
-    cage_worst = 0.0
+    cage_overlap = 0.0  # the largest overlap of the cage (or ball / ball) contacts [m]
     for k in range(z):
         k2 = k + 1 if k + 1 < z else 0
         for m in range(n_pair):
             ia = k if m == 0 else k2          # ball
             ib = k if cage else k2            # cage ball k, or the next ball
-            f, damp, ratio = _pair_contact(ia, ib, xb, vb, fb, px_, pv_, pf_, r_sum, k_pair, m_pair, tau, r_ref)
+            f, damp, overlap = _pair_contact(ia, ib, xb, vb, fb, px_, pv_, pf_, r_sum, k_pair, m_pair, tau)
             damp_sum += damp
-            if ratio > cage_worst:
-                cage_worst = ratio
+            if overlap > cage_overlap:
+                cage_overlap = overlap
             if want:
                 cage_load[k, m] = f
         if want and not cage:
             cage_load[k, 1] = 0.0
         if cage:
-            damp, ratio = _guide_contact(k, p, xc, vc, rings, fc, fr)
+            damp, overlap = _guide_contact(k, p, xc, vc, rings, fc, fr)
             damp_sum += damp
-            if ratio > cage_worst or ratio != ratio:  # NaN: a non-finite cage ball (stays the worst)
-                cage_worst = ratio
-    if cage_worst > p[P_MAX_OVERLAP] or cage_worst != cage_worst:
-        worst = cage_worst  # a runaway (or non-finite) cage contact stops the engines like a ball contact
+            if overlap > cage_overlap or overlap != overlap:  # NaN: a non-finite cage ball (stays the worst)
+                cage_overlap = overlap
+    # a runaway (or non-finite) cage contact stops the engines like a ball contact
+    if cage_overlap > p[P_MAX_OVERLAP] * r_ref or cage_overlap != cage_overlap:
+        worst = cage_overlap / r_ref
     if loss_path is not None:  # pruned at compile time when None
         if p[P_DRAG] > 0.5:
             drag_sum = _ball_drag(p, xb, vb, rings, fb, fr)
