@@ -167,3 +167,27 @@ def test_the_repository_cites_its_own_theory_document():
     assert len(pages) >= 8
     for page in pages:
         assert (root / "docs" / "theory" / page).is_file(), page
+
+
+def test_make_report_names_the_scripts_the_host_slowed():
+    """The report's host-speed probe: a script is named when the probe before or after it is below
+    PROBE_SHARE of the run's fastest, and only then; without probes the report says nothing."""
+    import sys
+
+    sys.path.insert(0, str(ROOT / "validation"))
+    import make_report
+
+    share = make_report.PROBE_SHARE
+    fast = 3.8e5
+    slow = 0.99 * share * fast
+    probes = [("a.py", fast), ("b.py", fast), ("c.py", slow), ("d.py", 0.999 * fast)]
+    # c ran after a slow probe; b ended on it; a and d are between fast probes
+    assert make_report.disturbed_scripts(probes, end=fast) == [("b.py", fast, slow), ("c.py", slow, 0.999 * fast)]
+    # a slow end probe names the last script; no end probe: the last script has its own probe only
+    assert make_report.disturbed_scripts(probes[:2], end=slow) == [("b.py", fast, slow)]
+    assert make_report.disturbed_scripts([("a.py", fast), ("b.py", 1.01 * share * fast)], end=None) == []
+    assert make_report.disturbed_scripts([]) == []
+    text = make_report.probe_sentence({"probes": [list(p) for p in probes], "end": fast})
+    assert "c.py" in text and "b.py" in text and "a.py" not in text and "d.py" not in text
+    assert make_report.probe_sentence({"probes": [["a.py", fast]], "end": fast}).endswith(": none.")
+    assert make_report.probe_sentence({}) == ""

@@ -146,6 +146,76 @@ def machine_facts():
     return {"cpu": cpu, "cores": os.cpu_count(), "load": load, "time": time.strftime("%Y-%m-%d %H:%M")}
 
 
+#: The host-speed probe (:func:`host_probe`): the reference engine on bench_reference.py's scene (6208,
+#: F_r = 3000 N, 500 rad/s, implicit spring, dt 8 us) for PROBE_T simulated seconds, median of PROBE_REPEAT runs.
+PROBE_T = 0.05
+PROBE_REPEAT = 5
+#: A script is named as disturbed when the probe before or after it is below this share of the run's fastest.
+PROBE_SHARE = 0.85
+_probe_warm = []
+
+
+def host_probe():
+    """Steps per second of wall time of a short reference-engine run (PROBE_T, median of PROBE_REPEAT), in this
+    process: how fast the shared host runs the engine right now (other jobs on it slow every script alike).
+    The first call loads (or compiles) the kernels with a 1 ms run first."""
+    import warnings
+
+    import exudyn_bearing as eb
+    from exudyn_bearing.solvers.reference import ReferenceEngine
+
+    scene = dict(Fr=3000.0, omega=500.0, dt=8e-6, tangential="implicit", sample_dt=1e-3)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        if not _probe_warm:
+            ReferenceEngine("6208", eb.Scenario(t_end=1e-3, **scene)).run()
+            _probe_warm.append(True)
+        steps = round(PROBE_T / scene["dt"])
+        rates = [steps / ReferenceEngine("6208", eb.Scenario(t_end=PROBE_T, **scene)).run().wall_s
+                 for _ in range(PROBE_REPEAT)]
+    return float(np.median(rates))
+
+
+def disturbed_scripts(probes, end=None, share=PROBE_SHARE):
+    """Scripts run while the host was slow: ``probes`` [(script, probe before it [steps/s]), ...] in run
+    order, ``end`` the probe after the last one (None: not taken). A script's probes are the one before it
+    and the next script's (or ``end``); it is named when the smaller is below ``share`` of the fastest probe
+    of the run. Returns [(script, before, after), ...] (after None when not taken).
+
+    >>> disturbed_scripts([("a", 100.0), ("b", 80.0), ("c", 99.0)], end=100.0)
+    [('a', 100.0, 80.0), ('b', 80.0, 99.0)]
+    """
+    values = [v for _s, v in probes] + ([end] if end is not None else [])
+    if not values:
+        return []
+    best = max(values)
+    out = []
+    for i, (script, before) in enumerate(probes):
+        after = probes[i + 1][1] if i + 1 < len(probes) else end
+        low = before if after is None else min(before, after)
+        if low < share * best:
+            out.append((script, before, after))
+    return out
+
+
+def probe_sentence(record):
+    """The report's sentence on the host-speed probes of a run (``record``: {"probes": [[script, steps/s],
+    ...], "end": steps/s} as run_all writes it), or "" without probes."""
+    probes = [tuple(p) for p in (record or {}).get("probes", [])]
+    if not probes:
+        return ""
+    end = record.get("end")
+    values = [v for _s, v in probes] + ([end] if end is not None else [])
+    bad = disturbed_scripts(probes, end)
+    named = ("; ".join(f"{s} ({b:.3g} before, {'-' if a is None else f'{a:.3g}'} after)" for s, b, a in bad)
+             if bad else "none")
+    return (f"Host-speed probe (the reference engine on bench_reference.py's scene at 8 us, implicit spring, "
+            f"{PROBE_T:g} s simulated, median of {PROBE_REPEAT} runs, steps per second of wall time, taken before "
+            f"each script and at the end): fastest {max(values):.3g}, median {float(np.median(values)):.3g}, "
+            f"slowest {min(values):.3g}. Scripts with a probe before or after them below {PROBE_SHARE:g} of the "
+            f"fastest (the host was slower then: their wall times may be inflated, their ratios less so): {named}.")
+
+
 def machine_sentence(machine):
     """The report's sentence naming the machine of a run (``machine``: {"start": facts, "end": facts} as
     run_all writes them), or "" without a record."""
@@ -168,18 +238,26 @@ def run_all(skip=(), start_at=None):
     machine_path.write_text(json.dumps(machine, indent=2))
     names = [script_entry(e)[0] for e in SCRIPTS]
     first = names.index(start_at) if start_at else 0
+    probe_path = OUT / "make_report_probe.json"
+    probe = json.loads(probe_path.read_text()) if start_at and probe_path.exists() else {"probes": []}
+    probe.pop("end", None)
     for entry in SCRIPTS[first:]:
         script, args, tag = script_entry(entry)
         if script in skip:
             continue
+        key = f"{script} {' '.join(args)}" if tag else script
+        probe["probes"] = [p for p in probe["probes"] if p[0] != key] + [[key, host_probe()]]
+        probe_path.write_text(json.dumps(probe, indent=2))
         t0 = time.perf_counter()
         print(f"running {script} {' '.join(args)}", flush=True)
         proc = subprocess.run([sys.executable, str(HERE / script), *args], check=True, stdout=subprocess.PIPE,
                               text=True)
         print(proc.stdout, end="", flush=True)
         (OUT / printout_name(script, tag)).write_text(proc.stdout)  # what section_printed quotes
-        walls[f"{script} {' '.join(args)}" if tag else script] = time.perf_counter() - t0
+        walls[key] = time.perf_counter() - t0
     walls_path.write_text(json.dumps(walls, indent=2))
+    probe["end"] = host_probe()
+    probe_path.write_text(json.dumps(probe, indent=2))
     machine["end"] = machine_facts()
     machine_path.write_text(json.dumps(machine, indent=2))
 
@@ -1431,6 +1509,10 @@ def main(argv=None):
     machine = machine_sentence(json.loads(machine_path.read_text()) if machine_path.exists() else {})
     if machine:
         head += [machine, ""]
+    probe_path = OUT / "make_report_probe.json"
+    probed = probe_sentence(json.loads(probe_path.read_text()) if probe_path.exists() else {})
+    if probed:
+        head += [probed, ""]
     if walls:
         head += [f"Wall time of this regeneration: {sum(walls.values()) / 60:.0f} min in all; of each script: " +
                  ", ".join(f"{k} {v:.0f} s" for k, v in walls.items()) + ".", ""]
