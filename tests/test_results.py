@@ -87,37 +87,22 @@ def test_run_shorter_than_one_sample_is_refused():
     eb.Scenario(t_end=1e-4, sample_dt=1e-4)  # one sample is enough
 
 
-def test_fast_mode_element_counts_its_steps_and_timed_calls(monkeypatch):
-    # the fast mode's user function integrates the balls: its record counts the Exudyn
-    # steps and adds up the clock intervals of its calls (it reported steps = 0 and wall_s = 0).
-    # Bookkeeping, not speed: the user functions read a fake clock that advances 1 s per
-    # reading, so the sum is exactly 1 s per user-function call (two readings each: the
-    # steps, and the evaluation at the start that advances nothing), whatever the machine
-    import types
-
-    import exudyn_bearing.solvers.element.userfunctions as uf
+def test_fast_mode_element_counts_its_steps():
+    # the fast mode's user function integrates the balls: its record counts the Exudyn steps (it reported
+    # steps = 0), one per fast-mode step of sub * dt, and the summary carries the record's counts. Bookkeeping
+    # only: what the run's clock reads is left to the benchmarks (validation/bench_element.py)
     from exudyn_bearing.solvers.element.engine import ExudynEngine, solve_dynamic
 
-    readings = [0.0]
-
-    def perf_counter():
-        readings[0] += 1.0
-        return readings[0]
-
-    monkeypatch.setattr(uf, "time", types.SimpleNamespace(perf_counter=perf_counter))
     t_end, dt = 0.002, 2.5e-6  # two sub-steps of 2.5 us: within the fast mode's 5.7 us limit (no warning)
     for sub in (1, 2):
         eng = ExudynEngine("6208", eb.Scenario(t_end=t_end, dt=dt, tangential="implicit"), mode="fast",
                            sub_steps=sub)
-        readings[0] = 0.0
         with warnings.catch_warnings():
             warnings.simplefilter("error", eb.StepSizeWarning)
             solve_dynamic(eng.mbs, eng.element.SimulationSettings(t_end))
         r = eb.Results(eng.element.record())
-        calls = readings[0] / 2
-        assert r.steps == round(t_end / (sub * dt)) and r.wall_s == calls and calls >= r.steps
-        s = r.summary()
-        assert s["steps"] == r.steps and s["wall_s"] == r.wall_s
+        assert r.steps == round(t_end / (sub * dt))
+        assert r.summary()["steps"] == r.steps
 
 
 def test_run_plot_masks_unloaded_balls_and_keeps_legends_off_the_data(steady, tmp_path, monkeypatch):
