@@ -176,6 +176,12 @@ def host_probe():
     return float(np.median(rates))
 
 
+def _probe_values(probes, end):
+    """The probes of a run [steps/s]: each script's (``probes``: [(script, steps/s), ...]) and ``end`` (None:
+    not taken)."""
+    return [v for _s, v in probes] + ([end] if end is not None else [])
+
+
 def disturbed_scripts(probes, end=None, share=PROBE_SHARE):
     """Scripts run while the host was slow: ``probes`` [(script, probe before it [steps/s]), ...] in run
     order, ``end`` the probe after the last one (None: not taken). A script's probes are the one before it
@@ -185,7 +191,7 @@ def disturbed_scripts(probes, end=None, share=PROBE_SHARE):
     >>> disturbed_scripts([("a", 100.0), ("b", 80.0), ("c", 99.0)], end=100.0)
     [('a', 100.0, 80.0), ('b', 80.0, 99.0)]
     """
-    values = [v for _s, v in probes] + ([end] if end is not None else [])
+    values = _probe_values(probes, end)
     if not values:
         return []
     best = max(values)
@@ -205,7 +211,7 @@ def probe_sentence(record):
     if not probes:
         return ""
     end = record.get("end")
-    values = [v for _s, v in probes] + ([end] if end is not None else [])
+    values = _probe_values(probes, end)
     bad = disturbed_scripts(probes, end)
     named = ("; ".join(f"{s} ({b:.3g} before, {'-' if a is None else f'{a:.3g}'} after)" for s, b, a in bad)
              if bad else "none")

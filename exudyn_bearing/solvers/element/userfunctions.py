@@ -180,7 +180,7 @@ class UserFunctionsMixin:
             # the kernel takes the cage damping implicit over stepSize: the balls must step by it, within 1 % (a
             # run's end rounds the solver's step; the fast mode fits whole sub-steps into it, as
             # _check_fast_step does)
-            n_sub = max(1, int(step / self.scenario.dt + 0.5)) if self.mode == "fast" else 1
+            n_sub = self._sub_steps_in(step) if self.mode == "fast" else 1
             ball_step = step / n_sub
             if abs(ball_step - self.scenario.dt) > 0.01 * self.scenario.dt:
                 raise InputError(f"cageDamping: 'implicit' takes the cage contacts' damping over stepSize = "
@@ -417,13 +417,18 @@ class UserFunctionsMixin:
         if self._sig is not None:
             self._signal_sample(t)
 
+    def _sub_steps_in(self, h):
+        """The fast mode's number of ball sub-steps in an Exudyn step ``h`` [s]: the whole number nearest
+        h / stepSize, at least one."""
+        return max(1, int(h / self._dt_sub + 0.5))
+
     def _check_fast_step(self, h, stacklevel=4):
         """Warn (once) when the fast mode's Exudyn step ``h`` exceeds its limit
         or its ball sub-step the balls' stable step. With two or more
         sub-steps the limit is ``fastStepLimit`` (the staggered coupling); one
         sub-step is the body mode's scheme, bounded by ``ringStableStep``."""
         self._clock[3] = True
-        n_sub = max(1, int(h / self._dt_sub + 0.5))
+        n_sub = self._sub_steps_in(h)
         dt = h / n_sub
         self._staggered = n_sub > 1  # the bound the runaway message names (_check_worst)
         limit = self.fastStepLimit if self._staggered else self.ringStableStep
