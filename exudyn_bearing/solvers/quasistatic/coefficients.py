@@ -13,6 +13,12 @@ them over that many evenly spaced ball-set positions (the time average a
 linear time-invariant rotor model sees), 1 takes the balls at psi_j = phase
 + 2 pi j/Z. The spread over the phases is returned in ``operating_point``.
 
+The record carries the bearing it was made for: ``operating_point["bearing"]``
+(name) and ``operating_point["bearing_geometry"]`` (:func:`bearing_identity`:
+ball set, race and groove radii, free contact angle, elastic constants), kept
+by ``to_dict``/``from_dict`` (the JSON of ``stiffness --speeds --json``).
+:func:`check_table` compares it with the bearing a level is built for.
+
 Axes and signs are those of :mod:`exudyn_bearing.model.coefficients`
 (x the radial load direction, z the bearing axis, K = -dF/dq and
 C = -dF/dq' of the force on the shaft); the quasi-static solver's DOFs
@@ -30,12 +36,67 @@ from ...data import InputError, load_bearing
 from ...model.coefficients import BearingCoefficients, speed_array
 from .solve import solve_quasistatic
 
-__all__ = ["bearing_coefficients", "METHOD"]
+__all__ = ["METHOD", "bearing_coefficients", "bearing_identity", "check_table"]
 
 #: Description stored in the record's ``method``.
 METHOD = ("quasi-static 5-DOF equilibrium (exudyn_bearing.solve_quasistatic): stiffness by central differences "
           "of the balls' force on the inner ring; damping: normal damping of the contact model (hysteretic, "
           "squeeze film, Lambda-switched) condensed over each ball's two contacts in series")
+
+
+#: Fields of :func:`bearing_identity` taken from the bearing (the rest from its material).
+IDENTITY_FIELDS = ("n_balls", "ball_radius", "inner_race_radius", "outer_race_radius", "inner_groove_radius",
+                   "outer_groove_radius", "free_contact_angle")
+#: Relative tolerance of :func:`check_table`'s comparison of geometries (a JSON round trip keeps 17 digits).
+IDENTITY_RTOL = 1e-9
+
+
+def bearing_identity(bearing) -> dict:
+    """The geometry fingerprint of a bearing that a coefficient table carries (``operating_point
+    ["bearing_geometry"]``): the fields of :data:`IDENTITY_FIELDS` [m, rad] and the material's Young's modulus
+    [Pa] and Poisson ratio, all that the stiffness depends on besides the loads and options."""
+    b = load_bearing(bearing)
+    out = {k: (int(getattr(b, k)) if k == "n_balls" else float(getattr(b, k))) for k in IDENTITY_FIELDS}
+    out.update(youngs_modulus=float(b.material.youngs_modulus), poisson_ratio=float(b.material.poisson_ratio))
+    return out
+
+
+def check_table(coefficients, bearing, name: str = "coefficients") -> BearingCoefficients:
+    """``coefficients`` (a :class:`BearingCoefficients` or its ``to_dict`` dict, e.g. read from JSON) as a
+    record, if it was made for ``bearing``; else InputError naming ``name``: a wrong type, a table without the
+    bearing's fingerprint (``operating_point["bearing_geometry"]``, written by :func:`bearing_coefficients`
+    since it exists; older or hand-made tables are refused, not guessed: make them again), or one made for
+    another geometry (:func:`bearing_identity`, relative tolerance :data:`IDENTITY_RTOL`)."""
+    if isinstance(coefficients, dict):
+        try:
+            coefficients = BearingCoefficients.from_dict(coefficients)
+        except InputError as exc:
+            raise InputError(f"{name}: not a coefficient table ({exc})") from None
+    if not isinstance(coefficients, BearingCoefficients):
+        raise InputError(f"{name}: expected a coefficient table (exudyn_bearing.bearing_coefficients(...) or its "
+                         f"to_dict() dict), got {coefficients!r} ({type(coefficients).__name__})")
+    b = load_bearing(bearing)
+    op = coefficients.operating_point
+    made_for = op.get("bearing_geometry")
+    if not isinstance(made_for, dict):
+        raise InputError(f"{name}: the table does not say which bearing it was made for (no operating_point"
+                         f"['bearing_geometry']; tables before it or made by hand); make it with "
+                         f"exudyn_bearing.bearing_coefficients({b.name!r}, ...)")
+    own = bearing_identity(b)
+    differ = []
+    for key, value in own.items():
+        other = made_for.get(key)
+        try:
+            same = other is not None and math.isclose(float(other), value, rel_tol=IDENTITY_RTOL, abs_tol=1e-15)
+        except (TypeError, ValueError):
+            same = False
+        if not same:
+            differ.append(f"{key} {other!r} against {value:.6g}")
+    if differ:
+        raise InputError(f"{name}: the table was made for another bearing ({op.get('bearing', '?')!r}) than this "
+                         f"{b.name!r}: {'; '.join(differ[:3])}; make it with "
+                         f"exudyn_bearing.bearing_coefficients(bearing, ...) for the bearing it is used with")
+    return coefficients
 
 
 def bearing_coefficients(bearing, speeds, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, n_phases=1, phase=0.0,
@@ -63,7 +124,8 @@ def bearing_coefficients(bearing, speeds, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=
     -------
     BearingCoefficients
         ``speeds``, ``stiffness`` and ``damping`` (n, 5, 5), ``method`` and
-        ``operating_point`` (bearing, loads, clearance, solver options, the
+        ``operating_point`` (bearing name and geometry fingerprint
+        (:func:`bearing_identity`), loads, clearance, solver options, the
         ring displacement at each speed, the largest relative spread of K
         and C over the phases, the solver's stiffness checks).
 
@@ -106,7 +168,7 @@ def bearing_coefficients(bearing, speeds, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=
         kk[i], cc[i] = ks.mean(axis=0), cs.mean(axis=0)
         spread_k[i] = float(np.ptp(ks, axis=0).max() / max(np.abs(kk[i]).max(), 1e-300))
         spread_c[i] = float(np.ptp(cs, axis=0).max() / max(np.abs(cc[i]).max(), 1e-300))
-    op = {"bearing": b.name, "Fr": float(Fr), "Fy": float(Fy), "Fa": float(Fa), "Mx": float(Mx), "My": float(My),
+    op = {"bearing": b.name, "bearing_geometry": bearing_identity(b), "Fr": float(Fr), "Fy": float(Fy), "Fa": float(Fa), "Mx": float(Mx), "My": float(My),
           "diametral_clearance": b.diametral_clearance, "n_phases": int(n_phases), "phase": float(phase),
           "options": {k: (v if isinstance(v, (int, float, str, bool, dict, type(None))) else str(v))
                       for k, v in options.items()},

@@ -22,7 +22,7 @@ import math
 import numpy as np
 
 from ....data import InputError, Lubricant, load_bearing, load_lubricant
-from ....data.errors import check_finite, check_positive
+from ....data.errors import check_finite, check_plausible, check_positive
 from ....model.load_range import MAX_CONTACT_PRESSURE, check_load_range
 from ....model.solver_types import IMPLICIT_SOLVERS, settings_solver, unstable_solver_error
 from ....physics import kinematics as _kin
@@ -38,6 +38,8 @@ LEVEL_OPTIONS = ("lubricant", "initialLoad", "loadAngle", "initialOmega", "ringG
 #: Default speeds [rad/s] of the coefficient table (damping, linear level): up to the larger of 1000 rad/s and
 #: 1.5 times the initial speed.
 DEFAULT_SPEEDS = (0.0, 100.0, 250.0, 500.0, 750.0, 1000.0)
+#: ``loadAngle`` [rad] is accepted in [-LOAD_ANGLE_RANGE, LOAD_ANGLE_RANGE] (one turn either way)
+LOAD_ANGLE_RANGE = 2.0 * math.pi
 
 
 def _load_pair(load):
@@ -140,9 +142,10 @@ class LevelBearing:
                                                 lubricant=self.lubricant, hertz_method=hertzModel, stiffness=False)
         #: inner-ring pose (d_x, d_y, d_z, theta_x, theta_y) at the operating point (outer-ring frame):
         #: place the inner ring there to start in equilibrium
-        self.loadAngle = check_finite("loadAngle", loadAngle)
+        self.loadAngle = check_plausible("loadAngle", loadAngle, -LOAD_ANGLE_RANGE, LOAD_ANGLE_RANGE, "rad",
+                                         "the azimuth of the radial load is in radians", ((math.radians, "deg"),))
         self.initialRingDisplacement = self.rotation() @ np.array(self.operatingPoint.displacement, float)
-        self.coefficients = coefficients if coefficients is not None else self._table(coefficientSpeeds)
+        self.coefficients = self._table(coefficientSpeeds) if coefficients is None else self._given_table(coefficients)
         a0 = b.free_contact_angle
         #: cage and ball-spin speeds per unit relative ring speed (kinematic, free contact angle)
         self.cageRatio = float(_kin.cage_speed(1.0, 0.0, b.ball_radius, b.pitch_radius, a0))
@@ -201,6 +204,13 @@ class LevelBearing:
             if str(exc).startswith("speeds"):
                 raise InputError(f"coefficientSpeeds{str(exc)[len('speeds'):]}") from None
             raise
+
+    def _given_table(self, coefficients):
+        """The user's ``coefficients`` if it is a table (or its to_dict dict) made for this bearing, else InputError
+        naming ``coefficients`` (..coefficients.check_table; both levels read it)."""
+        from ..coefficients import check_table
+
+        return check_table(coefficients, self.bearing)
 
     def _ball_load_limit(self):
         """Ball load [N] at which the Hertz pressure reaches MAX_CONTACT_PRESSURE (free contact angle)."""
