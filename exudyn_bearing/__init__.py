@@ -26,6 +26,7 @@ if TYPE_CHECKING:  # the public names, imported on first use by __getattr__ belo
     from .simulate import CreateBallBearing, simulate
     from .solvers.element.console import filter_exudyn_notes
     from .solvers.quasistatic import QuasiStaticSolution, bearing_coefficients, solve_quasistatic
+    from .solvers.quasistatic.levels.linear import LinearValidityWarning
     from .solvers.quasistatic.thermal import ThermalSolution, solve_thermal
 
 #: Module of each public name. ``import exudyn_bearing`` loads none of them (numba, scipy, the
@@ -41,6 +42,7 @@ _PUBLIC = {
     ".simulate": ("CreateBallBearing", "simulate"),
     ".solvers.element.console": ("filter_exudyn_notes",),
     ".solvers.quasistatic": ("QuasiStaticSolution", "bearing_coefficients", "solve_quasistatic"),
+    ".solvers.quasistatic.levels.linear": ("LinearValidityWarning",),
     ".solvers.quasistatic.thermal": ("ThermalSolution", "solve_thermal"),
 }
 _MODULE_OF = {name: module for module, names in _PUBLIC.items() for name in names}
@@ -52,7 +54,7 @@ __version__ = "0.1.0"
 __all__ = ["CreateBallBearing", "filter_exudyn_notes", "BallBearing", "Defect", "InputError", "Lubricant", "Material",
            "Results", "Scenario", "SimulationError", "SteadyStateWarning", "StepSizeWarning", "catalog", "get_bearing", "load_bearing",
            "load_lubricant", "lubricants", "materials", "simulate", "solve_quasistatic", "QuasiStaticSolution",
-           "bearing_coefficients", "BearingCoefficients", "solve_thermal", "ThermalSolution"]
+           "bearing_coefficients", "BearingCoefficients", "solve_thermal", "ThermalSolution", "LinearValidityWarning"]
 
 
 def __getattr__(name):
