@@ -143,7 +143,7 @@ def level_call_cost(number=500, repeat=15):
     u = [float(x) for x in br.initialRingDisplacement]
     d, r, v, w = u[:3], [u[3], u[4], 0.3], [0.0] * 3, [0.0, 0.0, OMEGA]
     m6, m3 = [[0.0] * 6 for _ in range(6)], [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]
-    args = (*d, *r, *v, *w, br._method, br._ws, br._ctab)
+    args = (*d, *r, *v, *w, br._method, br._ws)
     cold = np.zeros_like(br._start)
     direct = np.empty((3, 0))  # an empty Hertz table: the kernel solves the exact constants directly
 

@@ -69,15 +69,23 @@ def _hertz_constant(r_x, r_y, e_prime, method, table):
 
 
 @kernel
-def _contact_constants(por, rco, rb, rci, nor, nir, e_prime, method, table):
-    """Hertz constants K_o, K_i [N/m^1.5] at the contact angles given by the normals
-    (curvature radii at the undeformed contact points, ball centre at its
-    groove-centre distance from the outer groove); ``table``: see :func:`_hertz_constant`."""
+def _contact_radii(por, rco, rb, rci, nor, nir):
+    """Effective radii (R_x, R_y) [m] of the outer and inner contact at the contact angles given by the normals
+    (curvature radii at the undeformed contact points, ball centre at its groove-centre distance from the outer
+    groove): (R_xo, R_yo, R_xi, R_yi)."""
     r_ref = por + (rco - rb) * nor
     ca_o = nor if nor > 1e-12 else 1e-12
     ca_i = -nir if -nir > 1e-12 else 1e-12
     rxo, ryo = _raceway_radii_cos(rb, rco, r_ref + rb * ca_o, ca_o, False)
     rxi, ryi = _raceway_radii_cos(rb, rci, r_ref - rb * ca_i, ca_i, True)
+    return rxo, ryo, rxi, ryi
+
+
+@kernel
+def _contact_constants(por, rco, rb, rci, nor, nir, e_prime, method, table):
+    """Hertz constants K_o, K_i [N/m^1.5] at the contact angles given by the normals (:func:`_contact_radii`);
+    ``table``: see :func:`_hertz_constant`."""
+    rxo, ryo, rxi, ryi = _contact_radii(por, rco, rb, rci, nor, nir)
     return _hertz_constant(rxo, ryo, e_prime, method, table), _hertz_constant(rxi, ryi, e_prime, method, table)
 
 

@@ -6,7 +6,7 @@ physics as force elements between two ring markers.
   geometry, Hertz at every ball's current azimuth, tilt, centrifugal and
   gyroscopic loads, ring growth at the current speed) for the rings'
   relative pose, with the balls advanced by the kinematic cage angle, plus
-  the damping matrix of :mod:`..damping`;
+  the contact damping of those balls' state (:mod:`..damping`);
 * :class:`~.linear.LinearBearing` (``model="linear"``): the 5x5 stiffness
   and damping of :func:`..coefficients.bearing_coefficients` interpolated in
   the current speed, about the operating point they were computed at.

@@ -19,15 +19,22 @@ theta_y) and relative spin w_z against the outer ring (:mod:`.base`):
   of the speed); the exact Hertz constants from the tabulated exact solution
   (:func:`exudyn_bearing.physics.hertz.exact_table`) and each ball's Newton
   iteration started from its last solution (:func:`..balls._ball_equilibrium`);
-* the damping matrix C of :mod:`..damping` (normal contact and film damping
-  condensed over each ball's contacts) interpolated in the speed from the
-  coefficient table at ``initialLoad``, times the pose rates.
+* the damping force -C u' of the balls in their current state
+  (:func:`..damping.ring_damping_force`): each loaded ball's normal contact
+  damping (hysteretic, squeeze film, switched by Lambda: the contact law of
+  the ball element and of :func:`..solve.solve_quasistatic`) at its load,
+  overlap and film (Hamrock-Dowson at the rolling speed of the kinematic
+  cage), condensed over its two contacts in series as in
+  :func:`..damping.condensed_matrices`; no operating point enters, so
+  ``initialLoad`` only places the ring (``coefficients`` and
+  ``coefficientSpeeds`` only fill ``coefficients``, the linearised table kept
+  for reference).
 
-The force F = G(u, psi) - C u' on the inner ring (G: the balls' generalized
-force) is one compiled call. Exudyn's implicit solvers differentiate the
-connector numerically for their Jacobian (modified Newton keeps it; see
-:meth:`.base.LevelBearing.SimulationSettings` for the tolerances); the
-explicit ones call it once per stage.
+The force F = G(u, psi) - C(u, psi, w_z) u' on the inner ring (G: the balls'
+generalized force) is one compiled call. Exudyn's implicit solvers
+differentiate the connector numerically for their Jacobian (modified Newton
+keeps it; see :meth:`.base.LevelBearing.SimulationSettings` for the
+tolerances); the explicit ones call it once per stage.
 """
 from __future__ import annotations
 
@@ -36,11 +43,12 @@ import math
 import numpy as np
 
 from ...._jit import kernel
-from ....data import MAX_FREE_CONTACT_ANGLE
+from ....data import MAX_FREE_CONTACT_ANGLE, load_lubricant
 from ....data.errors import check_finite
 from ....model.operating_geometry import operating_geometry
 from ....physics import hertz as _hz
 from ..balls import B_NIR, B_NIZ, B_QI, B_QO, NB, _ring_forces
+from ..damping import ring_damping_force
 from .base import WS_CAGE, WS_FORCE, WS_HEADER, WS_OUT, WS_POSE, WS_QMAX, LevelBearing, entry_point
 
 __all__ = ["QuasiStaticBearing", "level_forces"]
@@ -69,24 +77,26 @@ def _interp_row(speeds, table, w, out):
 
 # the quasi-static level's part of the work array (after the header WS_HEADER of .base): spin-angle state (3),
 # geometry (rho_i, z_i, rho_o, z_o, r_ci, r_co, r_b), constants (k_c, k_r, sin alpha_0, ball mass, ball inertia, E'),
-# the balls' generalized force (5), the damping matrix row-major (25), then per ball psi, m omega_c^2, F_to, F_ti
-# (Z each) and the speeds of the damping table (n)
+# the contact damping law's (alpha_e, eta, ln(xi E'), composite roughness, Lambda breakpoints), the balls'
+# generalized force (5), the pose rates (5), the damping force (5), then per ball psi, m omega_c^2, F_to, F_ti (Z each)
 _STATE = WS_HEADER
 _GEO = _STATE + 3
 _KC, _KR, _SIN_A0, _MASS, _INERTIA, _EPRIME = range(_GEO + 7, _GEO + 13)
-_GEN = _GEO + 13
-_CFLAT = _GEN + 5
-_BALLS = _CFLAT + 25
+_ALPHA_E, _ETA, _LN_G, _SIGMA, _L1, _L3 = range(_GEO + 13, _GEO + 19)
+_GEN = _GEO + 19
+_RATES = _GEN + 5
+_DAMP = _RATES + 5
+_BALLS = _DAMP + 5
 
 
 @kernel
-def level_forces(d0, d1, d2, r0, r1, r2, v0, v1, v2, w0, w1, w2, method, ws, ctab, table, start, balls):
+def level_forces(d0, d1, d2, r0, r1, r2, v0, v1, v2, w0, w1, w2, method, ws, table, start, balls):
     """One evaluation of the quasi-static level (module docstring) for the connector's displacement d,
     Tait-Bryan angles r, velocity v and angular velocity w (.base).
 
     ws: the work array (layout above; state = [last Tait-Bryan spin angle, unwrapped spin angle, cage angle
-    at zero spin angle]); ctab (n, 25): damping matrices at the table's speeds; table, start: Hertz constants
-    and warm starts of :func:`..balls._ring_forces`; balls (Z, NB).
+    at zero spin angle]); table, start: Hertz constants and warm starts of :func:`..balls._ring_forces`; balls
+    (Z, NB).
     Writes the header (pose u, ``out`` = -(F, 0), F, cage (angle, speed), q_max = (largest inner and outer
     ball load, largest loaded inner contact angle)) and the balls table; returns the largest ball load."""
     z = balls.shape[0]
@@ -94,10 +104,10 @@ def level_forces(d0, d1, d2, r0, r1, r2, v0, v1, v2, w0, w1, w2, method, ws, cta
     m_w2 = ws[_BALLS + z:_BALLS + 2 * z]
     fto = ws[_BALLS + 2 * z:_BALLS + 3 * z]
     fti = ws[_BALLS + 3 * z:_BALLS + 4 * z]
-    speeds = ws[_BALLS + 4 * z:]
     gen = ws[_GEN:_GEN + 5]
+    rates = ws[_RATES:_RATES + 5]
+    damp = ws[_DAMP:_DAMP + 5]
     u = ws[WS_POSE:WS_POSE + 5]
-    cflat = ws[_CFLAT:_CFLAT + 25]
     kc = ws[_KC]
     dc = r2 - ws[_STATE]
     dc -= _TWO_PI * math.floor(dc / _TWO_PI + 0.5)
@@ -118,9 +128,14 @@ def level_forces(d0, d1, d2, r0, r1, r2, v0, v1, v2, w0, w1, w2, method, ws, cta
     u[4] = r1
     _ring_forces(u, psi, ws[_GEO], ws[_GEO + 1], ws[_GEO + 2], ws[_GEO + 3], ws[_GEO + 4], ws[_GEO + 5],
                  ws[_GEO + 6], m_w2, fto, fti, ws[_EPRIME], method, table, start, balls, gen)
-    _interp_row(speeds, ctab, w2, cflat)
-    rate3 = w0 - w2 * r1
-    rate4 = w1 + w2 * r0
+    rates[0] = v0
+    rates[1] = v1
+    rates[2] = v2
+    rates[3] = w0 - w2 * r1
+    rates[4] = w1 + w2 * r0
+    ring_damping_force(rates, psi, ws[_GEO], ws[_GEO + 1], ws[_GEO + 2], ws[_GEO + 3], ws[_GEO + 4], ws[_GEO + 5],
+                       ws[_GEO + 6], balls, m_w2, fto, fti, wc, w2, ws[_EPRIME], method, table, ws[_ALPHA_E],
+                       ws[_ETA], ws[_LN_G], ws[_SIGMA], ws[_L1], ws[_L3], damp)
     q_in = 0.0
     q_out = 0.0
     alpha = 0.0
@@ -133,10 +148,8 @@ def level_forces(d0, d1, d2, r0, r1, r2, v0, v1, v2, w0, w1, w2, method, ws, cta
     ws[WS_QMAX + 1] = q_out
     ws[WS_QMAX + 2] = alpha
     for i in range(5):
-        c = (cflat[5 * i] * v0 + cflat[5 * i + 1] * v1 + cflat[5 * i + 2] * v2 + cflat[5 * i + 3] * rate3
-             + cflat[5 * i + 4] * rate4)
-        ws[WS_OUT + i] = -gen[i] + c
-        ws[WS_FORCE + i] = gen[i] - c
+        ws[WS_OUT + i] = -gen[i] - damp[i]
+        ws[WS_FORCE + i] = gen[i] + damp[i]
     ws[WS_OUT + 5] = 0.0
     ws[WS_CAGE] = theta
     ws[WS_CAGE + 1] = wc
@@ -154,7 +167,7 @@ class QuasiStaticBearing(LevelBearing):
         super().__init__(*args, **options)
 
     def _workspace_size(self):
-        return _BALLS - WS_HEADER + 4 * self.bearing.n_balls + len(self.coefficients.speeds)
+        return _BALLS - WS_HEADER + 4 * self.bearing.n_balls
 
     def _setup(self):
         b = self.bearing
@@ -165,24 +178,24 @@ class QuasiStaticBearing(LevelBearing):
         self._geo = ws[_GEO:_GEO + 7]
         self._psi, self._m_w2, self._fto, self._fti = (ws[_BALLS + k * z:_BALLS + (k + 1) * z] for k in range(4))
         self._gen = ws[_GEN:_GEN + 5]
-        self._cflat = ws[_CFLAT:_CFLAT + 25]
-        self._speeds = ws[_BALLS + 4 * z:]
+        self._damp = ws[_DAMP:_DAMP + 5]
         self._balls = np.zeros((z, NB))
         self._start = np.zeros((z, 3))  # the balls' warm starts (balls._ball_equilibrium)
         self._hz_table = _hz.exact_table()
-        c = self.coefficients
-        self._speeds[:] = c.speeds
-        t = self.rotation()
-        self._ctab = np.ascontiguousarray(np.einsum("ij,njk,lk->nil", t, np.array(c.damping, float), t)
-                                          .reshape(-1, 25))
         self._e_prime = ws[_EPRIME] = _hz.material_reduced_modulus(b.material)
+        # the contact damping law's parameters: the lubricant solve_quasistatic takes (None: the bearing's)
+        lub = load_lubricant(self.lubricant, bearing=b)
+        ws[_ALPHA_E], ws[_ETA], ws[_SIGMA] = b.material.hysteretic_damping, lub.viscosity, lub.composite_roughness
+        g = lub.pressure_viscosity * self._e_prime
+        ws[_LN_G] = math.log(g) if g > 0.0 else -math.inf  # xi = 0: no film (ehl.film_thickness_hamrock_dowson)
+        ws[_L1], ws[_L3] = lub.lambda_mixed, lub.lambda_full_film
         self._method = _hz.method_code(self.hertzModel)
         ws[_KC], ws[_KR], ws[_SIN_A0] = self.cageRatio, self.spinRatio, math.sin(b.free_contact_angle)
         self._geo_band = (math.inf, -math.inf)
         self._update_geometry(abs(self.initialOmega))
         self._first = True
-        self._kernel = entry_point(level_forces, (*[0.0] * 12, self._method, ws, self._ctab, self._hz_table,
-                                                  self._start, self._balls))
+        self._kernel = entry_point(level_forces, (*[0.0] * 12, self._method, ws, self._hz_table, self._start,
+                                                  self._balls))
 
     def _update_geometry(self, speed):
         """Grooves, ball mass and inertia at ``speed`` (rigid rings: once; growing rings, whose growth goes with
@@ -216,7 +229,7 @@ class QuasiStaticBearing(LevelBearing):
             self._state[0] = r[2]
             self._first = False
         qmax = self._kernel(d[0], d[1], d[2], r[0], r[1], r[2], v[0], v[1], v[2], w[0], w[1], w[2], self._method,
-                            self._ws, self._ctab, self._hz_table, self._start, self._balls)
+                            self._ws, self._hz_table, self._start, self._balls)
         if not qmax <= self._q_limit:
             self._check_ball_load(self._t_last, qmax)
         if self._qmax[2] > MAX_FREE_CONTACT_ANGLE:
