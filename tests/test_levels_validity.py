@@ -206,3 +206,11 @@ def test_load_angle_outside_one_turn_is_refused(model):
     br = eb.CreateBallBearing(mbs, "6208", m_b, m_g, model=model, initialLoad=(FR, 0.0), loadAngle=-2.0 * math.pi,
                               coefficientSpeeds=[0.0])
     assert br.initialRingDisplacement[0] == pytest.approx(br.operatingPoint.displacement[0], rel=1e-12)
+
+
+def test_a_linearisation_without_stiffness_is_refused():
+    # the default initialLoad (0, 0) on a bearing without clearance: Hertz contacts have no stiffness at zero
+    # load, so the table's K is zero and a loaded shaft would fall through the bearing (3 m in 0.05 s)
+    mbs, _node, m_b, m_g = shaft()
+    with pytest.raises(eb.InputError, match="initialLoad.*no radial or axial stiffness"):
+        eb.CreateBallBearing(mbs, "6208", m_b, m_g, model="linear", coefficientSpeeds=[0.0, 500.0])

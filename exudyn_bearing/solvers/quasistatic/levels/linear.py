@@ -192,7 +192,14 @@ class LinearBearing(LevelBearing):
         self._speeds = ws[_SPEEDS:]
         self._speeds[:] = c.speeds
         t = self.rotation()
-        k = np.einsum("ij,njk,lk->nil", t, np.array(c.stiffness), t)
+        stiff = np.array(c.stiffness)
+        if not np.all(np.abs(np.diagonal(stiff, axis1=1, axis2=2)[:, :3]).max(axis=1) > 0.0):
+            # an unloaded bearing without clearance: Hertz contacts carry nothing and have no stiffness at zero
+            # load, so the linearisation has none (a shaft on it falls through: 3 m in 0.05 s)
+            raise InputError(f"initialLoad: the linear level's table at {self.initialLoad} N has no radial or axial "
+                             "stiffness at some speed (Hertz contacts have none at zero load); give the operating "
+                             "load the rotor puts on the bearing, or use model='quasistatic'")
+        k = np.einsum("ij,njk,lk->nil", t, stiff, t)
         cc = np.einsum("ij,njk,lk->nil", t, np.array(c.damping), t)
         self._table = np.ascontiguousarray(np.concatenate([k.reshape(-1, 25), cc.reshape(-1, 25), disp @ t.T],
                                                           axis=1))
