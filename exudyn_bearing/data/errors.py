@@ -120,12 +120,13 @@ def check_plausible(name: str, value, lo: float, hi: float, unit: str, rule: str
     v = check_finite(name, value)
     if lo <= v <= hi:
         return v
+    u = f" {unit}" if unit else ""  # "" for a ratio: "5 is not plausible (0 to 1)"
     for convert, typed in mistakes:
         w = convert(v) if callable(convert) else v * convert
         if lo <= w <= hi:
-            raise InputError(f"{name}: {v:g} {unit} is not plausible ({lo:g} to {hi:g} {unit}); {rule}: "
-                             f"{v:g} {typed} is {w:.6g} {unit}")
-    raise InputError(f"{name}: {v:g} {unit} is not plausible ({lo:g} to {hi:g} {unit}); {rule}")
+            raise InputError(f"{name}: {v:g}{u} is not plausible ({lo:g} to {hi:g}{u}); {rule}: "
+                             f"{v:g} {typed} is {w:.6g}{u}")
+    raise InputError(f"{name}: {v:g}{u} is not plausible ({lo:g} to {hi:g}{u}); {rule}")
 
 
 #: Temperatures accepted [K]: -123 degC to 527 degC. The thermal expansion of
