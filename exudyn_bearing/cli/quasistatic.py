@@ -94,8 +94,8 @@ def run(args):
     if d["power_loss"] is not None:  # solvers/quasistatic/losses.py
         pl = d["power_loss"]
         print(f"power loss {d['power_loss_total']:.4g} W (" + ", ".join(f"{k} {pl[k]:.4g}" for k in LOSS_COMPONENTS)
-              + f"), friction torque {d['friction_torque_total']:.4g} N m; not modelled: seals and more "
-              "(--json not_modelled)")
+              + f"), friction torque {d['friction_torque_total']:.4g} N m" + _still(s)
+              + "; not modelled: seals and more (--json not_modelled)")
     print_ball_table(s.balls)
     if args.plot:
         print(f"plot: {d['plot']}")
@@ -133,6 +133,13 @@ def run_thermal(args, b, omega, traction):
     print(f"power loss {r.power_loss_total:.4g} W (" + ", ".join(f"{k} {pl[k]:.4g}" for k in LOSS_COMPONENTS)
           + f"); heat out: oil {r.heat_out['oil']:.4g} W, ambient {r.heat_out['ambient']:.4g} W")
     print_ball_table(s.balls)
+
+
+def _still(s) -> str:
+    """What the friction torque is without relative speed of the rings (solvers/quasistatic/losses.py)."""
+    if s.omega != s.omega_outer:
+        return ""
+    return " (no relative speed of the rings: nothing rolls or slides, every loss and the torque are 0)"
 
 
 #: Columns of the ball table: (header, width, unit) and the value of ball j.

@@ -25,7 +25,8 @@ UNITS = {
     "dissipation_inner_ball": "W", "dissipation_outer_ball": "W",
     "friction_torque": "N m (torque that drives the inner ring, whole bearing)",
     "drive_power": "W (friction_torque omega + outer-ring torque omega_outer)",
-    "energy_residual": "- ((drive_power - dissipation_total) / drive_power; 0 in the traction equilibrium)",
+    "energy_residual": "- ((drive_power - dissipation_total) / drive_power; 0 in the traction equilibrium and "
+                       "without relative speed of the rings)",
     "drive_torque_inner_ball": "N m (axial torque of the inner contact's traction on the ball)",
     "drive_torque_outer_ball": "N m (axial torque of the outer contact's traction on the ball)", "qv_inner_ball": "N m/s",
     "qv_outer_ball": "N m/s", "qv_total": "N m/s (whole bearing)", "traction_drag": "N (sum of the rolling-direction traction on the ball: zero in a true steady state without cage)",
@@ -112,9 +113,13 @@ class QuasiStaticSolution:
     def energy_residual(self) -> float:
         """(drive power - dissipation) / drive power [-]: zero to round-off when every ball is in its
         steady traction equilibrium (control ``equilibrium``); a kinematic hypothesis (race control,
-        minimum energy) leaves a net traction on the ball and shows here. NaN without drive power."""
+        minimum energy) leaves a net traction on the ball and shows here. 0 without drive power and without
+        dissipation (no relative speed of the rings: nothing to balance); NaN only for a dissipation
+        without drive power."""
         p = self.drive_power
-        return (p - self.dissipation_total) / p if p != 0.0 else float("nan")
+        if p == 0.0:
+            return 0.0 if self.dissipation_total == 0.0 else float("nan")
+        return (p - self.dissipation_total) / p
 
     @property
     def q_max_inner(self) -> float:
