@@ -13,6 +13,7 @@ import numpy as np
 
 __all__ = ["InputError", "check_number", "check_finite", "check_positive", "check_nonnegative", "check_integer",
            "check_bool", "check_text", "check_keys", "check_plausible", "check_temperature", "check_temperatures",
+           "check_unused",
            "LENGTH_MISTAKES", "KELVIN"]
 
 #: 0 degC in kelvin.
@@ -99,6 +100,19 @@ def check_keys(what: str, given, valid) -> None:
     unknown = sorted(set(given) - set(valid))
     if unknown:
         raise InputError(f"{unknown[0]}: unknown {what} (valid: {', '.join(sorted(valid))})")
+
+
+def check_unused(switch: str, on: bool, options, enable: str | None = None) -> None:
+    """InputError naming the first of ``options`` ((name, value, default) triples) that was given (a value
+    other than its default) while ``switch``, which uses it, is off: an option accepted and ignored is a
+    silent wrong answer. ``enable``: how to switch it on (default "set <switch>")."""
+    if on:
+        return
+    for name, value, default in options:
+        if value is not None and value != default:
+            leave = "out" if default is None else f"at {default:g}"
+            raise InputError(f"{name}: used with {switch} only; {enable or 'set ' + switch} (or leave {name} "
+                             f"{leave})")
 
 
 def lookup(table, key, unknown: str, label: str = "catalogue"):

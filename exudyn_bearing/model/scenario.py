@@ -13,7 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..data import InputError, get_traction_model
-from ..data.errors import check_bool, check_keys, check_number, check_temperatures
+from ..data.errors import check_bool, check_keys, check_number, check_temperatures, check_unused
 from ..data.defects import Defect, as_defect
 from ..data.traction import DEFAULT_REGULARIZING_SRR
 from ..physics.contact_slip import DEFAULT_N_ACROSS, DEFAULT_N_STRIPS
@@ -354,6 +354,11 @@ class Scenario:
             if not (math.isfinite(v) and ok(v)):
                 raise InputError(f"{name}: must {limit}, got {v!r}")
             object.__setattr__(self, name, v)
+        check_unused("ball_drag", self.ball_drag, (("oil_volume_fraction", self.oil_volume_fraction, 0.0),),
+                     "set ball_drag=True (--ball-drag)")
+        check_unused("rolling_resistance", self.rolling_resistance,
+                     (("hysteresis_loss_factor", self.hysteresis_loss_factor, HYSTERESIS_LOSS_FACTOR_STEEL),),
+                     "set rolling_resistance=True (--rolling-resistance)")
         if self.rolling_resistance and self.contact_law == "power":
             raise InputError("rolling_resistance: the peer power law has no Hertz ellipse to size the rolling "
                              "resistance; use contact_law='hertz'")

@@ -45,6 +45,8 @@ UNITS = {
     "c_squeeze_inner": "N s/m (NaN without film)", "c_squeeze_outer": "N s/m (NaN without film)",
     "film_parameter_inner": "-", "film_parameter_outer": "-",
     "regime_inner": "code (0 boundary, 1 mixed, 2 full film, -1 no contact)", "regime_outer": "code",
+    "traction_resolution": "dissipation [W] at n_strips x n_across and at twice both, relative change, "
+                           "converged (within 1 %), needed (n_strips, n_across) (None: no relative speed)",
     "reactions": "N or N m", "residual": "N or N m", "loads": "N or N m", "omega": "rad/s", "omega_outer": "rad/s",
 }
 
@@ -82,6 +84,7 @@ class QuasiStaticSolution:
     n_strips: int = 0
     n_across: int = 0
     wall_s: float = 0.0
+    resolution_check: dict | None = None  #: check of the traction integration (solve.check_traction_resolution)
 
     # convenient totals -------------------------------------------------------------
     @property
@@ -164,6 +167,7 @@ class QuasiStaticSolution:
         d["minimum_checks"] = self.minimum_checks
         d["iterations"] = self.iterations
         d["n_strips"], d["n_across"] = self.n_strips, self.n_across
+        d["traction_resolution"] = self.resolution_check
         d["wall_s"] = self.wall_s
         d["units"] = {**UNITS, **LOSS_UNITS}
         return d
