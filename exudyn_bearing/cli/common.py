@@ -241,6 +241,8 @@ def explained(bearing=None):
         msg = str(exc)
         if msg.startswith("fixed."):
             msg = "--fix " + msg[len("fixed."):]
+        elif msg.startswith("fixed:"):
+            msg = "--fix:" + msg[len("fixed:"):]
         angular = bearing is not None and bearing.free_contact_angle > 0.0
         if angular and (msg.startswith(_AXIAL) or "over the shoulder" in msg) and "--fix delta_a" not in msg:
             msg += ("; a bearing of a pair is held axially by its partner: --fix delta_a=0 (or the axial "

@@ -36,6 +36,7 @@ from __future__ import annotations
 import math
 import time
 import warnings
+from contextlib import contextmanager
 
 import numpy as np
 
@@ -52,7 +53,7 @@ from ...physics.geometry import _raceway_radii_cos
 from ...physics.load_distribution import check_axial_load
 from . import kinematics as km
 from .balls import B_CR, B_CZ, B_DI, B_DO, B_NIR, B_NIZ, B_NOR, B_NOZ, B_QI, B_QO
-from ...model.load_range import MAX_CONTACT_PRESSURE, check_load_estimate, check_pressures
+from ...model.load_range import MAX_CONTACT_PRESSURE, check_load_estimate, check_pressures, pressure_excess
 from ...model.operating_geometry import operating_geometry
 from ...model.scenario import rolling_speed_floor as _rolling_floor
 from .damping import condensed_matrices, contact_damping
@@ -133,6 +134,18 @@ def check_operating_fit(b, omega, omega_outer=0.0, ring_growth=True, fit=0.0, te
         raise InputError(f"{cause}: the operating interference {-geom.operating_clearance:.3e} m ({why}) exceeds 2 % "
                          f"of the ball radius: the balls do not fit between the grown rings; reduce {cause}")
     return geom
+
+
+@contextmanager
+def axial_load_as_fa():
+    """InputErrors of the block about ``axial_load`` (physics.load_distribution's name) named ``Fa``, the
+    argument of solve_quasistatic and the command line's --Fa."""
+    try:
+        yield
+    except InputError as exc:
+        if not str(exc).startswith("axial_load:"):
+            raise
+        raise InputError("Fa:" + str(exc).removeprefix("axial_load:")) from None
 
 
 def _contact_state(geom, balls, e_prime, method):
@@ -271,12 +284,16 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
     if not 0.0 < shoulder_angle <= 0.5 * math.pi:
         raise InputError(f"shoulder_angle: must lie in (0, pi/2] rad, got {shoulder_angle:g}")
     fixed = _check_fixed(fixed, b)
+    # the same case at rest, to tell a refusal the speed causes from one the loads cause (_speed_cause)
+    rest = dict(fixed=fixed, hertz_method=hertz_method, phase=phase, fit=fit, temperatures=temperatures,
+                shoulder_angle=shoulder_angle, lubricant=lub)
     angular = b.free_contact_angle > 0.0
     fr = math.hypot(loads[0], loads[1])
     if angular and "delta_a" not in fixed:
         if loads[2] < 0.0:
             raise InputError(f"Fa: an angular-contact bearing carries axial load along +z only, got {loads[2]:g} N")
-        check_axial_load(b, fr, loads[2])
+        with axial_load_as_fa():
+            check_axial_load(b, fr, loads[2])
         if loads[2] == 0.0:
             raise InputError("Fa: a single angular-contact bearing needs an axial load to locate its inner ring "
                              "axially (got 0 N; or hold delta_a with fixed=)")
@@ -397,10 +414,18 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
                 if change < tol:
                     break
     except np.linalg.LinAlgError:
-        raise InputError(f"{_load_name(loads, fixed)}: the quasi-static equilibrium is singular at {what} (no "
-                         "ring pose or ball kinematics carries it): loads this far exceed the limit of the elastic "
-                         f"contact model, {MAX_CONTACT_PRESSURE / 1e9:g} GPa (ISO 76 static load rating): reduce "
-                         "the load") from None
+        speed = _speed_cause(b, loads, w_i, w_o, rest)
+        raise InputError(f"{speed or _load_name(loads, fixed)}: the quasi-static equilibrium is singular at {what} "
+                         "(no ring pose or ball kinematics carries it): "
+                         + (_SPEED_CAUSE if speed else "loads this far exceed the limit of the elastic contact "
+                            f"model, {MAX_CONTACT_PRESSURE / 1e9:g} GPa (ISO 76 static load rating): reduce the "
+                            "load")) from None
+    except InputError as exc:  # the ring equilibrium did not converge (solve_ring names the largest load)
+        speed = _speed_cause(b, loads, w_i, w_o, rest)
+        if speed is None and loads.any():
+            raise
+        raise InputError(f"{speed or _load_name(loads, fixed)}: {str(exc).partition(': ')[2]} at {what}"
+                         + (f"; {_SPEED_CAUSE}" if speed else "")) from None
     # final contact results
     out = _ball_results(b, geom, psi, balls, cs, kin, geo, model, n_strips, n_across, w_i, w_o, rd_o, rd_i,
                         lub, e_prime, mass, inertia, controls, moving, prob.fto, prob.fti)
@@ -410,9 +435,16 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
                          f"{checks[bad]['residual'] if checks[bad] else float('nan'):.2g}); the traction model "
                          "may be too steep or too weak to hold the balls: try more regularisation, or "
                          "control='min-energy'")
-    _check_shoulders(b, geom, balls, cs, loads, prob, shoulder_angle)
+    over = _shoulder_excess(geom, balls, cs, shoulder_angle)
+    if over is not None:
+        speed = _speed_cause(b, loads, w_i, w_o, rest)
+        raise InputError(f"{speed or _largest_load(loads, prob)}: {over} at {what}: "
+                         + (_SPEED_CAUSE if speed else "the load puts the contact over the shoulder"))
     # the elastic-contact limit on the load sharing found (one ball may carry more than the estimate)
-    check_pressures(out["p_max_inner"], out["p_max_outer"], _load_name(loads, fixed), what)
+    name = _load_name(loads, fixed)
+    if pressure_excess(out["p_max_inner"], out["p_max_outer"]) is not None:
+        name = _speed_cause(b, loads, w_i, w_o, rest) or name
+    check_pressures(out["p_max_inner"], out["p_max_outer"], name, what)
     # normal damping of every contact (the contact model's, at its load and film) and the 5x5 matrices
     out.update(contact_damping(balls, cs["a_i"], cs["a_o"], out["h_min_inner"], out["h_min_outer"], geom.r_b,
                                b.material.hysteretic_damping, lub))
@@ -654,10 +686,8 @@ def _load_name(loads, fixed):
     return "fixed" if fixed else "omega"
 
 
-def _check_shoulders(b, geom, balls, cs, loads, prob, limit):
-    """InputError when a loaded contact ellipse reaches past the groove shoulder."""
-    arm = prob.arm if prob is not None else 1.0
-    k = int(np.argmax(np.abs(loads) * np.array([1, 1, 1, 1 / arm, 1 / arm])))
+def _shoulder_excess(geom, balls, cs, limit) -> str | None:
+    """Where a loaded contact ellipse reaches past the groove shoulder (text), else None."""
     for tag, qk, nr, nz, r_c, sgn in (("inner", B_QI, B_NIR, B_NIZ, geom.r_ci, -1.0),
                                       ("outer", B_QO, B_NOR, B_NOZ, geom.r_co, 1.0)):
         alpha = np.arctan2(sgn * balls[:, nz], sgn * balls[:, nr])
@@ -666,8 +696,32 @@ def _check_shoulders(b, geom, balls, cs, loads, prob, limit):
         bad = (balls[:, qk] > 0.0) & (reach > limit)
         if bad.any():
             j = int(np.argmax(np.where(bad, reach, -1.0)))
-            raise InputError(
-                f"{LOAD_NAMES[k]}: the {tag} contact ellipse of ball {j} reaches {math.degrees(reach[j]):.1f} deg "
-                f"from the groove bottom (contact angle {math.degrees(alpha[j]):.1f} deg + half-width "
-                f"{math.degrees(half[j]):.1f} deg) > shoulder {math.degrees(limit):.0f} deg: the load puts the "
-                f"contact over the shoulder")
+            return (f"the {tag} contact ellipse of ball {j} reaches {math.degrees(reach[j]):.1f} deg from the groove "
+                    f"bottom (contact angle {math.degrees(alpha[j]):.1f} deg + half-width "
+                    f"{math.degrees(half[j]):.1f} deg) > shoulder {math.degrees(limit):.0f} deg")
+    return None
+
+
+def _largest_load(loads, prob):
+    """The name of the largest load (moments over the groove-centre arm), as the solver names a load."""
+    arm = prob.arm if prob is not None else 1.0
+    return LOAD_NAMES[int(np.argmax(np.abs(loads) * np.array([1, 1, 1, 1 / arm, 1 / arm])))]
+
+
+def _speed_cause(b, loads, w_i, w_o, rest) -> str | None:
+    """``"omega"`` (``"omega_outer"`` with the inner ring at rest) when the speed causes a refusal: the same
+    loads at rest (``rest``: the other arguments of solve_quasistatic) pass every check of the solver; else
+    None (the loads alone are refused, or there is no speed)."""
+    if w_i == 0.0 and w_o == 0.0:
+        return None
+    try:
+        solve_quasistatic(b, loads[0], loads[2], loads[3], loads[4], Fy=loads[1], omega=0.0, omega_outer=0.0,
+                          stiffness=False, resolution_check=False, **rest)
+    except InputError:
+        return None
+    return "omega" if w_i != 0.0 else "omega_outer"
+
+
+#: Why a refusal names the speed: the same loads at rest pass.
+_SPEED_CAUSE = ("the speed causes it (centrifugal force, gyroscopic moment and ring growth; the same loads at "
+                "rest are carried): reduce the speed")

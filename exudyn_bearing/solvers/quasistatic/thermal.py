@@ -431,8 +431,9 @@ def solve_thermal(bearing, Fr=0.0, Fa=0.0, *, omega, oil_inlet_temperature, oil_
         history.append({"iteration": it, "temperatures": dict(zip(nodes, map(float, t_new))),
                         "power_loss_total": float(losses["power_loss_total"]), "change": step})
         if not np.all(np.isfinite(t_new)):
-            raise ThermalRunawayError(f"thermal loop: temperatures not finite at iteration {it} "
-                                      f"(power loss {losses['power_loss_total']:.4g} W)")
+            raise ThermalRunawayError(f"oil_flow: the thermal loop's temperatures are not finite at iteration {it} "
+                                      f"(power loss {losses['power_loss_total']:.4g} W): more oil_flow, a lower "
+                                      "oil_inlet_temperature or a lower speed")
         if step < tol:
             converged = True
             temps = t_new
@@ -498,6 +499,6 @@ def _runaway(lt, temps, iteration: int, nodes=NODES):
     lo, hi = lt.temperature_range
     k = int(np.argmax(temps))
     raise ThermalRunawayError(
-        f"temperature: thermal runaway, the {nodes[k]} node reached {temps[k]:.1f} K at iteration {iteration} "
+        f"oil_flow: thermal runaway, the {nodes[k]} node reached {temps[k]:.1f} K at iteration {iteration} "
         f"with the lubricant at the top of its range, above the range of lubricant {lt.name!r} ({lo:g}-{hi:g} K); "
         "more oil_flow, a lower oil_inlet_temperature or a lower speed")
