@@ -262,3 +262,11 @@ def test_cli_refusals_name_the_option(argv, start, capsys):
 def test_thermal_runaway_names_the_oil_flow():
     with pytest.raises(ThermalRunawayError, match=r"^oil_flow: thermal runaway"):
         solve_thermal("6208", 3000.0, omega=1500.0, oil_inlet_temperature=353.15, oil_flow=1e-8)
+
+
+def test_ambient_conductance_keeps_the_default_of_a_key_left_out():
+    from exudyn_bearing.solvers.quasistatic.thermal import _default_ambient_conductance
+
+    r = solve_thermal("6208", 3000.0, omega=500.0, ambient_conductance={"inner": 1.0}, **JET)
+    assert r.conductances["inner_ambient"] == 1.0
+    assert r.conductances["outer_ambient"] == _default_ambient_conductance(load_bearing("6208"))["outer"] > 0.0

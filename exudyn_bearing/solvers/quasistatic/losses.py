@@ -112,6 +112,10 @@ OIL_DENSITY_RANGE = (500.0, 2000.0)
 MAX_CAGE_POCKET_FRICTION = 1.0
 
 
+#: Fields of a QuasiStaticSolution that power_losses reads.
+_SOLUTION_FIELDS = ("bearing_name", "balls", "geometry", "omega", "omega_outer", "lubricant", "dissipation_total")
+
+
 def _bearing(sol, bearing):
     """The bearing of ``sol``: ``bearing`` (a BallBearing or a catalogue name) when given, checked to be the
     one solved (its name and ball count), else the catalogue's entry of the solution's name."""
@@ -220,9 +224,7 @@ def power_losses(sol, bearing=None, lubricant=None, *, hysteresis_loss_factor=_l
         the rings at the same speed, where every component is 0), per-ball arrays ``power_loss_inner_ball``,
         ``power_loss_outer_ball``, ``drag_ball`` [W], and ``power_loss_notes``.
     """
-    from .solution import QuasiStaticSolution  # the solution module imports this one
-
-    if not isinstance(sol, QuasiStaticSolution):
+    if not all(hasattr(sol, k) for k in _SOLUTION_FIELDS):  # (the solution module imports this one)
         raise InputError(f"sol: expected a QuasiStaticSolution (of solve_quasistatic), got {sol!r}")
     oil_volume_fraction = check_finite("oil_volume_fraction", oil_volume_fraction)
     if not 0.0 <= oil_volume_fraction <= 1.0:

@@ -302,7 +302,8 @@ def solve_thermal(bearing, Fr=0.0, Fa=0.0, *, omega, oil_inlet_temperature, oil_
         Oil's share of the cavity the balls orbit through, for the drag (power_losses).
     ambient_conductance : dict, optional
         ``{"inner": W/K, "outer": W/K}`` from the rings to the ambient through the shaft and the
-        housing (default: free convection from a nominal housing and shaft).
+        housing (default, also for a key left out: free convection from a nominal housing and shaft;
+        another key is refused).
     solid_conductivity : float
         Thermal conductivity of rings and balls [W/(m K)].
     tolerance : float
@@ -369,9 +370,9 @@ def solve_thermal(bearing, Fr=0.0, Fa=0.0, *, omega, oil_inlet_temperature, oil_
         raise InputError(f"ambient_conductance: expected a dict {{'inner': W/K, 'outer': W/K}}, got "
                          f"{ambient_conductance!r}")
     _check_names("ambient_conductance", "key", ambient_conductance or {}, ("inner", "outer"))
-    g_amb = dict(_default_ambient_conductance(b)) if ambient_conductance is None else dict(ambient_conductance)
+    g_amb = {**_default_ambient_conductance(b), **(ambient_conductance or {})}  # a key left out: its default
     for k in ("inner", "outer"):
-        g_amb[k] = check_finite(f"ambient_conductance.{k}", g_amb.get(k, 0.0))
+        g_amb[k] = check_finite(f"ambient_conductance.{k}", g_amb[k])
         if g_amb[k] < 0.0:
             raise InputError(f"ambient_conductance.{k}: must be >= 0 W/K, got {g_amb[k]!r}")
     if loss_options is not None and not isinstance(loss_options, dict):
