@@ -1,4 +1,4 @@
-"""Bad input, round three (issue 33), quasi-static side: the traction resolution checked, outputs at zero
+"""Bad input, round three, quasi-static side: the traction resolution checked, outputs at zero
 relative speed, options accepted and ignored, API arguments of the wrong type, values without a range, and
 refusals that name the input the user can change."""
 import warnings
