@@ -68,7 +68,7 @@ def test_human_readable_tables(capsys):
 
 @pytest.mark.parametrize("argv, word", [
     (["info", "6309"], "bearing"),
-    (["static", "6208", "--Fr", "-5"], "radial_load"),
+    (["static", "6208", "--Fr", "-5"], "Fr:"),
     (["static", "6208", "--Fr", "3000", "--Pd", "1e-3"], "Pd:"),
     (["static", "6208", "--Fr", "3000", "--omega", "nan"], "omega"),
     (["static", "no/such/file.json", "--Fr", "3000"], "no such file"),

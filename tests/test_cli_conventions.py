@@ -135,7 +135,7 @@ def test_simulate_table_shows_units_and_window(capsys):
 
 @pytest.mark.parametrize("argv, word", [
     (["simulate", "--t-end", "5e-5"], "t_end: must be >= sample_dt"),
-    (["static", "6208", "--Fr", "1e9"], "radial_load: "),
+    (["static", "6208", "--Fr", "1e9"], "Fr: "),
     (["static", "6208", "--Fr", "25000"], "above 4.2 GPa"),
     (["simulate", "--Fr", "1e9", "--t-end", "0.001"], "Fr: "),
     (["static", "6208", "--Fr", "3000", "--phase", "inf"], "phase"),

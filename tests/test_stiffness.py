@@ -169,7 +169,7 @@ def test_cli_stiffness_table(capsys, tmp_path):
     (["stiffness", "6208", "--Fr", "3000", "--phases", "0"], "phases"),
     (["stiffness", "6208", "--Fr", "3000", "--speeds", "500", "100"], "speeds"),
     (["stiffness", "6208", "--Fr", "3000", "--plot", "x.png"], "plot"),
-    (["stiffness", "7208", "--Fr", "3000"], "axial_load"),
+    (["stiffness", "7208", "--Fr", "3000"], "Fa:"),
 ])
 def test_cli_stiffness_bad_input(argv, word, capsys):
     assert main(argv) == 2

@@ -9,14 +9,14 @@ import re
 from contextlib import contextmanager
 
 from ..data import InputError, catalog, default_traction, load_bearing, load_lubricant, lubricants, traction_models
-from ..physics.contact_slip import DEFAULT_N_ACROSS, DEFAULT_N_STRIPS
+from ..physics.contact_slip import DEFAULT_N_ACROSS, DEFAULT_N_STRIPS, MAX_N_ACROSS, MAX_N_STRIPS
 from ..solvers.quasistatic.ring import DOF_NAMES
 
 __all__ = ["Parser", "HelpFormatter", "finite_float", "print_table", "BEARING_HELP", "add_bearing_argument",
            "bearing_from_args", "bearing_spec_from_args", "add_load_arguments", "add_speed_arguments",
            "omega_from_args", "add_lubricant_argument", "lubricant_from_args", "RPM_TO_RAD_S", "add_traction_argument",
            "traction_from_args", "add_ring_growth_argument", "RING_GROWTH", "add_hold_arguments", "parse_fixed",
-           "fixed_from_args", "explained", "solver_header", "format_value"]
+           "fixed_from_args", "explained", "solver_header", "format_value", "add_strip_arguments"]
 
 #: Default of --ring-growth in every command that has a speed (quasistatic, stiffness, simulate), as in
 #: Scenario and solve_quasistatic (README, "Defaults").
@@ -129,13 +129,29 @@ def omega_from_args(args):
     return args.omega if args.omega is not None else args.omega_default
 
 
+def _count_in(hi: int):
+    """An argparse type: an integer in [1, hi]."""
+    def parse(text):
+        try:
+            v = int(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"expected an integer, got {text!r}") from None
+        if not 1 <= v <= hi:
+            raise argparse.ArgumentTypeError(f"must be an integer in [1, {hi}], got {v}")
+        return v
+    return parse
+
+
 def add_strip_arguments(p):
     """``--strips`` and ``--points-across`` of the traction integration over each contact ellipse, with the
-    defaults every solver shares (:data:`exudyn_bearing.physics.contact_slip.DEFAULT_N_STRIPS`)."""
-    p.add_argument("--strips", type=int, default=DEFAULT_N_STRIPS,
-                   help=f"strips along the major axis of each contact ellipse (default {DEFAULT_N_STRIPS})")
-    p.add_argument("--points-across", type=int, default=DEFAULT_N_ACROSS,
-                   help=f"points across each strip (default {DEFAULT_N_ACROSS}; 1: classical strip theory)")
+    defaults and the ranges every solver shares (:data:`exudyn_bearing.physics.contact_slip.DEFAULT_N_STRIPS`,
+    ``MAX_N_STRIPS``; quasistatic and simulate)."""
+    p.add_argument("--strips", type=_count_in(MAX_N_STRIPS), default=DEFAULT_N_STRIPS,
+                   help=f"strips along the major axis of each contact ellipse, 1-{MAX_N_STRIPS} (default "
+                        f"{DEFAULT_N_STRIPS}; fewer than the dissipation's convergence needs: a warning)")
+    p.add_argument("--points-across", type=_count_in(MAX_N_ACROSS), default=DEFAULT_N_ACROSS,
+                   help=f"points across each strip, 1-{MAX_N_ACROSS} (default {DEFAULT_N_ACROSS}; 1: classical "
+                        "strip theory)")
 
 
 def add_lubricant_argument(p, what: str = ""):
@@ -182,7 +198,7 @@ def add_hold_arguments(p):
 
 
 def parse_fixed(items) -> dict:
-    """``["delta_a=0", ...]`` -> ``{"delta_a": 0.0}``; InputError naming ``fix``."""
+    """``["delta_a=0", ...]`` -> ``{"delta_a": 0.0}``; InputError naming ``fix`` (a DOF given twice too)."""
     fixed = {}
     for item in items:
         name, sep, value = item.partition("=")
@@ -192,6 +208,9 @@ def parse_fixed(items) -> dict:
             v = float(value)
         except ValueError:
             raise InputError(f"fix {name.strip()}: expected a number, got {value!r}") from None
+        if name.strip() in fixed:
+            raise InputError(f"--fix {name.strip()}: given twice ({fixed[name.strip()]:g} and {v:g}); give each DOF "
+                             "once")
         fixed[name.strip()] = v
     return fixed
 
@@ -222,6 +241,8 @@ def explained(bearing=None):
         msg = str(exc)
         if msg.startswith("fixed."):
             msg = "--fix " + msg[len("fixed."):]
+        elif msg.startswith("fixed:"):
+            msg = "--fix:" + msg[len("fixed:"):]
         angular = bearing is not None and bearing.free_contact_angle > 0.0
         if angular and (msg.startswith(_AXIAL) or "over the shoulder" in msg) and "--fix delta_a" not in msg:
             msg += ("; a bearing of a pair is held axially by its partner: --fix delta_a=0 (or the axial "

@@ -7,7 +7,9 @@ from ..outputs.jsonio import to_jsonable
 from ..outputs.units import INFO_UNITS, with_units
 from ..physics.hertz import METHODS
 from ..solvers.analytic import bearing_info
-from .common import add_bearing_argument, add_speed_arguments, bearing_from_args, omega_from_args, print_table
+from ..solvers.quasistatic.solve import check_operating_fit
+from .common import (RING_GROWTH, add_bearing_argument, add_speed_arguments, bearing_from_args, omega_from_args,
+                     print_table)
 
 
 def add_parser(sub):
@@ -22,7 +24,10 @@ def add_parser(sub):
 
 def run(args):
     b = bearing_from_args(args)
-    info = bearing_info(b, omega_from_args(args), args.hertz)
+    omega = omega_from_args(args)
+    if omega is not None:  # the speed limit of quasistatic: the rings grown by the speed must hold the balls
+        check_operating_fit(b, omega, ring_growth=RING_GROWTH)
+    info = bearing_info(b, omega, args.hertz)
     if args.json:
         print(json.dumps(to_jsonable(with_units(info, INFO_UNITS)), indent=2))
         return

@@ -7,6 +7,7 @@ from pathlib import Path
 
 
 from ..data import InputError
+from ..data.errors import check_unused
 from ..outputs.jsonio import to_jsonable
 from ..outputs.plotting_quasistatic import plot_loads_angles, plot_slip
 from ..physics.hertz import METHODS
@@ -44,8 +45,8 @@ def add_parser(sub):
     p.add_argument("--oil-inlet-temperature", type=finite_float, metavar="K", help="oil inlet temperature [K] (--thermal)")
     p.add_argument("--oil-flow", type=finite_float, metavar="M3_S", help="oil flow through the bearing [m^3/s] "
                                                                          "(--thermal; 1 l/min = 1.667e-5)")
-    p.add_argument("--ambient-temperature", type=finite_float, default=293.15, metavar="K",
-                   help="air around shaft and housing [K] (--thermal, default 293.15)")
+    p.add_argument("--ambient-temperature", type=finite_float, metavar="K",
+                   help="air around shaft and housing [K] (--thermal; default: solve_thermal's, 293.15)")
     add_hold_arguments(p)
     p.add_argument("--hertz", choices=METHODS, default="exact", help="Hertz fidelity level")
     add_strip_arguments(p)
@@ -61,11 +62,12 @@ def run(args):
     omega = args.omega if args.omega is not None else (args.rpm * math.pi / 30.0 if args.rpm is not None else 0.0)
     temps = dict(zip(("inner", "outer", "ball"), args.temperature)) if args.temperature else None
     traction = traction_from_args(args, b)
+    check_unused("--thermal", args.thermal, (("--oil-flow", args.oil_flow, None),
+                                             ("--oil-inlet-temperature", args.oil_inlet_temperature, None),
+                                             ("--ambient-temperature", args.ambient_temperature, None)),
+                 "add --thermal")
     if args.thermal:
         return run_thermal(args, b, omega, traction)
-    for flag, v in (("--oil-flow", args.oil_flow), ("--oil-inlet-temperature", args.oil_inlet_temperature)):
-        if v is not None:
-            raise InputError(f"{flag}: used by the thermal network only; add --thermal (or leave {flag} out)")
     lub = lubricant_from_args(args, b)
     with explained(b):
         s = solve_quasistatic(b, args.Fr, args.Fa, args.Mx, args.My, Fy=args.Fy, omega=omega,
@@ -94,8 +96,8 @@ def run(args):
     if d["power_loss"] is not None:  # solvers/quasistatic/losses.py
         pl = d["power_loss"]
         print(f"power loss {d['power_loss_total']:.4g} W (" + ", ".join(f"{k} {pl[k]:.4g}" for k in LOSS_COMPONENTS)
-              + f"), friction torque {d['friction_torque_total']:.4g} N m; not modelled: seals and more "
-              "(--json not_modelled)")
+              + f"), friction torque {d['friction_torque_total']:.4g} N m" + _still(s)
+              + "; not modelled: seals and more (--json not_modelled)")
     print_ball_table(s.balls)
     if args.plot:
         print(f"plot: {d['plot']}")
@@ -108,9 +110,10 @@ def run_thermal(args, b, omega, traction):
             raise InputError(f"{flag}: needed with --thermal")
     if args.temperature:
         raise InputError("--temperature: the part temperatures come from the thermal network with --thermal")
+    amb = {} if args.ambient_temperature is None else {"ambient_temperature": args.ambient_temperature}
     with explained(b):
         r = solve_thermal(b, args.Fr, args.Fa, omega=omega, oil_inlet_temperature=args.oil_inlet_temperature,
-                          oil_flow=args.oil_flow, ambient_temperature=args.ambient_temperature,
+                          oil_flow=args.oil_flow, **amb,
                           lubricant=args.lubricant, traction=traction, Mx=args.Mx, My=args.My, Fy=args.Fy,
                           omega_outer=args.omega_outer, control=args.control, ring_growth=args.ring_growth,
                           fit=args.fit, fixed=fixed_from_args(args), hertz_method=args.hertz,
@@ -133,6 +136,13 @@ def run_thermal(args, b, omega, traction):
     print(f"power loss {r.power_loss_total:.4g} W (" + ", ".join(f"{k} {pl[k]:.4g}" for k in LOSS_COMPONENTS)
           + f"); heat out: oil {r.heat_out['oil']:.4g} W, ambient {r.heat_out['ambient']:.4g} W")
     print_ball_table(s.balls)
+
+
+def _still(s) -> str:
+    """What the friction torque is without relative speed of the rings (solvers/quasistatic/losses.py)."""
+    if s.omega != s.omega_outer:
+        return ""
+    return " (no relative speed of the rings: nothing rolls or slides, every loss and the torque are 0)"
 
 
 #: Columns of the ball table: (header, width, unit) and the value of ball j.

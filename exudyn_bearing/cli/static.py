@@ -16,6 +16,7 @@ from ..physics.hertz import METHODS
 from ..physics.load_distribution import StaticSolution, load_zone_parameter
 from ..solvers.analytic import stribeck_and_lubrication
 from ..solvers.quasistatic import solve_quasistatic
+from ..solvers.quasistatic.solve import axial_load_as_fa
 from .common import (add_bearing_argument, add_hold_arguments, add_lubricant_argument, add_speed_arguments,
                      bearing_from_args, explained, finite_float, fixed_from_args, format_value, lubricant_from_args,
                      omega_from_args)
@@ -52,7 +53,7 @@ def static_result(b, fr, fa, mx=0.0, my=0.0, tilt="fixed", omega=None, film="hd"
     tilt, the held DOFs and their reactions). ``fixed``: held DOFs (default: the tilts at zero with
     ``tilt="fixed"``). ``phase`` is taken modulo 2 pi; loads beyond the elastic contact model
     (:mod:`exudyn_bearing.model.load_range`) raise InputError."""
-    for name, v in (("radial_load", fr), ("axial_load", fa)):
+    for name, v in (("Fr", fr), ("Fa", fa)):
         if v < 0.0:
             raise InputError(f"{name}: must be >= 0 (the bearing carries +x radial and +z axial load on the "
                              f"inner ring), got {v}")
@@ -62,10 +63,11 @@ def static_result(b, fr, fa, mx=0.0, my=0.0, tilt="fixed", omega=None, film="hd"
         if (mx if moment == "Mx" else my) != 0.0 and t in fixed:
             raise InputError(f"{moment}: a moment load needs the free tilt (--tilt free)")
     phase = math.remainder(phase, 2.0 * math.pi)  # the same balls; a huge phase loses their spacing in cos/sin
-    names = ("radial_load", "axial_load", "diametral_clearance")
+    names = ("Fr", "Fa", "Pd")  # the options the user gives (--Fr, --Fa, --Pd)
     translating = set(fixed) <= {"tilt_x", "tilt_y"}  # the classical distribution: only the tilts held
     if translating:
-        check_load_range(b, fr, fa, hertz, names=names, phase=phase)  # before the solve: far-off loads do not converge
+        with axial_load_as_fa():  # before the solve: far-off loads do not converge
+            check_load_range(b, fr, fa, hertz, names=names, phase=phase)
     s = solve_quasistatic(b, fr, fa, mx, my, omega=0.0, fixed=fixed, hertz_method=hertz, phase=phase,
                           stiffness=False)
     bl = s.balls

@@ -96,9 +96,9 @@ def _plot(c, png):
 
 def run(args):
     if not 1 <= args.phases <= 64:
-        raise InputError(f"phases: expected an integer in [1, 64], got {args.phases}")
+        raise InputError(f"--phases: expected an integer in [1, 64], got {args.phases}")
     if args.plot and args.speeds is None and args.rpms is None:
-        raise InputError("plot: draws a table over speeds; give --speeds or --rpms")
+        raise InputError("--plot: draws a table over speeds; give --speeds or --rpms")
     b = bearing_from_args(args)
     if args.Pd is not None:
         b = b.with_clearance(args.Pd, name="Pd")

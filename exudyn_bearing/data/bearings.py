@@ -38,7 +38,8 @@ from .errors import (LENGTH_MISTAKES, InputError, check_finite, check_integer, c
                      check_text)
 from .materials import Material
 
-__all__ = ["BallBearing", "MAX_FREE_CONTACT_ANGLE", "MAX_PRELOAD_INTERFERENCE", "free_contact_angle_from_degrees",
+__all__ = ["BallBearing", "MAX_CLEARANCE_PER_BALL_DIAMETER", "MAX_FREE_CONTACT_ANGLE", "MAX_PRELOAD_INTERFERENCE",
+           "PITCH_DIAMETER_RANGE", "RACE_RADIUS_RANGE", "check_clearance", "free_contact_angle_from_degrees",
            "check_free_contact_angle"]
 
 #: Largest free contact angle accepted [rad]. A ball whose free contact angle
@@ -55,6 +56,14 @@ MAX_PRELOAD_INTERFERENCE = 0.01
 #: Ball diameters accepted [m]: 0.2 mm (miniature bearings) to 200 mm (large
 #: slewing bearings); a value outside is a unit mistake (mm, cm, um).
 BALL_DIAMETER_RANGE = (2e-4, 0.2)
+#: Race radii accepted [m] (R_i, R_o of the radial construction): 0.1 mm to 5 m (miniature bearings to large
+#: slewing rings); pitch diameters d_m accepted [m]: 0.5 mm to 10 m. A value outside is a unit mistake.
+RACE_RADIUS_RANGE = (1e-4, 5.0)
+PITCH_DIAMETER_RANGE = (5e-4, 10.0)
+#: Largest diametral clearance accepted, in ball diameters: radial internal clearances of ball bearings are
+#: some 0.1-0.5 % of D (ISO 5753-1, groups 2 to 5); ten times the largest is a unit mistake (a clearance in um).
+#: The smallest is the preload of :data:`MAX_PRELOAD_INTERFERENCE`.
+MAX_CLEARANCE_PER_BALL_DIAMETER = 0.05
 #: Conformities f = R_c / D accepted: above 0.5 (the groove must be larger
 #: than the ball) up to 0.6; ball bearings have 0.505-0.58 (Harris & Kotzalas,
 #: Rolling Bearing Analysis, 5th ed., 2006, on osculation).
@@ -68,6 +77,16 @@ def check_ball_diameter(name, value, factor=1.0) -> float:
     v = check_positive(name, value)
     return check_plausible(name, v, factor * BALL_DIAMETER_RANGE[0], factor * BALL_DIAMETER_RANGE[1], "m",
                            "lengths are in metres", LENGTH_MISTAKES)
+
+
+def check_clearance(name, value, ball_diameter) -> float:
+    """A diametral clearance P_d [m] (negative: preload) between -2 MAX_PRELOAD_INTERFERENCE R_b and
+    MAX_CLEARANCE_PER_BALL_DIAMETER D, else InputError naming ``name`` and the likely unit mistake
+    ("lengths are in metres: 20 um is 2e-05 m")."""
+    pd = check_finite(name, value)
+    lo, hi = -MAX_PRELOAD_INTERFERENCE * ball_diameter, MAX_CLEARANCE_PER_BALL_DIAMETER * ball_diameter
+    return check_plausible(name, pd, lo, hi, "m", "lengths are in metres (ball bearing clearances are some "
+                           "0.1-0.5 % of the ball diameter; negative: preload)", LENGTH_MISTAKES)
 
 
 def check_conformity(name, value) -> float:
@@ -175,8 +194,9 @@ class BallBearing:
             raise InputError(f"n_balls: at least 3 balls are needed, got {z}")
         object.__setattr__(self, "n_balls", z)
         rb = check_ball_diameter("ball_radius", self.ball_radius, 0.5)
-        ri = check_positive("inner_race_radius", self.inner_race_radius)
-        ro = check_positive("outer_race_radius", self.outer_race_radius)
+        ri, ro = (check_plausible(k, check_positive(k, getattr(self, k)), *RACE_RADIUS_RANGE, "m",
+                                  "lengths are in metres", LENGTH_MISTAKES)
+                  for k in ("inner_race_radius", "outer_race_radius"))
         rci = check_positive("inner_groove_radius", self.inner_groove_radius)
         rco = check_positive("outer_groove_radius", self.outer_groove_radius)
         a0 = check_free_contact_angle(self.free_contact_angle)
@@ -269,12 +289,13 @@ class BallBearing:
         (24.0, 6.552)
         """
         d = check_ball_diameter("ball_diameter", ball_diameter)
-        dm = check_positive("pitch_diameter", pitch_diameter)
+        dm = check_plausible("pitch_diameter", check_positive("pitch_diameter", pitch_diameter),
+                             *PITCH_DIAMETER_RANGE, "m", "lengths are in metres", LENGTH_MISTAKES)
         if not d < dm:
             raise InputError(f"ball_diameter: must be smaller than pitch_diameter ({dm}), got {d}")
         fi = check_conformity("inner_conformity", inner_conformity)
         fo = check_conformity("outer_conformity", outer_conformity)
-        pd = check_finite("diametral_clearance", diametral_clearance)
+        pd = check_clearance("diametral_clearance", diametral_clearance, d)
         return cls(n_balls=n_balls, ball_radius=0.5 * d, inner_race_radius=0.5 * dm - 0.5 * d - 0.25 * pd,
                    outer_race_radius=0.5 * dm + 0.5 * d + 0.25 * pd, inner_groove_radius=fi * d,
                    outer_groove_radius=fo * d, cage_ball_radius=cage_ball_radius,
@@ -386,7 +407,7 @@ class BallBearing:
         """A copy with the outer race radius changed to give P_d [m]. An InputError on that radius
         names ``name`` when given (the parameter the caller was given: the CLI's ``Pd``), else the
         radius."""
-        pd = check_finite(name or "diametral_clearance", diametral_clearance)
+        pd = check_clearance(name or "diametral_clearance", diametral_clearance, self.ball_diameter)
         ro = self.inner_race_radius + 2.0 * self.ball_radius + 0.5 * pd
         try:
             return self.replace(outer_race_radius=ro)

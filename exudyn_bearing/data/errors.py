@@ -13,6 +13,7 @@ import numpy as np
 
 __all__ = ["InputError", "check_number", "check_finite", "check_positive", "check_nonnegative", "check_integer",
            "check_bool", "check_text", "check_keys", "check_plausible", "check_temperature", "check_temperatures",
+           "check_unused",
            "LENGTH_MISTAKES", "KELVIN"]
 
 #: 0 degC in kelvin.
@@ -101,6 +102,19 @@ def check_keys(what: str, given, valid) -> None:
         raise InputError(f"{unknown[0]}: unknown {what} (valid: {', '.join(sorted(valid))})")
 
 
+def check_unused(switch: str, on: bool, options, enable: str | None = None) -> None:
+    """InputError naming the first of ``options`` ((name, value, default) triples) that was given (a value
+    other than its default) while ``switch``, which uses it, is off: an option accepted and ignored is a
+    silent wrong answer. ``enable``: how to switch it on (default "set <switch>")."""
+    if on:
+        return
+    for name, value, default in options:
+        if value is not None and value != default:
+            leave = "out" if default is None else f"at {default:g}"
+            raise InputError(f"{name}: used with {switch} only; {enable or 'set ' + switch} (or leave {name} "
+                             f"{leave})")
+
+
 def lookup(table, key, unknown: str, label: str = "catalogue"):
     """``table[key]``; else InputError "<unknown> 'key' (<label>: the valid names)", ``unknown`` naming the
     parameter and what was looked for (e.g. "bearing: unknown bearing")."""
@@ -120,12 +134,13 @@ def check_plausible(name: str, value, lo: float, hi: float, unit: str, rule: str
     v = check_finite(name, value)
     if lo <= v <= hi:
         return v
+    u = f" {unit}" if unit else ""  # "" for a ratio: "5 is not plausible (0 to 1)"
     for convert, typed in mistakes:
         w = convert(v) if callable(convert) else v * convert
         if lo <= w <= hi:
-            raise InputError(f"{name}: {v:g} {unit} is not plausible ({lo:g} to {hi:g} {unit}); {rule}: "
-                             f"{v:g} {typed} is {w:.6g} {unit}")
-    raise InputError(f"{name}: {v:g} {unit} is not plausible ({lo:g} to {hi:g} {unit}); {rule}")
+            raise InputError(f"{name}: {v:g}{u} is not plausible ({lo:g} to {hi:g}{u}); {rule}: "
+                             f"{v:g} {typed} is {w:.6g}{u}")
+    raise InputError(f"{name}: {v:g}{u} is not plausible ({lo:g} to {hi:g}{u}); {rule}")
 
 
 #: Temperatures accepted [K]: -123 degC to 527 degC. The thermal expansion of

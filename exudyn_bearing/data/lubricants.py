@@ -7,7 +7,7 @@ from dataclasses import dataclass
 from .errors import (LENGTH_MISTAKES, InputError, check_finite, check_nonnegative, check_plausible, check_positive,
                      check_text)
 
-__all__ = ["Lubricant", "PLAUSIBLE"]
+__all__ = ["Lubricant", "MIN_COMPOSITE_ROUGHNESS", "PLAUSIBLE"]
 
 #: Plausible ranges of a lubricant's values and the unit mistakes they catch:
 #: (field, low, high, unit, rule, mistakes). Viscosities of bearing oils at
@@ -20,7 +20,15 @@ PLAUSIBLE = (
      ((1e-9, "1/GPa"), (1e-6, "1/MPa"))),
     ("roughness_race", 0.0, 1e-5, "m", "roughness is in metres", LENGTH_MISTAKES),
     ("roughness_ball", 0.0, 1e-5, "m", "roughness is in metres", LENGTH_MISTAKES),
+    ("mu_boundary", 0.0, 1.0, "", "a friction coefficient is a ratio (boundary friction of lubricated steel "
+     "about 0.1)", ((1e-2, "%"),)),
+    ("mu_full_film", 0.0, 1.0, "", "a friction coefficient is a ratio (full-film traction about 0.01-0.08)",
+     ((1e-2, "%"),)),
 )
+#: Smallest composite rms roughness sqrt(sigma_1^2 + sigma_2^2) accepted [m]: superfinished raceways and
+#: grade-5 balls have some 0.01-0.05 um rms (Harris & Kotzalas, Rolling Bearing Analysis, 5th ed., 2006, on the
+#: film parameter); 1 nm is below any bearing surface and keeps Lambda within a physical range.
+MIN_COMPOSITE_ROUGHNESS = 1e-9
 
 
 @dataclass(frozen=True)
@@ -74,6 +82,11 @@ class Lubricant:
             object.__setattr__(self, key, v)
         if self.composite_roughness <= 0.0:
             raise InputError("roughness_race: race and ball roughness are both zero; Lambda is undefined")
+        sigma = math.hypot(values["roughness_race"], values["roughness_ball"])
+        if sigma < MIN_COMPOSITE_ROUGHNESS:
+            raise InputError(f"roughness_race: the composite roughness sqrt(roughness_race^2 + roughness_ball^2) = "
+                             f"{sigma:.3g} m is below {MIN_COMPOSITE_ROUGHNESS:g} m, smoother than any bearing "
+                             "surface (superfinished raceways some 0.01-0.05 um rms); roughness is in metres")
         l1, l3 = values["lambda_mixed"], values["lambda_full_film"]
         if l3 <= l1:
             raise InputError(f"lambda_full_film: must exceed lambda_mixed ({l1}), got {l3}")

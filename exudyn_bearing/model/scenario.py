@@ -13,10 +13,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..data import InputError, get_traction_model
-from ..data.errors import check_bool, check_keys, check_number, check_temperatures
+from ..data.errors import check_bool, check_keys, check_number, check_temperatures, check_unused
 from ..data.defects import Defect, as_defect
 from ..data.traction import DEFAULT_REGULARIZING_SRR
-from ..physics.contact_slip import DEFAULT_N_ACROSS, DEFAULT_N_STRIPS
+from ..physics.contact_slip import DEFAULT_N_ACROSS, DEFAULT_N_STRIPS, check_resolution
 from ..physics.ehl import film_model_code
 from ..physics import kinematics as _kin
 from ..physics.hertz import method_code
@@ -307,11 +307,9 @@ class Scenario:
             raise InputError(f"traction_level: must be one of {', '.join(TRACTION_LEVELS)}, got "
                              f"{self.traction_level!r}")
         get_traction_model(self.traction)  # an unknown name raises, listing the catalogue
-        for name, hi in (("n_strips", 256), ("n_across", 16)):
-            v = getattr(self, name)
-            if isinstance(v, bool) or not isinstance(v, (int, np.integer)) or not 1 <= int(v) <= hi:
-                raise InputError(f"{name}: must be an integer in [1, {hi}], got {v!r}")
-            object.__setattr__(self, name, int(v))
+        ns, na = check_resolution(self.n_strips, self.n_across)  # the range of every entry point
+        object.__setattr__(self, "n_strips", ns)
+        object.__setattr__(self, "n_across", na)
         srr = self.traction_regularizing_srr
         if isinstance(srr, bool) or not isinstance(srr, (int, float)) or not 0.0 < srr <= 1.0:
             raise InputError(f"traction_regularizing_srr: must lie in (0, 1], got {srr!r}")
@@ -354,6 +352,11 @@ class Scenario:
             if not (math.isfinite(v) and ok(v)):
                 raise InputError(f"{name}: must {limit}, got {v!r}")
             object.__setattr__(self, name, v)
+        check_unused("ball_drag", self.ball_drag, (("oil_volume_fraction", self.oil_volume_fraction, 0.0),),
+                     "set ball_drag=True (--ball-drag)")
+        check_unused("rolling_resistance", self.rolling_resistance,
+                     (("hysteresis_loss_factor", self.hysteresis_loss_factor, HYSTERESIS_LOSS_FACTOR_STEEL),),
+                     "set rolling_resistance=True (--rolling-resistance)")
         if self.rolling_resistance and self.contact_law == "power":
             raise InputError("rolling_resistance: the peer power law has no Hertz ellipse to size the rolling "
                              "resistance; use contact_law='hertz'")

@@ -37,7 +37,7 @@ from ..physics.damping import REGIME_NAMES
 from .contact_summary import CONTACT_SUMMARY_UNITS, contact_summary
 from .jsonio import to_jsonable
 from .window_checks import (LOSS_FLOOR_MU, SPEED_FLOOR, SteadyStateWarning, energy_balance, energy_check,
-                            q_max_at_psi0, steadiness)
+                            energy_floor, q_max_at_psi0, steadiness)
 
 __all__ = ["Results", "SUMMARY_KEYS", "SUMMARY_UNITS", "SUMMARY_DESCRIPTIONS", "PHASE_NAMES", "LOSSES_MODELLED",
            "LOSSES_NOT_MODELLED", "DYNAMIC_LOSS_COMPONENTS", "DYNAMIC_NOT_MODELLED", "DYNAMIC_SWITCHED_LOSSES",
@@ -352,12 +352,12 @@ class Results:
         src["kinetic_energy_change"] = ("kinetic_energy (engine field)" if self.has_global("kinetic_energy") else
                                         "from the sampled ball and cage-ball velocities")
         out = energy_balance(dur, drive, loads, diss, float(ke[i0]), float(ke[i1]))
-        floor = self._loss_floor() * abs(float(np.mean(self.global_series("omega")[w])))
+        floor = energy_floor(self._loss_floor(), np.mean(self.global_series("omega")[w]))
         if out["energy_residual"] is None:
             src["energy_residual"] = "no drive power or a window of one sample: no residual"
         elif abs(out["drive_power"]) < floor:
             src["energy_residual"] = (f"drive power below the loss floor {floor:.3g} W (LOSS_FLOOR_MU (|Fr| + |Fa|) r_p "
-                                      f"omega): the residual compares noise and means little")
+                                      f"max(omega, 1 rad/s)): the residual compares noise and means little")
         else:
             src["energy_residual"] = "(drive_power - dissipation - kinetic_energy_change / window length) / drive_power"
         out["energy_source"] = src
@@ -382,7 +382,7 @@ class Results:
         if self.has_global("dissipated_work") and dur > 0.0:
             g = self.global_series("dissipated_work")
             recorded = float(g[w.stop - 1] - g[w.start]) / dur
-        floor = self._loss_floor() * abs(float(np.mean(self.global_series("omega")[w])))
+        floor = energy_floor(self._loss_floor(), np.mean(self.global_series("omega")[w]))
         check = energy_check(energy["drive_power"], comp, energy["kinetic_energy_change"], dur, recorded, floor)
         return {"power_loss": comp, "power_loss_total": check["power_loss_total"],
                 "not_modelled": self.losses_lists()[1] + list(DYNAMIC_NOT_MODELLED),

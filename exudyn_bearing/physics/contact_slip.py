@@ -114,6 +114,7 @@ import numpy as np
 
 from .._jit import kernel
 from ..data import get_traction_model
+from ..data.errors import InputError, check_integer
 from .hertz import _ellipke
 from .traction import _inverse_rolling_speed, _traction_srr
 
@@ -123,9 +124,27 @@ from .traction import _inverse_rolling_speed, _traction_srr
 #: 64 x 8 integration and the spin-axis angle within 0.1 deg on its cases).
 DEFAULT_N_STRIPS = 16
 DEFAULT_N_ACROSS = 4
+#: Largest strips and points across accepted by every entry point (solve_quasistatic, Scenario, the
+#: CLI's --strips and --points-across): 16 and 4 times the default, beyond the 64 x 8 reference of the
+#: convergence study; a dynamic run pays every point at every step.
+MAX_N_STRIPS = 256
+MAX_N_ACROSS = 16
 
-__all__ = ["DEFAULT_N_STRIPS", "DEFAULT_N_ACROSS", "contact_traction", "ContactTraction", "deformed_contact_radius", "spin_moment_coulomb",
+__all__ = ["DEFAULT_N_STRIPS", "DEFAULT_N_ACROSS", "MAX_N_STRIPS", "MAX_N_ACROSS", "check_resolution",
+           "contact_traction", "ContactTraction", "deformed_contact_radius", "spin_moment_coulomb",
            "slip_profile", "pure_rolling_points"]
+
+
+def check_resolution(n_strips, n_across, names=("n_strips", "n_across")) -> tuple[int, int]:
+    """``(n_strips, n_across)`` as ints in [1, MAX_N_STRIPS] and [1, MAX_N_ACROSS], else InputError naming
+    ``names`` (the caller's spelling: ``"--strips"`` on the command line)."""
+    out = []
+    for name, v, hi in zip(names, (n_strips, n_across), (MAX_N_STRIPS, MAX_N_ACROSS)):
+        v = check_integer(name, v)
+        if not 1 <= v <= hi:
+            raise InputError(f"{name}: must be an integer in [1, {hi}], got {v}")
+        out.append(v)
+    return out[0], out[1]
 
 
 @kernel(no_runtime=True)

@@ -33,6 +33,7 @@ import math
 import numpy as np
 
 from ...data import InputError, load_bearing
+from ...data.errors import check_number
 from ...model.coefficients import BearingCoefficients, speed_array
 from .solve import solve_quasistatic
 
@@ -136,6 +137,8 @@ def bearing_coefficients(bearing, speeds, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=
     >>> [round(float(k) / 1e8, 3) for k in c.stiffness[:, 0, 0]]   # k_xx [1e8 N/m]
     [1.814, 1.817]
     """
+    for w in np.ravel(np.asarray(speeds, dtype=object)):  # a "500" is not a speed (float() would read it)
+        check_number("speeds", w)
     s = speed_array(speeds)
     b = load_bearing(bearing)
     if isinstance(n_phases, bool) or not isinstance(n_phases, (int, np.integer)) or not 1 <= n_phases <= 64:

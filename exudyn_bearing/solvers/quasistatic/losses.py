@@ -11,7 +11,8 @@ speeds and orbital speeds of a :class:`~.solution.QuasiStaticSolution`:
 * ``hysteresis``: F_h |u_r| at every contact
   (:func:`~exudyn_bearing.physics.losses.hysteresis_rolling_force`);
 * ``drag``: F_D v of every ball orbiting through the oil-air mixture at
-  v = r_c omega_m (:func:`~exudyn_bearing.physics.losses.ball_drag_force`);
+  v = r_c (omega_m - omega_outer), the mixture turning with the outer ring as in the dynamic engines
+  (:func:`~exudyn_bearing.physics.losses.ball_drag_force`);
   with ``oil_volume_fraction = 0`` (default) the balls move through air;
 * ``churning``: the extra drag of the balls through an oil bath of level
   ``oil_level`` (a flooded bearing): the drag at the density of the bath's
@@ -34,7 +35,9 @@ out in every result.
 ``friction_torque_total`` = power_loss_total / |omega - omega_outer|, the
 torque the driven ring needs when the other ring stands still (the inner
 ring for the default outer ring at rest; the outer ring when the inner ring
-is held). The traction component is the solver's dissipation; its drive
+is held). With no relative speed (omega = omega_outer, also both at rest)
+nothing moves relative to anything, every component is 0 and so is the
+torque (the breakaway torque of a start is not modelled). The traction component is the solver's dissipation; its drive
 torque (``friction_torque``) equals it divided by the speed only in the
 traction equilibrium (``energy_residual`` 0).
 """
@@ -44,7 +47,8 @@ import math
 
 import numpy as np
 
-from ...data import InputError, Lubricant, load_bearing, lubricants
+from ...data import BallBearing, InputError, Lubricant, load_bearing, lubricants
+from ...data.errors import check_finite, check_plausible
 from ...data.lubricants_temperature import lubricants_temperature
 from ...physics import hertz as _hz
 from ...physics import losses as _ls
@@ -87,7 +91,7 @@ LOSS_UNITS = {
     "cage_pocket_load": "N (normal load of each ball on its pocket)",
     "power_loss_total": "W (sum of the modelled components)",
     "friction_torque_total": "N m (power_loss_total / |omega - omega_outer|: the torque on the driven ring, "
-                             "the other ring at rest)",
+                             "the other ring at rest; 0 without relative speed, where every loss is 0)",
     "power_loss_inner_ball": "W (ehl_rolling + hysteresis at each ball's inner contact)",
     "power_loss_outer_ball": "W (ehl_rolling + hysteresis at each ball's outer contact)",
     "drag_ball": "W (drag power of each ball, without churning)",
@@ -101,9 +105,29 @@ LOSS_UNITS = {
 DEFAULT_OIL_DENSITY = _ls.OIL_DENSITY
 
 
+#: Plausible oil densities [kg/m^3]: bearing oils 800-1000 (synthetic esters to 1000, fluorinated oils
+#: to 1900); a value near 1 is a density typed in g/cm^3 (kg/l).
+OIL_DENSITY_RANGE = (500.0, 2000.0)
+#: Largest cage pocket friction coefficient accepted [-]: dry steel on steel reaches some 0.8.
+MAX_CAGE_POCKET_FRICTION = 1.0
+
+
+#: Fields of a QuasiStaticSolution that power_losses reads.
+_SOLUTION_FIELDS = ("bearing_name", "balls", "geometry", "omega", "omega_outer", "lubricant", "dissipation_total")
+
+
 def _bearing(sol, bearing):
+    """The bearing of ``sol``: ``bearing`` (a BallBearing or a catalogue name) when given, checked to be the
+    one solved (its name and ball count), else the catalogue's entry of the solution's name."""
     if bearing is not None:
-        return bearing if not isinstance(bearing, str) else load_bearing(bearing)
+        if not isinstance(bearing, (str, BallBearing)):
+            raise InputError(f"bearing: expected a BallBearing or a catalogue name, got {bearing!r}")
+        b = load_bearing(bearing) if isinstance(bearing, str) else bearing
+        z = len(sol.balls["psi"])
+        if b.name != sol.bearing_name or b.n_balls != z:
+            raise InputError(f"bearing: the solution is of bearing {sol.bearing_name!r} ({z} balls), got "
+                             f"{b.name!r} ({b.n_balls} balls); pass the bearing the solution was computed for")
+        return b
     try:
         return load_bearing(sol.bearing_name)
     except InputError:
@@ -196,23 +220,29 @@ def power_losses(sol, bearing=None, lubricant=None, *, hysteresis_loss_factor=_l
     -------
     dict
         ``power_loss`` {component: W, and the not-modelled sources as text},
-        ``power_loss_total`` [W], ``friction_torque_total`` [N m] (NaN with
-        the rings at the same speed), per-ball arrays ``power_loss_inner_ball``,
+        ``power_loss_total`` [W], ``friction_torque_total`` [N m] (0 with
+        the rings at the same speed, where every component is 0), per-ball arrays ``power_loss_inner_ball``,
         ``power_loss_outer_ball``, ``drag_ball`` [W], and ``power_loss_notes``.
     """
-    if not (0.0 <= float(oil_volume_fraction) <= 1.0):
+    if not all(hasattr(sol, k) for k in _SOLUTION_FIELDS):  # (the solution module imports this one)
+        raise InputError(f"sol: expected a QuasiStaticSolution (of solve_quasistatic), got {sol!r}")
+    oil_volume_fraction = check_finite("oil_volume_fraction", oil_volume_fraction)
+    if not 0.0 <= oil_volume_fraction <= 1.0:
         raise InputError(f"oil_volume_fraction: must lie in [0, 1], got {oil_volume_fraction!r}")
-    for name, v in (("oil_density", oil_density), ("air_density", air_density), ("air_viscosity", air_viscosity)):
-        if not (math.isfinite(float(v)) and float(v) > 0.0):
+    oil_density = check_plausible("oil_density", oil_density, *OIL_DENSITY_RANGE, "kg/m^3", "density is in kg/m^3",
+                                  ((1e3, "g/cm^3"),))
+    for name, v in (("air_density", air_density), ("air_viscosity", air_viscosity)):
+        if not check_finite(name, v) > 0.0:
             raise InputError(f"{name}: must be > 0 and finite, got {v!r}")
-    if not (math.isfinite(float(oil_level)) and float(oil_level) >= 0.0):
+    if not check_finite("oil_level", oil_level) >= 0.0:
         raise InputError(f"oil_level: must be >= 0 and finite (m above the lowest point of the outer raceway), "
                          f"got {oil_level!r}")
-    if not (math.isfinite(float(cage_pocket_friction)) and float(cage_pocket_friction) >= 0.0):
-        raise InputError(f"cage_pocket_friction: must be >= 0 and finite, got {cage_pocket_friction!r}")
+    cage_pocket_friction = check_plausible("cage_pocket_friction", cage_pocket_friction, 0.0,
+                                           MAX_CAGE_POCKET_FRICTION, "", "a friction coefficient is a ratio "
+                                           "(lubricated sliding in a pocket about 0.05-0.15)", ((1e-2, "%"),))
     if cage_guidance is not None and cage_guidance not in CAGE_GUIDANCES:
         raise InputError(f"cage_guidance: one of {', '.join(CAGE_GUIDANCES)}, got {cage_guidance!r}")
-    if not (math.isfinite(float(hysteresis_loss_factor)) and 0.0 <= float(hysteresis_loss_factor) < 1.0):
+    if not 0.0 <= check_finite("hysteresis_loss_factor", hysteresis_loss_factor) < 1.0:
         raise InputError(f"hysteresis_loss_factor: must lie in [0, 1), got {hysteresis_loss_factor!r}")
     b = _bearing(sol, bearing)
     lub = _lubricant(sol, lubricant)
@@ -235,7 +265,8 @@ def power_losses(sol, bearing=None, lubricant=None, *, hysteresis_loss_factor=_l
         per[tag] = (_ls.rolling_resistance_power(f_ehl, u, surfaces=2), _ls.rolling_resistance_power(f_h, u))
     rho = _ls.mixture_density(oil_volume_fraction, oil_density, air_density)
     eta = _ls.mixture_viscosity(oil_volume_fraction, lub.viscosity, air_viscosity)
-    v = cr * np.asarray(bl["orbital_speed"], float)  # ball centre speed, mixture at rest
+    # ball centre speed relative to the mixture, which turns with the outer ring (the dynamic engines' drag)
+    v = cr * (np.asarray(bl["orbital_speed"], float) - sol.omega_outer)
     f_drag = np.atleast_1d(_ls.ball_drag_force(v, 2.0 * r_b, rho, eta))
     drag = f_drag * np.abs(v)
     # churning: the balls through the bath over their immersed share phi_b (oil in the bath, the mixture above)
@@ -285,7 +316,8 @@ def power_losses(sol, bearing=None, lubricant=None, *, hysteresis_loss_factor=_l
                           if land else f"{guidance} guidance: no land friction")
     out = {"power_loss": {**p, "cage": NOT_MODELLED["cage"], "seals": NOT_MODELLED["seals"]},
            "power_loss_total": total,
-           "friction_torque_total": total / dw if dw > 0.0 else float("nan"),
+           # no relative speed: every component is 0 (nothing moves relative to the rings or the mixture)
+           "friction_torque_total": total / dw if dw > 0.0 else 0.0,
            "power_loss_inner_ball": per["inner"][0] + per["inner"][1],
            "power_loss_outer_ball": per["outer"][0] + per["outer"][1],
            "drag_ball": drag, "churning_ball": churning, "cage_pocket_load": q_c, "cage_land_torque": t_land,

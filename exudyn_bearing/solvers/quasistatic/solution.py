@@ -25,7 +25,8 @@ UNITS = {
     "dissipation_inner_ball": "W", "dissipation_outer_ball": "W",
     "friction_torque": "N m (torque that drives the inner ring, whole bearing)",
     "drive_power": "W (friction_torque omega + outer-ring torque omega_outer)",
-    "energy_residual": "- ((drive_power - dissipation_total) / drive_power; 0 in the traction equilibrium)",
+    "energy_residual": "- ((drive_power - dissipation_total) / drive_power; 0 in the traction equilibrium and "
+                       "without relative speed of the rings)",
     "drive_torque_inner_ball": "N m (axial torque of the inner contact's traction on the ball)",
     "drive_torque_outer_ball": "N m (axial torque of the outer contact's traction on the ball)", "qv_inner_ball": "N m/s",
     "qv_outer_ball": "N m/s", "qv_total": "N m/s (whole bearing)", "traction_drag": "N (sum of the rolling-direction traction on the ball: zero in a true steady state without cage)",
@@ -44,6 +45,8 @@ UNITS = {
     "c_squeeze_inner": "N s/m (NaN without film)", "c_squeeze_outer": "N s/m (NaN without film)",
     "film_parameter_inner": "-", "film_parameter_outer": "-",
     "regime_inner": "code (0 boundary, 1 mixed, 2 full film, -1 no contact)", "regime_outer": "code",
+    "traction_resolution": "dissipation [W] at n_strips x n_across and at twice both, relative change, "
+                           "converged (within 1 %), needed (n_strips, n_across) (None: no relative speed)",
     "reactions": "N or N m", "residual": "N or N m", "loads": "N or N m", "omega": "rad/s", "omega_outer": "rad/s",
 }
 
@@ -81,6 +84,7 @@ class QuasiStaticSolution:
     n_strips: int = 0
     n_across: int = 0
     wall_s: float = 0.0
+    resolution_check: dict | None = None  #: check of the traction integration (solve.check_traction_resolution)
 
     # convenient totals -------------------------------------------------------------
     @property
@@ -112,9 +116,13 @@ class QuasiStaticSolution:
     def energy_residual(self) -> float:
         """(drive power - dissipation) / drive power [-]: zero to round-off when every ball is in its
         steady traction equilibrium (control ``equilibrium``); a kinematic hypothesis (race control,
-        minimum energy) leaves a net traction on the ball and shows here. NaN without drive power."""
+        minimum energy) leaves a net traction on the ball and shows here. 0 without drive power and without
+        dissipation (no relative speed of the rings: nothing to balance); NaN only for a dissipation
+        without drive power."""
         p = self.drive_power
-        return (p - self.dissipation_total) / p if p != 0.0 else float("nan")
+        if p == 0.0:
+            return 0.0 if self.dissipation_total == 0.0 else float("nan")
+        return (p - self.dissipation_total) / p
 
     @property
     def q_max_inner(self) -> float:
@@ -159,6 +167,7 @@ class QuasiStaticSolution:
         d["minimum_checks"] = self.minimum_checks
         d["iterations"] = self.iterations
         d["n_strips"], d["n_across"] = self.n_strips, self.n_across
+        d["traction_resolution"] = self.resolution_check
         d["wall_s"] = self.wall_s
         d["units"] = {**UNITS, **LOSS_UNITS}
         return d

@@ -35,22 +35,25 @@ from __future__ import annotations
 
 import math
 import time
+import warnings
+from contextlib import contextmanager
 
 import numpy as np
 
 from ...data import (MAX_FREE_CONTACT_ANGLE, BallBearing, InputError, Lubricant, get_traction_model, load_bearing,
                      load_lubricant)
-from ...data.errors import check_bool, check_finite, check_integer, check_nonnegative, check_temperatures
+from ...data.errors import check_bool, check_finite, check_nonnegative, check_temperatures
 from ...physics import ehl
 from ...physics import hertz as _hz
 from ...physics import kinematics as _kin
 from ...data.traction import DEFAULT_REGULARIZING_SRR, regularized
-from ...physics.contact_slip import DEFAULT_N_ACROSS, DEFAULT_N_STRIPS, deformed_contact_radius
+from ...physics.contact_slip import (DEFAULT_N_ACROSS, DEFAULT_N_STRIPS, MAX_N_ACROSS, MAX_N_STRIPS, check_resolution,
+                                     deformed_contact_radius)
 from ...physics.geometry import _raceway_radii_cos
 from ...physics.load_distribution import check_axial_load
 from . import kinematics as km
 from .balls import B_CR, B_CZ, B_DI, B_DO, B_NIR, B_NIZ, B_NOR, B_NOZ, B_QI, B_QO
-from ...model.load_range import MAX_CONTACT_PRESSURE, check_load_estimate, check_pressures
+from ...model.load_range import MAX_CONTACT_PRESSURE, check_load_estimate, check_pressures, pressure_excess
 from ...model.operating_geometry import operating_geometry
 from ...model.scenario import rolling_speed_floor as _rolling_floor
 from .damping import condensed_matrices, contact_damping
@@ -58,7 +61,17 @@ from .ring import DOF_NAMES, LOAD_NAMES, RingProblem, solve_ring
 from .solution import QuasiStaticSolution
 from .stiffness import stiffness_matrix
 
-__all__ = ["solve_quasistatic", "beta_scan"]
+__all__ = ["solve_quasistatic", "beta_scan", "check_operating_fit", "check_traction_resolution",
+           "TractionResolutionWarning", "RESOLUTION_TOLERANCE", "MAX_OPERATING_INTERFERENCE"]
+
+#: Largest relative change of the total dissipation when the strips and the points across are doubled that
+#: counts as converged: the criterion of ``python validation/traction_convergence.py`` (1 %).
+RESOLUTION_TOLERANCE = 0.01
+
+
+class TractionResolutionWarning(UserWarning):
+    """The traction integration over the contact ellipses (``n_strips`` x ``n_across``) is coarser than the
+    dissipation's convergence needs (:func:`check_traction_resolution`)."""
 
 
 #: Largest held displacement of the inner ring (``fixed``), as a fraction of the ball radius: the
@@ -100,6 +113,41 @@ def _interference_cause(b, w_i, w_o, ring_growth, fit, temperatures, limit):
     return "omega" if w_i != 0.0 or w_o == 0.0 else "omega_outer"
 
 
+#: Largest operating interference accepted, -P_d,op / 2 over the ball radius: the balls no longer fit
+#: between the grown rings beyond it (the contacts would leave the elastic range).
+MAX_OPERATING_INTERFERENCE = 0.01
+
+
+def check_operating_fit(b, omega, omega_outer=0.0, ring_growth=True, fit=0.0, temperatures=None):
+    """The operating geometry (:func:`~exudyn_bearing.model.operating_geometry.operating_geometry`) of ``b``
+    at the ring speeds [rad/s], the shaft fit [m] and the part temperatures [K]; InputError naming the input
+    that closes the clearance (``omega``, ``omega_outer``, ``fit`` or ``temperatures``) when the operating
+    interference exceeds 2 MAX_OPERATING_INTERFERENCE R_b (diametral): the speed limit of every command
+    (quasistatic, stiffness, info)."""
+    geom = operating_geometry(b, omega, omega_outer, ring_growth, fit, temperatures)
+    limit = -2.0 * MAX_OPERATING_INTERFERENCE * geom.r_b
+    if geom.operating_clearance < limit:
+        cause = _interference_cause(b, omega, omega_outer, ring_growth, fit, temperatures, limit)
+        why = {"fit": f"shaft fit {fit:g} m", "temperatures": f"thermal growth at {temperatures} K"}.get(
+            cause, f"centrifugal ring growth at omega = {omega:g} rad/s ({omega * 30.0 / math.pi:.4g} rpm), "
+                   f"omega_outer = {omega_outer:g} rad/s")
+        raise InputError(f"{cause}: the operating interference {-geom.operating_clearance:.3e} m ({why}) exceeds 2 % "
+                         f"of the ball radius: the balls do not fit between the grown rings; reduce {cause}")
+    return geom
+
+
+@contextmanager
+def axial_load_as_fa():
+    """InputErrors of the block about ``axial_load`` (physics.load_distribution's name) named ``Fa``, the
+    argument of solve_quasistatic and the command line's --Fa."""
+    try:
+        yield
+    except InputError as exc:
+        if not str(exc).startswith("axial_load:"):
+            raise
+        raise InputError("Fa:" + str(exc).removeprefix("axial_load:")) from None
+
+
 def _contact_state(geom, balls, e_prime, method):
     """Hertz ellipse (a, b, p_max, kappa, R_x) of both contacts of every ball."""
     z = balls.shape[0]
@@ -124,7 +172,8 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
                       ring_growth=True, fit=0.0, temperatures=None, fixed=None, hertz_method="exact",
                       phase=0.0, n_strips=DEFAULT_N_STRIPS, n_across=DEFAULT_N_ACROSS,
                       traction_regularizing_srr=DEFAULT_REGULARIZING_SRR, rolling_speed_floor=None,
-                      shoulder_angle=MAX_FREE_CONTACT_ANGLE, stiffness=True, start=None) -> QuasiStaticSolution:
+                      shoulder_angle=MAX_FREE_CONTACT_ANGLE, stiffness=True, start=None,
+                      resolution_check=True) -> QuasiStaticSolution:
     """Quasi-static equilibrium of a ball bearing with free inner-ring DOFs, speed effects and kinematics.
 
     Parameters
@@ -189,6 +238,10 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
         previous speed of a sweep): its ring pose and its ball speeds, scaled
         by the ratio of the ring speeds, start the iteration (a failed warm
         ring solve is retried from the bracketed start).
+    resolution_check : bool
+        Check the traction integration at the solution (:func:`check_traction_resolution`: a
+        :class:`TractionResolutionWarning` when doubling ``n_strips`` and ``n_across`` changes the
+        dissipation by more than 1 %); its result is the solution's ``resolution_check``.
 
     Returns
     -------
@@ -219,11 +272,8 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
     # None: the bearing's traction model (catalogue), else the DEM papers'; Coulomb-type laws regularised
     model = regularized(get_traction_model(traction, b), srr)
     lub = load_lubricant(lubricant, bearing=b)
-    n_strips, n_across = check_integer("n_strips", n_strips), check_integer("n_across", n_across)
-    if not 1 <= n_strips <= 4096:
-        raise InputError(f"n_strips: must lie in [1, 4096], got {n_strips}")
-    if not 1 <= n_across <= 64:
-        raise InputError(f"n_across: must lie in [1, 64], got {n_across}")
+    n_strips, n_across = check_resolution(n_strips, n_across)  # one range in every solver and command
+    resolution_check = check_bool("resolution_check", resolution_check)
     method = _hz.method_code(hertz_method)
     phase = check_finite("phase", phase)
     ring_growth = check_bool("ring_growth", ring_growth)
@@ -234,25 +284,23 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
     if not 0.0 < shoulder_angle <= 0.5 * math.pi:
         raise InputError(f"shoulder_angle: must lie in (0, pi/2] rad, got {shoulder_angle:g}")
     fixed = _check_fixed(fixed, b)
+    # the same case at rest, to tell a refusal the speed causes from one the loads cause (_speed_cause)
+    rest = dict(fixed=fixed, hertz_method=hertz_method, phase=phase, fit=fit, temperatures=temperatures,
+                shoulder_angle=shoulder_angle, lubricant=lub)
     angular = b.free_contact_angle > 0.0
     fr = math.hypot(loads[0], loads[1])
     if angular and "delta_a" not in fixed:
         if loads[2] < 0.0:
             raise InputError(f"Fa: an angular-contact bearing carries axial load along +z only, got {loads[2]:g} N")
-        check_axial_load(b, fr, loads[2])
+        with axial_load_as_fa():
+            check_axial_load(b, fr, loads[2])
         if loads[2] == 0.0:
             raise InputError("Fa: a single angular-contact bearing needs an axial load to locate its inner ring "
                              "axially (got 0 N; or hold delta_a with fixed=)")
     # loads far beyond the elastic contact model, before the solve (which may not converge there)
     check_load_estimate(b, fr, loads[2], hertz_method)
     what = f"F_r = {fr:g} N, F_a = {loads[2]:g} N at omega = {w_i:g} rad/s"
-    geom = operating_geometry(b, w_i, w_o, ring_growth, fit, temperatures)
-    if geom.operating_clearance < -2.0 * 0.01 * geom.r_b:
-        cause = _interference_cause(b, w_i, w_o, ring_growth, fit, temperatures, -2.0 * 0.01 * geom.r_b)
-        why = {"fit": f"shaft fit {fit:g} m", "temperatures": f"thermal growth at {temperatures} K"}.get(
-            cause, f"centrifugal ring growth at omega = {w_i:g} rad/s, omega_outer = {w_o:g} rad/s")
-        raise InputError(f"{cause}: the operating interference {-geom.operating_clearance:.3e} m ({why}) exceeds 2 % "
-                         f"of the ball radius: the balls do not fit between the grown rings")
+    geom = check_operating_fit(b, w_i, w_o, ring_growth, fit, temperatures)
     e_prime = _hz.material_reduced_modulus(b.material)
     z = b.n_balls
     psi = phase + 2.0 * math.pi * np.arange(z) / z
@@ -366,10 +414,18 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
                 if change < tol:
                     break
     except np.linalg.LinAlgError:
-        raise InputError(f"{_load_name(loads, fixed)}: the quasi-static equilibrium is singular at {what} (no "
-                         "ring pose or ball kinematics carries it): loads this far exceed the limit of the elastic "
-                         f"contact model, {MAX_CONTACT_PRESSURE / 1e9:g} GPa (ISO 76 static load rating): reduce "
-                         "the load") from None
+        speed = _speed_cause(b, loads, w_i, w_o, rest)
+        raise InputError(f"{speed or _load_name(loads, fixed)}: the quasi-static equilibrium is singular at {what} "
+                         "(no ring pose or ball kinematics carries it): "
+                         + (_SPEED_CAUSE if speed else "loads this far exceed the limit of the elastic contact "
+                            f"model, {MAX_CONTACT_PRESSURE / 1e9:g} GPa (ISO 76 static load rating): reduce the "
+                            "load")) from None
+    except InputError as exc:  # the ring equilibrium did not converge (solve_ring names the largest load)
+        speed = _speed_cause(b, loads, w_i, w_o, rest)
+        if speed is None and loads.any():
+            raise
+        raise InputError(f"{speed or _load_name(loads, fixed)}: {str(exc).partition(': ')[2]} at {what}"
+                         + (f"; {_SPEED_CAUSE}" if speed else "")) from None
     # final contact results
     out = _ball_results(b, geom, psi, balls, cs, kin, geo, model, n_strips, n_across, w_i, w_o, rd_o, rd_i,
                         lub, e_prime, mass, inertia, controls, moving, prob.fto, prob.fti)
@@ -379,9 +435,16 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
                          f"{checks[bad]['residual'] if checks[bad] else float('nan'):.2g}); the traction model "
                          "may be too steep or too weak to hold the balls: try more regularisation, or "
                          "control='min-energy'")
-    _check_shoulders(b, geom, balls, cs, loads, prob, shoulder_angle)
+    over = _shoulder_excess(geom, balls, cs, shoulder_angle)
+    if over is not None:
+        speed = _speed_cause(b, loads, w_i, w_o, rest)
+        raise InputError(f"{speed or _largest_load(loads, prob)}: {over} at {what}: "
+                         + (_SPEED_CAUSE if speed else "the load puts the contact over the shoulder"))
     # the elastic-contact limit on the load sharing found (one ball may carry more than the estimate)
-    check_pressures(out["p_max_inner"], out["p_max_outer"], _load_name(loads, fixed), what)
+    name = _load_name(loads, fixed)
+    if pressure_excess(out["p_max_inner"], out["p_max_outer"]) is not None:
+        name = _speed_cause(b, loads, w_i, w_o, rest) or name
+    check_pressures(out["p_max_inner"], out["p_max_outer"], name, what)
     # normal damping of every contact (the contact model's, at its load and film) and the 5x5 matrices
     out.update(contact_damping(balls, cs["a_i"], cs["a_o"], out["h_min_inner"], out["h_min_outer"], geom.r_b,
                                b.material.hysteretic_damping, lub))
@@ -405,13 +468,88 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
                 "ball_thermal_growth": geom.ball_thermal_growth, "fit_pressure": geom.fit_pressure,
                 "operating_clearance": geom.operating_clearance, "axial_play": _axial_play(geom),
                 "diametral_clearance": b.diametral_clearance}
-    return QuasiStaticSolution(
+    sol = QuasiStaticSolution(
         bearing_name=b.name, loads=loads, omega=w_i, omega_outer=w_o, control=control, traction=model.name,
         lubricant=lub.name, displacement=u, residual=resid, free=free, held=held, reactions=reactions, balls=out,
         geometry=geometry, stiffness=kmat, stiffness_check=kcheck, damping=cmat,
         minimum_checks=[c for c in checks] if control in ("min-energy", "equilibrium") else [], iterations=it_total,
         n_strips=n_strips, n_across=n_across, wall_s=time.perf_counter() - t0,
         contact_geometry=geo, kinematics=kin, traction_model=model)
+    if resolution_check:
+        sol.resolution_check = check_traction_resolution(sol)
+    return sol
+
+
+def _dissipation_at(sol, n_strips, n_across):
+    """Total dissipation [W] of ``sol``'s contacts, kinematics held, integrated over n_strips x n_across."""
+    return float(sum(km.ball_contacts(sol.kinematics[j], sol.contact_geometry[j], sol.traction_model, n_strips,
+                                      n_across)[:, 9].sum() for j in range(sol.kinematics.shape[0])))
+
+
+def check_traction_resolution(sol, tolerance=RESOLUTION_TOLERANCE, warn=True) -> dict | None:
+    """Is the traction integration of ``sol`` (its ``n_strips`` x ``n_across``) converged in the dissipation?
+
+    The dissipation of the solution's contacts, its ball kinematics held, is integrated again with twice the
+    strips and twice the points across (each at most MAX_N_STRIPS, MAX_N_ACROSS); a relative change above
+    ``tolerance`` (1 %, the criterion of ``validation/traction_convergence.py``) is a
+    :class:`TractionResolutionWarning` (``warn``) with the resolution from which doubling changes it by
+    less: the estimate of what the case needs (the first such level of the doublings, or the default
+    DEFAULT_N_STRIPS x DEFAULT_N_ACROSS when it passes the same test with fewer points). A change below
+    1e-9 of the rolling-power scale sum Q |u_roll| over the contacts counts as converged (a dissipation
+    of round-off). The kinematics of ``control="min-energy"`` or ``"equilibrium"`` also follow the
+    integration; this check holds them, so its
+    estimate is the least resolution needed. A solution without relative speed (no contact geometry)
+    and one at the largest resolution return None.
+
+    Returns {"n_strips", "n_across", "dissipation" [W], "doubled" (n_strips, n_across), "dissipation_doubled"
+    [W], "change" (relative), "converged", "needed" (n_strips, n_across) or None}.
+    """
+    if sol.contact_geometry is None or sol.kinematics is None:
+        return None
+    levels = [(sol.n_strips, sol.n_across)]
+    while True:
+        ns, na = levels[-1]
+        nxt = (min(2 * ns, MAX_N_STRIPS), min(2 * na, MAX_N_ACROSS))
+        if nxt == (ns, na):
+            break
+        levels.append(nxt)
+    if len(levels) == 1:
+        return None
+    geo = sol.contact_geometry
+    scale = float(np.sum(geo[:, km.G_QO] * np.abs(sol.balls["u_roll_outer"]))
+                  + np.sum(geo[:, km.G_QI] * np.abs(sol.balls["u_roll_inner"])))
+    floor = 1e-9 * scale
+
+    def close(p, q):
+        return abs(q - p) <= max(tolerance * abs(q), floor)
+
+    p = [_dissipation_at(sol, *levels[0]), _dissipation_at(sol, *levels[1])]
+    change = (p[1] - p[0]) / p[1] if p[1] != 0.0 else 0.0
+    ok = close(p[0], p[1])
+    needed = levels[0] if ok else None
+    k = 1
+    while needed is None and k + 1 < len(levels):
+        p.append(_dissipation_at(sol, *levels[k + 1]))
+        if close(p[k], p[k + 1]):
+            needed = levels[k]
+        k += 1
+    default = (DEFAULT_N_STRIPS, DEFAULT_N_ACROSS)
+    if not ok and default not in levels[:k] and (needed is None or default[0] * default[1] < needed[0] * needed[1]):
+        if close(_dissipation_at(sol, *default), _dissipation_at(sol, 2 * default[0], 2 * default[1])):
+            needed = default  # the default, off the path of doublings, is converged and cheaper
+    out = {"n_strips": levels[0][0], "n_across": levels[0][1], "dissipation": p[0], "doubled": levels[1],
+           "dissipation_doubled": p[1], "change": float(change), "converged": bool(ok), "needed": needed}
+    if not ok and warn:
+        need = (f"about {needed[0]} x {needed[1]} (n_strips={needed[0]}, n_across={needed[1]}; the command line's "
+                f"--strips {needed[0]} --points-across {needed[1]})" if needed else
+                f"more than {MAX_N_STRIPS} x {MAX_N_ACROSS}, the largest accepted")
+        warnings.warn(TractionResolutionWarning(
+            f"n_strips, n_across: the dissipation changes by {100 * change:+.3g} % ({p[0]:.4g} W at {levels[0][0]} x "
+            f"{levels[0][1]}, {p[1]:.4g} W at {levels[1][0]} x {levels[1][1]}) when the strips and points across "
+            f"of the traction integration are doubled, more than {100 * tolerance:g} %: converged from {need} "
+            f"(default {DEFAULT_N_STRIPS} x {DEFAULT_N_ACROSS}; kinematics held, so this is the least needed)"),
+            stacklevel=3)
+    return out
 
 
 def beta_scan(solution: QuasiStaticSolution, betas, ball=0):
@@ -548,10 +686,8 @@ def _load_name(loads, fixed):
     return "fixed" if fixed else "omega"
 
 
-def _check_shoulders(b, geom, balls, cs, loads, prob, limit):
-    """InputError when a loaded contact ellipse reaches past the groove shoulder."""
-    arm = prob.arm if prob is not None else 1.0
-    k = int(np.argmax(np.abs(loads) * np.array([1, 1, 1, 1 / arm, 1 / arm])))
+def _shoulder_excess(geom, balls, cs, limit) -> str | None:
+    """Where a loaded contact ellipse reaches past the groove shoulder (text), else None."""
     for tag, qk, nr, nz, r_c, sgn in (("inner", B_QI, B_NIR, B_NIZ, geom.r_ci, -1.0),
                                       ("outer", B_QO, B_NOR, B_NOZ, geom.r_co, 1.0)):
         alpha = np.arctan2(sgn * balls[:, nz], sgn * balls[:, nr])
@@ -560,8 +696,32 @@ def _check_shoulders(b, geom, balls, cs, loads, prob, limit):
         bad = (balls[:, qk] > 0.0) & (reach > limit)
         if bad.any():
             j = int(np.argmax(np.where(bad, reach, -1.0)))
-            raise InputError(
-                f"{LOAD_NAMES[k]}: the {tag} contact ellipse of ball {j} reaches {math.degrees(reach[j]):.1f} deg "
-                f"from the groove bottom (contact angle {math.degrees(alpha[j]):.1f} deg + half-width "
-                f"{math.degrees(half[j]):.1f} deg) > shoulder {math.degrees(limit):.0f} deg: the load puts the "
-                f"contact over the shoulder")
+            return (f"the {tag} contact ellipse of ball {j} reaches {math.degrees(reach[j]):.1f} deg from the groove "
+                    f"bottom (contact angle {math.degrees(alpha[j]):.1f} deg + half-width "
+                    f"{math.degrees(half[j]):.1f} deg) > shoulder {math.degrees(limit):.0f} deg")
+    return None
+
+
+def _largest_load(loads, prob):
+    """The name of the largest load (moments over the groove-centre arm), as the solver names a load."""
+    arm = prob.arm if prob is not None else 1.0
+    return LOAD_NAMES[int(np.argmax(np.abs(loads) * np.array([1, 1, 1, 1 / arm, 1 / arm])))]
+
+
+def _speed_cause(b, loads, w_i, w_o, rest) -> str | None:
+    """``"omega"`` (``"omega_outer"`` with the inner ring at rest) when the speed causes a refusal: the same
+    loads at rest (``rest``: the other arguments of solve_quasistatic) pass every check of the solver; else
+    None (the loads alone are refused, or there is no speed)."""
+    if w_i == 0.0 and w_o == 0.0:
+        return None
+    try:
+        solve_quasistatic(b, loads[0], loads[2], loads[3], loads[4], Fy=loads[1], omega=0.0, omega_outer=0.0,
+                          stiffness=False, resolution_check=False, **rest)
+    except InputError:
+        return None
+    return "omega" if w_i != 0.0 else "omega_outer"
+
+
+#: Why a refusal names the speed: the same loads at rest pass.
+_SPEED_CAUSE = ("the speed causes it (centrifugal force, gyroscopic moment and ring growth; the same loads at "
+                "rest are carried): reduce the speed")

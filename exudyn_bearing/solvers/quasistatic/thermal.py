@@ -32,6 +32,7 @@ the temperatures reached, and ``converged`` False in the result.
 """
 from __future__ import annotations
 
+import inspect
 import math
 import re
 import time
@@ -41,12 +42,14 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ...data import InputError, TractionModel, get_traction_model, load_bearing
-from ...data.errors import check_finite, check_integer, check_number, check_temperature
+from ...data.errors import (LENGTH_MISTAKES, check_finite, check_integer, check_number, check_plausible,
+                            check_temperature)
 from ...data import lubricants_temperature as _lt
 from ...physics import thermal as th
 from ...physics.lubricant_properties import lubricant_at, properties_at
 from .losses import cage_land_geometry, power_losses
-from .solve import solve_quasistatic
+from .solution import QuasiStaticSolution
+from .solve import check_traction_resolution, solve_quasistatic
 
 __all__ = ["CAGE_NODE", "NODES", "THERMAL_UNITS", "ThermalConvergenceWarning", "ThermalRunawayError", "ThermalSolution",
            "solve_thermal", "thermal_lubricant"]
@@ -177,6 +180,9 @@ def _cage_options(b, guidance, pocket_clearance, pocket_share, loss_options) -> 
     if not c_p > 0.0:  # infinity allowed: no pocket film
         raise InputError(f"cage_pocket_clearance: must be > 0 m (the oil gap per side between a ball and its "
                          f"pocket), got {pocket_clearance!r}")
+    if math.isfinite(c_p):  # a gap up to the ball radius (pockets are some 0.1-1 mm larger than the ball)
+        check_plausible("cage_pocket_clearance", c_p, 1e-7, b.ball_radius, "m", "lengths are in metres (the gap "
+                        "per side, at most the ball radius; infinity: no pocket film)", LENGTH_MISTAKES)
     share = check_finite("cage_pocket_heat_share", pocket_share)
     if not 0.0 <= share <= 1.0:
         raise InputError(f"cage_pocket_heat_share: must lie in [0, 1] (the cage's share of the pocket friction "
@@ -296,7 +302,8 @@ def solve_thermal(bearing, Fr=0.0, Fa=0.0, *, omega, oil_inlet_temperature, oil_
         Oil's share of the cavity the balls orbit through, for the drag (power_losses).
     ambient_conductance : dict, optional
         ``{"inner": W/K, "outer": W/K}`` from the rings to the ambient through the shaft and the
-        housing (default: free convection from a nominal housing and shaft).
+        housing (default, also for a key left out: free convection from a nominal housing and shaft;
+        another key is refused).
     solid_conductivity : float
         Thermal conductivity of rings and balls [W/(m K)].
     tolerance : float
@@ -304,9 +311,10 @@ def solve_thermal(bearing, Fr=0.0, Fa=0.0, *, omega, oil_inlet_temperature, oil_
     max_iterations : int
     relaxation : float
         Relaxation of the first temperature update, 0 < w <= 1 (later steps: the secant slope).
-    start : ThermalSolution, optional
+    start : ThermalSolution or QuasiStaticSolution, optional
         A solution at a nearby operating point (the previous speed of a sweep): its temperatures and
-        its quasi-static solution start the iteration.
+        its quasi-static solution start the iteration (a QuasiStaticSolution: the quasi-static
+        iteration only; the temperatures start at the oil inlet's).
     cage_guidance : str, optional
         As in :func:`~.losses.power_losses` (default "ball" for a bearing with a cage, "none" without);
         any guidance but "none" adds the cage node.
@@ -322,7 +330,9 @@ def solve_thermal(bearing, Fr=0.0, Fa=0.0, *, omega, oil_inlet_temperature, oil_
         ``cage_land_radius``, ``cage_land_width``, ``cage_land_clearance``, ``hysteresis_loss_factor``,
         ...); the land values also set the land film's conductance.
     **quasistatic
-        Further arguments of :func:`~.solve.solve_quasistatic` (``control``, ``fit``, ...).
+        Further arguments of :func:`~.solve.solve_quasistatic` (``control``, ``fit``, ...; not
+        ``temperatures``, which the network sets). The traction resolution is checked once, at the
+        last solution (:func:`~.solve.check_traction_resolution`).
 
     Returns
     -------
@@ -356,11 +366,26 @@ def solve_thermal(bearing, Fr=0.0, Fa=0.0, *, omega, oil_inlet_temperature, oil_
     k_solid = check_finite("solid_conductivity", solid_conductivity)
     if not k_solid > 0.0:
         raise InputError(f"solid_conductivity: must be > 0 W/(m K), got {k_solid!r}")
-    g_amb = dict(_default_ambient_conductance(b)) if ambient_conductance is None else dict(ambient_conductance)
+    if ambient_conductance is not None and not isinstance(ambient_conductance, dict):
+        raise InputError(f"ambient_conductance: expected a dict {{'inner': W/K, 'outer': W/K}}, got "
+                         f"{ambient_conductance!r}")
+    _check_names("ambient_conductance", "key", ambient_conductance or {}, ("inner", "outer"))
+    g_amb = {**_default_ambient_conductance(b), **(ambient_conductance or {})}  # a key left out: its default
     for k in ("inner", "outer"):
-        g_amb[k] = check_finite(f"ambient_conductance.{k}", g_amb.get(k, 0.0))
+        g_amb[k] = check_finite(f"ambient_conductance.{k}", g_amb[k])
         if g_amb[k] < 0.0:
             raise InputError(f"ambient_conductance.{k}: must be >= 0 W/K, got {g_amb[k]!r}")
+    if loss_options is not None and not isinstance(loss_options, dict):
+        raise InputError(f"loss_options: expected a dict of power_losses keywords, got {loss_options!r}")
+    _check_names("loss_options", "keyword of power_losses", loss_options or {}, _LOSS_KEYWORDS)
+    if start is not None and not isinstance(start, (ThermalSolution, QuasiStaticSolution)):
+        raise InputError(f"start: expected a ThermalSolution (or a QuasiStaticSolution) at a nearby operating "
+                         f"point, got {start!r}")
+    if "temperatures" in quasistatic:
+        raise InputError("temperatures: set by the thermal network in solve_thermal (the part temperatures are "
+                         "its result); leave it out, or call solve_quasistatic with fixed temperatures")
+    _check_names("solve_thermal", "keyword argument", quasistatic, _QUASISTATIC_KEYWORDS)
+    final_check = quasistatic.pop("resolution_check", True)
     loss_options = dict(loss_options or {})
     for k in ("oil_volume_fraction", "oil_density", "cage_guidance", "lubricant", "bearing"):
         if k in loss_options:
@@ -374,7 +399,9 @@ def solve_thermal(bearing, Fr=0.0, Fa=0.0, *, omega, oil_inlet_temperature, oil_
 
     sol, cage, nodes = None, None, NODES
     temps = np.full(len(nodes), t_in)
-    if start is not None:
+    if isinstance(start, QuasiStaticSolution):
+        sol = start
+    elif start is not None:
         temps = np.minimum(np.array([start.temperatures[n] for n in NODES], float), hi)
         sol = start.quasistatic
     history, converged, it, clamped, prev = [], False, 0, False, None
@@ -385,14 +412,15 @@ def solve_thermal(bearing, Fr=0.0, Fa=0.0, *, omega, oil_inlet_temperature, oil_
         oil = properties_at(lt, temps[3])
         sol = solve_quasistatic(b, Fr, Fa, omega=omega, traction=tm, lubricant=lub, start=sol,
                                 temperatures={"inner": float(temps[0]), "outer": float(temps[1]),
-                                              "ball": float(temps[2])}, **quasistatic)
+                                              "ball": float(temps[2])}, resolution_check=False, **quasistatic)
         losses = power_losses(sol, b, lub, oil_density=oil["density"], **loss_options)
         if it == 1:  # the cage node: its data once, its start temperature the previous solution's or the oil's
             cage = _cage_options(b, losses["cage_guidance"], cage_pocket_clearance, cage_pocket_heat_share,
                                  loss_options)
             if cage is not None:
                 nodes = NODES + (CAGE_NODE,)
-                t_cage = start.temperatures.get(CAGE_NODE, temps[3]) if start is not None else temps[3]
+                t_cage = (start.temperatures.get(CAGE_NODE, temps[3]) if isinstance(start, ThermalSolution)
+                          else temps[3])
                 temps = np.append(temps, min(float(t_cage), hi))
         heat, G, gb, tb, cond = _network(b, sol, losses, oil, t_in, t_amb, m_dot, q_vol, g_amb, k_solid, cage)
         try:
@@ -404,8 +432,9 @@ def solve_thermal(bearing, Fr=0.0, Fa=0.0, *, omega, oil_inlet_temperature, oil_
         history.append({"iteration": it, "temperatures": dict(zip(nodes, map(float, t_new))),
                         "power_loss_total": float(losses["power_loss_total"]), "change": step})
         if not np.all(np.isfinite(t_new)):
-            raise ThermalRunawayError(f"thermal loop: temperatures not finite at iteration {it} "
-                                      f"(power loss {losses['power_loss_total']:.4g} W)")
+            raise ThermalRunawayError(f"oil_flow: the thermal loop's temperatures are not finite at iteration {it} "
+                                      f"(power loss {losses['power_loss_total']:.4g} W): more oil_flow, a lower "
+                                      "oil_inlet_temperature or a lower speed")
         if step < tol:
             converged = True
             temps = t_new
@@ -428,6 +457,8 @@ def solve_thermal(bearing, Fr=0.0, Fa=0.0, *, omega, oil_inlet_temperature, oil_
             temps = np.minimum(temps, hi)
         clamped = bool(np.any(hot))
     out_heat = th.network_heat_out(temps, gb, tb)
+    if final_check:  # the traction integration, once at the last quasi-static solution
+        sol.resolution_check = check_traction_resolution(sol)
     if not converged:
         warnings.warn(ThermalConvergenceWarning(
             f"thermal loop: not converged in {it} iterations (last change {step:.3g} K > {tol:g} K); "
@@ -438,6 +469,20 @@ def solve_thermal(bearing, Fr=0.0, Fa=0.0, *, omega, oil_inlet_temperature, oil_
         conductances=cond, losses=losses, lubricant=lub, iterations=it, converged=converged,
         oil_inlet_temperature=t_in, ambient_temperature=t_amb, oil_flow=q_vol, history=history,
         wall_s=time.perf_counter() - t0)
+
+
+#: Keywords of power_losses that loss_options may carry, and of solve_quasistatic that **quasistatic may.
+_LOSS_KEYWORDS = tuple(k for k in inspect.signature(power_losses).parameters if k != "sol")
+_QUASISTATIC_KEYWORDS = tuple(k for k in inspect.signature(solve_quasistatic).parameters
+                              if k not in ("bearing", "Fr", "Fa", "omega", "traction", "lubricant", "start",
+                                           "temperatures"))
+
+
+def _check_names(name, what, given, valid):
+    """InputError "name: unknown what 'key' (valid: ...)" for the first key of ``given`` not in ``valid``."""
+    unknown = sorted(set(given) - set(valid), key=str)
+    if unknown:
+        raise InputError(f"{name}: unknown {what} {unknown[0]!r} (valid: {', '.join(sorted(valid))})")
 
 
 def _traction_at(model, lub, t_contact):
@@ -455,6 +500,6 @@ def _runaway(lt, temps, iteration: int, nodes=NODES):
     lo, hi = lt.temperature_range
     k = int(np.argmax(temps))
     raise ThermalRunawayError(
-        f"temperature: thermal runaway, the {nodes[k]} node reached {temps[k]:.1f} K at iteration {iteration} "
+        f"oil_flow: thermal runaway, the {nodes[k]} node reached {temps[k]:.1f} K at iteration {iteration} "
         f"with the lubricant at the top of its range, above the range of lubricant {lt.name!r} ({lo:g}-{hi:g} K); "
         "more oil_flow, a lower oil_inlet_temperature or a lower speed")
