@@ -51,7 +51,11 @@ def add_parser(sub):
     p.add_argument("--hertz", choices=METHODS, default="exact", help="Hertz fidelity level")
     p.add_argument("--film", choices=("hd", "mk"), default="hd",
                    help="film model: Hamrock-Dowson or Masjedi-Khonsari reading")
-    p.add_argument("--cage", action=argparse.BooleanOptionalAction, default=True, help="torus cage on/off")
+    p.add_argument("--cage", nargs="?", const="torus", default="torus", choices=("torus", "rigid", "none"),
+                   help="cage model: the DEM papers' torus of cage balls (default), a rigid cage body with pockets "
+                        "and a guiding land (reference engine; geometry estimated from the ball diameter, "
+                        "docs/theory/cage.md), or none")
+    p.add_argument("--no-cage", dest="cage", action="store_const", const="none", help="the same as --cage none")
     p.add_argument("--lubrication", action=argparse.BooleanOptionalAction, default=True,
                    help="Lambda-switched damping and friction on/off")
     p.add_argument("--initial", choices=INITIAL_STATES, default="analytic",

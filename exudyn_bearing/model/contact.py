@@ -88,6 +88,11 @@ from ..physics.friction import (_implicit_tangential_stiffness, _regularized_cou
 from ..physics.geometry import _groove_geometry, _raceway_radii_cos
 from ..physics.hertz import _curvature_sum_radius, _kfe_fast, _semi_axes, _semi_axes_overlap, _stiffness
 from ..physics.losses import _ehl_rolling_force, _hysteresis_rolling_force, ball_drag_force
+from ..physics.short_bearing import _short_bearing_xy
+from ..physics.friction import _regularized_coulomb
+from .layout import (G_LAND_ECC, G_LAND_FX, G_LAND_FY, G_LAND_POWER, G_POCKET_POWER, P_GUIDANCE, P_IC, P_K_LAND,
+                     P_K_POCKET, P_LAND_C, P_LAND_EPS, P_LAND_ETA, P_LAND_L, P_LAND_R, P_MC, P_MU_POCKET,
+                     P_POCKET_GAP, P_POCKET_SHAPE, P_POCKET_VREG, P_RIGID)
 from .layout import HZ_E, HZ_EXP, HZ_F, HZ_FILM_K, HZ_GEO, HZ_K, HZ_LN_U, HZ_LN_W, HZ_N, HZ_RATIO
 from .layout import (D_ROLLRES, G_DRAG_POWER, G_EHL_POWER, G_HYST_POWER, P_ALPHA_H, P_DRAG, P_ETA_MIX, P_RHO_MIX,
                      P_ROLLRES)
@@ -828,6 +833,183 @@ def _guide_contact(k, p, xc, vc, rings, fc, fr):
 
 
 @kernel(inline="always")
+def _land_force(p, ex, ey, evx, evy, omega_sum):
+    """(F_x, F_y, crush force) of the land on the cage at the cage's offset (ex, ey) and velocity (evx, evy)
+    relative to the land, the surfaces turning at omega_sum together: the short-bearing film
+    (:func:`~exudyn_bearing.physics.short_bearing._short_bearing_xy`) and, beyond the crush eccentricity
+    ``P_LAND_EPS``, the film's force there along the same line plus the land contact k_land (e - eps_c c)."""
+    cl = p[P_LAND_C]
+    eps_c = p[P_LAND_EPS]
+    e = math.sqrt(ex * ex + ey * ey)
+    k = 1.0 if e <= eps_c * cl else eps_c * cl / e
+    fx, fy = _short_bearing_xy(ex * k, ey * k, evx, evy, omega_sum, p[P_LAND_ETA], p[P_LAND_R], p[P_LAND_L], cl)
+    pen = 0.0
+    if k < 1.0:
+        pen = p[P_K_LAND] * (e - eps_c * cl)
+        fx -= pen * ex / e
+        fy -= pen * ey / e
+    return fx, fy, pen
+
+
+@kernel(no_runtime=True, internal=True)
+def _rigid_cage(p, xb, vb, wb, xc, vc, rings, fb, tb, fc, fr, glob, cage_load, want):
+    """The rigid cage (docs/theory/cage.md): ball j in pocket j, and the cage on its land.
+
+    The cage's centre is ``xc[0]``, its angle ``xc[1, 0]``, their rates ``vc[0]``, ``vc[1, 0]``
+    (:mod:`.layout`); pocket j sits on the pitch circle at the cage angle + 2 pi j / Z, at the cage's
+    axial position. A ball that leaves the pocket's clearance c_p (its centre farther than c_p from the
+    pocket's axis, cylindrical pockets, or from its centre, spherical) presses on the wall: Hertz with the
+    constant ``P_K_POCKET``, critical damping of the reduced mass of ball and cage (backward-Euler over the
+    step with ``cage_damping='implicit'``), Coulomb friction mu_c on the sliding velocity of the contact
+    point, regularised below ``P_POCKET_VREG``. A land-guided cage rides on the land's film
+    (:func:`~exudyn_bearing.physics.short_bearing._short_bearing_xy`, the surfaces' speeds the cage's and
+    the ring's) with its shear torque; beyond the crush eccentricity the film's force stays at its value
+    there and a linear contact (``P_K_LAND``) takes the rest (:func:`_land_force`). With
+    ``cage_damping='implicit'`` the land's force is taken linearly implicit over the step (its stiffness and
+    damping both; docs/theory/cage.md#stable-step), as the pocket damping is backward Euler. Forces and moments go to the balls
+    (fb, tb), to the cage (``fc[0]`` the force, ``fc[1, 0]`` the moment about the axis times m_c / I_c, so
+    that the integrators' common 1/m_c turns it into the angular acceleration) and to the guiding ring
+    (fr). Returns the largest overlap of a pocket over R_b (for the runaway measure) and writes the
+    dissipation of pockets and land to ``glob``."""
+    z = xb.shape[0]
+    rb = p[P_RB]
+    rp = p[P_RP]
+    gap = p[P_POCKET_GAP]
+    kp = p[P_K_POCKET]
+    mu = p[P_MU_POCKET]
+    vreg = p[P_POCKET_VREG]
+    tau = p[P_CAGE_TAU]
+    mc = p[P_MC]
+    m_eff = p[P_MB] * mc / (p[P_MB] + mc)
+    cx, cy, cz = xc[0, 0], xc[0, 1], xc[0, 2]
+    ux, uy, uz = vc[0, 0], vc[0, 1], vc[0, 2]
+    wc = vc[1, 0]
+    cyl = p[P_POCKET_SHAPE] < 0.5
+    fcx, fcy, fcz, tcz = 0.0, 0.0, 0.0, 0.0
+    pocket_power = 0.0
+    worst = 0.0
+    pitch = 2.0 * math.pi / z
+    for j in range(z):
+        if want:
+            cage_load[j, 0] = 0.0
+            cage_load[j, 1] = 0.0
+        phi = xc[1, 0] + j * pitch
+        co, si = math.cos(phi), math.sin(phi)
+        dx = xb[j, 0] - (cx + rp * co)
+        dy = xb[j, 1] - (cy + rp * si)
+        dz = xb[j, 2] - cz
+        if cyl:  # the offset from the pocket's (radial) axis
+            dr = dx * co + dy * si
+            dx -= dr * co
+            dy -= dr * si
+        d2 = dx * dx + dy * dy + dz * dz
+        if not d2 > gap * gap:
+            if d2 != d2:
+                worst = d2  # a non-finite ball or cage: the engines stop on NaN
+            continue
+        dist = math.sqrt(d2)
+        delta = dist - gap
+        if delta / rb > worst:
+            worst = delta / rb
+        nx, ny, nz = dx / dist, dy / dist, dz / dist
+        # the contact point relative to the cage's centre, and the sliding velocity of ball against pocket there
+        px, py = xb[j, 0] + rb * nx - cx, xb[j, 1] + rb * ny - cy
+        ex, ey, ez = _cross(wb[j, 0], wb[j, 1], wb[j, 2], rb * nx, rb * ny, rb * nz)
+        vrx = vb[j, 0] + ex - (ux - wc * py)
+        vry = vb[j, 1] + ey - (uy + wc * px)
+        vrz = vb[j, 2] + ez - uz
+        ddot = vrx * nx + vry * ny + vrz * nz
+        sq = math.sqrt(delta)
+        c = _damping_critical(m_eff, 1.5 * kp * sq)
+        if tau > 0.0:
+            c = _implicit_damping(c, m_eff, tau)
+        f_el = kp * delta * sq
+        f = f_el + c * ddot
+        if f < 0.0:
+            f = 0.0
+        sx, sy, sz = vrx - ddot * nx, vry - ddot * ny, vrz - ddot * nz
+        slip = math.sqrt(sx * sx + sy * sy + sz * sz)
+        tx, ty, tz = 0.0, 0.0, 0.0
+        if slip > 0.0:
+            ft = _regularized_coulomb(slip, f, mu, vreg) / slip
+            tx, ty, tz = -ft * sx, -ft * sy, -ft * sz
+        gx, gy, gz = tx - f * nx, ty - f * ny, tz - f * nz  # the pocket's force on the ball
+        fb[j, 0] += gx
+        fb[j, 1] += gy
+        fb[j, 2] += gz
+        mx, my, mz = _cross(rb * nx, rb * ny, rb * nz, tx, ty, tz)
+        tb[j, 0] += mx
+        tb[j, 1] += my
+        tb[j, 2] += mz
+        fcx -= gx
+        fcy -= gy
+        fcz -= gz
+        tcz -= px * gy - py * gx
+        # dissipated: the normal damping's work and the friction's (minus the pair's power on the sliding)
+        pocket_power += (f - f_el) * ddot - (tx * vrx + ty * vry + tz * vrz)
+        if want:
+            cage_load[j, 0] = f
+            cage_load[j, 1] = math.sqrt(tx * tx + ty * ty + tz * tz)
+    land_power = 0.0
+    flx, fly, t_sh, ecc = 0.0, 0.0, 0.0, 0.0
+    if p[P_GUIDANCE] > 0.5:
+        r = 0 if p[P_GUIDANCE] < 1.5 else 1
+        ex, ey = cx - rings[r, 0], cy - rings[r, 1]
+        evx, evy = ux - rings[r, 3], uy - rings[r, 4]
+        w_r = rings[r, 17]
+        cl = p[P_LAND_C]
+        eps_c = p[P_LAND_EPS]
+        e = math.sqrt(ex * ex + ey * ey)
+        ecc = e / cl
+        flx, fly, pen = _land_force(p, ex, ey, evx, evy, wc + w_r)
+        if tau > 0.0:
+            # linearly implicit (Rosenbrock-Euler) over the step tau: m dv = tau F(r + tau dv, v + dv), F the
+            # cage's whole force (pockets and land), linearised in the land's Jacobians in the cage's position
+            # (K_r) and velocity (K_v) by differences, so the cage gets F_eff = (I - (tau / m) K_v -
+            # (tau^2 / m) K_r)^-1 F (the implicit damping's C / (1 + C tau / m) for a damper,
+            # k / (1 + k tau^2 / m) for a spring; F_eff = F = 0 in equilibrium), the land's share of it
+            # F_eff - F_pockets
+            hr = 1e-7 * cl
+            hv = 1e-7 * cl * (abs(wc) + abs(w_r) + 1.0)
+            a1, a2, _ = _land_force(p, ex + hr, ey, evx, evy, wc + w_r)
+            b1, b2, _ = _land_force(p, ex, ey + hr, evx, evy, wc + w_r)
+            c1, c2, _ = _land_force(p, ex, ey, evx + hv, evy, wc + w_r)
+            d1, d2, _ = _land_force(p, ex, ey, evx, evy + hv, wc + w_r)
+            g = tau / mc
+            m11 = 1.0 - g * (c1 - flx) / hv - g * tau * (a1 - flx) / hr
+            m12 = -g * (d1 - flx) / hv - g * tau * (b1 - flx) / hr
+            m21 = -g * (c2 - fly) / hv - g * tau * (a2 - fly) / hr
+            m22 = 1.0 - g * (d2 - fly) / hv - g * tau * (b2 - fly) / hr
+            det = m11 * m22 - m12 * m21
+            if det > 0.0:
+                tx, ty = fcx + flx, fcy + fly
+                flx, fly = (m22 * tx - m12 * ty) / det - fcx, (m11 * ty - m21 * tx) / det - fcy
+        ee = ecc if ecc < eps_c else eps_c
+        t_sh = (-2.0 * math.pi * p[P_LAND_ETA] * p[P_LAND_R] ** 3 * p[P_LAND_L] * (wc - w_r)
+                / (cl * math.sqrt(1.0 - ee * ee)))
+        # the ring takes -F and the moment that balances the pair's angular momentum: -T - (e x F)
+        exf = ex * fly - ey * flx
+        fr[r, 0] -= flx
+        fr[r, 1] -= fly
+        fr[r, 5] -= t_sh + exf
+        # dissipated: minus the pair's power, less the rate of the land contact's elastic energy
+        land_power = -(flx * evx + fly * evy) - t_sh * (wc - w_r) + exf * w_r
+        if pen > 0.0:
+            land_power -= pen * (ex * evx + ey * evy) / e
+    fc[0, 0] = fcx + flx
+    fc[0, 1] = fcy + fly
+    fc[0, 2] = fcz
+    fc[1, 0] = (tcz + t_sh) * mc / p[P_IC]
+    glob[G_POCKET_POWER] = pocket_power
+    glob[G_LAND_POWER] = land_power
+    if want:
+        glob[G_LAND_FX] = flx
+        glob[G_LAND_FY] = fly
+        glob[G_LAND_ECC] = ecc
+    return worst
+
+
+@kernel(inline="always")
 def _drive_power(rings, fr):
     """Power both rings put into the balls and cage balls [W]: minus the power
     of their forces and moments on the rings (``fr``, about the ring centres)
@@ -841,7 +1023,8 @@ def _drive_power(rings, fr):
 
 @kernel(inline="always")
 def _kinetic_energy(p, vb, wb, vc):
-    """Kinetic energy of the balls (translation, rotation) and cage balls (translation) [J]."""
+    """Kinetic energy of the balls (translation, rotation) and cage balls (translation), or of the rigid
+    cage (translation, rotation about the axis) [J]."""
     e = 0.0
     for j in range(vb.shape[0]):
         e += 0.5 * p[P_MB] * (vb[j, 0] * vb[j, 0] + vb[j, 1] * vb[j, 1] + vb[j, 2] * vb[j, 2])
@@ -849,6 +1032,9 @@ def _kinetic_energy(p, vb, wb, vc):
     if p[P_CAGE] > 0.5:
         for k in range(vb.shape[0]):
             e += 0.5 * p[P_MZ] * (vc[k, 0] * vc[k, 0] + vc[k, 1] * vc[k, 1] + vc[k, 2] * vc[k, 2])
+    elif p[P_RIGID] > 0.5:
+        e += 0.5 * p[P_MC] * (vc[0, 0] * vc[0, 0] + vc[0, 1] * vc[0, 1] + vc[0, 2] * vc[0, 2])
+        e += 0.5 * p[P_IC] * vc[1, 0] * vc[1, 0]
     return e
 
 
@@ -955,46 +1141,51 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb,
             damp_sum += damp
             ehl_sum += p_ehl
             hyst_sum += p_hyst
-    # ball / cage-ball contacts (two per cage ball) or, without cage, ball / ball
-    cage = p[P_CAGE] > 0.5
-    if cage:
-        px_, pv_, pf_ = xc, vc, fc
-        r_sum = p[P_RB] + p[P_RZ]
-        k_pair = p[P_K_BZ]
-        m_pair = p[P_MB] * p[P_MZ] / (p[P_MB] + p[P_MZ])
-        n_pair = 2
-        tau = p[P_CAGE_TAU]
-        r_ref = p[P_RZ]  # both contacts of a cage ball: their overlap over its radius
+    if p[P_RIGID] > 0.5:  # the rigid cage: pockets and land
+        ratio = _rigid_cage(p, xb, vb, wb, xc, vc, rings, fb, tb, fc, fr, glob, cage_load, want)
+        if ratio > p[P_MAX_OVERLAP] or ratio != ratio:
+            worst = ratio
     else:
-        px_, pv_, pf_ = xb, vb, fb
-        r_sum = 2.0 * p[P_RB]
-        k_pair = p[P_K_BB]
-        m_pair = 0.5 * p[P_MB]
-        n_pair = 1
-        tau = 0.0  # the ball / ball contacts of a scene without cage: explicit
-        r_ref = p[P_RB]
-    cage_overlap = 0.0  # the largest overlap of the cage (or ball / ball) contacts [m]
-    for k in range(z):
-        k2 = k + 1 if k + 1 < z else 0
-        for m in range(n_pair):
-            ia = k if m == 0 else k2          # ball
-            ib = k if cage else k2            # cage ball k, or the next ball
-            f, damp, overlap = _pair_contact(ia, ib, xb, vb, fb, px_, pv_, pf_, r_sum, k_pair, m_pair, tau)
-            damp_sum += damp
-            if overlap > cage_overlap:
-                cage_overlap = overlap
-            if want:
-                cage_load[k, m] = f
-        if want and not cage:
-            cage_load[k, 1] = 0.0
+        # ball / cage-ball contacts (two per cage ball) or, without cage, ball / ball
+        cage = p[P_CAGE] > 0.5
         if cage:
-            damp, overlap = _guide_contact(k, p, xc, vc, rings, fc, fr)
-            damp_sum += damp
-            if overlap > cage_overlap or overlap != overlap:  # NaN: a non-finite cage ball (stays the worst)
-                cage_overlap = overlap
-    # a runaway (or non-finite) cage contact stops the engines like a ball contact
-    if cage_overlap > p[P_MAX_OVERLAP] * r_ref or cage_overlap != cage_overlap:
-        worst = cage_overlap / r_ref
+            px_, pv_, pf_ = xc, vc, fc
+            r_sum = p[P_RB] + p[P_RZ]
+            k_pair = p[P_K_BZ]
+            m_pair = p[P_MB] * p[P_MZ] / (p[P_MB] + p[P_MZ])
+            n_pair = 2
+            tau = p[P_CAGE_TAU]
+            r_ref = p[P_RZ]  # both contacts of a cage ball: their overlap over its radius
+        else:
+            px_, pv_, pf_ = xb, vb, fb
+            r_sum = 2.0 * p[P_RB]
+            k_pair = p[P_K_BB]
+            m_pair = 0.5 * p[P_MB]
+            n_pair = 1
+            tau = 0.0  # the ball / ball contacts of a scene without cage: explicit
+            r_ref = p[P_RB]
+        cage_overlap = 0.0  # the largest overlap of the cage (or ball / ball) contacts [m]
+        for k in range(z):
+            k2 = k + 1 if k + 1 < z else 0
+            for m in range(n_pair):
+                ia = k if m == 0 else k2          # ball
+                ib = k if cage else k2            # cage ball k, or the next ball
+                f, damp, overlap = _pair_contact(ia, ib, xb, vb, fb, px_, pv_, pf_, r_sum, k_pair, m_pair, tau)
+                damp_sum += damp
+                if overlap > cage_overlap:
+                    cage_overlap = overlap
+                if want:
+                    cage_load[k, m] = f
+            if want and not cage:
+                cage_load[k, 1] = 0.0
+            if cage:
+                damp, overlap = _guide_contact(k, p, xc, vc, rings, fc, fr)
+                damp_sum += damp
+                if overlap > cage_overlap or overlap != overlap:  # NaN: a non-finite cage ball (stays the worst)
+                    cage_overlap = overlap
+        # a runaway (or non-finite) cage contact stops the engines like a ball contact
+        if cage_overlap > p[P_MAX_OVERLAP] * r_ref or cage_overlap != cage_overlap:
+            worst = cage_overlap / r_ref
     if loss_path is not None:  # pruned at compile time when None
         if p[P_DRAG] > 0.5:
             drag_sum = _ball_drag(p, xb, vb, rings, fb, fr)
@@ -1028,7 +1219,8 @@ def scene_loss_path(p):
 def accumulate_energy(glob, dt):
     """Add the powers of the last evaluation over ``dt`` to the run's
     drive_work and dissipated_work (``glob``, kept by the engine for the whole run): friction,
-    normal damping, rolling resistance and ball drag."""
+    normal damping, rolling resistance, ball drag and the rigid cage's pockets and land."""
     glob[G_DRIVE_WORK] += glob[G_DRIVE_POWER] * dt
     glob[G_DISS_WORK] += (glob[G_POWER] + glob[G_DAMP_POWER]) * dt
     glob[G_DISS_WORK] += (glob[G_EHL_POWER] + glob[G_HYST_POWER] + glob[G_DRAG_POWER]) * dt
+    glob[G_DISS_WORK] += (glob[G_POCKET_POWER] + glob[G_LAND_POWER]) * dt

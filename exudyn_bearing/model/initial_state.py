@@ -14,7 +14,7 @@ from .contact import HZ_N
 from .layout import H_E1, H_E2, HIST_N
 from .operating_geometry import start_geometry
 
-__all__ = ["initial_state", "initial_history", "ring_mass_estimate", "state_from_ball_kinematics"]
+__all__ = ["initial_state", "initial_history", "ring_mass_estimate", "rigid_cage_state", "state_from_ball_kinematics"]
 
 
 def ring_mass_estimate(bearing: BallBearing) -> float:
@@ -38,7 +38,8 @@ def initial_state(bearing: BallBearing, scenario, start: dict | None = None) -> 
     quasi-static solver, ``initial='quasistatic'``) used instead (copied)."""
     b, s = bearing, scenario
     if start is not None:
-        return {k: (np.array(v, float) if isinstance(v, np.ndarray) else v) for k, v in start.items()}
+        state = {k: (np.array(v, float) if isinstance(v, np.ndarray) else v) for k, v in start.items()}
+        return rigid_cage_state(state) if s.cage == "rigid" else state
     if s.initial == "quasistatic":
         raise InputError("initial: the quasi-static start needs the quasi-static solution; exudyn_bearing.simulate "
                          "and CreateBallBearing compute it, the engines take it as start=")
@@ -76,9 +77,28 @@ def initial_state(bearing: BallBearing, scenario, start: dict | None = None) -> 
             wb[j] = (-wr * math.sin(a0) * c, -wr * math.sin(a0) * sn, wr * math.cos(a0) + wc)
         vc[:, 0] = -wc * xc[:, 1]
         vc[:, 1] = wc * xc[:, 0]
-    return {"xb": xb, "vb": vb, "wb": wb, "xc": xc, "vc": vc, "ring": ring,
-            "hist": initial_history(z), "hz": np.zeros((z, 2, HZ_N)), "static": sol,
-            "max_overlap": float(np.max(sol.overlap_outer))}
+    state = {"xb": xb, "vb": vb, "wb": wb, "xc": xc, "vc": vc, "ring": ring,
+             "hist": initial_history(z), "hz": np.zeros((z, 2, HZ_N)), "static": sol,
+             "max_overlap": float(np.max(sol.overlap_outer))}
+    return rigid_cage_state(state) if s.cage == "rigid" else state
+
+
+def rigid_cage_state(state: dict) -> dict:
+    """``state`` with the rigid cage in the cage rows (layout of :mod:`.layout`): centred on the bearing
+    axis at the balls' mean axial position, its pocket j at ball j (the circular mean of psi_j - 2 pi j/Z),
+    turning at the balls' mean orbital speed."""
+    xb, vb = state["xb"], state["vb"]
+    z = xb.shape[0]
+    psi = np.arctan2(xb[:, 1], xb[:, 0])
+    lag = psi - 2.0 * math.pi * np.arange(z) / z
+    theta = math.atan2(float(np.mean(np.sin(lag))), float(np.mean(np.cos(lag))))
+    r2 = xb[:, 0] ** 2 + xb[:, 1] ** 2
+    orbit = (xb[:, 0] * vb[:, 1] - xb[:, 1] * vb[:, 0]) / r2
+    xc, vc = np.zeros((z, 3)), np.zeros((z, 3))
+    xc[0, 2] = float(np.mean(xb[:, 2]))
+    xc[1, 0] = theta
+    vc[1, 0] = float(np.mean(orbit))
+    return {**state, "xc": xc, "vc": vc}
 
 
 def state_from_ball_kinematics(bearing: BallBearing, psi, center_r, center_z, orbital_speed, w_r, w_z,

@@ -163,6 +163,24 @@ P_DRAG = _entry("ball_drag", "switch", "drag of the oil-air mixture (at rest wit
 P_RHO_MIX = _entry("mixture_density", "kg/m^3", "density of the oil-air mixture of the ball drag")
 P_ETA_MIX = _entry("mixture_viscosity", "Pa s", "dynamic viscosity of the oil-air mixture of the ball drag")
 
+# -- rigid cage (docs/theory/cage.md; reference engine) ----------------------
+P_RIGID = _entry("rigid_cage", "switch", "rigid cage body with pockets (1; then cage 0: no cage balls) or none (0)")
+P_MC = _entry("cage_mass", "kg", "mass m_c of the rigid cage")
+P_IC = _entry("cage_inertia", "kg m^2", "polar moment of inertia I_c of the rigid cage")
+P_POCKET_GAP = _entry("pocket_clearance", "m", "radial gap c_p between pocket and ball")
+P_POCKET_SHAPE = _entry("pocket_shape", "code", "pocket shape: 0 cylindrical (axis radial), 1 spherical")
+P_K_POCKET = _entry("k_pocket", "N/m^1.5", "Hertz constant of a ball / pocket contact")
+P_MU_POCKET = _entry("pocket_friction", "-", "Coulomb coefficient mu_c of the ball / pocket contact")
+P_POCKET_VREG = _entry("pocket_regularizing_speed", "m/s", "slip speed below which the pocket friction is linear")
+P_GUIDANCE = _entry("cage_guidance", "code", "guidance GUIDE_*: balls, inner-ring land, outer-ring land")
+P_LAND_R = _entry("land_radius", "m", "radius R of the cage's guiding surface")
+P_LAND_C = _entry("land_clearance", "m", "radial clearance c between guiding surface and land")
+P_LAND_L = _entry("land_width", "m", "width L of the land film")
+P_LAND_ETA = _entry("land_viscosity", "Pa s", "dynamic viscosity of the land film")
+P_LAND_EPS = _entry("land_crush_eccentricity", "-", "eccentricity ratio beyond which the land film is crushed "
+                    "(1 - composite roughness / c): the land contact's penalty takes over")
+P_K_LAND = _entry("k_land", "N/m", "stiffness of the crushed land contact (line contact over the land width)")
+
 #: All entries of the parameter vector, in index order.
 PARAMETERS: tuple[ParameterEntry, ...] = tuple(_ENTRIES)
 #: Length of the parameter vector.
@@ -176,6 +194,8 @@ FRIC_HISTORY, FRIC_REGULARIZED, FRIC_NONE = 0, 1, 2
 #: d(delta)/dt with constant mu of Exudyn's ObjectContactSphereTorus (for
 #: the peer check against exudyn.machines.CreateBallBearing).
 LAW_HERTZ, LAW_POWER = 0, 1
+#: Guidance codes of the rigid cage (``P_GUIDANCE``), in the order of ``data.cages.GUIDANCES``.
+GUIDE_BALL, GUIDE_INNER, GUIDE_OUTER = 0, 1, 2
 
 # -- ring pose rows ----------------------------------------------------------
 #: Columns of a ring pose row (world frame): centre (3) [m], velocity (3)
@@ -259,19 +279,29 @@ NDIAG = len(DIAG_FIELDS)
 #: ``ehl_rolling_power``, ``hysteresis_power``: the dissipation of the
 #: rolling-resistance moment pairs, split by their two sources;
 #: ``drag_power``: that of the ball drag (0 when switched off; both part of
-#: ``dissipated_work``).
+#: ``dissipated_work``). With the rigid cage: ``pocket_power`` the
+#: dissipation of the ball / pocket contacts (friction and normal damping),
+#: ``land_power`` that of the land film and contact (minus the power of their
+#: forces and moments on cage and ring), both part of ``dissipated_work``;
+#: ``land_fx``, ``land_fy`` the force of the land on the cage,
+#: ``land_eccentricity`` the cage centre's offset from the land over the land
+#: clearance (beyond ``land_crush_eccentricity`` the film is crushed). The rigid
+#: cage's state rides in the cage-ball arrays: ``xc[0]`` its centre,
+#: ``xc[1, 0]`` its angle, ``vc[0]`` and ``vc[1, 0]`` their rates, the other
+#: rows zero; its kinetic energy counts in ``kinetic_energy``.
 GLOBAL_FIELDS = ("omega", "ring_fx", "ring_fy", "ring_fz", "ring_torque", "friction_power",
                  "max_overlap_ratio", "outer_fx", "outer_fy", "outer_fz", "outer_torque", "damping_power",
                  "drive_power", "drive_work", "dissipated_work", "kinetic_energy", "ehl_rolling_power",
-                 "hysteresis_power", "drag_power")
+                 "hysteresis_power", "drag_power", "pocket_power", "land_power", "land_fx", "land_fy", "land_eccentricity")
 (G_OMEGA, G_RING_FX, G_RING_FY, G_RING_FZ, G_RING_TORQUE, G_POWER, G_WORST, G_OUTER_FX, G_OUTER_FY,
  G_OUTER_FZ, G_OUTER_TORQUE, G_DAMP_POWER, G_DRIVE_POWER, G_DRIVE_WORK, G_DISS_WORK,
- G_KINETIC, G_EHL_POWER, G_HYST_POWER, G_DRAG_POWER) = range(len(GLOBAL_FIELDS))
+ G_KINETIC, G_EHL_POWER, G_HYST_POWER, G_DRAG_POWER, G_POCKET_POWER, G_LAND_POWER, G_LAND_FX,
+ G_LAND_FY, G_LAND_ECC) = range(len(GLOBAL_FIELDS))
 GLOBAL_UNITS = {"omega": "rad/s", "ring_fx": "N", "ring_fy": "N", "ring_fz": "N", "ring_torque": "N m",
                 "friction_power": "W", "max_overlap_ratio": "-", "outer_fx": "N", "outer_fy": "N", "outer_fz": "N",
                 "outer_torque": "N m", "damping_power": "W", "drive_power": "W", "drive_work": "J",
                 "dissipated_work": "J", "kinetic_energy": "J", "ehl_rolling_power": "W", "hysteresis_power": "W",
-                "drag_power": "W"}
+                "drag_power": "W", "pocket_power": "W", "land_power": "W", "land_fx": "N", "land_fy": "N", "land_eccentricity": "-"}
 NGLOBAL = len(GLOBAL_FIELDS)
 
 # -- condition-monitoring signals --------------------------------------------

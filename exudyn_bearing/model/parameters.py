@@ -8,6 +8,7 @@ import math
 import numpy as np
 
 from ..data import BallBearing, InputError, Lubricant, get_traction_model
+from ..data.cages import GUIDANCES, POCKET_SHAPES, estimated_cage
 from ..data.traction import regularized
 from ..physics import hertz
 from ..physics.contact_slip import deformed_contact_radius
@@ -31,7 +32,7 @@ def scene_parameters(bearing: BallBearing, scenario: Scenario, lubricant: Lubric
     em = material_reduced_modulus(b.material)
     rho_i, z_i = b.inner_groove_center
     rho_o, z_o = b.outer_groove_center
-    cage = bool(s.cage and b.has_cage)
+    cage = s.cage == "torus" and b.has_cage
     rz = b.cage_ball_radius if cage else b.ball_radius
     p[L.P_Z] = b.n_balls
     p[L.P_RB] = b.ball_radius
@@ -45,7 +46,7 @@ def scene_parameters(bearing: BallBearing, scenario: Scenario, lubricant: Lubric
     p[L.P_EPRIME] = em
     p[L.P_MB] = b.ball_mass
     p[L.P_IB] = 0.4 * b.ball_mass * b.ball_radius ** 2
-    p[L.P_MZ] = b.cage_ball_mass if cage else 1.0
+    p[L.P_MZ] = b.cage_ball_mass if cage else 1.0  # the rigid cage's m_c: _set_rigid_cage
     p[L.P_MR] = s.ring_mass if s.ring_mass is not None else ring_mass_estimate(b)
     p[L.P_ALPHA_E] = b.material.hysteretic_damping
     p[L.P_ETA] = lub.viscosity
@@ -84,7 +85,40 @@ def scene_parameters(bearing: BallBearing, scenario: Scenario, lubricant: Lubric
     _set_losses(p, s, lub)
     _set_operating_geometry(p, b, s)
     fill_defects(p, b, s.defects)
+    if s.cage == "rigid":
+        _set_rigid_cage(p, b, s, lub)
     return p
+
+
+def _set_rigid_cage(p, b, s, lub):
+    """The rigid cage's entries (docs/theory/cage.md): mass and inertia, pocket and land; its geometry
+    ``s.rigid_cage`` or the bearing's estimated cage. The cage balls' mass entry P_MZ becomes m_c (the
+    integrators' common 1/m_c of the cage rows)."""
+    rc = s.rigid_cage if s.rigid_cage is not None else estimated_cage(b)
+    rc.check_fits(b)
+    mc, ic = rc.mass(b), rc.polar_inertia(b)
+    p[L.P_RIGID] = 1.0
+    p[L.P_MC] = mc
+    p[L.P_MZ] = mc
+    p[L.P_IC] = ic
+    p[L.P_POCKET_GAP] = rc.pocket_clearance
+    p[L.P_POCKET_SHAPE] = POCKET_SHAPES.index(rc.pocket_shape)
+    e_pocket = hertz.reduced_modulus(b.material.youngs_modulus, b.material.poisson_ratio,
+                                     rc.material.youngs_modulus, rc.material.poisson_ratio)
+    p[L.P_K_POCKET] = float(hertz.ball_in_pocket_stiffness(b.ball_radius, rc.pocket_clearance,
+                                                            rc.pocket_shape == "cylindrical", float(e_pocket), s.hertz))
+    p[L.P_MU_POCKET] = rc.pocket_friction
+    p[L.P_POCKET_VREG] = s.regularizing_speed
+    p[L.P_GUIDANCE] = GUIDANCES.index(rc.guidance)
+    if rc.guidance != "ball":
+        p[L.P_LAND_R] = rc.guide_radius
+        p[L.P_LAND_C] = rc.land_clearance
+        p[L.P_LAND_L] = rc.land_width
+        p[L.P_LAND_ETA] = lub.viscosity
+        p[L.P_LAND_EPS] = max(0.5, 1.0 - lub.composite_roughness / rc.land_clearance)
+        # the crushed land: a line contact over the land width, k ~ (pi/4) E' L (Johnson, Contact Mechanics,
+        # ch. 5: the approach of a line contact grows about linearly with its load per length)
+        p[L.P_K_LAND] = 0.25 * math.pi * float(e_pocket) * rc.land_width
 
 
 def dynamic_traction_model(scenario: Scenario):

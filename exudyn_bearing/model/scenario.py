@@ -13,6 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..data import InputError, get_traction_model
+from ..data.cages import RigidCage
 from ..data.errors import check_bool, check_keys, check_number, check_temperatures, check_unused
 from ..data.defects import Defect, as_defect
 from ..data.traction import DEFAULT_REGULARIZING_SRR
@@ -43,6 +44,20 @@ CONTROLS = ("auto", "outer", "inner", "min-energy", "equilibrium")
 INTEGRATORS = ("verlet", "rk4")
 
 
+#: Cage models of a scene (:class:`Scenario` ``cage``): True and False are aliases of "torus" and "none".
+CAGE_MODELS = ("torus", "rigid", "none")
+
+
+def cage_model(cage) -> str:
+    """The cage model's name of a ``cage`` option: one of :data:`CAGE_MODELS`, or True ("torus") / False
+    ("none"); InputError otherwise."""
+    if cage is True or cage is False or isinstance(cage, np.bool_):
+        return "torus" if cage else "none"
+    if isinstance(cage, str) and cage in CAGE_MODELS:
+        return cage
+    raise InputError(f"cage: must be one of {', '.join(CAGE_MODELS)} (True: torus, False: none), got {cage!r}")
+
+
 @dataclass(frozen=True)
 class Scenario:
     """What happens to the bearing (docs/theory/dynamics.md).
@@ -62,9 +77,16 @@ class Scenario:
         slows down.
     Pd : float or None
         Diametral clearance override [m] (None: the bearing's own).
-    cage : bool
-        Torus cage (cage balls between the balls) on or off; off keeps the
-        balls apart by ball / ball contact only.
+    cage : {"torus", "rigid", "none"} or bool
+        The cage: the DEM papers' torus cage (cage balls between the balls,
+        the default; True is an alias), a rigid cage body with pockets and a
+        guiding land (``rigid_cage``; reference engine, docs/theory/cage.md)
+        or none (False is an alias): the balls kept apart by ball / ball
+        contact only. Read back as one of the three names.
+    rigid_cage : RigidCage or None
+        Geometry and material of the rigid cage (``exudyn_bearing.data.cages``);
+        None: :func:`~exudyn_bearing.data.cages.estimated_cage` of the bearing
+        (outer-land guided brass, every geometric value estimated).
     lubrication : bool
         Lambda-switched damping and friction (True) or constant mu and
         hysteretic damping (False).
@@ -201,7 +223,8 @@ class Scenario:
     t_steady: float = math.inf
     t_ramp_down: float = 0.0
     Pd: float | None = None
-    cage: bool = True
+    cage: bool | str = True
+    rigid_cage: object = None
     lubrication: bool = True
     mu_dry: float = 0.1
     friction: str = "history"
@@ -249,7 +272,14 @@ class Scenario:
         for name in ("Pd", "ring_mass"):
             if getattr(self, name) is not None:
                 object.__setattr__(self, name, check_number(name, getattr(self, name)))
-        for name in ("cage", "lubrication", "rolling_resistance", "ball_drag"):
+        object.__setattr__(self, "cage", cage_model(self.cage))
+        if self.rigid_cage is not None:
+            if not isinstance(self.rigid_cage, RigidCage):
+                raise InputError(f"rigid_cage: expected a RigidCage (exudyn_bearing.data.cages), got "
+                                 f"{type(self.rigid_cage).__name__}")
+            if self.cage != "rigid":
+                raise InputError(f"rigid_cage: given with cage={self.cage!r}; it is the geometry of cage='rigid'")
+        for name in ("lubrication", "rolling_resistance", "ball_drag"):
             object.__setattr__(self, name, check_bool(name, getattr(self, name)))
         for name in ("Fr", "Fa", "t_ramp_up", "t_ramp_down", "mu_dry"):
             if getattr(self, name) < 0:
@@ -279,7 +309,7 @@ class Scenario:
         if self.cage_damping == "implicit" and self.integrator != "verlet":
             raise InputError("cage_damping: 'implicit' is the backward-Euler damping of one velocity-Verlet step "
                              f"and needs integrator='verlet', got {self.integrator!r}")
-        if self.cage_damping == "implicit" and not self.cage:
+        if self.cage_damping == "implicit" and self.cage == "none":
             raise InputError("cage_damping: 'implicit' damps the ball / cage-ball and guide contacts, and the scene "
                              "has no cage (cage=False; its ball / ball contacts keep the explicit damping)")
         if self.integrator == "rk4" and self.friction == "history":

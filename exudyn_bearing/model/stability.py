@@ -23,7 +23,8 @@ from .scenario import Scenario, ellipse_rolling_floor
 
 __all__ = ["ellipse_traction_damping", "SimulationError", "StepSizeWarning", "StableStep", "STABILITY_SAFETY", "START_UP_CAGE_LOAD",
            "STEADY_CAGE_LOAD", "CAGE_BLOW_UP_RATIO", "CAGE_BLOW_UP_RATIO_IMPLICIT", "explicit_step_factor", "expected_cage_load", "stable_step",
-           "step_warning", "cage_load_check", "ring_contact_stiffness", "ring_stable_step", "runaway_error"]
+           "step_warning", "cage_load_check", "land_step_check", "land_film_step", "rigid_cage_step",
+           "LAND_DESIGN_ECCENTRICITY", "ring_contact_stiffness", "ring_stable_step", "runaway_error"]
 
 
 class SimulationError(RuntimeError):
@@ -146,6 +147,8 @@ class StableStep:
     cage_basis: str = ""
     #: the scene's ``cage_damping`` the cage limit was taken with
     cage_damping: str = "explicit"
+    #: the scene's cage model (Scenario.cage): "torus", "rigid" or "none"
+    cage_kind: str = "torus"
 
     @property
     def cage_blow_up(self) -> float:
@@ -199,7 +202,7 @@ def expected_cage_load(bearing: BallBearing, scenario: Scenario, solution=None) 
 
 
 def stable_step(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant | None = None,
-                cage_load: float | None = None) -> StableStep:
+                cage_load: float | None = None, land_eccentricity: float | None = None) -> StableStep:
     """Largest stable time step of the explicit integrator for a scene [s].
 
     ``STABILITY_SAFETY`` times the smallest of the limits below, linearised at
@@ -222,7 +225,8 @@ def stable_step(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant |
     :func:`expected_cage_load`: a tenth of the ball load in start-up,
     slow-down, from rest or at unequal contact angles, 0.1 % in steady runs
     from the analytic state; the engines check the loads a run reaches,
-    :func:`cage_load_check`).
+    :func:`cage_load_check`). With the rigid cage the cage limit is
+    :func:`rigid_cage_step`'s (pockets and land).
 
     What happens above each limit (validation/step_limits.py): above the
     normal limit the run blows up; above the tangential (explicit spring)
@@ -260,7 +264,7 @@ def stable_step(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant |
         dt_f = factor * sphere_tangential_mass(mb) / ellipse_traction_damping(b, scenario, lub, q)
     dt_c = math.inf
     load_c, basis = math.nan, ""
-    if scenario.cage and b.has_cage:
+    if scenario.cage == "torus" and b.has_cage:
         mz = b.cage_ball_mass
         em = material_reduced_modulus(b.material)
         kbz = float(hertz.sphere_sphere_stiffness(b.ball_radius, b.cage_ball_radius, em))
@@ -272,10 +276,89 @@ def stable_step(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant |
         kc = float(hertz.tangent_stiffness(kbz, load_c))
         dt_c = (explicit_step_factor(1.0, scenario.integrator, scenario.cage_damping)
                 / math.sqrt(2.0 * kc * (mb + mz) / (mb * mz)))
+    if scenario.cage == "rigid":
+        dt_c, load_c, basis = rigid_cage_step(b, scenario, lub, q, sol, cage_load, land_eccentricity)
     parts = {"normal": dt_n, "tangential": dt_t, "friction": dt_f, "cage": dt_c}
     name = min(parts, key=parts.get)
     return StableStep(STABILITY_SAFETY * parts[name], dt_n, dt_t, dt_f, dt_c, name, load_c, basis,
-                      scenario.cage_damping)
+                      scenario.cage_damping, scenario.cage)
+
+
+#: Eccentricity ratio of the land film at which the a-priori stable step of a land-guided rigid cage is taken
+#: (the engines check the eccentricity a run reaches: :func:`land_step_check`).
+LAND_DESIGN_ECCENTRICITY = 0.9
+
+
+def land_film_step(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant, eccentricity: float) -> float:
+    """Explicit stable step [s] of a land-guided rigid cage on its film at the eccentricity ratio eps: the
+    cage mass m_c on the film's radial stiffness k = (mu R L^3 omega_c / c^3) 2 eps (1 + eps^2) / (1 - eps^2)^3
+    (the derivative of Ocvirk's radial force at the kinematic cage speed) and its squeeze damping
+    C = (pi/2) (mu R L^3 / c^3) (1 + 2 eps^2) / (1 - eps^2)^(5/2) (docs/theory/cage.md#land-film), by
+    :func:`explicit_step_factor` at zeta = C / (2 sqrt(k m_c)). inf for a ball-guided cage, and with
+    ``cage_damping='implicit'``, which takes the land's force linearly implicit (stiffness and damping:
+    no step limit of its linearisation)."""
+    from ..data.cages import estimated_cage
+
+    rc = scenario.rigid_cage if scenario.rigid_cage is not None else estimated_cage(bearing)
+    if rc.guidance == "ball" or scenario.cage_damping == "implicit":
+        return math.inf
+    b = bearing
+    e = min(max(float(eccentricity), 1e-3), 1.0 - 1e-9)
+    wc = abs(float(kinematics.cage_speed(scenario.omega, 0.0, b.ball_radius, b.pitch_radius, b.free_contact_angle)))
+    sc = lubricant.viscosity * rc.guide_radius * rc.land_width ** 3 / rc.land_clearance ** 3
+    k = sc * wc * 2.0 * e * (1.0 + e * e) / (1.0 - e * e) ** 3
+    c = 0.5 * math.pi * sc * (1.0 + 2.0 * e * e) / (1.0 - e * e) ** 2.5
+    m = rc.mass(b)
+    if k <= 0.0:  # a cage at rest: the squeeze alone, stable below 2 m / C
+        return 2.0 * m / c
+    zeta = c / (2.0 * math.sqrt(k * m))
+    if scenario.integrator == "rk4" and 0.0 < zeta < 1.0:
+        zeta = 1.0  # RK4's bound is given at zeta >= 1: the critically damped one, a lower bound
+    return explicit_step_factor(zeta, scenario.integrator, scenario.cage_damping) / math.sqrt(k / m)
+
+
+def rigid_cage_step(b: BallBearing, scenario: Scenario, lub: Lubricant, q: float, sol, cage_load=None,
+                    land_eccentricity=None) -> tuple[float, float, str]:
+    """(limit [s], pocket load [N], basis) of the rigid cage: the smaller of the critically damped ball /
+    pocket contact (the reduced mass of ball and cage on the tangent Hertz stiffness at the pocket load:
+    ``cage_load`` or :func:`expected_cage_load` of the ball load ``q``) and the land film
+    (:func:`land_film_step` at ``land_eccentricity``, default :data:`LAND_DESIGN_ECCENTRICITY`)."""
+    from ..data.cages import estimated_cage
+
+    rc = scenario.rigid_cage if scenario.rigid_cage is not None else estimated_cage(b)
+    e_pocket = hertz.reduced_modulus(b.material.youngs_modulus, b.material.poisson_ratio, rc.material.youngs_modulus,
+                                     rc.material.poisson_ratio)
+    kp = float(hertz.ball_in_pocket_stiffness(b.ball_radius, rc.pocket_clearance, rc.pocket_shape == "cylindrical",
+                                              float(e_pocket), scenario.hertz))
+    if cage_load is None:
+        fraction, basis = expected_cage_load(b, scenario.replace(Pd=None), sol)
+        load = fraction * q
+    else:
+        load, basis = max(float(cage_load), 1e-3), "given"
+    mb, mc = b.ball_mass, rc.mass(b)
+    kt = float(hertz.tangent_stiffness(kp, load))
+    pocket = explicit_step_factor(1.0, scenario.integrator, scenario.cage_damping) / math.sqrt(kt * (mb + mc) / (mb * mc))
+    ecc = LAND_DESIGN_ECCENTRICITY if land_eccentricity is None else float(land_eccentricity)
+    land = land_film_step(b, scenario, lub, ecc)
+    if land < pocket:
+        basis = f"land film at eccentricity {ecc:.3g}"
+    return min(pocket, land), load, basis
+
+
+def land_step_check(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant | None, eccentricity: float,
+                    dt: float) -> str | None:
+    """A warning text when the land film at the largest eccentricity a run reached has a stable step
+    (:func:`land_film_step`, with ``STABILITY_SAFETY``) below the run's step ``dt``, else None."""
+    if scenario.cage != "rigid" or not eccentricity > 0.0:
+        return None
+    b = bearing if scenario.Pd is None else bearing.with_clearance(scenario.Pd)
+    lub = default_lubricant(b) if lubricant is None else lubricant
+    limit = STABILITY_SAFETY * land_film_step(b, scenario, lub, min(eccentricity, 1.0 - 1e-9))
+    if dt <= limit:
+        return None
+    return (f"dt: the rigid cage reached a land eccentricity of {eccentricity:.3g}, where the land film's stable "
+            f"step is {limit:.3g} s < dt = {dt:.3g} s; the cage's motion and land force of this run are unreliable: "
+            "reduce dt or use cage_damping='implicit'")
 
 
 def ellipse_traction_damping(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant, load: float) -> float:
@@ -325,7 +408,9 @@ def step_warning(label: str, dt: float, stable: StableStep) -> str | None:
     limits = {k: STABILITY_SAFETY * getattr(stable, k) for k in ("normal", "tangential", "friction", "cage")}
     over = [k for k, v in limits.items() if dt > v]
     names = {"normal": "normal contacts of the balls", "tangential": "explicit tangential (Cundall-Strack) springs",
-             "friction": "regularised friction", "cage": "ball / cage-ball contacts"}
+             "friction": "regularised friction",
+             "cage": ("rigid cage's pocket and land contacts" if stable.cage_kind == "rigid" else
+                      "ball / cage-ball contacts")}
     extra = {k: "" for k in names}
     if math.isfinite(stable.cage_load):
         extra["cage"] = f" at {stable.cage_load:.3g} N, {stable.cage_basis}"
@@ -386,12 +471,15 @@ def cage_load_check(bearing: BallBearing, scenario: Scenario, lubricant: Lubrica
     """A warning text when the largest ball / cage-ball load a run reached
     puts those contacts' stable step (:func:`stable_step` at that load, with
     ``STABILITY_SAFETY``) below its step ``dt``, else None."""
-    if not max_cage_load > 0.0 or not (scenario.cage and bearing.has_cage):
+    if not max_cage_load > 0.0 or not ((scenario.cage == "torus" and bearing.has_cage) or scenario.cage == "rigid"):
         return None
-    limit = STABILITY_SAFETY * stable_step(bearing, scenario, lubricant, cage_load=max_cage_load).cage
+    # the rigid cage's land has a check of its own (land_step_check): its film taken at a small eccentricity
+    limit = STABILITY_SAFETY * stable_step(bearing, scenario, lubricant, cage_load=max_cage_load,
+                                           land_eccentricity=1e-3).cage
     if dt <= limit:
         return None
-    return (f"dt: the ball / cage-ball contacts reached {max_cage_load:.3g} N, where their stable step is "
+    kind = "ball / pocket" if scenario.cage == "rigid" else "ball / cage-ball"
+    return (f"dt: the {kind} contacts reached {max_cage_load:.3g} N, where their stable step is "
             f"{limit:.3g} s < dt = {dt:.3g} s; the cage loads of this run are unreliable (they chatter at about "
             "twice their value), ball loads and speeds usually are not affected: reduce dt")
 

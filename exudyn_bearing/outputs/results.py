@@ -34,6 +34,7 @@ from ..model.parameters import scene_parameters
 from ..model.record import RunRecord
 from ..model.scenario import Scenario
 from ..physics.damping import REGIME_NAMES
+from .cage_summary import CAGE_LOSSES_NOT_MODELLED, CAGE_SUMMARY_UNITS, rigid_cage_summary
 from .contact_summary import CONTACT_SUMMARY_UNITS, contact_summary
 from .jsonio import to_jsonable
 from .window_checks import (LOSS_FLOOR_MU, SPEED_FLOOR, SteadyStateWarning, energy_balance, energy_check,
@@ -65,6 +66,9 @@ LOSSES_MODELLED = {
 }
 _POCKET = ("cage pocket friction (the ball / cage-ball contacts are frictionless; their normal damping is part "
            "of contact_damping)")
+#: What ``losses_modelled`` adds with the rigid cage.
+RIGID_CAGE_LOSSES = ("rigid cage: Coulomb friction and normal damping of the ball / pocket contacts, the land's "
+                     "film (short-bearing pressure and shear) and contact")
 #: Losses each traction level leaves out.
 LOSSES_NOT_MODELLED = {
     "point": ("rolling losses: curvature (Heathcote) slip", "spin (pivoting) friction", "EHL rolling resistance",
@@ -232,7 +236,8 @@ class Results:
         ``damping_power``, rolling-resistance and drag powers when recorded."""
         out = self.global_series("friction_power")
         out = out + self.global_series("damping_power") if self.has_global("damping_power") else out
-        for name in ("ehl_rolling_power", "hysteresis_power", "drag_power"):  # 0 unless switched on
+        for name in ("ehl_rolling_power", "hysteresis_power", "drag_power", "pocket_power",
+                     "land_power"):  # 0 unless switched on (the last two: the rigid cage)
             if self.has_global(name):
                 out = out + self.global_series(name)
         return out
@@ -272,7 +277,9 @@ class Results:
 
     def cage_speed_series(self) -> np.ndarray:
         """Cage speed (n,) [rad/s]: mean orbital speed of the cage balls (of the balls without cage)."""
-        cage = self.scenario.cage and self.bearing.has_cage
+        if self.scenario.cage == "rigid":
+            return np.asarray(self.data["vc"][:, 1, 0], float)
+        cage = self.scenario.cage == "torus" and self.bearing.has_cage
         return self.orbital_speed("cage" if cage else "balls").mean(axis=1)
 
     def ball_spin_series(self) -> np.ndarray:
@@ -340,8 +347,8 @@ class Results:
             g = self.global_series("dissipated_work")
             diss = float(g[i1] - g[i0]) / dur
             src["dissipation"] = ("dissipated_work (engine field: friction_power + damping_power, and the rolling-resistance and "
-                                  "drag powers when switched on, integrated), end "
-                                  "minus start over the window length")
+                                  "drag powers when switched on, the rigid cage's pocket and land powers, integrated), "
+                                  "end minus start over the window length")
         else:
             diss = float(np.mean(self.dissipation_series()[w]))
             src["dissipation"] = ("time mean of the sampled friction_power + damping_power"
@@ -376,6 +383,9 @@ class Results:
         for name, (switch, field, _off, _on) in DYNAMIC_SWITCHED_LOSSES.items():
             if getattr(self.scenario, switch):
                 comp[name] = float(np.mean(self.global_series(field)[w])) if self.has_global(field) else None
+        if self.scenario.cage == "rigid":
+            comp["cage_pocket"] = float(np.mean(self.global_series("pocket_power")[w]))
+            comp["cage_land"] = float(np.mean(self.global_series("land_power")[w]))
         t = self.t[w]
         dur = float(t[-1] - t[0])
         recorded = None
@@ -385,8 +395,16 @@ class Results:
         floor = energy_floor(self._loss_floor(), np.mean(self.global_series("omega")[w]))
         check = energy_check(energy["drive_power"], comp, energy["kinetic_energy_change"], dur, recorded, floor)
         return {"power_loss": comp, "power_loss_total": check["power_loss_total"],
-                "not_modelled": self.losses_lists()[1] + list(DYNAMIC_NOT_MODELLED),
+                "not_modelled": self.losses_lists()[1] + list(self.cage_not_modelled()),
                 "energy_check": check}
+
+    def cage_not_modelled(self) -> tuple:
+        """Loss sources of the cage and the bearing that the run's cage model leaves out: those of
+        :data:`DYNAMIC_NOT_MODELLED` for the torus cage (or none), the rigid cage's own
+        (:data:`~.cage_summary.CAGE_LOSSES_NOT_MODELLED`) and the seals for the rigid cage."""
+        if self.scenario.cage == "rigid":
+            return CAGE_LOSSES_NOT_MODELLED + DYNAMIC_NOT_MODELLED[1:]
+        return DYNAMIC_NOT_MODELLED
 
     def losses_lists(self) -> tuple[list, list]:
         """(losses_modelled, losses_not_modelled) of the scenario: its traction level's
@@ -403,6 +421,9 @@ class Results:
                         not_modelled[k] = CHURNING_NOT_MODELLED
                     else:
                         del not_modelled[k]
+        if self.scenario.cage == "rigid":  # the pockets' friction and the land are the rigid cage's
+            not_modelled.remove(_POCKET)
+            modelled.append(RIGID_CAGE_LOSSES)
         return modelled, not_modelled
 
     def _loss_floor(self) -> float:
@@ -611,7 +632,7 @@ class Results:
             "friction": self.scenario.friction,
             "hertz": self.scenario.hertz,
             "film": self.scenario.film,
-            "cage": bool(self.scenario.cage and b.has_cage),
+            "cage": self.scenario.cage if (self.scenario.cage != "torus" or b.has_cage) else "none",
             "lubrication": self.scenario.lubrication,
             "lubricant": self.lubricant.name,
             "traction_model": self.traction_model_name(),
@@ -625,9 +646,12 @@ class Results:
                 out["note"] += ("; the rolling resistance (hysteresis and EHL rolling) acts as a moment pair "
                                 "(Scenario.rolling_resistance)")
         out.update(contact_summary(self.data, w, omega, b))
+        if self.scenario.cage == "rigid":
+            out.update(rigid_cage_summary(self.data, w, self.model_parameters(), out["cage_speed"],
+                                          out.get("kinematic_cage_speed")))
         if self.has_protocol():
             out["phases"] = self._phase_summaries()
-        out["units"] = dict(SUMMARY_UNITS)
+        out["units"] = dict(SUMMARY_UNITS, **(CAGE_SUMMARY_UNITS if self.scenario.cage == "rigid" else {}))
         out["descriptions"] = dict(SUMMARY_DESCRIPTIONS)
         if not steady["steady"]:
             reasons = steady["reason"].split("; ")

@@ -467,6 +467,23 @@ def sphere_sphere_stiffness(r1, r2, e_prime):
 _sphere_sphere_stiffness = kernel(sphere_sphere_stiffness)
 
 
+def ball_in_pocket_stiffness(ball_radius, pocket_clearance, cylindrical, e_prime, method="exact"):
+    """Hertz constant K of a ball in a cage pocket, Q = K delta^(3/2) [N/m^1.5]: a sphere R_b inside the
+    concave surface of radius R_b + c_p (docs/theory/cage.md#pockets). Across a cylindrical pocket's axis
+    the curvature sum is 1/R_b - 1/(R_b + c_p), so R = R_b (R_b + c_p) / c_p; along the axis the pocket is
+    straight, R = R_b; a spherical pocket conforms in both directions (Johnson, Contact Mechanics, ch. 4:
+    the relative curvatures of the two surfaces). :func:`hertz_stiffness` of these radii.
+
+    >>> round(float(ball_in_pocket_stiffness(6.3e-3, 0.25e-3, True, 230e9)) / 1e9, 2)
+    33.54
+    >>> k_flat = ball_in_pocket_stiffness(6.3e-3, 1e3, False, 230e9)   # a huge spherical pocket: a plane
+    >>> bool(abs(k_flat / sphere_sphere_stiffness(6.3e-3, 1e12, 230e9) - 1.0) < 1e-5)
+    True
+    """
+    conform = ball_radius * (ball_radius + pocket_clearance) / pocket_clearance
+    return hertz_stiffness(conform, ball_radius if cylindrical else conform, e_prime, method)
+
+
 def tangent_stiffness(stiffness, load):
     """Tangent (linearised) stiffness dQ/d delta of a Hertz point contact at
     the load Q [N/m].

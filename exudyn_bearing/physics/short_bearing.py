@@ -66,8 +66,11 @@ References
 """
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
+from .._jit import kernel
 from ..data import InputError
 
 __all__ = ["film_eccentricity", "short_bearing_attitude_angle", "short_bearing_load_number",
@@ -256,31 +259,64 @@ def film_coefficients(eccentricity, load, clearance, omega, printed_prefactor=Fa
             short_bearing_damping(eccentricity, printed_prefactor) * w / (c * om))
 
 
+@kernel(inline="always")
 def _half_film_integrals(eps, theta0):
     """The integrals I_sc, I_cc, I_ss of sin cos, cos^2, sin^2 over (1 - eps cos theta)^3 for theta from theta0
     to theta0 + pi, in closed form by Sommerfeld's substitution cos theta = (eps + cos g)/(1 + eps cos g)
     (tan(g/2) = sqrt((1+eps)/(1-eps)) tan(theta/2); Hamrock et al. [6]_ ch. 8): the integrands turn into
     sin g (cos g + eps)/(1-eps^2)^2, (cos g + eps)^2/(1-eps^2)^(5/2) and sin^2 g/(1-eps^2)^(3/2). The map is
     taken continuous in theta: g = theta + 2 atan((k-1) sin theta / (1 + cos theta + k (1 - cos theta))),
-    k = sqrt((1+eps)/(1-eps))."""
+    k = sqrt((1+eps)/(1-eps)). Scalars (compiled)."""
     s = 1.0 - eps * eps
-    k = np.sqrt((1.0 + eps) / (1.0 - eps))
+    k = math.sqrt((1.0 + eps) / (1.0 - eps))
+    t1 = theta0 + math.pi
+    c0, c1 = math.cos(theta0), math.cos(t1)
+    g0 = theta0 + 2.0 * math.atan((k - 1.0) * math.sin(theta0) / (1.0 + c0 + k * (1.0 - c0)))
+    g1 = t1 + 2.0 * math.atan((k - 1.0) * math.sin(t1) / (1.0 + c1 + k * (1.0 - c1)))
+    s0, s1 = math.sin(g0), math.sin(g1)
+    i_sc = (0.5 * (s1 * s1 - s0 * s0) - eps * (math.cos(g1) - math.cos(g0))) / (s * s)
+    i_cc = ((0.5 + eps * eps) * (g1 - g0) + 0.25 * (math.sin(2.0 * g1) - math.sin(2.0 * g0))
+            + 2.0 * eps * (s1 - s0)) / (s * s * math.sqrt(s))
+    i_ss = (0.5 * (g1 - g0) - 0.25 * (math.sin(2.0 * g1) - math.sin(2.0 * g0))) / (s * math.sqrt(s))
+    return i_sc, i_cc, i_ss
 
-    def g(t):
-        return t + 2.0 * np.arctan((k - 1.0) * np.sin(t) / (1.0 + np.cos(t) + k * (1.0 - np.cos(t))))
 
-    g0, g1 = g(theta0), g(theta0 + np.pi)
+@kernel
+def _short_bearing_polar(eps, eps_rate, whirl, omega_sum, scale):
+    """(F_r, F_t) of :func:`short_bearing_force` for scalars, ``scale`` = mu R L^3 / c^2 (compiled; no checks)."""
+    a = eps * (0.5 * omega_sum - whirl)
+    b = -eps_rate
+    # B = a sin + b cos = M cos(theta - theta_m), theta_m = atan2(a, b): negative on (theta_m + pi/2, + 3 pi/2)
+    i_sc, i_cc, i_ss = _half_film_integrals(eps, math.atan2(a, b) + 0.5 * math.pi)
+    return scale * (a * i_sc + b * i_cc), scale * (a * i_ss + b * i_sc)
 
-    def sc(x):
-        return 0.5 * np.sin(x) ** 2 - eps * np.cos(x)
 
-    def cc(x):
-        return (0.5 + eps * eps) * x + 0.25 * np.sin(2.0 * x) + 2.0 * eps * np.sin(x)
+@kernel
+def _short_bearing_xy(x, y, vx, vy, omega_sum, viscosity, radius, length, clearance):
+    """(F_x, F_y) of :func:`short_bearing_force_xy` for scalars (compiled; no checks; eps < 1 assumed)."""
+    r = math.sqrt(x * x + y * y)
+    scale = viscosity * radius * length ** 3 / (clearance * clearance)
+    if r < 1e-12 * clearance:
+        f = -0.5 * math.pi * scale / clearance
+        return f * vx, f * vy
+    ux, uy = x / r, y / r
+    fr, ft = _short_bearing_polar(r / clearance, (ux * vx + uy * vy) / clearance, (x * vy - y * vx) / (r * r),
+                                  omega_sum, scale)
+    return fr * ux - ft * uy, fr * uy + ft * ux
 
-    def ss(x):
-        return 0.5 * x - 0.25 * np.sin(2.0 * x)
 
-    return ((sc(g1) - sc(g0)) / s ** 2, (cc(g1) - cc(g0)) / s ** 2.5, (ss(g1) - ss(g0)) / s ** 1.5)
+def _check_film(eccentricity, viscosity, radius, length, clearance, rates):
+    """InputError for an eccentricity outside [0, 1), a non-positive property or a non-finite rate."""
+    e = np.asarray(eccentricity, dtype=float)
+    if not np.all(np.isfinite(e)) or np.any(e < 0.0) or np.any(e >= 1.0):
+        raise InputError(f"eccentricity: must lie in [0, 1) (1: the film is crushed), got {eccentricity!r}")
+    for name, v in (("viscosity", viscosity), ("radius", radius), ("length", length), ("clearance", clearance)):
+        a = np.asarray(v, dtype=float)
+        if not np.all(np.isfinite(a)) or np.any(a <= 0.0):
+            raise InputError(f"{name}: must be finite and > 0, got {v!r}")
+    for name, v in rates:
+        if not np.all(np.isfinite(np.asarray(v, dtype=float))):
+            raise InputError(f"{name}: must be finite, got {v!r}")
 
 
 def short_bearing_force(eccentricity, eccentricity_rate, whirl_rate, omega_sum, viscosity, radius, length,
@@ -338,25 +374,12 @@ def short_bearing_force(eccentricity, eccentricity_rate, whirl_rate, omega_sum, 
     >>> round(float(fr), 4), round(float(ft), 4)   # -(4/9) and (pi/8) / 0.75**1.5 times mu w R L^3 / c^2 = 3
     (-1.3333, 1.8138)
     """
-    e = np.asarray(eccentricity, dtype=float)
-    if not np.all(np.isfinite(e)) or np.any(e < 0.0) or np.any(e >= 1.0):
-        raise InputError(f"eccentricity: must lie in [0, 1) (1: the film is crushed), got {eccentricity!r}")
-    for name, v in (("viscosity", viscosity), ("radius", radius), ("length", length), ("clearance", clearance)):
-        a = np.asarray(v, dtype=float)
-        if not np.all(np.isfinite(a)) or np.any(a <= 0.0):
-            raise InputError(f"{name}: must be finite and > 0, got {v!r}")
-    for name, v in (("eccentricity_rate", eccentricity_rate), ("whirl_rate", whirl_rate),
-                    ("omega_sum", omega_sum)):
-        if not np.all(np.isfinite(np.asarray(v, dtype=float))):
-            raise InputError(f"{name}: must be finite, got {v!r}")
-    a = e * (0.5 * np.asarray(omega_sum, float) - np.asarray(whirl_rate, float))
-    b = -np.asarray(eccentricity_rate, float)
-    # B = a sin + b cos = M cos(theta - theta_m), theta_m = atan2(a, b): negative on (theta_m + pi/2, + 3 pi/2)
-    theta0 = np.arctan2(a, b) + 0.5 * np.pi
-    i_sc, i_cc, i_ss = _half_film_integrals(e, theta0)
+    _check_film(eccentricity, viscosity, radius, length, clearance,
+                (("eccentricity_rate", eccentricity_rate), ("whirl_rate", whirl_rate), ("omega_sum", omega_sum)))
     scale = np.asarray(viscosity, float) * np.asarray(radius, float) * np.asarray(length, float) ** 3 \
         / np.asarray(clearance, float) ** 2
-    return scale * (a * i_sc + b * i_cc), scale * (a * i_ss + b * i_sc)
+    return np.vectorize(_short_bearing_polar, otypes=[float, float])(eccentricity, eccentricity_rate, whirl_rate,
+                                                                     omega_sum, scale)
 
 
 def short_bearing_force_xy(x, y, vx, vy, omega_sum, viscosity, radius, length, clearance):
@@ -366,7 +389,7 @@ def short_bearing_force_xy(x, y, vx, vy, omega_sum, viscosity, radius, length, c
     eps = |r|/c, eps' = (r . v)/(c |r|), phi' = (x vy - y vx)/|r|^2; at the centre (r = 0) the film is
     concentric and carries no load, but a squeeze or a whirl velocity has a force there: the limit
     r -> 0 along v, F = -(pi/2) (mu R L^3 / c^3) v (the squeeze force of the concentric film [5]_), taken
-    when |r| < 1e-12 c.
+    when |r| < 1e-12 c. A journal at |r| >= c (eps >= 1) is refused (``eccentricity``).
 
     Examples
     --------
@@ -374,20 +397,11 @@ def short_bearing_force_xy(x, y, vx, vy, omega_sum, viscosity, radius, length, c
     >>> round(float(fx), 4), round(float(fy), 4)
     (-1.3333, 1.8138)
     """
-    x, y, vx, vy = (np.asarray(q, dtype=float) for q in (x, y, vx, vy))
     c = np.asarray(clearance, dtype=float)
-    r = np.hypot(x, y)
-    tiny = r < 1e-12 * c
-    rs = np.where(tiny, 1.0, r)
-    ux, uy = np.where(tiny, 1.0, x / rs), np.where(tiny, 0.0, y / rs)
-    eps = np.where(tiny, 0.0, r / c)
-    eps_rate = (ux * vx + uy * vy) / c
-    whirl = np.where(tiny, 0.0, (x * vy - y * vx) / (rs * rs))
-    fr, ft = short_bearing_force(eps, eps_rate, whirl, omega_sum, viscosity, radius, length, c)
-    fx, fy = fr * ux - ft * uy, fr * uy + ft * ux
-    centre = -0.5 * np.pi * np.asarray(viscosity, float) * np.asarray(radius, float) \
-        * np.asarray(length, float) ** 3 / c ** 3
-    return np.where(tiny, centre * vx, fx), np.where(tiny, centre * vy, fy)
+    _check_film(np.hypot(x, y) / c, viscosity, radius, length, clearance,
+                (("vx", vx), ("vy", vy), ("omega_sum", omega_sum)))
+    return np.vectorize(_short_bearing_xy, otypes=[float, float])(x, y, vx, vy, omega_sum, viscosity, radius,
+                                                                  length, clearance)
 
 
 def short_bearing_shear_torque(eccentricity, omega_rel, viscosity, radius, length, clearance):

@@ -22,6 +22,15 @@ __all__ = ["ExudynEngine", "SOLVERS", "solve_dynamic"]
 SOLVERS = {"verlet": "VelocityVerlet", "rk4": "RK44"}
 
 
+def element_cage(scenario: Scenario) -> bool:
+    """The ball element's ``cage`` (the torus cage on or off) of a scenario; InputError for the rigid cage,
+    which runs in the reference engine only so far (docs/theory/cage.md)."""
+    if scenario.cage == "rigid":
+        raise InputError("cage: the rigid cage runs in the reference engine (engine='reference'); the Exudyn "
+                         "element has the torus cage or none")
+    return scenario.cage == "torus"
+
+
 def _element_error(exc):
     """The SimulationError or InputError a user function of the element
     raised, found in the chain of the exception Exudyn raised instead
@@ -87,7 +96,7 @@ class ExudynEngine:
         m_inner = mbs.AddMarker(MarkerNodePosition(nodeNumber=node))
         mbs.AddLoad(LoadForceVector(markerNumber=m_inner, loadVector=[s.Fr, 0.0, s.Fa]))
         self.element = BallBearingElement(
-            mbs, b, m_inner, m_outer, lubricant=lubricant, cage=s.cage, lubrication=s.lubrication,
+            mbs, b, m_inner, m_outer, lubricant=lubricant, cage=element_cage(s), lubrication=s.lubrication,
             friction=s.friction, tangential=s.tangential, cageDamping=s.cage_damping, hertzModel=s.hertz, film=s.film,
             guideClearance=s.guide_clearance, muDry=s.mu_dry, regularizingSpeed=s.regularizing_speed,
             tangentialStiffnessRatio=s.tangential_stiffness_ratio, stepSize=s.dt, innerRingSpeed=s.speed_function(),

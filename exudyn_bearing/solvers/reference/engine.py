@@ -18,12 +18,12 @@ from ..._jit import announce_compilation
 from ...data import InputError, Lubricant, default_lubricant, load_bearing
 from ...model.contact import forces, scene_loss_path, scene_paths
 from ...model.initial_state import initial_state
-from ...model.layout import H_E1, NDIAG, NGLOBAL, NSIGNAL
+from ...model.layout import G_LAND_ECC, H_E1, NDIAG, NGLOBAL, NSIGNAL
 from ...model.motion import ring_poses
 from ...model.parameters import scene_parameters
 from ...model.record import RunRecord
 from ...model.scenario import Scenario
-from ...model.stability import StepSizeWarning, cage_load_check, runaway_error, stable_step, step_warning
+from ...model.stability import StepSizeWarning, cage_load_check, land_step_check, runaway_error, stable_step, step_warning
 from ...physics import hertz
 from .integrators import evaluate, run_rk4, run_verlet
 
@@ -57,9 +57,9 @@ class ReferenceEngine:
         self.start = start
         self.scenario = scenario
         self.lubricant = default_lubricant(b) if lubricant is None else lubricant  # None: the bearing's
-        if scenario.cage and not b.has_cage:
-            raise InputError(f"cage: bearing {b.name} has no cage balls (cage_ball_radius is None); "
-                             "use cage=False")
+        if scenario.cage == "torus" and not b.has_cage:
+            raise InputError(f"cage: bearing {b.name} has no torus cage (cage_ball_radius is None); "
+                             "use cage='rigid' (a rigid cage body) or cage='none'")
         self.params = scene_parameters(b, scenario, self.lubricant)
         self.table = hertz.exact_table()
         self.stable = stable_step(b, scenario, self.lubricant)
@@ -167,5 +167,9 @@ class ReferenceEngine:
         msg = cage_load_check(self.bearing, s, self.lubricant, float(buf["cage_load"].max(initial=0.0)), s.dt)
         if msg:
             warnings.warn(msg, StepSizeWarning, stacklevel=2)
+        if s.cage == "rigid" and len(buf["glob"]):
+            msg = land_step_check(self.bearing, s, self.lubricant, float(buf["glob"][:, G_LAND_ECC].max()), s.dt)
+            if msg:
+                warnings.warn(msg, StepSizeWarning, stacklevel=2)
         return RunRecord(self.bearing, s, self.lubricant, buf, steps=done, wall_s=wall,
                          engine=self.name, stable_dt=self.stable.dt, static=st["static"])

@@ -3,7 +3,7 @@ DEM papers' scheme) and classical RK4, over the shared contact kernel
 :func:`exudyn_bearing.model.contact.forces`.
 
 State: ``xb, vb, wb`` (Z, 3) ball centre, velocity, angular velocity;
-``xc, vc`` (Z, 3) cage balls; ``ring`` (6,) inner-ring position and velocity
+``xc, vc`` (Z, 3) cage balls (or the rigid cage in their first two rows, :mod:`...model.layout`); ``ring`` (6,) inner-ring position and velocity
 (the ring translates, its spin follows the protocol, the outer ring is the
 fixed frame); ``hist`` (Z, 2, 3) Cundall-Strack displacements; ``hz``
 (Z, 2, HZ_N) the per-contact cache of the contact kernel. Sample buffers ``s_*`` get
@@ -25,7 +25,7 @@ import numpy as np
 from ..._jit import kernel
 from ...model.contact import accumulate_energy, forces
 from ...model.layout import (NSIGNAL, P_AXIAL_FREE, P_CAGE, P_DT, P_FA, P_FR, P_IB, P_MAX_OVERLAP, P_MB, P_MR,
-                             P_MZ, P_NDEF, P_T_DOWN, P_T_STEADY, P_T_UP, P_W_MAX, R_ANGLE)
+                             P_MZ, P_NDEF, P_RIGID, P_T_DOWN, P_T_STEADY, P_T_UP, P_W_MAX, R_ANGLE)
 from ...model.motion import kick_drift, omega_profile, spin_angle
 
 __all__ = ["run_verlet", "run_rk4", "evaluate"]
@@ -161,7 +161,7 @@ def run_verlet(n_steps, t0, p, table, xb, vb, wb, xc, vc, ring, hist, hz, fb, tb
     z = xb.shape[0]
     inv_mb = 1.0 / p[P_MB]
     inv_ib = 1.0 / p[P_IB]
-    inv_mz = 1.0 / p[P_MZ] if p[P_CAGE] > 0.5 else 0.0
+    inv_mz = 1.0 / p[P_MZ] if (p[P_CAGE] > 0.5 or p[P_RIGID] > 0.5) else 0.0
     inv_mr = 1.0 / p[P_MR]
     n_samp = np.int64(0)  # not the literal 0: that compiled a second copy of _store
     t = t0
@@ -212,7 +212,7 @@ def _rk_stage(t, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc
     # the engine's first evaluation (and velocity Verlet) already compiled
     worst = evaluate(t, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc, fr, fring, glob, diag,
                      cage_load, np.bool_(False), defect_path, ellipse_path, loss_path)
-    inv_mz = 1.0 / p[P_MZ] if p[P_CAGE] > 0.5 else 0.0
+    inv_mz = 1.0 / p[P_MZ] if (p[P_CAGE] > 0.5 or p[P_RIGID] > 0.5) else 0.0
     for j in range(xb.shape[0]):
         for d in range(3):
             kx[stage, j, d] = vb[j, d]

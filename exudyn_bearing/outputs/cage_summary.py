@@ -1,0 +1,74 @@
+"""What a run with the rigid cage reports about the cage (docs/theory/cage.md#outputs): its speed against
+the kinematic one, the orbit of its centre (whirl radius and whirl ratio), the pocket and land forces and
+the cage losses by kind."""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..model import layout as L
+
+__all__ = ["rigid_cage_summary", "whirl", "CAGE_SUMMARY_UNITS", "CAGE_LOSSES_NOT_MODELLED"]
+
+#: Units of the keys of :func:`rigid_cage_summary`.
+CAGE_SUMMARY_UNITS = {
+    "cage_slip": "- (1 - cage speed / kinematic cage speed at the mean operating contact angle)",
+    "cage_whirl_radius": "m (RMS distance of the cage centre from its mean position over the window)",
+    "cage_whirl_ratio": "- (mean rate of the cage centre's orbit angle about its mean position over the cage speed)",
+    "cage_offset": "m (mean position of the cage centre, x and y)",
+    "cage_axial_offset": "m (mean axial position of the cage)",
+    "pocket_force_max": "N (largest ball / pocket normal force over the window)",
+    "pocket_force_mean": "N (time mean of the normal forces of all pockets, per ball)",
+    "land_force_mean": "N (time mean of the magnitude of the land's force on the cage)",
+    "land_eccentricity_max": "- (largest offset of the cage from the land over the land clearance)",
+    "cage_power_pocket": "W (time mean: friction and damping of the ball / pocket contacts)",
+    "cage_power_land": "W (time mean: land film and contact)",
+}
+
+#: Cage losses the rigid cage leaves out (part of ``not_modelled``).
+CAGE_LOSSES_NOT_MODELLED = ("cage windage and the oil's churning by the cage",
+                            "the pocket's oil film (the ball / pocket contact is dry Hertz with Coulomb friction)")
+
+
+def whirl(t, xy, cage_speed):
+    """(radius [m], ratio [-]) of the orbit of the cage centre ``xy`` (n, 2) sampled at ``t`` (n,): the RMS
+    distance from its mean position, and the mean rate of the orbit angle about it (unwrapped, end minus
+    start over the duration) over ``cage_speed`` [rad/s] (NaN when the cage does not turn or the orbit is
+    below 1e-12 m)."""
+    t = np.asarray(t, float)
+    xy = np.asarray(xy, float)
+    d = xy - xy.mean(axis=0)
+    radius = float(np.sqrt(np.mean(np.sum(d * d, axis=1))))
+    if radius < 1e-12 or len(t) < 3 or not cage_speed:
+        return radius, math.nan
+    angle = np.unwrap(np.arctan2(d[:, 1], d[:, 0]))
+    rate = float(angle[-1] - angle[0]) / float(t[-1] - t[0])
+    return radius, rate / cage_speed
+
+
+def rigid_cage_summary(data, w: slice, params, cage_speed: float, kinematic_cage_speed: float | None) -> dict:
+    """The rigid cage's summary over the samples ``w`` (keys of :data:`CAGE_SUMMARY_UNITS`); ``data`` the
+    run's sampled arrays (``xc``, ``vc``, ``cage_load``, ``glob``), ``params`` its parameter vector."""
+    t = data["t"][w]
+    xc = data["xc"][w]
+    glob = data["glob"][w]
+    radius, ratio = whirl(t, xc[:, 0, :2], cage_speed)
+    pocket = data["cage_load"][w][:, :, 0]
+    out = {
+        "cage_slip": (1.0 - cage_speed / kinematic_cage_speed) if kinematic_cage_speed else None,
+        "cage_whirl_radius": radius,
+        "cage_whirl_ratio": None if math.isnan(ratio) else ratio,
+        "cage_offset": [float(x) for x in xc[:, 0, :2].mean(axis=0)],
+        "cage_axial_offset": float(xc[:, 0, 2].mean()),
+        "pocket_force_max": float(pocket.max()),
+        "pocket_force_mean": float(pocket.mean()),
+        "land_force_mean": float(np.mean(np.hypot(glob[:, L.G_LAND_FX], glob[:, L.G_LAND_FY]))),
+        "land_eccentricity_max": float(glob[:, L.G_LAND_ECC].max()),
+        "cage_power_pocket": float(glob[:, L.G_POCKET_POWER].mean()),
+        "cage_power_land": float(glob[:, L.G_LAND_POWER].mean()),
+    }
+    if params[L.P_GUIDANCE] < 0.5:
+        for key in ("land_force_mean", "land_eccentricity_max", "cage_power_land"):
+            out[key] = None
+    return out
