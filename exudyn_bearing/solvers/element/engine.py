@@ -11,7 +11,8 @@ import time
 
 from ...data import InputError, Lubricant, load_bearing
 from ...model.initial_state import initial_state, ring_mass_estimate
-from ...model.scenario import Scenario
+from ...model.record import RunInterrupted
+from ...model.scenario import INTEGRATOR_SOLVERS, Scenario
 from ...model.stability import SimulationError, stable_step
 from .console import filter_exudyn_notes
 from .element import BallBearingElement
@@ -19,17 +20,18 @@ from .element import BallBearingElement
 __all__ = ["ExudynEngine", "SOLVERS", "solve_dynamic"]
 
 #: Scenario integrator -> Exudyn explicit solver.
-SOLVERS = {"verlet": "VelocityVerlet", "rk4": "RK44"}
+SOLVERS = INTEGRATOR_SOLVERS
 
 
 def _element_error(exc):
-    """The SimulationError or InputError a user function of the element
-    raised, found in the chain of the exception Exudyn raised instead
-    (Exudyn re-raises a user function's exception as its own ModelError, a
-    ValueError, with the original as the cause); None if there is none."""
+    """The SimulationError, InputError or KeyboardInterrupt (Ctrl-C during
+    the user function) a user function of the element raised, found in the
+    chain of the exception Exudyn raised instead (Exudyn re-raises a user
+    function's exception as its own ModelError, a ValueError, with the
+    original as the cause); None if there is none."""
     seen = set()
     while exc is not None and id(exc) not in seen:
-        if isinstance(exc, (SimulationError, InputError)):
+        if isinstance(exc, (SimulationError, InputError, KeyboardInterrupt)):
             return exc
         seen.add(id(exc))
         exc = exc.__cause__ or exc.__context__
@@ -43,9 +45,9 @@ def solve_dynamic(mbs, settings, solverType=None, quiet=True):
     clean for --json); otherwise its known-benign notes are dropped.
 
     A blow-up of the bearing element raises
-    :class:`~exudyn_bearing.model.stability.SimulationError` and bad input it
-    detects during the solve :class:`~exudyn_bearing.data.InputError`, not
-    the ModelError Exudyn wraps them in."""
+    :class:`~exudyn_bearing.model.stability.SimulationError`, bad input it
+    detects during the solve :class:`~exudyn_bearing.data.InputError` and
+    Ctrl-C KeyboardInterrupt, not the ModelError Exudyn wraps them in."""
     with filter_exudyn_notes(quiet=quiet):
         try:
             return mbs.SolveDynamic(settings, solverType=solverType or settings.timeIntegration.solverType)
@@ -115,6 +117,14 @@ class ExudynEngine:
         except SimulationError as exc:  # the scenario names the element's stepSize dt
             msg = str(exc)
             raise SimulationError("dt" + msg[len("stepSize"):] if msg.startswith("stepSize") else msg) from None
+        except KeyboardInterrupt:  # Ctrl-C: the samples so far go with it (the reference engine's RunInterrupted)
+            try:
+                rec = self.element.record(wall_s=time.perf_counter() - wall0)
+                rec.scenario = self.scenario
+            except RuntimeError:  # no sample yet
+                rec = None
+            t = float(rec.data["t"][-1]) if rec is not None and len(rec.data["t"]) else 0.0
+            raise RunInterrupted(t, s.t_end, rec) from None
         rec = self.element.record(wall_s=time.perf_counter() - wall0,
                                   steps=settings.timeIntegration.numberOfSteps)
         rec.scenario = self.scenario  # the run's protocol and solver, not the element's model options only
