@@ -4,14 +4,15 @@ from __future__ import annotations
 import argparse
 import json
 import math
+import warnings
 from pathlib import Path
 
+from ..model.record import RunInterrupted
 from ..model.scenario import CONTROLS, INITIAL_STATES, TRACTION_LEVELS, Scenario
 from ..outputs.jsonio import to_jsonable
 from ..outputs.results import NOT_CONVERGED_MARK
 from ..physics.hertz import METHODS
 from ..simulate import simulate
-from ..model.record import RunInterrupted
 from .common import (add_strip_arguments, add_bearing_argument, add_lubricant_argument, add_ring_growth_argument, add_speed_arguments,
                      add_traction_argument, bearing_from_args, finite_float, format_value, lubricant_from_args,
                      omega_from_args, print_table)
@@ -152,8 +153,6 @@ def _table(summary, t_end=None):
 def _save_partial(results, out):
     """Write the samples of an interrupted run into ``out`` (run.npz, run.json); the folder, or None when
     they do not make a summary (too few samples)."""
-    import warnings
-
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
