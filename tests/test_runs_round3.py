@@ -30,7 +30,8 @@ from exudyn_bearing.outputs.results import (
     SteadyStateWarning,
 )
 from exudyn_bearing.solvers.reference import engine as ref_engine
-from exudyn_bearing.solvers.reference.engine import ReferenceEngine, wall_time_message
+from exudyn_bearing.model.memory import wall_time_message
+from exudyn_bearing.solvers.reference.engine import ReferenceEngine
 
 ROOT = Path(__file__).resolve().parents[1]
 linux = pytest.mark.skipif(not sys.platform.startswith("linux"), reason="reads /proc")
@@ -222,7 +223,7 @@ def test_a_run_estimated_long_says_so_once_before_its_progress(monkeypatch, caps
             return Clock.now
 
     monkeypatch.setattr(ref_engine, "time", Clock())
-    monkeypatch.setattr(ref_engine, "LONG_RUN_S", 10.0)  # the 400 steps at 1 s per chunk of 20: 20 s or more
+    monkeypatch.setattr(memory, "LONG_RUN_S", 10.0)  # the 400 steps at 1 s per chunk of 20: 20 s or more
     sc = eb.Scenario(Fr=1000.0, t_end=2e-3, dt=5e-6, tangential="implicit")
     _quiet(ReferenceEngine("6208", sc).run, progress=None)
     err = capsys.readouterr().err
@@ -231,6 +232,21 @@ def test_a_run_estimated_long_says_so_once_before_its_progress(monkeypatch, caps
     assert err.index("estimated wall time") < err.index("[reference] t =")
     _quiet(ReferenceEngine("6208", sc).run, progress=False)
     assert capsys.readouterr().err == ""
+
+
+def test_a_long_exudyn_run_says_its_estimate_too(monkeypatch, capsys):
+    # every run counts as long here: the Exudyn engine measures the step cost between its samples and says the
+    # estimate once, on stderr; progress=False says nothing
+    from exudyn_bearing.solvers.element import engine as el_engine
+
+    monkeypatch.setattr(memory, "LONG_RUN_S", 1e-9)
+    monkeypatch.setattr(el_engine, "ESTIMATE_AFTER_S", 0.0)
+    sc = eb.Scenario(Fr=3000.0, t_end=1e-3, dt=5e-6, sample_dt=1e-4)
+    _quiet(el_engine.ExudynEngine("6208", sc).run)
+    err = capsys.readouterr().err
+    assert err.count("estimated wall time") == 1 and err.startswith("[exudyn] 200 steps of dt = 5e-06 s"), err
+    assert _quiet(el_engine.ExudynEngine("6208", sc).run, progress=False).data["t"].size == 10
+    assert "estimated" not in capsys.readouterr().err
 
 
 # -- item 7: history friction under multi-stage solvers -------------------------------------------------------

@@ -13,6 +13,10 @@ the room the process's own limits leave (the address-space limit
 limit ``RLIMIT_DATA``, ``ulimit -d``, less ``VmData``), whichever is
 smaller, and names the ``sample_dt`` that fits, instead of failing with
 numpy's "Unable to allocate" after the start-up work.
+
+The wall time of a run is said when it is long (:func:`wall_time_message`:
+both engines measure the step cost over their first :data:`ESTIMATE_AFTER_S`
+and print the estimate on stderr when it exceeds :data:`LONG_RUN_S`).
 """
 from __future__ import annotations
 
@@ -23,7 +27,7 @@ from ..data import InputError, load_bearing
 from .layout import NDIAG, NGLOBAL, NSIGNAL
 
 __all__ = ["MEMORY_FRACTION", "FALLBACK_BUDGET", "sample_bytes", "signal_bytes", "available_memory",
-           "limit_room", "memory_budget", "check_sample_memory"]
+           "limit_room", "memory_budget", "check_sample_memory", "LONG_RUN_S", "ESTIMATE_AFTER_S", "wall_time_message"]
 
 #: Share of the available memory the samples of one run may take (the rest: the
 #: interpreter, the engines' work arrays, the Results' derived series and other processes).
@@ -181,3 +185,39 @@ def check_sample_memory(bearing, scenario, budget: int | None = None) -> int:
     fit = _round_up(max(scenario.t_end * per / (budget - signal), scenario.sample_dt))
     raise InputError(f"sample_dt: {head}: use sample_dt >= {fit:.2g} s (--sample-dt {fit:.2g}) or a shorter t_end "
                      "(--t-end)")
+
+
+# -- wall time ---------------------------------------------------------------------------------------------
+#: A run whose estimated wall time exceeds this [s] says so on stderr before it goes on (and shows its progress).
+LONG_RUN_S = 60.0
+#: Wall time [s] of integration over which the step cost is measured for the estimate (or the whole run if shorter).
+ESTIMATE_AFTER_S = 0.2
+
+
+def _duration(seconds: float) -> str:
+    """``seconds`` in the largest unit that keeps it above 1 (s, min, h, d)."""
+    for unit, size in (("d", 86400.0), ("h", 3600.0), ("min", 60.0)):
+        if seconds >= size:
+            return f"{seconds / size:.3g} {unit}"
+    return f"{seconds:.3g} s"
+
+
+def wall_time_message(n_steps: int, done: int, wall: float, scenario, stable_dt: float | None,
+                      long_s: float | None = None) -> str | None:
+    """The line that announces a long run of ``scenario``, or None:
+    ``n_steps`` steps at the cost measured over the first ``done`` steps in
+    ``wall`` [s] take longer than ``long_s`` [s] (None: :data:`LONG_RUN_S`);
+    names the estimate, the step cost and what shortens the run (``t_end``,
+    a larger ``dt`` up to the stable step ``stable_dt`` [s])."""
+    long_s = LONG_RUN_S if long_s is None else long_s
+    if done <= 0 or not wall > 0.0:
+        return None
+    per = wall / done
+    est = per * n_steps
+    if est <= long_s or done >= n_steps:
+        return None
+    larger = (f" or a larger dt (--dt; stable step estimate {stable_dt:.3g} s)"
+              if stable_dt is not None and stable_dt > 1.05 * scenario.dt else "")
+    return (f"{n_steps:.3g} steps of dt = {scenario.dt:.3g} s to t_end = {scenario.t_end:.6g} s: estimated wall time "
+            f"{_duration(est)} ({per * 1e6:.3g} us per step over the first {done} steps); a shorter t_end "
+            f"(--t-end){larger} shortens it, Ctrl-C stops it")

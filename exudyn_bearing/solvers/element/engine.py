@@ -7,10 +7,12 @@ so both engines can be compared on identical input.
 """
 from __future__ import annotations
 
+import sys
 import time
 
 from ...data import InputError, Lubricant, load_bearing
 from ...model.initial_state import initial_state, ring_mass_estimate
+from ...model.memory import ESTIMATE_AFTER_S, wall_time_message
 from ...model.record import RunInterrupted
 from ...model.scenario import INTEGRATOR_SOLVERS, Scenario
 from ...model.stability import SimulationError, stable_step
@@ -106,11 +108,38 @@ class ExudynEngine:
         mbs.Assemble()
         self.stable = self.element.stable
 
+    def _estimator(self, n_steps):
+        """The element's per-sample hook that measures the step cost (``n_steps`` steps of the balls in the
+        run) from the first sample on and, once ESTIMATE_AFTER_S have passed, says a long run's estimated wall
+        time (once) and removes itself."""
+        s, first = self.scenario, []
+
+        def on_sample(t):
+            now = time.perf_counter()
+            if not first:
+                first[:] = [now, t]
+                return
+            wall = now - first[0]
+            if wall < ESTIMATE_AFTER_S:
+                return
+            self.element._on_sample = None
+            msg = wall_time_message(n_steps, max(1, round((t - first[1]) / s.dt)), wall, s, self.stable.dt)
+            if msg:
+                print(f"[exudyn] {msg}", file=sys.stderr, flush=True)
+
+        return on_sample
+
     def run(self, progress=None):
+        """Solve the scenario; returns the RunRecord. ``progress``: Exudyn's progress output when True; unless
+        False, a run estimated to take over LONG_RUN_S says so on stderr (the step cost measured over its
+        first ESTIMATE_AFTER_S, :func:`~exudyn_bearing.model.memory.wall_time_message`). Ctrl-C raises
+        :class:`~exudyn_bearing.model.record.RunInterrupted` with the samples so far."""
         s = self.scenario
         settings = self.element.SimulationSettings(s.t_end, solverType=SOLVERS[s.integrator])
         if progress:
             settings.timeIntegration.verboseMode = 1
+        if progress is not False:
+            self.element._on_sample = self._estimator(int(round(s.t_end / s.dt)))  # the balls' steps
         wall0 = time.perf_counter()
         try:
             solve_dynamic(self.mbs, settings, quiet=not progress)
@@ -125,6 +154,8 @@ class ExudynEngine:
                 rec = None
             t = float(rec.data["t"][-1]) if rec is not None and len(rec.data["t"]) else 0.0
             raise RunInterrupted(t, s.t_end, rec) from None
+        finally:
+            self.element._on_sample = None
         rec = self.element.record(wall_s=time.perf_counter() - wall0,
                                   steps=settings.timeIntegration.numberOfSteps)
         rec.scenario = self.scenario  # the run's protocol and solver, not the element's model options only

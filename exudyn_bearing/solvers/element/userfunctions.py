@@ -152,6 +152,9 @@ def _clock_entry(k, doc):
 class UserFunctionsMixin:
     """Part of :class:`~.element.BallBearingElement`: the user functions."""
 
+    #: Called with the time of every sample while set (the Exudyn engine's wall-time estimate), else None.
+    _on_sample = None
+
     _t_trial = _clock_entry(EK.CLK_TRIAL, "Body mode: the latest time evaluated [s] (-inf: none yet).")
     _t_commit = _clock_entry(EK.CLK_COMMIT, "Body mode: the time of the committed Cundall-Strack history [s].")
     _t_energy = _clock_entry(EK.CLK_ENERGY, "Body mode: the last time whose powers entered the energy integrals [s].")
@@ -422,6 +425,8 @@ class UserFunctionsMixin:
             evidence[0] = worst
         if want:
             self._sample(t_sample, rings)
+            if self._on_sample is not None:
+                self._on_sample(t_sample)
         if self._sig is not None:
             self._signal_sample(t)
 

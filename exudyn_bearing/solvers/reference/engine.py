@@ -19,6 +19,7 @@ from ...data import InputError, Lubricant, default_lubricant, load_bearing
 from ...model.contact import forces, scene_loss_path, scene_paths
 from ...model.initial_state import initial_state
 from ...model.layout import H_E1, NDIAG, NGLOBAL, NSIGNAL
+from ...model.memory import ESTIMATE_AFTER_S, wall_time_message
 from ...model.motion import ring_poses
 from ...model.parameters import scene_parameters
 from ...model.record import RunInterrupted, RunRecord
@@ -28,11 +29,8 @@ from ...physics import hertz
 from ...physics.contact_slip import DEFAULT_N_ACROSS, DEFAULT_N_STRIPS
 from .integrators import evaluate, run_rk4, run_verlet
 
-__all__ = ["ReferenceEngine", "wall_time_message", "LONG_RUN_S", "PROBE_STEPS", "CHUNK_BALL_STEPS",
-           "ELLIPSE_STEP_COST", "ESTIMATE_AFTER_S"]
+__all__ = ["ReferenceEngine", "PROBE_STEPS", "CHUNK_BALL_STEPS", "ELLIPSE_STEP_COST"]
 
-#: A run whose estimated wall time exceeds this [s] says so on stderr before it goes on (and shows its progress).
-LONG_RUN_S = 60.0
 #: Steps of the first chunk; the chunks double from it up to :meth:`ReferenceEngine.chunk_cap`.
 PROBE_STEPS = 1000
 #: Ball-steps of a chunk at the point level: about half a second of wall time, the progress line's and Ctrl-C's
@@ -44,38 +42,6 @@ PROBE_STEPS = 1000
 CHUNK_BALL_STEPS = 9 * 2 ** 18
 #: Cost of a step at the ellipse level with the default strips and points across, relative to the point level.
 ELLIPSE_STEP_COST = 10.0
-#: Wall time [s] of integration over which the step cost is measured for the estimate (or the whole run if shorter).
-ESTIMATE_AFTER_S = 0.2
-
-
-def _duration(seconds: float) -> str:
-    """``seconds`` in the largest unit that keeps it above 1 (s, min, h, d)."""
-    for unit, size in (("d", 86400.0), ("h", 3600.0), ("min", 60.0)):
-        if seconds >= size:
-            return f"{seconds / size:.3g} {unit}"
-    return f"{seconds:.3g} s"
-
-
-def wall_time_message(n_steps: int, done: int, wall: float, scenario: Scenario, stable_dt: float,
-                      long_s: float = LONG_RUN_S) -> str | None:
-    """The line that announces a long run, or None: ``n_steps`` steps at the
-    cost measured over the first ``done`` steps in ``wall`` [s] take longer
-    than ``long_s`` [s]; names the estimate, the step cost and what shortens
-    the run (``t_end``, a larger ``dt`` up to the stable step ``stable_dt``
-    [s])."""
-    if done <= 0 or not wall > 0.0:
-        return None
-    per = wall / done
-    est = per * n_steps
-    if est <= long_s or done >= n_steps:
-        return None
-    larger = (f" or a larger dt (--dt; stable step estimate {stable_dt:.3g} s)"
-              if stable_dt is not None and stable_dt > 1.05 * scenario.dt else "")
-    return (f"{n_steps:.3g} steps of dt = {scenario.dt:.3g} s to t_end = {scenario.t_end:.6g} s: estimated wall time "
-            f"{_duration(est)} ({per * 1e6:.3g} us per step over the first {done} steps); a shorter t_end "
-            f"(--t-end){larger} shortens it, Ctrl-C stops it")
-
-
 class ReferenceEngine:
     """The numba DEM engine for one bearing, lubricant and scenario.
 
@@ -130,7 +96,7 @@ class ReferenceEngine:
         (runs over 2 million steps, or estimated to take over LONG_RUN_S),
         False for none. Unless False, a run whose wall time, estimated from the
         step cost of its first ESTIMATE_AFTER_S, exceeds LONG_RUN_S says so on
-        stderr (:func:`wall_time_message`). The run goes in chunks of PROBE_STEPS
+        stderr (:func:`~exudyn_bearing.model.memory.wall_time_message`). The run goes in chunks of PROBE_STEPS
         doubling up to :meth:`chunk_cap`, about half a second each
         (``chunk_steps``: fixed chunks instead); Ctrl-C between
         them raises :class:`~exudyn_bearing.model.record.RunInterrupted` with the
@@ -217,7 +183,7 @@ class ReferenceEngine:
                 el = time.perf_counter() - wall0
                 if not estimated and (el >= ESTIMATE_AFTER_S or done >= n_steps):
                     estimated = True
-                    msg = wall_time_message(n_steps, done, el, s, self.stable.dt, LONG_RUN_S)
+                    msg = wall_time_message(n_steps, done, el, s, self.stable.dt)
                     if msg:
                         if line_open:
                             print(file=sys.stderr)
