@@ -109,7 +109,8 @@ POINT_LEVEL_NOTES = {
 
 #: Summary entries that are step noise at the point level with the Cundall-Strack spring (friction="history"),
 #: not converged losses: its friction power falls about in proportion to dt, the normal damping with dt^2
-#: (docs/theory/dynamics.md, "What each traction level models"). Such a summary says
+#: (docs/theory/dynamics.md, "What each traction level models"; python validation/step_convergence_losses.py).
+#: Such a summary says
 #: ``friction_outputs_converged: False``, lists them under ``not_converged`` and marks their descriptions;
 #: ``power_loss.X`` is the component X of ``power_loss``.
 POINT_STEP_DEPENDENT = ("friction_torque", "friction_power", "dissipation", "dissipation_inner", "dissipation_outer",
