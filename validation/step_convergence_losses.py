@@ -1,6 +1,6 @@
 """Step convergence of the dynamic summary's friction and damping outputs at
-the two traction levels (issue 33 item 11, docs/theory/dynamics.md, "What
-each traction level models").
+the two traction levels (docs/theory/dynamics.md, "What each traction level
+models").
 
 The ACBB-120 under 22,240 N thrust at 2618 rad/s (25,000 rpm, no cage) is run
 by the reference engine at dt = 4, 2, 1 and 0.5 us, at the point level
