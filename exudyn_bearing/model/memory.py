@@ -104,7 +104,7 @@ def limit_room() -> tuple[int, str] | None:
 
 def _available() -> tuple[int, str] | None:
     """(bytes, what bounds them) a new allocation may take now: the smaller of the free memory
-    (:func:`available_memory`) and :func:`limit_room`; None if neither is known."""
+    (:func:`_free_memory`) and :func:`limit_room`; None if neither is known."""
     free = _free_memory()
     found = [x for x in ((free, "the memory available now") if free is not None else None, limit_room())
              if x is not None]
