@@ -7,6 +7,7 @@ from __future__ import annotations
 from .data import BallBearing, InputError, Lubricant, default_traction, load_bearing, load_lubricant
 from .model.load_range import check_load_range, check_run_pressures
 from .model.memory import check_sample_memory
+from .model.record import RunInterrupted
 from .model.scenario import Scenario
 from .outputs.results import Results
 from .solvers.element import BallBearingElement as _ElementBase
@@ -40,7 +41,13 @@ def simulate(bearing, scenario: Scenario | None = None, engine: str = "reference
         :func:`exudyn_bearing.data.default_lubricant`; the scenario's traction
         model likewise defaults to the bearing's).
     progress : bool or None
-        Progress on stderr (None: for long runs).
+        Progress on stderr (None: for long runs); unless False, a reference
+        run estimated to take over a minute says so on stderr first.
+
+    Ctrl-C during the integration (either engine) raises
+    :class:`~exudyn_bearing.model.record.RunInterrupted` (a
+    KeyboardInterrupt) whose ``results`` hold the samples taken so far
+    (None before the first).
 
     Returns
     -------
@@ -64,14 +71,19 @@ def simulate(bearing, scenario: Scenario | None = None, engine: str = "reference
     check_load_range(bearing if scenario.Pd is None else bearing.with_clearance(scenario.Pd), scenario.Fr,
                      scenario.Fa, scenario.hertz)
     start = quasistatic_start(bearing, scenario, lubricant) if scenario.initial == "quasistatic" else None
-    if engine == "reference":
-        from .solvers.reference import ReferenceEngine
+    try:
+        if engine == "reference":
+            from .solvers.reference import ReferenceEngine
 
-        record = ReferenceEngine(bearing, scenario, lubricant, start=start).run(progress=progress)
-    else:
-        from .solvers.element.engine import ExudynEngine
+            record = ReferenceEngine(bearing, scenario, lubricant, start=start).run(progress=progress)
+        else:
+            from .solvers.element.engine import ExudynEngine
 
-        record = ExudynEngine(bearing, scenario, lubricant, start=start).run(progress=progress)
+            record = ExudynEngine(bearing, scenario, lubricant, start=start).run(progress=progress)
+    except RunInterrupted as exc:  # Ctrl-C: the samples so far go with it, as Results
+        if exc.samples:
+            exc.results = Results(exc.record)
+        raise
     check_record_pressures(record)
     return Results(record)
 

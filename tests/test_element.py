@@ -592,8 +592,9 @@ def test_unstable_explicit_solvers_are_refused_before_the_first_step(mode):
     # (body mode) above half the stable-step estimate, in SimulationSettings and, for settings made otherwise,
     # at the run's first evaluation, before any step is taken
     SC, mbs, m_in, m_out, b = _rotor_scene()
+    # history-free friction: the body mode's multi-stage solvers need it (model.scenario.history_friction_error)
     el = CreateBallBearing(mbs, b, m_in, m_out, initialOmega=500.0, initialLoad=(3000.0, 0.0), stepSize=5e-6,
-                           mode=mode)
+                           mode=mode, friction="regularized")
     mbs.Assemble()
     with pytest.raises(InputError, match="^solverType: ExplicitEuler .* VelocityVerlet"):
         el.SimulationSettings(0.001, solverType="ExplicitEuler")

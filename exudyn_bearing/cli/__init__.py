@@ -34,7 +34,9 @@ version.
 BEARING is a catalogue name (6208, 7208, 6004, 6205, ACBB-120) or a JSON file
 (:mod:`exudyn_bearing.data.catalog`: one bearing by race radii or dimensions,
 or a catalogue-shaped file). Shared options live in :mod:`.common`. Bad
-input exits with status 2 and a one-line message naming the parameter.
+input exits with status 2 and a one-line message naming the parameter;
+Ctrl-C (SIGINT) with status 130 and one line (``simulate --out DIR`` writes
+the samples taken so far there).
 """
 from __future__ import annotations
 
@@ -86,9 +88,14 @@ def _parser(argv=None) -> Parser:
 def main(argv=None) -> int:
     """Entry point; returns the exit status."""
     argv = sys.argv[1:] if argv is None else list(argv)
-    args = _parser(argv).parse_args(argv)
+    args = None
     try:
+        args = _parser(argv).parse_args(argv)
         command_module(args.command).run(args)
+    except KeyboardInterrupt as exc:  # Ctrl-C: one line and the conventional status, not a traceback
+        what = getattr(args, "command", None) or "exudyn-bearing"
+        print(f"exudyn-bearing: {what} stopped by SIGINT{_interrupted_detail(exc)}", file=sys.stderr)
+        return 130
     except (InputError, ValueError) as exc:
         print(f"exudyn-bearing: error: {exc}", file=sys.stderr)
         return 2
@@ -99,6 +106,15 @@ def main(argv=None) -> int:
         print(f"exudyn-bearing: error: {exc}", file=sys.stderr)
         return 2
     return 0
+
+
+def _interrupted_detail(exc) -> str:
+    """What an interrupted run kept (``simulate``: the time reached, the samples and where they went)."""
+    if not hasattr(exc, "t_end"):
+        return ""
+    kept = getattr(exc, "saved", None)
+    return (f" at t = {exc.t:.6g} of {exc.t_end:.6g} s ({exc.samples} samples"
+            + (f", written to {kept}" if kept else "") + ")")
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -4,15 +4,18 @@ from __future__ import annotations
 import argparse
 import json
 import math
+import warnings
 from pathlib import Path
 
+from ..model.record import RunInterrupted
 from ..model.scenario import CONTROLS, INITIAL_STATES, TRACTION_LEVELS, Scenario
 from ..outputs.jsonio import to_jsonable
+from ..outputs.results import NOT_CONVERGED_MARK
 from ..physics.hertz import METHODS
 from ..simulate import simulate
 from .common import (add_strip_arguments, add_bearing_argument, add_lubricant_argument, add_ring_growth_argument, add_speed_arguments,
-                     add_traction_argument, bearing_from_args, finite_float, lubricant_from_args, omega_from_args,
-                     print_table)
+                     add_traction_argument, bearing_from_args, finite_float, format_value, lubricant_from_args,
+                     omega_from_args, print_table)
 
 #: Simulated time [s] without --t-end and --ramp.
 DEFAULT_T_END = 0.02
@@ -83,7 +86,8 @@ def add_parser(sub):
                         "hardened bearing steel)")
     p.add_argument("--out", metavar="DIR", help="write run.npz, run.json, run.png and run.csv into DIR")
     p.add_argument("--progress", action=argparse.BooleanOptionalAction, default=None,
-                   help="progress on stderr (default: for runs over 2 million steps)")
+                   help="progress on stderr (default: for runs over 2 million steps or estimated to take over a "
+                        "minute, which say so first)")
     p.add_argument("--json", action="store_true", help="print the summary as JSON (with its units map)")
 
 
@@ -107,6 +111,12 @@ def scenario_from_args(args) -> Scenario:
             t_end = up + steady + down
     kw["t_end"] = DEFAULT_T_END if t_end is None else t_end
     return Scenario(**kw)
+
+
+def _not_converged(value, unit):
+    """A table value with its unit and the mark of a step-dependent output (outputs.results.NOT_CONVERGED_MARK)."""
+    v = format_value(value, unit or "")
+    return f"{v}{' ' + unit if unit else ''}  ({NOT_CONVERGED_MARK})"
 
 
 def _table(summary, t_end=None):
@@ -134,6 +144,9 @@ def _table(summary, t_end=None):
     if "note" in summary:
         rows.append(("note", summary["note"]))
     rows += [(f"regime_fraction.{k}", v) for k, v in summary["regime_fraction"].items()]
+    marked = set(summary.get("not_converged", ()))  # step noise (the point level's friction outputs): said on the row
+    rows = [(r[0], _not_converged(r[1], r[2] if len(r) > 2 else None)) if r[0] in marked and r[1] is not None else r
+            for r in rows]
     for name, ph in summary.get("phases", {}).items():
         rows.append((f"phase {name}", f"{ph['t0']:.4g} - {ph['t1']:.4g} s: omega {ph['omega']:.4g} rad/s, cage "
                                       f"{ph['cage_speed']:.4g} rad/s, ball spin {ph['ball_spin']:.4g} rad/s, "
@@ -141,10 +154,27 @@ def _table(summary, t_end=None):
     return rows
 
 
+def _save_partial(results, out):
+    """Write the samples of an interrupted run into ``out`` (run.npz, run.json); the folder, or None when
+    they do not make a summary (too few samples)."""
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            results.save(out)
+    except (ValueError, IndexError, OSError):
+        return None
+    return str(out)
+
+
 def run(args):
     sc = scenario_from_args(args)
     b = bearing_from_args(args)
-    run = simulate(b, sc, engine=args.engine, lubricant=lubricant_from_args(args, b), progress=args.progress)
+    try:
+        run = simulate(b, sc, engine=args.engine, lubricant=lubricant_from_args(args, b), progress=args.progress)
+    except RunInterrupted as exc:  # Ctrl-C: --out keeps the samples so far; the caller prints one line
+        if args.out and exc.results is not None:
+            exc.saved = _save_partial(exc.results, args.out)
+        raise
     summary = run.summary()
     # the lubricant and traction model in use (the bearing's unless given), unless the summary names them
     summary.setdefault("lubricant", run.lubricant.name)

@@ -5,7 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any
 
-__all__ = ["RunRecord"]
+__all__ = ["RunRecord", "RunInterrupted"]
 
 
 @dataclass
@@ -30,3 +30,20 @@ class RunRecord:
     engine: str
     stable_dt: float | None = None
     static: Any = None
+
+
+class RunInterrupted(KeyboardInterrupt):
+    """Ctrl-C stopped a dynamic run (both engines): ``t`` the time reached
+    and ``t_end`` the run's end [s], ``record`` the :class:`RunRecord` of the
+    samples taken so far (None before the first; ``results``: their Results,
+    set by :func:`exudyn_bearing.simulate`)."""
+
+    def __init__(self, t: float, t_end: float, record=None):
+        super().__init__(f"run stopped at t = {t:.6g} of {t_end:.6g} s")
+        self.t, self.t_end, self.record = t, t_end, record
+        self.results = None
+
+    @property
+    def samples(self) -> int:
+        """Samples taken before the stop."""
+        return 0 if self.record is None else len(self.record.data["t"])

@@ -25,8 +25,9 @@ from ..physics.losses import HYSTERESIS_LOSS_FACTOR_STEEL
 from .layout import MAX_DEFECTS
 from .motion import omega_profile
 
-__all__ = ["Scenario", "FRICTION_MODELS", "INTEGRATORS", "TRACTION_LEVELS", "INITIAL_STATES", "CONTROLS",
-           "ellipse_rolling_floor", "rolling_speed_floor", "DEFAULT_REGULARIZING_SPEED"]
+__all__ = ["Scenario", "FRICTION_MODELS", "INTEGRATORS", "INTEGRATOR_SOLVERS", "MULTI_EVALUATION_SOLVERS",
+           "TRACTION_LEVELS", "INITIAL_STATES", "CONTROLS", "history_friction_error", "ellipse_rolling_floor",
+           "rolling_speed_floor", "DEFAULT_REGULARIZING_SPEED"]
 
 #: Tangential force models: Cundall-Strack spring with Coulomb cap (contact
 #: history), regularised Coulomb on the slip velocity (history-free), none.
@@ -42,6 +43,30 @@ DEFAULT_REGULARIZING_SPEED = 0.1
 CONTROLS = ("auto", "outer", "inner", "min-energy", "equilibrium")
 #: Time integrators of the reference engine.
 INTEGRATORS = ("verlet", "rk4")
+#: Scenario integrator -> the Exudyn explicit solver of the same scheme (the Exudyn engine's solver).
+INTEGRATOR_SOLVERS = {"verlet": "VelocityVerlet", "rk4": "RK44"}
+#: Exudyn's explicit solvers that evaluate the forces more than once per step (stages, rejected adaptive steps).
+MULTI_EVALUATION_SOLVERS = ("ExplicitMidpoint", "RK33", "RK44", "RK67", "ODE23", "DOPRI5", "DVERK6")
+
+
+def history_friction_error(friction: str, solver: str, parameter: str = "solverType"):
+    """The InputError for ``friction="history"`` under ``solver`` (an Exudyn
+    solver name, or a Scenario integrator of :data:`INTEGRATOR_SOLVERS`) that
+    evaluates the forces more than once per step, else None; the message
+    names ``parameter`` ("integrator" for a Scenario, "solverType" for the
+    Exudyn element). The one rule of both engines: the Cundall-Strack spring
+    is advanced once per committed step (docs/theory/tangential.md), so under
+    a multi-stage scheme its history takes the slip of the stages'
+    intermediate states instead of the step's (docs/theory/dynamics.md,
+    "Classical RK4")."""
+    name = INTEGRATOR_SOLVERS.get(solver, solver)
+    if friction != "history" or name not in MULTI_EVALUATION_SOLVERS:
+        return None
+    use = "integrator='verlet'" if parameter == "integrator" else "solverType VelocityVerlet"
+    return InputError(f"{parameter}: {solver} evaluates the forces several times per step, but friction='history' "
+                      "advances the Cundall-Strack spring once per step (its history would take the slip of the "
+                      f"intermediate stages); use {use} (one evaluation per step) or a history-free friction "
+                      "(friction='regularized' or 'none')")
 
 
 #: Cage models of a scene (:class:`Scenario` ``cage``): True and False are aliases of "torus" and "none".
@@ -312,10 +337,9 @@ class Scenario:
         if self.cage_damping == "implicit" and self.cage == "none":
             raise InputError("cage_damping: 'implicit' damps the ball / cage-ball and guide contacts, and the scene "
                              "has no cage (cage=False; its ball / ball contacts keep the explicit damping)")
-        if self.integrator == "rk4" and self.friction == "history":
-            raise InputError("integrator: rk4 needs a history-free friction model "
-                             "(friction='regularized' or 'none'); the Cundall-Strack spring is "
-                             "updated once per step and runs with verlet")
+        err = history_friction_error(self.friction, self.integrator, "integrator")
+        if err is not None:
+            raise err
         try:
             law = tuple(float(x) for x in self.power_law)
         except (TypeError, ValueError):

@@ -42,13 +42,14 @@ from .window_checks import (LOSS_FLOOR_MU, SPEED_FLOOR, SteadyStateWarning, ener
 
 __all__ = ["Results", "SUMMARY_KEYS", "SUMMARY_UNITS", "SUMMARY_DESCRIPTIONS", "PHASE_NAMES", "LOSSES_MODELLED",
            "LOSSES_NOT_MODELLED", "DYNAMIC_LOSS_COMPONENTS", "DYNAMIC_NOT_MODELLED", "DYNAMIC_SWITCHED_LOSSES",
-           "SteadyStateWarning",
+           "SteadyStateWarning", "POINT_STEP_DEPENDENT", "NOT_CONVERGED_MARK",
            "protocol_phases"]
 
 #: Keys every engine's summary has.
 SUMMARY_KEYS = ("q_max_inner", "q_max_outer", "q_max_method", "q_max_inner_mean", "q_max_outer_mean", "cage_speed",
                 "ball_spin", "lambda_outer_psi0", "lambda_inner_psi0", "regime_fraction", "window", "steady",
-                "friction_torque", "friction_power", "drive_power", "load_power", "dissipation",
+                "friction_torque", "friction_power", "friction_outputs_converged", "not_converged",
+                "drive_power", "load_power", "dissipation",
                 "kinetic_energy_change", "energy_residual", "energy_source", "power_loss", "power_loss_total",
                 "not_modelled", "energy_check", "lubricant", "traction_model",
                 "traction_level", "losses_modelled", "losses_not_modelled", "steps", "dt", "wall_s", "units",
@@ -102,12 +103,26 @@ DYNAMIC_NOT_MODELLED = ("cage land friction (the cage balls' guide contact is fr
 #: Note of a point-level summary on its losses, by friction law.
 POINT_LEVEL_NOTES = {
     "history": ("point traction level: no rolling losses; the tangential Cundall-Strack spring stores energy, so "
-                "friction_torque and friction_power are mostly its exchange with the balls (about zero in a pure "
-                "rolling steady state); traction_level='ellipse' models sliding, spin and curvature losses"),
+                "friction_torque and friction_power are mostly its exchange with the balls, a step artefact that "
+                "falls about in proportion to dt (friction_outputs_converged: false); traction_level='ellipse' "
+                "models sliding, spin and curvature losses"),
     "regularized": ("point traction level: no rolling losses; the regularised Coulomb force at the contact centre "
                     "acts on gross sliding only; traction_level='ellipse' models sliding, spin and curvature losses"),
     "none": "point traction level without friction: no tangential losses at all, only the normal damping",
 }
+
+#: Summary entries that are step noise at the point level with the Cundall-Strack spring (friction="history"),
+#: not converged losses: its friction power falls about in proportion to dt, the normal damping with dt^2
+#: (docs/theory/dynamics.md, "What each traction level models"; python validation/step_convergence_losses.py).
+#: Such a summary says
+#: ``friction_outputs_converged: False``, lists them under ``not_converged`` and marks their descriptions;
+#: ``power_loss.X`` is the component X of ``power_loss``.
+POINT_STEP_DEPENDENT = ("friction_torque", "friction_power", "dissipation", "dissipation_inner", "dissipation_outer",
+                        "power_loss.contact_traction_inner", "power_loss.contact_traction_outer",
+                        "power_loss.contact_damping", "power_loss_total")
+#: How a summary marks the entries of POINT_STEP_DEPENDENT (descriptions, the CLI's table).
+NOT_CONVERGED_MARK = ("not converged: step-dependent at the point level; "
+                      "use traction_level='ellipse' (--traction-level ellipse)")
 
 #: Unit of every scalar summary entry (speeds are angular speeds in rad/s).
 SUMMARY_UNITS = {
@@ -118,7 +133,8 @@ SUMMARY_UNITS = {
     "friction_power": GLOBAL_UNITS["friction_power"], **CONTACT_SUMMARY_UNITS, "steps": "-", "dt": "s", "t_end": "s", "wall_s": "s", "stable_dt": "s",
     "window.t0": "s", "window.t1": "s", "drive_power": "W", "load_power": "W", "dissipation": "W",
     "kinetic_energy_change": "J", "energy_residual": "-", "power_loss": "W per component",
-    "power_loss_total": "W", "not_modelled": "text", "energy_check": "W, - (residual), text"}
+    "power_loss_total": "W", "not_modelled": "text", "energy_check": "W, - (residual), text",
+    "friction_outputs_converged": "-", "not_converged": "summary keys"}
 
 #: What the loss and energy keys of the summary mean (docs/theory/dynamics.md,
 #: "Losses and the energy balance"); every summary carries it as ``descriptions``.
@@ -156,6 +172,10 @@ SUMMARY_DESCRIPTIONS = {
                     "drive_power (residual, passed; split_error: the sampled components against the engine's "
                     "cumulative dissipated_work)",
     "steady": "drift and oscillation of the reported quantities over the window against the thresholds named in it",
+    "friction_outputs_converged": "False at the point level with friction='history': its friction and damping "
+                                  "outputs (listed under not_converged) are step noise that falls about in "
+                                  "proportion to dt, not a converged loss; use traction_level='ellipse' for losses",
+    "not_converged": "summary keys whose values are not converged in the step (see friction_outputs_converged)",
 }
 
 #: Protocol phases (Scenario: start-up ramp, steady phase, slow-down ramp, rest).
@@ -475,6 +495,12 @@ class Results:
         period = 2.0 * math.pi / (self.bearing.n_balls * cage) if cage > 0.0 else None
         return steadiness(t, q, ramp=" and ".join(ramps) or None, period=period)
 
+    def friction_outputs_converged(self) -> bool:
+        """False at the point level with the Cundall-Strack spring (``friction="history"``), whose friction and
+        damping outputs (:data:`POINT_STEP_DEPENDENT`) are step noise; True otherwise (the ellipse level's
+        friction torque moves by 0.3 % from 2 to 0.5 us, docs/theory/dynamics.md)."""
+        return not (self.scenario.traction_level == "point" and self.scenario.friction == "history")
+
     def traction_model_name(self) -> str:
         """The tangential law in use: the catalogue traction model of the
         ellipse level, or the point level's friction law and its mu."""
@@ -640,6 +666,9 @@ class Results:
             "losses_modelled": self.losses_lists()[0],
             "losses_not_modelled": self.losses_lists()[1],
         }
+        converged = self.friction_outputs_converged()
+        out["friction_outputs_converged"] = converged
+        out["not_converged"] = [] if converged else list(POINT_STEP_DEPENDENT)
         if level == "point":
             out["note"] = POINT_LEVEL_NOTES[self.scenario.friction]
             if self.scenario.rolling_resistance:
@@ -653,6 +682,9 @@ class Results:
             out["phases"] = self._phase_summaries()
         out["units"] = dict(SUMMARY_UNITS, **(CAGE_SUMMARY_UNITS if self.scenario.cage == "rigid" else {}))
         out["descriptions"] = dict(SUMMARY_DESCRIPTIONS)
+        for key in out["not_converged"]:
+            text = out["descriptions"].get(key.split(".")[0], "")
+            out["descriptions"][key] = f"({NOT_CONVERGED_MARK}) {text}".rstrip()
         if not steady["steady"]:
             reasons = steady["reason"].split("; ")
             more = f"; and {len(reasons) - 3} more (summary['steady'])" if len(reasons) > 3 else ""

@@ -68,7 +68,11 @@ acceleration and speed as series (VelocityVerlet; ``results().signal(name)``).
 Solvers, both modes: VelocityVerlet (recommended; one force evaluation per
 step, so the Cundall-Strack history is exactly the reference engine's) and
 RK44 with ``friction="regularized"`` (history-free; the fast mode advances
-the balls at RK44's increasing stage times). ExplicitEuler is refused
+the balls at RK44's increasing stage times): with ``friction="history"``
+the body mode refuses the explicit solvers that evaluate more than once per
+step (RK44, ExplicitMidpoint, ...; InputError naming ``solverType``), the
+rule and message of ``Scenario(integrator="rk4")``
+(:func:`~exudyn_bearing.model.scenario.history_friction_error`). ExplicitEuler is refused
 (InputError naming ``solverType``, in ``SimulationSettings`` and at a run's
 first evaluation): its stability region leaves out the undamped contact
 oscillation, which it holds only at about 1/16 of the stable step.
@@ -402,7 +406,7 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
             check_positive("stepSize", stepSize)
         ss = exu.SimulationSettings()
         h = float(stepSize or self.scenario.dt * (self.subSteps if self.mode == "fast" else 1))
-        err = solver_error(self.mode, name, h, self.stable.dt, self.scenario.cage_damping)
+        err = solver_error(self.mode, name, h, self.stable.dt, self.scenario.cage_damping, self.scenario.friction)
         if err is not None:
             raise err
         if solverType != "VelocityVerlet" and (self._sig is not None

@@ -7,11 +7,14 @@ so both engines can be compared on identical input.
 """
 from __future__ import annotations
 
+import sys
 import time
 
 from ...data import InputError, Lubricant, load_bearing
 from ...model.initial_state import initial_state, ring_mass_estimate
-from ...model.scenario import Scenario
+from ...model.memory import ESTIMATE_AFTER_S, wall_time_message
+from ...model.record import RunInterrupted
+from ...model.scenario import INTEGRATOR_SOLVERS, Scenario
 from ...model.stability import SimulationError, stable_step
 from .console import filter_exudyn_notes
 from .element import BallBearingElement
@@ -19,7 +22,7 @@ from .element import BallBearingElement
 __all__ = ["ExudynEngine", "SOLVERS", "solve_dynamic"]
 
 #: Scenario integrator -> Exudyn explicit solver.
-SOLVERS = {"verlet": "VelocityVerlet", "rk4": "RK44"}
+SOLVERS = INTEGRATOR_SOLVERS
 
 
 def element_cage(scenario: Scenario) -> bool:
@@ -32,13 +35,14 @@ def element_cage(scenario: Scenario) -> bool:
 
 
 def _element_error(exc):
-    """The SimulationError or InputError a user function of the element
-    raised, found in the chain of the exception Exudyn raised instead
-    (Exudyn re-raises a user function's exception as its own ModelError, a
-    ValueError, with the original as the cause); None if there is none."""
+    """The SimulationError, InputError or KeyboardInterrupt (Ctrl-C during
+    the user function) a user function of the element raised, found in the
+    chain of the exception Exudyn raised instead (Exudyn re-raises a user
+    function's exception as its own ModelError, a ValueError, with the
+    original as the cause); None if there is none."""
     seen = set()
     while exc is not None and id(exc) not in seen:
-        if isinstance(exc, (SimulationError, InputError)):
+        if isinstance(exc, (SimulationError, InputError, KeyboardInterrupt)):
             return exc
         seen.add(id(exc))
         exc = exc.__cause__ or exc.__context__
@@ -52,9 +56,9 @@ def solve_dynamic(mbs, settings, solverType=None, quiet=True):
     clean for --json); otherwise its known-benign notes are dropped.
 
     A blow-up of the bearing element raises
-    :class:`~exudyn_bearing.model.stability.SimulationError` and bad input it
-    detects during the solve :class:`~exudyn_bearing.data.InputError`, not
-    the ModelError Exudyn wraps them in."""
+    :class:`~exudyn_bearing.model.stability.SimulationError`, bad input it
+    detects during the solve :class:`~exudyn_bearing.data.InputError` and
+    Ctrl-C KeyboardInterrupt, not the ModelError Exudyn wraps them in."""
     with filter_exudyn_notes(quiet=quiet):
         try:
             return mbs.SolveDynamic(settings, solverType=solverType or settings.timeIntegration.solverType)
@@ -113,17 +117,54 @@ class ExudynEngine:
         mbs.Assemble()
         self.stable = self.element.stable
 
+    def _estimator(self, n_steps):
+        """The element's per-sample hook that measures the step cost (``n_steps`` steps of the balls in the
+        run) from the first sample on and, once ESTIMATE_AFTER_S have passed, says a long run's estimated wall
+        time (once) and removes itself."""
+        s, first = self.scenario, []
+
+        def on_sample(t):
+            now = time.perf_counter()
+            if not first:
+                first[:] = [now, t]
+                return
+            wall = now - first[0]
+            if wall < ESTIMATE_AFTER_S:
+                return
+            self.element._on_sample = None
+            msg = wall_time_message(n_steps, max(1, round((t - first[1]) / s.dt)), wall, s, self.stable.dt)
+            if msg:
+                print(f"[exudyn] {msg}", file=sys.stderr, flush=True)
+
+        return on_sample
+
     def run(self, progress=None):
+        """Solve the scenario; returns the RunRecord. ``progress``: Exudyn's progress output when True; unless
+        False, a run estimated to take over LONG_RUN_S says so on stderr (the step cost measured over its
+        first ESTIMATE_AFTER_S, :func:`~exudyn_bearing.model.memory.wall_time_message`). Ctrl-C raises
+        :class:`~exudyn_bearing.model.record.RunInterrupted` with the samples so far."""
         s = self.scenario
         settings = self.element.SimulationSettings(s.t_end, solverType=SOLVERS[s.integrator])
         if progress:
             settings.timeIntegration.verboseMode = 1
+        if progress is not False:
+            self.element._on_sample = self._estimator(int(round(s.t_end / s.dt)))  # the balls' steps
         wall0 = time.perf_counter()
         try:
             solve_dynamic(self.mbs, settings, quiet=not progress)
         except SimulationError as exc:  # the scenario names the element's stepSize dt
             msg = str(exc)
             raise SimulationError("dt" + msg[len("stepSize"):] if msg.startswith("stepSize") else msg) from None
+        except KeyboardInterrupt:  # Ctrl-C: the samples so far go with it (the reference engine's RunInterrupted)
+            try:
+                rec = self.element.record(wall_s=time.perf_counter() - wall0)
+                rec.scenario = self.scenario
+            except RuntimeError:  # no sample yet
+                rec = None
+            t = float(rec.data["t"][-1]) if rec is not None and len(rec.data["t"]) else 0.0
+            raise RunInterrupted(t, s.t_end, rec) from None
+        finally:
+            self.element._on_sample = None
         rec = self.element.record(wall_s=time.perf_counter() - wall0,
                                   steps=settings.timeIntegration.numberOfSteps)
         rec.scenario = self.scenario  # the run's protocol and solver, not the element's model options only

@@ -13,6 +13,7 @@ from ...data import InputError
 from ...model.contact import forces
 from ...model.layout import H_E1
 from ...model.load_range import pressure_excess
+from ...model.scenario import history_friction_error
 from ...model.solver_types import IMPLICIT_SOLVERS, UNSTABLE_SOLVERS, settings_solver, unstable_solver_error
 from ...model.stability import FAST_STEP_SHARE, StepSizeWarning, runaway_error, step_warning
 from ...physics import hertz
@@ -40,13 +41,20 @@ def implicit_solver_error(solver):
                       "implicit solvers")
 
 
-def solver_error(mode, solver, step=None, stable=None, cage_damping="explicit"):
+def solver_error(mode, solver, step=None, stable=None, cage_damping="explicit", friction=None):
     """The InputError for a ``solver`` (a name) the element in ``mode`` cannot run with at the Exudyn step
     ``step`` [s] (None: not known yet) and the stable-step estimate ``stable`` [s], else None.
     ``cage_damping="implicit"`` (the backward-Euler damping of one velocity-Verlet step of the balls) needs
-    VelocityVerlet in the body mode; the fast mode's balls always take velocity-Verlet sub-steps."""
+    VelocityVerlet in the body mode; the fast mode's balls always take velocity-Verlet sub-steps.
+    ``friction="history"`` refuses, in the body mode (where the solver integrates the balls), the explicit
+    solvers with several evaluations per step (:func:`~exudyn_bearing.model.scenario.history_friction_error`,
+    the rule ``Scenario`` applies to ``integrator="rk4"``); the fast mode's balls take velocity-Verlet
+    sub-steps under any solver. None: not checked."""
     err = unstable_solver_error(solver, "the ball contacts", "VelocityVerlet (recommended), RK33 or RK44",
                                 " unless the step is about 1/16 of the stable-step estimate")
+    if err is not None:
+        return err
+    err = None if friction is None or mode == "fast" else history_friction_error(friction, solver, "solverType")
     if err is not None:
         return err
     if solver == "ExplicitMidpoint" and mode != "fast" and step is not None and step > MIDPOINT_STEP_RATIO * stable:
@@ -144,6 +152,9 @@ def _clock_entry(k, doc):
 class UserFunctionsMixin:
     """Part of :class:`~.element.BallBearingElement`: the user functions."""
 
+    #: Called with the time of every sample while set (the Exudyn engine's wall-time estimate), else None.
+    _on_sample = None
+
     _t_trial = _clock_entry(EK.CLK_TRIAL, "Body mode: the latest time evaluated [s] (-inf: none yet).")
     _t_commit = _clock_entry(EK.CLK_COMMIT, "Body mode: the time of the committed Cundall-Strack history [s].")
     _t_energy = _clock_entry(EK.CLK_ENERGY, "Body mode: the last time whose powers entered the energy integrals [s].")
@@ -173,7 +184,7 @@ class UserFunctionsMixin:
         solver = settings_solver(settings)
         ti = getattr(settings, "timeIntegration", None)
         step = ((ti.endTime - ti.startTime) / max(1, ti.numberOfSteps)) if ti is not None else None
-        err = solver_error(self.mode, solver, step, self.stable.dt, self.scenario.cage_damping)
+        err = solver_error(self.mode, solver, step, self.stable.dt, self.scenario.cage_damping, self.scenario.friction)
         if err is not None:
             raise err
         if self.scenario.cage_damping == "implicit" and step is not None:
@@ -414,6 +425,8 @@ class UserFunctionsMixin:
             evidence[0] = worst
         if want:
             self._sample(t_sample, rings)
+            if self._on_sample is not None:
+                self._on_sample(t_sample)
         if self._sig is not None:
             self._signal_sample(t)
 
