@@ -123,11 +123,12 @@ def _forces(eng, xb, vb, wb, xc, vc):
     return out
 
 
-def _balls_on_pitch_circle(eng):
+def _balls_on_pitch_circle(eng, angle=0.0):
     """Balls at rest midway between the races on the pitch circle (no race contact: the 6208 has no
-    clearance, so they touch with zero overlap), pocket j at ball j, the cage centred and at rest."""
+    clearance, so they touch with zero overlap), pocket j at ball j for the cage angle ``angle`` (which the
+    caller sets in xc[1, 0]), the cage centred and at rest."""
     b, z = eng.bearing, eng.bearing.n_balls
-    psi = 2.0 * math.pi * np.arange(z) / z
+    psi = angle + 2.0 * math.pi * np.arange(z) / z
     xb = np.stack([b.pitch_radius * np.cos(psi), b.pitch_radius * np.sin(psi), np.zeros(z)], axis=1)
     return xb, np.zeros((z, 3)), np.zeros((z, 3)), np.zeros((z, 3)), np.zeros((z, 3))
 
@@ -289,3 +290,52 @@ def test_whirl_of_a_circular_orbit():
     assert radius == pytest.approx(1e-5, rel=1e-6)
     assert ratio == pytest.approx(rate / cage, rel=1e-9)
     assert math.isnan(whirl(t, np.zeros((1001, 2)), cage)[1])
+
+
+def test_gravity_and_unbalance_act_on_the_cage_and_count_as_drive():
+    # the weight m_c g and the unbalance's centrifugal force U omega_c^2 along the cage's angle, at its centre;
+    # their power enters the drive power (the energy balance stays closed)
+    b = eb.catalog["6208"]
+    import dataclasses
+
+    cage = dataclasses.replace(_cage(b), unbalance=2e-5)
+    eng = _engine(cage, gravity=(0.0, -9.81, 0.0))
+    p = eng.params
+    xb, vb, wb, xc, vc = _balls_on_pitch_circle(eng, 0.3)
+    xc[1, 0] = 0.3
+    vc[1, 0] = 200.0
+    vc[0, :2] = (0.002, -0.001)
+    out = _forces(eng, xb, vb, wb, xc, vc)
+    film = short_bearing_force_xy(0.0, 0.0, 0.002, -0.001, 200.0, p[L.P_LAND_ETA], p[L.P_LAND_R], p[L.P_LAND_L],
+                                  p[L.P_LAND_C])
+    mc = p[L.P_MC]
+    ext = np.array([2e-5 * 200.0 ** 2 * math.cos(0.3), mc * -9.81 + 2e-5 * 200.0 ** 2 * math.sin(0.3)])
+    assert out["fc"][0, :2] == pytest.approx(np.array(film, float) + ext, rel=1e-9)
+    assert out["glob"][L.G_CAGE_LOAD_POWER] == pytest.approx(ext @ [0.002, -0.001], rel=1e-9)
+
+
+def test_gravity_and_unbalance_refusals(b6208):
+    with pytest.raises(InputError, match="gravity"):
+        eb.Scenario(cage="rigid", gravity=(0.0, -981.0, 0.0))
+    with pytest.raises(InputError, match="gravity.*rigid"):
+        eb.Scenario(gravity=(0.0, -9.81, 0.0))
+    with pytest.raises(InputError, match="unbalance"):
+        _cage(b6208, unbalance=-1.0)
+    with pytest.raises(InputError, match="unbalance.*kg m"):
+        _cage(b6208, unbalance=1e-3).check_fits(b6208)   # 1 g m: the centre of mass 10 mm off
+
+
+def test_cage_motion_classes():
+    from exudyn_bearing.outputs.cage_summary import cage_motion
+
+    t = np.linspace(0.0, 0.1, 2001)
+    c = 1e-4
+    w = 100.0 * math.pi   # five whole turns in 0.1 s
+    circle = 0.3 * c * np.stack([np.cos(w * t), np.sin(w * t)], axis=1)
+    assert cage_motion(t, circle, c, 200.0)["type"] == "circling"
+    assert cage_motion(t, 0.001 * circle, c, 200.0)["type"] == "centred"
+    rng = np.random.default_rng(1)
+    assert cage_motion(t, 0.3 * c * rng.standard_normal((t.size, 2)), c, 200.0)["type"] == "irregular"
+    m = cage_motion(t, circle, c, 200.0)
+    assert m["orbit_ratio"] == pytest.approx(0.3, rel=1e-3)
+    assert m["centre_speed"] == pytest.approx(0.3 * w / 200.0, rel=1e-3)

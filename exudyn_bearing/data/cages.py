@@ -125,6 +125,9 @@ class RigidCage:
     material : CageMaterial or str
     pocket_friction : float
         Coulomb coefficient mu_c of the ball / pocket contact [-].
+    unbalance : float
+        U [kg m]: the cage's mass times the offset of its centre of mass from its geometric centre, along
+        the cage's angle 0 (default 0: balanced).
     estimated : tuple of str
         Names of the fields that are estimates (:func:`estimated_cage`), not a data sheet's values.
     """
@@ -139,6 +142,7 @@ class RigidCage:
     pocket_shape: str = "cylindrical"
     material: CageMaterial | str = "brass"
     pocket_friction: float = 0.1
+    unbalance: float = 0.0
     estimated: tuple = field(default=())
     source: str = ""
 
@@ -158,6 +162,10 @@ class RigidCage:
             raise InputError(f"pocket_friction: {mu:g} is not a friction coefficient of a lubricated pocket "
                              "(0 to 0.5)")
         object.__setattr__(self, "pocket_friction", mu)
+        u = check_finite("unbalance", self.unbalance)
+        if u < 0.0:
+            raise InputError(f"unbalance: must be >= 0 (mass times offset of the centre of mass, kg m), got {u}")
+        object.__setattr__(self, "unbalance", u)
         object.__setattr__(self, "estimated", tuple(str(x) for x in self.estimated))
         check_text("source", self.source)
         if self.guidance == "ball":
@@ -205,6 +213,10 @@ class RigidCage:
             raise InputError(f"inner_radius: the inner land ({self.inner_radius - self.land_clearance:g} m) is not "
                              f"outside the inner race ({bearing.inner_race_radius:g} m)")
         annulus = self.material.density * math.pi * (self.outer_radius ** 2 - self.inner_radius ** 2) * self.width
+        if self.unbalance > self.mass(bearing) * self.pocket_clearance:
+            raise InputError(f"unbalance: {self.unbalance:.3g} kg m puts the cage's centre of mass more than the pocket "
+                             f"clearance ({self.pocket_clearance:.3g} m) off its centre (mass {self.mass(bearing):.3g} kg; "
+                             "an unbalance is in kg m: 1 g mm is 1e-6 kg m)")
         if not 0.0 < self.mass(bearing) < annulus:
             raise InputError(f"pocket_clearance: the cage's mass {self.mass(bearing):.4g} kg is not between zero "
                              f"and the solid annulus' {annulus:.4g} kg")

@@ -90,9 +90,9 @@ from ..physics.hertz import _curvature_sum_radius, _kfe_fast, _semi_axes, _semi_
 from ..physics.losses import _ehl_rolling_force, _hysteresis_rolling_force, ball_drag_force
 from ..physics.short_bearing import _short_bearing_xy
 from ..physics.friction import _regularized_coulomb
-from .layout import (G_LAND_ECC, G_LAND_FX, G_LAND_FY, G_LAND_POWER, G_POCKET_POWER, P_GUIDANCE, P_IC, P_K_LAND,
+from .layout import (G_CAGE_LOAD_POWER, G_LAND_ECC, G_LAND_FX, G_LAND_FY, G_LAND_POWER, G_POCKET_POWER, P_GUIDANCE, P_IC, P_K_LAND,
                      P_K_POCKET, P_LAND_C, P_LAND_EPS, P_LAND_ETA, P_LAND_L, P_LAND_R, P_MC, P_MU_POCKET,
-                     P_POCKET_GAP, P_POCKET_SHAPE, P_POCKET_VREG, P_RIGID)
+                     P_POCKET_GAP, P_POCKET_SHAPE, P_POCKET_VREG, P_RIGID, P_GX, P_GY, P_GZ, P_UNBALANCE)
 from .layout import HZ_E, HZ_EXP, HZ_F, HZ_FILM_K, HZ_GEO, HZ_K, HZ_LN_U, HZ_LN_W, HZ_N, HZ_RATIO
 from .layout import (D_ROLLRES, G_DRAG_POWER, G_EHL_POWER, G_HYST_POWER, P_ALPHA_H, P_DRAG, P_ETA_MIX, P_RHO_MIX,
                      P_ROLLRES)
@@ -996,9 +996,16 @@ def _rigid_cage(p, xb, vb, wb, xc, vc, rings, fb, tb, fc, fr, glob, cage_load, w
         land_power = -(flx * evx + fly * evy) - t_sh * (wc - w_r) + exf * w_r
         if pen > 0.0:
             land_power -= pen * (ex * evx + ey * evy) / e
-    fc[0, 0] = fcx + flx
-    fc[0, 1] = fcy + fly
-    fc[0, 2] = fcz
+    # gravity and the unbalance's centrifugal force U omega_c^2 along the cage's angle 0 (its angular
+    # acceleration's share, U omega_c', is left out), at the cage's centre; their power counts as drive
+    un = p[P_UNBALANCE] * wc * wc
+    gx = mc * p[P_GX] + un * math.cos(xc[1, 0])
+    gy = mc * p[P_GY] + un * math.sin(xc[1, 0])
+    gz = mc * p[P_GZ]
+    glob[G_CAGE_LOAD_POWER] = gx * ux + gy * uy + gz * uz
+    fc[0, 0] = fcx + flx + gx
+    fc[0, 1] = fcy + fly + gy
+    fc[0, 2] = fcz + gz
     fc[1, 0] = (tcz + t_sh) * mc / p[P_IC]
     glob[G_POCKET_POWER] = pocket_power
     glob[G_LAND_POWER] = land_power
@@ -1196,6 +1203,8 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb,
     glob[G_POWER] = power_sum
     glob[G_DAMP_POWER] = damp_sum
     glob[G_DRIVE_POWER] = _drive_power(rings, fr)
+    if p[P_RIGID] > 0.5:
+        glob[G_DRIVE_POWER] += glob[G_CAGE_LOAD_POWER]
     if want:
         _global_diagnostics(rings, fr, power_sum, worst, glob)
         glob[G_KINETIC] = _kinetic_energy(p, vb, wb, vc)

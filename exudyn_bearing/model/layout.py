@@ -180,6 +180,11 @@ P_LAND_ETA = _entry("land_viscosity", "Pa s", "dynamic viscosity of the land fil
 P_LAND_EPS = _entry("land_crush_eccentricity", "-", "eccentricity ratio beyond which the land film is crushed "
                     "(1 - composite roughness / c): the land contact's penalty takes over")
 P_K_LAND = _entry("k_land", "N/m", "stiffness of the crushed land contact (line contact over the land width)")
+P_GX = _entry("gravity_x", "m/s^2", "gravity on the rigid cage, x (outer-ring frame)")
+P_GY = _entry("gravity_y", "m/s^2", "gravity on the rigid cage, y")
+P_GZ = _entry("gravity_z", "m/s^2", "gravity on the rigid cage, z (bearing axis)")
+P_UNBALANCE = _entry("cage_unbalance", "kg m", "unbalance U of the rigid cage (mass times the offset of its centre of "
+                     "mass, along the cage's angle 0)")
 
 #: All entries of the parameter vector, in index order.
 PARAMETERS: tuple[ParameterEntry, ...] = tuple(_ENTRIES)
@@ -285,23 +290,27 @@ NDIAG = len(DIAG_FIELDS)
 #: forces and moments on cage and ring), both part of ``dissipated_work``;
 #: ``land_fx``, ``land_fy`` the force of the land on the cage,
 #: ``land_eccentricity`` the cage centre's offset from the land over the land
-#: clearance (beyond ``land_crush_eccentricity`` the film is crushed). The rigid
+#: clearance (beyond ``land_crush_eccentricity`` the film is crushed),
+#: ``cage_load_power`` the power of gravity and the unbalance force on the
+#: rigid cage (part of ``drive_power``). The rigid
 #: cage's state rides in the cage-ball arrays: ``xc[0]`` its centre,
 #: ``xc[1, 0]`` its angle, ``vc[0]`` and ``vc[1, 0]`` their rates, the other
 #: rows zero; its kinetic energy counts in ``kinetic_energy``.
 GLOBAL_FIELDS = ("omega", "ring_fx", "ring_fy", "ring_fz", "ring_torque", "friction_power",
                  "max_overlap_ratio", "outer_fx", "outer_fy", "outer_fz", "outer_torque", "damping_power",
                  "drive_power", "drive_work", "dissipated_work", "kinetic_energy", "ehl_rolling_power",
-                 "hysteresis_power", "drag_power", "pocket_power", "land_power", "land_fx", "land_fy", "land_eccentricity")
+                 "hysteresis_power", "drag_power", "pocket_power", "land_power", "land_fx", "land_fy", "land_eccentricity",
+                 "cage_load_power")
 (G_OMEGA, G_RING_FX, G_RING_FY, G_RING_FZ, G_RING_TORQUE, G_POWER, G_WORST, G_OUTER_FX, G_OUTER_FY,
  G_OUTER_FZ, G_OUTER_TORQUE, G_DAMP_POWER, G_DRIVE_POWER, G_DRIVE_WORK, G_DISS_WORK,
  G_KINETIC, G_EHL_POWER, G_HYST_POWER, G_DRAG_POWER, G_POCKET_POWER, G_LAND_POWER, G_LAND_FX,
- G_LAND_FY, G_LAND_ECC) = range(len(GLOBAL_FIELDS))
+ G_LAND_FY, G_LAND_ECC, G_CAGE_LOAD_POWER) = range(len(GLOBAL_FIELDS))
 GLOBAL_UNITS = {"omega": "rad/s", "ring_fx": "N", "ring_fy": "N", "ring_fz": "N", "ring_torque": "N m",
                 "friction_power": "W", "max_overlap_ratio": "-", "outer_fx": "N", "outer_fy": "N", "outer_fz": "N",
                 "outer_torque": "N m", "damping_power": "W", "drive_power": "W", "drive_work": "J",
                 "dissipated_work": "J", "kinetic_energy": "J", "ehl_rolling_power": "W", "hysteresis_power": "W",
-                "drag_power": "W", "pocket_power": "W", "land_power": "W", "land_fx": "N", "land_fy": "N", "land_eccentricity": "-"}
+                "drag_power": "W", "pocket_power": "W", "land_power": "W", "land_fx": "N", "land_fy": "N", "land_eccentricity": "-",
+                "cage_load_power": "W"}
 NGLOBAL = len(GLOBAL_FIELDS)
 
 # -- condition-monitoring signals --------------------------------------------

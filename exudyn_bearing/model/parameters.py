@@ -110,6 +110,8 @@ def _set_rigid_cage(p, b, s, lub):
     p[L.P_MU_POCKET] = rc.pocket_friction
     p[L.P_POCKET_VREG] = s.regularizing_speed
     p[L.P_GUIDANCE] = GUIDANCES.index(rc.guidance)
+    p[L.P_GX], p[L.P_GY], p[L.P_GZ] = s.gravity
+    p[L.P_UNBALANCE] = rc.unbalance
     if rc.guidance != "ball":
         p[L.P_LAND_R] = rc.guide_radius
         p[L.P_LAND_C] = rc.land_clearance

@@ -112,6 +112,12 @@ class Scenario:
         Geometry and material of the rigid cage (``exudyn_bearing.data.cages``);
         None: :func:`~exudyn_bearing.data.cages.estimated_cage` of the bearing
         (outer-land guided brass, every geometric value estimated).
+    gravity : (g_x, g_y, g_z)
+        Acceleration of gravity [m/s^2] in the outer-ring frame (the bearing
+        axis is z: a horizontal shaft with gravity along -y is (0, -9.81, 0),
+        a vertical one (0, 0, -9.81)), acting on the rigid cage (its weight
+        decides where it rides at low speed); the balls' and rings' weights,
+        far below their contact loads, are left out. Default none.
     lubrication : bool
         Lambda-switched damping and friction (True) or constant mu and
         hysteretic damping (False).
@@ -250,6 +256,7 @@ class Scenario:
     Pd: float | None = None
     cage: bool | str = True
     rigid_cage: object = None
+    gravity: tuple = (0.0, 0.0, 0.0)
     lubrication: bool = True
     mu_dry: float = 0.1
     friction: str = "history"
@@ -298,6 +305,17 @@ class Scenario:
             if getattr(self, name) is not None:
                 object.__setattr__(self, name, check_number(name, getattr(self, name)))
         object.__setattr__(self, "cage", cage_model(self.cage))
+        try:
+            grav = tuple(check_number("gravity", x) for x in self.gravity)
+        except TypeError:
+            raise InputError(f"gravity: expected (g_x, g_y, g_z) [m/s^2], got {self.gravity!r}") from None
+        if len(grav) != 3 or not all(math.isfinite(x) for x in grav) or math.hypot(*grav) > 100.0:
+            raise InputError(f"gravity: expected three finite components [m/s^2] of at most 100 m/s^2 in magnitude "
+                             f"(Earth: 9.81), got {self.gravity!r}")
+        if any(grav) and self.cage != "rigid":
+            raise InputError("gravity: acts on the rigid cage only (cage='rigid'); the balls' and rings' weights are "
+                             "left out")
+        object.__setattr__(self, "gravity", grav)
         if self.rigid_cage is not None:
             if not isinstance(self.rigid_cage, RigidCage):
                 raise InputError(f"rigid_cage: expected a RigidCage (exudyn_bearing.data.cages), got "

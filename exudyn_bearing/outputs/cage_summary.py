@@ -9,7 +9,8 @@ import numpy as np
 
 from ..model import layout as L
 
-__all__ = ["rigid_cage_summary", "whirl", "CAGE_SUMMARY_UNITS", "CAGE_LOSSES_NOT_MODELLED"]
+__all__ = ["rigid_cage_summary", "whirl", "cage_motion", "CAGE_SUMMARY_UNITS", "CAGE_LOSSES_NOT_MODELLED",
+           "CENTRED_ORBIT", "REGULAR_RADIUS_VARIATION", "REGULAR_DIRECTION_SHARE"]
 
 #: Units of the keys of :func:`rigid_cage_summary`.
 CAGE_SUMMARY_UNITS = {
@@ -24,7 +25,43 @@ CAGE_SUMMARY_UNITS = {
     "land_eccentricity_max": "- (largest offset of the cage from the land over the land clearance)",
     "cage_power_pocket": "W (time mean: friction and damping of the ball / pocket contacts)",
     "cage_power_land": "W (time mean: land film and contact)",
+    "cage_motion": "centred, circling or irregular (docs/theory/cage.md#cage-motion)",
+    "cage_orbit_ratio": "- (mean distance of the cage centre from its mean position over the land clearance, or "
+                        "the pocket clearance of a ball-guided cage)",
+    "cage_orbit_variation": "- (standard deviation of that distance over its mean)",
+    "cage_centre_speed": "- (RMS speed of the cage centre over the clearance times the cage speed)",
 }
+
+#: :func:`cage_motion`: an orbit whose mean radius is below this share of the clearance is ``centred``;
+CENTRED_ORBIT = 0.02
+#: a larger one is ``circling`` when its radius varies by less than this share of its mean
+REGULAR_RADIUS_VARIATION = 0.5
+#: and at least this share of its steps turns in the orbit's mean direction; otherwise ``irregular``.
+REGULAR_DIRECTION_SHARE = 0.9
+
+
+def cage_motion(t, xy, clearance, cage_speed) -> dict:
+    """Classify the orbit ``xy`` (n, 2) [m] of the cage centre sampled at ``t`` (docs/theory/cage.md#cage-motion):
+    ``centred`` (mean distance r from the orbit's mean position below :data:`CENTRED_ORBIT` of the
+    ``clearance``), ``circling`` (a regular orbit: r varies by less than :data:`REGULAR_RADIUS_VARIATION` of its
+    mean and at least :data:`REGULAR_DIRECTION_SHARE` of the steps turn the same way) or ``irregular``; with
+    the measures ``orbit_ratio`` (mean r / clearance), ``orbit_variation`` (std r / mean r) and
+    ``centre_speed`` (RMS speed of the centre / (clearance |cage speed|))."""
+    t = np.asarray(t, float)
+    d = np.asarray(xy, float) - np.mean(xy, axis=0)
+    r = np.hypot(d[:, 0], d[:, 1])
+    mean_r = float(np.mean(r))
+    out = {"orbit_ratio": mean_r / clearance, "orbit_variation": math.nan, "centre_speed": math.nan}
+    if len(t) > 2 and cage_speed:
+        v = np.diff(xy, axis=0) / np.diff(t)[:, None]
+        out["centre_speed"] = float(np.sqrt(np.mean(np.sum(v * v, axis=1)))) / (clearance * abs(cage_speed))
+    if mean_r < CENTRED_ORBIT * clearance or len(t) < 3:
+        return {"type": "centred", **out}
+    out["orbit_variation"] = float(np.std(r)) / mean_r
+    turn = np.diff(np.unwrap(np.arctan2(d[:, 1], d[:, 0])))
+    share = float(np.mean(np.sign(turn) == np.sign(np.sum(turn)))) if np.any(turn) else 0.0
+    regular = out["orbit_variation"] < REGULAR_RADIUS_VARIATION and share >= REGULAR_DIRECTION_SHARE
+    return {"type": "circling" if regular else "irregular", **out}
 
 #: Cage losses the rigid cage leaves out (part of ``not_modelled``).
 CAGE_LOSSES_NOT_MODELLED = ("cage windage and the oil's churning by the cage",
@@ -71,4 +108,9 @@ def rigid_cage_summary(data, w: slice, params, cage_speed: float, kinematic_cage
     if params[L.P_GUIDANCE] < 0.5:
         for key in ("land_force_mean", "land_eccentricity_max", "cage_power_land"):
             out[key] = None
+    clearance = params[L.P_LAND_C] if params[L.P_GUIDANCE] > 0.5 else params[L.P_POCKET_GAP]
+    motion = cage_motion(t, xc[:, 0, :2], clearance, cage_speed)
+    out["cage_motion"] = motion["type"]
+    for key in ("orbit_ratio", "orbit_variation", "centre_speed"):
+        out[f"cage_{key}"] = None if math.isnan(motion[key]) else motion[key]
     return out
