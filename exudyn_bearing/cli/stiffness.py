@@ -95,6 +95,8 @@ def _plot(c, png):
 
 
 def run(args):
+    from .static import warn_speed
+
     if not 1 <= args.phases <= 64:
         raise InputError(f"--phases: expected an integer in [1, 64], got {args.phases}")
     if args.plot and args.speeds is None and args.rpms is None:
@@ -109,6 +111,7 @@ def run(args):
     header = solver_header(lub, traction, args.ring_growth)
     if args.speeds is not None or args.rpms is not None:
         speeds = np.array(args.speeds) if args.speeds is not None else np.array(args.rpms) * RPM
+        warn_speed(b, float(np.max(np.abs(speeds))))  # the limiting-speed check (physics/rating_life.py)
         with explained(b):
             c = bearing_coefficients(b, speeds, n_phases=args.phases, **loads, **opts)
         d = c.to_dict()
@@ -132,6 +135,7 @@ def run(args):
             print(f"plot: {d['plot']}")
         return
     omega = args.omega if args.omega is not None else (args.rpm * RPM if args.rpm is not None else 0.0)
+    warn_speed(b, omega)
     with explained(b):
         if args.phases != 1:
             c = bearing_coefficients(b, [omega], n_phases=args.phases, **loads, **opts)
