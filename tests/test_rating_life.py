@@ -219,3 +219,12 @@ def test_quasistatic_solution_to_dict_with_rating():
     for key in ("C", "C0", "s0", "L10", "L10h", "L10m", "L10mr", "L10mr_speed", "a_iso", "kappa"):
         assert d[key] is not None and key in d["units"]
     assert "C" not in s.to_dict()
+
+
+def test_quasistatic_json_keys(capsys):
+    assert main(["quasistatic", "6208", "--Fr", "3000", "--omega", "100", "--reliability", "95", "--json"]) == 0
+    d = json.loads(capsys.readouterr().out)
+    for key in ("C", "C0", "s0", "L10", "L10h", "L10m", "L10mr", "L10mr_speed", "a_iso", "kappa"):
+        assert d[key] is not None and key in d["units"], key
+    assert d["reliability"] == 95.0 and d["a1"] == pytest.approx(R.reliability_factor(95.0))
+    assert d["L10h"] == pytest.approx(d["L10"] * 1e6 / (60 * 100 * 30 / math.pi))

@@ -634,7 +634,7 @@ def rating_life(bearing, loads, omega=None, *, omega_outer=0.0, reliability=DEFA
     l10 = basic_rating_life(c, p)
     a1 = reliability_factor(reliability)
     ec = contamination_factor(contamination, b.pitch_diameter)
-    cname = contamination if isinstance(contamination, str) else f"e_C = {ec:g} (given)"
+    cname = contamination if isinstance(contamination, str) else "e_C given"
     cu = fatigue_load_limit(c0, b.pitch_diameter)
     n = None if omega is None else abs(float(omega) - float(omega_outer)) * 30.0 / math.pi
     n = n or None
