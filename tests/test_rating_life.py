@@ -228,3 +228,12 @@ def test_quasistatic_json_keys(capsys):
         assert d[key] is not None and key in d["units"], key
     assert d["reliability"] == 95.0 and d["a1"] == pytest.approx(R.reliability_factor(95.0))
     assert d["L10h"] == pytest.approx(d["L10"] * 1e6 / (60 * 100 * 30 / math.pi))
+
+
+def test_outside_the_tables_reports_no_rating_instead_of_failing(capsys):
+    b = BallBearing.from_dimensions(9, 12.6e-3, 60.6e-3, 0.52, 0.53, free_contact_angle=math.radians(50))
+    with pytest.warns(R.RatingLifeWarning, match="45 deg"):
+        r = R.rating_life(b, (1000.0, 1000.0), 300.0)
+    assert r.C is None and r.L10 is None and r.a1 == 1.0
+    assert main(["static", "6208", "--Fr", "3000", "--temperature", "330"]) == 2
+    assert "--temperature" in capsys.readouterr().err

@@ -116,16 +116,20 @@ def rating_of(args, b, s, lubricant, temperature, temps=None):
     """The rating life of solution ``s`` (:func:`exudyn_bearing.physics.rating_life.rating_life`): at speed
     with the zero-speed solution of the same loads, clearance and held DOFs as ISO/TS 16281's distribution
     (``L10mr``) beside the one at speed (``L10mr_speed``). ``temperature``: the lubricant's [K] for kappa."""
-    ref = None
+    ref, why = None, None
     if s.omega or s.omega_outer:
-        with explained(b):
+        try:
             ref = solve_quasistatic(b, args.Fr, args.Fa, args.Mx, args.My, Fy=args.Fy, omega=0.0, fit=args.fit,
                                     temperatures=temps, fixed=fixed_from_args(args), hertz_method=args.hertz,
                                     stiffness=False)
+        except InputError as exc:  # the loads need the speed's equilibrium (e.g. over the shoulder at rest)
+            why = f"L10r, L10mr: the zero-speed load distribution of these loads is not solved ({exc})"
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", RatingLifeWarning)  # printed with the summary (rating_warnings)
-        return rating_life(b, s, reference=ref, temperature=temperature, lubricant=lubricant,
-                           **rating_options(args))
+        r = rating_life(b, s, reference=ref, temperature=temperature, lubricant=lubricant, **rating_options(args))
+    if why:
+        r.rating_warnings.append(why)
+    return r
 
 
 def run_thermal(args, b, omega, traction):

@@ -163,6 +163,9 @@ def run(args):
     omega = omega_from_args(args)
     if omega is not None:
         warn_speed(b, omega)
+    elif args.temperature is not None:
+        raise InputError("--temperature: sets the lubricant temperature of kappa, which needs a speed; add --omega "
+                         "or --rpm (or leave --temperature out)")
     with explained(b), warnings.catch_warnings():
         warnings.simplefilter("ignore", RatingLifeWarning)  # printed below (rating_warnings)
         res = static_result(b, args.Fr, args.Fa, args.Mx, args.My, args.tilt, omega, args.film, args.hertz,

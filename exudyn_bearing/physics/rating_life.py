@@ -23,7 +23,7 @@ from __future__ import annotations
 import math
 import re
 import warnings
-from dataclasses import asdict, dataclass, field
+from dataclasses import MISSING, asdict, dataclass, field, fields
 
 import numpy as np
 from scipy.optimize import brentq
@@ -36,7 +36,7 @@ from . import hertz
 from .geometry import raceway_radii
 from .lubricant_properties import properties_at
 
-__all__ = ["RatingLife", "RatingLifeWarning", "SpeedLimitWarning", "RATING_UNITS", "DEFAULT_RELIABILITY",
+__all__ = ["RatingLife", "RatingLifeWarning", "RatingScopeError", "SpeedLimitWarning", "RATING_UNITS", "DEFAULT_RELIABILITY",
            "DEFAULT_CONTAMINATION", "B_M", "MAX_A_ISO", "SPEED_LIMITS", "MAX_CONTACT_PRESSURE_C0",
            "load_rating_factor", "conformity_factor", "dynamic_load_rating", "static_load_rating",
            "static_load_rating_hertz", "equivalent_dynamic_load", "equivalent_static_load", "basic_rating_life",
@@ -107,6 +107,11 @@ class SpeedLimitWarning(UserWarning):
     """A speed factor n d_m above the limits of :data:`SPEED_LIMITS`."""
 
 
+class RatingScopeError(InputError):
+    """A bearing the standards' tables do not cover (D_w cos(alpha) / D_pw beyond the tables, a contact angle
+    above 45 deg): :func:`rating_life` reports no rating for it instead of failing the run."""
+
+
 def _mm(x):
     return 1e3 * float(x)
 
@@ -114,7 +119,7 @@ def _mm(x):
 def _interp(table, x, name, what):
     xs, ys = np.array([r[0] for r in table]), np.array([r[1] for r in table])
     if not xs[0] - 1e-12 <= x <= xs[-1] + 1e-12:
-        raise InputError(f"{name}: {what} = {x:.4g} lies outside the standard's table ({xs[0]:g} to {xs[-1]:g})")
+        raise RatingScopeError(f"{name}: {what} = {x:.4g} lies outside the standard's table ({xs[0]:g} to {xs[-1]:g})")
     return float(np.interp(x, xs, ys))
 
 
@@ -216,7 +221,7 @@ def equivalent_dynamic_load(radial_load, axial_load, contact_angle, c0, f0):
     fr, fa = float(radial_load), abs(float(axial_load))
     deg = _angle_deg(contact_angle)
     if deg > 45.0 + 1e-9:
-        raise InputError(f"free_contact_angle: ISO 281 Table 3 covers angular-contact ball bearings up to 45 deg, "
+        raise RatingScopeError(f"free_contact_angle: ISO 281 Table 3 covers angular-contact ball bearings up to 45 deg, "
                          f"got {deg:.3g} deg")
     rel = f0 * fa / c0 if c0 > 0 else 0.0
 
@@ -486,26 +491,26 @@ class RatingLife:
     10^6 revolutions and h); :meth:`to_dict` with :data:`RATING_UNITS`. None where the input does not give a
     value (no speed: no hours and no kappa)."""
 
-    C: float
-    C0: float
-    C0_iso76: float
-    C0_hertz: float
-    C0_method: str
-    C_method: str
-    f_c: float
-    f_0: float
-    C_u: float
-    Fr_bearing: float
-    Fa_bearing: float
-    P: float
-    X: float
-    Y: float
-    e: float
-    P0: float
-    s0: float
+    C: float | None
+    C0: float | None
+    C0_iso76: float | None
+    C0_hertz: float | None
+    C0_method: str | None
+    C_method: str | None
+    f_c: float | None
+    f_0: float | None
+    C_u: float | None
+    Fr_bearing: float | None
+    Fa_bearing: float | None
+    P: float | None
+    X: float | None
+    Y: float | None
+    e: float | None
+    P0: float | None
+    s0: float | None
     s0_pressure: float | None
     p_max: float | None
-    L10: float
+    L10: float | None
     L10h: float | None
     reliability: float
     a1: float
@@ -539,6 +544,8 @@ class RatingLife:
         """Lines for the command line."""
         def f(v, fmt=".4g"):
             return "n/a" if v is None else format(v, fmt)
+        if self.C is None:
+            return ["load ratings and rating lives: not computed"] + [f"warning: {w}" for w in self.rating_warnings]
         lines = [f"load ratings: C = {self.C / 1e3:.2f} kN ({self.C_method}), C0 = {self.C0 / 1e3:.2f} kN "
                  f"({self.C0_method}); ISO 76 table {self.C0_iso76 / 1e3:.2f} kN, 4.2 GPa with the bearing's "
                  f"grooves {self.C0_hertz / 1e3:.2f} kN; C_u = {self.C_u / 1e3:.3g} kN (C0/27, ISO 281 B.3.2.2)",
@@ -618,26 +625,38 @@ def rating_life(bearing, loads, omega=None, *, omega_outer=0.0, reliability=DEFA
         omega = solution.omega if omega is None else omega
         omega_outer = solution.omega_outer
     a0 = b.free_contact_angle
-    c, fc, c_method = dynamic_load_rating(b.n_balls, b.ball_diameter, b.pitch_diameter, a0, b.inner_conformity,
-                                          b.outer_conformity)
-    c0_iso, f0 = static_load_rating(b.n_balls, b.ball_diameter, b.pitch_diameter, a0)
-    c0_h = static_load_rating_hertz(b)
-    fi0, fe0 = T.STANDARD_CONFORMITY
-    if b.inner_conformity <= fi0 + 1e-9 and b.outer_conformity <= fe0 + 1e-9:
-        c0, c0_method = c0_iso, "ISO 76 Table 1"
-    else:
-        c0, c0_method = c0_h, ("4.2 GPa with the bearing's grooves (ISO 76's criterion; its table assumes grooves "
-                               "within 0.52 / 0.53)")
-    p, x, y, e = equivalent_dynamic_load(fr, fa, a0, c0, f0)
-    p0 = equivalent_static_load(fr, fa, a0)
-    s0 = c0 / p0 if p0 > 0 else math.inf
-    l10 = basic_rating_life(c, p)
     a1 = reliability_factor(reliability)
     ec = contamination_factor(contamination, b.pitch_diameter)
     cname = contamination if isinstance(contamination, str) else "e_C given"
-    cu = fatigue_load_limit(c0, b.pitch_diameter)
     n = None if omega is None else abs(float(omega) - float(omega_outer)) * 30.0 / math.pi
     n = n or None
+    try:
+        c, fc, c_method = dynamic_load_rating(b.n_balls, b.ball_diameter, b.pitch_diameter, a0,
+                                              b.inner_conformity, b.outer_conformity)
+        c0_iso, f0 = static_load_rating(b.n_balls, b.ball_diameter, b.pitch_diameter, a0)
+        c0_h = static_load_rating_hertz(b)
+        fi0, fe0 = T.STANDARD_CONFORMITY
+        if b.inner_conformity <= fi0 + 1e-9 and b.outer_conformity <= fe0 + 1e-9:
+            c0, c0_method = c0_iso, "ISO 76 Table 1"
+        else:
+            c0, c0_method = c0_h, ("4.2 GPa with the bearing's grooves (ISO 76's criterion; its table assumes "
+                                   "grooves within 0.52 / 0.53)")
+        p, x, y, e = equivalent_dynamic_load(fr, fa, a0, c0, f0)
+    except RatingScopeError as exc:
+        notes.append(f"no load rating or rating life: the bearing lies outside ISO 281 / ISO 76 ({exc})")
+        none = {f.name: None for f in fields(RatingLife) if f.default is MISSING and f.default_factory is MISSING}
+        r = RatingLife(**{**none, "Fr_bearing": fr, "Fa_bearing": fa, "reliability": float(reliability), "a1": a1,
+                          "contamination": cname, "e_C": ec, "n": n,
+                          "n_dm": None if n is None else n * _mm(b.pitch_diameter)})
+        r.rating_warnings = notes
+        if warn:
+            for m in notes:
+                warnings.warn(RatingLifeWarning(m), stacklevel=2)
+        return r
+    p0 = equivalent_static_load(fr, fa, a0)
+    s0 = c0 / p0 if p0 > 0 else math.inf
+    l10 = basic_rating_life(c, p)
+    cu = fatigue_load_limit(c0, b.pitch_diameter)
     rotating = "inner" if omega is None or abs(omega) >= abs(omega_outer) else "outer"
     nu = nu1 = kappa = t = None
     source = ""
