@@ -160,6 +160,7 @@ def run_thermal(args, b, omega, traction):
         print(json.dumps(to_jsonable(d), indent=2))
         return
     print(s.summary())
+    print_reaction_convention(s.held)
     print(solver_header(r.lubricant, s.traction, args.ring_growth))
     pl = r.losses["power_loss"]
     print("temperatures [K]: " + ", ".join(f"{k} {v:.1f}" for k, v in r.temperatures.items())
