@@ -70,7 +70,6 @@ def run(args):
                                              ("--oil-inlet-temperature", args.oil_inlet_temperature, None),
                                              ("--ambient-temperature", args.ambient_temperature, None)),
                  "add --thermal")
-    warn_speed(b, omega, args.omega_outer)
     if args.thermal:
         return run_thermal(args, b, omega, traction)
     lub = lubricant_from_args(args, b)
@@ -79,6 +78,7 @@ def run(args):
                               omega_outer=args.omega_outer, control=args.control, traction=traction,
                               lubricant=lub, ring_growth=args.ring_growth, fit=args.fit, temperatures=temps,
                               fixed=fixed_from_args(args), hertz_method=args.hertz, n_strips=args.strips, n_across=args.points_across)
+    warn_speed(b, omega, args.omega_outer)  # after the solve: a refusal stays the one line on stderr
     t_lub = None if temps is None else (temps["inner"] + temps["outer"] + 2.0 * temps["ball"]) / 4.0
     rating = rating_of(args, b, s, lub, t_lub, temps)
     d = s.to_dict(rating)
@@ -148,6 +148,7 @@ def run_thermal(args, b, omega, traction):
                           fit=args.fit, fixed=fixed_from_args(args), hertz_method=args.hertz,
                           n_strips=args.strips, n_across=args.points_across)
     s = r.quasistatic
+    warn_speed(b, omega, args.omega_outer)
     rating = rating_of(args, b, s, r.lubricant, r.contact_temperature)
     if args.json:
         d = r.to_dict()

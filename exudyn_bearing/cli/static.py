@@ -161,9 +161,7 @@ def run(args):
     if args.Pd is not None:
         b = b.with_clearance(args.Pd, name="Pd")
     omega = omega_from_args(args)
-    if omega is not None:
-        warn_speed(b, omega)
-    elif args.temperature is not None:
+    if omega is None and args.temperature is not None:
         raise InputError("--temperature: sets the lubricant temperature of kappa, which needs a speed; add --omega "
                          "or --rpm (or leave --temperature out)")
     with explained(b), warnings.catch_warnings():
@@ -171,6 +169,8 @@ def run(args):
         res = static_result(b, args.Fr, args.Fa, args.Mx, args.My, args.tilt, omega, args.film, args.hertz,
                             args.phase, lubricant_from_args(args, b), fixed_from_args(args),
                             rating=rating_options(args))
+    if omega is not None:
+        warn_speed(b, omega)  # after the solve: a refusal stays the one line on stderr
     if args.plot:
         png, csv = plot_static(res, args.plot)
         res["plot"] = str(png)

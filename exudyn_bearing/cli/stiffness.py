@@ -111,9 +111,9 @@ def run(args):
     header = solver_header(lub, traction, args.ring_growth)
     if args.speeds is not None or args.rpms is not None:
         speeds = np.array(args.speeds) if args.speeds is not None else np.array(args.rpms) * RPM
-        warn_speed(b, float(np.max(np.abs(speeds))))  # the limiting-speed check (physics/rating_life.py)
         with explained(b):
             c = bearing_coefficients(b, speeds, n_phases=args.phases, **loads, **opts)
+        warn_speed(b, float(np.max(np.abs(speeds))))  # the limiting-speed check (physics/rating_life.py)
         d = c.to_dict()
         d["rpm"] = c.rpm().tolist()
         d["units"]["rpm"] = "1/min"
@@ -135,7 +135,6 @@ def run(args):
             print(f"plot: {d['plot']}")
         return
     omega = args.omega if args.omega is not None else (args.rpm * RPM if args.rpm is not None else 0.0)
-    warn_speed(b, omega)
     with explained(b):
         if args.phases != 1:
             c = bearing_coefficients(b, [omega], n_phases=args.phases, **loads, **opts)
@@ -143,6 +142,7 @@ def run(args):
         else:
             c = None
         s = solve_quasistatic(b, omega=omega, **loads, **opts)
+    warn_speed(b, omega)  # the limiting-speed check (physics/rating_life.py), after the solve
     if c is None:
         kmat, cmat = s.stiffness, s.damping
     kmat, cmat = np.asarray(kmat) + 0.0, np.asarray(cmat) + 0.0   # no signed zeros in the output
