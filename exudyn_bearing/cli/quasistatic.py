@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import json
 import math
+import warnings
 from pathlib import Path
 
 
@@ -18,6 +19,8 @@ from .common import (add_strip_arguments, add_bearing_argument, add_hold_argumen
                      fixed_from_args, format_value, lubricant_from_args, solver_header, traction_from_args)
 from ..solvers.quasistatic.losses import LOSS_COMPONENTS
 from ..solvers.quasistatic.thermal import solve_thermal
+from ..physics.rating_life import RATING_UNITS, RatingLifeWarning, rating_life
+from .static import add_rating_arguments, print_reaction_convention, rating_options, warn_speed
 
 
 def add_parser(sub):
@@ -48,6 +51,7 @@ def add_parser(sub):
     p.add_argument("--ambient-temperature", type=finite_float, metavar="K",
                    help="air around shaft and housing [K] (--thermal; default: solve_thermal's, 293.15)")
     add_hold_arguments(p)
+    add_rating_arguments(p)
     p.add_argument("--hertz", choices=METHODS, default="exact", help="Hertz fidelity level")
     add_strip_arguments(p)
     p.add_argument("--plot", metavar="FILE.png", help="loads and contact angles against azimuth (+ CSV, and "
@@ -74,7 +78,10 @@ def run(args):
                               omega_outer=args.omega_outer, control=args.control, traction=traction,
                               lubricant=lub, ring_growth=args.ring_growth, fit=args.fit, temperatures=temps,
                               fixed=fixed_from_args(args), hertz_method=args.hertz, n_strips=args.strips, n_across=args.points_across)
-    d = s.to_dict()
+    warn_speed(b, omega, args.omega_outer)  # after the solve: a refusal stays the one line on stderr
+    t_lub = None if temps is None else (temps["inner"] + temps["outer"] + 2.0 * temps["ball"]) / 4.0
+    rating = rating_of(args, b, s, lub, t_lub, temps)
+    d = s.to_dict(rating)
     d["ring_growth"] = args.ring_growth
     d["tilt"] = args.tilt
     if args.plot:
@@ -92,6 +99,7 @@ def run(args):
     for name, why in s.held.items():
         unit = "N m" if name.startswith("tilt") else "N"
         print(f"{name} held ({why}); reaction {format_value(s.reactions.get(name, 0.0), unit)} {unit}")
+    print_reaction_convention(s.held)
     print(solver_header(lub, traction, args.ring_growth))
     if d["power_loss"] is not None:  # solvers/quasistatic/losses.py
         pl = d["power_loss"]
@@ -99,8 +107,29 @@ def run(args):
               + f"), friction torque {d['friction_torque_total']:.4g} N m" + _still(s)
               + "; not modelled: seals and more (--json not_modelled)")
     print_ball_table(s.balls)
+    print("\n".join(rating.summary()))
     if args.plot:
         print(f"plot: {d['plot']}")
+
+
+def rating_of(args, b, s, lubricant, temperature, temps=None):
+    """The rating life of solution ``s`` (:func:`exudyn_bearing.physics.rating_life.rating_life`): at speed
+    with the zero-speed solution of the same loads, clearance and held DOFs as ISO/TS 16281's distribution
+    (``L10mr``) beside the one at speed (``L10mr_speed``). ``temperature``: the lubricant's [K] for kappa."""
+    ref, why = None, None
+    if s.omega or s.omega_outer:
+        try:
+            ref = solve_quasistatic(b, args.Fr, args.Fa, args.Mx, args.My, Fy=args.Fy, omega=0.0, fit=args.fit,
+                                    temperatures=temps, fixed=fixed_from_args(args), hertz_method=args.hertz,
+                                    stiffness=False)
+        except InputError as exc:  # the loads need the speed's equilibrium (e.g. over the shoulder at rest)
+            why = f"L10r, L10mr: the zero-speed load distribution of these loads is not solved ({exc})"
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RatingLifeWarning)  # printed with the summary (rating_warnings)
+        r = rating_life(b, s, reference=ref, temperature=temperature, lubricant=lubricant, **rating_options(args))
+    if why:
+        r.rating_warnings.append(why)
+    return r
 
 
 def run_thermal(args, b, omega, traction):
@@ -119,8 +148,12 @@ def run_thermal(args, b, omega, traction):
                           fit=args.fit, fixed=fixed_from_args(args), hertz_method=args.hertz,
                           n_strips=args.strips, n_across=args.points_across)
     s = r.quasistatic
+    warn_speed(b, omega, args.omega_outer)
+    rating = rating_of(args, b, s, r.lubricant, r.contact_temperature)
     if args.json:
         d = r.to_dict()
+        d.update(rating.to_dict())
+        d["units"] = {**d.get("units", {}), **RATING_UNITS}
         d["ring_growth"] = args.ring_growth
         d["tilt"] = args.tilt
         for k in ("slip_inner", "slip_outer"):
@@ -128,6 +161,7 @@ def run_thermal(args, b, omega, traction):
         print(json.dumps(to_jsonable(d), indent=2))
         return
     print(s.summary())
+    print_reaction_convention(s.held)
     print(solver_header(r.lubricant, s.traction, args.ring_growth))
     pl = r.losses["power_loss"]
     print("temperatures [K]: " + ", ".join(f"{k} {v:.1f}" for k, v in r.temperatures.items())
@@ -136,6 +170,7 @@ def run_thermal(args, b, omega, traction):
     print(f"power loss {r.power_loss_total:.4g} W (" + ", ".join(f"{k} {pl[k]:.4g}" for k in LOSS_COMPONENTS)
           + f"); heat out: oil {r.heat_out['oil']:.4g} W, ambient {r.heat_out['ambient']:.4g} W")
     print_ball_table(s.balls)
+    print("\n".join(rating.summary()))
 
 
 def _still(s) -> str:

@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import json
 import math
+import sys
+import warnings
 
 import numpy as np
 
@@ -14,6 +16,7 @@ from ..outputs.plotting import plot_static
 from ..outputs.units import REGIME_CODES, STATIC_UNITS, with_units
 from ..physics.hertz import METHODS
 from ..physics.load_distribution import StaticSolution, load_zone_parameter
+from ..physics.rating_life import RATING_UNITS, RatingLifeWarning, check_speed_limit, rating_life
 from ..solvers.analytic import stribeck_and_lubrication
 from ..solvers.quasistatic import solve_quasistatic
 from ..solvers.quasistatic.solve import axial_load_as_fa
@@ -24,6 +27,54 @@ from .common import (add_bearing_argument, add_hold_arguments, add_lubricant_arg
 HELP = ("zero-speed special case of 'quasistatic': 5-DOF inner-ring equilibrium without centrifugal or "
         "gyroscopic loads, rigid rings; the tilt is held at zero unless --tilt free (its reaction moment is "
         "printed); --omega only sets the speed of the lubrication map")
+
+
+#: The sign convention of the reactions of held DOFs (solvers/quasistatic/solve.py: reaction = -residual).
+REACTION_CONVENTION = ("reaction sign: the force [N] or moment [N m] the constraint applies to the inner ring, "
+                       "positive along +x, +y, +z (axial) and about +x, +y; applied loads + ball forces + reaction = 0")
+
+
+def add_rating_arguments(p, temperature=False):
+    """``--reliability``, ``--contamination`` (and, for ``static``, ``--temperature``) of the rating life
+    (:func:`exudyn_bearing.physics.rating_life.rating_life`)."""
+    from ..data.iso281 import CONTAMINATION
+    from ..physics.rating_life import DEFAULT_CONTAMINATION, DEFAULT_RELIABILITY
+
+    p.add_argument("--reliability", type=finite_float, default=DEFAULT_RELIABILITY,
+                   help="reliability of the rating life [%%], 90 to 99.95 (ISO 281 a_1)")
+    p.add_argument("--contamination", default=DEFAULT_CONTAMINATION,
+                   help=f"ISO 281 Table 13 contamination class ({', '.join(CONTAMINATION)}) or e_C in [0, 1]")
+    if temperature:
+        p.add_argument("--temperature", type=finite_float, metavar="K",
+                       help="lubricant temperature [K] for kappa of the modified rating life (default: the "
+                            "temperature at which the lubricant has the viscosity the films use)")
+
+
+def rating_options(args) -> dict:
+    """Keyword arguments of rating_life from the options of :func:`add_rating_arguments`."""
+    c = args.contamination
+    try:
+        c = float(c)
+    except ValueError:
+        pass
+    out = {"reliability": args.reliability, "contamination": c}
+    t = getattr(args, "temperature", None)
+    if isinstance(t, float):
+        out["temperature"] = t
+    return out
+
+
+def warn_speed(b, omega, omega_outer=0.0):
+    """The limiting-speed check (:func:`~exudyn_bearing.physics.rating_life.check_speed_limit`) as a warning
+    line on stderr."""
+    for m in check_speed_limit(b, omega, omega_outer, warn=False):
+        print(f"exudyn-bearing: warning: {m}", file=sys.stderr)
+
+
+def print_reaction_convention(held):
+    """The sign convention of the reactions, once, when a DOF is held."""
+    if held:
+        print(REACTION_CONVENTION)
 
 
 def add_parser(sub):
@@ -43,16 +94,20 @@ def add_parser(sub):
                    help="film model: Hamrock-Dowson or Masjedi-Khonsari reading")
     p.add_argument("--hertz", choices=METHODS, default="exact", help="Hertz fidelity level")
     p.add_argument("--phase", type=finite_float, default=0.0, help="azimuth of ball 0 [rad], taken modulo 2 pi")
+    add_rating_arguments(p, temperature=True)
     p.add_argument("--plot", metavar="FILE.png", help="save Q(psi) and Lambda(psi) plot (+ CSV beside)")
     p.add_argument("--json", action="store_true", help="print JSON (with units and regime_codes) instead of a table")
 
 
 def static_result(b, fr, fa, mx=0.0, my=0.0, tilt="fixed", omega=None, film="hd", hertz="exact", phase=0.0,
-                  lubricant=None, fixed=None):
+                  lubricant=None, fixed=None, rating=None):
     """The dict of ``static`` (keys of :func:`exudyn_bearing.solvers.analytic.static_analysis`, plus the
     tilt, the held DOFs and their reactions). ``fixed``: held DOFs (default: the tilts at zero with
     ``tilt="fixed"``). ``phase`` is taken modulo 2 pi; loads beyond the elastic contact model
-    (:mod:`exudyn_bearing.model.load_range`) raise InputError."""
+    (:mod:`exudyn_bearing.model.load_range`) raise InputError. ``rating``: keyword arguments of
+    :func:`exudyn_bearing.physics.rating_life.rating_life` (reliability, contamination, temperature); with it
+    the dict carries the load ratings and rating lives (keys of ``RATING_UNITS``; hours, kappa and the modified
+    lives need ``omega``, the speed of the rating)."""
     for name, v in (("Fr", fr), ("Fa", fa)):
         if v < 0.0:
             raise InputError(f"{name}: must be >= 0 (the bearing carries +x radial and +z axial load on the "
@@ -96,6 +151,8 @@ def static_result(b, fr, fa, mx=0.0, my=0.0, tilt="fixed", omega=None, film="hd"
     res["traction"] = None  # zero speed: no slip, no traction model
     res.update(stribeck_and_lubrication(sol, omega, film, lub, stribeck=translating and fixed == {"tilt_x": 0.0,
                                                                                                   "tilt_y": 0.0}))
+    if rating is not None:
+        res.update(rating_life(b, s, omega, lubricant=lubricant, **rating).to_dict())
     return res
 
 
@@ -104,15 +161,22 @@ def run(args):
     if args.Pd is not None:
         b = b.with_clearance(args.Pd, name="Pd")
     omega = omega_from_args(args)
-    with explained(b):
+    if omega is None and args.temperature is not None:
+        raise InputError("--temperature: sets the lubricant temperature of kappa, which needs a speed; add --omega "
+                         "or --rpm (or leave --temperature out)")
+    with explained(b), warnings.catch_warnings():
+        warnings.simplefilter("ignore", RatingLifeWarning)  # printed below (rating_warnings)
         res = static_result(b, args.Fr, args.Fa, args.Mx, args.My, args.tilt, omega, args.film, args.hertz,
-                            args.phase, lubricant_from_args(args, b), fixed_from_args(args))
+                            args.phase, lubricant_from_args(args, b), fixed_from_args(args),
+                            rating=rating_options(args))
+    if omega is not None:
+        warn_speed(b, omega)  # after the solve: a refusal stays the one line on stderr
     if args.plot:
         png, csv = plot_static(res, args.plot)
         res["plot"] = str(png)
         res["data"] = str(csv)
     if args.json:
-        out = with_units(res, STATIC_UNITS)
+        out = with_units(res, {**STATIC_UNITS, **RATING_UNITS})
         if omega is not None:
             out["regime_codes"] = REGIME_CODES
         print(json.dumps(to_jsonable(out), indent=2))
@@ -132,6 +196,7 @@ def run(args):
         unit = "N m" if "tilt" in name else "N"
         print(f"{name} held ({why}): reaction {format_value(res['reactions'][name], unit, 4)} {unit}"
               + (" (--tilt free releases it)" if why == "fixed" and "tilt" in name else ""))
+    print_reaction_convention(res["held_dofs"])
     head = f"{'ball':>4} {'psi deg':>8} {'Q N':>9} {'delta um':>9} {'alpha deg':>9}"
     if omega is not None:
         head += f" {'h_in um':>8} {'L_in':>6} {'h_out um':>8} {'L_out':>6} {'regime out':>10}"
@@ -145,5 +210,15 @@ def run(args):
                      f" {res['h_min_outer'][j] * 1e6:8.3f} {res['lambda_outer'][j]:6.2f}"
                      f" {REGIME_CODES[reg]:>10}")
         print(line)
+    print_rating(res)
     if args.plot:
         print(f"plot: {res['plot']}  data: {res['data']}")
+
+
+def print_rating(d):
+    """The load ratings and rating lives of a result dict (keys of RATING_UNITS) as text lines."""
+    from ..physics.rating_life import RatingLife
+    import dataclasses
+
+    names = {f.name for f in dataclasses.fields(RatingLife)}
+    print("\n".join(RatingLife(**{k: d[k] for k in names}).summary()))

@@ -95,6 +95,8 @@ def _plot(c, png):
 
 
 def run(args):
+    from .static import warn_speed
+
     if not 1 <= args.phases <= 64:
         raise InputError(f"--phases: expected an integer in [1, 64], got {args.phases}")
     if args.plot and args.speeds is None and args.rpms is None:
@@ -111,6 +113,7 @@ def run(args):
         speeds = np.array(args.speeds) if args.speeds is not None else np.array(args.rpms) * RPM
         with explained(b):
             c = bearing_coefficients(b, speeds, n_phases=args.phases, **loads, **opts)
+        warn_speed(b, float(np.max(np.abs(speeds))))  # the limiting-speed check (physics/rating_life.py)
         d = c.to_dict()
         d["rpm"] = c.rpm().tolist()
         d["units"]["rpm"] = "1/min"
@@ -139,6 +142,7 @@ def run(args):
         else:
             c = None
         s = solve_quasistatic(b, omega=omega, **loads, **opts)
+    warn_speed(b, omega)  # the limiting-speed check (physics/rating_life.py), after the solve
     if c is None:
         kmat, cmat = s.stiffness, s.damping
     kmat, cmat = np.asarray(kmat) + 0.0, np.asarray(cmat) + 0.0   # no signed zeros in the output

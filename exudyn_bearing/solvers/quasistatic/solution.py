@@ -132,8 +132,11 @@ class QuasiStaticSolution:
     def q_max_outer(self) -> float:
         return float(np.max(self.balls["q_outer"]))
 
-    def to_dict(self) -> dict:
-        """JSON-ready dict with the keys of :data:`UNITS` (and ``units``)."""
+    def to_dict(self, rating=None) -> dict:
+        """JSON-ready dict with the keys of :data:`UNITS` (and ``units``). ``rating``: a
+        :class:`~exudyn_bearing.physics.rating_life.RatingLife` of this solution
+        (:func:`~exudyn_bearing.physics.rating_life.rating_life`) whose keys (``C``, ``C0``, ``s0``, ``L10``,
+        ``L10h``, ``L10m``, ``L10mr``, ``a_iso``, ``kappa``, ...) and units are added."""
         b = self.balls
         deg = {"psi", "alpha_inner", "alpha_outer", "beta"}
         d = {"bearing": self.bearing_name, "control": self.control, "traction": self.traction,
@@ -170,6 +173,11 @@ class QuasiStaticSolution:
         d["traction_resolution"] = self.resolution_check
         d["wall_s"] = self.wall_s
         d["units"] = {**UNITS, **LOSS_UNITS}
+        if rating is not None:
+            from ...physics.rating_life import RATING_UNITS
+
+            d.update(rating.to_dict())
+            d["units"].update(RATING_UNITS)
         return d
 
     def dynamic_start(self, bearing) -> dict:
