@@ -26,7 +26,9 @@ if TYPE_CHECKING:  # the public names, imported on first use by __getattr__ belo
     from .simulate import CreateBallBearing, simulate
     from .solvers.element.console import filter_exudyn_notes
     from .solvers.quasistatic import QuasiStaticSolution, bearing_coefficients, solve_quasistatic
+    from .physics.rating_life import RatingLife, rating_life
     from .solvers.quasistatic.levels.linear import LinearValidityWarning
+    from .solvers.quasistatic.solve import TractionResolutionWarning
     from .solvers.quasistatic.thermal import ThermalSolution, solve_thermal
 
 #: Module of each public name. ``import exudyn_bearing`` loads none of them (numba, scipy, the
@@ -42,7 +44,9 @@ _PUBLIC = {
     ".simulate": ("CreateBallBearing", "simulate"),
     ".solvers.element.console": ("filter_exudyn_notes",),
     ".solvers.quasistatic": ("QuasiStaticSolution", "bearing_coefficients", "solve_quasistatic"),
+    ".physics.rating_life": ("RatingLife", "rating_life"),
     ".solvers.quasistatic.levels.linear": ("LinearValidityWarning",),
+    ".solvers.quasistatic.solve": ("TractionResolutionWarning",),
     ".solvers.quasistatic.thermal": ("ThermalSolution", "solve_thermal"),
 }
 _MODULE_OF = {name: module for module, names in _PUBLIC.items() for name in names}
@@ -54,7 +58,8 @@ __version__ = "0.1.0"
 __all__ = ["CreateBallBearing", "filter_exudyn_notes", "BallBearing", "Defect", "InputError", "Lubricant", "Material",
            "Results", "Scenario", "SimulationError", "SteadyStateWarning", "StepSizeWarning", "catalog", "get_bearing", "load_bearing",
            "load_lubricant", "lubricants", "materials", "simulate", "solve_quasistatic", "QuasiStaticSolution",
-           "bearing_coefficients", "BearingCoefficients", "solve_thermal", "ThermalSolution", "LinearValidityWarning"]
+           "bearing_coefficients", "BearingCoefficients", "solve_thermal", "ThermalSolution", "LinearValidityWarning",
+           "TractionResolutionWarning", "RatingLife", "rating_life"]
 
 
 def __getattr__(name):
