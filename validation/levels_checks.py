@@ -30,7 +30,7 @@ from pathlib import Path
 import numpy as np
 
 import exudyn as exu
-from exudyn.itemInterface import (LoadForceVector, MarkerBodyRigid, NodeRigidBodyRxyz,
+from exudyn.itemInterface import (LoadForceVector, LoadTorqueVector, MarkerBodyRigid, NodeRigidBodyRxyz,
                                   ObjectConnectorRigidBodySpringDamper, ObjectGround, ObjectRigidBody, SensorNode)
 
 import exudyn_bearing as eb
@@ -41,9 +41,9 @@ ROOT = Path(__file__).resolve().parents[1]
 FR, FA = 3000.0, 1000.0
 
 
-def shaft(load, omega=0.0, damper=True, start=None):
-    """A 2.5 kg shaft (Rxyz node) carrying ``load`` at its centre, an outer-ring marker on ground, optionally
-    a pure damper to ground; ``start``: initial pose (x, y, z, tilt_x, tilt_y)."""
+def shaft(load, omega=0.0, damper=True, start=None, moment=None):
+    """A 2.5 kg shaft (Rxyz node) carrying ``load`` (and ``moment``) at its centre, an outer-ring marker on ground,
+    optionally a pure damper to ground; ``start``: initial pose (x, y, z, tilt_x, tilt_y)."""
     sc = exu.SystemContainer()
     mbs = sc.AddSystem()
     ground = mbs.AddObject(ObjectGround())
@@ -56,6 +56,8 @@ def shaft(load, omega=0.0, damper=True, start=None):
     m_g = mbs.AddMarker(MarkerBodyRigid(bodyNumber=ground))
     m_b = mbs.AddMarker(MarkerBodyRigid(bodyNumber=body))
     mbs.AddLoad(LoadForceVector(markerNumber=m_b, loadVector=list(load)))
+    if moment is not None:
+        mbs.AddLoad(LoadTorqueVector(markerNumber=m_b, loadVector=list(moment)))
     if damper:
         mbs.AddObject(ObjectConnectorRigidBodySpringDamper(markerNumbers=[m_g, m_b],
                                                            damping=np.diag([2e4, 2e4, 2e4, 20.0, 20.0, 0.0])))

@@ -22,10 +22,8 @@ from __future__ import annotations
 import warnings
 
 import numpy as np
+from levels_checks import shaft
 
-import exudyn as exu
-from exudyn.itemInterface import (LoadForceVector, LoadTorqueVector, MarkerBodyRigid, NodeRigidBodyRxyz,
-                                  ObjectConnectorRigidBodySpringDamper, ObjectGround, ObjectRigidBody)
 
 import exudyn_bearing as eb
 from exudyn_bearing.solvers.quasistatic.levels.linear import LinearValidityWarning
@@ -37,18 +35,7 @@ T_END = 0.03
 
 
 def run(model, load=(FR, 0.0, 0.0), moment=None, omega=0.0, at_operating_point=False, t_end=T_END, **options):
-    sc = exu.SystemContainer()
-    mbs = sc.AddSystem()
-    ground = mbs.AddObject(ObjectGround())
-    node = mbs.AddNode(NodeRigidBodyRxyz(referenceCoordinates=[0.0] * 6, initialVelocities=[0, 0, 0, 0, 0, omega]))
-    body = mbs.AddObject(ObjectRigidBody(nodeNumber=node, mass=2.5, inertia=[0.01, 0.01, 5e-4, 0, 0, 0]))
-    m_g = mbs.AddMarker(MarkerBodyRigid(bodyNumber=ground))
-    m_b = mbs.AddMarker(MarkerBodyRigid(bodyNumber=body))
-    mbs.AddLoad(LoadForceVector(markerNumber=m_b, loadVector=list(load)))
-    if moment is not None:
-        mbs.AddLoad(LoadTorqueVector(markerNumber=m_b, loadVector=list(moment)))
-    mbs.AddObject(ObjectConnectorRigidBodySpringDamper(markerNumbers=[m_g, m_b],
-                                                       damping=np.diag([2e4, 2e4, 2e4, 20.0, 20.0, 0.0])))
+    sc, mbs, node, m_b, m_g, _pos = shaft(load, omega, moment=moment)
     options.setdefault("initialLoad", (FR, 0.0))
     options.setdefault("coefficientSpeeds", SPEEDS)
     br = eb.CreateBallBearing(mbs, "6208", m_b, m_g, model=model, **options)
