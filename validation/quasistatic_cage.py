@@ -62,9 +62,13 @@ def dem(dt, t_end):
     s = rec.summary()
     keys = ("dissipation", "cage_speed", "cage_power_pocket", "cage_power_land", "pocket_force_max",
             "pocket_force_mean", "land_force_mean", "land_eccentricity_max", "q_max_inner", "q_max_outer",
-            "energy_residual", "window.t0", "window.t1")
+            "energy_residual")
     out = {k: s.get(k) for k in keys}
+    window = s.get("window") or {}
+    out["window.t0"], out["window.t1"] = window.get("t0"), window.get("t1")
     out["power_loss"] = s.get("power_loss")
+    pl = out["power_loss"] or {}
+    out["dissipation_contacts"] = pl.get("contact_traction_inner", 0.0) + pl.get("contact_traction_outer", 0.0)
     out["wall_s"] = wall
     return out
 
@@ -83,7 +87,7 @@ def main(argv=None):
         report[f"dem_rigid_{dt:g}"] = dem(dt, args.t_end)
         print(f"DEM at dt = {dt:g} s done ({report[f'dem_rigid_{dt:g}']['wall_s']:.0f} s wall)", flush=True)
     cols = ["quasistatic_cageless", "quasistatic_rigid"] + [f"dem_rigid_{dt:g}" for dt in args.dt]
-    rows = ("dissipation", "cage_power_pocket", "cage_power_land", "cage_speed", "pocket_force_max",
+    rows = ("dissipation", "dissipation_contacts", "cage_power_pocket", "cage_power_land", "cage_speed", "pocket_force_max",
             "pocket_force_mean", "q_max_inner", "q_max_outer", "energy_residual")
     print(f"7208, F_r = F_a = 3000 N, 500 rad/s, estimated outer-land brass cage; DEM {args.t_end} s, window "
           + ", ".join(f"{report[c]['window.t0']:.3g}-{report[c]['window.t1']:.3g} s" for c in cols[2:]))

@@ -245,6 +245,8 @@ class QuasiStaticSolution:
                          f"{np.max(np.abs(self.balls['pocket_force'])):.4g} N, losses pocket {c['power_pocket']:.4g} W, "
                          f"land {c['power_land']:.4g} W (land torque {c['land_torque']:.4g} N m, eccentricity "
                          f"{c['land_eccentricity']:.3g})")
+            lines.append("pocket force per ball [N] (+: pushes the ball forward): "
+                         + " ".join(f"{q:.4g}" for q in self.balls["pocket_force"]))
         for name, why in self.held.items():
             lines.append(f"{name} held ({why}); reaction {self.reactions.get(name, 0.0):.6g}")
         return "\n".join(lines)

@@ -20,7 +20,8 @@ energy):
 
 Choices where the sources leave room (also in docs/theory/quasistatic.md):
 balls are independent (each its own orbital speed: no cage, as the
-ACBB-120); unloaded balls (a contact without load) take outer-race-control
+ACBB-120), unless ``cage="rigid"`` (all balls at the cage's speed, pocket forces and the cage's torque
+balance: docs/theory/quasistatic.md#the-rigid-cage); unloaded balls (a contact without load) take outer-race-control
 kinematics (with ``control="equilibrium"``: the cage's orbital speed, the mean of the balls in
 equilibrium, rolling on the outer race, as every ball without a traction equilibrium of its own); films by Hamrock & Dowson at the race-control rolling speed.
 
