@@ -8,8 +8,8 @@ from exudyn_bearing import catalog
 from exudyn_bearing.cli import main
 from exudyn_bearing.data import InputError
 from exudyn_bearing.data.cages import estimated_cage
-from exudyn_bearing.solvers.quasistatic import solve_quasistatic
 from exudyn_bearing.solvers.quasistatic import kinematics as km
+from exudyn_bearing.solvers.quasistatic import solve_quasistatic
 from exudyn_bearing.solvers.quasistatic.losses import power_losses
 from exudyn_bearing.solvers.quasistatic.thermal import CAGE_NODE, solve_thermal
 

@@ -13,7 +13,7 @@ Printed side by side: the dissipation (the quasi-static traction + pocket + land
 which also holds the contacts' normal damping), the cage speed, the cage losses by kind, the pocket and land
 forces, Q_max. The issue's target: the two dissipations within 5 %.
 
-    python validation/quasistatic_cage.py [--t-end 0.2] [--dt 1.5e-6 0.75e-6] [--out validation/out/quasistatic_cage]
+    python validation/quasistatic_cage.py [--t-end 0.5] [--dt 1.5e-6 0.75e-6] [--out validation/out/quasistatic_cage]
 """
 from __future__ import annotations
 
@@ -31,6 +31,8 @@ from exudyn_bearing.solvers.quasistatic.losses import power_losses
 
 ROOT = Path(__file__).resolve().parents[1]
 CASE = {"Fr": 3000.0, "Fa": 3000.0, "omega": 500.0}
+#: Azimuth bins of the per-azimuth comparison [deg].
+BINS = np.linspace(-180.0, 180.0, 13)
 
 
 def quasistatic(cage):
@@ -40,7 +42,10 @@ def quasistatic(cage):
     wall = time.perf_counter() - t0
     pl = power_losses(s)["power_loss"]
     c = s.cage or {}
-    return {"wall_s": wall, "dissipation": s.dissipation_total + pl["cage_pocket"] + pl["cage_land"],
+    by = {race: {"psi": np.degrees(np.angle(np.exp(1j * s.balls["psi"]))).tolist(),
+                 "load": s.balls[f"q_{race}"].tolist(), "dissipation": s.balls[f"dissipation_{race}_ball"].tolist()}
+          for race in ("inner", "outer")}
+    return {"by_ball": by, "wall_s": wall, "dissipation": s.dissipation_total + pl["cage_pocket"] + pl["cage_land"],
             "dissipation_contacts": s.dissipation_total, "cage_power_pocket": pl["cage_pocket"],
             "cage_power_land": pl["cage_land"], "cage_speed": c.get("speed", float(np.mean(s.kinematics[:, 0]))),
             "orbital_speed_min": float(np.min(s.kinematics[:, 0])), "orbital_speed_max": float(np.max(s.kinematics[:, 0])),
@@ -70,12 +75,19 @@ def dem(dt, t_end):
     pl = out["power_loss"] or {}
     out["dissipation_contacts"] = pl.get("contact_traction_inner", 0.0) + pl.get("contact_traction_outer", 0.0)
     out["wall_s"] = wall
+    # per azimuth (30 deg bins, over the summary's window): the contacts' load, dissipation and slide-to-roll ratio
+    r = rec if hasattr(rec, "contact") else rec.results
+    w = r.window(0.25)
+    psi = np.degrees(r.azimuth()[w]).ravel()
+    idx = np.digitize(psi, BINS)
+    out["by_azimuth"] = {race: {f: [float(np.mean(r.contact(f, race)[w].ravel()[idx == k])) for k in range(1, len(BINS))]
+                                for f in ("load", "dissipation", "srr")} for race in ("inner", "outer")}
     return out
 
 
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--t-end", type=float, default=0.2, help="simulated time of each DEM run [s]")
+    ap.add_argument("--t-end", type=float, default=0.5, help="simulated time of each DEM run [s]")
     ap.add_argument("--dt", type=float, nargs="+", default=[1.5e-6, 0.75e-6], help="DEM steps [s]")
     ap.add_argument("--out", default=str(ROOT / "validation" / "out" / "quasistatic_cage"))
     args = ap.parse_args(argv)
@@ -100,6 +112,16 @@ def main(argv=None):
         d = report[c]["dissipation"]
         report[c]["quasistatic_over_dem_minus_1"] = q / d - 1.0
         print(f"quasistatic (rigid cage) / {c} - 1 in the dissipation: {100 * (q / d - 1.0):+.2f} % (target 5 %)")
+    last = cols[-1]
+    print(f"per azimuth, {last} (mean per contact over the window) and the quasi-static rigid-cage balls:")
+    for race in ("inner", "outer"):
+        a = report[last]["by_azimuth"][race]
+        for k in range(len(BINS) - 1):
+            print(f"  {race} psi {BINS[k]:5.0f} .. {BINS[k + 1]:4.0f} deg: DEM Q {a['load'][k]:7.1f} N, "
+                  f"P {a['dissipation'][k]:6.3f} W, srr {a['srr'][k]:+.3f}")
+        q = report["quasistatic_rigid"]["by_ball"][race]
+        print(f"  quasi-static {race}: " + ", ".join(f"psi {p:.0f}: Q {x:.1f} N P {y:.3f} W"
+                                                    for p, x, y in zip(q["psi"], q["load"], q["dissipation"])))
     (out / "quasistatic_cage.json").write_text(json.dumps(report, indent=2, default=float))
     print(f"wrote {out / 'quasistatic_cage.json'}")
 
