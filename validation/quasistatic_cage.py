@@ -1,4 +1,4 @@
-"""The quasi-static solver with the rigid cage against the reference engine's rigid cage (issue 34 item 7).
+"""The quasi-static solver with the rigid cage against the reference engine's (docs/theory/quasistatic.md).
 
 The 7208 under F_r = F_a = 3000 N at 500 rad/s, the estimated outer-land-guided brass cage
 (``estimated_cage``: pocket friction 0.1) in both:
@@ -11,7 +11,7 @@ The 7208 under F_r = F_a = 3000 N at 500 rad/s, the estimated outer-land-guided 
 
 Printed side by side: the dissipation (the quasi-static traction + pocket + land; the DEM's ``dissipation``,
 which also holds the contacts' normal damping), the cage speed, the cage losses by kind, the pocket and land
-forces, Q_max. The issue's target: the two dissipations within 5 %.
+forces, Q_max. The target: the two dissipations within 5 %.
 
     python validation/quasistatic_cage.py [--t-end 0.5] [--dt 1.5e-6 0.75e-6] [--out validation/out/quasistatic_cage]
 """
