@@ -1,4 +1,5 @@
 """The quasi-static solver with the rigid cage (docs/theory/quasistatic.md#the-rigid-cage)."""
+import dataclasses
 import json
 
 import numpy as np
@@ -11,6 +12,7 @@ from exudyn_bearing.data.cages import estimated_cage
 from exudyn_bearing.solvers.quasistatic import kinematics as km
 from exudyn_bearing.solvers.quasistatic import solve_quasistatic
 from exudyn_bearing.solvers.quasistatic.losses import power_losses
+from exudyn_bearing.solvers.quasistatic.solve import CageLandWarning
 from exudyn_bearing.solvers.quasistatic.thermal import CAGE_NODE, solve_thermal
 
 B = catalog["6208"]
@@ -146,3 +148,20 @@ def test_cli_cage_rigid(capsys):
     d = json.loads(capsys.readouterr().out)
     assert d["cage"] == "rigid" and len(set(d["orbital_speed"])) == 1
     assert d["power_loss"]["cage_land"] > 0.0
+
+
+def test_a_land_too_narrow_for_the_pocket_force_warns():
+    """A 20 um land cannot carry the net pocket force on its film: the cage would touch its land."""
+    narrow = dataclasses.replace(estimated_cage(B), land_width=2e-5)
+    with pytest.warns(CageLandWarning, match="^rigid_cage:"):
+        sol = solve_quasistatic(B, 3000.0, omega=500.0, control="equilibrium", cage="rigid", rigid_cage=narrow,
+                                **QUICK)
+    assert sol.cage["land_crushed"]
+
+
+def test_torque_residual_relative_to_the_tractions_where_the_pockets_carry_nothing():
+    """Under a pure axial load every ball alike: the frictionless ball-guided cage has pocket forces of
+    round-off only, and its residual is measured against the tractions they balance."""
+    sol = solve_quasistatic(B, 0.0, 3000.0, omega=500.0, control="outer", cage="rigid", rigid_cage=IDEAL, **QUICK)
+    assert np.max(np.abs(sol.balls["pocket_force"])) < 1e-9 * sol.q_max_inner
+    assert abs(sol.cage["torque_residual"]) < 1e-9

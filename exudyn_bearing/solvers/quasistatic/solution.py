@@ -56,7 +56,8 @@ UNITS = {
     "cage_power_land": "W (rigid cage: land shear torque times the cage's speed relative to its ring)",
     "cage_land_force": "N (net in-plane pocket force the land film carries)",
     "cage_land_eccentricity": "- (land film eccentricity ratio carrying cage_land_force)",
-    "cage_torque_residual": "- (cage torque balance / sum of the absolute torques)",
+    "cage_torque_residual": "- (cage torque balance over the absolute torques on the cage and the tractions' "
+                            "torques along the orbit)",
     "rigid_cage": "the RigidCage's fields (m; material by name)",
 }
 

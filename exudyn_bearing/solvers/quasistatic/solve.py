@@ -866,7 +866,7 @@ def _caged_balls(omega_c, geo, loaded, races, stage, kin, rc, model, n_strips, n
                  "land_torque": t_land,
                  "land_power": -t_land * (omega_c - w_ring), "land_eccentricity": eps, "land_crushed": crushed,
                  "land_force": math.hypot(fx, fy), "ring_speed": w_ring, "torque": torque,
-                 "torque_residual": torque / scale if scale > 0.0 else 0.0, "checks": checks, "controls": used,
+                 "torque_scale": scale, "checks": checks, "controls": used,
                  "wr_unit": wr_unit}
 
 
@@ -905,7 +905,16 @@ def _solve_cage(geo, loaded, races, stage, kin, rc, model, n_strips, n_across, i
         wc = _opt.brentq(torque, lo, hi, xtol=CAGE_SPEED_TOLERANCE * ref, rtol=1e-15)
     if last.get("wc") != wc:
         torque(wc)
-    return last["kin"], last["info"]
+    # the residual relative to the torques that act: the pocket, friction and land torques and the tractions'
+    # own torques along the orbit, sum_j (|F_x,o| + |F_x,i|) c_r (the pocket forces are their difference: with
+    # no net force on the pockets, the tractions set the round-off)
+    info, k = last["info"], last["kin"]
+    scale = info["torque_scale"]
+    for j in range(geo.shape[0]):
+        c = km.ball_contacts(k[j], geo[j], model, n_strips, n_across)
+        scale += (abs(c[0, 6]) + abs(c[1, 6])) * geo[j, km.G_CR]
+    info["torque_residual"] = info["torque"] / scale if scale > 0.0 else 0.0
+    return k, info
 
 
 def _cage_result(rc, info, out, moving, w_i):
