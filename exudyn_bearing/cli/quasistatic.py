@@ -34,6 +34,11 @@ def add_parser(sub):
     p.add_argument("--omega-outer", type=finite_float, default=0.0, help="outer-ring speed [rad/s] (default fixed)")
     p.add_argument("--control", choices=CONTROLS, default="auto",
                    help="ball kinematics: race control (outer, inner, auto = Jones' criterion) or min-energy (Gupta)")
+    # the rigid cage (solve_quasistatic cage=, docs/theory/quasistatic.md#the-rigid-cage)
+    p.add_argument("--cage", choices=("none", "rigid"), default="none",
+                   help="none: each ball its own orbital speed; rigid: the bearing's estimated rigid cage "
+                        "(estimated_cage): balls at the cage speed, pocket forces, land film (race control or "
+                        "--control equilibrium)")
     add_traction_argument(p)
     add_lubricant_argument(p, "lubricant for the films: ")
     add_ring_growth_argument(p)
@@ -77,7 +82,8 @@ def run(args):
         s = solve_quasistatic(b, args.Fr, args.Fa, args.Mx, args.My, Fy=args.Fy, omega=omega,
                               omega_outer=args.omega_outer, control=args.control, traction=traction,
                               lubricant=lub, ring_growth=args.ring_growth, fit=args.fit, temperatures=temps,
-                              fixed=fixed_from_args(args), hertz_method=args.hertz, n_strips=args.strips, n_across=args.points_across)
+                              fixed=fixed_from_args(args), hertz_method=args.hertz, n_strips=args.strips, n_across=args.points_across,
+                              cage=None if args.cage == "none" else args.cage)
     warn_speed(b, omega, args.omega_outer)  # after the solve: a refusal stays the one line on stderr
     t_lub = None if temps is None else (temps["inner"] + temps["outer"] + 2.0 * temps["ball"]) / 4.0
     rating = rating_of(args, b, s, lub, t_lub, temps)
@@ -146,7 +152,8 @@ def run_thermal(args, b, omega, traction):
                           lubricant=args.lubricant, traction=traction, Mx=args.Mx, My=args.My, Fy=args.Fy,
                           omega_outer=args.omega_outer, control=args.control, ring_growth=args.ring_growth,
                           fit=args.fit, fixed=fixed_from_args(args), hertz_method=args.hertz,
-                          n_strips=args.strips, n_across=args.points_across)
+                          n_strips=args.strips, n_across=args.points_across,
+                          cage=None if args.cage == "none" else args.cage)
     s = r.quasistatic
     warn_speed(b, omega, args.omega_outer)
     rating = rating_of(args, b, s, r.lubricant, r.contact_temperature)
