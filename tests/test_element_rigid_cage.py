@@ -4,20 +4,26 @@ summary's cage outputs, the cage as an Exudyn rigid body a user can put sensors 
 
 The scene: the 6208 under F_r = 3000 N at 500 rad/s on a horizontal shaft (gravity on the cage), 6 ms at the
 reference engine's 4 us, with the estimated cage's clearances narrowed (pockets 60 um, land 30 um) so that
-the balls reach their pockets and the cage its land within the short run; the land is taken linearly implicit
-(cage_damping="implicit") as its 30 um film needs below 1 us explicitly.
+the balls reach their pockets and the cage its land within the short run, guided by the outer land (its
+reaction on the fixed ring) or the inner land (on the moving inner ring); the land is taken linearly implicit
+(cage_damping="implicit"), as its 30 um film needs below 1 us explicitly.
 
 Tolerances. The fast mode integrates the cage with the balls in the reference engine's velocity-Verlet
-sub-steps on the same kernel: it is the reference scheme, equal up to rounding (measured 1e-16 m in the cage
-centre, 1e-10 rad/s in its speed). The body mode evaluates the same kernel at the half-step velocities Exudyn's
-velocity Verlet passes, but Exudyn integrates the cage body (mass-matrix solve) and rounds otherwise; the pocket
-impacts amplify rounding, and its samples hold the half-step velocities (a constant 1.1e-3 rad/s behind in the
-land's steady deceleration of 560 rad/s^2 at 4 us). Measured (python -m pytest tests/test_element_rigid_cage.py
-with prints): cage centre within 2.2e-8 m (0.07 % of the land clearance), cage speed 5e-6, Q_max 1e-5, pocket and
-land losses 4e-4, the 99.9th percentile of the pocket forces 1 %; asserted: the centre within 1 % of the land
-clearance, the cage speed within 0.1 % and Q_max within 0.5 % (the cross-engine checks of the torus cage,
-tests/test_cage_damping.py), the losses within 1 %, the pocket forces' 99.9th percentile within 15 % (as there:
-impacts)."""
+sub-steps on the same kernel: it is the reference scheme, equal up to rounding (measured: 1e-15 m in the
+cage centre, 1e-10 rad/s in its speed, 3e-11 in the pocket loads); asserted at 1e-6 of the body mode's
+tolerances. The body mode evaluates the same kernel at the half-step velocities Exudyn's velocity Verlet
+passes, but Exudyn integrates the cage body (a mass-matrix solve) and rounds otherwise; the pocket impacts
+amplify rounding (the inner-land cage's orbit is irregular), and its samples hold the half-step velocities.
+Measured (outer land / inner land; python with the module's _run and prints): cage centre within 2.2e-8 /
+1.2e-7 m (0.07 / 0.4 % of the land clearance), cage speed 5e-6 / 6e-7, Q_max 1e-6 / 1.2e-5, every ball's load
+at every sample 0.12 / 0.34 % of Q_max, pocket and land losses and the mean land force 0.15 / 0.8 %, the
+99.9th percentile of the pocket forces 1.2 / 0.7 %, the cage angle 0.1 / 0.3 % of the pocket clearance over
+the pitch radius, the sampled cage speed 0.04 / 0.17 rad/s. Asserted: the centre within 1 % of the land
+clearance and the angle within 1 % of c_p / r_p, the sampled speed within 1e-3 of the ring speed,
+the cage speed within 0.1 % and Q_max within 0.5 % (the cross-engine checks of the torus cage,
+tests/test_cage_damping.py), the ball loads within 1 % of Q_max, the losses and the land force within 2 %
+(means over the window of an impacting cage), the pocket forces' 99.9th percentile within 15 % (as in
+tests/test_cage_damping.py: impacts)."""
 import dataclasses
 import warnings
 
@@ -35,20 +41,27 @@ SCENE = eb.Scenario(Fr=3000.0, omega=500.0, t_end=0.006, dt=4e-6, sample_dt=1e-4
                     gravity=(0.0, -9.81, 0.0), cage_damping="implicit")
 
 
-def _run(engine, mode=None):
+def _scene(guidance):
+    return SCENE.replace(rigid_cage=dataclasses.replace(CAGE, guidance=guidance))
+
+
+def _run(engine, mode=None, guidance="outer_land"):
     from exudyn_bearing.solvers.element.engine import ExudynEngine
 
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", eb.SteadyStateWarning)
         warnings.simplefilter("error", eb.StepSizeWarning)
         if engine == "reference":
-            return eb.simulate(B, SCENE)
-        return eb.Results(ExudynEngine(B, SCENE, mode=mode).run())
+            return eb.simulate(B, _scene(guidance))
+        return eb.Results(ExudynEngine(B, _scene(guidance), mode=mode).run())
 
 
-@pytest.fixture(scope="module")
-def runs():
-    return {"reference": _run("reference"), "bodies": _run("exudyn", "bodies"), "fast": _run("exudyn", "fast")}
+@pytest.fixture(scope="module", params=["outer_land", "inner_land"])
+def runs(request):
+    # the outer land's reaction goes to the fixed outer ring, the inner land's to the moving inner ring
+    g = request.param
+    return {"reference": _run("reference", guidance=g), "bodies": _run("exudyn", "bodies", g),
+            "fast": _run("exudyn", "fast", g)}
 
 
 @pytest.fixture(scope="module")
@@ -77,15 +90,15 @@ def test_the_element_runs_the_rigid_cage_as_the_reference_engine(runs, summaries
     assert centre < rel * 0.01 * CAGE.land_clearance
     assert np.abs(ref["xc"][:, 0, :2]).max() > 0.05 * CAGE.land_clearance   # the centre moved
     for key, tol in (("cage_speed", 1e-3), ("q_max_inner", 5e-3), ("q_max_outer", 5e-3),
-                     ("cage_power_pocket", 0.01), ("cage_power_land", 0.01), ("land_force_mean", 0.01)):
+                     ("cage_power_pocket", 0.02), ("cage_power_land", 0.02), ("land_force_mean", 0.02)):
         assert b[key] == pytest.approx(a[key], rel=rel * tol), key
     # the ball loads of every ball at every sample
     q_ref, q_ex = ref["diag"][..., L.D_LOAD], ex["diag"][..., L.D_LOAD]
-    assert np.abs(q_ex - q_ref).max() < rel * 5e-3 * q_ref.max()
+    assert np.abs(q_ex - q_ref).max() < rel * 0.01 * q_ref.max()
     p_a, p_b = (np.percentile(d["cage_load"][:, :, 0], 99.9) for d in (ref, ex))
     assert p_b == pytest.approx(p_a, rel=rel * 0.15)
     # the cage's angle and speed in the samples: relative to the outer ring, as the reference engine's
-    assert np.abs(ex["xc"][:, 1, 0] - ref["xc"][:, 1, 0]).max() < rel * 1e-5
+    assert np.abs(ex["xc"][:, 1, 0] - ref["xc"][:, 1, 0]).max() < rel * 0.01 * CAGE.pocket_clearance / B.pitch_radius
     assert np.abs(ex["vc"][:, 1, 0] - ref["vc"][:, 1, 0]).max() < rel * 1e-3 * SCENE.omega
     assert not ex["xc"][:, 2:].any() and not ex["xc"][:, 1, 1:].any()
 
