@@ -183,6 +183,7 @@ def test_the_cage_is_an_exudyn_rigid_body_with_sensors_and_markers():
     s_x = mbs.AddSensor(SensorMarker(markerNumber=bearing.cageMarker, storeInternal=True,
                                      outputVariableType=exu.OutputVariableType.Position))
     rec = _solve(mbs, bearing, 2e-3)
+    assert len(bearing._graphics(mbs, bearing.items["object"])) == 4   # balls, the cage's section, two grooves
     w = mbs.GetSensorStoredData(s_w)
     x = mbs.GetSensorStoredData(s_x)
     # the body turns about the bearing axis at the cage speed the results report, its tilts held at zero

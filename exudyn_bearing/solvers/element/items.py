@@ -7,7 +7,6 @@ import math
 
 import numpy as np
 
-from ...data.cages import estimated_cage
 from ...model import layout as L
 from ...model.contact import HZ_N, scene_loss_path, scene_paths
 from ...model.motion import ring_poses
@@ -166,10 +165,9 @@ class ItemsMixin:
         from exudyn.itemInterface import (CoordinateConstraint, MarkerBodyRigid, MarkerNodeCoordinate,
                                           NodePointGround, NodeRigidBodyRxyz, ObjectRigidBody)
 
-        b, p = self.bearing, self.params
+        p = self.params
         mc, ic = float(p[L.P_MC]), float(p[L.P_IC])
-        width = (self.scenario.rigid_cage or estimated_cage(b)).width  # the kernel's cage (model.parameters)
-        it = 0.5 * ic + mc * width ** 2 / 12.0
+        it = 0.5 * ic + mc * self._cage_geometry.width ** 2 / 12.0
         node = mbs.AddNode(NodeRigidBodyRxyz(referenceCoordinates=[*xc[0], 0.0, 0.0, float(xc[1, 0])],
                                              initialCoordinates=[0.0] * 6,
                                              initialVelocities=[*vc[0], 0.0, 0.0, float(vc[1, 0])]))

@@ -57,7 +57,7 @@ class SensorsMixin:
                                                                        / self.sampleInterval) + 1.0)
 
     def _graphics(self, mbs, itemNumber):
-        """Graphics for Exudyn's renderer: balls, cage balls and the two groove
+        """Graphics for Exudyn's renderer: balls, cage balls (or the rigid cage's section) and the two groove
         tori at the last evaluated state (world frame)."""
         import exudyn.graphics as gr
 
@@ -67,6 +67,11 @@ class SensorsMixin:
         if self.n_cage:
             data.append(gr.Spheres(points=list(w[3, :self.n_cage]), radii=b.cage_ball_radius,
                                    colors=[0.8, 0.6, 0.2, 1.0], nTiles=12))
+        if self.rigid:  # the rigid cage's section, a hollow cylinder about the world z axis (pockets not drawn)
+            rc = self._cage_geometry
+            data.append(gr.Cylinder(pAxis=list(w[3, 0] - [0.0, 0.0, 0.5 * rc.width]), vAxis=[0.0, 0.0, rc.width],
+                                    radius=rc.outer_radius, radiusInner=rc.inner_radius,
+                                    color=[0.8, 0.6, 0.2, 0.5], nTiles=48))
         for r, ((rho, zg), rc) in enumerate(((b.inner_groove_center, b.inner_groove_radius),
                                              (b.outer_groove_center, b.outer_groove_radius))):
             a = self._rings[r, 6:15].reshape(3, 3)
