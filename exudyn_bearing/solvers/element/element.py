@@ -240,7 +240,8 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
         (``items["cageConstraints"]``). None otherwise (the fast mode
         integrates the cage inside the element; docs/theory/cage.md#in-the-exudyn-element).
     sensors : dict
-        Sensor numbers (``cageSpeed``, ``qMaxInner``, ``qMaxOuter``,
+        Sensor numbers (``cageSpeed``: mean orbital speed of the cage balls, the rigid cage's spin about the
+        world z axis; ``qMaxInner``, ``qMaxOuter``,
         ``lambdaOuterPsi0``, ``innerRingForce``, ``outerRingForce``: force of
         the balls on the ring [N]), stored internally: use
         ``mbs.PlotSensor`` or ``mbs.GetSensorStoredData``.
