@@ -105,7 +105,7 @@ class Scenario:
     cage : {"torus", "rigid", "none"} or bool
         The cage: the DEM papers' torus cage (cage balls between the balls,
         the default; True is an alias), a rigid cage body with pockets and a
-        guiding land (``rigid_cage``; reference engine, docs/theory/cage.md)
+        guiding land (``rigid_cage``; reference engine and Exudyn element, docs/theory/cage.md)
         or none (False is an alias): the balls kept apart by ball / ball
         contact only. Read back as one of the three names.
     rigid_cage : RigidCage or None
