@@ -56,7 +56,7 @@ def add_parser(sub):
                    help="film model: Hamrock-Dowson or Masjedi-Khonsari reading")
     p.add_argument("--cage", nargs="?", const="torus", default="torus", choices=("torus", "rigid", "none"),
                    help="cage model: the DEM papers' torus of cage balls (default), a rigid cage body with pockets "
-                        "and a guiding land (reference engine; geometry estimated from the ball diameter, "
+                        "and a guiding land (both engines; geometry estimated from the ball diameter, "
                         "docs/theory/cage.md), or none")
     p.add_argument("--no-cage", dest="cage", action="store_const", const="none", help="the same as --cage none")
     p.add_argument("--lubrication", action=argparse.BooleanOptionalAction, default=True,
