@@ -94,22 +94,30 @@ def main(argv=None):
     sc7 = {"Fr": 3000.0, "Fa": 3000.0, "omega": 500.0, "t_end": args.t_end, "sample_dt": 1e-4}
     variants = {"torus_0.5us": eb.Scenario(**sc7, dt=0.5e-6),
                 "rigid_5us": eb.Scenario(**sc7, dt=5e-6, cage="rigid", cage_damping="implicit")}
-    walls = {k: [] for k in variants}
+    walls = {k: [] for k in variants}   # whole simulate() call, set-up and summary included
+    engine_walls = {k: [] for k in variants}   # the engine's integration alone (the summary's wall_s)
     summaries, records = {}, {}
     for i in range(args.repeat):
         for name in (list(variants) if i % 2 == 0 else list(variants)[::-1]):
             wall, summary, rec = run(b7, variants[name])
             walls[name].append(wall / args.t_end)
+            engine_walls[name].append(summary["wall_s"] / args.t_end)
             summaries[name], records[name] = summary, rec
-            print(f"    7208 {name}: {wall / args.t_end:.3g} s per simulated second", flush=True)
+            print(f"    7208 {name}: {wall / args.t_end:.3g} s per simulated second ({summary['wall_s'] / args.t_end:.3g} "
+                  "s integrating)", flush=True)
     med = {k: float(np.median(v)) for k, v in walls.items()}
+    med_engine = {k: float(np.median(v)) for k, v in engine_walls.items()}
     keys7 = KEYS + ("dissipation", "energy_residual", "stable_dt", "cage_power_pocket", "cage_power_land",
                     "land_eccentricity_max")
     report["c_7208"] = {name: {"wall_per_simulated_second_median": med[name], "walls": walls[name],
+                               "integration_wall_per_simulated_second_median": med_engine[name],
                                **pick(summaries[name], keys7)} for name in variants}
     report["c_7208"]["cost_ratio_rigid_over_torus"] = med["rigid_5us"] / med["torus_0.5us"]
+    report["c_7208"]["integration_cost_ratio_rigid_over_torus"] = med_engine["rigid_5us"] / med_engine["torus_0.5us"]
     print(f"(c) 7208: wall per simulated second, median of {args.repeat}: torus at 0.5 us {med['torus_0.5us']:.3g} s, "
-          f"rigid at 5 us {med['rigid_5us']:.3g} s (ratio {med['rigid_5us'] / med['torus_0.5us']:.3g}); "
+          f"rigid at 5 us {med['rigid_5us']:.3g} s (ratio {med['rigid_5us'] / med['torus_0.5us']:.3g}); integrating "
+          f"alone {med_engine['torus_0.5us']:.3g} / {med_engine['rigid_5us']:.3g} s "
+          f"(ratio {med_engine['rigid_5us'] / med_engine['torus_0.5us']:.3g}); "
           f"stable-step estimates {summaries['torus_0.5us']['stable_dt']:.3g} / {summaries['rigid_5us']['stable_dt']:.3g} s")
 
     # (d) step convergence of the rigid cage
