@@ -70,6 +70,8 @@ ARRANGEMENTS = ("DB", "DF", "DT")
 #: Manufacturer's preload classes: refused (no cited values are held; see :func:`_preload_offset`).
 PRELOAD_CLASSES = ("light", "medium", "heavy")
 _LOAD_NAMES = ("Fr", "Fy", "Fa", "Mx", "My")
+#: Rating lives combined into the pair's system life (:meth:`PairSolution.rating`).
+SYSTEM_LIFE_KEYS = ("L10", "L10h", "L10m", "L10r", "L10mr", "L10r_speed", "L10mr_speed")
 #: Largest relative residual of the shaft equilibrium (scaled loads) that counts as converged.
 _TOL = 1e-9
 _MAX_IT = 60
@@ -158,6 +160,7 @@ class PairSolution:
     iterations: int = 0
     wall_s: float = 0.0
     notes: list = field(default_factory=list)
+    bearing: object = None          #: the BallBearing of both positions
 
     @property
     def pressure_centre_spacing(self) -> float | None:
@@ -186,7 +189,7 @@ class PairSolution:
         q = bl["q_inner"]
         loaded = q > 0.0
         d = {"index": k, "position": self.positions[k], "turned": self.turned[k],
-             "Fr": float(math.hypot(f[0], f[1])), "Fa": float(f[2]), "loads": dict(zip(("Fx", "Fy", "Fa", "Mx", "My"),
+             "Fr": float(math.hypot(f[0], f[1])), "Fa": float(f[2]) + 0.0, "loads": dict(zip(("Fx", "Fy", "Fa", "Mx", "My"),
                                                                                      map(float, f))),
              "loads_global": dict(zip(("Fx", "Fy", "Fa", "Mx", "My"), map(float, _to_global(f, self.turned[k])))),
              "unloaded": self.unloaded(k),
@@ -201,11 +204,39 @@ class PairSolution:
              "friction_torque": sign * s.friction_torque, "dissipation_total": s.dissipation_total}
         return d
 
-    def to_dict(self, full=False) -> dict:
+    def rating(self, reference=None, omega=None, **kwargs):
+        """Load ratings and rating lives of each bearing (:func:`~exudyn_bearing.physics.rating_life.rating_life`
+        of its solution, at the shaft speed or ``omega`` [rad/s]; ``reference``: a PairSolution of the same loads at rest, whose
+        distributions give ISO/TS 16281's L10mr at speed; ``kwargs``: reliability, contamination,
+        temperature, lubricant) and the system lives of the pair,
+        L_sys = (L_1^(-e) + L_2^(-e))^(-1/e), e = 10/9 for ball bearings (the Weibull slope of Lundberg and
+        Palmgren: the probability that both survive is the product of both; Harris & Kotzalas, Essential
+        Concepts, on the fatigue life of a bearing system; an unloaded bearing has an infinite life and adds
+        nothing). Returns (list of RatingLife, dict of system lives: None where a bearing's life is None)."""
+        from ...physics.rating_life import rating_life
+
+        b = self.bearing if self.bearing is not None else load_bearing(self.bearing_name)
+        lives = []
+        for k in range(2):
+            ref = reference.solutions[k] if reference is not None else None
+            w = abs(self.omega if omega is None else omega)
+            lives.append(rating_life(b, self.solutions[k], w if w != 0.0 else None, reference=ref, **kwargs))
+        system = {}
+        for key in SYSTEM_LIFE_KEYS:
+            vals = [getattr(r, key, None) for r in lives]
+            if any(v is None for v in vals):
+                system[key] = None
+                continue
+            inv = sum(v ** (-10.0 / 9.0) for v in vals if math.isfinite(v) and v > 0.0)
+            system[key] = math.inf if inv == 0.0 else inv ** (-0.9)
+        return lives, system
+
+    def to_dict(self, full=False, rating=None) -> dict:
         """JSON-ready dict: the pair (arrangement, spacing, preload, shaft displacement and stiffness,
         held DOFs) and ``bearings``, one entry per bearing with its own loads and results
         (:meth:`bearing_dict`; ``full``: also each bearing's whole QuasiStaticSolution.to_dict as
-        ``solution``)."""
+        ``solution``). ``rating``: the result of :meth:`rating`, whose keys (``C``, ``C0``, ``s0``, ``L10``,
+        ...) go into each bearing's entry and whose system lives are ``system_life``."""
         d = {"bearing": self.bearing_name, "arrangement": self.arrangement,
              "loads": dict(zip(_LOAD_NAMES, map(float, self.loads))), "omega": self.omega,
              "spacing": self.spacing, "pressure_centre_offset": self.pressure_centre_offset,
@@ -220,10 +251,17 @@ class PairSolution:
             e = self.bearing_dict(k)
             if full:
                 e["solution"] = self.solutions[k].to_dict()
+            if rating is not None:
+                e.update(rating[0][k].to_dict())
             d["bearings"].append(e)
+        if rating is not None:
+            from ...physics.rating_life import RATING_UNITS
+
+            d["system_life"] = dict(rating[1])
+            d["units"] = {**RATING_UNITS, "system_life": "10^6 revolutions (h for L10h): (sum L^(-10/9))^(-9/10)"}
         d["friction_torque"] = float(sum(e["friction_torque"] for e in d["bearings"]))
         d["dissipation_total"] = float(sum(e["dissipation_total"] for e in d["bearings"]))
-        d["units"] = dict(PAIR_UNITS)
+        d["units"] = {**d.get("units", {}), **PAIR_UNITS}
         return d
 
     def summary(self) -> str:
@@ -273,9 +311,10 @@ def _preload_offset(b, arrangement, preload, hertz_method):
                          "way); preload it against a third bearing, or use DB / DF")
     if isinstance(preload, str):
         if preload in PRELOAD_CLASSES:
-            raise InputError(f"preload: the class {preload!r} needs a manufacturer's preload table, and no cited "
-                             "values are held for this bearing: give the preload as a force [N] (e.g. from the "
-                             "catalogue of the bearing's maker) or as ('displacement', metres)")
+            raise InputError(f"preload: the class {preload!r} needs the preload table of the bearing's maker "
+                             "(classes are not standardized: SKF GA / GB / GC, Schaeffler UL / UM / UH differ by "
+                             "size and series), and no cited values are held: give the preload as a force [N] from "
+                             "that table, or as an axial displacement [m]")
         raise InputError(f"preload: expected a force [N], ('displacement', metres) or one of "
                          f"{', '.join(PRELOAD_CLASSES)}, got {preload!r}")
     if isinstance(preload, (tuple, list)):
@@ -498,7 +537,7 @@ def solve_pair(bearing, arrangement="DB", Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=
                        spacing=spacing, pressure_centre_offset=abs(z_pc), preload=f0, preload_displacement=delta,
                        preload_given=given, positions=positions, turned=turned, solutions=sols, transforms=ts,
                        stiffness=kmat if stiffness else np.full((5, 5), np.nan), omega=w_i, iterations=it,
-                       wall_s=time.perf_counter() - t0, notes=notes)
+                       wall_s=time.perf_counter() - t0, notes=notes, bearing=b)
     return sol
 
 
