@@ -156,3 +156,44 @@ def test_refusals_name_the_parameter(kwargs, name):
 def test_deep_groove_bearing_refused():
     with pytest.raises(InputError, match=r"^bearing: .*deep-groove"):
         solve_pair("6208", "DB", preload=200.0, spacing=L)
+
+
+def _cli_json(capsys, *argv):
+    from exudyn_bearing.cli import main
+
+    assert main([*argv, "--json"]) == 0
+    return json.loads(capsys.readouterr().out)
+
+
+@pytest.mark.parametrize("command", ["static", "quasistatic", "stiffness"])
+def test_cli_pair_json(capsys, command):
+    """The interface: --arrangement DB --preload N gives ``bearings``, one entry per bearing with its own
+    loads (Fr, Fa) and results, and the pair's stiffness; static and quasistatic add the rating lives."""
+    d = _cli_json(capsys, command, B, "--Fr", "2000", "--Fa", "600", "--arrangement", "DB", "--preload", "500",
+                  "--spacing", "0.018", "--tilt", "free")
+    assert d["arrangement"] == "DB" and d["preload"] == 500.0 and len(d["bearings"]) == 2
+    fr = [e["Fr"] for e in d["bearings"]]
+    fa = [e["Fa"] for e in d["bearings"]]
+    assert sum(fr) == pytest.approx(2000.0, rel=1e-6)  # both push along +x: the shares add up to F_r
+    assert fa[0] - fa[1] == pytest.approx(600.0, rel=1e-6)  # bearing 0 carries +z: the difference is F_a
+    assert np.asarray(d["stiffness"]).shape == (5, 5)
+    if command != "stiffness":
+        assert all(e["C"] > 0.0 and e["L10"] > 0.0 for e in d["bearings"])
+        lives = [e["L10"] for e in d["bearings"]]
+        assert d["system_life"]["L10"] < min(lives)  # the set fails before its weaker bearing alone
+        assert d["system_life"]["L10"] == pytest.approx(sum(v ** (-10 / 9) for v in lives) ** -0.9, rel=1e-12)
+
+
+@pytest.mark.parametrize("argv, flag", [
+    (["--preload", "100"], "--preload"),
+    (["--arrangement", "DB", "--preload-class", "light"], "--preload-class"),
+    (["--arrangement", "DT", "--Fa", "500", "--preload", "100"], "--preload"),
+    (["--arrangement", "DB", "--My", "2", "--tilt", "free"], "--spacing"),
+    (["--arrangement", "DB", "--preload-displacement", "0.01"], "--preload-displacement"),
+])
+def test_cli_pair_refusals(capsys, argv, flag):
+    from exudyn_bearing.cli import main
+
+    assert main(["static", B, "--Fr", "100", *argv]) != 0
+    err = capsys.readouterr().err
+    assert f"error: {flag}:" in err

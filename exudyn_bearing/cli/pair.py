@@ -67,8 +67,11 @@ def _named(exc, args) -> InputError:
     return InputError(msg)
 
 
-def run_pair(args, command):
-    """``static``, ``quasistatic`` or ``stiffness`` of a pair: solve, print JSON or text."""
+def run_pair(args, command, rating=None, warn_speed=None, print_matrix=None):
+    """``static``, ``quasistatic`` or ``stiffness`` of a pair: solve, print JSON or text. The command hands
+    over its own pieces (no import back into the commands): ``rating`` the keyword arguments of rating_life
+    (static, quasistatic), ``warn_speed(bearing, omega)`` the limiting-speed check, ``print_matrix`` the
+    stiffness command's matrix printer."""
     from ..solvers.quasistatic.pair import solve_pair
     from .common import (
         bearing_from_args,
@@ -82,14 +85,12 @@ def run_pair(args, command):
         b = b.with_clearance(args.Pd, name="Pd")
     loads = {"Fr": args.Fr, "Fa": args.Fa, "Mx": args.Mx, "My": args.My, "Fy": getattr(args, "Fy", 0.0)}
     common = {"preload": _preload(args), "spacing": args.spacing, "fixed": fixed_from_args(args)}
-    rating_opts = None
+    rating_opts = dict(rating) if rating is not None else None
     if command == "static":
         from .common import omega_from_args
-        from .static import rating_options
 
         omega = omega_from_args(args)  # the speed of the rating's hours and kappa only (zero-speed solve)
         opts = {"ring_growth": False, "hertz_method": args.hertz, "phase": args.phase}
-        rating_opts = rating_options(args)
         if omega is None:
             rating_opts.pop("temperature", None)
         solve_omega = 0.0
@@ -105,7 +106,6 @@ def run_pair(args, command):
         opts = {"omega_outer": args.omega_outer, "control": args.control, "traction": traction_from_args(args, b),
                     "lubricant": lubricant_from_args(args, b), "ring_growth": args.ring_growth, "fit": args.fit,
                     "temperatures": temps, "hertz_method": args.hertz, "n_strips": args.strips, "n_across": args.points_across}
-        rating_opts = {"reliability": args.reliability, "contamination": _contamination(args.contamination)}
         solve_omega = omega
     else:
         if args.speeds is not None or args.rpms is not None:
@@ -113,9 +113,10 @@ def run_pair(args, command):
                              "over --speeds / --rpms")
         if args.phases != 1:
             raise InputError("--phases: one ball-set position for a pair (leave --phases out)")
-        from .stiffness import RPM
+        from .common import RPM_TO_RAD_S
 
-        omega = args.omega if args.omega is not None else (args.rpm * RPM if args.rpm is not None else 0.0)
+        omega = args.omega if args.omega is not None else (args.rpm * RPM_TO_RAD_S if args.rpm is not None
+                                                           else 0.0)
         opts = {"control": args.control, "traction": traction_from_args(args, b),
                     "lubricant": lubricant_from_args(args, b), "ring_growth": args.ring_growth}
         solve_omega = omega
@@ -138,10 +139,8 @@ def run_pair(args, command):
                 rating = p.rating(reference=ref, omega=omega, **rating_opts)
     except InputError as exc:
         raise _named(exc, args) from None
-    if command == "stiffness":
-        from .static import warn_speed
-
-        warn_speed(b, omega)
+    if warn_speed is not None and omega:
+        warn_speed(b, omega)  # after the solve: a refusal stays the one line on stderr
     d = p.to_dict(rating=rating)
     d["command"] = command
     d["tilt"] = args.tilt
@@ -154,16 +153,9 @@ def run_pair(args, command):
         print("rating: " + ", ".join(f"bearing {k} L10 {r.L10:.4g}" if r.L10 is not None else f"bearing {k} L10 -"
                                      for k, r in enumerate(rating[0]))
               + (f"; system L10 {life['L10']:.4g} (10^6 rev)" if life.get("L10") is not None else ""))
-    if command == "stiffness":
+    if print_matrix is not None:
         from ..model.coefficients import STIFFNESS_UNITS
-        from .stiffness import _print_matrix
 
-        _print_matrix("pair stiffness K = -dF/dq (shaft at the pair's centre)", np.asarray(p.stiffness) + 0.0,
+        print_matrix("pair stiffness K = -dF/dq (shaft at the pair's centre)", np.asarray(p.stiffness) + 0.0,
                       STIFFNESS_UNITS)
 
-
-def _contamination(c):
-    try:
-        return float(c)
-    except ValueError:
-        return c

@@ -63,7 +63,7 @@ def add_parser(sub):
 
 def run(args):
     if pair_requested(args):  # a bearing pair (cli/pair.py)
-        return run_pair(args, "quasistatic")
+        return run_pair(args, "quasistatic", rating=rating_options(args), warn_speed=warn_speed)
     b = bearing_from_args(args)
     if args.Pd is not None:
         b = b.with_clearance(args.Pd, name="Pd")

@@ -160,7 +160,7 @@ def static_result(b, fr, fa, mx=0.0, my=0.0, tilt="fixed", omega=None, film="hd"
 
 def run(args):
     if pair_requested(args):  # a bearing pair (cli/pair.py)
-        return run_pair(args, "static")
+        return run_pair(args, "static", rating=rating_options(args), warn_speed=warn_speed)
     b = bearing_from_args(args)
     if args.Pd is not None:
         b = b.with_clearance(args.Pd, name="Pd")

@@ -100,7 +100,7 @@ def run(args):
     from .static import warn_speed
 
     if pair_requested(args):  # a bearing pair (cli/pair.py)
-        return run_pair(args, "stiffness")
+        return run_pair(args, "stiffness", warn_speed=warn_speed, print_matrix=_print_matrix)
     if not 1 <= args.phases <= 64:
         raise InputError(f"--phases: expected an integer in [1, 64], got {args.phases}")
     if args.plot and args.speeds is None and args.rpms is None:

@@ -21,8 +21,8 @@ contact lines diverge towards the outside, pressure centres outside the pair, ef
 L + 2 e; DF (face-to-face): they converge, pressure centres inside, L - 2 e; DT (tandem): both bearings
 face the same way and carry axial load in one direction only, spacing L. Here L is the distance between
 the two ball-set planes (``spacing``) and e = |z_pc| the distance of a bearing's pressure centre (where its
-contact line through the groove centres meets the axis) from its ball-set plane,
-e = rho_o + (rho_i - rho_o)... = r_pitch tan(alpha) to first order (:func:`pressure_centre_offset`).
+contact line through the groove centres meets the axis) from its ball-set plane, about
+(d_m / 2) tan(alpha) (:func:`pressure_centre_offset`).
 The single-bearing solver's radial / tilt coupling K_x,tilt_y = -k_r z_pc already carries e, so the
 arrangement follows from where each bearing sits and which way it faces; no other term distinguishes DB
 from DF.
@@ -516,9 +516,13 @@ def solve_pair(bearing, arrangement="DB", Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=
             u, sols, g, kk, r = un, sols_n, g_n, kk_n, rn
     except InputError as exc:
         msg = str(exc)
-        if msg.startswith(names + ":"):
-            raise
-        raise InputError(f"{names}: {msg.partition(': ')[2]} (in a bearing of the {arrangement} pair)") from None
+        inner, _, rest = msg.partition(": ")
+        if msg.startswith(names + ":") or inner not in ("fixed", *_LOAD_NAMES) and not inner.startswith("fixed."):
+            # the pair's own name, or an input of both bearings (omega, fit, temperatures, control, ...)
+            raise InputError(f"{msg} (in a bearing of the {arrangement} pair, held at its pose: its own loads "
+                             "read 0)") from None
+        raise InputError(f"{names}: {rest} (in a bearing of the {arrangement} pair, held at its pose: its own "
+                         "loads read 0)") from None
     reactions = {k: float((g - loads)[DOF_NAMES.index(k)]) for k in held}
     kmat = np.array(kk, float)
     if spacing is None:
