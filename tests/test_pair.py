@@ -197,3 +197,74 @@ def test_cli_pair_refusals(capsys, argv, flag):
     assert main(["static", B, "--Fr", "100", *argv]) != 0
     err = capsys.readouterr().err
     assert f"error: {flag}:" in err
+
+
+def _shaft(load, torque=(0.0, 0.0, 0.0)):
+    """A 2.5 kg shaft at the origin with its load, a ground marker and a pure damper that settles it (as in
+    tests/test_levels.py)."""
+    exu = pytest.importorskip("exudyn")
+    from exudyn.itemInterface import (
+        LoadForceVector,
+        LoadTorqueVector,
+        MarkerBodyRigid,
+        NodeRigidBodyRxyz,
+        ObjectConnectorRigidBodySpringDamper,
+        ObjectGround,
+        ObjectRigidBody,
+    )
+
+    sc = exu.SystemContainer()
+    mbs = sc.AddSystem()
+    ground = mbs.AddObject(ObjectGround())
+    node = mbs.AddNode(NodeRigidBodyRxyz(referenceCoordinates=[0.0] * 6))
+    body = mbs.AddObject(ObjectRigidBody(nodeNumber=node, mass=2.5, inertia=[0.01, 0.01, 5e-4, 0, 0, 0]))
+    m_g = mbs.AddMarker(MarkerBodyRigid(bodyNumber=ground))
+    m_b = mbs.AddMarker(MarkerBodyRigid(bodyNumber=body))
+    mbs.AddLoad(LoadForceVector(markerNumber=m_b, loadVector=list(load)))
+    mbs.AddLoad(LoadTorqueVector(markerNumber=m_b, loadVector=list(torque)))
+    mbs.AddObject(ObjectConnectorRigidBodySpringDamper(markerNumbers=[m_g, m_b],
+                                                       damping=np.diag([2e4, 2e4, 2e4, 20.0, 20.0, 0.0])))
+    return exu, sc, mbs, node, m_b, m_g
+
+
+@pytest.mark.parametrize("arrangement, load, torque", [("DB", (3000.0, 0.0, 1000.0), (0.0, 20.0, 0.0)),
+                                                       ("DF", (3000.0, 0.0, -1000.0), (0.0, 20.0, 0.0)),
+                                                       ("DT", (0.0, 0.0, 2000.0), (0.0, 0.0, 0.0))])
+def test_create_ball_bearing_pair_settles_at_solve_pair(arrangement, load, torque):
+    """CreateBallBearing(model="quasistatic", arrangement=...) between a shaft and ground: the shaft settles
+    where solve_pair puts it (0.5 %, the levels' tolerance in tests/test_levels.py)."""
+    import exudyn_bearing as eb
+
+    exu, _sc, mbs, node, m_b, m_g = _shaft(load, torque)  # _sc keeps the system alive
+    preload = None if arrangement == "DT" else F0
+    br = eb.CreateBallBearing(mbs, B, m_b, m_g, model="quasistatic", arrangement=arrangement, preload=preload,
+                              spacing=L, initialLoad=(load[0], load[2]))
+    mbs.Assemble()
+    ss = br.SimulationSettings(0.03)
+    mbs.SolveDynamic(ss, solverType=ss.timeIntegration.solverType)
+    pos = mbs.GetNodeOutput(node, exu.OutputVariableType.Position)
+    rot = mbs.GetNodeOutput(node, exu.OutputVariableType.Rotation)
+    ref = solve_pair(B, arrangement, Fr=load[0], Fa=load[2], My=torque[1], preload=preload, spacing=L,
+                     ring_growth=False).displacement
+    scale = np.abs(ref[:3]).max()
+    assert pos[2] == pytest.approx(ref[2], rel=5e-3)
+    assert pos[0] == pytest.approx(ref[0], abs=5e-3 * scale)
+    assert rot[1] * L == pytest.approx(ref[4] * L, abs=5e-3 * scale)
+    # the force of the bearings on the shaft balances the load
+    assert br.samples()["force"][-1][2] == pytest.approx(-load[2], rel=5e-3)
+
+
+def test_create_ball_bearing_pair_refusals():
+    import exudyn_bearing as eb
+
+    _exu, _sc, mbs, _node, m_b, m_g = _shaft((0.0, 0.0, 0.0))
+    with pytest.raises(InputError, match="^spacing: "):
+        eb.CreateBallBearing(mbs, B, m_b, m_g, model="quasistatic", arrangement="DB", preload=F0)
+    with pytest.raises(InputError, match="^model: "):
+        eb.CreateBallBearing(mbs, B, m_b, m_g, model="linear", arrangement="DB", preload=F0, spacing=L)
+    with pytest.raises(InputError, match="^coefficientSpeeds: "):
+        eb.CreateBallBearing(mbs, B, m_b, m_g, model="quasistatic", arrangement="DB", spacing=L,
+                             coefficientSpeeds=[0.0])
+    with pytest.raises(InputError, match="^preload: "):
+        eb.CreateBallBearing(mbs, B, m_b, m_g, model="quasistatic", arrangement="DT", preload=F0, spacing=L,
+                             initialLoad=(0.0, 1000.0))
