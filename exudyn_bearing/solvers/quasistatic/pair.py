@@ -465,7 +465,7 @@ def solve_pair(bearing, arrangement="DB", Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=
             ul = ts[k] @ u + offs[k]
             fx = dict(zip(DOF_NAMES, map(float, ul)))
             sgn_w = -1.0 if turned[k] else 1.0
-            sols.append(solve_quasistatic(b, omega=sgn_w * w_i, omega_outer=sgn_w * w_o, fixed=fx,
+            sols.append(solve_quasistatic(b, omega=sgn_w * w_i + 0.0, omega_outer=sgn_w * w_o + 0.0, fixed=fx,
                                           stiffness=with_k, **kw))
         return sols
 
