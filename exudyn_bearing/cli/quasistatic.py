@@ -17,6 +17,7 @@ from ..solvers.quasistatic.kinematics import CONTROLS
 from .common import (add_strip_arguments, add_bearing_argument, add_hold_arguments, add_lubricant_argument, add_load_arguments,
                      add_ring_growth_argument, add_traction_argument, bearing_from_args, explained, finite_float,
                      fixed_from_args, format_value, lubricant_from_args, solver_header, traction_from_args)
+from .pair import add_pair_arguments, pair_requested, run_pair
 from ..solvers.quasistatic.losses import LOSS_COMPONENTS
 from ..solvers.quasistatic.thermal import solve_thermal
 from ..physics.rating_life import RATING_UNITS, RatingLifeWarning, rating_life
@@ -62,9 +63,12 @@ def add_parser(sub):
     p.add_argument("--plot", metavar="FILE.png", help="loads and contact angles against azimuth (+ CSV, and "
                                                       "FILE_slip.png with the slip along ball 0's contacts)")
     p.add_argument("--json", action="store_true", help="print JSON")
+    add_pair_arguments(p)  # --arrangement, --preload, --spacing (cli/pair.py)
 
 
 def run(args):
+    if pair_requested(args):  # a bearing pair (cli/pair.py)
+        return run_pair(args, "quasistatic", rating=rating_options(args), warn_speed=warn_speed)
     b = bearing_from_args(args)
     if args.Pd is not None:
         b = b.with_clearance(args.Pd, name="Pd")
