@@ -2,11 +2,12 @@
 (tests/conftest.py) that keeps test runs from writing into the working tree."""
 import json
 import subprocess
+import sys
 from pathlib import Path
 
 import pytest
 
-from conftest import ROOT, working_tree_changes
+from conftest import ROOT, TREE_WRITES, TreeWrites
 
 
 def _git(*args):
@@ -25,17 +26,37 @@ def test_no_exudyn_output_is_tracked():
     assert "solution/" in (ROOT / ".gitignore").read_text().split()
 
 
-def test_guard_sees_a_file_written_into_the_tree():
-    _git("status")
-    before = working_tree_changes()
-    probe = ROOT / "solution_probe_of_the_tree_guard.txt"
-    probe.write_text("x")
+def test_guard_sees_what_the_test_writes_into_the_tree(tmp_path):
+    # a guard on a stand-in clone (tmp_path / "clone"): a file the test writes there, a folder it makes and a
+    # file it removes are seen with the test's id; outputs under a relative name land in the test's own
+    # directory (the current one), outside the clone
+    clone = tmp_path / "clone"
+    clone.mkdir()
+    guard = TreeWrites(clone)
+    sys.addaudithook(guard)
+    guard.active, guard.current = True, "a test"
+    (clone / "out").mkdir()
+    (clone / "out" / "run.csv").write_text("x")
+    (clone / "out" / "run.csv").unlink()
+    Path("relative.csv").write_text("x")
+    (clone / "__pycache__").mkdir()
+    guard.active = False
+    assert [(t, Path(p).relative_to(clone).as_posix()) for t, p in guard.writes] == \
+        [("a test", "out"), ("a test", "out/run.csv"), ("a test", "out/run.csv")]
+    assert Path.cwd() == tmp_path and (tmp_path / "relative.csv").exists()
+
+
+def test_a_file_someone_else_writes_into_the_clone_does_not_fail_the_run():
+    # another process (the user running a README example from the repository root, say) writes into the
+    # real clone while the session runs: the session's guard does not see it, so the run does not fail
+    probe = ROOT / "out_probe_of_the_tree_guard.txt"
+    seen = len(TREE_WRITES.writes)
     try:
-        after = working_tree_changes()
+        subprocess.run([sys.executable, "-c", f"open({str(probe)!r}, 'w').write('x')"], check=True, timeout=60)
+        assert probe.exists()
+        assert TREE_WRITES.active and TREE_WRITES.writes[seen:] == []
     finally:
-        probe.unlink()
-    assert [e for e, _ in after - before] == ["?? solution_probe_of_the_tree_guard.txt"]
-    assert working_tree_changes() == before
+        subprocess.run([sys.executable, "-c", f"import os; os.remove({str(probe)!r})"], check=True, timeout=60)
 
 
 def _scripts():
