@@ -30,15 +30,20 @@ def first_sentence(text):
 
 
 def claims_by_script(root):
-    """{script file name: [claim text, ...]} from tests/test_readme_claims.py's CLAIMS (the
-    numbers of README and the docs pages and the command that printed each)."""
+    """{script file name: [(claim text, page that says it), ...]} from tests/test_readme_claims.py's
+    CLAIMS (the numbers of README and the docs pages and the command that printed each)."""
     tree = ast.parse((root / "tests" / "test_readme_claims.py").read_text())
     claims = next(ast.literal_eval(node.value) for node in tree.body
                   if isinstance(node, ast.Assign) and getattr(node.targets[0], "id", "") == "CLAIMS")
+    pages = [root / "README.md", *sorted(q for q in (root / "docs").rglob("*.md")
+                                         if "_build" not in q.parts and q.parent.name != "validation")]
+    texts = {q.relative_to(root).as_posix(): " ".join(q.read_text().split()) for q in pages}
     out = {}
     for text, _printed, command in claims:
-        name = Path(command.split()[1]).name
-        out.setdefault(name, []).append(" ".join(text.split()))
+        name, flat = Path(command.split()[1]).name, " ".join(text.split())
+        where = next((page for page, body in texts.items() if flat in body), "?")
+        if (flat, where) not in out.setdefault(name, []):
+            out[name].append((flat, where))
     return out
 
 
@@ -63,6 +68,8 @@ def validation_pages(docs, root):
     vdir = root / "validation"
     target = docs / "validation"
     target.mkdir(exist_ok=True)
+    for old in target.glob("*.md"):  # the folder is generated whole: no page of a folder that went away
+        old.unlink()
     claims, sections = claims_by_script(root), report_sections(root)
     folders = {name: title for name, title in FOLDERS.items() if (vdir / name).is_dir()}
     top = sorted(p for p in vdir.glob("*.py") if p.name != "make_report.py" and not p.name.startswith("_"))
@@ -81,8 +88,8 @@ def validation_pages(docs, root):
                       "docstring)", ""]
             if sections.get(p.name):
                 lines += ["Report sections: " + "; ".join(f"*{_md_escape(s)}*" for s in sections[p.name]) + ".", ""]
-            for c in claims.get(p.name, []):
-                lines += [f"- backs: \u201c{_md_escape(c)}\u201d"]
+            for claim, where in claims.get(p.name, []):
+                lines += [f"- backs \u201c{_md_escape(claim)}\u201d ({where})"]
             lines += [""]
         (target / f"{name}.md").write_text("\n".join(lines).rstrip() + "\n")
     (target / "report.md").write_text(

@@ -1,4 +1,4 @@
-"""The two explained anomalies (validation/anomaly_checks.py): the quasi-static solver's least rolling
+"""The two explained anomalies (validation/consistency/anomaly_checks.py): the quasi-static solver's least rolling
 speed of the traction law (the dynamic engines' floor), and race-control orbital speeds above
 (1 - gamma cos alpha) / 2 when centrifugal force turns the contact angles apart."""
 import math

@@ -542,7 +542,7 @@ def test_peer_check_against_exudyn_builtin_bearing():
     import sys
     from pathlib import Path
 
-    sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "validation"))
+    sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "validation" / "consistency"))
     import peer_builtin
 
     # 40 ms: the last quarter then spans more than one ball passage in both bearings

@@ -1,6 +1,6 @@
 """High-speed dynamics: traction over the contact ellipse in both engines, ring
 growth, the quasi-static start, and the steady state against the quasi-static
-traction equilibrium (validation/highspeed_acbb120.py has the long runs)."""
+traction equilibrium (validation/consistency/highspeed_acbb120.py has the long runs)."""
 import math
 import warnings
 

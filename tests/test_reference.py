@@ -321,7 +321,7 @@ def test_cage_loads_above_their_stable_step_are_flagged():
     # contacts are above their stable step once the cage loads reach ~100 N, the
     # loads chatter (about twice the 3 us values on the development machine; how
     # much hangs on the CPU's last bits, so it is not asserted) and the run says
-    # so; at 3 us it stays silent (validation/cage_step_checks.py measures the loads)
+    # so; at 3 us it stays silent (validation/studies/cage_step_checks.py measures the loads)
     sc = eb.Scenario(Fr=3000.0, omega=500.0, t_ramp_up=0.05, t_end=0.05, initial="rest", sample_dt=1e-4)
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")

@@ -60,7 +60,7 @@ def test_a_file_someone_else_writes_into_the_clone_does_not_fail_the_run():
 
 
 def _scripts():
-    return sorted((ROOT / "scenarios").glob("*.py")) + sorted((ROOT / "validation").glob("*.py"))
+    return sorted((ROOT / "scenarios").glob("*.py")) + sorted((ROOT / "validation").rglob("*.py"))
 
 
 #: Private names a script may import: benchmarks that time a compiled kernel itself.
@@ -188,6 +188,29 @@ def test_the_repository_cites_its_own_theory_document():
     assert len(pages) >= 8
     for page in pages:
         assert (root / "docs" / "theory" / page).is_file(), page
+
+
+def test_validation_is_laid_out_by_purpose_and_make_report_finds_every_script():
+    # validation/README.md names each purpose folder; every script there says what it is (a module
+    # docstring, which the docs' per-folder pages list); make_report runs each script it names from its folder
+    import ast
+    import sys
+
+    sys.path.insert(0, str(ROOT / "validation"))
+    import make_report
+
+    folders = sorted(p.name for p in (ROOT / "validation").iterdir() if p.is_dir() and any(p.glob("*.py")))
+    assert folders == ["consistency", "performance", "published", "studies"]
+    readme = (ROOT / "validation" / "README.md").read_text()
+    assert all(f"`{f}/`" in readme for f in folders)
+    undocumented = [p.name for f in folders for p in (ROOT / "validation" / f).glob("*.py")
+                    if not ast.get_docstring(ast.parse(p.read_text()))]
+    assert undocumented == []
+    for entry in make_report.SCRIPTS:
+        script = make_report.script_entry(entry)[0]
+        assert make_report.script_path(script).is_file(), script
+        parts = make_report.script_command(script).split("/")
+        assert len(parts) == 2 or parts[1] in folders, script  # a new script may wait at the top level
 
 
 def test_make_report_names_the_scripts_the_host_slowed():

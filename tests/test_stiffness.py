@@ -190,7 +190,7 @@ def _dem_mean(fr, fa, omega, t_end, t_avg, **kw):
 def test_dem_load_increments_give_the_quasistatic_stiffness():
     """Issue #12: small static load increments on the DEM's inner ring (6208, 3000 N, 500 rad/s;
     radial 3000 -+ 150 N, axial 25 N on the symmetric bearing) give the radial and axial stiffness of
-    the quasi-static matrix within 5 % (validation/stiffness_checks.py measures -0.02 % and -0.65 %
+    the quasi-static matrix within 5 % (validation/consistency/stiffness_checks.py measures -0.02 % and -0.65 %
     over 20 ball passes). The quasi-static value is the compliance of the translational block (the
     DEM ring cannot tilt) averaged over three ball-set positions; the DEM averages over 10 ball passes
     (35 ms) after 20 ms."""

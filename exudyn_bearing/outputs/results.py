@@ -113,7 +113,7 @@ POINT_LEVEL_NOTES = {
 
 #: Summary entries that are step noise at the point level with the Cundall-Strack spring (friction="history"),
 #: not converged losses: its friction power falls about in proportion to dt, the normal damping with dt^2
-#: (docs/theory/dynamics.md, "What each traction level models"; python validation/step_convergence_losses.py).
+#: (docs/theory/dynamics.md, "What each traction level models"; python validation/studies/step_convergence_losses.py).
 #: Such a summary says
 #: ``friction_outputs_converged: False``, lists them under ``not_converged`` and marks their descriptions;
 #: ``power_loss.X`` is the component X of ``power_loss``.
