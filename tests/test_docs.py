@@ -39,8 +39,9 @@ def test_readme_python_example_runs(tmp_path, capsys):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", eb.SteadyStateWarning)  # shortened to 5 ms: too short to judge
         exec(compile(code.replace("t_end=0.05", "t_end=0.005"), "README.md", "exec"), {})
-    q_max, cage_speed, unit = capsys.readouterr().out.split()
-    assert float(q_max) > 1000.0 and float(cage_speed) > 0.0 and unit == "rad/s"
+    rows = {line.split()[0]: line.split()[1:] for line in capsys.readouterr().out.splitlines() if line.strip()}
+    assert float(rows["q_max_inner"][0]) > 1000.0 and rows["q_max_inner"][1] == "N"
+    assert float(rows["cage_speed"][0]) > 0.0 and rows["cage_speed"][1] == "rad/s"
     assert (tmp_path / "6208.png").stat().st_size > 0
 
 
