@@ -1,4 +1,4 @@
-"""Consistency of the solvers (validation/consistency_matrix.py has the whole
+"""Consistency of the solvers (validation/consistency/consistency_matrix.py has the whole
 matrix): static = quasi-static at zero speed, the quasi-static traction
 equilibrium converges where race control does and conserves energy, balls
 without an equilibrium of their own are carried at the cage speed, and the
