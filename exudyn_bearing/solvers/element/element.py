@@ -24,7 +24,7 @@ generalized forces of the ring nodes, and writes the other balls' forces
 into the force vector of the second object (``items["ballObject"]``),
 which Exudyn evaluates after it: consistent within every evaluation, and
 without Exudyn's per-coordinate conversion of a large object's coordinates
-and forces to and from Python (validation/profile_element.py). The body
+and forces to and from Python (validation/performance/profile_element.py). The body
 mode therefore needs ``parallel.numberOfThreads = 1`` and, under an
 implicit solver, the system-wide numerical Jacobian
 (``newton.numericalDifferentiation.doSystemWideDifferentiation``, which
@@ -55,7 +55,7 @@ bodies' mass matrices and the contact stiffness of all bearings on them at
 their ``initialLoad``; one sub-step is the body mode's scheme, bounded by
 ``ringStableStep``); a larger step warns. Heavy rings (a ring on a rotor) take more sub-steps than
 a bare ring, which takes one or two. See validation/REPORT.md for the
-measured limits (``validation/fast_mode_limits.py``).
+measured limits (``validation/studies/fast_mode_limits.py``).
 
 Rigid cage (``cage="rigid"``, ``rigidCage``, ``gravity``; both modes): the
 contact kernel's rigid cage (docs/theory/cage.md). In the body mode an
@@ -91,7 +91,7 @@ wrong).
 Implicit solvers work in the body mode with the numerical Jacobian but are
 not recommended (EXUDYN_NOTES: an order of magnitude slower for Hertz
 contact: several force evaluations per step, plus those of the numerical
-Jacobian; validation/bench_element.py --ga times it). The fast mode needs
+Jacobian; validation/performance/bench_element.py --ga times it). The fast mode needs
 an explicit solver whose evaluations never go back in time (its balls
 advance at the first evaluation of a new time and ignore Newton iterations
 there): ``SimulationSettings`` and the first

@@ -137,7 +137,7 @@ class ItemsMixin:
             self._ball_object = None
             return nodes, cage_nodes, ring_nodes, obj
         # body mode: Exudyn converts the coordinates of a user function's object to Python lists and its
-        # returned forces back, per coordinate (about 0.1 us each, validation/profile_element.py); the user
+        # returned forces back, per coordinate (about 0.1 us each, validation/performance/profile_element.py); the user
         # function's object holds only the first ball and the ring nodes, and the user function reads all
         # coordinates from the system at once and hands the other balls' forces to the force vector of a
         # second object, evaluated after it (the objects' forces are evaluated in the order of their numbers)

@@ -151,7 +151,7 @@ class ElementState(structref.StructRefProxy):
     work on (:data:`STATE_FIELDS`), held in one numba structure that the
     element's Python arrays share their memory with: a compiled call takes it
     as one argument, where the 20-odd separate arrays cost numba's entry point
-    about 0.06 us each to unbox (validation/profile_element.py). Built by
+    about 0.06 us each to unbox (validation/performance/profile_element.py). Built by
     :func:`element_state` (compiled and cached: constructing it from Python
     would compile numba's constructor in every process)."""
 

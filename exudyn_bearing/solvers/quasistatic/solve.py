@@ -71,7 +71,7 @@ __all__ = ["solve_quasistatic", "beta_scan", "check_operating_fit", "check_tract
            "TractionResolutionWarning", "RESOLUTION_TOLERANCE", "MAX_OPERATING_INTERFERENCE"]
 
 #: Largest relative change of the total dissipation when the strips and the points across are doubled that
-#: counts as converged: the criterion of ``python validation/traction_convergence.py`` (1 %).
+#: counts as converged: the criterion of ``python validation/studies/traction_convergence.py`` (1 %).
 RESOLUTION_TOLERANCE = 0.01
 
 
@@ -234,7 +234,7 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
         speed itself. A floor above the rolling speeds lowers the traction
         and the dissipation: the 6208 at 1 rad/s rolls at 0.015 m/s, and
         0.1 m/s cut its dissipation five-fold
-        (``python validation/anomaly_checks.py``).
+        (``python validation/consistency/anomaly_checks.py``).
     shoulder_angle : float
         Largest angle from the groove bottom that a contact ellipse may reach [rad].
     stiffness : bool
@@ -522,7 +522,7 @@ def check_traction_resolution(sol, tolerance=RESOLUTION_TOLERANCE, warn=True) ->
 
     The dissipation of the solution's contacts, its ball kinematics held, is integrated again with twice the
     strips and twice the points across (each at most MAX_N_STRIPS, MAX_N_ACROSS); a relative change above
-    ``tolerance`` (1 %, the criterion of ``validation/traction_convergence.py``) is a
+    ``tolerance`` (1 %, the criterion of ``validation/studies/traction_convergence.py``) is a
     :class:`TractionResolutionWarning` (``warn``) with the resolution from which doubling changes it by
     less: the estimate of what the case needs (the first such level of the doublings, or the default
     DEFAULT_N_STRIPS x DEFAULT_N_ACROSS when it passes the same test with fewer points). A change below

@@ -13,7 +13,7 @@ Printed side by side: the dissipation (the quasi-static traction + pocket + land
 which also holds the contacts' normal damping), the cage speed, the cage losses by kind, the pocket and land
 forces, Q_max. The target: the two dissipations within 5 %.
 
-    python validation/quasistatic_cage.py [--t-end 0.5] [--dt 1.5e-6 0.75e-6] [--out validation/out/quasistatic_cage]
+    python validation/consistency/quasistatic_cage.py [--t-end 0.5] [--dt 1.5e-6 0.75e-6] [--out validation/out/quasistatic_cage]
 """
 from __future__ import annotations
 
@@ -29,7 +29,7 @@ import exudyn_bearing as eb
 from exudyn_bearing.solvers.quasistatic import solve_quasistatic
 from exudyn_bearing.solvers.quasistatic.losses import power_losses
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 CASE = {"Fr": 3000.0, "Fa": 3000.0, "omega": 500.0}
 #: Azimuth bins of the per-azimuth comparison [deg].
 BINS = np.linspace(-180.0, 180.0, 13)
