@@ -24,7 +24,8 @@ __all__ = ["Parser", "HelpFormatter", "finite_float", "print_table", "BEARING_HE
 RING_GROWTH = True
 
 #: Help text of a bearing argument.
-BEARING_HELP = (f"catalogue name ({', '.join(catalog)}) or a JSON file: one bearing (race radii as in "
+BEARING_HELP = (f"catalogue name ({', '.join(catalog)}; or a series estimate such as 6310-ISO, 7208B-ISO: "
+                "info --list) or a JSON file: one bearing (race radii as in "
                 "catalog.json, or dimensions: n_balls, ball_diameter, pitch_diameter, inner_conformity, "
                 "outer_conformity, ...) or a catalogue-shaped file (FILE.json#NAME picks a bearing)")
 
