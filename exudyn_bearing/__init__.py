@@ -19,6 +19,7 @@ from typing import TYPE_CHECKING
 if TYPE_CHECKING:  # the public names, imported on first use by __getattr__ below (the same modules)
     from .data import (BallBearing, Defect, InputError, Lubricant, Material, catalog, get_bearing, load_bearing,
                        load_lubricant, lubricants, materials)
+    from .data.cages import CageMaterial, CageTemperatureWarning, RigidCage, estimated_cage
     from .model.coefficients import BearingCoefficients
     from .model.scenario import Scenario
     from .model.stability import SimulationError, StepSizeWarning
@@ -38,6 +39,7 @@ if TYPE_CHECKING:  # the public names, imported on first use by __getattr__ belo
 _PUBLIC = {
     ".data": ("BallBearing", "Defect", "InputError", "Lubricant", "Material", "catalog", "get_bearing", "load_bearing",
               "load_lubricant", "lubricants", "materials"),
+    ".data.cages": ("CageMaterial", "CageTemperatureWarning", "RigidCage", "estimated_cage"),
     ".model.coefficients": ("BearingCoefficients",),
     ".model.scenario": ("Scenario",),
     ".model.stability": ("SimulationError", "StepSizeWarning"),
@@ -61,7 +63,8 @@ __all__ = ["CreateBallBearing", "filter_exudyn_notes", "BallBearing", "Defect", 
            "Results", "Scenario", "SimulationError", "SteadyStateWarning", "StepSizeWarning", "catalog", "get_bearing", "load_bearing",
            "load_lubricant", "lubricants", "materials", "simulate", "solve_quasistatic", "QuasiStaticSolution",
            "bearing_coefficients", "BearingCoefficients", "solve_thermal", "ThermalSolution", "LinearValidityWarning",
-           "TractionResolutionWarning", "RatingLife", "rating_life", "solve_pair", "PairSolution"]
+           "TractionResolutionWarning", "RatingLife", "rating_life", "solve_pair", "PairSolution",
+           "CageMaterial", "CageTemperatureWarning", "RigidCage", "estimated_cage"]
 
 
 def __getattr__(name):

@@ -165,3 +165,21 @@ def test_torque_residual_relative_to_the_tractions_where_the_pockets_carry_nothi
     sol = solve_quasistatic(B, 0.0, 3000.0, omega=500.0, control="outer", cage="rigid", rigid_cage=IDEAL, **QUICK)
     assert np.max(np.abs(sol.balls["pocket_force"])) < 1e-9 * sol.q_max_inner
     assert abs(sol.cage["torque_residual"]) < 1e-9
+
+
+def test_thermal_checks_the_cage_against_its_material_limit():
+    """The cage node against the rigid cage material's permissible temperature: within for brass (523 K) at a
+    40 degC inlet, a CageTemperatureWarning for a material whose limit lies below the computed cage node."""
+    from exudyn_bearing.data.cages import CAGE_MATERIALS, CageMaterial, CageTemperatureWarning
+
+    common = {"omega": 500.0, "oil_inlet_temperature": 313.15, "oil_flow": 1e-6, "control": "equilibrium",
+              "cage": "rigid"}
+    r = solve_thermal(B, 3000.0, **common)
+    assert r.cage_limit == {"material": "brass", "temperature_limit": CAGE_MATERIALS["brass"].temperature_limit,
+                            "within": True}
+    t_cage = r.temperatures[CAGE_NODE]
+    cool = CageMaterial("test", 8500.0, 100e9, 0.34, t_cage - 2.0, "a limit 2 K below the brass run's cage")
+    with pytest.warns(CageTemperatureWarning, match="^cage temperature: .* above the test cage's permissible"):
+        r2 = solve_thermal(B, 3000.0, rigid_cage=estimated_cage(B, material=cool), **common)
+    assert r2.cage_limit["within"] is False and r2.to_dict()["cage_temperature_limit"]["material"] == "test"
+    assert solve_thermal(B, 3000.0, **{**common, "cage": None}).cage_limit is None

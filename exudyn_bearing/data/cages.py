@@ -18,12 +18,13 @@ value it sets is listed in ``estimated``.
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass, field
 
 from .errors import InputError, check_finite, check_positive, check_text
 from .materials import DENSITY_RANGE, YOUNGS_MODULUS_RANGE
 
-__all__ = ["CageMaterial", "CAGE_MATERIALS", "RigidCage", "GUIDANCES", "POCKET_SHAPES", "estimated_cage",
+__all__ = ["CageMaterial", "CAGE_MATERIALS", "CageTemperatureWarning", "check_cage_temperature", "RigidCage", "GUIDANCES", "POCKET_SHAPES", "estimated_cage",
            "cage_material"]
 
 #: Guidance of a rigid cage: by the balls, by a land of the inner ring, by a land of the outer ring.
@@ -77,6 +78,23 @@ class CageMaterial:
                              "are in kelvin: 120 degC is 393.15 K)")
         for key, v in (("density", rho), ("youngs_modulus", e), ("poisson_ratio", nu), ("temperature_limit", t)):
             object.__setattr__(self, key, v)
+
+
+class CageTemperatureWarning(UserWarning):
+    """A cage hotter than its material's ``temperature_limit`` (a thermal solution's cage node)."""
+
+
+def check_cage_temperature(temperature: float, material: CageMaterial, where: str = "cage") -> bool:
+    """Whether ``temperature`` [K] lies within ``material.temperature_limit``; else a
+    :class:`CageTemperatureWarning` naming the material, its limit and its source (SKF's permissible
+    operating temperatures, :data:`CAGE_MATERIALS`)."""
+    if temperature <= material.temperature_limit:
+        return True
+    warnings.warn(CageTemperatureWarning(
+        f"{where}: {temperature:.1f} K ({temperature - 273.15:.0f} degC) is above the {material.name} cage's "
+        f"permissible {material.temperature_limit:.2f} K ({material.temperature_limit - 273.15:.0f} degC; "
+        f"{material.source}): a cage of another material, more oil flow or a lower speed"), stacklevel=3)
+    return False
 
 
 _SKF = ("SKF, Rolling bearings (catalogue PUB BU/P1 17000, 2018), 'Cages': permissible operating temperature "

@@ -50,6 +50,7 @@ from ...data import InputError, TractionModel, get_traction_model, load_bearing
 from ...data.errors import (LENGTH_MISTAKES, check_finite, check_integer, check_number, check_plausible,
                             check_temperature)
 from ...data import lubricants_temperature as _lt
+from ...data.cages import check_cage_temperature
 from ...physics import thermal as th
 from ...physics.lubricant_properties import lubricant_at, properties_at
 from .losses import cage_land_geometry, power_losses
@@ -73,6 +74,8 @@ THERMAL_UNITS = {
     "heat_out": "W leaving through the oil (m_dot c_p (T_out - T_in)) and to the ambient",
     "conductances": "W/K between the nodes and to the boundaries",
     "thermal_energy_residual": "W (heat generated - heat out)",
+    "cage_temperature_limit": "the rigid cage's material, its permissible temperature [K] and whether the cage node "
+                              "stays within it (None without a rigid cage)",
 }
 
 #: Width of a ring over which the oil washes it, in ball diameters (B / D_w about 1.4 for
@@ -107,6 +110,9 @@ class ThermalSolution:
     oil_flow: float
     history: list = field(default_factory=list)
     wall_s: float = 0.0
+    #: the rigid cage's material check: {"material", "temperature_limit" [K], "within"}; None without a
+    #: rigid cage (the loss module's cage has no material)
+    cage_limit: dict | None = None
 
     @property
     def energy_residual(self) -> float:
@@ -132,6 +138,7 @@ class ThermalSolution:
         d["thermal"] = {"iterations": self.iterations, "converged": self.converged,
                         "oil_inlet_temperature": self.oil_inlet_temperature, "oil_flow": self.oil_flow,
                         "ambient_temperature": self.ambient_temperature, "wall_s": self.wall_s}
+        d["cage_temperature_limit"] = dict(self.cage_limit) if self.cage_limit else None
         d["units"] = {**d.get("units", {}), **THERMAL_UNITS}
         return d
 
@@ -486,12 +493,19 @@ def solve_thermal(bearing, Fr=0.0, Fa=0.0, *, omega, oil_inlet_temperature, oil_
     out_heat = th.network_heat_out(temps, gb, tb)
     if final_check:  # the traction integration, once at the last quasi-static solution
         sol.resolution_check = check_traction_resolution(sol)
+    temperatures = dict(zip(nodes, map(float, temps)))
+    cage_limit = None
+    if cage is not None and sol.cage is not None and sol.cage.get("rigid_cage") is not None:
+        # the rigid cage's material has a permissible temperature (the loss module's cage has no material)
+        mat = sol.cage["rigid_cage"].material
+        cage_limit = {"material": mat.name, "temperature_limit": mat.temperature_limit,
+                      "within": check_cage_temperature(temperatures[CAGE_NODE], mat, "cage temperature")}
     if not converged:
         warnings.warn(ThermalConvergenceWarning(
             f"thermal loop: not converged in {it} iterations (last change {step:.3g} K > {tol:g} K); "
             "temperatures reached " + ", ".join(f"{n} {t:.1f} K" for n, t in zip(nodes, temps))), stacklevel=2)
     return ThermalSolution(
-        quasistatic=sol, temperatures=dict(zip(nodes, map(float, temps))), contact_temperature=t_contact,
+        quasistatic=sol, temperatures=temperatures, contact_temperature=t_contact, cage_limit=cage_limit,
         heat=dict(zip(nodes, map(float, heat))), heat_out={"oil": float(out_heat[1]), "ambient": float(out_heat[0])},
         conductances=cond, losses=losses, lubricant=lub, iterations=it, converged=converged,
         oil_inlet_temperature=t_in, ambient_temperature=t_amb, oil_flow=q_vol, history=history,
