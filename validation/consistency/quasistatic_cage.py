@@ -13,7 +13,8 @@ Printed side by side: the dissipation (the quasi-static traction + pocket + land
 which also holds the contacts' normal damping), the cage speed, the cage losses by kind, the pocket and land
 forces, Q_max. The target: the two dissipations within 5 %.
 
-    python validation/consistency/quasistatic_cage.py [--t-end 0.5] [--dt 1.5e-6 0.75e-6] [--out validation/out/quasistatic_cage]
+    python validation/consistency/quasistatic_cage.py [--t-end 0.5] [--dt 1.5e-6 0.75e-6] [--case FR FA ...]
+        [--out validation/out/quasistatic_cage]
 """
 from __future__ import annotations
 
@@ -35,9 +36,9 @@ CASE = {"Fr": 3000.0, "Fa": 3000.0, "omega": 500.0}
 BINS = np.linspace(-180.0, 180.0, 13)
 
 
-def quasistatic(cage):
+def quasistatic(cage, case=CASE):
     t0 = time.perf_counter()
-    s = solve_quasistatic("7208", CASE["Fr"], CASE["Fa"], omega=CASE["omega"], control="equilibrium", cage=cage,
+    s = solve_quasistatic("7208", case["Fr"], case["Fa"], omega=case["omega"], control="equilibrium", cage=cage,
                           fixed={"tilt_x": 0.0, "tilt_y": 0.0}, stiffness=False)
     wall = time.perf_counter() - t0
     pl = power_losses(s)["power_loss"]
@@ -56,8 +57,8 @@ def quasistatic(cage):
             "torque_residual": c.get("torque_residual")}
 
 
-def dem(dt, t_end):
-    sc = eb.Scenario(**CASE, cage="rigid", traction_level="ellipse", initial="quasistatic", control="equilibrium",
+def dem(dt, t_end, case=CASE):
+    sc = eb.Scenario(**case, cage="rigid", traction_level="ellipse", initial="quasistatic", control="equilibrium",
                      cage_damping="implicit", dt=dt, t_end=t_end, sample_dt=1e-4)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", eb.SteadyStateWarning)
@@ -89,6 +90,8 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--t-end", type=float, default=0.5, help="simulated time of each DEM run [s]")
     ap.add_argument("--dt", type=float, nargs="+", default=[1.5e-6, 0.75e-6], help="DEM steps [s]")
+    ap.add_argument("--case", type=float, nargs=2, action="append", metavar=("FR", "FA"),
+                    help="a further load case [N] (repeatable), e.g. --case 0 3000 --case 3000 10000")
     ap.add_argument("--out", default=str(ROOT / "validation" / "out" / "quasistatic_cage"))
     args = ap.parse_args(argv)
     out = Path(args.out)
@@ -122,6 +125,18 @@ def main(argv=None):
         q = report["quasistatic_rigid"]["by_ball"][race]
         print(f"  quasi-static {race}: " + ", ".join(f"psi {p:.0f}: Q {x:.1f} N P {y:.3f} W"
                                                     for p, x, y in zip(q["psi"], q["load"], q["dissipation"])))
+    # further load cases (--case FR FA): the dissipation and its parts, quasi-static against the DEM at the
+    # first --dt
+    report["cases"] = []
+    for fr, fa in args.case or []:
+        case = {"Fr": fr, "Fa": fa, "omega": CASE["omega"]}
+        q, d = quasistatic("rigid", case), dem(args.dt[0], args.t_end, case)
+        report["cases"].append({"case": case, "quasistatic_rigid": q, "dem": d})
+        print(f"F_r {fr:g} N, F_a {fa:g} N: dissipation QS {q['dissipation']:.2f} / DEM {d['dissipation']:.2f} W "
+              f"({100 * (q['dissipation'] / d['dissipation'] - 1):+.1f} %); contacts {q['dissipation_contacts']:.2f} / "
+              f"{d['dissipation_contacts']:.2f}, pocket {q['cage_power_pocket']:.2f} / {d['cage_power_pocket']:.2f}, "
+              f"land {q['cage_power_land']:.2f} / {d['cage_power_land']:.2f} W; cage {q['cage_speed']:.3f} / "
+              f"{d['cage_speed']:.3f} rad/s", flush=True)
     (out / "quasistatic_cage.json").write_text(json.dumps(report, indent=2, default=float))
     print(f"wrote {out / 'quasistatic_cage.json'}")
 
