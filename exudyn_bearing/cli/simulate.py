@@ -11,6 +11,7 @@ from ..model.record import RunInterrupted
 from ..model.scenario import CONTROLS, INITIAL_STATES, TRACTION_LEVELS, Scenario
 from ..outputs.jsonio import to_jsonable
 from ..outputs.results import NOT_CONVERGED_MARK
+from ..outputs.whole_loss import basis_text
 from ..physics.hertz import METHODS
 from ..simulate import simulate
 from .common import (add_strip_arguments, add_bearing_argument, add_lubricant_argument, add_ring_growth_argument, add_speed_arguments,
@@ -129,10 +130,16 @@ def _table(summary, t_end=None):
                        f"{w['samples']} samples)"),
             ("steady", "yes (drift and oscillation within the thresholds of summary['steady'])" if st["steady"]
              else f"NO: {st['reason']}")]
+    # the bearing's whole loss and torque first, with what is modelled and what estimated (outputs.whole_loss)
+    rows += [("power_loss_whole", summary["power_loss_whole"], "W"),
+             ("friction_torque_whole", summary["friction_torque_whole"], units.get("friction_torque_whole")),
+             ("power_loss_whole_basis", basis_text(summary["power_loss_whole_basis"]))]
+    rows += [(f"power_loss_estimated.{k}", v, "W") for k, v in (summary["power_loss_estimated"] or {}).items()]
+    first = ("power_loss_whole", "friction_torque_whole")
     # a quantity the run cannot give (None) says where the summary explains why, without a unit
     rows += [(k, v, units.get(k)) if v is not None else
              (k, f"n/a (energy_source.{k})" if k in summary.get("energy_source", {}) else "n/a")
-             for k, v in summary.items() if not isinstance(v, (dict, list)) and k not in ("window", "note")]
+             for k, v in summary.items() if not isinstance(v, (dict, list)) and k not in ("window", "note", *first)]
     if t_end is not None and "t_end" in summary and not math.isclose(summary["t_end"], t_end, rel_tol=1e-9):
         rows = [(k, f"{t_end:g} s (last sample at {summary['t_end']:.6g} s)", None) if k == "t_end" else r
                 for r in rows for k in (r[0],)]

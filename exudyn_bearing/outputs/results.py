@@ -37,6 +37,7 @@ from ..physics.damping import REGIME_NAMES
 from .cage_summary import CAGE_LOSSES_NOT_MODELLED, CAGE_SUMMARY_UNITS, rigid_cage_summary
 from .contact_summary import CONTACT_SUMMARY_UNITS, contact_summary
 from .jsonio import to_jsonable
+from .whole_loss import WHOLE_LOSS_DESCRIPTIONS, WHOLE_LOSS_KEYS, WHOLE_LOSS_UNITS, whole_loss
 from .window_checks import (LOSS_FLOOR_MU, SPEED_FLOOR, SteadyStateWarning, energy_balance, energy_check,
                             energy_floor, q_max_at_psi0, steadiness)
 
@@ -51,7 +52,7 @@ SUMMARY_KEYS = ("q_max_inner", "q_max_outer", "q_max_method", "q_max_inner_mean"
                 "friction_torque", "friction_power", "friction_outputs_converged", "not_converged",
                 "drive_power", "load_power", "dissipation",
                 "kinetic_energy_change", "energy_residual", "energy_source", "power_loss", "power_loss_total",
-                "not_modelled", "energy_check", "lubricant", "traction_model",
+                *WHOLE_LOSS_KEYS, "not_modelled", "energy_check", "lubricant", "traction_model",
                 "traction_level", "losses_modelled", "losses_not_modelled", "steps", "dt", "wall_s", "units",
                 "descriptions")
 
@@ -134,7 +135,7 @@ SUMMARY_UNITS = {
     "window.t0": "s", "window.t1": "s", "drive_power": "W", "load_power": "W", "dissipation": "W",
     "kinetic_energy_change": "J", "energy_residual": "-", "power_loss": "W per component",
     "power_loss_total": "W", "not_modelled": "text", "energy_check": "W, - (residual), text",
-    "friction_outputs_converged": "-", "not_converged": "summary keys"}
+    "friction_outputs_converged": "-", "not_converged": "summary keys", **WHOLE_LOSS_UNITS}
 
 #: What the loss and energy keys of the summary mean (docs/theory/dynamics.md,
 #: "Losses and the energy balance"); every summary carries it as ``descriptions``.
@@ -142,7 +143,8 @@ SUMMARY_DESCRIPTIONS = {
     "q_max_inner": "load of the ball at psi = 0 over the window, inner race (q_max_method: how it was obtained)",
     "q_max_outer": "load of the ball at psi = 0 over the window, outer race (q_max_method: how it was obtained)",
     "friction_torque": "torque that drives the inner ring about its axis, time mean: minus the torque of the balls "
-                       "on the ring; positive when the ring must be driven",
+                       "on the ring; positive when the ring must be driven; the modelled losses only (the whole "
+                       "torque is friction_torque_whole)",
     "friction_power": "frictional (tangential) power of all ball / raceway contacts, time mean; at the point level "
                       "it includes the rate of the energy stored in the tangential springs",
     "dissipation_inner": "frictional power of the inner contacts of all balls, time mean (a part of friction_power)",
@@ -166,7 +168,8 @@ SUMMARY_DESCRIPTIONS = {
                   "damping_power; None when not recorded); with Scenario.rolling_resistance also ehl_rolling and "
                   "hysteresis (the rolling-resistance moment pairs), with Scenario.ball_drag also drag (the ball "
                   "drag): time means of the engine's ehl_rolling_power, hysteresis_power, drag_power",
-    "power_loss_total": "sum of the power_loss components [W] (the sampled split of the engine's dissipation)",
+    "power_loss_total": "modelled components only: sum of the power_loss components [W] (the sampled split of the "
+                        "engine's dissipation); the whole loss is power_loss_whole",
     "not_modelled": "loss sources the dynamic engines leave out at this traction level",
     "energy_check": "drive_power = sum of power_loss + kinetic_energy_change / window length within 1 % of "
                     "drive_power (residual, passed; split_error: the sampled components against the engine's "
@@ -176,6 +179,7 @@ SUMMARY_DESCRIPTIONS = {
                                   "outputs (listed under not_converged) are step noise that falls about in "
                                   "proportion to dt, not a converged loss; use traction_level='ellipse' for losses",
     "not_converged": "summary keys whose values are not converged in the step (see friction_outputs_converged)",
+    **WHOLE_LOSS_DESCRIPTIONS,
 }
 
 #: Protocol phases (Scenario: start-up ramp, steady phase, slow-down ramp, rest).
@@ -666,6 +670,8 @@ class Results:
             "losses_modelled": self.losses_lists()[0],
             "losses_not_modelled": self.losses_lists()[1],
         }
+        # the whole loss: the modelled components plus the quasi-static estimate of the others (.whole_loss)
+        out.update(whole_loss(self, out["power_loss"], out["power_loss_total"], omega))
         converged = self.friction_outputs_converged()
         out["friction_outputs_converged"] = converged
         out["not_converged"] = [] if converged else list(POINT_STEP_DEPENDENT)
