@@ -177,7 +177,9 @@ class BallBearingElement(_ElementBase):
         """The sampled series of the run (``record()`` wrapped in Results);
         sustained contact pressures above the elastic limit raise InputError
         (:func:`check_record_pressures`)."""
-        record = self.record(wall_s=wall_s, steps=steps)
+        import dataclasses
+
+        record = dataclasses.replace(self.record(wall_s=wall_s, steps=steps), load_angle=self.loadAngle)
         check_record_pressures(record)
         return Results(record)
 

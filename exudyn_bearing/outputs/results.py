@@ -282,9 +282,11 @@ class Results:
         return self.data["signal"][:len(t), SIGNAL_FIELDS.index(name)]
 
     def azimuth(self) -> np.ndarray:
-        """Ball azimuth psi (n, Z) [rad] from the load direction, in (-pi, pi]."""
+        """Ball azimuth psi (n, Z) [rad] from the load direction (``record.load_angle`` from x), in (-pi, pi]."""
         xb = self.data["xb"]
-        return np.arctan2(xb[..., 1], xb[..., 0])
+        psi = np.arctan2(xb[..., 1], xb[..., 0])
+        a = getattr(self.record, "load_angle", 0.0)
+        return psi if a == 0.0 else np.angle(np.exp(1j * (psi - a)))
 
     def azimuth_scatter(self, name: str = "load", race: str | int = "outer", fraction: float = 0.5):
         """(psi [deg], values) of a ``DIAG_FIELDS`` entry at every ball and
@@ -711,7 +713,7 @@ class Results:
         with warnings.catch_warnings():  # the summary's own call has warned; the file holds its "steady" entry
             warnings.simplefilter("ignore", SteadyStateWarning)
             summary = self.summary()
-        summary["meta"] = {"bearing": self.bearing.to_dict(),
+        summary["meta"] = {"bearing": self.bearing.to_dict(), "load_angle": getattr(self.record, "load_angle", 0.0),
                            "scenario": dataclasses.asdict(self.scenario),
                            "lubricant": dataclasses.asdict(self.lubricant)}
         js.write_text(json.dumps(to_jsonable(summary), indent=2))
@@ -729,7 +731,8 @@ class Results:
                                for k, v in meta["meta"]["scenario"].items()})
         lub = Lubricant(**meta["meta"]["lubricant"])
         return cls(RunRecord(bearing, scenario, lub, data, steps=meta["steps"], wall_s=meta["wall_s"],
-                             engine=meta["engine"], stable_dt=meta.get("stable_dt")))
+                             engine=meta["engine"], stable_dt=meta.get("stable_dt"),
+                             load_angle=meta["meta"].get("load_angle", 0.0)))
 
     def plot(self, png):
         """Overview figure (speeds, loads, Lambda) saved as PNG; returns the path."""

@@ -16,7 +16,8 @@ from __future__ import annotations
 
 from ..data import InputError
 
-__all__ = ["WHOLE_LOSS_DESCRIPTIONS", "WHOLE_LOSS_KEYS", "WHOLE_LOSS_UNITS", "basis_text", "quasistatic_estimate", "whole_loss"]
+__all__ = ["WHOLE_LOSS_DESCRIPTIONS", "WHOLE_LOSS_KEYS", "WHOLE_LOSS_UNITS", "basis_text", "estimate_losses",
+           "quasistatic_estimate", "whole_loss"]
 
 #: Keys :func:`whole_loss` adds to a dynamic summary.
 WHOLE_LOSS_KEYS = ("power_loss_whole", "power_loss_whole_basis", "power_loss_estimated", "friction_torque_whole",
@@ -43,28 +44,41 @@ WHOLE_LOSS_DESCRIPTIONS = {
 NOT_ESTIMATED = ("seal friction (open bearing)", "cage windage", "churning in an oil bath (no bath level given)")
 
 
+def estimate_losses(bearing, lubricant, Fr, Fa, omega, *, traction=None, ring_growth=True, temperatures=None,
+                    hertz="exact", n_strips=None, n_across=None, traction_regularizing_srr=None,
+                    hysteresis_loss_factor=None, oil_volume_fraction=0.0, cage_guidance=None) -> dict:
+    """``power_losses`` of the quasi-static solution of ``bearing`` under (Fr, Fa) [N] at ``omega``
+    [rad/s], tilt held (the dynamic engines' inner ring translates only); None keywords take the
+    solvers' defaults."""
+    from ..solvers.quasistatic import solve_quasistatic
+    from ..solvers.quasistatic.losses import power_losses
+
+    kw = {k: v for k, v in (("n_strips", n_strips), ("n_across", n_across),
+                            ("traction_regularizing_srr", traction_regularizing_srr)) if v is not None}
+    sol = solve_quasistatic(bearing, Fr=Fr, Fa=Fa, omega=omega, traction=traction, lubricant=lubricant,
+                            ring_growth=ring_growth, temperatures=temperatures, fixed={"tilt_x": 0.0, "tilt_y": 0.0},
+                            hertz_method=hertz, stiffness=False, resolution_check=False, **kw)
+    lkw = {} if hysteresis_loss_factor is None else {"hysteresis_loss_factor": hysteresis_loss_factor}
+    return power_losses(sol, bearing, lubricant, oil_volume_fraction=oil_volume_fraction,
+                        cage_guidance=cage_guidance, **lkw)
+
+
 def quasistatic_estimate(results, omega: float) -> dict:
-    """``power_losses`` of the quasi-static solution at the run's operating point (the scenario's
-    Fr, Fa, the speed ``omega``), cached on ``results`` by operating point."""
+    """:func:`estimate_losses` at the run's operating point (the scenario's Fr, Fa, the speed ``omega``,
+    its lubricant, traction model, growth, temperatures and loss options), cached on ``results`` by
+    operating point."""
     sc = results.scenario
     key = (float(sc.Fr), float(sc.Fa), round(float(omega), 9))
     cache = results.__dict__.setdefault("_quasistatic_estimates", {})
     if key not in cache:
-        from ..solvers.quasistatic import solve_quasistatic
-        from ..solvers.quasistatic.losses import power_losses
-
         b = results.bearing if sc.Pd is None else results.bearing.with_clearance(sc.Pd)
-        traction = sc.traction if sc.traction is not None else None
-        sol = solve_quasistatic(b, Fr=sc.Fr, Fa=sc.Fa, omega=omega, traction=traction, lubricant=results.lubricant,
-                                ring_growth=sc.ring_growth, temperatures=sc.temperatures,
-                                fixed={"tilt_x": 0.0, "tilt_y": 0.0}, hertz_method=sc.hertz,
-                                n_strips=sc.n_strips, n_across=sc.n_across,
-                                traction_regularizing_srr=sc.traction_regularizing_srr, stiffness=False,
-                                resolution_check=False)
-        cage = sc.cage
-        guidance = "none" if (cage in (False, "none") or not b.has_cage) else None
-        cache[key] = power_losses(sol, b, results.lubricant, hysteresis_loss_factor=sc.hysteresis_loss_factor,
-                                  oil_volume_fraction=sc.oil_volume_fraction, cage_guidance=guidance)
+        guidance = "none" if (sc.cage in (False, "none") or not b.has_cage) else None
+        cache[key] = estimate_losses(b, results.lubricant, sc.Fr, sc.Fa, omega, traction=sc.traction,
+                                     ring_growth=sc.ring_growth, temperatures=sc.temperatures, hertz=sc.hertz,
+                                     n_strips=sc.n_strips, n_across=sc.n_across,
+                                     traction_regularizing_srr=sc.traction_regularizing_srr,
+                                     hysteresis_loss_factor=sc.hysteresis_loss_factor,
+                                     oil_volume_fraction=sc.oil_volume_fraction, cage_guidance=guidance)
     return cache[key]
 
 
