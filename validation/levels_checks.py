@@ -74,7 +74,7 @@ def check_static(out):
         for model in ("quasistatic", "linear", "balls"):
             start = None
             if model == "balls":  # the element starts from the quasi-static state with the tilt held at zero
-                start = [*quasistatic_start("6208", eb.Scenario(Fr=fr, Fa=fa))["ring"][:3], 0.0, 0.0]
+                start = [*quasistatic_start("6208", eb.Scenario(omega=500.0, Fr=fr, Fa=fa))["ring"][:3], 0.0, 0.0]
             sc, mbs, node, m_b, m_g, pos = shaft((fr, 0.0, fa), start=start)
             rot = mbs.AddSensor(SensorNode(nodeNumber=node, outputVariableType=exu.OutputVariableType.Rotation,
                                            storeInternal=True, writeToFile=False))

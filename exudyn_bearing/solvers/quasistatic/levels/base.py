@@ -153,7 +153,8 @@ class LevelBearing:
         #: quasi-static solution at initialLoad and initialOmega (the operating point)
         self.operatingPoint = solve_quasistatic(b, Fr=fr, Fa=fa, omega=abs(self.initialOmega),
                                                 ring_growth=self.ringGrowth, temperatures=temperatures,
-                                                lubricant=self.lubricant, hertz_method=hertzModel, stiffness=False)
+                                                lubricant=self.lubricant, hertz_method=hertzModel, stiffness=False,
+                                                fixed={})  # the tilt is a DOF of the user's model
         #: inner-ring pose (d_x, d_y, d_z, theta_x, theta_y) at the operating point (outer-ring frame):
         #: place the inner ring there to start in equilibrium
         self.loadAngle = check_load_angle(loadAngle)
@@ -212,7 +213,7 @@ class LevelBearing:
         try:
             return bearing_coefficients(self.bearing, speeds, Fr=fr, Fa=fa, ring_growth=self.ringGrowth,
                                         temperatures=self.temperatures, lubricant=self.lubricant,
-                                        hertz_method=self.hertzModel)
+                                        hertz_method=self.hertzModel, fixed={})
         except InputError as exc:
             if str(exc).startswith("speeds"):
                 raise InputError(f"coefficientSpeeds{str(exc)[len('speeds'):]}") from None
