@@ -14,8 +14,8 @@ stored beside them.
 
 Compiling the kernels a run needs takes about 15-30 s of CPU time on the 2-core
 test machine (once per installation and after every update; ``python
-validation/bench_kernel_ab.py --cold 3`` measures it, ``python
-validation/profile_reference.py --compile`` lists what compiles); :func:`announce_compilation` says so on
+validation/performance/bench_kernel_ab.py --cold 3`` measures it, ``python
+validation/performance/profile_reference.py --compile`` lists what compiles); :func:`announce_compilation` says so on
 stderr when a run is about to compile instead of load them.
 """
 from __future__ import annotations
@@ -240,7 +240,7 @@ def kernel(fn=None, *, no_runtime=False, internal=False, **kw):
     the kernel callable from Python (``no_cpython_wrapper``), for helpers
     only compiled code calls: that wrapper unboxes every argument (for a
     helper that takes eleven arrays, about a quarter of its compilation in
-    ``validation/profile_reference.py --compile``); such a kernel raises
+    ``validation/performance/profile_reference.py --compile``); such a kernel raises
     when called from Python. The dispatcher is a :class:`KernelDispatcher`
     (one specialisation per argument type, literal or not).
 
@@ -249,9 +249,9 @@ def kernel(fn=None, *, no_runtime=False, internal=False, **kw):
     and the global diagnostics) are ``inline="always"``: numba copies them
     into their caller instead of running its compilation pipeline once more
     for each (about 0.1-0.7 s apiece; the cold start of the README's scene
-    15.7 against 16.4 s, ``validation/bench_kernel_ab.py --cold 3 --baseline
+    15.7 against 16.4 s, ``validation/performance/bench_kernel_ab.py --cold 3 --baseline
     95cba4f``), with bitwise equal results and step time
-    (``validation/bench_kernel_ab.py --baseline 95cba4f``). Inlining the small
+    (``validation/performance/bench_kernel_ab.py --baseline 95cba4f``). Inlining the small
     physics relations as well saved nothing measurable.
     """
     opts = dict(cache=True, fastmath=FASTMATH, error_model="numpy", no_cfunc_wrapper=True)

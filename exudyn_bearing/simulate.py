@@ -200,7 +200,9 @@ def CreateBallBearing(mbs, bearing: BallBearing | str, markerInnerRing, markerOu
     in Exudyn") and take ``lubricant``, ``initialLoad``, ``loadAngle``, ``initialOmega``,
     ``ringGrowth``, ``temperatures``, ``hertzModel``, ``sampleInterval``,
     ``coefficients``, ``coefficientSpeeds``, ``show`` (quasistatic also
-    ``cageAngle``).
+    ``cageAngle``). ``model="quasistatic"`` with ``arrangement`` ("DB", "DF", "DT"), ``preload`` and
+    ``spacing`` puts a pair of angular-contact bearings between the markers
+    (:mod:`exudyn_bearing.solvers.quasistatic.levels.pair`, docs/theory/pairs.md).
 
     Parameters
     ----------
@@ -212,7 +214,9 @@ def CreateBallBearing(mbs, bearing: BallBearing | str, markerInnerRing, markerOu
         supported kinds).
     **options
         Keyword options of :class:`~exudyn_bearing.solvers.element.BallBearingElement`
-        (``lubricant``, ``cage``, ``lubrication``, ``friction``, ``tangential``,
+        (``lubricant``, ``cage`` ("torus", "rigid" or "none"; True / False for torus / none), ``rigidCage``
+        (a RigidCage for cage="rigid"; None: the bearing's estimated cage), ``gravity`` (on the rigid cage,
+        world frame), ``lubrication``, ``friction``, ``tangential``,
         ``cageDamping`` (Scenario's ``cage_damping``; "implicit" needs VelocityVerlet), ``hertzModel``, ``film``, ``stepSize``, ``innerRingSpeed``,
         ``initialOmega``, ``initialLoad`` ((Fr, Fa) [N] or a radial load Fr),
         ``sampleInterval``, ``show``, the loss switches ``rollingResistance``,
@@ -238,6 +242,10 @@ def _create_level(mbs, bearing, markerInnerRing, markerOuterRing, model, options
     """The ``"quasistatic"`` and ``"linear"`` levels of :func:`CreateBallBearing`."""
     if model not in MODELS:
         raise InputError(f"model: must be one of {', '.join(MODELS)}, got {model!r}")
+    if "arrangement" in options:  # a bearing pair (solvers/quasistatic/levels/pair.py)
+        from .solvers.quasistatic.levels.pair import create_pair_level
+
+        return create_pair_level(mbs, bearing, markerInnerRing, markerOuterRing, model, options)
     from .solvers.quasistatic.levels import (
         LEVEL_OPTIONS,
         LinearBearing,

@@ -12,7 +12,7 @@ The 1 mm cage balls of the catalogue (33 mg, 4.5 um pocket clearance) set
 the step: under the combined load the balls orbit at slightly different
 speeds and press the cage balls with a few hundred newtons, so the run
 needs dt <= 0.5 us (at 1 us it stops with a dt error after about 15 ms;
-``python validation/fast_mode_checks.py`` measures both; the stable-step
+``python validation/consistency/fast_mode_checks.py`` measures both; the stable-step
 estimate, which assumes cage loads of a tenth of the ball load, is
 optimistic here).
 ``--no-cage`` runs without the cage (ball / ball contact) at 2 us.

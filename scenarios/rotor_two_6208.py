@@ -36,7 +36,7 @@ contacts reached 33 N, where their stable step (4.96 us) is just below the
 5 us step: its cage loads are not reliable. The whirl is sensitive to
 round-off: at other step sizes and sub-step counts the shaft may instead
 rattle near the centre with ball loads of a few N (``python
-validation/fast_mode_checks.py``, validation/REPORT.md), so compare modes
+validation/consistency/fast_mode_checks.py``, validation/REPORT.md), so compare modes
 and steps on loaded bearings, not on this run.
 
 Writes into ``--out`` (default scenarios/out/rotor_two_6208): rotor.png

@@ -1,6 +1,5 @@
 import importlib.util
 import os
-import subprocess
 import sys
 from pathlib import Path
 
@@ -10,45 +9,106 @@ from exudyn_bearing import catalog
 from exudyn_bearing._jit import COMPILE_NOTICE
 
 ROOT = Path(__file__).resolve().parents[1]
-#: Paths a test run may touch in the working tree: Python and numba caches
-#: (numba writes its compiled kernels beside the sources), pytest's cache,
-#: the editable install's metadata and the virtual environment.
+#: Paths a test may write in the working tree: Python and numba caches (numba
+#: writes its compiled kernels beside the sources), pytest's cache, the
+#: editable install's metadata and the virtual environment.
 _CACHE_PARTS = ("__pycache__", ".pytest_cache", ".venv", ".egg-info")
+#: Audit events that write a path (their first argument; os.rename and
+#: os.replace also their second). "open" is judged by its mode or flags.
+_WRITE_EVENTS = ("os.mkdir", "os.rename", "os.replace", "os.remove", "os.rmdir", "shutil.rmtree", "os.symlink",
+                 "os.link", "os.truncate", "os.chmod", "os.utime")
+_WRITE_FLAGS = os.O_WRONLY | os.O_RDWR | os.O_CREAT | os.O_APPEND | os.O_TRUNC
 
 
-def working_tree_changes(root=ROOT):
-    """Set of (``git status --porcelain`` line, mtime) of the changed,
-    untracked and ignored files (one by one) outside the caches; None outside
-    a git work tree."""
-    try:
-        out = subprocess.run(["git", "-C", str(root), "status", "--porcelain=v1", "--untracked-files=all",
-                              "--ignored=traditional", "-z"], capture_output=True, text=True, timeout=60)
-    except (OSError, subprocess.SubprocessError):
-        return None
-    if out.returncode != 0:
-        return None
-    entries = [e for e in out.stdout.split("\0") if e and not any(part in e for part in _CACHE_PARTS)]
+class TreeWrites:
+    """The paths under ``root`` that THIS process writes while ``active``,
+    each with the id of the test that was running (``writes``), seen through
+    a Python audit hook (PEP 578: every ``open`` for writing, ``os.mkdir``,
+    ``os.remove``, ``os.rename``, ... raises an event with the path).
 
-    def mtime(entry):
-        try:
-            return (root / entry[3:]).stat().st_mtime_ns
-        except OSError:
-            return None
-    return {(e, mtime(e)) for e in entries}
+    The rule of the session guard, and why it is sound: every test runs with
+    its own ``tmp_path`` as the current directory (:func:`tests_run_in_their_tmp_path`),
+    so whatever a test, the package or Exudyn's C++ core writes under a
+    relative name (Exudyn's default ``solution/coordinatesSolution.txt``, the
+    command line's ``--out``, a figure) and every subprocess the test starts
+    without its own ``cwd`` lands in pytest's temporary directories; the only
+    way left into the clone is a path built from the clone's own location
+    (``ROOT / ...``, ``__file__``), and that goes through Python's file calls,
+    which this hook sees. A file that someone else writes into the clone
+    during the run (the user running a README example from the repository
+    root, an editor, another process) raises no event in this process and is
+    not blamed on the tests. Caches (:data:`_CACHE_PARTS`) are allowed."""
+
+    def __init__(self, root):
+        self.root = os.path.join(os.path.abspath(root), "")
+        self.active = False
+        self.current = None
+        self.writes = []
+
+    def __call__(self, event, args):
+        if not self.active:
+            return
+        if event == "open":
+            path, mode, flags = args
+            writing = any(c in mode for c in "wax+") if isinstance(mode, str) else bool((flags or 0) & _WRITE_FLAGS)
+            paths = (path,) if writing else ()
+        elif event in _WRITE_EVENTS:
+            paths = args[:2] if event in ("os.rename", "os.replace") else args[:1]
+        else:
+            return
+        for path in paths:
+            if not isinstance(path, (str, bytes, os.PathLike)):
+                continue  # a file descriptor: opened (and judged) before
+            full = os.path.abspath(os.fsdecode(path))
+            if full.startswith(self.root) and not any(part in full for part in _CACHE_PARTS):
+                self.writes.append((self.current, full))
+
+
+#: The session's guard; an audit hook cannot be removed, so it is installed once.
+TREE_WRITES = TreeWrites(ROOT)
+sys.addaudithook(TREE_WRITES)
 
 
 @pytest.fixture(scope="session", autouse=True)
 def no_writes_into_the_working_tree():
     """Fail the session when a test wrote into the working tree (outputs
-    belong in ``tmp_path``; Exudyn's default SimulationSettings, for one,
-    write solution/coordinatesSolution.txt)."""
-    before = working_tree_changes()
+    belong in ``tmp_path``): the paths :data:`TREE_WRITES` saw the tests write
+    (see :class:`TreeWrites` for the rule). EXUDYN_BEARING_ALLOW_TREE_WRITES=1
+    switches the check off (validation/consistency/mutation_run.py, whose copies of the
+    tree are meant to change)."""
+    TREE_WRITES.active = True
     yield
-    if before is None or os.environ.get("EXUDYN_BEARING_ALLOW_TREE_WRITES"):
+    TREE_WRITES.active = False
+    if os.environ.get("EXUDYN_BEARING_ALLOW_TREE_WRITES"):
         return
-    after = working_tree_changes()
-    new = sorted({e for e, _ in (after or set()) - before})
+    new = sorted({f"{test}: {os.path.relpath(path, ROOT)}" for test, path in TREE_WRITES.writes})
     assert not new, f"the tests wrote into the working tree {ROOT}: {new}"
+
+
+@pytest.fixture(autouse=True)
+def tests_run_in_their_tmp_path(request, tmp_path, monkeypatch):
+    """Each test runs with its ``tmp_path`` as the current directory (relative
+    outputs land there, not in the clone) and with the clone first on
+    PYTHONPATH (a subprocess ``python -m exudyn_bearing`` started from there
+    imports the package under test, not another installed copy)."""
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.setenv("PYTHONPATH", os.pathsep.join(p for p in (str(ROOT), os.environ.get("PYTHONPATH")) if p))
+    TREE_WRITES.current = request.node.nodeid
+    yield
+    TREE_WRITES.current = None
+
+
+def manual_pages(root=ROOT):
+    """The pages a user reads: README.md (the front page) and docs/**/*.md (the
+    guides and the theory; the README's former sections live there), not the
+    built site under docs/_build."""
+    return [root / "README.md", *sorted(p for p in (root / "docs").rglob("*.md") if "_build" not in p.parts)]
+
+
+def manual_text(root=ROOT):
+    """The text of :func:`manual_pages`, one after the other (a test that runs
+    an example finds it by its first lines, wherever it lives)."""
+    return "\n".join(p.read_text() for p in manual_pages(root))
 
 
 @pytest.fixture

@@ -1,4 +1,4 @@
-"""The two explained anomalies (validation/anomaly_checks.py): the quasi-static solver's least rolling
+"""The two explained anomalies (validation/consistency/anomaly_checks.py): the quasi-static solver's least rolling
 speed of the traction law (the dynamic engines' floor), and race-control orbital speeds above
 (1 - gamma cos alpha) / 2 when centrifugal force turns the contact angles apart."""
 import math
@@ -11,6 +11,8 @@ from exudyn_bearing.solvers.quasistatic import kinematics as km
 HELD = {"tilt_x": 0.0, "tilt_y": 0.0}
 
 
+# the default 16 x 4 traction grid, expected not converged to 1 % here
+@pytest.mark.filterwarnings("ignore::exudyn_bearing.solvers.quasistatic.solve.TractionResolutionWarning")
 def test_rolling_speed_floor_scales_a_linear_traction_law():
     # the 6208's lambda law, regularised below slide-to-roll ratio s_r = DEFAULT_REGULARIZING_SRR, is linear,
     # mu = mu_b s / s_r with s = slip / u: where every slip is below s_r u_floor, the traction is
@@ -35,6 +37,8 @@ def test_rolling_speed_floor_checked():
         eb.solve_quasistatic("6208", Fr=3000.0, omega=1.0, rolling_speed_floor=-0.1)
 
 
+# the default 16 x 4 traction grid, expected not converged to 1 % here
+@pytest.mark.filterwarnings("ignore::exudyn_bearing.solvers.quasistatic.solve.TractionResolutionWarning")
 def test_quasistatic_default_floor_is_the_engines_floor():
     # one default in every solver: without rolling_speed_floor the quasi-static solver takes the engines'
     # ellipse-level floor, min(regularizing speed, half the kinematic inner rolling speed). Hand value for the

@@ -270,3 +270,18 @@ def test_ambient_conductance_keeps_the_default_of_a_key_left_out():
     r = solve_thermal("6208", 3000.0, omega=500.0, ambient_conductance={"inner": 1.0}, **JET)
     assert r.conductances["inner_ambient"] == 1.0
     assert r.conductances["outer_ambient"] == _default_ambient_conductance(load_bearing("6208"))["outer"] > 0.0
+
+
+def test_a_dissipation_below_the_loss_floor_is_not_judged():
+    # the unloaded 6208 at 500 rad/s dissipates micro-watts (its balls pressed outward by their centrifugal
+    # force alone), far below the loss floor LOSS_FLOOR_MU (sum of the outer contact loads) r_p omega: a 1 %
+    # change of it is no result anyone uses and is not judged
+    from exudyn_bearing.physics.losses import LOSS_FLOOR_MU
+
+    with warnings.catch_warnings(record=True) as rec:
+        warnings.simplefilter("always")
+        s = eb.solve_quasistatic("6208", omega=500.0, stiffness=False)
+    assert not [w for w in rec if issubclass(w.category, TractionResolutionWarning)]
+    r = s.resolution_check
+    floor = LOSS_FLOOR_MU * float(np.sum(s.balls["q_outer"])) * 0.0303 * 500.0
+    assert r["converged"] and 0.0 < abs(r["dissipation"]) < floor

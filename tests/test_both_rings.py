@@ -32,6 +32,8 @@ def test_cli_prints_the_orbital_speed_of_both_rings_turning(capsys):
 
 
 @pytest.mark.parametrize("w_i, w_o", [(0.0, 500.0), (500.0, 0.0)])
+# the default 16 x 4 traction grid, expected not converged to 1 % here
+@pytest.mark.filterwarnings("ignore::exudyn_bearing.solvers.quasistatic.solve.TractionResolutionWarning")
 def test_one_ring_turning_orbits_at_the_kinematic_cage_speed(w_i, w_o):
     # pure rolling (race control, light radial load, contact angle 0):
     # omega_c = omega_i (1 - gamma)/2 + omega_o (1 + gamma)/2, gamma = D cos(alpha)/d_m

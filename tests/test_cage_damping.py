@@ -2,7 +2,7 @@
 (docs/theory/dynamics.md#implicit-cage-damping): the coefficient is backward Euler of the contact's own
 damping, its velocity-Verlet step limit is where the amplification matrix turns unstable, the estimate and
 the refusals follow it, and a start-up at a step where the explicit damping is beyond its limit keeps the
-loads, speeds and energy balance of a resolved run (validation/cage_step_checks.py measures the table)."""
+loads, speeds and energy balance of a resolved run (validation/studies/cage_step_checks.py measures the table)."""
 import math
 import warnings
 

@@ -90,6 +90,8 @@ def test_module_entry_point_runs():
     assert json.loads(out)["n_balls"] == 9
 
 
+# a short run: its summary window is not steady, as expected
+@pytest.mark.filterwarnings("ignore::exudyn_bearing.SteadyStateWarning")
 def test_simulate_reference_json_and_files(tmp_path, capsys):
     d = run_json(capsys, "simulate", "--bearing", "6208", "--Fr", "3000", "--omega", "500",
                  "--engine", "reference", "--t-end", "0.004", "--dt", "4e-6", "--tangential", "implicit",
@@ -116,6 +118,8 @@ def test_simulate_unstable_step_is_a_clean_error(capsys, runaway):
     assert len(err) == 1 and err[0].startswith("exudyn-bearing: error: dt: ")
 
 
+# a short run: its summary window is not steady, as expected
+@pytest.mark.filterwarnings("ignore::exudyn_bearing.SteadyStateWarning")
 def test_simulate_exudyn_engine_gives_the_same_keys(capsys):
     ref = run_json(capsys, "simulate", "--Fr", "3000", "--omega", "500", "--t-end", "0.004", "--dt", "5e-6", "--json")
     exd = run_json(capsys, "simulate", "--Fr", "3000", "--omega", "500", "--engine", "exudyn", "--t-end", "0.004", "--dt", "5e-6", "--json")

@@ -110,6 +110,8 @@ def test_every_option_has_help_and_shows_its_default():
     assert "``" not in DESCRIPTION and "``" not in _parser().format_help()
 
 
+# a short run: its summary window is not steady, as expected
+@pytest.mark.filterwarnings("ignore::exudyn_bearing.SteadyStateWarning")
 def test_every_json_output_carries_units(capsys, tmp_path):
     info = run_json(capsys, "info", "6208", "--omega", "500", "--json")
     assert info["units"]["bpfo"] == "Hz" and info["units"]["cage_speed"] == "rad/s"
@@ -125,6 +127,8 @@ def test_every_json_output_carries_units(capsys, tmp_path):
     assert saved["units"] == sim["units"]
 
 
+# a short run: its summary window is not steady, as expected
+@pytest.mark.filterwarnings("ignore::exudyn_bearing.SteadyStateWarning")
 def test_simulate_table_shows_units_and_window(capsys):
     assert main(["simulate", "--Fr", "3000", "--omega", "500", "--t-end", "0.002", "--dt", "4e-6", "--tangential", "implicit"]) == 0
     out = capsys.readouterr().out

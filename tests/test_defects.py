@@ -21,6 +21,8 @@ from exudyn_bearing.physics import kinematics
 from exudyn_bearing.physics.defects import edge_drop, max_spall_drop, spall_drop
 from exudyn_bearing.physics.geometry import raceway_radii
 
+from conftest import manual_text
+
 ROOT = Path(__file__).resolve().parents[1]
 W1797 = 1797.0 * math.pi / 30.0
 
@@ -464,7 +466,7 @@ def test_dataset_cli(tmp_path, capsys):
 
 # -- README -----------------------------------------------------------------------------------------------
 def _readme_block(start):
-    text = (ROOT / "README.md").read_text()
+    text = manual_text()
     i = text.index(start)
     return text[i:text.index("```\n", i)]
 

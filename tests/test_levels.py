@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 exu = pytest.importorskip("exudyn")
-from exudyn.itemInterface import (LoadForceVector, MarkerBodyMass, MarkerBodyRigid,  # noqa: E402
+from exudyn.itemInterface import (LoadForceVector, LoadTorqueVector, MarkerBodyMass, MarkerBodyRigid,  # noqa: E402
                                   NodeRigidBodyRxyz, ObjectConnectorRigidBodySpringDamper, ObjectGround,
                                   ObjectRigidBody)
 
@@ -18,9 +18,9 @@ FR, FA = 3000.0, 1000.0
 SPEEDS = [0.0, 200.0]  # a short coefficient table keeps the set-up quick
 
 
-def shaft(load=(FR, 0.0, FA), omega=0.0):
-    """A 2.5 kg shaft (Rxyz node) at the origin, the load on it, an outer-ring marker on ground and a pure
-    damper to ground (no force at rest: it settles the shaft without moving its equilibrium)."""
+def shaft(load=(FR, 0.0, FA), omega=0.0, moment=None):
+    """A 2.5 kg shaft (Rxyz node) at the origin, the load (and ``moment``) on it, an outer-ring marker on ground
+    and a pure damper to ground (no force at rest: it settles the shaft without moving its equilibrium)."""
     sc = exu.SystemContainer()
     mbs = sc.AddSystem()
     ground = mbs.AddObject(ObjectGround())
@@ -29,6 +29,8 @@ def shaft(load=(FR, 0.0, FA), omega=0.0):
     m_g = mbs.AddMarker(MarkerBodyRigid(bodyNumber=ground))
     m_b = mbs.AddMarker(MarkerBodyRigid(bodyNumber=body))
     mbs.AddLoad(LoadForceVector(markerNumber=m_b, loadVector=list(load)))
+    if moment is not None:
+        mbs.AddLoad(LoadTorqueVector(markerNumber=m_b, loadVector=list(moment)))
     mbs.AddObject(ObjectConnectorRigidBodySpringDamper(markerNumbers=[m_g, m_b],
                                                        damping=np.diag([2e4, 2e4, 2e4, 20.0, 20.0, 0.0])))
     return sc, mbs, node, m_b, m_g

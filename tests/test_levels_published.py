@@ -1,5 +1,5 @@
 """Varying compliance of the quasi-static level against the rigid-ring Hertz theory of Sunnersjo (1978)
-(validation/levels_published_vc.py, docs/theory/varying_compliance.md)."""
+(validation/published/levels_published_vc.py, docs/theory/varying_compliance.md)."""
 import math
 
 import numpy as np
@@ -11,7 +11,7 @@ from exudyn_bearing.physics.load_distribution import race_stiffness
 
 @pytest.fixture(scope="module")
 def vc(load_script):
-    return load_script("validation/levels_published_vc.py")
+    return load_script("validation/published/levels_published_vc.py")
 
 
 def test_boundary_positions_by_hand(vc):
@@ -29,6 +29,8 @@ def test_boundary_positions_by_hand(vc):
     assert abs(uv[0, 1]) < 1e-9 * d0 and abs(uv[4, 1]) < 1e-9 * d0
 
 
+# the default 16 x 4 traction grid, expected not converged to 1 % here
+@pytest.mark.filterwarnings("ignore::exudyn_bearing.solvers.quasistatic.solve.TractionResolutionWarning")
 def test_quasistatic_level_follows_the_closed_form_at_low_speed(vc):
     # 6208, 500 N, zero clearance, 50 rad/s: Z f_c = 28 Hz, 1/36 of the shaft's natural frequency on the
     # bearing (about 1 kHz), so the shaft follows the quasi-static displacement (dynamic amplification

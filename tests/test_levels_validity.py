@@ -9,11 +9,8 @@ import numpy as np
 import pytest
 
 exu = pytest.importorskip("exudyn")
-from exudyn.itemInterface import (LoadForceVector, LoadTorqueVector, MarkerBodyRigid,  # noqa: E402
-                                  NodeRigidBodyRxyz, ObjectConnectorRigidBodySpringDamper, ObjectGround,
-                                  ObjectRigidBody)
-
 import exudyn_bearing as eb  # noqa: E402
+import test_levels  # noqa: E402  (pytest puts tests/ on the path)
 from exudyn_bearing.solvers.quasistatic.levels import linear  # noqa: E402
 from exudyn_bearing.solvers.quasistatic.levels.linear import LinearValidityWarning  # noqa: E402
 
@@ -23,18 +20,7 @@ SPEEDS = [0.0, 250.0, 500.0]  # a short table keeps the set-up quick
 
 def shaft(load=(FR, 0.0, 0.0), moment=None, omega=0.0):
     """The 2.5 kg shaft of tests/test_levels.py (Rxyz node, pure damper to ground), optionally a moment on it."""
-    sc = exu.SystemContainer()
-    mbs = sc.AddSystem()
-    ground = mbs.AddObject(ObjectGround())
-    node = mbs.AddNode(NodeRigidBodyRxyz(referenceCoordinates=[0.0] * 6, initialVelocities=[0, 0, 0, 0, 0, omega]))
-    body = mbs.AddObject(ObjectRigidBody(nodeNumber=node, mass=2.5, inertia=[0.01, 0.01, 5e-4, 0, 0, 0]))
-    m_g = mbs.AddMarker(MarkerBodyRigid(bodyNumber=ground))
-    m_b = mbs.AddMarker(MarkerBodyRigid(bodyNumber=body))
-    mbs.AddLoad(LoadForceVector(markerNumber=m_b, loadVector=list(load)))
-    if moment is not None:
-        mbs.AddLoad(LoadTorqueVector(markerNumber=m_b, loadVector=list(moment)))
-    mbs.AddObject(ObjectConnectorRigidBodySpringDamper(markerNumbers=[m_g, m_b],
-                                                       damping=np.diag([2e4, 2e4, 2e4, 20.0, 20.0, 0.0])))
+    _sc, mbs, node, m_b, m_g = test_levels.shaft(load, omega, moment)
     return mbs, node, m_b, m_g
 
 

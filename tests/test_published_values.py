@@ -1,7 +1,7 @@
 """Independent checks of the physics relations: published values, closed forms
 and hand calculations written here from the sources' equations, never the
 code's own output. Each tolerance says why it is that wide; each is far
-below the 2 % planted errors of validation/mutation_run.py."""
+below the 2 % planted errors of validation/consistency/mutation_run.py."""
 import math
 
 import pytest

@@ -12,7 +12,7 @@ from exudyn_bearing import InputError, catalog
 from exudyn_bearing.cli import main
 from exudyn_bearing.physics import load_distribution as ld
 from exudyn_bearing.solvers.quasistatic import solve_quasistatic
-from conftest import baseline, error_lines
+from conftest import baseline, error_lines, manual_text
 
 RPM_25000 = 25000 * math.pi / 30
 
@@ -170,6 +170,8 @@ def test_outer_race_control_spin_axis_follows_harris():
     assert abs(bl["rolling_point_outer"][0]) < 1e-6 * bl["a_outer"][0]  # the root of a round-off slip
 
 
+# the default 16 x 4 traction grid, expected not converged to 1 % here
+@pytest.mark.filterwarnings("ignore::exudyn_bearing.solvers.quasistatic.solve.TractionResolutionWarning")
 def test_pure_rolling_kinematics_of_a_deep_groove_bearing():
     # 6208 at 500 rad/s, light load: cage 198.0 rad/s, ball spin 952.38 rad/s (docs/theory/reference_cases.md)
     s = solve_quasistatic("6208", 100.0, omega=500.0, ring_growth=False, stiffness=False)
@@ -258,9 +260,7 @@ def test_top_level_export():
 
 
 def test_readme_quasistatic_example_runs(capsys):
-    from pathlib import Path
-
-    text = (Path(__file__).resolve().parents[1] / "README.md").read_text()
+    text = manual_text()
     start = text.index("## Quasi-static solver")
     start = text.index("```python\n", start) + len("```python\n")
     code = text[start:text.index("```\n", start)]
@@ -270,6 +270,8 @@ def test_readme_quasistatic_example_runs(capsys):
     assert s.minimum_checks[0]["is_minimum"] and s.dissipation_total > 0
 
 
+# the default 16 x 4 traction grid, expected not converged to 1 % here
+@pytest.mark.filterwarnings("ignore::exudyn_bearing.solvers.quasistatic.solve.TractionResolutionWarning")
 def test_angular_contact_needs_an_axial_load_to_locate_the_ring():
     # without axial load the ring of a single angular-contact bearing floats axially: refused, not guessed
     with pytest.raises(InputError, match="^Fa: .*axial load"):

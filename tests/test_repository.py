@@ -2,11 +2,12 @@
 (tests/conftest.py) that keeps test runs from writing into the working tree."""
 import json
 import subprocess
+import sys
 from pathlib import Path
 
 import pytest
 
-from conftest import ROOT, working_tree_changes
+from conftest import ROOT, TREE_WRITES, TreeWrites
 
 
 def _git(*args):
@@ -25,21 +26,41 @@ def test_no_exudyn_output_is_tracked():
     assert "solution/" in (ROOT / ".gitignore").read_text().split()
 
 
-def test_guard_sees_a_file_written_into_the_tree():
-    _git("status")
-    before = working_tree_changes()
-    probe = ROOT / "solution_probe_of_the_tree_guard.txt"
-    probe.write_text("x")
+def test_guard_sees_what_the_test_writes_into_the_tree(tmp_path):
+    # a guard on a stand-in clone (tmp_path / "clone"): a file the test writes there, a folder it makes and a
+    # file it removes are seen with the test's id; outputs under a relative name land in the test's own
+    # directory (the current one), outside the clone
+    clone = tmp_path / "clone"
+    clone.mkdir()
+    guard = TreeWrites(clone)
+    sys.addaudithook(guard)
+    guard.active, guard.current = True, "a test"
+    (clone / "out").mkdir()
+    (clone / "out" / "run.csv").write_text("x")
+    (clone / "out" / "run.csv").unlink()
+    Path("relative.csv").write_text("x")
+    (clone / "__pycache__").mkdir()
+    guard.active = False
+    assert [(t, Path(p).relative_to(clone).as_posix()) for t, p in guard.writes] == \
+        [("a test", "out"), ("a test", "out/run.csv"), ("a test", "out/run.csv")]
+    assert Path.cwd() == tmp_path and (tmp_path / "relative.csv").exists()
+
+
+def test_a_file_someone_else_writes_into_the_clone_does_not_fail_the_run():
+    # another process (the user running a README example from the repository root, say) writes into the
+    # real clone while the session runs: the session's guard does not see it, so the run does not fail
+    probe = ROOT / "out_probe_of_the_tree_guard.txt"
+    seen = len(TREE_WRITES.writes)
     try:
-        after = working_tree_changes()
+        subprocess.run([sys.executable, "-c", f"open({str(probe)!r}, 'w').write('x')"], check=True, timeout=60)
+        assert probe.exists()
+        assert TREE_WRITES.active and TREE_WRITES.writes[seen:] == []
     finally:
-        probe.unlink()
-    assert [e for e, _ in after - before] == ["?? solution_probe_of_the_tree_guard.txt"]
-    assert working_tree_changes() == before
+        subprocess.run([sys.executable, "-c", f"import os; os.remove({str(probe)!r})"], check=True, timeout=60)
 
 
 def _scripts():
-    return sorted((ROOT / "scenarios").glob("*.py")) + sorted((ROOT / "validation").glob("*.py"))
+    return sorted((ROOT / "scenarios").glob("*.py")) + sorted((ROOT / "validation").rglob("*.py"))
 
 
 #: Private names a script may import: benchmarks that time a compiled kernel itself.
@@ -167,6 +188,29 @@ def test_the_repository_cites_its_own_theory_document():
     assert len(pages) >= 8
     for page in pages:
         assert (root / "docs" / "theory" / page).is_file(), page
+
+
+def test_validation_is_laid_out_by_purpose_and_make_report_finds_every_script():
+    # validation/README.md names each purpose folder; every script there says what it is (a module
+    # docstring, which the docs' per-folder pages list); make_report runs each script it names from its folder
+    import ast
+    import sys
+
+    sys.path.insert(0, str(ROOT / "validation"))
+    import make_report
+
+    folders = sorted(p.name for p in (ROOT / "validation").iterdir() if p.is_dir() and any(p.glob("*.py")))
+    assert folders == ["consistency", "performance", "published", "studies"]
+    readme = (ROOT / "validation" / "README.md").read_text()
+    assert all(f"`{f}/`" in readme for f in folders)
+    undocumented = [p.name for f in folders for p in (ROOT / "validation" / f).glob("*.py")
+                    if not ast.get_docstring(ast.parse(p.read_text()))]
+    assert undocumented == []
+    for entry in make_report.SCRIPTS:
+        script = make_report.script_entry(entry)[0]
+        assert make_report.script_path(script).is_file(), script
+        parts = make_report.script_command(script).split("/")
+        assert len(parts) == 2 or parts[1] in folders, script  # a new script may wait at the top level
 
 
 def test_make_report_names_the_scripts_the_host_slowed():

@@ -44,6 +44,8 @@ def test_steady_run_summarises_its_last_quarter(steady):
     assert "phases" not in s
 
 
+# a short run: its summary window is not steady, as expected
+@pytest.mark.filterwarnings("ignore::exudyn_bearing.SteadyStateWarning")
 def test_protocol_summarises_its_steady_phase_and_each_phase(protocol):
     # the old summary averaged the last quarter: the slow-down and rest (cage far below 198 rad/s)
     s = protocol.summary()
@@ -87,10 +89,12 @@ def test_run_shorter_than_one_sample_is_refused():
     eb.Scenario(Fr=3000.0, omega=500.0, t_end=1e-4, sample_dt=1e-4)  # one sample is enough
 
 
+# a short run: its summary window is not steady, as expected
+@pytest.mark.filterwarnings("ignore::exudyn_bearing.SteadyStateWarning")
 def test_fast_mode_element_counts_its_steps():
     # the fast mode's user function integrates the balls: its record counts the Exudyn steps (it reported
     # steps = 0), one per fast-mode step of sub * dt, and the summary carries the record's counts. Bookkeeping
-    # only: what the run's clock reads is left to the benchmarks (validation/bench_element.py)
+    # only: what the run's clock reads is left to the benchmarks (validation/performance/bench_element.py)
     from exudyn_bearing.solvers.element.engine import ExudynEngine, solve_dynamic
 
     t_end, dt = 0.002, 2.5e-6  # two sub-steps of 2.5 us: within the fast mode's 5.7 us limit (no warning)

@@ -94,11 +94,8 @@ def test_cage_option_refusals(b6208):
         eb.Scenario(Fr=3000.0, omega=500.0, cage="rigid", rigid_cage="brass")
 
 
-def test_the_element_refuses_the_rigid_cage_and_the_torus_needs_cage_balls():
-    from exudyn_bearing.solvers.element.engine import element_cage
-
-    with pytest.raises(InputError, match="reference engine"):
-        element_cage(eb.Scenario(Fr=3000.0, omega=500.0, cage="rigid"))
+def test_the_torus_cage_needs_cage_balls():
+    # (the Exudyn element's rigid cage: tests/test_element_rigid_cage.py)
     with pytest.raises(InputError, match="rigid"):
         ReferenceEngine("ACBB-120", eb.Scenario(Fa=22240.0, Fr=0.0, omega=2618.0, cage="torus"))
 

@@ -7,9 +7,13 @@ import pytest
 import exudyn_bearing as eb
 from exudyn_bearing.outputs.results import Results
 
+from conftest import manual_text
+
 ROOT = Path(__file__).resolve().parents[1]
 
 
+# a short run: its summary window is not steady, as expected
+@pytest.mark.filterwarnings("ignore::exudyn_bearing.SteadyStateWarning")
 def test_saved_run_loads_back(tmp_path):
     r = eb.simulate("6208", eb.Scenario(Fr=3000.0, omega=500.0, t_end=0.002, dt=5e-6, sample_dt=2e-4))
     npz, js = r.save(tmp_path)
@@ -19,6 +23,8 @@ def test_saved_run_loads_back(tmp_path):
     np.testing.assert_array_equal(back.data["diag"], r.data["diag"])
 
 
+# a short run: its summary window is not steady, as expected
+@pytest.mark.filterwarnings("ignore::exudyn_bearing.SteadyStateWarning")
 def test_papers_scenario_script(tmp_path, capsys, load_script):
     mod = load_script("scenarios/papers_6208.py")
     mod.main(["--up", "0.005", "--steady", "0.01", "--down", "0.005", "--out", str(tmp_path)])
@@ -27,6 +33,8 @@ def test_papers_scenario_script(tmp_path, capsys, load_script):
     assert "steady phase: cage" in capsys.readouterr().out
 
 
+# a short run: its summary window is not steady, as expected
+@pytest.mark.filterwarnings("ignore::exudyn_bearing.SteadyStateWarning")
 def test_rotor_scenario_script(tmp_path, capsys, load_script):
     mod = load_script("scenarios/rotor_two_6208.py")
     # a short run to 30 rad/s (the speed limiter takes the last 1 % in about 25 ms)
@@ -44,6 +52,8 @@ def test_rotor_scenario_script(tmp_path, capsys, load_script):
     assert "full clearance" not in mod.__doc__
 
 
+# a short run: its summary window is not steady, as expected
+@pytest.mark.filterwarnings("ignore::exudyn_bearing.SteadyStateWarning")
 def test_7208_scenario_script(tmp_path, capsys, load_script):
     mod = load_script("scenarios/bearing_7208.py")
     mod.main(["--t-end", "0.002", "--out", str(tmp_path)])
@@ -51,12 +61,14 @@ def test_7208_scenario_script(tmp_path, capsys, load_script):
     assert "reference:" in out and "exudyn" in out and (tmp_path / "bearing_7208.png").exists()
 
 
+# a short run: its summary window is not steady, as expected
+@pytest.mark.filterwarnings("ignore::exudyn_bearing.SteadyStateWarning")
 def test_readme_element_example_runs_without_step_warnings(capsys):
     # the README's Exudyn example, shortened to 5 ms: it must run as printed, on a
     # CreateRigidBody shaft, inside the stable-step estimates, and carry the load
     import warnings
 
-    text = (ROOT / "README.md").read_text()
+    text = manual_text()
     start = text.index("```python\nimport exudyn as exu, exudyn_bearing as eb")
     code = text[start + len("```python\n"):text.index("```\n", start + 10)]
     assert "endTime=0.1" in code

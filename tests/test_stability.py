@@ -1,7 +1,7 @@
 """Stable-step estimate and its warning: every limit a step exceeds is named with
 its consequence, and the a-priori cage limit follows the protocol (steady runs
 from the analytic state load the cage with about 1 N, start-up and slow-down
-with a tenth of the ball load); validation/step_limits.py measures the claims."""
+with a tenth of the ball load); validation/studies/step_limits.py measures the claims."""
 import warnings
 
 import pytest
@@ -52,7 +52,7 @@ def test_every_exceeded_limit_is_named_with_what_blows_up():
 
 
 def test_7208_at_1_us_is_told_its_cage_contacts_may_blow_up():
-    # validation/step_limits.py: the 7208 under F_r = F_a = 3000 N blows up at 1 us, 1.6 times its
+    # validation/studies/step_limits.py: the 7208 under F_r = F_a = 3000 N blows up at 1 us, 1.6 times its
     # cage estimate (its loaded balls roll at different contact angles and load the cage)
     sc = eb.Scenario(Fr=3000.0, Fa=3000.0, omega=500.0)
     st = stable_step(eb.catalog["7208"], sc)

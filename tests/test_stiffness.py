@@ -19,7 +19,7 @@ from exudyn_bearing.physics import kinematics
 from exudyn_bearing.solvers.quasistatic import bearing_coefficients, solve_quasistatic
 from exudyn_bearing.solvers.reference import ReferenceEngine
 from exudyn_bearing.solvers.vibration import three_dof as td
-from conftest import error_lines
+from conftest import error_lines, manual_text
 
 W_ARM = np.array([1.0, 1.0, 1.0, 1.0 / 0.03, 1.0 / 0.03])  # moments / arm ~ forces, tilts x arm ~ lengths
 
@@ -190,7 +190,7 @@ def _dem_mean(fr, fa, omega, t_end, t_avg, **kw):
 def test_dem_load_increments_give_the_quasistatic_stiffness():
     """Issue #12: small static load increments on the DEM's inner ring (6208, 3000 N, 500 rad/s;
     radial 3000 -+ 150 N, axial 25 N on the symmetric bearing) give the radial and axial stiffness of
-    the quasi-static matrix within 5 % (validation/stiffness_checks.py measures -0.02 % and -0.65 %
+    the quasi-static matrix within 5 % (validation/consistency/stiffness_checks.py measures -0.02 % and -0.65 %
     over 20 ball passes). The quasi-static value is the compliance of the translational block (the
     DEM ring cannot tilt) averaged over three ball-set positions; the DEM averages over 10 ball passes
     (35 ms) after 20 ms."""
@@ -269,9 +269,7 @@ def test_three_dof_ball_link_and_bearing_stiffness():
 def test_readme_stiffness_example_runs():
     """The README's example of "Bearing stiffness for rotordynamics" runs as printed; its k_xx at rest
     equals the solver's phase-averaged K_xx."""
-    from pathlib import Path
-
-    text = (Path(__file__).resolve().parents[1] / "README.md").read_text()
+    text = manual_text()
     start = text.index('```python\nimport exudyn_bearing as eb\nc = eb.bearing_coefficients')
     code = text[start + len("```python\n"):text.index("```\n", start + 10)]
     scope = {}

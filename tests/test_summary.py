@@ -272,7 +272,7 @@ def test_summary_names_losses_lubricant_and_traction():
 
 
 def test_cli_prints_a_steady_line_naming_the_quantity():
-    from exudyn_bearing.cli.simulate import _table
+    from exudyn_bearing.outputs.tables import summary_rows as _table  # the CLI's rows (cli/simulate.py prints them)
 
     with pytest.warns(SteadyStateWarning):
         s = _record(alpha_deg=lambda t: 40.0 + 40.0 * t).summary()

@@ -20,6 +20,8 @@ from exudyn_bearing.physics.short_bearing import (film_coefficients, film_eccent
 from exudyn_bearing.solvers.vibration import linear
 from exudyn_bearing.solvers.vibration import three_dof as td
 
+from conftest import manual_text
+
 EPS = np.array([0.1, 0.3, 0.5, 0.7, 0.9, 0.96])
 
 
@@ -480,9 +482,7 @@ def test_eigenvalues_beyond_double_precision_are_refused():
 
 
 def test_readme_three_dof_commands_run(capsys):
-    from pathlib import Path
-
-    text = (Path(__file__).resolve().parents[1] / "README.md").read_text()
+    text = manual_text()
     lines = [x for x in text.splitlines() if x.startswith("python -m exudyn_bearing vibration three-dof")]
     assert len(lines) == 2
     for line in lines:

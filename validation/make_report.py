@@ -82,6 +82,18 @@ SCRIPTS = [
 ]
 
 
+def script_path(script):
+    """Path of the validation script named ``script``: in its purpose folder (validation/published,
+    consistency, performance, studies; validation/README.md), or at the top level for one not yet sorted."""
+    found = sorted(HERE.glob(f"*/{script}"))
+    return found[0] if found else HERE / script
+
+
+def script_command(script):
+    """``validation/<folder>/<script>``, as a command names it (from the repository root)."""
+    return script_path(script).relative_to(HERE.parent).as_posix()
+
+
 def script_entry(entry):
     """(script, arguments, tag or None) of a SCRIPTS entry."""
     return (*entry, None) if len(entry) == 2 else tuple(entry)
@@ -256,7 +268,7 @@ def run_all(skip=(), start_at=None):
         probe_path.write_text(json.dumps(probe, indent=2))
         t0 = time.perf_counter()
         print(f"running {script} {' '.join(args)}", flush=True)
-        proc = subprocess.run([sys.executable, str(HERE / script), *args], check=True, stdout=subprocess.PIPE,
+        proc = subprocess.run([sys.executable, str(script_path(script)), *args], check=True, stdout=subprocess.PIPE,
                               text=True)
         print(proc.stdout, end="", flush=True)
         (OUT / printout_name(script, tag)).write_text(proc.stdout)  # what section_printed quotes
@@ -274,7 +286,7 @@ def section_printed(title, script, intro, figures=(), last_lines=40, tag=None):
     that tag (its arguments named in the command)."""
     path = OUT / printout_name(script, tag)
     args = next((" ".join(a) for e in SCRIPTS for sc, a, t in [script_entry(e)] if sc == script and t == tag), "")
-    command = f"python validation/{script}{' ' + args if args else ''}"
+    command = f"python {script_command(script)}{' ' + args if args else ''}"
     lines = [f"## {title}", "", intro, "", f"Command: `{command}`; what it printed in this run:", ""]
     if path.exists():
         printed = [ln for ln in path.read_text().splitlines() if ln.strip()][-last_lines:]
@@ -397,28 +409,28 @@ def section_new_checks():
             "then a 2 ms run of the 6208 scene, which compiles the kernels it uses), this code against 58652e8 "
             "(before numba's inlining copied a callee's scope once per block, before one specialisation per "
             "argument type and kernels without the wrappers nothing calls), the two alternately; medians of the "
-            "wall and CPU seconds. Per compiled function: `python validation/profile_reference.py --compile`.",
+            "wall and CPU seconds. Per compiled function: `python validation/performance/profile_reference.py --compile`.",
             last_lines=8, tag="cold")
         + section_printed(
             "Where the reference engine's step time goes", "profile_reference.py",
             "The bench_reference scene (6208, 3000 N, 500 rad/s, cage, lubrication, tangential history) in steady "
             "running: the compiled contact kernel timed with stages switched off through the parameter vector on "
             "a frozen state (CPU time per step, interleaved rounds, medians). The cold start is measured by "
-            "`python validation/profile_reference.py --compile` (a fresh process, empty numba cache).",
+            "`python validation/performance/profile_reference.py --compile` (a fresh process, empty numba cache).",
             last_lines=40)
         + section_printed(
             "Start-up of a fresh process", "profile_suite.py",
             "Wall and CPU time of fresh processes with warm caches (medians): `import exudyn_bearing` (lazy: "
             "nothing loads until a public name is used), the imports `simulate` and `solve_quasistatic` need, "
             "`python -m exudyn_bearing --help` and `info 6208`. The suite's per-test profile, cold and warm numba "
-            "cache: `python validation/profile_suite.py` (not part of this run: it runs the whole suite twice).",
+            "cache: `python validation/performance/profile_suite.py` (not part of this run: it runs the whole suite twice).",
             last_lines=12))
 
 
 def section_reference():
     d = load("bench_reference.json")
     lines = ["## Reference core: speed against error", "",
-             "Command: `python validation/bench_reference.py` (engine: reference core; T = "
+             "Command: `python validation/performance/bench_reference.py` (engine: reference core; T = "
              f"{d['t_end']} s per run, median of {d['repeat']}). Scene: 6208, F_r = 3000 N, 500 rad/s, cage, "
              "lubrication and Cundall-Strack history on, analytic start. Errors: the summary over the last "
              "quarter against the same setting at a quarter of the step.", "",
@@ -514,7 +526,7 @@ def section_element():
         m = [v["mean_10_20ms"] for v in runs.values()]
         return max(m) / min(m) - 1
     lines = ["## Exudyn element against the reference core and Exudyn's built-in bearing", "",
-             f"Command: `python validation/bench_element.py --ga` (T = {d['t_end']} s, median of 3; the built-in "
+             f"Command: `python validation/performance/bench_element.py --ga` (T = {d['t_end']} s, median of 3; the built-in "
              "bearing 0.02 s). Same scene, dt = 5 us, explicit spring; wall times are the solves alone. Errors of "
              "our engines against the reference core at 1.25 us; of the built-in bearing, of its cage speed "
              "against its own run at 5e-6 s.", "",
@@ -581,7 +593,7 @@ def section_element():
               + ". VelocityVerlet (history friction) and RK44 (regularized friction) are the supported explicit "
               "solvers in both modes; ExplicitEuler is refused before the first step (not symplectic: unusable for stiff "
               "contact).",
-              "- Where an Exudyn step goes (`python validation/bench_overhead.py`, medians, us per Exudyn step): "
+              "- Where an Exudyn step goes (`python validation/performance/bench_overhead.py`, medians, us per Exudyn step): "
               + "; ".join(f"{k} {v * 1e6:.2f}" for k, v in ov.items() if k.endswith(("alone", "element")))
               + ". Converting Exudyn's coordinate lists to arrays: "
               f"{ov['list to array, body-mode coordinates'] * 1e6:.2f} us for the body mode's {ov['coordinates']} coordinates (twice per evaluation); one sample of the "
@@ -600,11 +612,11 @@ def section_element():
 def section_cage_step():
     d = load("cage_step_checks.json")
     lines = ["## Stable step of the cage contacts", "",
-             "Command: `python validation/cage_step_checks.py`. The ball / cage-ball contacts are critically damped, "
+             "Command: `python validation/studies/cage_step_checks.py`. The ball / cage-ball contacts are critically damped, "
              "and velocity Verlet with the damping force at the half-step velocity is stable up to "
              "2 (sqrt(1 + zeta^2) - zeta) / omega, 0.83 / omega at zeta = 1 (tests/test_reference.py checks this "
              "against the amplification matrix). Above it the cage loads chatter at about twice their value; from "
-             "1.6 times the estimate runs blew up (`python validation/step_limits.py`). With "
+             "1.6 times the estimate runs blew up (`python validation/studies/step_limits.py`). With "
              "`cage_damping=\"implicit\"` the damping acts with C / (1 + C dt / m), backward Euler of the "
              "contact's own damping over the step: stable up to 1.58 / omega (tests/test_cage_damping.py checks it "
              "against the amplification matrix), 1.9 times the explicit limit; the main job's implicit runs take "
@@ -676,7 +688,7 @@ def section_cage_step():
 def section_cross():
     d = load("cross_engine.json")
     lines = ["## Cross-engine check", "",
-             "Command: `python validation/cross_engine.py` (T = 0.05 s, dt = 5 us, both engines on each scene; "
+             "Command: `python validation/consistency/cross_engine.py` (T = 0.05 s, dt = 5 us, both engines on each scene; "
              "figures `out/cross_engine_<scene>.png`, two of them below). Largest relative difference of "
              "q_max_inner, q_max_outer, "
              "cage_speed, ball_spin and lambda_outer_psi0:", "", "| scene | largest relative difference |",
@@ -696,7 +708,7 @@ def section_cross():
 def section_peer():
     d = load("peer_builtin.json")
     lines = ["## Peer check against Exudyn's built-in bearing", "",
-             "Command: `python validation/peer_builtin.py` (T = 0.04 s). The element with Exudyn's "
+             "Command: `python validation/consistency/peer_builtin.py` (T = 0.04 s). The element with Exudyn's "
              "ObjectContactSphereTorus law (`contact_law=\"power\"`: k delta^1.5 + d d(delta)/dt, k = 3.35e10, "
              "d = 200 N s/m, mu = 0.1 linear below 0.1 m/s) against `exudyn.machines.CreateBallBearing` on the "
              "same geometry (r_p = 30 mm), 500 rad/s, F_r = 3000 N; means over the last quarter:", "",
@@ -705,7 +717,7 @@ def section_peer():
         lines.append(f"| {k} | {r['builtin']:.2f} | {r['element']:.2f} | {pct(r['rel_diff'], 2)} |")
     own = load("fast_mode_checks.json")["builtin_own_inertia"]
     lines += ["", "Ball loads and cage speed agree within 1 % (target). The built-in inner ring is given a "
-              "large polar inertia: with the 6208 ring's own inertia (`python validation/fast_mode_checks.py`) it "
+              "large polar inertia: with the 6208 ring's own inertia (`python validation/consistency/fast_mode_checks.py`) it "
               f"slows from 500 to {own['ring_speed']:.1f} rad/s while it spins the balls up from rest, and its cage "
               f"then runs at {own['cage_speed']:.1f} rad/s, the kinematic speed for that ring speed "
               f"({own['kinematic_cage_at_ring_speed']:.1f} rad/s), not a slip. The cages differ by design (rigid "
@@ -716,7 +728,7 @@ def section_peer():
 def section_figures():
     d = load("figures/figures.json")
     lines = ["## The papers' figures (docs/theory/reference_cases.md)", "",
-             "Command: `python validation/figures.py` (figures and their CSV in `out/figures/`, shown below; "
+             "Command: `python validation/published/figures.py` (figures and their CSV in `out/figures/`, shown below; "
              "sweeps through the sweep runner). Step 5 us, implicit tangential spring, unless said.", ""]
     if "item1" in d:
         lines += ["### 1. Quasi-static loads (omega = 1 rad/s)", "",
@@ -826,7 +838,7 @@ def section_figures():
         lines += ["", "Each ball is compared with the Stribeck law at its own azimuth (eps from the discrete "
                   "quasi-static solution at fixed angle per ball); one sample, so ring vibration and the passage "
                   "of balls through the zone edge enter the largest deviation.",
-                  "The catalogue's 1 mm cage balls (33 mg) set the step (`python validation/fast_mode_checks.py`): "
+                  "The catalogue's 1 mm cage balls (33 mg) set the step (`python validation/consistency/fast_mode_checks.py`): "
                   f"at dt = 0.5 us their largest contact load over 50 ms is {c7['max_cage_load_N_dt0.5us']:.0f} N; "
                   f"at dt = 1 us the engine reports: \"{c7['dt1us']}\"", ""]
         lines += figure("figures/item6_7208.png", "7208 ball loads (left) against the Stribeck law at each ball's "
@@ -850,7 +862,7 @@ def section_figures():
 def section_work_precision():
     d = load("work_precision.json")
     lines = ["## Speed against error (work-precision)", "",
-             "Command: `python validation/work_precision.py` (figure `out/work_precision.png`, below). Every setting "
+             "Command: `python validation/performance/work_precision.py` (figure `out/work_precision.png`, below). Every setting "
              "against the reference core with the full model at dt = 0.5 us (T = 0.1 s).", "",
              "| family | dt [us] | wall s per simulated s | err q_max | err cage | err Q_max(t) (RMS) |",
              "|---|---|---|---|---|---|"]
@@ -876,7 +888,7 @@ def section_work_precision():
 def section_sweep():
     d = load("bench_sweep.json")
     return ["## Sweep runner", "",
-            f"Command: `python validation/bench_sweep.py`: {d['cases']} cases (T = 0.1 s each) took "
+            f"Command: `python validation/performance/bench_sweep.py`: {d['cases']} cases (T = 0.1 s each) took "
             f"{d['walls']['1']:.2f} s with one worker and {d['walls']['2']:.2f} s with two: speed-up "
             f"**{d['speedup']:.2f}** on the 2-core machine. Cases are written atomically, so an interrupted "
             "sweep resumes (tests/test_sweep.py); a case whose spec changed runs again, a failing case is "
@@ -888,7 +900,7 @@ def section_mutation():
         return []
     d = load("mutation_run.json")
     lines = ["## Mutation run", "",
-             f"Command: `python validation/mutation_run.py{' --quick' if d['set'] == 'quick' else ''}`: planted errors "
+             f"Command: `python validation/consistency/mutation_run.py{' --quick' if d['set'] == 'quick' else ''}`: planted errors "
              "of 2 % (and sign errors) in the relations of exudyn_bearing/physics/ and the contact kernel, each in "
              "a temporary copy of the repository with a fresh numba cache, against the test files that check the "
              f"relation. Score: **{d['caught']} of {d['applied']}** applied mutants caught"
@@ -902,7 +914,7 @@ def section_mutation():
 def section_round_off():
     d = load("round_off_sensitivity.json")
     lines = ["## Round-off sensitivity: which numbers are reproducible", "",
-             "Command: `python validation/round_off_sensitivity.py` (engine: reference core, dt = 5 us). The same "
+             "Command: `python validation/consistency/round_off_sensitivity.py` (engine: reference core, dt = 5 us). The same "
              "scene with F_r perturbed by a relative 0, +-1e-15 and 1e-14 (the last bits of the input); the table "
              "gives the relative spread (max - min) / |unperturbed| of each reported quantity. A code change that "
              "only reorders floating-point operations moves a quantity by about this much: comparisons between code "
@@ -924,7 +936,7 @@ def section_three_dof():
     ev = lambda z: f"{z[0]:.4g} {'+' if z[1] >= 0 else '-'} {abs(z[1]):.5g}i"  # noqa: E731
     pair = s["inner_pair"]
     lines = ["## 3-DOF vibration model (El Had et al. 2014)", "",
-             "Command: `python validation/three_dof.py` (figures `out/three_dof_frf.png`, "
+             "Command: `python validation/published/three_dof.py` (figures `out/three_dof_frf.png`, "
              "`out/three_dof_time_response.png`, `out/three_dof_modes.png`, each with its CSV). Theory and "
              "readings: docs/theory/vibration.md.", "",
              "**Where the source's eigenvalues come from.** It prints V = "
@@ -1010,7 +1022,7 @@ def section_quasistatic():
     d = load("quasistatic_acbb120.json")
     bq = load("bench_quasistatic.json")
     lines = ["## Quasi-static solver: the ACBB-120 of Gupta (2020)", "",
-             "Command: `python validation/quasistatic_acbb120.py` (solver: `solve_quasistatic`). ACBB-120, "
+             "Command: `python validation/published/quasistatic_acbb120.py` (solver: `solve_quasistatic`). ACBB-120, "
              "25,000 rpm, 22,240 N thrust, cageless, M-50, films with the MIL-L-23699 entry at 492 K. Traction: "
              "`ester_curve_illustrative` (the form of Gupta's traction curve with illustrative parameters, not his "
              "Fig. 6) and `ehl_mil_l_23699_492K` (this project's EHL parameters). Ball 0 (all balls are equal).", "",
@@ -1067,7 +1079,7 @@ def section_quasistatic():
                     "against azimuth with rigid and with growing rings.")
     lines += figure("qs_acbb120_combined.png", "Contact loads (left) and contact angles (right) against azimuth under "
                     "the thrust alone and with F_r = 3 kN and M_y = 150 N m added.")
-    lines += ["Speed (`python validation/bench_quasistatic.py`, medians, one run):", "",
+    lines += ["Speed (`python validation/performance/bench_quasistatic.py`, medians, one run):", "",
               "| case | wall [ms] | target [ms] |", "|---|---|---|"]
     for k, v in bq.items():
         if k.endswith("_s") and isinstance(v, float):
@@ -1083,7 +1095,7 @@ def section_quasistatic():
 def section_defects():
     d = load("bench_defects.json")
     lines = ["## Localized defects and vibration signals", "",
-             "Command: `python validation/bench_defects.py` (engine: reference core; 6205 at 1797 rpm, F_r = 1000 N, "
+             "Command: `python validation/performance/bench_defects.py` (engine: reference core; 6205 at 1797 rpm, F_r = 1000 N, "
              "1 x 1.5 x 0.1 mm spall of `datasets.fault_defects`, dt = 1/(4 x 48 kHz) = 5.21 us, implicit tangential "
              "spring, housing force and inner-ring acceleration at 48 kHz).", ""]
     if "speed" in d:
@@ -1132,7 +1144,7 @@ def section_stiffness():
     d = load("stiffness_checks.json")
     bs = load("bench_stiffness.json")
     lines = ["## Linearised bearing stiffness and damping (quasi-static solver)", "",
-             "Command: `python validation/stiffness_checks.py` (figures below, each with its CSV in "
+             "Command: `python validation/consistency/stiffness_checks.py` (figures below, each with its CSV in "
              "validation/out). Matrices: `solve_quasistatic(...).stiffness` "
              "(central differences) and `.damping` (the contact model's normal damping condensed over each ball's "
              "two contacts in series); theory: docs/theory/vibration.md, sec. 8.", "",
@@ -1217,7 +1229,7 @@ def section_stiffness():
               + ", ".join(f"{m['f_n_hz']:.0f} Hz" for m in t["three_dof_modes"][::2])
               + ". The full model adds the bearing's y, axial and tilt modes, which the 3-DOF line cannot have; its "
               "axial and tilt modes are undamped here (radial contact normals carry no damping across them).", "",
-              "Speed (`python validation/bench_stiffness.py`, medians, one run):", "",
+              "Speed (`python validation/performance/bench_stiffness.py`, medians, one run):", "",
               "| case | wall [ms] | target [ms] |", "|---|---|---|"]
     for k, v in bs.items():
         if k.endswith("_s") and isinstance(v, float):
@@ -1230,7 +1242,7 @@ def section_highspeed():
     d = load("highspeed.json")
     t = load("bench_traction.json")
     lines = ["## High-speed dynamics: traction over the contact ellipse", "",
-             "Command: `python validation/highspeed_acbb120.py` (both engines; ACBB-120 of Gupta 2020, 25,000 rpm, "
+             "Command: `python validation/consistency/highspeed_acbb120.py` (both engines; ACBB-120 of Gupta 2020, 25,000 rpm, "
              "22,240 N thrust, cageless, growing inner ring, traction over each ellipse with 16 strips, "
              f"dt = {d['settings']['dt'] * 1e6:g} us, {d['settings']['t_end'] * 1e3:g} ms from a quasi-static start; "
              "steady state = mean of the last 5 ms, ball 0 for loads and ratios, the whole bearing for the "
@@ -1299,7 +1311,7 @@ def section_highspeed():
               "rolling friction of the curvature-induced (Heathcote) slip across each ellipse: tens of watts "
               "where the point law, with no slip at the contact centre, gives none; the cage and the ball turn "
               "slightly faster, loads and Lambda move by about 0.1 %.", ""]
-    lines += ["Cost and strip count: `python validation/bench_traction.py` (6208, 3000 N, 500 rad/s, dt = "
+    lines += ["Cost and strip count: `python validation/performance/bench_traction.py` (6208, 3000 N, 500 rad/s, dt = "
               f"{t['scene']['dt'] * 1e6:g} us, medians of {t['repeat']} interleaved runs):", ""]
     for eng, c in t["cost"].items():
         lines.append(f"- {eng}: point level {c['us_per_step']['point']:.2f} us per step, ellipse level (the default "
@@ -1312,7 +1324,7 @@ def section_highspeed():
                      f"{100 * e['ball_spin']:.4f} % | {v['us_per_step']:.2f} |")
     lines += ["", "Errors against 64 x 8 points at the same step. The default, 16 strips x 4 points across, was "
               "chosen on the quasi-static traction equilibrium of three high-speed cases "
-              "(`python validation/traction_convergence.py`: dissipation within 1 % and beta within 0.1 deg of "
+              "(`python validation/studies/traction_convergence.py`: dissipation within 1 % and beta within 0.1 deg of "
               "64 x 8); the points across resolve the spin's cross-slip, which one point (classical strip theory) "
               "misses.", ""]
     return lines
@@ -1428,7 +1440,7 @@ def section_consistency():
     d = load("consistency_matrix.json")
     rows, dev, terms = d["rows"], d["deviations"], d["terms_7208"]
     lines = ["## Consistency of the solvers", "",
-             "Command: `python validation/consistency_matrix.py` (static, the quasi-static solver under each "
+             "Command: `python validation/consistency/consistency_matrix.py` (static, the quasi-static solver under each "
              "control, the reference engine and the Exudyn element on the same cases; ring growth on everywhere, "
              "tilt held; dynamic runs cageless at the ellipse traction level unless the row says otherwise, "
              f"{'4' if d['quick'] else '12'} ms from the quasi-static traction equilibrium with the step of "

@@ -10,6 +10,7 @@ from contextlib import contextmanager
 
 from ..data import InputError, catalog, default_traction, load_bearing, load_lubricant, lubricants, traction_models
 from ..physics.contact_slip import DEFAULT_N_ACROSS, DEFAULT_N_STRIPS, MAX_N_ACROSS, MAX_N_STRIPS
+from ..outputs.tables import format_table, format_value
 from ..solvers.quasistatic.ring import DOF_NAMES
 
 __all__ = ["Parser", "HelpFormatter", "finite_float", "print_table", "BEARING_HELP", "add_bearing_argument",
@@ -23,7 +24,8 @@ __all__ = ["Parser", "HelpFormatter", "finite_float", "print_table", "BEARING_HE
 RING_GROWTH = True
 
 #: Help text of a bearing argument.
-BEARING_HELP = (f"catalogue name ({', '.join(catalog)}) or a JSON file: one bearing (race radii as in "
+BEARING_HELP = (f"catalogue name ({', '.join(catalog)}; or a series estimate such as 6310-ISO, 7208B-ISO: "
+                "info --list) or a JSON file: one bearing (race radii as in "
                 "catalog.json, or dimensions: n_balls, ball_diameter, pitch_diameter, inner_conformity, "
                 "outer_conformity, ...) or a catalogue-shaped file (FILE.json#NAME picks a bearing)")
 
@@ -250,20 +252,6 @@ def explained(bearing=None):
         raise InputError(msg) from None
 
 
-#: Magnitudes printed as 0 in tables: round-off of solvers whose inputs are about 1e-3 m and 1 N or larger.
-ROUND_OFF = {"m": 1e-15, "um": 1e-9, "N": 1e-9, "N m": 1e-9}
-
-
-def format_value(v, unit: str = "", digits: int = 6):
-    """A float for a table: 6 significant digits, round-off below
-    :data:`ROUND_OFF` of its unit (a length of 6.9e-18 m) shown as 0."""
-    if isinstance(v, float):
-        if abs(v) < ROUND_OFF.get(unit, 0.0):
-            v = 0.0
-        return f"{v + 0.0:.{digits}g}"
-    return v
-
-
 def solver_header(lubricant, traction: str | None, ring_growth: bool | None = None) -> str:
     """One header line naming the lubricant and traction model in use (and the ring growth)."""
     parts = [f"lubricant {lubricant.name}", f"traction {traction}" if traction else "no traction model (zero "
@@ -274,10 +262,5 @@ def solver_header(lubricant, traction: str | None, ring_growth: bool | None = No
 
 
 def print_table(rows):
-    """Rows of (name, value) or (name, value, unit), aligned."""
-    width = max(len(r[0]) for r in rows)
-    for r in rows:
-        k, v = r[0], r[1]
-        unit = r[2] if len(r) > 2 and r[2] not in (None, "", "-") else ""
-        v = format_value(v, unit)
-        print(f"{k:<{width}}  {v}{'  ' + unit if unit else ''}".rstrip())
+    """Rows of (name, value) or (name, value, unit), aligned (:func:`~exudyn_bearing.outputs.tables.format_table`)."""
+    print(format_table(rows))

@@ -17,6 +17,7 @@ from ..solvers.quasistatic.kinematics import CONTROLS
 from .common import (add_strip_arguments, add_bearing_argument, add_hold_arguments, add_lubricant_argument, add_load_arguments,
                      add_ring_growth_argument, add_traction_argument, bearing_from_args, explained, finite_float,
                      fixed_from_args, format_value, lubricant_from_args, solver_header, traction_from_args)
+from .pair import add_pair_arguments, pair_requested, run_pair
 from ..solvers.quasistatic.losses import LOSS_COMPONENTS
 from ..solvers.quasistatic.thermal import solve_thermal
 from ..physics.rating_life import RATING_UNITS, RatingLifeWarning, rating_life
@@ -34,6 +35,11 @@ def add_parser(sub):
     p.add_argument("--omega-outer", type=finite_float, default=0.0, help="outer-ring speed [rad/s] (default fixed)")
     p.add_argument("--control", choices=CONTROLS, default="auto",
                    help="ball kinematics: race control (outer, inner, auto = Jones' criterion) or min-energy (Gupta)")
+    # the rigid cage (solve_quasistatic cage=, docs/theory/quasistatic.md#the-rigid-cage)
+    p.add_argument("--cage", choices=("none", "rigid"), default="none",
+                   help="none: each ball its own orbital speed; rigid: the bearing's estimated rigid cage "
+                        "(estimated_cage): balls at the cage speed, pocket forces, land film (race control or "
+                        "--control equilibrium)")
     add_traction_argument(p)
     add_lubricant_argument(p, "lubricant for the films: ")
     add_ring_growth_argument(p)
@@ -57,9 +63,12 @@ def add_parser(sub):
     p.add_argument("--plot", metavar="FILE.png", help="loads and contact angles against azimuth (+ CSV, and "
                                                       "FILE_slip.png with the slip along ball 0's contacts)")
     p.add_argument("--json", action="store_true", help="print JSON")
+    add_pair_arguments(p)  # --arrangement, --preload, --spacing (cli/pair.py)
 
 
 def run(args):
+    if pair_requested(args):  # a bearing pair (cli/pair.py)
+        return run_pair(args, "quasistatic", rating=rating_options(args), warn_speed=warn_speed)
     b = bearing_from_args(args)
     if args.Pd is not None:
         b = b.with_clearance(args.Pd, name="Pd")
@@ -77,7 +86,8 @@ def run(args):
         s = solve_quasistatic(b, args.Fr, args.Fa, args.Mx, args.My, Fy=args.Fy, omega=omega,
                               omega_outer=args.omega_outer, control=args.control, traction=traction,
                               lubricant=lub, ring_growth=args.ring_growth, fit=args.fit, temperatures=temps,
-                              fixed=fixed_from_args(args), hertz_method=args.hertz, n_strips=args.strips, n_across=args.points_across)
+                              fixed=fixed_from_args(args), hertz_method=args.hertz, n_strips=args.strips, n_across=args.points_across,
+                              cage=None if args.cage == "none" else args.cage)
     warn_speed(b, omega, args.omega_outer)  # after the solve: a refusal stays the one line on stderr
     t_lub = None if temps is None else (temps["inner"] + temps["outer"] + 2.0 * temps["ball"]) / 4.0
     rating = rating_of(args, b, s, lub, t_lub, temps)
@@ -146,7 +156,8 @@ def run_thermal(args, b, omega, traction):
                           lubricant=args.lubricant, traction=traction, Mx=args.Mx, My=args.My, Fy=args.Fy,
                           omega_outer=args.omega_outer, control=args.control, ring_growth=args.ring_growth,
                           fit=args.fit, fixed=fixed_from_args(args), hertz_method=args.hertz,
-                          n_strips=args.strips, n_across=args.points_across)
+                          n_strips=args.strips, n_across=args.points_across,
+                          cage=None if args.cage == "none" else args.cage)
     s = r.quasistatic
     warn_speed(b, omega, args.omega_outer)
     rating = rating_of(args, b, s, r.lubricant, r.contact_temperature)

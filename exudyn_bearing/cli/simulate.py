@@ -3,7 +3,6 @@ from __future__ import annotations
 
 import argparse
 import json
-import math
 import warnings
 from pathlib import Path
 
@@ -11,12 +10,11 @@ from ..data import InputError
 from ..model.record import RunInterrupted
 from ..model.scenario import CONTROLS, INITIAL_STATES, TRACTION_LEVELS, Scenario
 from ..outputs.jsonio import to_jsonable
-from ..outputs.results import NOT_CONVERGED_MARK
-from ..outputs.whole_loss import basis_text
+from ..outputs.tables import summary_rows
 from ..physics.hertz import METHODS
 from ..simulate import simulate
 from .common import (add_strip_arguments, add_bearing_argument, add_lubricant_argument, add_ring_growth_argument, add_speed_arguments,
-                     add_traction_argument, bearing_from_args, finite_float, format_value, lubricant_from_args,
+                     add_traction_argument, bearing_from_args, finite_float, lubricant_from_args,
                      omega_from_args, print_table)
 
 #: Simulated time [s] without --t-end and --ramp.
@@ -59,7 +57,7 @@ def add_parser(sub):
                    help="film model: Hamrock-Dowson or Masjedi-Khonsari reading")
     p.add_argument("--cage", nargs="?", const="torus", default="torus", choices=("torus", "rigid", "none"),
                    help="cage model: the DEM papers' torus of cage balls (default), a rigid cage body with pockets "
-                        "and a guiding land (reference engine; geometry estimated from the ball diameter, "
+                        "and a guiding land (both engines; geometry estimated from the ball diameter, "
                         "docs/theory/cage.md), or none")
     p.add_argument("--no-cage", dest="cage", action="store_const", const="none", help="the same as --cage none")
     p.add_argument("--lubrication", action=argparse.BooleanOptionalAction, default=True,
@@ -120,53 +118,6 @@ def scenario_from_args(args) -> Scenario:
     return Scenario(**kw)
 
 
-def _not_converged(value, unit):
-    """A table value with its unit and the mark of a step-dependent output (outputs.results.NOT_CONVERGED_MARK)."""
-    v = format_value(value, unit or "")
-    return f"{v}{' ' + unit if unit else ''}  ({NOT_CONVERGED_MARK})"
-
-
-def _table(summary, t_end=None):
-    """Rows of the summary table; ``t_end``: the run length asked for, shown with the last sample's time
-    when the sample interval (a whole number of steps) does not end on it."""
-    units = summary["units"]
-    w = summary["window"]
-    st = summary["steady"]
-    rows = [("window", f"{w['t0']:.6g} - {w['t1']:.6g} s, protocol phase '{w['phase']}' ({w['rule']}, "
-                       f"{w['samples']} samples)"),
-            ("steady", "yes (drift and oscillation within the thresholds of summary['steady'])" if st["steady"]
-             else f"NO: {st['reason']}")]
-    # the bearing's whole loss and torque first, with what is modelled and what estimated (outputs.whole_loss)
-    rows += [("power_loss_whole", summary["power_loss_whole"], "W"),
-             ("friction_torque_whole", summary["friction_torque_whole"], units.get("friction_torque_whole")),
-             ("power_loss_whole_basis", basis_text(summary["power_loss_whole_basis"]))]
-    rows += [(f"power_loss_estimated.{k}", v, "W") for k, v in (summary["power_loss_estimated"] or {}).items()]
-    first = ("power_loss_whole", "friction_torque_whole")
-    # a quantity the run cannot give (None) says where the summary explains why, without a unit
-    rows += [(k, v, units.get(k)) if v is not None else
-             (k, f"n/a (energy_source.{k})" if k in summary.get("energy_source", {}) else "n/a")
-             for k, v in summary.items() if not isinstance(v, (dict, list)) and k not in ("window", "note", *first)]
-    if t_end is not None and "t_end" in summary and not math.isclose(summary["t_end"], t_end, rel_tol=1e-9):
-        rows = [(k, f"{t_end:g} s (last sample at {summary['t_end']:.6g} s)", None) if k == "t_end" else r
-                for r in rows for k in (r[0],)]
-    rows += [(f"power_loss.{k}", v, "W") for k, v in summary["power_loss"].items()]
-    rows.append(("q_max_method", ", ".join(f"{race}: {m}" for race, m in summary["q_max_method"].items())))
-    rows += [(f"energy_source.{k}", v) for k, v in summary["energy_source"].items()]
-    rows += [("losses_modelled", "; ".join(summary["losses_modelled"])),
-             ("losses_not_modelled", "; ".join(summary["losses_not_modelled"]))]
-    if "note" in summary:
-        rows.append(("note", summary["note"]))
-    rows += [(f"regime_fraction.{k}", v) for k, v in summary["regime_fraction"].items()]
-    marked = set(summary.get("not_converged", ()))  # step noise (the point level's friction outputs): said on the row
-    rows = [(r[0], _not_converged(r[1], r[2] if len(r) > 2 else None)) if r[0] in marked and r[1] is not None else r
-            for r in rows]
-    for name, ph in summary.get("phases", {}).items():
-        rows.append((f"phase {name}", f"{ph['t0']:.4g} - {ph['t1']:.4g} s: omega {ph['omega']:.4g} rad/s, cage "
-                                      f"{ph['cage_speed']:.4g} rad/s, ball spin {ph['ball_spin']:.4g} rad/s, "
-                                      f"q_max inner/outer {ph['q_max_inner']:.0f}/{ph['q_max_outer']:.0f} N"))
-    return rows
-
-
 def _save_partial(results, out):
     """Write the samples of an interrupted run into ``out`` (run.npz, run.json); the folder, or None when
     they do not make a summary (too few samples)."""
@@ -203,4 +154,4 @@ def run(args):
     if args.json:
         print(json.dumps(to_jsonable(summary), indent=2))
         return
-    print_table(_table(summary, sc.t_end))
+    print_table(summary_rows(summary, sc.t_end))

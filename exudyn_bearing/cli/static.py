@@ -23,6 +23,7 @@ from ..solvers.quasistatic.solve import axial_load_as_fa
 from .common import (add_bearing_argument, add_hold_arguments, add_lubricant_argument, add_speed_arguments,
                      bearing_from_args, explained, finite_float, fixed_from_args, format_value, lubricant_from_args,
                      omega_from_args)
+from .pair import add_pair_arguments, pair_requested, run_pair
 
 HELP = ("zero-speed special case of 'quasistatic': 5-DOF inner-ring equilibrium without centrifugal or "
         "gyroscopic loads, rigid rings; the tilt is held at zero unless --tilt free (its reaction moment is "
@@ -97,6 +98,7 @@ def add_parser(sub):
     add_rating_arguments(p, temperature=True)
     p.add_argument("--plot", metavar="FILE.png", help="save Q(psi) and Lambda(psi) plot (+ CSV beside)")
     p.add_argument("--json", action="store_true", help="print JSON (with units and regime_codes) instead of a table")
+    add_pair_arguments(p)  # --arrangement, --preload, --spacing (cli/pair.py)
 
 
 def static_result(b, fr, fa, mx=0.0, my=0.0, tilt="fixed", omega=None, film="hd", hertz="exact", phase=0.0,
@@ -157,6 +159,8 @@ def static_result(b, fr, fa, mx=0.0, my=0.0, tilt="fixed", omega=None, film="hd"
 
 
 def run(args):
+    if pair_requested(args):  # a bearing pair (cli/pair.py)
+        return run_pair(args, "static", rating=rating_options(args), warn_speed=warn_speed)
     b = bearing_from_args(args)
     if args.Pd is not None:
         b = b.with_clearance(args.Pd, name="Pd")

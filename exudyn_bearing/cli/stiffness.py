@@ -26,6 +26,7 @@ from ..solvers.quasistatic.kinematics import CONTROLS
 from .common import (add_bearing_argument, add_hold_arguments, add_lubricant_argument, add_load_arguments,
                      add_ring_growth_argument, add_traction_argument, bearing_from_args, explained, finite_float,
                      fixed_from_args, lubricant_from_args, solver_header, traction_from_args)
+from .pair import add_pair_arguments, pair_requested, run_pair
 
 RPM = 2.0 * math.pi / 60.0
 
@@ -53,6 +54,7 @@ def add_parser(sub):
     add_hold_arguments(p)
     p.add_argument("--plot", metavar="FILE.png", help="with a table: entries against speed (+ CSV beside)")
     p.add_argument("--json", action="store_true", help="print JSON")
+    add_pair_arguments(p)  # --arrangement, --preload, --spacing (cli/pair.py)
 
 
 def _units():
@@ -97,6 +99,8 @@ def _plot(c, png):
 def run(args):
     from .static import warn_speed
 
+    if pair_requested(args):  # a bearing pair (cli/pair.py)
+        return run_pair(args, "stiffness", warn_speed=warn_speed, print_matrix=_print_matrix)
     if not 1 <= args.phases <= 64:
         raise InputError(f"--phases: expected an integer in [1, 64], got {args.phases}")
     if args.plot and args.speeds is None and args.rpms is None:

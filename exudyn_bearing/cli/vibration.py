@@ -83,6 +83,15 @@ def _parameters(args):
                                         film_damping=val["film_damping"], dimensions=dims)
 
 
+#: Unit key of the three-mass model's parameters by the start of their name (the JSON's ``units`` map).
+_PARAMETER_UNITS = {"mass_": "mass", "k_": "stiffness", "c_": "damping"}
+
+
+def _parameter_unit(name, units):
+    """Unit of the parameter ``name`` of a three-mass model (kg, N/m, N s/m); None for a setting."""
+    return next((units[key] for prefix, key in _PARAMETER_UNITS.items() if name.startswith(prefix)), None)
+
+
 def run(args):
     p = _parameters(args)
     res = three_dof.analyse(p)
@@ -91,7 +100,8 @@ def run(args):
         return
     print(f"{p.label}")
     print("reading: " + ", ".join(f"{k} = {v}" for k, v in p.reading.items()))
-    print_table([(k, v) for k, v in res.to_dict()["parameters"].items()])
+    d = res.to_dict()
+    print_table([(k, v, _parameter_unit(k, d["units"])) for k, v in d["parameters"].items()])
     print()
     head = f"{'eigenvalue [1/s]':>34}  {'f_n [Hz]':>11}  {'zeta':>9}  |shape| outer, ball, inner"
     print(head)

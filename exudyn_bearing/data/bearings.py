@@ -32,13 +32,15 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import warnings
 from dataclasses import dataclass, field
 
 from .errors import (LENGTH_MISTAKES, InputError, check_finite, check_integer, check_plausible, check_positive,
                      check_text)
+from .iso281 import STANDARD_CONFORMITY
 from .materials import Material
 
-__all__ = ["BallBearing", "MAX_CLEARANCE_PER_BALL_DIAMETER", "MAX_FREE_CONTACT_ANGLE", "MAX_PRELOAD_INTERFERENCE",
+__all__ = ["BallBearing", "EstimatedGeometryWarning", "MAX_CLEARANCE_PER_BALL_DIAMETER", "MAX_FREE_CONTACT_ANGLE", "MAX_PRELOAD_INTERFERENCE",
            "PITCH_DIAMETER_RANGE", "RACE_RADIUS_RANGE", "check_clearance", "free_contact_angle_from_degrees",
            "check_free_contact_angle"]
 
@@ -100,6 +102,11 @@ def check_conformity(name, value) -> float:
                          f"diameter: {f:g} % is {f / 100:g}")
     raise InputError(f"{name}: must lie in (0.5, {MAX_CONFORMITY:g}] (groove radius f D above the ball radius D/2; "
                      f"ball bearings have 0.505-0.58), got {f:g}")
+
+class EstimatedGeometryWarning(UserWarning):
+    """A bearing built with estimated values in place of missing data (:meth:`BallBearing.from_dimensions`
+    without conformities); the bearing's ``estimated`` lists them."""
+
 
 #: Smallest nonzero free contact angle accepted in degrees [deg]: a value
 #: below pi/2 given in degrees is far more likely an angle in radians (angular-
@@ -170,6 +177,11 @@ class BallBearing:
         by every solver when none is given; None: the DEM papers' oil
         ``guessasma2018`` and their mu(Lambda) ``lambda_dem``
         (:func:`~exudyn_bearing.data.catalog.default_lubricant`).
+    estimated : tuple of str
+        Names of the quantities estimated by a rule rather than taken from a data sheet or paper (the
+        series catalogue's ``6310-ISO`` ..., :meth:`from_dimensions` without conformities), e.g.
+        ``("n_balls", "ball_diameter", ...)``; empty for data-sheet geometry
+        (docs/theory/geometry.md#series-catalogue).
     """
 
     n_balls: int
@@ -187,6 +199,7 @@ class BallBearing:
     outer_diameter: float | None = None
     lubricant: str | None = None
     traction: str | None = None
+    estimated: tuple = ()
 
     def __post_init__(self):
         z = check_integer("n_balls", self.n_balls)
@@ -207,6 +220,9 @@ class BallBearing:
         for key in ("lubricant", "traction"):
             if getattr(self, key) is not None:
                 check_text(key, getattr(self, key))
+        if not isinstance(self.estimated, (tuple, list)) or not all(isinstance(k, str) for k in self.estimated):
+            raise InputError(f"estimated: expected a list of quantity names, got {self.estimated!r}")
+        object.__setattr__(self, "estimated", tuple(self.estimated))
         # plain floats from here on (numpy scalars and ints are numbers too)
         for key, v in (("ball_radius", rb), ("inner_race_radius", ri), ("outer_race_radius", ro),
                        ("inner_groove_radius", rci), ("outer_groove_radius", rco), ("free_contact_angle", a0)):
@@ -259,10 +275,10 @@ class BallBearing:
                     f"cage_ball_radius: {rz} does not fit between the races (gap {ro - ri})")
 
     @classmethod
-    def from_dimensions(cls, n_balls, ball_diameter, pitch_diameter, inner_conformity, outer_conformity,
+    def from_dimensions(cls, n_balls, ball_diameter, pitch_diameter, inner_conformity=None, outer_conformity=None,
                         diametral_clearance=0.0, free_contact_angle=0.0, material: Material | None = None,
                         cage_ball_radius=None, name: str = "custom", source: str = "", bore=None,
-                        outer_diameter=None, lubricant=None, traction=None) -> "BallBearing":
+                        outer_diameter=None, lubricant=None, traction=None, estimated=()) -> "BallBearing":
         """A bearing from the dimensions of a data sheet.
 
         Parameters
@@ -271,13 +287,17 @@ class BallBearing:
             Z.
         ball_diameter, pitch_diameter : float
             D and d_m [m].
-        inner_conformity, outer_conformity : float
-            f_i = R_ci / D and f_o = R_co / D [-], in (0.5, 0.6] (typically 0.51-0.54).
+        inner_conformity, outer_conformity : float, optional
+            f_i = R_ci / D and f_o = R_co / D [-], in (0.5, 0.6] (typically 0.51-0.54). Not given (None): the
+            groove radii ISO 281 assumes for its load ratings, 0.52 inner and 0.53 outer
+            (:data:`~exudyn_bearing.data.iso281.STANDARD_CONFORMITY`, ISO 281:2007 clause 6.1.1), which a
+            data sheet rarely states; the bearing then lists them in ``estimated``, says so in ``source``,
+            and an :class:`EstimatedGeometryWarning` is issued.
         diametral_clearance : float
             P_d [m] (negative: preload).
         free_contact_angle : float
             alpha_0 [rad] (0 for deep-groove bearings).
-        material, cage_ball_radius, name, source, bore, outer_diameter, lubricant, traction
+        material, cage_ball_radius, name, source, bore, outer_diameter, lubricant, traction, estimated
             As in the class.
 
         The race radii follow as R_i = d_m/2 - D/2 - P_d/4 and
@@ -293,6 +313,18 @@ class BallBearing:
                              *PITCH_DIAMETER_RANGE, "m", "lengths are in metres", LENGTH_MISTAKES)
         if not d < dm:
             raise InputError(f"ball_diameter: must be smaller than pitch_diameter ({dm}), got {d}")
+        estimated = tuple(estimated)
+        missing = [k for k, v in (("inner_conformity", inner_conformity), ("outer_conformity", outer_conformity))
+                   if v is None]
+        if missing:
+            rule = dict(zip(("inner_conformity", "outer_conformity"), STANDARD_CONFORMITY))
+            inner_conformity = rule["inner_conformity"] if inner_conformity is None else inner_conformity
+            outer_conformity = rule["outer_conformity"] if outer_conformity is None else outer_conformity
+            note = (f"{' and '.join(missing)} not given: {', '.join(f'{rule[k]:g}' for k in missing)} assumed "
+                    "(the groove radii ISO 281 assumes for its load ratings, inner 0.52 D, outer 0.53 D)")
+            source = f"{source}; {note}" if source else note
+            estimated += tuple(k for k in missing if k not in estimated)
+            warnings.warn(f"bearing {name}: {note}", EstimatedGeometryWarning, stacklevel=2)
         fi = check_conformity("inner_conformity", inner_conformity)
         fo = check_conformity("outer_conformity", outer_conformity)
         pd = check_clearance("diametral_clearance", diametral_clearance, d)
@@ -301,7 +333,7 @@ class BallBearing:
                    outer_groove_radius=fo * d, cage_ball_radius=cage_ball_radius,
                    free_contact_angle=free_contact_angle, material=Material() if material is None else material,
                    name=name, source=source, bore=bore, outer_diameter=outer_diameter, lubricant=lubricant,
-                   traction=traction)
+                   traction=traction, estimated=estimated)
 
     # -- derived quantities -------------------------------------------------
     @property

@@ -14,9 +14,19 @@ refused), ``material`` a material name or a dict of
   ``inner_race_radius``, ``outer_race_radius``, ``inner_groove_radius``,
   ``outer_groove_radius``;
 * dimensions of a data sheet (:meth:`BallBearing.from_dimensions`):
-  ``n_balls``, ``ball_diameter``, ``pitch_diameter``, ``inner_conformity``,
-  ``outer_conformity``, optional ``diametral_clearance`` (default 0); the
-  same keys may also sit in a ``"dimensions"`` object.
+  ``n_balls``, ``ball_diameter``, ``pitch_diameter``, optional
+  ``inner_conformity``, ``outer_conformity`` (not given: ISO 281's 0.52 /
+  0.53, marked as estimated, with a warning) and ``diametral_clearance``
+  (default 0); the same keys may also sit in a ``"dimensions"`` object.
+
+Either form may list ``estimated`` quantities (names of the fields).
+
+Besides the papers' validated bearings of ``catalog.json`` (``catalog``:
+6208, 7208, 6004, 6205, ACBB-120), the series catalogue
+(:mod:`.series`, ``series_catalog``) holds the deep-groove 60, 62, 63 and
+angular-contact 70, 72, 73 series of bore codes 00-20 under names such as
+``6310-ISO`` and ``7208B-ISO``: ISO 15 boundary dimensions and an estimated
+internal geometry (docs/theory/geometry.md#series-catalogue).
 
 A JSON file holds one bearing, or is shaped like ``catalog.json``
 (``"bearings"``, optional ``"materials"`` and ``"lubricants"``): its only
@@ -28,6 +38,7 @@ from __future__ import annotations
 
 import dataclasses
 import json
+import math
 from importlib import resources
 from pathlib import Path
 from typing import Mapping
@@ -36,9 +47,10 @@ from .bearings import BallBearing, free_contact_angle_from_degrees
 from .errors import InputError, check_keys, lookup
 from .lubricants import Lubricant
 from .materials import Material
+from .series import SERIES_SUFFIX, designation_dimensions, is_series_name, series_bearing, series_entry, series_names
 from .traction import TractionModel
 
-__all__ = ["catalog", "materials", "lubricants", "traction_models", "get_bearing", "load_bearing", "load_lubricant",
+__all__ = ["catalog", "series_catalog", "catalog_listing", "materials", "lubricants", "traction_models", "get_bearing", "load_bearing", "load_lubricant",
            "default_lubricant", "default_traction", "get_traction_model", "BEARING_KEYS", "DIMENSION_KEYS",
            "PAPERS_LUBRICANT", "PAPERS_TRACTION"]
 
@@ -47,7 +59,7 @@ BEARING_KEYS = tuple(f.name for f in dataclasses.fields(BallBearing)) + ("free_c
 #: Keys of a bearing in the dimensions form (:meth:`BallBearing.from_dimensions`).
 DIMENSION_KEYS = ("n_balls", "ball_diameter", "pitch_diameter", "inner_conformity", "outer_conformity",
                   "diametral_clearance", "free_contact_angle", "free_contact_angle_deg", "material", "cage_ball_radius", "name", "source",
-                  "bore", "outer_diameter", "lubricant", "traction")
+                  "bore", "outer_diameter", "lubricant", "traction", "estimated")
 _MATERIAL_KEYS = tuple(f.name for f in dataclasses.fields(Material))
 _LUBRICANT_KEYS = tuple(f.name for f in dataclasses.fields(Lubricant))
 
@@ -116,7 +128,7 @@ def _bearing_from_dict(name: str, d: Mapping, extra_materials: Mapping | None = 
             raise InputError(f"{radii[0]}: give the race radii (inner_race_radius, ...) or the dimensions "
                              "(ball_diameter, pitch_diameter, inner_conformity, ...) of a bearing, not both")
         check_keys("bearing parameter (dimensions form)", d, DIMENSION_KEYS)
-        required = ("n_balls", "ball_diameter", "pitch_diameter", "inner_conformity", "outer_conformity")
+        required = ("n_balls", "ball_diameter", "pitch_diameter")
     else:
         check_keys("bearing parameter", d, BEARING_KEYS)
         required = ("n_balls", "ball_radius", "inner_race_radius", "outer_race_radius",
@@ -186,9 +198,71 @@ catalog: Mapping[str, BallBearing] = {
     k: _bearing_from_dict(k, v) for k, v in _RAW["bearings"].items()}
 
 
+class _SeriesCatalog(Mapping):
+    """The series catalogue (:mod:`.series`) as a read-only mapping name -> BallBearing; an entry is built from
+    the ISO 15 table and the rule when first asked for (names in any case: ``6310-iso``)."""
+
+    def __init__(self):
+        self._names = tuple(series_names())
+        self._known = frozenset(self._names)
+        self._built: dict[str, BallBearing] = {}
+
+    def __getitem__(self, name) -> BallBearing:
+        key = str(name).strip().upper()
+        if key not in self._known:
+            raise KeyError(name)
+        if key not in self._built:
+            self._built[key] = series_bearing(key, material=materials["steel"])
+        return self._built[key]
+
+    def __contains__(self, name) -> bool:
+        return isinstance(name, str) and name.strip().upper() in self._known
+
+    def __iter__(self):
+        return iter(self._names)
+
+    def __len__(self) -> int:
+        return len(self._names)
+
+
+#: The series catalogue: ``6000-ISO`` ... ``6320-ISO``, ``7000C-ISO`` ... ``7320B-ISO`` (:mod:`.series`).
+series_catalog: Mapping[str, BallBearing] = _SeriesCatalog()
+
+
 def get_bearing(name: str) -> BallBearing:
-    """Catalogue bearing by name; an unknown name lists the valid ones."""
-    return lookup(catalog, name, "bearing: unknown bearing")
+    """Catalogue bearing by name: a validated entry of ``catalog.json`` or a series-catalogue name
+    (``6310-ISO``, ``7208B-ISO``); an unknown name lists the valid ones."""
+    if name in catalog:
+        return catalog[name]
+    if name in series_catalog:
+        return series_catalog[name]
+    if is_series_name(name):  # spelt like one but not in it: say what is wrong
+        series_bearing(name)
+    raise InputError(f"bearing: unknown bearing {name!r} (catalogue: {', '.join(catalog)}; series catalogue: "
+                     f"60NN, 62NN, 63NN{SERIES_SUFFIX} and 70NN, 72NN, 73NN + C|AC|B + {SERIES_SUFFIX}, bore codes "
+                     f"NN 00-20, e.g. 6310{SERIES_SUFFIX}, 7208B{SERIES_SUFFIX}; `info --list` lists them)")
+
+
+def catalog_listing() -> list[dict]:
+    """One row per catalogue bearing, the validated entries first, then the series catalogue: ``name``,
+    ``type`` (deep-groove / angular-contact), ``bore``, ``outer_diameter``, ``width`` [m] (the entry's, else
+    ISO 15's for its designation; None where unknown), ``n_balls``, ``ball_diameter`` [m],
+    ``free_contact_angle_deg``, ``geometry`` ("data sheet" for the papers' validated entries, "estimated" for
+    the series rule's) and ``estimated`` (the estimated fields)."""
+    rows = []
+    for name, b in list(catalog.items()) + list(series_catalog.items()):
+        iso = series_entry(name) if name in series_catalog else None
+        dims = (iso.bore, iso.outer_diameter, iso.width) if iso else designation_dimensions(name)
+        bore = b.bore if b.bore is not None else (dims[0] if dims else None)
+        outside = b.outer_diameter if b.outer_diameter is not None else (dims[1] if dims else None)
+        width = dims[2] if dims and abs(dims[0] - bore) < 1e-9 and abs(dims[1] - outside) < 1e-9 else None
+        nm = (lambda x: None if x is None else round(x, 9))  # lengths to the nanometre (no float noise)
+        rows.append({"name": name, "type": "angular-contact" if b.free_contact_angle > 0.0 else "deep-groove",
+                     "bore": nm(bore), "outer_diameter": nm(outside), "width": nm(width), "n_balls": b.n_balls,
+                     "ball_diameter": nm(b.ball_diameter),
+                     "free_contact_angle_deg": round(math.degrees(b.free_contact_angle), 9),
+                     "geometry": "estimated" if b.estimated else "data sheet", "estimated": list(b.estimated)})
+    return rows
 
 
 def load_bearing(spec, name: str | None = None) -> BallBearing:
@@ -210,6 +284,8 @@ def load_bearing(spec, name: str | None = None) -> BallBearing:
     spec = str(spec)
     if spec in catalog and name is None:
         return catalog[spec]
+    if spec in series_catalog and name is None and not Path(spec).exists():
+        return series_catalog[spec]
     path, picked = _split_name(spec)
     path = Path(path)
     if path.suffix.lower() == ".json" or path.exists():

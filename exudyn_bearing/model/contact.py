@@ -13,7 +13,7 @@ the small ones) or run only in some scenes or on sampled steps (defects,
 the ellipse level, the diagnostics) are called: numba's inlining of them
 made the kernel's compilation take about 19 s of CPU time on every cold
 start, about 9 s without it, at an unchanged step time and bitwise
-unchanged results (``validation/profile_reference.py --compile``). The
+unchanged results (``validation/performance/profile_reference.py --compile``). The
 defect and ellipse-traction code is compiled only into the
 specialisations of :func:`forces` that ask for it (``defect_path``,
 ``ellipse_path``; :func:`scene_paths`). Constants of the scene that

@@ -163,7 +163,7 @@ P_DRAG = _entry("ball_drag", "switch", "drag of the oil-air mixture (at rest wit
 P_RHO_MIX = _entry("mixture_density", "kg/m^3", "density of the oil-air mixture of the ball drag")
 P_ETA_MIX = _entry("mixture_viscosity", "Pa s", "dynamic viscosity of the oil-air mixture of the ball drag")
 
-# -- rigid cage (docs/theory/cage.md; reference engine) ----------------------
+# -- rigid cage (docs/theory/cage.md) ------------------------------------------
 P_RIGID = _entry("rigid_cage", "switch", "rigid cage body with pockets (1; then cage 0: no cage balls) or none (0)")
 P_MC = _entry("cage_mass", "kg", "mass m_c of the rigid cage")
 P_IC = _entry("cage_inertia", "kg m^2", "polar moment of inertia I_c of the rigid cage")

@@ -107,7 +107,7 @@ class Scenario:
     cage : {"torus", "rigid", "none"} or bool
         The cage: the DEM papers' torus cage (cage balls between the balls,
         the default; True is an alias), a rigid cage body with pockets and a
-        guiding land (``rigid_cage``; reference engine, docs/theory/cage.md)
+        guiding land (``rigid_cage``; reference engine and Exudyn element, docs/theory/cage.md)
         or none (False is an alias): the balls kept apart by ball / ball
         contact only. Read back as one of the three names.
     rigid_cage : RigidCage or None
@@ -188,7 +188,7 @@ class Scenario:
         Strips along the major axis and points across each strip of the
         ellipse integration; default 16 x 4, the same in every solver
         (:data:`~exudyn_bearing.physics.contact_slip.DEFAULT_N_STRIPS`,
-        chosen by validation/traction_convergence.py).
+        chosen by validation/studies/traction_convergence.py).
     traction_regularizing_srr : float
         Slide-to-roll ratio below which a Coulomb-type traction model
         (``constant``, ``lambda``) whose own ``regularizing_srr`` is 0 rises
@@ -510,7 +510,7 @@ def rolling_speed_floor(bearing, omega, omega_outer=0.0, regularizing_speed=DEFA
     at the ring speeds ``omega``, ``omega_outer`` [rad/s] (Harris & Kotzalas' rolling speeds,
     :func:`~exudyn_bearing.physics.kinematics.rolling_speeds`). A floor above the rolling speed shrinks the
     slide-to-roll ratios: the 6208 at 1 rad/s rolls at 0.0145 m/s, and 0.1 m/s lowered its dissipation
-    five-fold (validation/anomaly_checks.py). The dynamic engines' kernel takes it as ``P_VREG``
+    five-fold (validation/consistency/anomaly_checks.py). The dynamic engines' kernel takes it as ``P_VREG``
     (:func:`ellipse_rolling_floor`), the quasi-static solver as its default ``rolling_speed_floor``."""
     b = bearing
     u_i, _u_o = _kin.rolling_speeds(float(omega), float(omega_outer), b.ball_radius, b.pitch_radius,

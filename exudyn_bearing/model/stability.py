@@ -38,21 +38,21 @@ class StepSizeWarning(UserWarning):
 #: Factor between the linearised single-ball limit and the reported stable
 #: step: the two races, the ring and load peaks couple the modes (the 6208 at
 #: 500 rad/s with the implicit tangential spring blows up at 0.93 of the
-#: linearised normal limit; validation/bench_reference.py measures it).
+#: linearised normal limit; validation/performance/bench_reference.py measures it).
 STABILITY_SAFETY = 0.85
 
 #: Ball / cage-ball contact load [fraction of the largest ball load] the
 #: a-priori estimate assumes where the scene loads the cage: start-up and
 #: slow-down, starts from rest, and loaded balls at unequal contact angles
 #: (they roll at different kinematic speeds and push the cage until they
-#: slide, mu Q). Measured (validation/cage_step_checks.py, step_limits.py):
+#: slide, mu Q). Measured (validation/studies/cage_step_checks.py, step_limits.py):
 #: up to 72 N at 2 us in the 6208 protocol (5 % of Q), 257 N for the 7208
 #: under F_r = F_a (19 %), 180 N for the 6208 under F_r = 3000 N, F_a = 500 N.
 START_UP_CAGE_LOAD = 0.1
 #: The same for steady runs from the analytic state whose loaded balls all
 #: have one contact angle (nothing drives the cage): 0.1 % of the ball load,
 #: the *settled* cage load, not the start transient's peak. What it trades:
-#: measured at 2 us over 50 ms (``python validation/step_limits.py``, its
+#: measured at 2 us over 50 ms (``python validation/studies/step_limits.py``, its
 #: ``steady_cage_loads``), the nine such scenes settle in the second half of
 #: the run at 0-1 N, below this assumption in eight (the 6208 at F_r = 200 N,
 #: P_d = 40 um, 300 rad/s: 0.62 N against 0.20 N assumed); but in their first
@@ -70,13 +70,13 @@ START_UP_CAGE_LOAD = 0.1
 #: (:func:`cage_load_check`) and warn when they put the cage's step below dt.
 STEADY_CAGE_LOAD = 1e-3
 #: Ratio of the step to the cage contacts' estimate from which runs may blow
-#: up (validation/step_limits.py: the 7208 blew up at 1.60, the 6208 protocol
+#: up (validation/studies/step_limits.py: the 7208 blew up at 1.60, the 6208 protocol
 #: at 1.81 with the implicit and 2.07 with the explicit spring; runs at 1.28,
 #: 1.29 and 1.55 only chattered, and so did the explicit 6208 protocol at 1.81).
 CAGE_BLOW_UP_RATIO = 1.6
 #: The same with ``cage_damping="implicit"``: its damping at the step is smaller, and an instability of its
 #: contacts is an oscillation that grows rather than a chatter held by the damping; the 7208 of
-#: validation/cage_step_checks.py blew up at 1.26 times its estimate and chattered at 0.84 of it. A step above
+#: validation/studies/cage_step_checks.py blew up at 1.26 times its estimate and chattered at 0.84 of it. A step above
 #: the implicit cage estimate may blow up.
 CAGE_BLOW_UP_RATIO_IMPLICIT = 1.0
 
@@ -214,7 +214,7 @@ def stable_step(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant |
     Cundall-Strack tangential springs (the ball's rocking mode, omega^2 =
     (k_ti + k_to) R_b^2 / I_b = 2.5 (k_ti + k_to)/m_b; an explicit spring
     above this step does not blow up, its force saturates at mu F_n and
-    chatters, which validation/bench_reference.py shows in the slip), the
+    chatters, which validation/performance/bench_reference.py shows in the slip), the
     regularised-friction damping
     (dt < 2 m_eff / c resp. 2.83 m_eff / c, c = 2 mu Q / v_reg) and the
     traction over the ellipse (``traction_level="ellipse"``: its linear
@@ -228,7 +228,7 @@ def stable_step(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant |
     :func:`cage_load_check`). With the rigid cage the cage limit is
     :func:`rigid_cage_step`'s (pockets and land).
 
-    What happens above each limit (validation/step_limits.py): above the
+    What happens above each limit (validation/studies/step_limits.py): above the
     normal limit the run blows up; above the tangential (explicit spring)
     or regularised-friction limit the friction forces may chatter at their
     Coulomb cap (slip and frictional power wrong; the explicit spring did at
@@ -402,7 +402,7 @@ def step_warning(label: str, dt: float, stable: StableStep) -> str | None:
     the tangential springs and the regularised friction may chatter at
     their Coulomb cap; the cage loads may chatter and, from
     :data:`CAGE_BLOW_UP_RATIO` times their limit, the run may blow up
-    (measured in validation/step_limits.py)."""
+    (measured in validation/studies/step_limits.py)."""
     if not dt > stable.dt:
         return None
     limits = {k: STABILITY_SAFETY * getattr(stable, k) for k in ("normal", "tangential", "friction", "cage")}
@@ -510,7 +510,7 @@ def ring_contact_stiffness(bearing: BallBearing, scenario: Scenario, race: str =
 #: may take with two or more sub-steps (one sub-step is the body mode's scheme). The fast mode couples
 #: ring and balls staggered (the ring, in Exudyn, gets the mean reaction of the balls' sub-steps), and
 #: that coupling, not the ring's own Verlet limit, sets the step: in
-#: ``validation/fast_mode_limits.py`` (6208, ring masses 81 g ... 5 kg at F_r = 3000 N, 81 g and 1.25 kg at
+#: ``validation/studies/fast_mode_limits.py`` (6208, ring masses 81 g ... 5 kg at F_r = 3000 N, 81 g and 1.25 kg at
 #: 600 N; it prints these figures) every run with H up to a quarter of the estimate kept q_max_inner within
 #: 0.2 % of the reference engine, the first run off by more than 0.5 % came at 0.30 ... 0.80 of it, and
 #: from 0.5 ... 1.1 of it a growing ring vibration put them more than 10 % off (several times, further out)

@@ -38,6 +38,7 @@ from .cage_summary import CAGE_LOSSES_NOT_MODELLED, CAGE_SUMMARY_UNITS, rigid_ca
 from .contact_summary import CONTACT_SUMMARY_UNITS, contact_summary
 from .jsonio import to_jsonable
 from .whole_loss import WHOLE_LOSS_DESCRIPTIONS, WHOLE_LOSS_KEYS, WHOLE_LOSS_UNITS, whole_loss
+from .tables import NOT_CONVERGED_MARK, Summary
 from .window_checks import (LOSS_FLOOR_MU, SPEED_FLOOR, SteadyStateWarning, energy_balance, energy_check,
                             energy_floor, q_max_at_psi0, steadiness)
 
@@ -114,16 +115,13 @@ POINT_LEVEL_NOTES = {
 
 #: Summary entries that are step noise at the point level with the Cundall-Strack spring (friction="history"),
 #: not converged losses: its friction power falls about in proportion to dt, the normal damping with dt^2
-#: (docs/theory/dynamics.md, "What each traction level models"; python validation/step_convergence_losses.py).
+#: (docs/theory/dynamics.md, "What each traction level models"; python validation/studies/step_convergence_losses.py).
 #: Such a summary says
 #: ``friction_outputs_converged: False``, lists them under ``not_converged`` and marks their descriptions;
 #: ``power_loss.X`` is the component X of ``power_loss``.
 POINT_STEP_DEPENDENT = ("friction_torque", "friction_power", "dissipation", "dissipation_inner", "dissipation_outer",
                         "power_loss.contact_traction_inner", "power_loss.contact_traction_outer",
                         "power_loss.contact_damping", "power_loss_total")
-#: How a summary marks the entries of POINT_STEP_DEPENDENT (descriptions, the CLI's table).
-NOT_CONVERGED_MARK = ("not converged: step-dependent at the point level; "
-                      "use traction_level='ellipse' (--traction-level ellipse)")
 
 #: Unit of every scalar summary entry (speeds are angular speeds in rad/s).
 SUMMARY_UNITS = {
@@ -575,7 +573,7 @@ class Results:
                          "q_max_inner": float(load_i[sel].max()), "q_max_outer": float(load_o[sel].max())}
         return out
 
-    def summary(self, fraction: float | None = None, t_window=None) -> dict:
+    def summary(self, fraction: float | None = None, t_window=None) -> Summary:
         """Scalar results over a window of the run (docs/theory/reference_cases.md keys).
 
         The window (:meth:`summary_window`, described under ``window``): the
@@ -698,7 +696,7 @@ class Results:
             more = f"; and {len(reasons) - 3} more (summary['steady'])" if len(reasons) > 3 else ""
             warnings.warn(f"summary window {window['t0']:.6g} - {window['t1']:.6g} s of the {self.engine} run is not "
                           f"steady: {'; '.join(reasons[:3])}{more}", SteadyStateWarning, stacklevel=2)
-        return out
+        return Summary(out)
 
     # -- persistence ---------------------------------------------------
     def save(self, directory, stem: str = "run") -> tuple[Path, Path]:

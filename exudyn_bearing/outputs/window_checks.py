@@ -11,6 +11,8 @@ import math
 
 import numpy as np
 
+from ..physics.losses import LOSS_FLOOR_MU  # noqa: F401 (the summaries' loss floor; one definition)
+
 __all__ = ["STEADY_BLOCKS", "MIN_STEADY_SAMPLES", "DRIFT_REL", "OSCILLATION_REL", "DRIFT_DEG", "OSCILLATION_DEG",
            "LOSS_DRIFT_REL", "LOSS_OSCILLATION_REL", "LOSS_FLOOR_MU", "SPEED_FLOOR", "PSI0_TOLERANCE",
            "STEADY_THRESHOLDS", "SteadyStateWarning", "drift_and_oscillation", "passage_average", "steadiness", "q_max_at_psi0",
@@ -52,15 +54,6 @@ LOSS_DRIFT_REL = 0.015
 #: Largest relative standard deviation of the detrended block means of the
 #: losses: the 3 % comparison tolerance of issue 18.
 LOSS_OSCILLATION_REL = 0.03
-#: Friction coefficient of the smallest loss whose steadiness is judged: a
-#: friction torque below LOSS_FLOOR_MU (|F_r| + |F_a|) r_p, or a dissipation
-#: below that times omega, is measured against that floor and reported, but
-#: does not decide. 1e-4 is an order below the friction coefficients of ball
-#: bearings in manufacturers' torque estimates (about 0.001-0.002): a loss
-#: below it is no result anyone uses, and the point traction level's
-#: tangential springs exchange energy about zero (the main job: 2e-4 N m
-#: against a floor of 9e-3 N m, sign changing from 10 ms to 10 ms at 1 rad/s).
-LOSS_FLOOR_MU = 1e-4
 #: Speeds are judged against at least this fraction of the scenario's
 #: speed (a run coasting to rest has mean speeds near zero).
 SPEED_FLOOR = 1e-3

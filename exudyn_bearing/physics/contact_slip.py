@@ -88,7 +88,7 @@ u_roll = |e_x . (v_ball(X) + v_race(X))| / 2 with velocities relative to the
 contact point; :mod:`exudyn_bearing.solvers.quasistatic.kinematics` does
 this for the orbiting frame of a bearing ball. F_x, F_y act on the ball
 along e_x, e_y (the race gets the opposite); M_z acts on the ball about
-e_z = -n and M_y about e_y (the race gets the opposite moments). Measured cost per call (``python validation/bench_quasistatic.py``,
+e_z = -n and M_y about e_y (the race gets the opposite moments). Measured cost per call (``python validation/performance/bench_quasistatic.py``,
 compiled loop, shared 2-core machine): about 130 ns for Coulomb friction and
 210 ns for the traction curve at 8 strips x 1 point, 240 / 390 ns at 16
 strips, 650 ns for the EHL model at 8 strips.
@@ -120,7 +120,7 @@ from .traction import _inverse_rolling_speed, _traction_srr
 
 #: Strips along the major axis and points across each strip: the default of
 #: every solver (quasi-static, both dynamic engines), chosen by
-#: ``python validation/traction_convergence.py`` (dissipation within 1 % of a
+#: ``python validation/studies/traction_convergence.py`` (dissipation within 1 % of a
 #: 64 x 8 integration and the spin-axis angle within 0.1 deg on its cases).
 DEFAULT_N_STRIPS = 16
 DEFAULT_N_ACROSS = 4

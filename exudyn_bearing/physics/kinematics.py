@@ -6,7 +6,7 @@ D cos(alpha)/d_m):
 
 * cage:        omega_c = omega_i (1 - gamma)/2 + omega_o (1 + gamma)/2
 * ball spin relative to the cage, about the rolling axis:
-               omega_R = -(r_p / (2 R_b)) (1 - gamma^2) (omega_i - omega_o)
+  omega_R = -(r_p / (2 R_b)) (1 - gamma^2) (omega_i - omega_o)
   (negative: the ball turns against the inner ring)
 * absolute ball angular speed, rolling axis perpendicular to the contact
   line: |omega_R a + omega_c e_z|, a = (-sin alpha, cos alpha) in (r, z);

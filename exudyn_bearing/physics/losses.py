@@ -113,7 +113,19 @@ __all__ = [
     "skf_sliding_coefficient",
     "skf_sliding_variable",
     "sphere_drag_coefficient",
+    "LOSS_FLOOR_MU",
 ]
+
+#: Friction coefficient of the smallest loss whose steadiness is judged: a
+#: friction torque below LOSS_FLOOR_MU (|F_r| + |F_a|) r_p, or a dissipation
+#: below that times omega, is measured against that floor and reported, but
+#: does not decide (the dynamic summaries' steadiness and energy checks, the
+#: quasi-static solver's traction-resolution check). 1e-4 is an order below the friction coefficients of ball
+#: bearings in manufacturers' torque estimates (about 0.001-0.002): a loss
+#: below it is no result anyone uses, and the point traction level's
+#: tangential springs exchange energy about zero (the main job: 2e-4 N m
+#: against a floor of 9e-3 N m, sign changing from 10 ms to 10 ms at 1 rad/s).
+LOSS_FLOOR_MU = 1e-4
 
 #: Hysteresis loss factor alpha_h of hardened bearing steel [-]: the value Harris & Kotzalas [1]_
 #: ch. 5 use (0.007); Johnson [2]_ sec. 9.2 gives loss factors below 1 % for hard metals in

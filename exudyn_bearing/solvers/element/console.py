@@ -10,7 +10,7 @@ every run of the bearing element and mean nothing is wrong:
   allocations, which seem to occur in every time step; this may be due to
   user functions; solver may be slow``: the element's user function receives
   its coordinates as new vectors every call, which Exudyn counts (its cost is
-  in validation/bench_overhead.py).
+  in validation/performance/bench_overhead.py).
 
 :func:`filter_exudyn_notes` drops exactly these lines while it is active and
 passes everything else (solver progress, real warnings and errors) through.

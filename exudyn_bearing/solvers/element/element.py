@@ -24,7 +24,7 @@ generalized forces of the ring nodes, and writes the other balls' forces
 into the force vector of the second object (``items["ballObject"]``),
 which Exudyn evaluates after it: consistent within every evaluation, and
 without Exudyn's per-coordinate conversion of a large object's coordinates
-and forces to and from Python (validation/profile_element.py). The body
+and forces to and from Python (validation/performance/profile_element.py). The body
 mode therefore needs ``parallel.numberOfThreads = 1`` and, under an
 implicit solver, the system-wide numerical Jacobian
 (``newton.numericalDifferentiation.doSystemWideDifferentiation``, which
@@ -55,7 +55,16 @@ bodies' mass matrices and the contact stiffness of all bearings on them at
 their ``initialLoad``; one sub-step is the body mode's scheme, bounded by
 ``ringStableStep``); a larger step warns. Heavy rings (a ring on a rotor) take more sub-steps than
 a bare ring, which takes one or two. See validation/REPORT.md for the
-measured limits (``validation/fast_mode_limits.py``).
+measured limits (``validation/studies/fast_mode_limits.py``).
+
+Rigid cage (``cage="rigid"``, ``rigidCage``, ``gravity``; both modes): the
+contact kernel's rigid cage (docs/theory/cage.md). In the body mode an
+Exudyn rigid body (``cageNode``, ``cageBody``, ``cageMarker``: a
+NodeRigidBodyRxyz with an ObjectRigidBody, its tilts held by
+CoordinateConstraints) whose node joins the ball object with zero mass, so
+that the user function reads its state and returns its force and moment as
+for the balls; in the fast mode it is integrated with the balls in their
+sub-steps. The bearing axis must be the world z axis.
 
 Defects and signals (both modes): ``defects`` (:class:`exudyn_bearing.data.Defect`
 objects or dicts) puts localized spalls into the contact model; an
@@ -82,7 +91,7 @@ wrong).
 Implicit solvers work in the body mode with the numerical Jacobian but are
 not recommended (EXUDYN_NOTES: an order of magnitude slower for Hertz
 contact: several force evaluations per step, plus those of the numerical
-Jacobian; validation/bench_element.py --ga times it). The fast mode needs
+Jacobian; validation/performance/bench_element.py --ga times it). The fast mode needs
 an explicit solver whose evaluations never go back in time (its balls
 advance at the first evaluation of a new time and ignore Newton iterations
 there): ``SimulationSettings`` and the first
@@ -116,6 +125,7 @@ import numpy as np
 
 from ..._jit import announce_compilation
 from ...data import InputError, Lubricant, default_traction, load_bearing, load_lubricant
+from ...data.cages import estimated_cage
 from ...data.errors import check_finite, check_positive
 from ...data.traction import DEFAULT_REGULARIZING_SRR
 from ...model import layout as L
@@ -147,7 +157,8 @@ OPTION_NAMES = {"Fr": "initialLoad", "Fa": "initialLoad", "omega": "initialOmega
                 "n_across": "nAcross", "traction_regularizing_srr": "tractionRegularizingSrr",
                 "ring_growth": "ringGrowth", "signal_dt": "signalInterval",
                 "rolling_resistance": "rollingResistance", "ball_drag": "ballDrag",
-                "oil_volume_fraction": "oilVolumeFraction", "hysteresis_loss_factor": "hysteresisLossFactor"}
+                "oil_volume_fraction": "oilVolumeFraction", "hysteresis_loss_factor": "hysteresisLossFactor",
+                "rigid_cage": "rigidCage"}
 
 
 def _initial_load(load):
@@ -175,6 +186,7 @@ def _scenario_from_options(o: dict, bearing) -> Scenario:
     sample = check_positive("sampleInterval", o["sampleInterval"])
     try:
         return Scenario(Fr=fr, Fa=fa, omega=check_finite("initialOmega", o["initialOmega"]), cage=o["cage"],
+                        rigid_cage=o["rigidCage"], gravity=o["gravity"],
                         lubrication=o["lubrication"], friction=o["friction"], tangential=o["tangential"],
                         cage_damping=o["cageDamping"],
                         hertz=o["hertzModel"], film=o["film"], guide_clearance=o["guideClearance"], mu_dry=o["muDry"],
@@ -217,9 +229,19 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
         Created Exudyn items: ``ballNodes``, ``cageNodes``, ``object`` (the
         object with the force user function), ``ballObject`` (body mode: the
         other balls' object, None in the fast mode), ``ringNodes`` (ring nodes
-        that joined the object), ``sensors``.
+        that joined the object), ``cageNode``, ``cageBody``, ``cageMarker``,
+        ``cageConstraints`` (the rigid cage, below), ``sensors``.
+    cageNode, cageBody, cageMarker : int or None
+        With ``cage="rigid"`` in the body mode: the rigid cage's
+        NodeRigidBodyRxyz, its ObjectRigidBody (mass and polar inertia of
+        ``rigidCage``, the bearing's estimated cage when None) and a
+        MarkerBodyRigid at its centre, for the user's sensors, markers and
+        connectors; its tilts are held by two CoordinateConstraints
+        (``items["cageConstraints"]``). None otherwise (the fast mode
+        integrates the cage inside the element; docs/theory/cage.md#in-the-exudyn-element).
     sensors : dict
-        Sensor numbers (``cageSpeed``, ``qMaxInner``, ``qMaxOuter``,
+        Sensor numbers (``cageSpeed``: mean orbital speed of the cage balls, the rigid cage's spin about the
+        world z axis; ``qMaxInner``, ``qMaxOuter``,
         ``lambdaOuterPsi0``, ``innerRingForce``, ``outerRingForce``: force of
         the balls on the ring [N]), stored internally: use
         ``mbs.PlotSensor`` or ``mbs.GetSensorStoredData``.
@@ -236,6 +258,13 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
         keeps the ball loads, 0.25 of ``ringStableStep`` (property).
 
     Options are those of :func:`exudyn_bearing.CreateBallBearing`;
+    ``cage`` is "torus" (True), "rigid" or "none" (False), ``rigidCage`` the
+    :class:`~exudyn_bearing.data.cages.RigidCage` of ``cage="rigid"`` (None:
+    the bearing's estimated cage) and ``gravity`` (g_x, g_y, g_z) [m/s^2,
+    world frame] the gravity the element applies on the rigid cage (give it
+    here rather than as a load on ``cageBody``: the element's energy balance
+    counts it as drive); with the rigid cage the bearing axis must be the
+    world z axis;
     ``initialLoad`` is (Fr, Fa) [N] or a radial load Fr, its radial part along ``loadAngle`` [rad] from
     the outer ring's x axis (default 0, as the levels); an invalid option
     raises InputError naming it (``stepSize``, ``sampleInterval``,
@@ -252,8 +281,8 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
                  tractionRegularizingSrr=DEFAULT_REGULARIZING_SRR, ringGrowth=True,
                  temperatures=None, control="auto", initialState=None, defects=(),
                  signalInterval=None, rollingResistance=False, ballDrag=False, oilVolumeFraction=0.0,
-                 hysteresisLossFactor=HYSTERESIS_LOSS_FACTOR_STEEL, cageDamping="explicit", show=False,
-                 loadAngle=0.0):
+                 hysteresisLossFactor=HYSTERESIS_LOSS_FACTOR_STEEL, cageDamping="explicit", rigidCage=None,
+                 gravity=(0.0, 0.0, 0.0), show=False, loadAngle=0.0):
         announce_compilation(forces, EK.fast_step if mode == "fast" else EK.body_step)
         self.mbs = mbs
         self.bearing = b = load_bearing(bearing)
@@ -270,8 +299,12 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
         self.loadAngle = check_load_angle(loadAngle)
         self.scenario = _scenario_from_options(dict(locals()), b)
         sampleInterval = check_positive("sampleInterval", sampleInterval)
-        if cage and not b.has_cage:
-            raise InputError(f"cage: bearing {b.name} has no cage balls; use cage=False")
+        if self.scenario.cage == "torus" and not b.has_cage:
+            raise InputError(f"cage: bearing {b.name} has no cage balls; use cage='rigid' (a rigid cage body) or "
+                             "cage=False")
+        self.rigid = self.scenario.cage == "rigid"
+        # the kernel's rigid cage (model.parameters): the scenario's, or the bearing's estimated one
+        self._cage_geometry = (self.scenario.rigid_cage or estimated_cage(b)) if self.rigid else None
         self.params = scene_parameters(b, self.scenario, self.lubricant)
         self.table = hertz.exact_table()
         self.stable = stable_step(b, self.scenario, self.lubricant)
@@ -292,8 +325,12 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
         if abs(float(axis_i @ axis_o)) < 1.0 - 1e-9:
             raise InputError("markerInnerRing: the ring axes (local z of both ring bodies) are not parallel "
                              f"(angle {math.degrees(math.acos(min(1.0, abs(float(axis_i @ axis_o))))):.3g} deg)")
+        if self.rigid and float(poses[1][1][2, 2]) < 1.0 - 1e-9:
+            raise InputError("markerOuterRing: the rigid cage moves in the world's x-y plane (its pockets, land and "
+                             "spin about the world z axis, as in the reference engine): the bearing axis, the "
+                             "outer ring body's local z, must be the world z axis")
         xb, vb, wb, xc, vc = self._place_balls(poses)
-        n_cage = b.n_balls if (cage and b.has_cage) else 0
+        n_cage = b.n_balls if self.scenario.cage == "torus" else 0
         if mode not in ("bodies", "fast"):
             raise InputError(f"mode: must be 'bodies' or 'fast', got {mode!r}")
         self.mode = mode
@@ -313,7 +350,9 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
         nodes, cage_nodes, ring_nodes, obj = self._add_items(mbs, xb, vb, wb, xc, vc, n_cage, fast, show)
         self._add_sensors(mbs, n_cage)
         self.items = {"ballNodes": nodes, "cageNodes": cage_nodes, "ringNodes": ring_nodes, "object": obj,
-                      "ballObject": self._ball_object, "sensors": dict(self.sensors)}
+                      "ballObject": self._ball_object, "cageNode": self.cageNode, "cageBody": self.cageBody,
+                      "cageMarker": self.cageMarker, "cageConstraints": self._cage_constraints,
+                      "sensors": dict(self.sensors)}
         import exudyn
 
         self._exu = exudyn
@@ -352,6 +391,12 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
         wb = st["wb"] @ a_o.T + w_o
         xc = st["xc"] @ a_o.T + x_o
         vc = st["vc"] @ a_o.T + v_o + np.cross(w_o, xc - x_o)
+        if self.scenario.cage == "rigid":
+            # the rigid cage's rows (model.layout): its centre as a point, its angle and spin about the world z
+            # axis (the bearing axis) offset by the outer ring's
+            xc[1:], vc[1:] = 0.0, 0.0
+            xc[1, 0] = st["xc"][1, 0] + math.atan2(a_o[1, 0], a_o[0, 0])
+            vc[1, 0] = st["vc"][1, 0] + w_o[2]
         allowed = max(0.0, -0.5 * b.diametral_clearance) + 2.0 * max(float(st.get("max_overlap", 0.0)), 0.0) + 1e-7
         self._check_overlap(xb, poses, allowed)
         return xb, vb, wb, xc, vc

@@ -25,15 +25,6 @@ __all__ = ["ExudynEngine", "SOLVERS", "solve_dynamic"]
 SOLVERS = INTEGRATOR_SOLVERS
 
 
-def element_cage(scenario: Scenario) -> bool:
-    """The ball element's ``cage`` (the torus cage on or off) of a scenario; InputError for the rigid cage,
-    which runs in the reference engine only so far (docs/theory/cage.md)."""
-    if scenario.cage == "rigid":
-        raise InputError("cage: the rigid cage runs in the reference engine (engine='reference'); the Exudyn "
-                         "element has the torus cage or none")
-    return scenario.cage == "torus"
-
-
 def _element_error(exc):
     """The SimulationError, InputError or KeyboardInterrupt (Ctrl-C during
     the user function) a user function of the element raised, found in the
@@ -100,7 +91,8 @@ class ExudynEngine:
         m_inner = mbs.AddMarker(MarkerNodePosition(nodeNumber=node))
         mbs.AddLoad(LoadForceVector(markerNumber=m_inner, loadVector=[s.Fr, 0.0, s.Fa]))
         self.element = BallBearingElement(
-            mbs, b, m_inner, m_outer, lubricant=lubricant, cage=element_cage(s), lubrication=s.lubrication,
+            mbs, b, m_inner, m_outer, lubricant=lubricant, cage=s.cage, rigidCage=s.rigid_cage, gravity=s.gravity,
+            lubrication=s.lubrication,
             friction=s.friction, tangential=s.tangential, cageDamping=s.cage_damping, hertzModel=s.hertz, film=s.film,
             guideClearance=s.guide_clearance, muDry=s.mu_dry, regularizingSpeed=s.regularizing_speed,
             tangentialStiffnessRatio=s.tangential_stiffness_ratio, stepSize=s.dt, innerRingSpeed=s.speed_function(),

@@ -19,6 +19,10 @@ __all__ = ["ItemsMixin"]
 class ItemsMixin:
     """Part of :class:`~.element.BallBearingElement`: item creation."""
 
+    #: The rigid cage's Exudyn node, body and marker (body mode with ``cage="rigid"``), else None.
+    cageNode = cageBody = cageMarker = None
+    _cage_constraints = ()
+
     def _add_items(self, mbs, xb, vb, wb, xc, vc, n_cage, fast, show):
         """Add the nodes (balls and cage balls unless ``fast``) and the
         ObjectGenericODE2 with the ring nodes; set up the work arrays.
@@ -45,17 +49,20 @@ class ItemsMixin:
                     initialCoordinates_t=[*vc[k], 0.0, 0.0, 0.0], numberOfODE2Coordinates=6)))
                 mass += [mz] * 3 + [iz] * 3
         self.z, self.n_cage = z, n_cage
+        rigid_node = self._add_rigid_cage(mbs, xc, vc, mass) if (self.rigid and not fast) else []
         # ring nodes join the object after the balls (once, if both rings share a node)
         self._ring_kind = np.array([sp[0] for sp in self.rings_spec], np.int64)
         ring_nodes = []
         self._ring_data = np.zeros((2, EK.RD_N))
-        n = 0 if fast else 6 * (z + n_cage)
+        n = 0 if fast else 6 * (z + n_cage + len(rigid_node))
         ref = [np.zeros(n)]
         if not fast:
             for j in range(z):
                 ref[0][6 * j:6 * j + 3] = xb[j]
             for k in range(n_cage):
                 ref[0][6 * (z + k):6 * (z + k) + 3] = xc[k]
+            if rigid_node:  # the cage node's reference coordinates: its centre and the rotation about z
+                ref[0][6 * z:6 * z + 6] = (*xc[0], 0.0, 0.0, xc[1, 0])
         offsets = {}
         for r, (kind, node, local, fixed) in enumerate(self.rings_spec):
             self._ring_data[r, EK.RD_OFF] = -1
@@ -87,6 +94,8 @@ class ItemsMixin:
         if fast:  # the balls live here, not in Exudyn
             self._work[0], self._work[1], self._work[2] = xb, vb, wb
             self._work[3, :n_cage], self._work[4, :n_cage] = xc[:n_cage], vc[:n_cage]
+            if self.rigid:  # the rigid cage's rows (model.layout): integrated with the balls, as the cage balls
+                self._work[3, :2], self._work[4, :2] = xc[:2], vc[:2]
             self._rings0 = ring_poses()
             self._rings_sub = ring_poses()
             self._clock = [math.nan, 0.0, self.sampleInterval, False, 0]
@@ -107,12 +116,12 @@ class ItemsMixin:
         self._max_overlap = float(self.params[L.P_MAX_OVERLAP])
         self._status = 0.0
         # node -> number of its coordinates, in the object layout (balls, cage balls, ring nodes)
-        self._layout_nodes = [(nd, 6) for nd in nodes + cage_nodes] + [(nd, int(np.size(
+        self._layout_nodes = [(nd, 6) for nd in nodes + cage_nodes + rigid_node] + [(nd, int(np.size(
             mbs.GetNode(nd)["referenceCoordinates"]))) for nd in ring_nodes]
         vis = VObjectGenericODE2(show=bool(show), graphicsDataUserFunction=self._graphics if show else 0)
         # what of the contact kernel the compiled calls compile (model.contact.forces), as in the reference engine
         self._paths = (*scene_paths(self.params), scene_loss_path(self.params))
-        nb = 6 * (z + n_cage)
+        nb = 6 * (z + n_cage + len(rigid_node))
         self._out_uf_index = np.r_[0:6, nb:n] if not fast else np.zeros(0, np.int64)
         self._out_uf = np.zeros(self._out_uf_index.size)
         self._sys_index = np.arange(n, dtype=np.int64)  # the coordinates' system index: set at each run's start
@@ -128,7 +137,7 @@ class ItemsMixin:
             self._ball_object = None
             return nodes, cage_nodes, ring_nodes, obj
         # body mode: Exudyn converts the coordinates of a user function's object to Python lists and its
-        # returned forces back, per coordinate (about 0.1 us each, validation/profile_element.py); the user
+        # returned forces back, per coordinate (about 0.1 us each, validation/performance/profile_element.py); the user
         # function's object holds only the first ball and the ring nodes, and the user function reads all
         # coordinates from the system at once and hands the other balls' forces to the force vector of a
         # second object, evaluated after it (the objects' forces are evaluated in the order of their numbers)
@@ -138,6 +147,36 @@ class ItemsMixin:
                                               massMatrix=np.diag(np.array(mass)[self._out_uf_index]),
                                               forceUserFunction=self._force_uf, visualization=vis))
         self._ball_object = mbs.AddObject(ObjectGenericODE2(
-            nodeNumbers=nodes[1:] + cage_nodes, massMatrix=np.diag(mass[6:nb]), forceVector=np.zeros(nb - 6),
+            nodeNumbers=nodes[1:] + cage_nodes + rigid_node, massMatrix=np.diag(mass[6:nb]),
+            forceVector=np.zeros(nb - 6),
             visualization=VObjectGenericODE2(show=False)))
         return nodes, cage_nodes, ring_nodes, obj
+
+    def _add_rigid_cage(self, mbs, xc, vc, mass):
+        """Body mode with the rigid cage: the cage as an Exudyn rigid body (``cageNode``, ``cageBody``,
+        ``cageMarker``; docs/theory/dynamics.md#the-exudyn-element). A NodeRigidBodyRxyz (the element's
+        explicit solvers refuse Euler parameters; Tait-Bryan angles have no singularity at the held tilts)
+        with an ObjectRigidBody of the cage's mass m_c and inertia (I_c about the axis, the thin ring's
+        I_c / 2 + m_c w^2 / 12 about the diameters, which the held tilts never use), its tilts held by two
+        CoordinateConstraints to a ground node (Exudyn's explicit solvers eliminate such constraints): the four
+        degrees of freedom of the reference engine's cage. The node also joins the element's ball object with
+        zero mass there, so that its coordinates and the cage's force and moment from the contact kernel take
+        the path of the balls'. Appends its six zero masses to ``mass``; returns [node]."""
+        from exudyn.itemInterface import (CoordinateConstraint, MarkerBodyRigid, MarkerNodeCoordinate,
+                                          NodePointGround, NodeRigidBodyRxyz, ObjectRigidBody)
+
+        p = self.params
+        mc, ic = float(p[L.P_MC]), float(p[L.P_IC])
+        it = 0.5 * ic + mc * self._cage_geometry.width ** 2 / 12.0
+        node = mbs.AddNode(NodeRigidBodyRxyz(referenceCoordinates=[*xc[0], 0.0, 0.0, float(xc[1, 0])],
+                                             initialCoordinates=[0.0] * 6,
+                                             initialVelocities=[*vc[0], 0.0, 0.0, float(vc[1, 0])]))
+        self.cageNode = node
+        self.cageBody = mbs.AddObject(ObjectRigidBody(mass=mc, inertia=[it, it, ic, 0.0, 0.0, 0.0], nodeNumber=node))
+        self.cageMarker = mbs.AddMarker(MarkerBodyRigid(bodyNumber=self.cageBody, localPosition=[0.0, 0.0, 0.0]))
+        ground = mbs.AddNode(NodePointGround())
+        m_ground = mbs.AddMarker(MarkerNodeCoordinate(nodeNumber=ground, coordinate=0))
+        self._cage_constraints = [mbs.AddObject(CoordinateConstraint(markerNumbers=[
+            m_ground, mbs.AddMarker(MarkerNodeCoordinate(nodeNumber=node, coordinate=c))])) for c in (3, 4)]
+        mass += [0.0] * 6
+        return [node]

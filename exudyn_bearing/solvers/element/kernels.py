@@ -8,7 +8,11 @@ forces of all these coordinates.
 Coordinate layout of the object: ball j owns coordinates 6j..6j+5 (position
 and an integrated global rotation vector whose rate is the angular velocity:
 exact Newton-Euler for a homogeneous sphere, whose orientation never enters
-the forces), cage ball k owns 6(Z+k)..6(Z+k)+5.
+the forces), cage ball k owns 6(Z+k)..6(Z+k)+5. With the rigid cage (body
+mode) its NodeRigidBodyRxyz owns 6Z..6Z+5 (centre, Tait-Bryan angles; the
+tilts held at zero by constraints), mapped to and from the contact kernel's
+cage rows (:mod:`exudyn_bearing.model.layout`: ``xc[0]`` the centre,
+``xc[1, 0]`` the angle about the axis, ``vc`` their rates).
 """
 from __future__ import annotations
 
@@ -20,7 +24,8 @@ from numba.experimental import structref
 
 from ..._jit import kernel
 from ...model.contact import accumulate_energy, forces
-from ...model.layout import NDIAG, NGLOBAL, NSIGNAL, P_CAGE, P_IB, P_MB, P_MZ, P_NDEF, R_ANGLE, RING_N
+from ...model.layout import (NDIAG, NGLOBAL, NSIGNAL, P_CAGE, P_IB, P_IC, P_MB, P_MC, P_MZ, P_NDEF, P_RIGID, R_ANGLE,
+                             RING_N)
 from ...model.motion import kick_drift
 
 #: Ring couplings: fixed in space (ground), node with position coordinates
@@ -146,7 +151,7 @@ class ElementState(structref.StructRefProxy):
     work on (:data:`STATE_FIELDS`), held in one numba structure that the
     element's Python arrays share their memory with: a compiled call takes it
     as one argument, where the 20-odd separate arrays cost numba's entry point
-    about 0.06 us each to unbox (validation/profile_element.py). Built by
+    about 0.06 us each to unbox (validation/performance/profile_element.py). Built by
     :func:`element_state` (compiled and cached: constructing it from Python
     would compile numba's constructor in every process)."""
 
@@ -213,6 +218,16 @@ def element_rhs(q, q_t, ref, p, table, z, n_cage, ring_kind, ring_data, hist, hi
         for d in range(3):
             xc[k, d] = ref[b + d] + q[b + d]
             vc[k, d] = q_t[b + d]
+    rigid = p[P_RIGID] > 0.5
+    g = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
+    if rigid:  # the rigid cage's node after the balls: centre, angle about the world z axis and their rates
+        b = 6 * (z + n_cage)
+        g = _g_xyz(ref[b + 3] + q[b + 3], ref[b + 4] + q[b + 4])
+        for d in range(3):
+            xc[0, d] = ref[b + d] + q[b + d]
+            vc[0, d] = q_t[b + d]
+        xc[1, 0] = ref[b + 5] + q[b + 5]
+        vc[1, 0] = g[6] * q_t[b + 3] + g[7] * q_t[b + 4] + g[8] * q_t[b + 5]  # omega_z
     ring_poses_from(q, q_t, ref, ring_kind, ring_data, rings)
     worst = forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb, tb, fc, fr, glob,
                    diag, cage_load, want, defect_path, ellipse_path, loss_path)
@@ -224,6 +239,12 @@ def element_rhs(q, q_t, ref, p, table, z, n_cage, ring_kind, ring_data, hist, hi
     for k in range(n_cage):
         for d in range(3):
             out[6 * (z + k) + d] = fc[k, d]
+    if rigid:  # force on the centre, G^T times the moment about the axis (fc[1, 0] un-scaled by I_c / m_c)
+        b = 6 * (z + n_cage)
+        tz = fc[1, 0] * p[P_IC] / p[P_MC]
+        for d in range(3):
+            out[b + d] = fc[0, d]
+            out[b + 3 + d] = g[6 + d] * tz
     ring_generalized_forces(q, ref, ring_kind, ring_data, rings, fr, out)
     return worst
 
@@ -343,7 +364,7 @@ def ring_poses_from(q, q_t, ref, ring_kind, ring_data, rings):
 @kernel(no_runtime=True)
 def advance_balls(n_sub, tau, t, t_end, p, table, work, rings0, rings1, rings, hist, hz, fr, fsum, glob, diag,
                   cage_load, want, defect_path=True, ellipse_path=True, loss_path=True):
-    """Fast mode: integrate balls and cage balls in ``n_sub`` velocity-Verlet
+    """Fast mode: integrate balls and cage balls (or the rigid cage) in ``n_sub`` velocity-Verlet
     sub-steps from their last force evaluation at ``tau`` to ``t_end``.
 
     The ring poses the balls see: ``rings0`` at ``tau`` (what the balls saw
@@ -373,7 +394,8 @@ def advance_balls(n_sub, tau, t, t_end, p, table, work, rings0, rings1, rings, h
     fc = work[7]
     inv_mb = 1.0 / p[P_MB]
     inv_ib = 1.0 / p[P_IB]
-    inv_mz = 1.0 / p[P_MZ] if p[P_CAGE] > 0.5 else 0.0
+    # cage balls, or the rigid cage in their first two rows (its moment comes scaled by m_c / I_c: model.layout)
+    inv_mz = 1.0 / p[P_MZ] if (p[P_CAGE] > 0.5 or p[P_RIGID] > 0.5) else 0.0
     dt = (t_end - tau) / n_sub
     h = 0.5 * dt
     worst = 0.0

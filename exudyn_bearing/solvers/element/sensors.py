@@ -6,8 +6,9 @@ import warnings
 
 import numpy as np
 
+from ...model import layout as L
 from ...model.record import RunRecord
-from ...model.stability import StepSizeWarning, cage_load_check
+from ...model.stability import StepSizeWarning, cage_load_check, land_step_check
 from . import kernels as EK
 
 __all__ = ["SensorsMixin"]
@@ -21,9 +22,15 @@ class SensorsMixin:
         from exudyn.itemInterface import SensorUserFunction
 
         self.sensors = {}
+        if self.rigid:  # the rigid cage's spin about the world z axis (its rows in _work: model.layout)
+            def cage_speed():
+                return [float(self._work[4, 1, 0])]
+        else:
+            def cage_speed():
+                return [float(np.mean(self._orbital(self._work[3, :n_cage], self._work[4, :n_cage])))
+                        if n_cage else float(np.mean(self._orbital(self._work[0], self._work[1])))]
         sensor_defs = {
-            "cageSpeed": lambda: [float(np.mean(self._orbital(self._work[3, :n_cage], self._work[4, :n_cage])))
-                                  if n_cage else float(np.mean(self._orbital(self._work[0], self._work[1])))],
+            "cageSpeed": cage_speed,
             "qMaxInner": lambda: [float(self._diag[:, 0, 0].max())],
             "qMaxOuter": lambda: [float(self._diag[:, 1, 0].max())],
             "lambdaOuterPsi0": lambda: [float(self._diag[self._psi0(), 1, 8])],
@@ -35,13 +42,22 @@ class SensorsMixin:
                 sensorNumbers=[], factors=[], storeInternal=True, writeToFile=False,
                 sensorUserFunction=(lambda f: (lambda mbs_, t, sn, fac, conf: self._check_run(t) or f()))(fn)))
 
+    @property
+    def _row_offsets(self):
+        """Start of each part of a sample row (:func:`~.kernels.sample_layout`) in it."""
+        out, k = {}, 0
+        for name, shape in EK.sample_layout(self.z):
+            out[name] = k
+            k += int(np.prod(shape))
+        return out
+
     def _sample(self, t, rings):
         self._store(t, rings)
         self._next_sample += self.sampleInterval * max(1.0, math.floor((t - self._next_sample)
                                                                        / self.sampleInterval) + 1.0)
 
     def _graphics(self, mbs, itemNumber):
-        """Graphics for Exudyn's renderer: balls, cage balls and the two groove
+        """Graphics for Exudyn's renderer: balls, cage balls (or the rigid cage's section) and the two groove
         tori at the last evaluated state (world frame)."""
         import exudyn.graphics as gr
 
@@ -51,6 +67,11 @@ class SensorsMixin:
         if self.n_cage:
             data.append(gr.Spheres(points=list(w[3, :self.n_cage]), radii=b.cage_ball_radius,
                                    colors=[0.8, 0.6, 0.2, 1.0], nTiles=12))
+        if self.rigid:  # the rigid cage's section, a hollow cylinder about the world z axis (pockets not drawn)
+            rc = self._cage_geometry
+            data.append(gr.Cylinder(pAxis=list(w[3, 0] - [0.0, 0.0, 0.5 * rc.width]), vAxis=[0.0, 0.0, rc.width],
+                                    radius=rc.outer_radius, radiusInner=rc.inner_radius,
+                                    color=[0.8, 0.6, 0.2, 0.5], nTiles=48))
         for r, ((rho, zg), rc) in enumerate(((b.inner_groove_center, b.inner_groove_radius),
                                              (b.outer_groove_center, b.outer_groove_radius))):
             a = self._rings[r, 6:15].reshape(3, 3)
@@ -62,6 +83,14 @@ class SensorsMixin:
     def _store(self, t, rings):
         """Sample at t; ``rings``: the ring poses the balls saw there."""
         EK.sample_row(rings, self._work, self._glob, self._diag, self._cage_load, self._row)
+        if self.rigid:
+            # the rigid cage's angle and spin rows are no position and velocity: relative to the outer ring, as the
+            # reference engine's (its outer ring is the frame), the angle less the ring's about the z axis
+            k = self._row_offsets["xc"] + 3
+            self._row[k:k + 3] = (self._work[3, 1, 0] - math.atan2(rings[1, 9], rings[1, 6]) - rings[1, L.R_ANGLE],
+                                  0.0, 0.0)
+            k = self._row_offsets["vc"] + 3
+            self._row[k:k + 3] = (self._work[4, 1, 0] - rings[1, 17], 0.0, 0.0)
         self._sample_t.append(t)
         self._sample_rows.append(self._row.copy())
 
@@ -100,5 +129,10 @@ class SensorsMixin:
                               float(data["cage_load"].max(initial=0.0)), self.scenario.dt)
         if msg:
             warnings.warn(msg, StepSizeWarning, stacklevel=3)
+        if self.rigid:  # the land's film where the run took the cage (the reference engine's check)
+            msg = land_step_check(self.bearing, self.scenario, self.lubricant,
+                                  float(data["glob"][:, L.G_LAND_ECC].max()), self.scenario.dt)
+            if msg:
+                warnings.warn(msg, StepSizeWarning, stacklevel=3)
         return RunRecord(self.bearing, self.scenario, self.lubricant, data, steps=steps,
                          wall_s=self._wall if wall_s is None else wall_s, engine="exudyn", stable_dt=self.stable.dt)

@@ -288,7 +288,7 @@ class UserFunctionsMixin:
         call, which takes the element's arrays as one structure
         (:class:`~.kernels.ElementState`); bound locals instead of attribute
         look-ups and the entry point instead of numba's type dispatch
-        (validation/profile_element.py times the parts)."""
+        (validation/performance/profile_element.py times the parts)."""
         st, n_cage, paths = self._state, self.n_cage, self._paths
         rdata, rings, times, out_balls, out_uf = self._ring_data, self._rings, self._times, self._out_balls, self._out_uf
         speeds, spin = self._speeds, EK.RD_SPIN
@@ -334,7 +334,7 @@ class UserFunctionsMixin:
         Python cost is a large share of the step: bound locals instead of
         attribute look-ups and the compiled entry point instead of numba's
         type dispatch take about a tenth off the step
-        (validation/bench_element.py times the result)."""
+        (validation/performance/bench_element.py times the result)."""
         st, paths, rdata, rings, rings_sub, out = (self._state, self._paths, self._ring_data, self._rings,
                                                    self._rings_sub, self._out)
         ref, params, table, kind, work, rings0, hist, hz = (self.ref, self.params, self.table, self._ring_kind,
@@ -453,7 +453,7 @@ class UserFunctionsMixin:
                           "their inertia against their bearings' contact stiffness at initialLoad); beyond it the "
                           "staggered coupling of ring and balls can put the ball loads more than 0.5 % off (measured "
                           "from 0.3 of the estimate on) and, from about half of it on, grows a ring vibration that "
-                          "multiplies them or blows the run up (validation/fast_mode_limits.py): use at most "
+                          "multiplies them or blows the run up (validation/studies/fast_mode_limits.py): use at most "
                           f"{fits} sub-step{'s' if fits > 1 else ''} of {dt:.3g} s", StepSizeWarning,
                           stacklevel=stacklevel)
         elif h > limit:

@@ -48,7 +48,7 @@ constant on the contact angle (the central-difference matrix of
 the largest entry at zero contact angle and 2e-5 to 5e-4 with contact
 angles, tests/test_stiffness.py), the balls' inertia, friction (its
 tangential forces are not a viscous term of this model; the DEM check in
-validation/stiffness_checks.py measures what it adds) and the higher powers
+validation/consistency/stiffness_checks.py measures what it adds) and the higher powers
 of s, which change K and C by O((omega C_n/k_n)^2): C_n/k_n is about 1e-6 s
 for the 6208's contacts, 4e-3 at 10 kHz.
 

@@ -236,7 +236,7 @@ def minimum_energy(geo, model, n_strips, n_across, start):
     return res.x * scale, check
 
 
-def traction_equilibrium(geo, model, n_strips, n_across, start, inertia):
+def traction_equilibrium(geo, model, n_strips, n_across, start, inertia, omega_m=None, pocket_friction=0.0):
     """Kinematics at which the traction of both contacts holds the ball in a
     steady orbit, without a kinematic hypothesis: (omega_m, w_r, w_z, v_t)
     with v_t = R_b w_psi the transverse slip of the ball's yaw (pivoting), from
@@ -258,7 +258,15 @@ def traction_equilibrium(geo, model, n_strips, n_across, start, inertia):
     settles there. The three outer equations are solved with scipy's hybrid
     Powell method from ``start`` (omega_m, w_r, w_z[, v_t]), v_t inside by
     Brent's method. Returns (kinematics (4,), check dict with the scaled
-    residual, convergence and whether the gyroscopic moment could be held)."""
+    residual, convergence and whether the gyroscopic moment could be held).
+
+    In a cage (``omega_m`` given: the cage's orbital speed, docs/theory/quasistatic.md#the-rigid-cage)
+    the orbital speed is not an unknown: the pocket force Q_p = -(F_x,o + F_x,i) along the orbit
+    (positive pushing the ball forward) takes the place of the no-net-traction equation, and the pocket's
+    Coulomb friction mu_c |Q_p| (``pocket_friction``) at the contact point R_b e_psi from the centre,
+    against the ball's surface speed R_b |w| there (the ball's centre moves with its pocket), adds the
+    moment -mu_c |Q_p| R_b w / |w| to the in-plane moments; (w_r, w_z) are solved. The check dict then
+    also has ``pocket_force`` [N]."""
     start = np.asarray(start, float)
     scale = max(abs(start[0]), math.hypot(start[1], start[2]), 1e-12)
     rb = geo[G_RB]
@@ -289,8 +297,16 @@ def traction_equilibrium(geo, model, n_strips, n_across, start, inertia):
         held[0] = False                          # gross pivoting: the moment is not held up to s = 1
         return direction * u
 
+    caged = omega_m is not None
+    unknowns = slice(1, 3) if caged else slice(0, 3)
+
+    def speeds(x):
+        if caged:
+            return omega_m, x[0] * scale, x[1] * scale
+        return x[0] * scale, x[1] * scale, x[2] * scale
+
     def resid(x):
-        wm, wr, wz = x[0] * scale, x[1] * scale, x[2] * scale
+        wm, wr, wz = speeds(x)
         v_t = pivot(wm, wr, wz)
         _ball_contacts(wm, wr, wz, v_t, geo, code, vec, n_strips, n_across, out)
         f_x = out[0, 6] + out[1, 6]
@@ -300,6 +316,12 @@ def traction_equilibrium(geo, model, n_strips, n_across, start, inertia):
             m_r += -out[k, 6] * rb * nz - out[k, 8] * nr + out[k, 11] * nz
             m_z += out[k, 6] * rb * nr - out[k, 8] * nz - out[k, 11] * nr
         m_r += j_eff[0] * wm * v_t / rb          # = -(-J omega_m w_psi), w_psi = v_t / R_b
+        if caged:  # the pocket force -f_x balances the tractions; its friction brakes the ball's spin
+            w = math.hypot(wr, wz)
+            if w > 0.0:
+                m_r -= pocket_friction * abs(f_x) * rb * wr / w
+                m_z -= pocket_friction * abs(f_x) * rb * wz / w
+            return np.array([m_r / rb, m_z / rb]) / qref
         return np.array([f_x, m_r / rb, m_z / rb]) / qref
 
     # continuation in the ball's inertia (0 -> J): without the gyroscopic
@@ -321,12 +343,13 @@ def traction_equilibrium(geo, model, n_strips, n_across, start, inertia):
         return sol.x, ok, err, int(sol.nfev)
 
     # a start that is already near the equilibrium (the previous iteration's) is solved directly
-    x, ok, err, evaluations = solve_at(1.0, start[:3] / scale)
-    near = float(np.max(np.abs(x - start[:3] / scale)) / max(np.max(np.abs(start[:3] / scale)), 1e-300))
+    x0 = start[unknowns] / scale
+    x, ok, err, evaluations = solve_at(1.0, x0)
+    near = float(np.max(np.abs(x - x0)) / max(np.max(np.abs(x0)), 1e-300))
     if ok and near < 1e-3:
         frac, ok0 = 1.0, True
     else:
-        x, ok, err, nfev = solve_at(0.0, start[:3] / scale)
+        x, ok, err, nfev = solve_at(0.0, x0)
         frac, step = 0.0, 0.25
         evaluations += nfev
         ok0 = ok
@@ -342,25 +365,30 @@ def traction_equilibrium(geo, model, n_strips, n_across, start, inertia):
     j_eff[0] = frac * inertia
     held[0] = True
     res = resid(x)
-    wm, wr, wz = x * scale
+    wm, wr, wz = speeds(x)
     v_t = pivot(wm, wr, wz)
     converged = bool(ok0 and frac == 1.0 and np.max(np.abs(res)) < 1e-8)
     j_eff[0] = inertia
     check = {"converged": converged, "residual": float(np.max(np.abs(resid(x)))), "evaluations": evaluations,
              "gyroscopic_moment_held": bool(held[0] and converged), "held_fraction": float(frac if ok0 else 0.0)}
+    if caged:
+        _ball_contacts(wm, wr, wz, v_t, geo, code, vec, n_strips, n_across, out)
+        check["pocket_force"] = float(-(out[0, 6] + out[1, 6]))
     return np.array([wm, wr, wz, v_t]), check
 
 
-def cage_kinematics(geo, omega_m):
+def cage_kinematics(geo, omega_m, race="outer"):
     """Kinematics (omega_m, w_r, w_z, 0) of a ball that the cage carries at the orbital speed
     ``omega_m``: the ball rolls at the centre of its outer contact (v0_o = 0) without spin there
     (omega_s,o = 0), as it rolls on the race that centrifugal force presses it against. The choice
     of the quasi-static solver for a ball without a traction equilibrium of its own (a contact
-    without load: nothing drives it; or a gyroscopic moment its loads cannot hold)."""
-    nr, nz = geo[G_NOR], geo[G_NOZ]
+    without load: nothing drives it; or a gyroscopic moment its loads cannot hold). ``race="inner"``:
+    the same at the inner contact (race control by the inner race at the cage's speed)."""
+    wring, nr, nz = ((geo[G_WO], geo[G_NOR], geo[G_NOZ]) if race == "outer" else
+                     (geo[G_WI], geo[G_NIR], geo[G_NIZ]))
     x0r = geo[G_CR] + geo[G_RB] * nr
     a = np.array([[-geo[G_RB] * nz, geo[G_RB] * nr], [nr, nz]])
-    rhs = np.array([(geo[G_WO] - omega_m) * x0r, (geo[G_WO] - omega_m) * nz])
+    rhs = np.array([(wring - omega_m) * x0r, (wring - omega_m) * nz])
     w_r, w_z = np.linalg.solve(a, rhs)
     return np.array([omega_m, w_r, w_z, 0.0])
 

@@ -28,9 +28,14 @@ speeds and orbital speeds of a :class:`~.solution.QuasiStaticSolution`:
   (:func:`~exudyn_bearing.physics.losses.petroff_torque`); 0 for a
   ball-guided cage (the default for a bearing with a cage).
 
-The quasi-static solver itself is cageless: the cage components are
-computed from its ball speeds and loads, they do not act back on the
-equilibrium. Seals are not modelled; ``not_modelled`` lists what is left
+A solution without a cage (``cage=None``): the cage components are computed
+from its ball speeds and loads (the ``cage_*`` options), they do not act back
+on the equilibrium. A solution with the rigid cage (``cage="rigid"``) carries
+its own: ``cage_pocket`` the pocket forces' Coulomb friction mu_c |Q_p| R_b
+|w| and ``cage_land`` the land film's shear torque times the cage's speed
+relative to its guiding ring, both from the cage's balance in the solver and
+its RigidCage (docs/theory/quasistatic.md#the-rigid-cage); the ``cage_*``
+options are then refused (one geometry source). Seals are not modelled; ``not_modelled`` lists what is left
 out in every result.
 ``friction_torque_total`` = power_loss_total / |omega - omega_outer|, the
 torque the driven ring needs when the other ring stands still (the inner
@@ -65,6 +70,9 @@ LOSS_COMPONENTS = ("traction", "ehl_rolling", "hysteresis", "drag", "churning", 
 NOT_MODELLED = {"seals": "not modelled", "cage": "modelled as cage_pocket and cage_land from the cageless "
                 "solution's ball speeds and loads (no pocket loads from orbital speed variation or gyroscopic "
                 "moments, no cage windage)"}
+#: The cage's note for a solution with the rigid cage (``sol.cage``).
+NOT_MODELLED_RIGID_CAGE = ("rigid cage in the solver's balance: cage_pocket and cage_land from its pocket forces and "
+                           "land film (no cage windage, weight or unbalance; the pocket's oil film not modelled)")
 #: What ``not_modelled`` lists in every result.
 NOT_MODELLED_LIST = ("seal friction (open bearing)",
                      "cage windage (drag of the cage in the oil-air mixture)",
@@ -88,7 +96,6 @@ LOSS_UNITS = {
     "power_loss": "W per component (traction, ehl_rolling, hysteresis, drag, churning, cage_pocket, cage_land); "
                   "text for seals and the cage's note",
     "not_modelled": "list of the loss sources left out (text)",
-    "cage_pocket_load": "N (normal load of each ball on its pocket)",
     "power_loss_total": "W (sum of the modelled components)",
     "friction_torque_total": "N m (power_loss_total / |omega - omega_outer|: the torque on the driven ring, "
                              "the other ring at rest; 0 without relative speed, where every loss is 0)",
@@ -97,7 +104,9 @@ LOSS_UNITS = {
     "drag_ball": "W (drag power of each ball, without churning)",
     "churning_ball": "W (churning power of each ball in the oil bath)",
     "cage_guidance": "text (ball, outer_land, inner_land or none)",
-    "cage_land_torque": "N m (Petroff's torque of the cage on its land, 0 without land guidance)",
+    "cage_land_torque": "N m (Petroff's torque of the cage on its land, 0 without land guidance; with the rigid "
+                        "cage the land film's shear torque on the cage)",
+    "cage_pocket_load": "N (normal load of each ball on its pocket; with the rigid cage |pocket_force|)",
 }
 
 #: Density of the oil for the drag when the lubricant carries none [kg/m^3]
@@ -182,7 +191,7 @@ def cage_land_geometry(bearing, guidance, radius=None, width=None, clearance=Non
 def power_losses(sol, bearing=None, lubricant=None, *, hysteresis_loss_factor=_ls.HYSTERESIS_LOSS_FACTOR_STEEL,
                  oil_volume_fraction=0.0, oil_density=DEFAULT_OIL_DENSITY, air_density=_ls.AIR_DENSITY,
                  air_viscosity=_ls.AIR_VISCOSITY, oil_level=0.0, cage_guidance=None,
-                 cage_pocket_friction=_ls.CAGE_POCKET_FRICTION, cage_land_radius=None, cage_land_width=None,
+                 cage_pocket_friction=None, cage_land_radius=None, cage_land_width=None,
                  cage_land_clearance=None) -> dict:
     """Power loss by component [W] and the friction torque of a quasi-static solution.
 
@@ -210,11 +219,15 @@ def power_losses(sol, bearing=None, lubricant=None, *, hysteresis_loss_factor=_l
         One of :data:`CAGE_GUIDANCES`; default "ball" for a bearing with a cage (the pressed-steel
         and polyamide cages of standard 62 and 72 B bearings are ball-guided), "none" for a cageless
         one. "outer_land" / "inner_land" add the land's Petroff torque.
-    cage_pocket_friction : float
+    cage_pocket_friction : float, optional
         mu_c of the ball in its pocket [-] (default 0.1, assumed).
     cage_land_radius, cage_land_width, cage_land_clearance : float, optional
         The land's radius, width (both rails) and radial clearance [m]; defaults
         :func:`cage_land_geometry`.
+
+    A solution with the rigid cage (``sol.cage``) takes its cage losses, pocket loads, land torque and
+    guidance from the solver and its RigidCage; the ``cage_*`` options conflict with it (InputError naming
+    the option).
 
     Returns
     -------
@@ -237,6 +250,19 @@ def power_losses(sol, bearing=None, lubricant=None, *, hysteresis_loss_factor=_l
     if not check_finite("oil_level", oil_level) >= 0.0:
         raise InputError(f"oil_level: must be >= 0 and finite (m above the lowest point of the outer raceway), "
                          f"got {oil_level!r}")
+    rigid = getattr(sol, "cage", None)
+    if rigid is not None:
+        given = {"cage_pocket_friction": cage_pocket_friction, "cage_land_radius": cage_land_radius,
+                 "cage_land_width": cage_land_width, "cage_land_clearance": cage_land_clearance}
+        for name, v in given.items():
+            if v is not None:
+                raise InputError(f"{name}: the solution has the rigid cage, whose RigidCage gives its pocket "
+                                 "friction and land geometry (solve_quasistatic's rigid_cage); leave it out")
+        if cage_guidance is not None and cage_guidance != rigid["guidance"]:
+            raise InputError(f"cage_guidance: {cage_guidance!r} conflicts with the solution's rigid cage, guided "
+                             f"{rigid['guidance']!r} (its RigidCage); leave it out")
+    if cage_pocket_friction is None:
+        cage_pocket_friction = _ls.CAGE_POCKET_FRICTION
     cage_pocket_friction = check_plausible("cage_pocket_friction", cage_pocket_friction, 0.0,
                                            MAX_CAGE_POCKET_FRICTION, "", "a friction coefficient is a ratio "
                                            "(lubricated sliding in a pocket about 0.05-0.15)", ((1e-2, "%"),))
@@ -275,18 +301,31 @@ def power_losses(sol, bearing=None, lubricant=None, *, hysteresis_loss_factor=_l
                                                _ls.mixture_viscosity(phi_b, lub.viscosity, eta)))
     churning = np.maximum(f_bath - f_drag, 0.0) * np.abs(v)
     # cage: guidance, land torque (Petroff), pocket loads and sliding
-    guidance = cage_guidance or ("ball" if b.has_cage else "none")
+    if rigid is not None:
+        guidance = rigid["guidance"]
+    else:
+        guidance = cage_guidance or ("ball" if b.has_cage else "none")
     omega_c = float(np.mean(np.asarray(bl["orbital_speed"], float)))
     land = None
     t_land = 0.0
-    if guidance in ("outer_land", "inner_land"):
+    if rigid is not None:  # the solver's cage balance (one geometry source: its RigidCage)
+        rc = rigid["rigid_cage"]
+        t_land, p_land = float(rigid["land_torque"]), float(rigid["power_land"])
+        if guidance != "ball":
+            land = {"radius": rc.guide_radius, "width": rc.land_width, "clearance": rc.land_clearance,
+                    "source": "the solution's RigidCage" + (" (estimated)" if rc.estimated else "")}
+    elif guidance in ("outer_land", "inner_land"):
         land = cage_land_geometry(b, guidance, cage_land_radius, cage_land_width, cage_land_clearance)
         rel = omega_c - sol.omega_outer if guidance == "outer_land" else sol.omega - omega_c
         t_land = float(_ls.petroff_torque(lub.viscosity, land["radius"], land["width"], land["clearance"], rel))
         p_land = abs(t_land * rel)
     else:
         p_land = 0.0
-    if guidance == "none":
+    if rigid is not None:
+        q_c = np.abs(np.asarray(bl["pocket_force"], float))
+        pocket = np.atleast_1d(_ls.cage_pocket_friction_power(q_c, np.asarray(bl["ball_speed"], float), 2.0 * r_b,
+                                                              rigid["pocket_friction"]))
+    elif guidance == "none":
         q_c = np.zeros_like(drag)
         pocket = np.zeros_like(drag)
     else:
@@ -308,20 +347,29 @@ def power_losses(sol, bearing=None, lubricant=None, *, hysteresis_loss_factor=_l
     notes["churning"] = (f"oil bath of level {float(oil_level):g} m: orbit-mean immersed share {phi_b:.4g} of the "
                          "balls' frontal area, bath at rest (an upper value)" if oil_level > 0.0 else
                          "no oil bath (oil_level 0)")
-    notes["cage_pocket"] = ("no cage" if guidance == "none" else
+    notes["cage_pocket"] = (f"rigid cage: mu_c = {rigid['pocket_friction']:g} on the pocket forces of the cage's "
+                            "balance in the solver" if rigid is not None else "no cage" if guidance == "none" else
                             f"mu_c = {float(cage_pocket_friction):g}; pocket loads from the balls' drag and the "
                             "cage's land torque (loaded balls drive the cage, the cage drives the unloaded balls)")
-    notes["cage_land"] = (f"{guidance} guidance: Petroff's torque, land radius {land['radius']:.4g} m, width "
+    notes["cage_land"] = (f"rigid cage, {guidance} guidance: the land film's shear torque at eccentricity "
+                          f"{rigid['land_eccentricity']:.3g}, land radius {land['radius']:.4g} m, width "
+                          f"{land['width']:.4g} m, radial clearance {land['clearance']:.4g} m ({land['source']})"
+                          if rigid is not None and land else
+                          f"{guidance} guidance: Petroff's torque, land radius {land['radius']:.4g} m, width "
                           f"{land['width']:.4g} m, radial clearance {land['clearance']:.4g} m ({land['source']})"
                           if land else f"{guidance} guidance: no land friction")
-    out = {"power_loss": {**p, "cage": NOT_MODELLED["cage"], "seals": NOT_MODELLED["seals"]},
+    cage_note = NOT_MODELLED["cage"] if rigid is None else NOT_MODELLED_RIGID_CAGE
+    out = {"power_loss": {**p, "cage": cage_note, "seals": NOT_MODELLED["seals"]},
            "power_loss_total": total,
            # no relative speed: every component is 0 (nothing moves relative to the rings or the mixture)
            "friction_torque_total": total / dw if dw > 0.0 else 0.0,
            "power_loss_inner_ball": per["inner"][0] + per["inner"][1],
            "power_loss_outer_ball": per["outer"][0] + per["outer"][1],
            "drag_ball": drag, "churning_ball": churning, "cage_pocket_load": q_c, "cage_land_torque": t_land,
-           "cage_guidance": guidance, "not_modelled": list(NOT_MODELLED_LIST), "power_loss_notes": notes}
+           "cage_guidance": guidance, "power_loss_notes": notes,
+           "not_modelled": list(NOT_MODELLED_LIST) if rigid is None else
+           [x for x in NOT_MODELLED_LIST if not x.startswith("cage pocket loads")]
+           + ["the rigid cage's weight, unbalance and pocket oil film"]}
     return out
 
 

@@ -52,7 +52,26 @@ UNITS = {
     "traction_resolution": "dissipation [W] at n_strips x n_across and at twice both, relative change, "
                            "converged (within 1 %), needed (n_strips, n_across) (None: no relative speed)",
     "reactions": "N or N m", "residual": "N or N m", "loads": "N or N m", "omega": "rad/s", "omega_outer": "rad/s",
+    "cage": "text (rigid, or None: no cage, each ball its own orbital speed)",
+    "cage_speed": "rad/s (the rigid cage's and every ball's orbital speed)",
+    "pocket_force": "N (pocket force on each ball along its orbit, positive pushing it forward; rigid cage)",
+    "pocket_sliding_speed": "m/s (the ball's surface against its pocket at the contact point; rigid cage)",
+    "cage_power_pocket": "W (rigid cage: pocket friction, mu_c |Q_p| times the sliding speed)",
+    "cage_power_land": "W (rigid cage: land shear torque times the cage's speed relative to its ring)",
+    "cage_land_force": "N (net in-plane pocket force the land film carries)",
+    "cage_land_eccentricity": "- (land film eccentricity ratio carrying cage_land_force)",
+    "cage_torque_residual": "- (cage torque balance over the absolute torques on the cage and the tractions' "
+                            "torques along the orbit)",
+    "rigid_cage": "the RigidCage's fields (m; material by name)",
 }
+
+
+def _rigid_cage_dict(rc) -> dict:
+    """JSON-ready fields of a RigidCage (the material by name, ``estimated`` as a list)."""
+    return {"guidance": rc.guidance, "pocket_shape": rc.pocket_shape, "pocket_clearance": rc.pocket_clearance,
+            "inner_radius": rc.inner_radius, "outer_radius": rc.outer_radius, "width": rc.width,
+            "land_clearance": rc.land_clearance, "land_width": rc.land_width, "material": rc.material.name,
+            "pocket_friction": rc.pocket_friction, "estimated": list(rc.estimated), "source": rc.source}
 
 
 @dataclass
@@ -89,6 +108,7 @@ class QuasiStaticSolution:
     n_across: int = 0
     wall_s: float = 0.0
     resolution_check: dict | None = None  #: check of the traction integration (solve.check_traction_resolution)
+    cage: dict | None = None  #: the rigid cage's speed, losses, land (solve._cage_result); None: no cage
 
     # convenient totals -------------------------------------------------------------
     @property
@@ -115,22 +135,32 @@ class QuasiStaticSolution:
         return float(np.sum(self.balls["drive_torque_inner_ball"]))
 
     @property
+    def cage_power(self) -> float:
+        """Power lost in the rigid cage's pockets and land [W] (0 without the cage)."""
+        return 0.0 if self.cage is None else self.cage["power_pocket"] + self.cage["power_land"]
+
+    @property
     def drive_power(self) -> float:
-        """Power the turning rings put into the bearing [W]: friction_torque omega + outer torque omega_outer."""
-        return (self.friction_torque * self.omega
-                + float(np.sum(self.balls["drive_torque_outer_ball"])) * self.omega_outer)
+        """Power the turning rings put into the bearing [W]: friction_torque omega + outer torque omega_outer,
+        and with the rigid cage the land film's torque on its guiding ring times that ring's speed."""
+        p = (self.friction_torque * self.omega
+             + float(np.sum(self.balls["drive_torque_outer_ball"])) * self.omega_outer)
+        if self.cage is not None:
+            p -= self.cage["land_torque"] * self.cage["ring_speed"]
+        return p
 
     @property
     def energy_residual(self) -> float:
-        """(drive power - dissipation) / drive power [-]: zero to round-off when every ball is in its
-        steady traction equilibrium (control ``equilibrium``); a kinematic hypothesis (race control,
-        minimum energy) leaves a net traction on the ball and shows here. 0 without drive power and without
-        dissipation (no relative speed of the rings: nothing to balance); NaN only for a dissipation
-        without drive power."""
+        """(drive power - dissipation - cage_power) / drive power [-]: zero to round-off when every ball is in
+        its steady traction equilibrium (control ``equilibrium``, with or without the rigid cage); a kinematic
+        hypothesis (race control, minimum energy) leaves a net traction on the ball and shows here. 0 without
+        drive power and without dissipation (no relative speed of the rings: nothing to balance); NaN only for
+        a dissipation without drive power."""
         p = self.drive_power
+        lost = self.dissipation_total + self.cage_power
         if p == 0.0:
-            return 0.0 if self.dissipation_total == 0.0 else float("nan")
-        return (p - self.dissipation_total) / p
+            return 0.0 if lost == 0.0 else float("nan")
+        return (p - lost) / p
 
     @property
     def q_max_inner(self) -> float:
@@ -166,6 +196,14 @@ class QuasiStaticSolution:
         d["drive_power"] = self.drive_power
         d["energy_residual"] = self.energy_residual
         d["qv_total"] = float(np.sum(b["qv_inner_ball"]) + np.sum(b["qv_outer_ball"]))
+        d["cage"] = "rigid" if self.cage is not None else None
+        if self.cage is not None:
+            c = self.cage
+            d.update({"cage_speed": c["speed"],
+                      "cage_power_pocket": c["power_pocket"], "cage_power_land": c["power_land"],
+                      "cage_land_force": c["land_force"],
+                      "cage_land_eccentricity": c["land_eccentricity"], "cage_torque_residual": c["torque_residual"],
+                      "rigid_cage": _rigid_cage_dict(c["rigid_cage"])})
         d.update(loss_keys(self))  # power_loss by component, power_loss_total, friction_torque_total (.losses)
         # the key means what the text output prints: the whole modelled loss's torque, not the traction's drive
         # torque of a kinematic hypothesis (95-99 % of which is its residual on the 6208 and 7208 under auto)
@@ -221,6 +259,14 @@ class QuasiStaticSolution:
             f"{g['operating_clearance'] * 1e6:.2f} um, dissipation {self.dissipation_total:.4g} W "
             f"(inner {self.dissipation_inner:.4g}, outer {self.dissipation_outer:.4g})",
         ]
+        if self.cage is not None:
+            c = self.cage
+            lines.append(f"rigid cage ({c['guidance']}): speed {c['speed']:.6g} rad/s, pocket force max "
+                         f"{np.max(np.abs(self.balls['pocket_force'])):.4g} N, losses pocket {c['power_pocket']:.4g} W, "
+                         f"land {c['power_land']:.4g} W (land torque {c['land_torque']:.4g} N m, eccentricity "
+                         f"{c['land_eccentricity']:.3g})")
+            lines.append("pocket force per ball [N] (+: pushes the ball forward): "
+                         + " ".join(f"{q:.4g}" for q in self.balls["pocket_force"]))
         for name, why in self.held.items():
             lines.append(f"{name} held ({why}); reaction {self.reactions.get(name, 0.0):.6g}")
         return "\n".join(lines)

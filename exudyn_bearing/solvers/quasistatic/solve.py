@@ -20,7 +20,8 @@ energy):
 
 Choices where the sources leave room (also in docs/theory/quasistatic.md):
 balls are independent (each its own orbital speed: no cage, as the
-ACBB-120); unloaded balls (a contact without load) take outer-race-control
+ACBB-120), unless ``cage="rigid"`` (all balls at the cage's speed, pocket forces and the cage's torque
+balance: docs/theory/quasistatic.md#the-rigid-cage); unloaded balls (a contact without load) take outer-race-control
 kinematics (with ``control="equilibrium"``: the cage's orbital speed, the mean of the balls in
 equilibrium, rolling on the outer race, as every ball without a traction equilibrium of its own); films by Hamrock & Dowson at the race-control rolling speed.
 
@@ -39,18 +40,23 @@ import warnings
 from contextlib import contextmanager
 
 import numpy as np
+from scipy import optimize as _opt
 
 from ...data import (MAX_FREE_CONTACT_ANGLE, BallBearing, InputError, Lubricant, get_traction_model, load_bearing,
                      load_lubricant)
+from ...data.cages import RigidCage, estimated_cage
 from ...data.errors import check_bool, check_finite, check_nonnegative, check_temperatures
 from ...physics import ehl
 from ...physics import hertz as _hz
 from ...physics import kinematics as _kin
+from ...physics import losses as _ls
 from ...data.traction import DEFAULT_REGULARIZING_SRR, regularized
 from ...physics.contact_slip import (DEFAULT_N_ACROSS, DEFAULT_N_STRIPS, MAX_N_ACROSS, MAX_N_STRIPS, check_resolution,
                                      deformed_contact_radius)
 from ...physics.geometry import _raceway_radii_cos
 from ...physics.load_distribution import check_axial_load
+from ...physics.losses import LOSS_FLOOR_MU
+from ...physics.short_bearing import short_bearing_load_number, short_bearing_shear_torque
 from . import kinematics as km
 from .balls import B_CR, B_CZ, B_DI, B_DO, B_NIR, B_NIZ, B_NOR, B_NOZ, B_QI, B_QO
 from ...model.load_range import MAX_CONTACT_PRESSURE, check_load_estimate, check_pressures, pressure_excess
@@ -65,7 +71,7 @@ __all__ = ["solve_quasistatic", "beta_scan", "check_operating_fit", "check_tract
            "TractionResolutionWarning", "RESOLUTION_TOLERANCE", "MAX_OPERATING_INTERFERENCE"]
 
 #: Largest relative change of the total dissipation when the strips and the points across are doubled that
-#: counts as converged: the criterion of ``python validation/traction_convergence.py`` (1 %).
+#: counts as converged: the criterion of ``python validation/studies/traction_convergence.py`` (1 %).
 RESOLUTION_TOLERANCE = 0.01
 
 
@@ -182,7 +188,7 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
                       phase=0.0, n_strips=DEFAULT_N_STRIPS, n_across=DEFAULT_N_ACROSS,
                       traction_regularizing_srr=DEFAULT_REGULARIZING_SRR, rolling_speed_floor=None,
                       shoulder_angle=MAX_FREE_CONTACT_ANGLE, stiffness=True, start=None,
-                      resolution_check=True) -> QuasiStaticSolution:
+                      resolution_check=True, cage=None, rigid_cage=None) -> QuasiStaticSolution:
     """Quasi-static equilibrium of a ball bearing with free inner-ring DOFs, speed effects and kinematics.
 
     Parameters
@@ -196,9 +202,10 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
         Moments on the inner ring about x and y [N m].
     omega, omega_outer : float
         Inner- and outer-ring speeds [rad/s] (outer ring fixed by default).
-    control : {"auto", "outer", "inner", "min-energy"}
+    control : {"auto", "outer", "inner", "min-energy", "equilibrium"}
         Ball kinematics: race control (Jones; ``auto`` by his spin-moment
-        criterion) or minimum frictional dissipation (Gupta).
+        criterion), minimum frictional dissipation (Gupta) or the traction
+        equilibrium of every ball (no kinematic hypothesis).
     traction : str or TractionModel, optional
         Traction model for slip, dissipation and the minimum energy
         (default: the bearing's, :func:`exudyn_bearing.data.default_traction`).
@@ -239,7 +246,7 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
         speed itself. A floor above the rolling speeds lowers the traction
         and the dissipation: the 6208 at 1 rad/s rolls at 0.015 m/s, and
         0.1 m/s cut its dissipation five-fold
-        (``python validation/anomaly_checks.py``).
+        (``python validation/consistency/anomaly_checks.py``).
     shoulder_angle : float
         Largest angle from the groove bottom that a contact ellipse may reach [rad].
     stiffness : bool
@@ -254,6 +261,17 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
         Check the traction integration at the solution (:func:`check_traction_resolution`: a
         :class:`TractionResolutionWarning` when doubling ``n_strips`` and ``n_across`` changes the
         dissipation by more than 1 %); its result is the solution's ``resolution_check``.
+    cage : {None, "rigid"}
+        None: no cage, each ball its own orbital speed. ``"rigid"``: a rigid cage
+        (docs/theory/quasistatic.md#the-rigid-cage): every ball at the cage's
+        orbital speed, a pocket force per ball balancing its tractions along the
+        orbit, the cage speed from the cage's torque balance (pocket forces, pocket
+        friction, land shear). With race control and ``"equilibrium"``; refused
+        with ``"min-energy"``.
+    rigid_cage : RigidCage, optional
+        Geometry, material and pocket friction of the rigid cage (default:
+        :func:`~exudyn_bearing.data.cages.estimated_cage` of the bearing, as the
+        dynamic engines).
 
     Returns
     -------
@@ -274,6 +292,7 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
     w_o = check_finite("omega_outer", omega_outer)
     if control not in km.CONTROLS:
         raise InputError(f"control: must be one of {', '.join(km.CONTROLS)}, got {control!r}")
+    rc = _check_cage(cage, rigid_cage, control, b)
     srr = check_finite("traction_regularizing_srr", traction_regularizing_srr)
     if rolling_speed_floor is None:  # the dynamic engines' floor (one function for every solver)
         u_min = _rolling_floor(b, w_i, w_o)
@@ -298,7 +317,7 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
     fixed = _check_fixed(fixed, b, (loads[3], loads[4]))
     # the same case at rest, to tell a refusal the speed causes from one the loads cause (_speed_cause)
     rest = dict(fixed=fixed, hertz_method=hertz_method, phase=phase, fit=fit, temperatures=temperatures,
-                shoulder_angle=shoulder_angle, lubricant=lub)
+                shoulder_angle=shoulder_angle, lubricant=lub, cage=cage, rigid_cage=rigid_cage)
     angular = b.free_contact_angle > 0.0
     fr = math.hypot(loads[0], loads[1])
     if angular and "delta_a" not in fixed:
@@ -364,7 +383,8 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
             kin = np.array(start.kinematics, float) * ((w_i - w_o) / w_start)
     it_total = 0
     phases = ["race"] + ([control] if control in ("min-energy", "equilibrium") and moving else [])
-    prob = balls = geo = cs = None
+    prob = balls = geo = cs = cage_info = None
+    loaded_all = np.zeros(z, dtype=bool)
     try:  # a singular ring or kinematics system: loads far beyond what the contacts carry
         for stage in phases:
             tol = 1e-10 if stage == "race" else 1e-7
@@ -398,6 +418,10 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
                     loaded = balls[j, B_QO] > 0.0 and balls[j, B_QI] > 0.0
                     race = control if control in ("outer", "inner") else (
                         "outer" if (not loaded or km.jones_outer_controls(geo[j])) else "inner")
+                    if rc is not None:  # the cage's balance below, all balls together
+                        loaded_all[j] = loaded
+                        controls[j] = race if loaded else "outer"
+                        continue
                     if stage == "race":
                         controls[j] = race if loaded else "outer"
                         new[j, :3] = km.race_control(geo[j], controls[j])
@@ -419,7 +443,13 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
                             new[j], checks[j] = new[same], checks[same]
                         else:
                             new[j, :3], checks[j] = km.minimum_energy(geo[j], model, n_strips, n_across, kin[j])
-                if stage == "equilibrium":
+                if rc is not None:
+                    new, cage_info = _solve_cage(geo, loaded_all, controls.copy(), stage, kin, rc, model, n_strips,
+                                                 n_across, inertia, lub, w_i, w_o, psi)
+                    controls[:] = cage_info["controls"]
+                    if stage == "equilibrium":
+                        checks = list(cage_info["checks"])
+                elif stage == "equilibrium":
                     _carry_by_cage(new, controls, geo)
                 change = np.abs(new - kin).max() / wref
                 kin = new
@@ -441,6 +471,7 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
     # final contact results
     out = _ball_results(b, geom, psi, balls, cs, kin, geo, model, n_strips, n_across, w_i, w_o, rd_o, rd_i,
                         lub, e_prime, mass, inertia, controls, moving, prob.fto, prob.fti)
+    cage_out = None if rc is None else _cage_result(rc, cage_info, out, moving, w_i)
     if control == "equilibrium" and moving and not np.any(controls == "equilibrium"):
         bad = next((j for j, c in enumerate(checks) if c is not None), 0)
         raise InputError(f"control: no ball reaches a traction equilibrium (ball {bad}: scaled residual "
@@ -486,7 +517,7 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
         geometry=geometry, stiffness=kmat, stiffness_check=kcheck, damping=cmat,
         minimum_checks=[c for c in checks] if control in ("min-energy", "equilibrium") else [], iterations=it_total,
         n_strips=n_strips, n_across=n_across, wall_s=time.perf_counter() - t0,
-        contact_geometry=geo, kinematics=kin, traction_model=model)
+        contact_geometry=geo, kinematics=kin, traction_model=model, cage=cage_out)
     if resolution_check:
         sol.resolution_check = check_traction_resolution(sol)
     return sol
@@ -503,12 +534,15 @@ def check_traction_resolution(sol, tolerance=RESOLUTION_TOLERANCE, warn=True) ->
 
     The dissipation of the solution's contacts, its ball kinematics held, is integrated again with twice the
     strips and twice the points across (each at most MAX_N_STRIPS, MAX_N_ACROSS); a relative change above
-    ``tolerance`` (1 %, the criterion of ``validation/traction_convergence.py``) is a
+    ``tolerance`` (1 %, the criterion of ``validation/studies/traction_convergence.py``) is a
     :class:`TractionResolutionWarning` (``warn``) with the resolution from which doubling changes it by
     less: the estimate of what the case needs (the first such level of the doublings, or the default
     DEFAULT_N_STRIPS x DEFAULT_N_ACROSS when it passes the same test with fewer points). A change below
-    1e-9 of the rolling-power scale sum Q |u_roll| over the contacts counts as converged (a dissipation
-    of round-off). The kinematics of ``control="min-energy"`` or ``"equilibrium"`` also follow the
+    1e-9 of the rolling-power scale sum Q |u_roll| over the contacts (round-off), and dissipations below
+    the loss floor LOSS_FLOOR_MU F r_p max(|omega - omega_outer|, 1 rad/s) (the dynamic summaries' floor;
+    F the applied |F_r| + |F_a|, or the outer contacts' load sum if larger: an unloaded bearing's
+    centrifugal loads; a loss no one uses, e.g. 6e-5 W of an unloaded 6208 at 500 rad/s against 0.13 W),
+    count as converged. The kinematics of ``control="min-energy"`` or ``"equilibrium"`` also follow the
     integration; this check holds them, so its
     estimate is the least resolution needed. A solution without relative speed (no contact geometry)
     and one at the largest resolution return None.
@@ -530,10 +564,16 @@ def check_traction_resolution(sol, tolerance=RESOLUTION_TOLERANCE, warn=True) ->
     geo = sol.contact_geometry
     scale = float(np.sum(geo[:, km.G_QO] * np.abs(sol.balls["u_roll_outer"]))
                   + np.sum(geo[:, km.G_QI] * np.abs(sol.balls["u_roll_inner"])))
+    # below the loss floor (LOSS_FLOOR_MU (|F_r| + |F_a|) r_p max(|omega|, 1 rad/s), the dynamic summaries'
+    # floor) a dissipation is no result anyone uses: its relative change is not judged
+    # the load: the applied one, or (an unloaded bearing at speed) the outer contacts' centrifugal loads
+    loads = max(abs(float(sol.loads[0])) + abs(float(sol.loads[2])), float(np.sum(geo[:, km.G_QO])))
+    pitch_radius = float(np.mean(sol.balls["ball_center_r"]))
     floor = 1e-9 * scale
+    negligible = LOSS_FLOOR_MU * loads * pitch_radius * max(abs(sol.omega - sol.omega_outer), 1.0)
 
     def close(p, q):
-        return abs(q - p) <= max(tolerance * abs(q), floor)
+        return abs(q - p) <= max(tolerance * abs(q), floor) or max(abs(p), abs(q)) < negligible
 
     p = [_dissipation_at(sol, *levels[0]), _dissipation_at(sol, *levels[1])]
     change = (p[1] - p[0]) / p[1] if p[1] != 0.0 else 0.0
@@ -737,3 +777,189 @@ def _speed_cause(b, loads, w_i, w_o, rest) -> str | None:
 #: Why a refusal names the speed: the same loads at rest pass.
 _SPEED_CAUSE = ("the speed causes it (centrifugal force, gyroscopic moment and ring growth; the same loads at "
                 "rest are carried): reduce the speed")
+
+
+#: Relative tolerance of the cage speed in the cage's torque balance (brentq's xtol over the speed scale).
+CAGE_SPEED_TOLERANCE = 1e-13
+
+
+class CageLandWarning(UserWarning):
+    """The rigid cage's land film cannot carry the net pocket force within the crush eccentricity: the land
+    touches (the reference engine's rigid cage models that contact; the quasi-static solution does not)."""
+
+
+def _check_cage(cage, rigid_cage, control, b):
+    """The RigidCage of ``cage`` / ``rigid_cage`` (None: cageless), or InputError naming the argument."""
+    if cage in (None, "none"):
+        if rigid_cage is not None:
+            raise InputError("rigid_cage: given without cage='rigid'; it is the geometry of the rigid cage")
+        return None
+    if cage != "rigid":
+        raise InputError(f"cage: must be None (no cage) or 'rigid', got {cage!r}")
+    if control == "min-energy":
+        raise InputError("control: 'min-energy' does not take cage='rigid': Gupta's minimum-energy hypothesis "
+                         "chooses each ball's orbital speed, which the cage imposes; use control='equilibrium' "
+                         "(the traction equilibrium) or race control with the cage")
+    if rigid_cage is None:
+        return estimated_cage(b)
+    if not isinstance(rigid_cage, RigidCage):
+        raise InputError(f"rigid_cage: expected a RigidCage (exudyn_bearing.data.cages), got "
+                         f"{type(rigid_cage).__name__}")
+    rigid_cage.check_fits(b)
+    return rigid_cage
+
+
+def _land_state(rc, lub, omega_c, omega_ring, force):
+    """Eccentricity, shear torque on the cage [N m] and crush flag of the land film of ``rc`` carrying the
+    net in-plane pocket force ``force`` [N] at the cage speed ``omega_c`` and its guiding ring's
+    ``omega_ring``: eps from Ocvirk's steady load (W = W_bar(eps) mu (omega_c + omega_ring) R L^3 / (4 c^2),
+    :func:`~exudyn_bearing.physics.short_bearing.short_bearing_load_number`), at most the crush eccentricity
+    eps_c = max(0.5, 1 - sigma / c) of the reference engine; the torque
+    :func:`~exudyn_bearing.physics.short_bearing.short_bearing_shear_torque` at that eps (docs/theory/cage.md)."""
+    mu, r, length, c = lub.viscosity, rc.guide_radius, rc.land_width, rc.land_clearance
+    eps_c = max(0.5, 1.0 - lub.composite_roughness / c)
+    scale = mu * abs(omega_c + omega_ring) * r * length ** 3 / (4.0 * c * c)
+    crushed = False
+    tiny = 1e-12  # W_bar(eps) ~ pi eps near the centre
+    if force <= scale * float(short_bearing_load_number(tiny)):
+        eps = 0.0
+    elif scale * float(short_bearing_load_number(eps_c)) <= force:
+        eps, crushed = eps_c, True
+    else:
+        eps = _opt.brentq(lambda e: scale * float(short_bearing_load_number(e)) - force, tiny, eps_c, xtol=1e-14)
+    torque = float(short_bearing_shear_torque(eps, omega_c - omega_ring, mu, r, length, c))
+    return eps, torque, crushed
+
+
+def _caged_balls(omega_c, geo, loaded, races, stage, kin, rc, model, n_strips, n_across, inertia, lub, w_i, w_o,
+                 psi):
+    """Every ball at the cage speed ``omega_c`` (docs/theory/quasistatic.md#the-rigid-cage): its kinematics
+    (race control at the cage speed by ``races[j]``, the traction equilibrium of its moments with the pocket
+    force and its friction, or, without an inner load, rolling on the outer race), its pocket force
+    Q_p = -(F_x,o + F_x,i) and the cage's torque: sum_j (-Q_p,j c_r,j + mu_c |Q_p,j| R_b w_z,j / |w_j|) + the
+    land's shear torque. Returns (kin, dict of the cage's quantities)."""
+    z = geo.shape[0]
+    mu_c = rc.pocket_friction
+    new = kin.copy()
+    q_p = np.zeros(z)
+    checks = [None] * z
+    used = np.array(["outer"] * z, dtype=object)
+    for j in range(z):
+        same = next((i for i in range(j) if np.allclose(geo[i], geo[j], rtol=1e-12, atol=0.0)), None)
+        if same is not None:
+            new[j], q_p[j], checks[j], used[j] = new[same], q_p[same], checks[same], used[same]
+            continue
+        if stage == "equilibrium" and (geo[j, km.G_QO] > 0.0 or geo[j, km.G_QI] > 0.0):
+            start = np.array([omega_c, kin[j, 1], kin[j, 2], kin[j, 3]])
+            k, chk = km.traction_equilibrium(geo[j], model, n_strips, n_across, start, inertia, omega_m=omega_c,
+                                             pocket_friction=mu_c)
+            if chk["converged"]:
+                new[j], q_p[j], checks[j], used[j] = k, chk["pocket_force"], chk, "equilibrium"
+                continue
+            checks[j] = chk
+            used[j] = "cage"
+        race = races[j] if loaded[j] and stage != "equilibrium" else "outer"
+        if stage != "equilibrium":
+            used[j] = race
+        new[j] = km.cage_kinematics(geo[j], omega_c, race)
+        c = km.ball_contacts(new[j], geo[j], model, n_strips, n_across)
+        q_p[j] = -(c[0, 6] + c[1, 6])
+    cr = geo[:, km.G_CR]
+    rb = geo[:, km.G_RB]
+    w = np.hypot(new[:, 1], new[:, 2])
+    wz_unit = np.divide(new[:, 2], w, out=np.zeros(z), where=w > 0.0)
+    wr_unit = np.divide(new[:, 1], w, out=np.zeros(z), where=w > 0.0)
+    t_normal = -q_p * cr
+    t_friction = mu_c * np.abs(q_p) * rb * wz_unit
+    # the net in-plane force of the pockets on the cage: -Q_p e_psi and the friction's radial part
+    s = -np.sign(q_p)                                  # side of the ball the wall touches, along e_psi
+    f_r = -mu_c * np.abs(q_p) * s * wz_unit            # radial friction on the cage
+    fx = float(np.sum(q_p * np.sin(psi) + f_r * np.cos(psi)))
+    fy = float(np.sum(-q_p * np.cos(psi) + f_r * np.sin(psi)))
+    eps, t_land, crushed, w_ring = 0.0, 0.0, False, 0.0
+    if rc.guidance != "ball":
+        w_ring = w_o if rc.guidance == "outer_land" else w_i
+        eps, t_land, crushed = _land_state(rc, lub, omega_c, w_ring, math.hypot(fx, fy))
+    torque = float(np.sum(t_normal) + np.sum(t_friction) + t_land)
+    scale = float(np.sum(np.abs(t_normal)) + np.sum(np.abs(t_friction)) + abs(t_land))
+    sliding = rb * w
+    return new, {"speed": float(omega_c), "pocket_force": q_p, "pocket_sliding_speed": sliding,
+                 "pocket_power_ball": np.atleast_1d(_ls.cage_pocket_friction_power(q_p, w, 2.0 * rb, mu_c)),
+                 "land_torque": t_land,
+                 "land_power": -t_land * (omega_c - w_ring), "land_eccentricity": eps, "land_crushed": crushed,
+                 "land_force": math.hypot(fx, fy), "ring_speed": w_ring, "torque": torque,
+                 "torque_scale": scale, "checks": checks, "controls": used,
+                 "wr_unit": wr_unit}
+
+
+def _solve_cage(geo, loaded, races, stage, kin, rc, model, n_strips, n_across, inertia, lub, w_i, w_o, psi):
+    """The cage speed that balances the cage's torque (:func:`_caged_balls`; brentq on a bracket widened from
+    the balls' present orbital speeds: the torque falls with the cage speed) and the balls at it."""
+    last = {}
+
+    def torque(wc):
+        k, info = _caged_balls(wc, geo, loaded, races, stage, last.get("kin", kin), rc, model, n_strips, n_across,
+                               inertia, lub, w_i, w_o, psi)
+        last["kin"], last["info"], last["wc"] = k, info, wc
+        return info["torque"]
+
+    ref = max(abs(w_i - w_o), 1e-300)
+    lo, hi = float(np.min(kin[:, 0])), float(np.max(kin[:, 0]))
+    pad = 1e-3 * ref + 0.5 * (hi - lo)
+    lo, hi = lo - pad, hi + pad
+    t_lo, t_hi = torque(lo), torque(hi)
+    for _ in range(60):
+        if t_lo >= 0.0 >= t_hi:
+            break
+        if t_lo < 0.0:
+            lo, hi, t_hi = lo - 2.0 * pad, lo, t_lo
+            t_lo = torque(lo)
+        else:
+            hi, lo, t_lo = hi + 2.0 * pad, hi, t_hi
+            t_hi = torque(hi)
+        pad *= 2.0
+    else:
+        raise InputError("cage: no cage speed balances the cage's torque (pocket forces and land) between "
+                         f"{lo:g} and {hi:g} rad/s")
+    if t_lo == 0.0 or t_hi == 0.0:
+        wc = lo if t_lo == 0.0 else hi
+    else:
+        wc = _opt.brentq(torque, lo, hi, xtol=CAGE_SPEED_TOLERANCE * ref, rtol=1e-15)
+    if last.get("wc") != wc:
+        torque(wc)
+    # the residual relative to the torques that act: the pocket, friction and land torques and the tractions'
+    # own torques along the orbit, sum_j (|F_x,o| + |F_x,i|) c_r (the pocket forces are their difference: with
+    # no net force on the pockets, the tractions set the round-off)
+    info, k = last["info"], last["kin"]
+    scale = info["torque_scale"]
+    for j in range(geo.shape[0]):
+        c = km.ball_contacts(k[j], geo[j], model, n_strips, n_across)
+        scale += (abs(c[0, 6]) + abs(c[1, 6])) * geo[j, km.G_CR]
+    info["torque_residual"] = info["torque"] / scale if scale > 0.0 else 0.0
+    return k, info
+
+
+def _cage_result(rc, info, out, moving, w_i):
+    """The solution's ``cage`` dict (and the per-ball ``pocket_force``, ``pocket_sliding_speed`` in ``out``):
+    speed [rad/s], losses [W] by kind, land torque [N m], force [N] and eccentricity, the torque balance's
+    relative residual; a CageLandWarning when the land film is crushed."""
+    z = out["psi"].size
+    if not moving or info is None:  # the rings turn together: the cage with them, no pocket or land force
+        info = {"speed": float(w_i), "pocket_force": np.zeros(z), "pocket_sliding_speed": np.zeros(z),
+                "pocket_power_ball": np.zeros(z), "land_torque": 0.0, "land_power": 0.0, "land_eccentricity": 0.0,
+                "land_crushed": False, "land_force": 0.0, "torque_residual": 0.0}
+    out["pocket_force"] = np.asarray(info["pocket_force"], float).copy()
+    out["pocket_sliding_speed"] = np.asarray(info["pocket_sliding_speed"], float).copy()
+    if info["land_crushed"]:
+        warnings.warn(CageLandWarning(
+            f"rigid_cage: the land film cannot carry the net pocket force {info['land_force']:.4g} N within the "
+            f"crush eccentricity {info['land_eccentricity']:.3g} (land clearance {rc.land_clearance:.3e} m): the "
+            "cage touches its land, which the quasi-static solution does not model (its land torque is the film's "
+            "at the crush eccentricity); the reference engine's rigid cage (eb.simulate(..., "
+            "Scenario(cage='rigid'))) models the land contact"), stacklevel=3)
+    return {"model": "rigid", "guidance": rc.guidance, "pocket_friction": rc.pocket_friction,
+            "speed": info["speed"], "power_pocket": float(np.sum(info["pocket_power_ball"])),
+            "power_land": float(info["land_power"]), "land_torque": float(info["land_torque"]),
+            "land_force": float(info["land_force"]), "land_eccentricity": float(info["land_eccentricity"]),
+            "land_crushed": bool(info["land_crushed"]), "torque_residual": float(info["torque_residual"]),
+            "ring_speed": float(info.get("ring_speed", w_i)), "rigid_cage": rc}

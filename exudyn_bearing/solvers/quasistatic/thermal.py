@@ -25,6 +25,11 @@ Each iteration (a fixed point, relaxed by the secant slope of the mean temperatu
    through the land film, to the oil by convection) and the steady network
    (:func:`~exudyn_bearing.physics.thermal.network_temperatures`).
 
+With the rigid cage (``cage="rigid"``, a keyword of :func:`~.solve.solve_quasistatic`) the cage's losses are
+those of the solver's cage balance (:func:`~.losses.power_losses` reads them) and the cage node's pocket
+clearance, land and surface come from its RigidCage; ``cage_pocket_clearance`` and the loss options'
+``cage_*`` values then conflict and are refused by name.
+
 It stops when the temperatures change by less than ``tolerance`` [K] between iterations. A
 iterate beyond the lubricant's range is clamped to its top; one beyond it again is a
 :class:`ThermalRunawayError` naming the temperature reached; no convergence within ``max_iterations`` is a :class:`ThermalConvergenceWarning` with
@@ -164,13 +169,20 @@ def _cage_surface_area(b) -> float:
                   - b.n_balls * math.pi * b.ball_radius ** 2)
 
 
-def _cage_options(b, guidance, pocket_clearance, pocket_share, loss_options) -> dict | None:
+def _cage_options(b, guidance, pocket_clearance, pocket_share, loss_options, rigid=None) -> dict | None:
     """The cage's thermal data for a cage guidance of the loss module: None without a cage, else the
     pocket clearance [m] (given, else the bearing's ``cage_pocket_clearance``), the pocket heat share
     and the land geometry (``cage_land_geometry`` with the loss options' land values) of a land-guided
-    cage. InputError naming the parameter for a clearance <= 0 or a share outside [0, 1]."""
+    cage. With the quasi-static solution's rigid cage (``rigid``, a RigidCage) its pocket clearance, land
+    and surface are the RigidCage's (a given ``cage_pocket_clearance`` conflicts: InputError). InputError
+    naming the parameter for a clearance <= 0 or a share outside [0, 1]."""
     if guidance == "none":
         return None
+    if rigid is not None:
+        if pocket_clearance is not None:
+            raise InputError("cage_pocket_clearance: the solution has the rigid cage, whose RigidCage gives the "
+                             "pocket clearance (solve_quasistatic's rigid_cage); leave it out")
+        pocket_clearance = rigid.pocket_clearance
     if pocket_clearance is None:
         pocket_clearance = b.cage_pocket_clearance
         if pocket_clearance is None:
@@ -188,10 +200,24 @@ def _cage_options(b, guidance, pocket_clearance, pocket_share, loss_options) -> 
         raise InputError(f"cage_pocket_heat_share: must lie in [0, 1] (the cage's share of the pocket friction "
                          f"heat), got {pocket_share!r}")
     land = None
-    if guidance in ("outer_land", "inner_land"):
-        land = cage_land_geometry(b, guidance, loss_options.get("cage_land_radius"),
-                                  loss_options.get("cage_land_width"), loss_options.get("cage_land_clearance"))
-    return {"guidance": guidance, "pocket_clearance": c_p, "pocket_share": share, "land": land}
+    if rigid is not None:
+        area = _rigid_cage_surface_area(b, rigid)
+        if guidance != "ball":
+            land = {"radius": rigid.guide_radius, "width": rigid.land_width, "clearance": rigid.land_clearance,
+                    "source": "the solution's RigidCage"}
+    else:
+        area = _cage_surface_area(b)
+        if guidance in ("outer_land", "inner_land"):
+            land = cage_land_geometry(b, guidance, loss_options.get("cage_land_radius"),
+                                      loss_options.get("cage_land_width"), loss_options.get("cage_land_clearance"))
+    return {"guidance": guidance, "pocket_clearance": c_p, "pocket_share": share, "land": land, "area": area}
+
+
+def _rigid_cage_surface_area(b, rc) -> float:
+    """Oil-washed area of a rigid cage [m^2]: its two cylindrical faces (R_ci and R_co, the width w) less
+    the Z pockets' openings (pi (R_b + c_p)^2 on each face)."""
+    pocket = math.pi * (b.ball_radius + rc.pocket_clearance) ** 2
+    return 2.0 * math.pi * (rc.inner_radius + rc.outer_radius) * rc.width - 2.0 * b.n_balls * pocket
 
 
 def _network(b, sol, losses, oil, t_inlet, t_amb, m_dot, q_vol, g_amb, k_solid, cage=None):
@@ -248,7 +274,7 @@ def _network(b, sol, losses, oil, t_inlet, t_amb, m_dot, q_vol, g_amb, k_solid, 
         # cage's speed relative to the oil (both turn at the balls' mean orbital speed: the through-flow speed)
         k_oil = oil["thermal_conductivity"]
         g_cb = float(2.0 * z * th.sphere_wall_gap_conductance(k_oil, r_b, cage["pocket_clearance"]))
-        g_co = float(h(0.0) * _cage_surface_area(b))
+        g_co = float(h(0.0) * cage["area"])
         links[(2, 4)], links[(3, 4)] = g_cb, g_co
         cond.update({"ball_cage": g_cb, "cage_oil": g_co})
         if cage["land"] is not None:
@@ -415,8 +441,9 @@ def solve_thermal(bearing, Fr=0.0, Fa=0.0, *, omega, oil_inlet_temperature, oil_
                                               "ball": float(temps[2])}, resolution_check=False, **quasistatic)
         losses = power_losses(sol, b, lub, oil_density=oil["density"], **loss_options)
         if it == 1:  # the cage node: its data once, its start temperature the previous solution's or the oil's
+            rigid = sol.cage["rigid_cage"] if sol.cage is not None else None
             cage = _cage_options(b, losses["cage_guidance"], cage_pocket_clearance, cage_pocket_heat_share,
-                                 loss_options)
+                                 loss_options, rigid)
             if cage is not None:
                 nodes = NODES + (CAGE_NODE,)
                 t_cage = (start.temperatures.get(CAGE_NODE, temps[3]) if isinstance(start, ThermalSolution)

@@ -148,7 +148,7 @@ class ReferenceEngine:
         # forces at t = 0 (Verlet needs them on entry); the ball body frames start the first step unturned.
         # evaluate's Python body: its three calls run the specialisations the integrator has just compiled
         # (a compiled evaluate linked, optimised and compiled the contact kernel once more: 0.8 s of CPU of a
-        # cold start, python validation/profile_reference.py --compile)
+        # cold start, python validation/performance/profile_reference.py --compile)
         frames = hist[:, H_E1:].copy()
         first = getattr(evaluate, "py_func", evaluate)  # evaluate itself where numba's JIT is disabled
         diag, cage_load, rings, fr = work

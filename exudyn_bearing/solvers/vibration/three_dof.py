@@ -558,8 +558,8 @@ def frequency_response(p: ThreeDofParameters, frequencies):
 
 def bpfo(bearing="6004", omega=2.0 * math.pi * 50.0) -> float:
     """Ball-pass frequency of the outer race [Hz] at an inner-ring speed
-    [rad/s], outer ring fixed (:func:`~exudyn_bearing.physics.kinematics.
-    defect_frequencies`)."""
+    [rad/s], outer ring fixed
+    (:func:`~exudyn_bearing.physics.kinematics.defect_frequencies`)."""
     b = bearing if isinstance(bearing, BallBearing) else load_bearing(bearing)
     return kinematics.defect_frequencies(float(omega), 0.0, b.n_balls, b.ball_radius, b.pitch_radius,
                                          b.free_contact_angle)["bpfo"]

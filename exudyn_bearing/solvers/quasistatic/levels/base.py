@@ -329,7 +329,7 @@ class LevelBearing:
         ss.timeIntegration.newton.absoluteTolerance = 1e-8
         # modified Newton keeps one Jacobian, which the turning ball set makes stale; 1e-4 instead of the
         # default 1e-8 saves about two evaluations per step, and the motion it changes is below 0.5 % of what
-        # halving the step changes (validation/bench_levels.py; docs/theory/levels.md, "Cost")
+        # halving the step changes (validation/performance/bench_levels.py; docs/theory/levels.md, "Cost")
         ss.timeIntegration.newton.relativeTolerance = NEWTON_RELATIVE_TOLERANCE
         ss.solution.file.write = False
         ss.solution.sensors.writePeriod = self.sampleInterval

@@ -99,7 +99,7 @@ VALIDITY_DISPLACEMENT_FLOOR = 1e-7
 #: time constant [s] of the running share of samples outside: the warning fires when it exceeds 1/2, after
 #: ln 2 VALIDITY_TIME = 3.5 ms outside; a shorter start transient passes (the damped test shaft of
 #: tests/test_levels.py started from rest under (3000, 1000) N is outside for 1.7 ms:
-#: validation/linear_validity_cases.py)
+#: validation/consistency/linear_validity_cases.py)
 VALIDITY_TIME = 5e-3
 
 # the linear level's part of the work array (after the header WS_HEADER of .base): the table row interpolated

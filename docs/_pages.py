@@ -1,0 +1,122 @@
+"""Pages of the documentation written from the repository at build time (docs/conf.py calls
+:func:`write_all`): the example scenarios, one page per folder of validation/ and the validation
+report. Nothing here runs a simulation: the pages are assembled from the scripts' docstrings,
+tests/test_readme_claims.py's claims and the report the validation scripts last wrote
+(validation/REPORT.md, its figures in validation/report_figures/).
+
+The generated files are listed in .gitignore (docs/examples.md, docs/validation/*.md except
+what is tracked there)."""
+import ast
+import re
+from pathlib import Path
+
+#: Folders of validation/ and what they hold (validation/README.md says the same).
+FOLDERS = {
+    "published": "Published and measured cases",
+    "consistency": "Consistency between the solvers",
+    "performance": "Performance: benchmarks and profiles",
+    "studies": "Studies: step limits, convergence, what the models do",
+}
+
+
+def docstring(path):
+    """The module docstring of ``path`` ('' without one)."""
+    return ast.get_docstring(ast.parse(path.read_text(), str(path))) or ""
+
+
+def first_sentence(text):
+    """The docstring's first paragraph, on one line."""
+    return " ".join(text.split("\n\n")[0].split())
+
+
+def claims_by_script(root):
+    """{script file name: [(claim text, page that says it), ...]} from tests/test_readme_claims.py's
+    CLAIMS (the numbers of README and the docs pages and the command that printed each)."""
+    tree = ast.parse((root / "tests" / "test_readme_claims.py").read_text())
+    claims = next(ast.literal_eval(node.value) for node in tree.body
+                  if isinstance(node, ast.Assign) and getattr(node.targets[0], "id", "") == "CLAIMS")
+    pages = [root / "README.md", *sorted(q for q in (root / "docs").rglob("*.md")
+                                         if "_build" not in q.parts and q.parent.name != "validation")]
+    texts = {q.relative_to(root).as_posix(): " ".join(q.read_text().split()) for q in pages}
+    out = {}
+    for text, _printed, command in claims:
+        name, flat = Path(command.split()[1]).name, " ".join(text.split())
+        where = next((page for page, body in texts.items() if flat in body), "?")
+        if (flat, where) not in out.setdefault(name, []):
+            out[name].append((flat, where))
+    return out
+
+
+def report_sections(root):
+    """{script file name: [section title of validation/REPORT.md that names it]}."""
+    report = (root / "validation" / "REPORT.md").read_text()
+    out = {}
+    for block in re.split(r"^## ", report, flags=re.M)[1:]:
+        title = block.splitlines()[0].strip()
+        for name in set(re.findall(r"([A-Za-z0-9_]+\.py)", block)):
+            out.setdefault(name, []).append(title)
+    return out
+
+
+def _md_escape(text):
+    return text.replace("|", "\\|").replace("*", "\\*").replace("_", "\\_")
+
+
+def validation_pages(docs, root):
+    """docs/validation/<folder>.md for each folder of validation/ (and 'unsorted' for scripts
+    still at the top level), docs/validation/report.md (the report, included)."""
+    vdir = root / "validation"
+    target = docs / "validation"
+    target.mkdir(exist_ok=True)
+    for old in target.glob("*.md"):  # the folder is generated whole: no page of a folder that went away
+        old.unlink()
+    claims, sections = claims_by_script(root), report_sections(root)
+    folders = {name: title for name, title in FOLDERS.items() if (vdir / name).is_dir()}
+    top = sorted(p for p in vdir.glob("*.py") if p.name != "make_report.py" and not p.name.startswith("_"))
+    if top:
+        folders["unsorted"] = "Scripts not yet sorted into a folder"
+    for name, title in folders.items():
+        scripts = top if name == "unsorted" else sorted(p for p in (vdir / name).glob("*.py")
+                                                        if not p.name.startswith("_"))
+        lines = [f"# {title}", "", f"Scripts of `validation/{'' if name == 'unsorted' else name + '/'}`: what each "
+                 "checks (its docstring's first paragraph), the sections of the [report](report.md) it feeds and the "
+                 "numbers of README and these pages it backs (tests/test_readme_claims.py ties each to the "
+                 "report).", ""]
+        for p in scripts:
+            rel = p.relative_to(root).as_posix()
+            lines += [f"## {p.name}", "", f"`python {rel}`", "", _md_escape(first_sentence(docstring(p))) or "(no "
+                      "docstring)", ""]
+            if sections.get(p.name):
+                lines += ["Report sections: " + "; ".join(f"*{_md_escape(s)}*" for s in sections[p.name]) + ".", ""]
+            for claim, where in claims.get(p.name, []):
+                lines += [f"- backs \u201c{_md_escape(claim)}\u201d ({where})"]
+            lines += [""]
+        (target / f"{name}.md").write_text("\n".join(lines).rstrip() + "\n")
+    (target / "report.md").write_text(
+        "# The validation report\n\n"
+        "As `python validation/make_report.py` last wrote it (validation/REPORT.md; the build does not rerun it).\n\n"
+        "```{include} ../../validation/REPORT.md\n:relative-images:\n:heading-offset: 1\n```\n")
+    toc = "\n".join([*folders, "report"])
+    (target / "index.md").write_text(
+        "# Validation\n\n"
+        "```{include} ../../validation/README.md\n:start-after: <!-- layout -->\n:end-before: <!-- /layout -->\n```\n\n"
+        f"```{{toctree}}\n:maxdepth: 1\n\n{toc}\n```\n")
+
+
+def examples_page(docs, root):
+    """docs/examples.md: the scenarios of scenarios/ with their docstrings (plain pages, not
+    sphinx-gallery: each scenario runs for minutes, too long to execute in the build)."""
+    lines = ["# Example scenarios", "",
+             "Scripts in `scenarios/` that run a whole study; each writes its figures and files under "
+             "`scenarios/out/`. Run one as `python scenarios/NAME.py` from the repository root. "
+             "The short examples are on the repository's front page (README.md) and in the how-to guides.", ""]
+    for p in sorted((root / "scenarios").glob("*.py")):
+        if p.name.startswith("_"):
+            continue
+        lines += [f"## {p.name}", "", "```text", docstring(p) or "(no docstring)", "```", ""]
+    (docs / "examples.md").write_text("\n".join(lines).rstrip() + "\n")
+
+
+def write_all(docs, root):
+    validation_pages(docs, root)
+    examples_page(docs, root)

@@ -1,0 +1,130 @@
+"""The quasi-static solver with the rigid cage against the reference engine's (docs/theory/quasistatic.md).
+
+The 7208 under F_r = F_a = 3000 N at 500 rad/s, the estimated outer-land-guided brass cage
+(``estimated_cage``: pocket friction 0.1) in both:
+
+* quasi-static: ``solve_quasistatic(..., control="equilibrium", cage="rigid")`` (tilts held, as the
+  command line and the dynamic engines' translating ring), and without the cage for reference;
+* reference engine (DEM): ``Scenario(cage="rigid", traction_level="ellipse", initial="quasistatic",
+  control="equilibrium", cage_damping="implicit")`` at each step of ``--dt`` for ``--t-end``, summaries
+  over the default window (the last part of the run, named in the output).
+
+Printed side by side: the dissipation (the quasi-static traction + pocket + land; the DEM's ``dissipation``,
+which also holds the contacts' normal damping), the cage speed, the cage losses by kind, the pocket and land
+forces, Q_max. The target: the two dissipations within 5 %.
+
+    python validation/consistency/quasistatic_cage.py [--t-end 0.5] [--dt 1.5e-6 0.75e-6] [--out validation/out/quasistatic_cage]
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import time
+import warnings
+from pathlib import Path
+
+import numpy as np
+
+import exudyn_bearing as eb
+from exudyn_bearing.solvers.quasistatic import solve_quasistatic
+from exudyn_bearing.solvers.quasistatic.losses import power_losses
+
+ROOT = Path(__file__).resolve().parents[2]
+CASE = {"Fr": 3000.0, "Fa": 3000.0, "omega": 500.0}
+#: Azimuth bins of the per-azimuth comparison [deg].
+BINS = np.linspace(-180.0, 180.0, 13)
+
+
+def quasistatic(cage):
+    t0 = time.perf_counter()
+    s = solve_quasistatic("7208", CASE["Fr"], CASE["Fa"], omega=CASE["omega"], control="equilibrium", cage=cage,
+                          fixed={"tilt_x": 0.0, "tilt_y": 0.0}, stiffness=False)
+    wall = time.perf_counter() - t0
+    pl = power_losses(s)["power_loss"]
+    c = s.cage or {}
+    by = {race: {"psi": np.degrees(np.angle(np.exp(1j * s.balls["psi"]))).tolist(),
+                 "load": s.balls[f"q_{race}"].tolist(), "dissipation": s.balls[f"dissipation_{race}_ball"].tolist()}
+          for race in ("inner", "outer")}
+    return {"by_ball": by, "wall_s": wall, "dissipation": s.dissipation_total + pl["cage_pocket"] + pl["cage_land"],
+            "dissipation_contacts": s.dissipation_total, "cage_power_pocket": pl["cage_pocket"],
+            "cage_power_land": pl["cage_land"], "cage_speed": c.get("speed", float(np.mean(s.kinematics[:, 0]))),
+            "orbital_speed_min": float(np.min(s.kinematics[:, 0])), "orbital_speed_max": float(np.max(s.kinematics[:, 0])),
+            "pocket_force_max": float(np.max(np.abs(s.balls.get("pocket_force", [0.0])))),
+            "pocket_force_mean": float(np.mean(np.abs(s.balls.get("pocket_force", [0.0])))),
+            "land_force": c.get("land_force"), "land_eccentricity": c.get("land_eccentricity"),
+            "q_max_inner": s.q_max_inner, "q_max_outer": s.q_max_outer, "energy_residual": s.energy_residual,
+            "torque_residual": c.get("torque_residual")}
+
+
+def dem(dt, t_end):
+    sc = eb.Scenario(**CASE, cage="rigid", traction_level="ellipse", initial="quasistatic", control="equilibrium",
+                     cage_damping="implicit", dt=dt, t_end=t_end, sample_dt=1e-4)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", eb.SteadyStateWarning)
+        t0 = time.perf_counter()
+        rec = eb.simulate("7208", sc, progress=False)
+        wall = time.perf_counter() - t0
+    s = rec.summary()
+    keys = ("dissipation", "cage_speed", "cage_power_pocket", "cage_power_land", "pocket_force_max",
+            "pocket_force_mean", "land_force_mean", "land_eccentricity_max", "q_max_inner", "q_max_outer",
+            "energy_residual")
+    out = {k: s.get(k) for k in keys}
+    window = s.get("window") or {}
+    out["window.t0"], out["window.t1"] = window.get("t0"), window.get("t1")
+    out["power_loss"] = s.get("power_loss")
+    pl = out["power_loss"] or {}
+    out["dissipation_contacts"] = pl.get("contact_traction_inner", 0.0) + pl.get("contact_traction_outer", 0.0)
+    out["wall_s"] = wall
+    # per azimuth (30 deg bins, over the summary's window): the contacts' load, dissipation and slide-to-roll ratio
+    r = rec if hasattr(rec, "contact") else rec.results
+    w = r.window(0.25)
+    psi = np.degrees(r.azimuth()[w]).ravel()
+    idx = np.digitize(psi, BINS)
+    out["by_azimuth"] = {race: {f: [float(np.mean(r.contact(f, race)[w].ravel()[idx == k])) for k in range(1, len(BINS))]
+                                for f in ("load", "dissipation", "srr")} for race in ("inner", "outer")}
+    return out
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--t-end", type=float, default=0.5, help="simulated time of each DEM run [s]")
+    ap.add_argument("--dt", type=float, nargs="+", default=[1.5e-6, 0.75e-6], help="DEM steps [s]")
+    ap.add_argument("--out", default=str(ROOT / "validation" / "out" / "quasistatic_cage"))
+    args = ap.parse_args(argv)
+    out = Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    report = {"case": CASE, "t_end_s": args.t_end, "quasistatic_cageless": quasistatic(None),
+              "quasistatic_rigid": quasistatic("rigid")}
+    for dt in args.dt:
+        report[f"dem_rigid_{dt:g}"] = dem(dt, args.t_end)
+        print(f"DEM at dt = {dt:g} s done ({report[f'dem_rigid_{dt:g}']['wall_s']:.0f} s wall)", flush=True)
+    cols = ["quasistatic_cageless", "quasistatic_rigid"] + [f"dem_rigid_{dt:g}" for dt in args.dt]
+    rows = ("dissipation", "dissipation_contacts", "cage_power_pocket", "cage_power_land", "cage_speed", "pocket_force_max",
+            "pocket_force_mean", "q_max_inner", "q_max_outer", "energy_residual")
+    print(f"7208, F_r = F_a = 3000 N, 500 rad/s, estimated outer-land brass cage; DEM {args.t_end} s, window "
+          + ", ".join(f"{report[c]['window.t0']:.3g}-{report[c]['window.t1']:.3g} s" for c in cols[2:]))
+    print(f"{'':20s}" + "".join(f"{c:>22s}" for c in cols))
+    for r in rows:
+        print(f"{r:20s}" + "".join(f"{report[c].get(r) if report[c].get(r) is not None else float('nan'):22.5g}"
+                                   for c in cols))
+    q = report["quasistatic_rigid"]["dissipation"]
+    for c in cols[2:]:
+        d = report[c]["dissipation"]
+        report[c]["quasistatic_over_dem_minus_1"] = q / d - 1.0
+        print(f"quasistatic (rigid cage) / {c} - 1 in the dissipation: {100 * (q / d - 1.0):+.2f} % (target 5 %)")
+    last = cols[-1]
+    print(f"per azimuth, {last} (mean per contact over the window) and the quasi-static rigid-cage balls:")
+    for race in ("inner", "outer"):
+        a = report[last]["by_azimuth"][race]
+        for k in range(len(BINS) - 1):
+            print(f"  {race} psi {BINS[k]:5.0f} .. {BINS[k + 1]:4.0f} deg: DEM Q {a['load'][k]:7.1f} N, "
+                  f"P {a['dissipation'][k]:6.3f} W, srr {a['srr'][k]:+.3f}")
+        q = report["quasistatic_rigid"]["by_ball"][race]
+        print(f"  quasi-static {race}: " + ", ".join(f"psi {p:.0f}: Q {x:.1f} N P {y:.3f} W"
+                                                    for p, x, y in zip(q["psi"], q["load"], q["dissipation"])))
+    (out / "quasistatic_cage.json").write_text(json.dumps(report, indent=2, default=float))
+    print(f"wrote {out / 'quasistatic_cage.json'}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,109 @@
+"""Cage motion of the rigid cage in the reference engine (docs/theory/cage.md#cage-motion): the 6208 with its
+estimated outer-land-guided brass cage, a horizontal shaft (gravity -y on the cage), the regularised ball /
+race friction at 1 us (within its stable step; the point level's Cundall-Strack spring is not converged in the step), implicit cage
+damping, --t-end long, summaries over the last quarter.
+
+(a) Whirl at speed: F_r = 300 N at 1000 rad/s, balanced and with an unbalance U = 2e-5 kg m (the centrifugal
+    force U omega_c^2 about 8 N): orbit size against the land clearance, whirl ratio, class.
+(b) Pocket friction sweep: mu_c = 0 ... 0.5 at a high load and low speed (F_r = 3000 N, 100 rad/s) and at a
+    low load and high speed (F_r = 300 N, 1000 rad/s): class, orbit, centre speed and the largest pocket
+    force of each run, to see whether and where the cage's motion turns irregular as mu_c grows (the
+    published trend: more readily at high load and low speed, where the balls slide less on the races).
+(c) Gravity at low speed: where the cage rides (its offset against the land clearance) at 20 rad/s.
+
+    python validation/studies/cage_motion.py [--t-end 0.2] [--out validation/out/cage_motion]
+
+Writes cage_motion.json, cage_motion_orbits.png and cage_motion_orbits.npz into --out.
+"""
+from __future__ import annotations
+
+import argparse
+import dataclasses
+import json
+import warnings
+from pathlib import Path
+
+import numpy as np
+
+import exudyn_bearing as eb
+from exudyn_bearing.data.cages import estimated_cage
+from exudyn_bearing.model import layout as L
+from exudyn_bearing.outputs.plotting import pyplot, save_figure
+
+ROOT = Path(__file__).resolve().parents[2]
+KEYS = ("cage_speed", "cage_slip", "cage_motion", "cage_orbit_ratio", "cage_orbit_variation", "cage_centre_speed",
+        "cage_whirl_ratio", "cage_offset", "land_eccentricity_max", "pocket_force_max", "cage_power_pocket",
+        "cage_power_land", "energy_residual")
+
+
+def run(fr, omega, t_end, mu=0.1, unbalance=0.0):
+    b = eb.catalog["6208"]
+    cage = dataclasses.replace(estimated_cage(b), pocket_friction=mu, unbalance=unbalance)
+    sc = eb.Scenario(Fr=fr, omega=omega, t_end=t_end, dt=1e-6, sample_dt=2e-5, cage="rigid", rigid_cage=cage,
+                     cage_damping="implicit", friction="regularized", gravity=(0.0, -9.81, 0.0))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", eb.SteadyStateWarning)
+        rec = eb.simulate(b, sc, progress=False)
+        s = rec.summary(fraction=0.25)
+    return {k: s.get(k) for k in KEYS}, rec
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--t-end", type=float, default=0.2)
+    ap.add_argument("--out", default=str(ROOT / "validation" / "out" / "cage_motion"))
+    args = ap.parse_args(argv)
+    out = Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    report, orbits = {"t_end_s": args.t_end, "dt_s": 1e-6}, {}
+
+    print("(a) whirl at 300 N, 1000 rad/s")
+    for name, u in (("balanced", 0.0), ("unbalance_2e-5", 2e-5)):
+        s, rec = run(300.0, 1000.0, args.t_end, unbalance=u)
+        report[f"a_{name}"] = s
+        orbits[f"a_{name}"] = rec
+        print(f"    {name:16s} {s['cage_motion']:9s} orbit/clearance {s['cage_orbit_ratio']:.3f} whirl ratio "
+              f"{s['cage_whirl_ratio']} offset {np.round(np.array(s['cage_offset']) * 1e6, 1)} um")
+
+    print("(b) pocket friction sweep")
+    report["b_sweep"] = []
+    for fr, omega in ((3000.0, 100.0), (300.0, 1000.0)):
+        for mu in (0.0, 0.05, 0.1, 0.2, 0.3, 0.5):
+            s, rec = run(fr, omega, args.t_end, mu=mu)
+            report["b_sweep"].append({"Fr": fr, "omega": omega, "pocket_friction": mu, **s})
+            if mu in (0.0, 0.5):
+                orbits[f"b_{fr:g}N_{omega:g}_mu{mu:g}"] = rec
+            print(f"    Fr {fr:6g} N omega {omega:6g} rad/s mu_c {mu:4.2f}: {s['cage_motion']:9s} orbit "
+                  f"{s['cage_orbit_ratio']:.3f} variation {s['cage_orbit_variation']} centre speed "
+                  f"{s['cage_centre_speed']:.3g} pocket max {s['pocket_force_max']:.3g} N energy "
+                  f"{s['energy_residual']:.3g}", flush=True)
+
+    print("(c) gravity at 20 rad/s, 3000 N")
+    s, rec = run(3000.0, 20.0, args.t_end)
+    report["c_low_speed"] = s
+    orbits["c_low_speed"] = rec
+    print(f"    offset {np.round(np.array(s['cage_offset']) * 1e6, 1)} um, land clearance "
+          f"{rec.model_parameters()[L.P_LAND_C] * 1e6:.0f} um, eccentricity max {s['land_eccentricity_max']:.3f}")
+
+    fig, axes = pyplot().subplots(2, 3, figsize=(13, 8.4))
+    arrays = {}
+    for ax, (name, rec) in zip(axes.ravel(), orbits.items()):
+        xy = rec.data["xc"][:, 0, :2] * 1e6
+        arrays[f"{name}_t"], arrays[f"{name}_xy_um"] = rec.data["t"], xy
+        c = rec.model_parameters()[L.P_LAND_C] * 1e6
+        th = np.linspace(0.0, 2.0 * np.pi, 200)
+        ax.plot(c * np.cos(th), c * np.sin(th), "k--", lw=0.8)
+        ax.plot(xy[:, 0], xy[:, 1], lw=0.5)
+        ax.set_aspect("equal")
+        ax.set_title(name, fontsize=9)
+        ax.set_xlabel("x [um]")
+        ax.set_ylabel("y [um]")
+    save_figure(fig, out / "cage_motion_orbits.png")
+    np.savez(out / "cage_motion_orbits.npz", **arrays)
+    (out / "cage_motion.json").write_text(json.dumps(report, indent=1, default=float))
+    print(f"wrote {out / 'cage_motion.json'}, cage_motion_orbits.png/.npz")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
