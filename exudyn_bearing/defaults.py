@@ -46,32 +46,98 @@ QUANTITY = {
     "signalInterval": "signal_dt", "load": "Fr", "loads": "Fr", "rpm": "omega", "speeds_rpm": "omega",
 }
 #: Spellings that mean another quantity in one entry point ((entry point, parameter) -> quantity).
-QUANTITY_BY_ENTRY = {("solve_thermal (API)", "lubrication"): "lubrication_method"}
+QUANTITY_BY_ENTRY = {("solve_thermal (API)", "lubrication"): "lubrication_method",
+                     ("solve_pair (API)", "fixed"): "fixed (pair shaft DOFs)"}
+
+#: What an entry point does without a parameter to set it (entry point -> {quantity: behaviour}): shown in the
+#: tables and compared as the parameters' defaults are.
+BEHAVIOUR = {
+    "simulate (API)": {"tilt": "held (the reference engine's inner ring translates only)"},
+    "ball element (CreateBallBearing)": {"tilt": "held in the initial state (then the user's node)"},
+    "levels quasistatic, linear (CreateBallBearing)": {"tilt": "free (the user's node; operating point with "
+                                                               "fixed={})"},
+    "solve_pair (API)": {"tilt": "free with spacing (held without)"},
+    "power_losses (API)": {"ball_drag": True, "rolling_resistance": True},
+}
 
 #: Quantities two entry points may default differently, with the reason (quantity -> {entry point: reason}).
 ALLOWED_DIFFERENCES = {
-    "cage": {"ball element (CreateBallBearing)": "a switch (True: the bearing's cage balls) where Scenario and "
-                                                 "simulate name the model ('torus', 'rigid', 'none'); both mean the "
-                                                 "DEM papers' torus of cage balls"},
     "t_end": {"Scenario": "the Python API's run length (0.05 s: the DEM papers' runs); simulate on the CLI runs "
                           "0.02 s without --t-end or --ramp (cli.simulate.DEFAULT_T_END) for a first look in "
                           "seconds"},
-    "initial": {"ball element (CreateBallBearing)": "the same 'analytic' start"},
-    "Fr": {"dataset (CLI)": "a grid of labelled fault signals needs a load: the CWRU bearing test rig's "
-                            "(about 1 kN on the 6205, --load)",
-           "dataset_cases (API)": "the same grid as the dataset command"},
-    "omega": {"dataset (CLI)": "the CWRU bearing test rig's 1797 rpm (--rpm), as the load",
-              "dataset_cases (API)": "the same grid as the dataset command"},
     "progress": {"dataset (CLI)": "a command prints its progress line only with --progress (scripts read its "
                                   "output); run_sweep, called from Python, shows it by default"},
+    "cage": {"ball element (CreateBallBearing)": "a switch (True: the bearing's cage balls) where Scenario and "
+                                                 "simulate name the model ('torus', 'rigid', 'none'); both mean the "
+                                                 "DEM papers' torus of cage balls",
+             "quasistatic (CLI)": "the quasi-static solver has no torus of cage balls: 'none' (each ball its own "
+                                  "orbital speed, solve_quasistatic(cage=None)) or its rigid cage",
+             "solve_quasistatic (API)": "as the quasistatic command"},
+    "tilt": {"levels quasistatic, linear (CreateBallBearing)": "a level is a force element between the user's "
+             "markers: the node's tilt is a DOF of the user's model, so the operating point it starts from is "
+             "the free-tilt equilibrium (docs/theory/levels.md)",
+             "solve_pair (API)": "two bearings at the given spacing carry a moment: the pair's shaft tilts freely "
+                                 "(held at zero without a spacing, as a single bearing's)"},
+    "ball_drag": {"power_losses (API)": "the quasi-static loss model always adds the ball drag (in air without "
+                                        "oil_volume_fraction) and the rolling resistances as losses; the dynamic "
+                                        "engines leave them out as forces by default and their summary's whole "
+                                        "loss adds this estimate (docs/theory/losses.md)"},
+    "rolling_resistance": {"power_losses (API)": "as ball_drag"},
+    "Fr": {"dataset (CLI)": "a grid of labelled fault signals needs a load: the CWRU bearing test rig's "
+                            "(about 1 kN on the 6205, --load)",
+           "dataset_cases (API)": "the same grid as the dataset command",
+           "Scenario.papers_protocol (API)": "the DEM papers' protocol: their 3000 N case",
+           "Scenario.quasi_static (API)": "the DEM papers' Appendix A: their 3000 N case"},
+    "omega": {"dataset (CLI)": "the CWRU bearing test rig's 1797 rpm (--rpm), as the load",
+              "dataset_cases (API)": "the same grid as the dataset command",
+              "Scenario.papers_protocol (API)": "the DEM papers' protocol: their 500 rad/s steady speed"},
+    "t_ramp_up": {"Scenario.papers_protocol (API)": "the DEM papers' protocol"},
+    "t_steady": {"Scenario.papers_protocol (API)": "the DEM papers' protocol"},
+    "t_ramp_down": {"Scenario.papers_protocol (API)": "the DEM papers' protocol"},
 }
+
+
+#: The rules every entry point follows (the head of docs/defaults.md; docs/theory/README.md points here).
+RULES = (
+    "Rules (one per quantity; the tables below are read from the code and tests/test_defaults.py checks them):",
+    "",
+    ("- **Loads** default to zero everywhere (F_r, F_y, F_a, M_x, M_y; the levels' and the element's "
+     "`initialLoad`). The DEM papers' case, F_r = 3000 N at omega = 500 rad/s, is README's example and the "
+     "default of `Scenario.papers_protocol` and `Scenario.quasi_static` only; `simulate ACBB-120 --Fa 22240` "
+     "loads the bearing axially only."),
+    ("- **Speeds** default to zero (at rest), except that `simulate` on the command line needs a speed "
+     "(`--omega` or `--rpm`; `--omega 0` runs at rest), and `info` and `static` take none (geometry, load "
+     "distribution; a speed adds the kinematics and the lubrication map)."),
+    ("- **Tilt**: the inner ring's tilt is held at zero (`solve_quasistatic(fixed=None)`, the CLI's "
+     "`--tilt fixed`, the reference engine's translating ring, the ball element's initial state); a free "
+     "tilt by `fixed={}` or `--tilt free` (needed for moment loads). Documented exceptions: the bearing "
+     "levels in Exudyn (the tilt is the user's node's) and a pair with a spacing (it carries the moment)."),
+    ("- **Stiffness** averages `n_phases` = 3 ball-set positions within one ball pitch "
+     "(`bearing_coefficients`, `stiffness --phases`, the linear level's tables); the spread over them is "
+     "reported (`operating_point['phase_spread_stiffness']`, the CLI's header and JSON). One position lies up to "
+     "15 % from the 16-position mean of the diagonal entries on the 6208 and 6205, three within 2 %."),
+    ("- **Ball drag and rolling resistance** are off as forces in both dynamic engines (Scenario, "
+     "simulate, the ball element alike); the quasi-static loss model always counts them as losses, and a "
+     "dynamic run's whole loss adds that estimate (docs/theory/losses.md)."),
+    ("- **Step and mode of the ball element**: `stepSize` = Scenario's `dt` = 1 us (the DEM papers' step, "
+     "the same scene as `simulate`) in `mode='bodies'`; a larger step up to the scene's stable step "
+     "(`bearing.stable.dt`, 6.3 us for the 6208 at 3000 N and 500 rad/s; a larger one warns) and "
+     "`mode='fast'` are speed-ups a model chooses (docs/howto/rotor.md), not defaults."),
+    "- **Bearing first**: every command takes the bearing as its first argument (`dataset BEARING OUT`).",
+    ("- **Files and sweeps**: a scenario read from a file or a sweep's case (`Scenario.from_dict`) takes "
+     "Scenario's defaults below; a bearing file's optional fields those of 'bearing file'."),
+)
 
 
 def _scenario_defaults() -> dict:
     from .model.scenario import Scenario
 
+    return _dataclass_defaults(Scenario)
+
+
+def _dataclass_defaults(cls) -> dict:
     out = {}
-    for f in dataclasses.fields(Scenario):
+    for f in dataclasses.fields(cls):
         if f.default is not dataclasses.MISSING:
             out[f.name] = f.default
         elif f.default_factory is not dataclasses.MISSING:  # type: ignore[misc]
@@ -104,30 +170,32 @@ def _cli_defaults() -> dict:
             if isinstance(a, (argparse._HelpAction, argparse._SubParsersAction)) or a.dest in ("json",):
                 continue
             label = a.option_strings[-1] if a.option_strings else a.dest.upper()
-            if a.required:
-                value = "(required)"
-            elif not a.option_strings and a.nargs is None:
+            if a.required or not a.option_strings and a.nargs is None:
                 value = "(required)"
             else:
                 value = a.default
             opts[a.dest] = (label, value)
         for k, v in parser._defaults.items():  # set_defaults: e.g. the speed when neither --omega nor --rpm
-            if k == "omega_default":
-                opts["omega"] = ("--omega / --rpm", "(required)" if v is None and name == "simulate" else
-                                 (0.0 if v is None else v))
+            if k == "omega_default":  # add_speed_arguments / omega_from_args: None is no speed (info, static)
+                opts["omega"] = ("--omega / --rpm", "(required)" if v is None and name == "simulate" else v)
+                opts.pop("rpm", None)
         out[name] = opts
     return out
 
 
 def collect() -> dict:
     """{entry point: {parameter: default}} of every entry point (CLI entries as (option, default))."""
+    from .data.bearings import BallBearing
     from .datasets import dataset_cases
+    from .model.scenario import Scenario
     from .simulate import simulate
     from .solvers.element.element import BallBearingElement
     from .solvers.quasistatic import bearing_coefficients, solve_quasistatic
     from .solvers.quasistatic.levels.base import LevelBearing
     from .solvers.quasistatic.levels.element import QuasiStaticBearing
+    from .solvers.quasistatic.levels.pair import PairBearing
     from .solvers.quasistatic.losses import power_losses
+    from .solvers.quasistatic.pair import solve_pair
     from .solvers.quasistatic.thermal import solve_thermal
     from .sweep import run_sweep
 
@@ -140,21 +208,38 @@ def collect() -> dict:
         "solve_thermal (API)": _signature_defaults(solve_thermal),
         "dataset_cases (API)": _signature_defaults(dataset_cases, skip=()),
         "run_sweep (API)": _signature_defaults(run_sweep, skip=("cases", "out_dir")),
+        "bearing file (BallBearing JSON)": _dataclass_defaults(BallBearing),
+        "Scenario.papers_protocol (API)": _signature_defaults(Scenario.papers_protocol),
+        "Scenario.quasi_static (API)": _signature_defaults(Scenario.quasi_static),
+        "solve_pair (API)": _signature_defaults(solve_pair),
         "ball element (CreateBallBearing)": _signature_defaults(BallBearingElement.__init__),
         "levels quasistatic, linear (CreateBallBearing)": {
             **_signature_defaults(LevelBearing.__init__),
             **{f"{k} (quasistatic)": v for k, v in _signature_defaults(QuasiStaticBearing.__init__,
                                                                         skip=("self", "args")).items()}},
+        "pair level (CreateBallBearing, arrangement=)": _signature_defaults(PairBearing.__init__),
     }
     for name, opts in _cli_defaults().items():
         out[f"{name} (CLI)"] = opts
+    for entry, behaviour in BEHAVIOUR.items():
+        out[entry] = {**out[entry], **{f"{q} (no parameter)": v for q, v in behaviour.items()}}
     return out
+
+
+def _tilt(value):
+    """The tilt rule of a default: "held" (solve_quasistatic's fixed=None, --tilt fixed, a behaviour "held ...")
+    or "free" (fixed={}, --tilt free, "free ...")."""
+    if value is None or value == "fixed" or (isinstance(value, str) and value.startswith("held")):
+        return "held"
+    if value == {} or value == "free" or (isinstance(value, str) and value.startswith("free")):
+        return "free"
+    return value
 
 
 def _norm(quantity, value):
     """A default in the form two entry points compare: initialLoad split, the tilt rule, numbers as floats."""
     if quantity == "tilt":
-        return "fixed" if value in (None, "fixed") else value
+        return _tilt(value)
     if isinstance(value, bool) or value is None or isinstance(value, str):
         return value
     if isinstance(value, (int, float)):
@@ -172,6 +257,9 @@ def quantities() -> dict:
             label = name
             if isinstance(value, tuple) and len(value) == 2 and entry.endswith("(CLI)"):
                 label, value = value
+            if name.endswith(" (no parameter)"):
+                name = label = name[:-len(" (no parameter)")]
+                label = "(no parameter)"
             q = QUANTITY_BY_ENTRY.get((entry, name), QUANTITY.get(name, name))
             if q == "Fr, Fa" and isinstance(value, (tuple, list)) and len(value) == 2:
                 out.setdefault("Fr", {})[entry] = (f"{label}[0]", value[0])
@@ -188,7 +276,7 @@ def conflicts() -> list[str]:
     for q, entries in quantities().items():
         allowed = ALLOWED_DIFFERENCES.get(q, {})
         vals = {e: _norm(q, v) for e, (_, v) in entries.items()
-                if v is not None and v != "(required)" and e not in allowed}
+                if (v is not None or q == "tilt") and v != "(required)" and e not in allowed}
         if len(set(map(repr, vals.values()))) > 1:
             bad.append(f"{q}: " + "; ".join(f"{e} {v!r}" for e, v in vals.items()))
     return bad
@@ -207,21 +295,10 @@ def render() -> str:
     """docs/defaults.md: the defaults of every entry point, then the quantities several entry points set and
     the allowed differences with their reasons."""
     lines = ["# Defaults of every entry point", "",
-             "Generated from the code by `python -m exudyn_bearing.defaults` (do not edit; "
-             "tests/test_defaults.py fails when this file is stale, and when two entry points default one "
-             "quantity differently without a reason in `exudyn_bearing.defaults.ALLOWED_DIFFERENCES`).",
-             "", "Rules: loads default to zero everywhere; speeds to zero, except `simulate` on the CLI, which "
-             "needs a speed (--omega or --rpm); the inner-ring tilt is held at zero everywhere "
-             "(`solve_quasistatic(fixed=None)`, the CLI's `--tilt fixed`; a free tilt by `fixed={}` or "
-             "`--tilt free`); the ball drag and rolling resistance are off in the dynamic engines (the summary's "
-             "whole loss adds their quasi-static estimate, docs/theory/losses.md); the stiffness averages "
-             "`n_phases` = 1 ball-set position (`bearing_coefficients`, `stiffness --phases`; its spread over the "
-             "positions is reported in `operating_point`); the ball element's `stepSize` is Scenario's `dt`, "
-             "1 us (the DEM papers' step) with `mode='bodies'`: README's 3.5-5 us in `mode='fast'` is a speed-up "
-             "that stays below the 6208's stable step (`element.stable.dt`), not a default; the bearing levels "
-             "leave the tilt free, as a DOF of the user's model (their operating point and tables are solved "
-             "with `fixed={}`). The DEM papers' case (F_r = 3000 N, omega = 500 rad/s) is README's example and "
-             "the default of `Scenario.papers_protocol` and `Scenario.quasi_static` only.", ""]
+             ("Generated from the code by `python -m exudyn_bearing.defaults` (do not edit; "
+              "tests/test_defaults.py fails when this file is stale, and when two entry points default one "
+              "quantity differently without a reason in `exudyn_bearing.defaults.ALLOWED_DIFFERENCES`)."),
+             "", *RULES, ""]
     for entry, params in collect().items():
         lines += [f"## {entry}", "", "| parameter | default |", "|---|---|"]
         for name, value in params.items():
