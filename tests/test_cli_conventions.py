@@ -65,7 +65,7 @@ def test_simulate_takes_the_bearing_like_info_and_static():
 
 
 def test_bearing_given_twice_differently_is_refused(capsys):
-    assert exit_code(["simulate", "6208", "--bearing", "7208"]) == 2
+    assert exit_code(["simulate", "6208", "--bearing", "7208", "--omega", "500"]) == 2
     assert capsys.readouterr().err.startswith("exudyn-bearing: error: bearing: given twice")
 
 

@@ -485,8 +485,8 @@ def test_readme_dataset_command_runs(tmp_path):
 
     line = _readme_block("python -m exudyn_bearing dataset").splitlines()[0]
     args = line.split()[3:]  # after "python -m exudyn_bearing"
-    assert args[:2] == ["dataset", "out/ds"] and "--t-end" in args
-    args[1] = str(tmp_path)
+    assert args[:3] == ["dataset", "6205", "out/ds"] and "--t-end" in args   # the bearing first, as every command
+    args[2] = str(tmp_path)
     args[args.index("--t-end") + 1] = "0.003"  # shortened: the grid as printed, 3 ms per case
     assert _quiet(main, args + ["--workers", "1"]) == 0
     assert len(read_index(tmp_path)) == 16
