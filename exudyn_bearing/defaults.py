@@ -67,10 +67,7 @@ ALLOWED_DIFFERENCES = {
                           "seconds"},
     "progress": {"dataset (CLI)": "a command prints its progress line only with --progress (scripts read its "
                                   "output); run_sweep, called from Python, shows it by default"},
-    "cage": {"ball element (CreateBallBearing)": "a switch (True: the bearing's cage balls) where Scenario and "
-                                                 "simulate name the model ('torus', 'rigid', 'none'); both mean the "
-                                                 "DEM papers' torus of cage balls",
-             "quasistatic (CLI)": "the quasi-static solver has no torus of cage balls: 'none' (each ball its own "
+    "cage": {"quasistatic (CLI)": "the quasi-static solver has no torus of cage balls: 'none' (each ball its own "
                                   "orbital speed, solve_quasistatic(cage=None)) or its rigid cage",
              "solve_quasistatic (API)": "as the quasistatic command"},
     "tilt": {"levels quasistatic, linear (CreateBallBearing)": "a level is a force element between the user's "
@@ -91,6 +88,10 @@ ALLOWED_DIFFERENCES = {
     "omega": {"dataset (CLI)": "the CWRU bearing test rig's 1797 rpm (--rpm), as the load",
               "dataset_cases (API)": "the same grid as the dataset command",
               "Scenario.papers_protocol (API)": "the DEM papers' protocol: their 500 rad/s steady speed"},
+    "bearing": {"simulate (CLI)": "the DEM papers' 6208, so that the older `simulate --Fr ... --omega ...` "
+                                  "without a bearing keeps running; every other command needs the bearing",
+                "dataset_cases (API)": "the CWRU bearing test rig's 6205 (the dataset command needs the "
+                                       "bearing)"},
     "t_ramp_up": {"Scenario.papers_protocol (API)": "the DEM papers' protocol"},
     "t_steady": {"Scenario.papers_protocol (API)": "the DEM papers' protocol"},
     "t_ramp_down": {"Scenario.papers_protocol (API)": "the DEM papers' protocol"},
@@ -169,7 +170,9 @@ def _cli_defaults() -> dict:
         for a in parser._actions:
             if isinstance(a, (argparse._HelpAction, argparse._SubParsersAction)) or a.dest in ("json",):
                 continue
-            label = a.option_strings[-1] if a.option_strings else a.dest.upper()
+            if a.dest in opts:  # an alias of an option listed before (--no-cage for --cage none)
+                continue
+            label = " / ".join(a.option_strings) if a.option_strings else a.dest.upper()
             if a.required or not a.option_strings and a.nargs is None:
                 value = "(required)"
             else:
@@ -179,6 +182,8 @@ def _cli_defaults() -> dict:
             if k == "omega_default":  # add_speed_arguments / omega_from_args: None is no speed (info, static)
                 opts["omega"] = ("--omega / --rpm", "(required)" if v is None and name == "simulate" else v)
                 opts.pop("rpm", None)
+            if k == "bearing_default":  # add_bearing_argument(default=...): BEARING may be left out
+                opts["bearing"] = ("BEARING", v)
         out[name] = opts
     return out
 
@@ -240,6 +245,8 @@ def _norm(quantity, value):
     """A default in the form two entry points compare: initialLoad split, the tilt rule, numbers as floats."""
     if quantity == "tilt":
         return _tilt(value)
+    if quantity == "cage" and isinstance(value, bool):  # model.scenario.cage_model: True/False alias torus/none
+        return "torus" if value else "none"
     if isinstance(value, bool) or value is None or isinstance(value, str):
         return value
     if isinstance(value, (int, float)):
