@@ -109,3 +109,7 @@ def test_dataset_takes_the_bearing_first_and_the_old_order_with_a_note(capsys):
     for argv in (["dataset", "out"], ["dataset", "out", "6205"]):
         assert bearing_and_out(_parser().parse_args(argv)) == ("6205", "out")
         assert "deprecated" in capsys.readouterr().err
+    assert bearing_and_out(_parser().parse_args(["dataset", "out", "--bearing", "6208"])) == ("6208", "out")
+    # a bearing without its folder is not taken for the old form's folder
+    with pytest.raises(eb.InputError, match="^OUT: dataset needs an output folder"):
+        bearing_and_out(_parser().parse_args(["dataset", "6208"]))

@@ -31,6 +31,8 @@ def bearing_and_out(args) -> tuple[str, str]:
     """(BEARING, OUT) of the arguments: ``dataset BEARING OUT``; the older ``dataset OUT [--bearing B]`` and
     ``dataset OUT BEARING`` with a deprecation note on stderr."""
     first, second, option = args.bearing, args.out, args.bearing_option
+    if second is None and (first in catalog or first.endswith(".json")):
+        raise InputError(f"OUT: dataset needs an output folder after the bearing: 'dataset {first} OUT'")
     if second is None or (second in catalog and first not in catalog and not first.endswith(".json")):
         bearing = second or option or OLD_DEFAULT_BEARING
         print(f"exudyn-bearing: note: 'dataset OUT [BEARING]' is deprecated: give the bearing first, "
