@@ -40,10 +40,10 @@ def test_point_level_whole_loss_is_near_the_quasistatic_total(point_run):
 
 
 def test_cli_table_prints_the_whole_loss_first(point_run):
-    from exudyn_bearing.cli.simulate import _table
+    from exudyn_bearing.outputs.tables import summary_rows  # the command line's table (cli.simulate)
 
     _run, s = point_run
-    names = [r[0] for r in _table(s)]
+    names = [r[0] for r in summary_rows(s)]
     assert names.index("power_loss_whole") < names.index("power_loss_whole_basis") < names.index("power_loss_total")
     assert names.index("power_loss_whole") < names.index("q_max_inner")
 
