@@ -44,6 +44,7 @@ QUANTITY = {
     "tangential_stiffness_ratio": "tangential_stiffness_ratio",
     "tangentialStiffnessRatio": "tangential_stiffness_ratio", "signal_dt": "signal_dt",
     "signalInterval": "signal_dt", "load": "Fr", "loads": "Fr", "rpm": "omega", "speeds_rpm": "omega",
+    "radial_load": "Fr", "axial_load": "Fa", "diametral_clearance": "Pd",
 }
 #: Spellings that mean another quantity in one entry point ((entry point, parameter) -> quantity).
 QUANTITY_BY_ENTRY = {("solve_thermal (API)", "lubrication"): "lubrication_method",
@@ -59,6 +60,11 @@ BEHAVIOUR = {
     "solve_pair (API)": {"tilt": "free with spacing (held without)"},
     "power_losses (API)": {"ball_drag": True, "rolling_resistance": True},
 }
+
+#: The reason of the 3-DOF vibration model's operating point.
+ELHAD = ("the 3-DOF model's source case, El Had et al. (2014)'s SKF 6004 at 500 N and 3000 rpm with 12.5 um "
+         "clearance, which it reproduces (docs/theory/vibration.md); a linear model about zero load has no Hertz "
+         "stiffness")
 
 #: Quantities two entry points may default differently, with the reason (quantity -> {entry point: reason}).
 ALLOWED_DIFFERENCES = {
@@ -84,14 +90,18 @@ ALLOWED_DIFFERENCES = {
                             "(about 1 kN on the 6205, --load)",
            "dataset_cases (API)": "the same grid as the dataset command",
            "Scenario.papers_protocol (API)": "the DEM papers' protocol: their 3000 N case",
-           "Scenario.quasi_static (API)": "the DEM papers' Appendix A: their 3000 N case"},
+           "Scenario.quasi_static (API)": "the DEM papers' Appendix A: their 3000 N case",
+           **dict.fromkeys(("vibration three-dof (CLI)", "three_dof.derived_parameters (API)"), ELHAD)},
     "omega": {"dataset (CLI)": "the CWRU bearing test rig's 1797 rpm (--rpm), as the load",
               "dataset_cases (API)": "the same grid as the dataset command",
-              "Scenario.papers_protocol (API)": "the DEM papers' protocol: their 500 rad/s steady speed"},
+              "Scenario.papers_protocol (API)": "the DEM papers' protocol: their 500 rad/s steady speed",
+              **dict.fromkeys(("vibration three-dof (CLI)", "three_dof.derived_parameters (API)"), ELHAD)},
     "bearing": {"simulate (CLI)": "the DEM papers' 6208, so that the older `simulate --Fr ... --omega ...` "
                                   "without a bearing keeps running; every other command needs the bearing",
                 "dataset_cases (API)": "the CWRU bearing test rig's 6205 (the dataset command needs the "
-                                       "bearing)"},
+                                       "bearing)",
+                **dict.fromkeys(("vibration three-dof (CLI)", "three_dof.derived_parameters (API)"), ELHAD)},
+    "Pd": dict.fromkeys(("vibration three-dof (CLI)", "three_dof.derived_parameters (API)"), ELHAD),
     "t_ramp_up": {"Scenario.papers_protocol (API)": "the DEM papers' protocol"},
     "t_steady": {"Scenario.papers_protocol (API)": "the DEM papers' protocol"},
     "t_ramp_down": {"Scenario.papers_protocol (API)": "the DEM papers' protocol"},
@@ -105,7 +115,8 @@ RULES = (
     ("- **Loads** default to zero everywhere (F_r, F_y, F_a, M_x, M_y; the levels' and the element's "
      "`initialLoad`). The DEM papers' case, F_r = 3000 N at omega = 500 rad/s, is README's example and the "
      "default of `Scenario.papers_protocol` and `Scenario.quasi_static` only; `simulate ACBB-120 --Fa 22240` "
-     "loads the bearing axially only."),
+     "loads the bearing axially only. The 3-DOF vibration model (`vibration three-dof`) keeps its source's "
+     "operating point, El Had et al.'s 6004 at 500 N and 3000 rpm (a linear model needs a load)."),
     ("- **Speeds** default to zero (at rest), except that `simulate` on the command line needs a speed "
      "(`--omega` or `--rpm`; `--omega 0` runs at rest), and `info` and `static` take none (geometry, load "
      "distribution; a speed adds the kinematics and the lubrication map)."),
@@ -155,8 +166,33 @@ def _signature_defaults(fn, skip=("self", "mbs", "bearing", "markerInnerRing", "
     return out
 
 
+def _parser_defaults(name, parser, module) -> dict:
+    """{option dest: (label, default)} of one (sub-)command's parser; a default None that the command takes
+    from its module's ``DEFAULTS`` (vibration three-dof) is shown as that value."""
+    table = getattr(module, "DEFAULTS", {})
+    opts = {}
+    for a in parser._actions:
+        if isinstance(a, (argparse._HelpAction, argparse._SubParsersAction)) or a.dest in ("json",):
+            continue
+        if a.dest in opts:  # an alias of an option listed before (--no-cage for --cage none)
+            continue
+        label = " / ".join(a.option_strings) if a.option_strings else a.dest.upper()
+        if a.required or not a.option_strings and a.nargs is None:
+            value = "(required)"
+        else:
+            value = table.get(a.dest, a.default) if a.default is None else a.default
+        opts[a.dest] = (label, value)
+    for k, v in parser._defaults.items():  # set_defaults: e.g. the speed when neither --omega nor --rpm
+        if k == "omega_default":  # add_speed_arguments / omega_from_args: None is no speed (info, static)
+            opts["omega"] = ("--omega / --rpm", "(required)" if v is None and name == "simulate" else v)
+            opts.pop("rpm", None)
+        if k == "bearing_default":  # add_bearing_argument(default=...): BEARING may be left out
+            opts["bearing"] = ("BEARING", v)
+    return opts
+
+
 def _cli_defaults() -> dict:
-    """{command: {option dest: default}} of every CLI command (argparse)."""
+    """{command: {option dest: (label, default)}} of every CLI command and sub-command (argparse)."""
     from .cli import COMMANDS, command_module
     from .cli.common import Parser
 
@@ -164,27 +200,15 @@ def _cli_defaults() -> dict:
     for name in COMMANDS:
         p = Parser(prog="exudyn-bearing")
         sub = p.add_subparsers(dest="command", parser_class=Parser)
-        command_module(name).add_parser(sub)
+        module = command_module(name)
+        module.add_parser(sub)
         parser = sub.choices[name]
-        opts = {}
-        for a in parser._actions:
-            if isinstance(a, (argparse._HelpAction, argparse._SubParsersAction)) or a.dest in ("json",):
-                continue
-            if a.dest in opts:  # an alias of an option listed before (--no-cage for --cage none)
-                continue
-            label = " / ".join(a.option_strings) if a.option_strings else a.dest.upper()
-            if a.required or not a.option_strings and a.nargs is None:
-                value = "(required)"
-            else:
-                value = a.default
-            opts[a.dest] = (label, value)
-        for k, v in parser._defaults.items():  # set_defaults: e.g. the speed when neither --omega nor --rpm
-            if k == "omega_default":  # add_speed_arguments / omega_from_args: None is no speed (info, static)
-                opts["omega"] = ("--omega / --rpm", "(required)" if v is None and name == "simulate" else v)
-                opts.pop("rpm", None)
-            if k == "bearing_default":  # add_bearing_argument(default=...): BEARING may be left out
-                opts["bearing"] = ("BEARING", v)
-        out[name] = opts
+        models = [a for a in parser._actions if isinstance(a, argparse._SubParsersAction)]
+        if not models:
+            out[name] = _parser_defaults(name, parser, module)
+        for m in models:  # vibration MODEL
+            for model, subparser in m.choices.items():
+                out[f"{name} {model}"] = _parser_defaults(name, subparser, module)
     return out
 
 
@@ -193,7 +217,9 @@ def collect() -> dict:
     from .data.bearings import BallBearing
     from .datasets import dataset_cases
     from .model.scenario import Scenario
+    from .physics.rating_life import rating_life
     from .simulate import simulate
+    from .solvers.analytic import static_analysis
     from .solvers.element.element import BallBearingElement
     from .solvers.quasistatic import bearing_coefficients, solve_quasistatic
     from .solvers.quasistatic.levels.base import LevelBearing
@@ -202,6 +228,7 @@ def collect() -> dict:
     from .solvers.quasistatic.losses import power_losses
     from .solvers.quasistatic.pair import solve_pair
     from .solvers.quasistatic.thermal import solve_thermal
+    from .solvers.vibration import three_dof
     from .sweep import run_sweep
 
     out = {
@@ -217,6 +244,9 @@ def collect() -> dict:
         "Scenario.papers_protocol (API)": _signature_defaults(Scenario.papers_protocol),
         "Scenario.quasi_static (API)": _signature_defaults(Scenario.quasi_static),
         "solve_pair (API)": _signature_defaults(solve_pair),
+        "static_analysis (API)": _signature_defaults(static_analysis),
+        "rating_life (API)": _signature_defaults(rating_life, skip=("bearing", "loads")),
+        "three_dof.derived_parameters (API)": _signature_defaults(three_dof.derived_parameters, skip=()),
         "ball element (CreateBallBearing)": _signature_defaults(BallBearingElement.__init__),
         "levels quasistatic, linear (CreateBallBearing)": {
             **_signature_defaults(LevelBearing.__init__),
@@ -271,6 +301,8 @@ def quantities() -> dict:
             if q == "Fr, Fa" and isinstance(value, (tuple, list)) and len(value) == 2:
                 out.setdefault("Fr", {})[entry] = (f"{label}[0]", value[0])
                 out.setdefault("Fa", {})[entry] = (f"{label}[1]", value[1])
+                continue
+            if value is None and entry in out.get(q, {}):  # --omega None beside --rpm 3000 (vibration)
                 continue
             out.setdefault(q, {})[entry] = (label, value)
     return out
