@@ -141,8 +141,10 @@ def bearing_coefficients(bearing, speeds, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=
     --------
     >>> import exudyn_bearing as eb
     >>> c = eb.bearing_coefficients("6208", [100.0, 500.0], Fr=3000.0)
-    >>> [round(float(k) / 1e8, 3) for k in c.stiffness[:, 0, 0]]   # k_xx [1e8 N/m]
-    [1.814, 1.817]
+    >>> [round(float(k) / 1e8, 3) for k in c.stiffness[:, 0, 0]]   # k_xx [1e8 N/m], mean of 3 ball-set phases
+    [1.818, 1.821]
+    >>> c.operating_point["n_phases"]
+    3
     """
     for w in np.ravel(np.asarray(speeds, dtype=object)):  # a "500" is not a speed (float() would read it)
         check_number("speeds", w)
