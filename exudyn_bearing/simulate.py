@@ -32,7 +32,10 @@ def simulate(bearing, scenario: Scenario | None = None, engine: str = "reference
     ----------
     bearing : BallBearing or str
         Bearing or catalogue name / JSON file.
-    scenario : Scenario
+    scenario : Scenario, optional
+        The run (None: ``Scenario()``, no load and at rest, docs/defaults.md;
+        the DEM papers' case is ``Scenario(Fr=3000, omega=500)`` or
+        ``Scenario.papers_protocol()``).
     engine : {"reference", "exudyn"}
         The numba DEM reference core, or the same scene built in Exudyn with
         the bearing element (:mod:`exudyn_bearing.solvers.element`).
@@ -177,7 +180,9 @@ class BallBearingElement(_ElementBase):
         """The sampled series of the run (``record()`` wrapped in Results);
         sustained contact pressures above the elastic limit raise InputError
         (:func:`check_record_pressures`)."""
-        record = self.record(wall_s=wall_s, steps=steps)
+        import dataclasses
+
+        record = dataclasses.replace(self.record(wall_s=wall_s, steps=steps), load_angle=self.loadAngle)
         check_record_pressures(record)
         return Results(record)
 

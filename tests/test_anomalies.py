@@ -50,9 +50,9 @@ def test_quasistatic_default_floor_is_the_engines_floor():
     hand = 0.5 * (omega - w_c) * (b.pitch_radius - b.ball_radius)
     floor = eb.model.scenario.rolling_speed_floor(b, omega)
     assert floor == pytest.approx(hand, rel=1e-12)
-    assert eb.model.scenario.ellipse_rolling_floor(b, eb.Scenario(omega=omega)) == floor
+    assert eb.model.scenario.ellipse_rolling_floor(b, eb.Scenario(Fr=3000.0, omega=omega)) == floor
     # at 500 rad/s half the rolling speed (3.6 m/s) is above 0.1 m/s: the regularizing speed is the floor
-    assert eb.model.scenario.rolling_speed_floor(b, 500.0) == eb.Scenario().regularizing_speed
+    assert eb.model.scenario.rolling_speed_floor(b, 500.0) == eb.Scenario(Fr=3000.0, omega=500.0).regularizing_speed
     # the solver's default is that floor: the same solution as passing it, not as passing a larger one
     kw = dict(Fr=3000.0, omega=omega, control="equilibrium", fixed=HELD, stiffness=False)
     s_default = eb.solve_quasistatic("6208", **kw)

@@ -10,7 +10,7 @@ PACKAGE = Path(__file__).resolve().parents[1] / "exudyn_bearing"
 
 #: Layer of each top-level part of the package, bottom first.
 LAYERS = {"_jit": 0, "data": 1, "physics": 2, "model": 3, "solvers": 4, "outputs": 5, "simulate": 6, "sweep": 6,
-          "datasets": 6, "cli": 7, "__init__": 8, "__main__": 8}
+          "datasets": 6, "cli": 7, "__init__": 8, "__main__": 8, "defaults": 8}
 
 
 def module_name(path: Path) -> str:

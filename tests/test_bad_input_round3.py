@@ -138,8 +138,8 @@ def test_energy_check_is_not_judged_below_the_floor_at_rest():
      ("--fix delta_y", "twice")),
     (["quasistatic", "6208", "--Fr", "3000", "--omega", "100", "--ambient-temperature", "20"] + THERMAL,
      ("ambient_temperature", "20 degC")),
-    (["simulate", "--oil-volume-fraction", "0.05"], ("oil_volume_fraction", "--ball-drag")),
-    (["simulate", "--hysteresis-loss-factor", "0.01"], ("hysteresis_loss_factor", "--rolling-resistance")),
+    (["simulate", "--Fr", "3000", "--omega", "500", "--oil-volume-fraction", "0.05"], ("oil_volume_fraction", "--ball-drag")),
+    (["simulate", "--Fr", "3000", "--omega", "500", "--hysteresis-loss-factor", "0.01"], ("hysteresis_loss_factor", "--rolling-resistance")),
 ])
 def test_options_without_their_switch_are_refused(argv, words, capsys):
     rc, err = _cli(argv, capsys)
@@ -148,11 +148,11 @@ def test_options_without_their_switch_are_refused(argv, words, capsys):
 
 def test_scenario_refuses_loss_options_without_their_switch():
     with pytest.raises(InputError, match="^oil_volume_fraction: used with ball_drag only"):
-        eb.Scenario(oil_volume_fraction=0.05)
+        eb.Scenario(Fr=3000.0, omega=500.0, oil_volume_fraction=0.05)
     with pytest.raises(InputError, match="^hysteresis_loss_factor: used with rolling_resistance only"):
-        eb.Scenario(hysteresis_loss_factor=0.01)
-    assert eb.Scenario(ball_drag=True, oil_volume_fraction=0.05).oil_volume_fraction == 0.05
-    assert eb.Scenario(rolling_resistance=True, hysteresis_loss_factor=0.01).hysteresis_loss_factor == 0.01
+        eb.Scenario(Fr=3000.0, omega=500.0, hysteresis_loss_factor=0.01)
+    assert eb.Scenario(Fr=3000.0, omega=500.0, ball_drag=True, oil_volume_fraction=0.05).oil_volume_fraction == 0.05
+    assert eb.Scenario(Fr=3000.0, omega=500.0, rolling_resistance=True, hysteresis_loss_factor=0.01).hysteresis_loss_factor == 0.01
 
 
 # -- item 8: API arguments of the wrong type ----------------------------------------------------------

@@ -54,9 +54,9 @@ def test_verlet_factor_with_implicit_damping_is_where_the_amplification_matrix_t
 
 def test_the_implicit_damping_is_refused_where_it_is_not_defined():
     with pytest.raises(InputError, match="^cage_damping: must be"):
-        eb.Scenario(cage_damping="backward")
+        eb.Scenario(Fr=3000.0, omega=500.0, cage_damping="backward")
     with pytest.raises(InputError, match="^cage_damping: 'implicit' .* integrator='verlet'"):
-        eb.Scenario(cage_damping="implicit", integrator="rk4", friction="regularized")
+        eb.Scenario(Fr=3000.0, omega=500.0, cage_damping="implicit", integrator="rk4", friction="regularized")
     with pytest.raises(InputError, match="^damping"):
         explicit_step_factor(1.0, "rk4", "implicit")
     from exudyn_bearing.solvers.element.userfunctions import solver_error
@@ -160,7 +160,7 @@ def test_a_runaway_or_non_finite_cage_ball_stops_the_engines():
     # with a cage ball gone to infinity: cage speed NaN in a result); in place the measure stays the balls'
     normal = _evaluate_with_cage_ball(lambda x, b: x)
     assert 0.0 < normal < 0.01
-    clearance = eb.Scenario().guide_clearance
+    clearance = eb.Scenario(Fr=3000.0, omega=500.0).guide_clearance
     deep = _evaluate_with_cage_ball(
         lambda x, b: x * (1.0 + (clearance + 0.1 * b.cage_ball_radius) / np.linalg.norm(x[:2])))
     assert deep == pytest.approx(0.1, rel=0.05)   # its overlap / R_z, beyond the runaway limit 0.05
@@ -238,7 +238,7 @@ def test_the_command_line_and_the_scene_without_cage():
     argv = ["simulate", "6208", "--Fr", "3000", "--omega", "500", "--dt", "7e-6", "--cage-damping", "implicit"]
     assert scenario_from_args(_parser(argv).parse_args(argv)).cage_damping == "implicit"
     with pytest.raises(InputError, match="^cage_damping: 'implicit' damps .* no cage"):
-        eb.Scenario(cage=False, cage_damping="implicit")
+        eb.Scenario(Fr=3000.0, omega=500.0, cage=False, cage_damping="implicit")
 
 
 def test_the_element_refuses_a_solver_step_other_than_the_damping_step():

@@ -112,7 +112,7 @@ def test_simulate_unstable_step_is_a_clean_error(capsys, runaway):
     from exudyn_bearing.model.stability import StepSizeWarning
 
     with pytest.warns(StepSizeWarning):
-        rc = main(["simulate", "--t-end", "0.005", "--dt", "5e-5"])
+        rc = main(["simulate", "--Fr", "3000", "--omega", "500", "--t-end", "0.005", "--dt", "5e-5"])
     assert rc == 3
     err = error_lines(capsys.readouterr().err)
     assert len(err) == 1 and err[0].startswith("exudyn-bearing: error: dt: ")
@@ -121,8 +121,8 @@ def test_simulate_unstable_step_is_a_clean_error(capsys, runaway):
 # a short run: its summary window is not steady, as expected
 @pytest.mark.filterwarnings("ignore::exudyn_bearing.SteadyStateWarning")
 def test_simulate_exudyn_engine_gives_the_same_keys(capsys):
-    ref = run_json(capsys, "simulate", "--t-end", "0.004", "--dt", "5e-6", "--json")
-    exd = run_json(capsys, "simulate", "--engine", "exudyn", "--t-end", "0.004", "--dt", "5e-6", "--json")
+    ref = run_json(capsys, "simulate", "--Fr", "3000", "--omega", "500", "--t-end", "0.004", "--dt", "5e-6", "--json")
+    exd = run_json(capsys, "simulate", "--Fr", "3000", "--omega", "500", "--engine", "exudyn", "--t-end", "0.004", "--dt", "5e-6", "--json")
     assert set(ref) == set(exd)
     assert exd["engine"] == "exudyn" and exd["steps"] == ref["steps"] == 800
     assert exd["cage_speed"] == pytest.approx(ref["cage_speed"], rel=1e-3)

@@ -46,12 +46,12 @@ def test_preload_from_the_command_line(capsys):
 
 
 def test_ramp_sets_the_run_length_unless_t_end_is_given():
-    args = _parser().parse_args(["simulate", "--ramp", "0.05", "0.2", "0.05"])
+    args = _parser().parse_args(["simulate", "--Fr", "3000", "--omega", "500", "--ramp", "0.05", "0.2", "0.05"])
     sc = scenario_from_args(args)
     assert sc.t_end == pytest.approx(0.3) and sc.initial == "rest"
-    args = _parser().parse_args(["simulate", "--ramp", "0.05", "0.2", "0.05", "--t-end", "0.1"])
+    args = _parser().parse_args(["simulate", "--Fr", "3000", "--omega", "500", "--ramp", "0.05", "0.2", "0.05", "--t-end", "0.1"])
     assert scenario_from_args(args).t_end == 0.1
-    assert scenario_from_args(_parser().parse_args(["simulate"])).t_end == 0.02
+    assert scenario_from_args(_parser().parse_args(["simulate", "--Fr", "3000", "--omega", "500"])).t_end == 0.02
 
 
 def test_simulate_takes_the_bearing_like_info_and_static():
@@ -65,7 +65,7 @@ def test_simulate_takes_the_bearing_like_info_and_static():
 
 
 def test_bearing_given_twice_differently_is_refused(capsys):
-    assert exit_code(["simulate", "6208", "--bearing", "7208"]) == 2
+    assert exit_code(["simulate", "6208", "--bearing", "7208", "--omega", "500"]) == 2
     assert capsys.readouterr().err.startswith("exudyn-bearing: error: bearing: given twice")
 
 
@@ -120,7 +120,7 @@ def test_every_json_output_carries_units(capsys, tmp_path):
     assert st["units"]["q"] == "N" and st["units"]["psi"] == "rad" and st["units"]["h_min_outer"] == "m"
     assert st["regime_codes"] == {"-1": "no contact", "0": "boundary", "1": "mixed", "2": "full_film"}
     assert st["regime_codes"][str(st["regime_outer"][0])] == "mixed"
-    sim = run_json(capsys, "simulate", "6208", "--t-end", "0.002", "--dt", "4e-6", "--tangential", "implicit",
+    sim = run_json(capsys, "simulate", "--Fr", "3000", "--omega", "500", "6208", "--t-end", "0.002", "--dt", "4e-6", "--tangential", "implicit",
                    "--out", str(tmp_path), "--json")
     assert sim["units"]["cage_speed"] == "rad/s" and sim["units"]["q_max_inner"] == "N"
     saved = json.loads((tmp_path / "run.json").read_text())
@@ -130,7 +130,7 @@ def test_every_json_output_carries_units(capsys, tmp_path):
 # a short run: its summary window is not steady, as expected
 @pytest.mark.filterwarnings("ignore::exudyn_bearing.SteadyStateWarning")
 def test_simulate_table_shows_units_and_window(capsys):
-    assert main(["simulate", "--t-end", "0.002", "--dt", "4e-6", "--tangential", "implicit"]) == 0
+    assert main(["simulate", "--Fr", "3000", "--omega", "500", "--t-end", "0.002", "--dt", "4e-6", "--tangential", "implicit"]) == 0
     out = capsys.readouterr().out
     lines = {line.split()[0]: line for line in out.splitlines()}
     assert lines["cage_speed"].endswith("rad/s") and lines["q_max_inner"].endswith("N")
@@ -138,10 +138,10 @@ def test_simulate_table_shows_units_and_window(capsys):
 
 
 @pytest.mark.parametrize("argv, word", [
-    (["simulate", "--t-end", "5e-5"], "t_end: must be >= sample_dt"),
+    (["simulate", "--Fr", "3000", "--omega", "500", "--t-end", "5e-5"], "t_end: must be >= sample_dt"),
     (["static", "6208", "--Fr", "1e9"], "Fr: "),
     (["static", "6208", "--Fr", "25000"], "above 4.2 GPa"),
-    (["simulate", "--Fr", "1e9", "--t-end", "0.001"], "Fr: "),
+    (["simulate", "--omega", "500", "--Fr", "1e9", "--t-end", "0.001"], "Fr: "),
     (["static", "6208", "--Fr", "3000", "--phase", "inf"], "phase"),
 ])
 def test_bad_input_is_one_line_and_exit_2(argv, word, capsys):
@@ -189,7 +189,7 @@ def test_cold_numba_cache_is_announced_once(tmp_path, monkeypatch, capsys):
     # numba's cache layout is the one read: a kernel that ran has its index on disk
     from exudyn_bearing import simulate, Scenario
 
-    simulate("6208", Scenario(t_end=1e-4, dt=5e-6, sample_dt=1e-4))
+    simulate("6208", Scenario(Fr=3000.0, omega=500.0, t_end=1e-4, dt=5e-6, sample_dt=1e-4))
     assert not _jit._cache_is_cold(run_verlet)
 
 

@@ -117,11 +117,11 @@ def test_dataclasses_check_types_on_construction():
     with pytest.raises(InputError, match=r"^viscosity: expected a number"):
         Lubricant(viscosity="0.04")
     with pytest.raises(InputError, match=r"^cage: must be one of torus, rigid, none \(True: torus, False: none\), got 'no'"):
-        eb.Scenario(cage="no")
+        eb.Scenario(Fr=3000.0, omega=500.0, cage="no")
     with pytest.raises(InputError, match=r"^lubrication: must be True or False, got 1"):
-        eb.Scenario(lubrication=1)
+        eb.Scenario(Fr=3000.0, omega=500.0, lubrication=1)
     with pytest.raises(InputError, match=r"^Fr: expected a number, got '3000'"):
-        eb.Scenario(Fr="3000")
+        eb.Scenario(omega=500.0, Fr="3000")
     with pytest.raises(InputError, match=r"^viscocity: unknown lubricant parameter"):
         load_lubricant({"viscocity": 0.04})
 
@@ -134,4 +134,4 @@ def test_numpy_numbers_are_numbers():
     assert type(m.density) is float
     sc = eb.Scenario(Fr=np.int64(3000), omega=np.float32(500.0), cage=np.bool_(True), dt=np.float64(4e-6))
     assert sc.Fr == 3000.0 and type(sc.Fr) is float and sc.cage == "torus"
-    assert eb.Scenario(Fr=np.int64(3000)) == eb.Scenario(Fr=3000.0)
+    assert eb.Scenario(omega=500.0, Fr=np.int64(3000)) == eb.Scenario(omega=500.0, Fr=3000.0)

@@ -79,30 +79,30 @@ def test_defect_checked_against_the_bearing(kw, field):
     with pytest.raises(InputError, match=f"^{field}:"):
         d.check(eb.catalog["6205"])
     with pytest.raises(InputError, match=f"^{field}:"):
-        eb.simulate("6205", eb.Scenario(defects=(d,), t_end=1e-5, dt=5e-6, sample_dt=1e-5))
+        eb.simulate("6205", eb.Scenario(Fr=3000.0, omega=500.0, defects=(d,), t_end=1e-5, dt=5e-6, sample_dt=1e-5))
 
 
 def test_scenario_defect_and_signal_inputs():
     d = dict(race="outer", position=0.0, length=1e-3, width=1e-3, depth=1e-4)
-    assert eb.Scenario(defects=[d]).defects == (Defect(**d),)
+    assert eb.Scenario(Fr=3000.0, omega=500.0, defects=[d]).defects == (Defect(**d),)
     with pytest.raises(InputError, match="^defects:"):
-        eb.Scenario(defects=[d] * (L.MAX_DEFECTS + 1))
+        eb.Scenario(Fr=3000.0, omega=500.0, defects=[d] * (L.MAX_DEFECTS + 1))
     with pytest.raises(InputError, match="^color:"):
-        eb.Scenario(defects=[dict(d, color="red")])
+        eb.Scenario(Fr=3000.0, omega=500.0, defects=[dict(d, color="red")])
     with pytest.raises(InputError, match="^depth:"):
-        eb.Scenario(defects=[{k: v for k, v in d.items() if k != "depth"}])
+        eb.Scenario(Fr=3000.0, omega=500.0, defects=[{k: v for k, v in d.items() if k != "depth"}])
     with pytest.raises(InputError, match="^integrator:"):
-        eb.Scenario(defects=[dict(d, race="ball")], integrator="rk4", friction="regularized")
+        eb.Scenario(Fr=3000.0, omega=500.0, defects=[dict(d, race="ball")], integrator="rk4", friction="regularized")
     with pytest.raises(InputError, match="^signal_dt:.*integer multiple"):
-        eb.Scenario(dt=5e-6, signal_dt=1.2e-5)
+        eb.Scenario(Fr=3000.0, omega=500.0, dt=5e-6, signal_dt=1.2e-5)
     with pytest.raises(InputError, match="^signal_dt:"):
-        eb.Scenario(dt=5e-6, signal_dt=2e-5, integrator="rk4", friction="regularized")
-    assert eb.Scenario(dt=1 / 48000 / 4, signal_dt=1 / 48000).signal_every == 4
+        eb.Scenario(Fr=3000.0, omega=500.0, dt=5e-6, signal_dt=2e-5, integrator="rk4", friction="regularized")
+    assert eb.Scenario(Fr=3000.0, omega=500.0, dt=1 / 48000 / 4, signal_dt=1 / 48000).signal_every == 4
 
 
 def test_parameter_slots_and_ball_defect_direction():
     b = eb.catalog["6205"]
-    sc = eb.Scenario(defects=(Defect("inner", 1.0, 1e-3, 2e-3, 1e-4, edge="rounded", edge_radius=5e-5),
+    sc = eb.Scenario(Fr=3000.0, omega=500.0, defects=(Defect("inner", 1.0, 1e-3, 2e-3, 1e-4, edge="rounded", edge_radius=5e-5),
                               Defect("ball", 0.5 * math.pi, 1e-3, 1e-3, 1e-4, ball=3)))
     p = scene_parameters(b, sc, eb.lubricants["guessasma2018"])
     assert p[L.P_NDEF] == 2
@@ -455,12 +455,12 @@ def test_dataset_is_labelled_resumable_and_has_the_signals(tmp_path):
 def test_dataset_cli(tmp_path, capsys):
     from exudyn_bearing.cli import main
 
-    rc = _quiet(main, ["dataset", str(tmp_path), "--faults", "inner", "--t-end", "0.005", "--workers", "1",
+    rc = _quiet(main, ["dataset", "6205", str(tmp_path), "--faults", "inner", "--t-end", "0.005", "--workers", "1",
                        "--json"])
     assert rc == 0
     rows = json.loads(capsys.readouterr().out)
     assert rows[0]["fault"] == "inner" and (tmp_path / "index.csv").exists()
-    assert main(["dataset", str(tmp_path), "--faults", "inner", "--size", "1e-3", "1e-3", "5e-3"]) == 2
+    assert main(["dataset", "6205", str(tmp_path), "--faults", "inner", "--size", "1e-3", "1e-3", "5e-3"]) == 2
     assert capsys.readouterr().err.startswith("exudyn-bearing: error: depth:")
 
 
@@ -485,8 +485,8 @@ def test_readme_dataset_command_runs(tmp_path):
 
     line = _readme_block("python -m exudyn_bearing dataset").splitlines()[0]
     args = line.split()[3:]  # after "python -m exudyn_bearing"
-    assert args[:2] == ["dataset", "out/ds"] and "--t-end" in args
-    args[1] = str(tmp_path)
+    assert args[:3] == ["dataset", "6205", "out/ds"] and "--t-end" in args   # the bearing first, as every command
+    args[2] = str(tmp_path)
     args[args.index("--t-end") + 1] = "0.003"  # shortened: the grid as printed, 3 ms per case
     assert _quiet(main, args + ["--workers", "1"]) == 0
     assert len(read_index(tmp_path)) == 16

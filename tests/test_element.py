@@ -199,7 +199,7 @@ def test_exudyn_engine_blow_up_exits_with_the_simulation_error_code(capsys, runa
     from exudyn_bearing.model.stability import StepSizeWarning
 
     with pytest.warns(StepSizeWarning):
-        rc = main(["simulate", "--engine", "exudyn", "--t-end", "0.005", "--dt", "5e-5"])
+        rc = main(["simulate", "--Fr", "3000", "--omega", "500", "--engine", "exudyn", "--t-end", "0.005", "--dt", "5e-5"])
     assert rc == 3
     err = error_lines(capsys.readouterr().err)
     assert len(err) == 1 and err[0].startswith("exudyn-bearing: error: dt: the bearing state became non-finite")
@@ -389,7 +389,7 @@ def test_ring_stable_step_of_a_rotor_adds_its_bearings():
         mo = mbs.AddMarker(MarkerBodyRigid(bodyNumber=ground, localPosition=[0, 0, z]))
         els.append(CreateBallBearing(mbs, "6208", mi, mo, mode="fast", subSteps=4, stepSize=5e-6,
                                      initialLoad=(600.0, 0.0)))
-    k = ring_contact_stiffness(eb.catalog["6208"], eb.Scenario(Fr=600.0), "inner")
+    k = ring_contact_stiffness(eb.catalog["6208"], eb.Scenario(omega=500.0, Fr=600.0), "inner")
     # a point at distance d from the centre of mass, moved sideways: 1/m + d^2/J_c
     lam = [1.0 / m + (z - c) ** 2 / jc for z in (-0.1, 0.1)]
     expected = 2.0 / math.sqrt(k * sum(lam))
@@ -404,7 +404,7 @@ def test_fast_mode_time_must_advance():
     # to the run's start (a new run), is refused
     from exudyn_bearing.solvers.element.engine import ExudynEngine
 
-    eng = ExudynEngine("6208", eb.Scenario(t_end=0.001, dt=5e-6), mode="fast")
+    eng = ExudynEngine("6208", eb.Scenario(Fr=3000.0, omega=500.0, t_end=0.001, dt=5e-6), mode="fast")
     el = eng.element
     q = np.zeros(3)
     el._force_uf_fast(eng.mbs, 1e-4, 0, q, q)

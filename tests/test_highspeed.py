@@ -203,7 +203,7 @@ def test_ellipse_step_limit_and_what_a_larger_step_does(thrust_run):
 # a short run: its summary window is not steady, as expected
 @pytest.mark.filterwarnings("ignore::exudyn_bearing.SteadyStateWarning")
 def test_point_level_runs_report_the_contact_keys():
-    s = eb.simulate("6208", eb.Scenario(t_end=0.005, dt=4e-6, tangential="implicit")).summary()
+    s = eb.simulate("6208", eb.Scenario(Fr=3000.0, omega=500.0, t_end=0.005, dt=4e-6, tangential="implicit")).summary()
     for k in ("alpha_inner", "alpha_outer", "beta", "spin_roll_inner", "spin_roll_outer", "dissipation_inner",
               "dissipation_outer", "kinematic_cage_speed"):
         assert k in s and k in s["units"]

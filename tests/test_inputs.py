@@ -107,10 +107,10 @@ def test_material_and_lubricant_unit_mistakes_are_named(cls, kw, match):
 def test_temperatures_in_celsius_are_refused_everywhere():
     msg = r"^temperatures.inner: 20 K is not plausible .*temperatures are in kelvin: 20 degC is 293.15 K"
     with pytest.raises(InputError, match=msg):
-        eb.Scenario(temperatures={"inner": 20.0, "outer": 80.0, "ball": 20.0})
+        eb.Scenario(Fr=3000.0, omega=500.0, temperatures={"inner": 20.0, "outer": 80.0, "ball": 20.0})
     with pytest.raises(InputError, match=msg):
         eb.solve_quasistatic("6208", Fr=3000.0, temperatures={"inner": 20.0, "outer": 80.0, "ball": 20.0})
-    assert eb.Scenario(temperatures={"inner": 353.15}).temperatures == {"inner": 353.15}
+    assert eb.Scenario(Fr=3000.0, omega=500.0, temperatures={"inner": 353.15}).temperatures == {"inner": 353.15}
 
 
 def test_cli_temperature_in_celsius_exits_2(capsys):
@@ -136,10 +136,10 @@ def test_solve_quasistatic_refuses_what_the_data_layer_refuses(kw, match):
 
 def test_one_defect_is_a_sequence_of_one():
     d = eb.Defect("outer", position=0.0, length=1e-3, width=1e-3, depth=1e-4)
-    assert eb.Scenario(defects=d).defects == (d,)
-    assert eb.Scenario(defects=d.to_dict()).defects == (d,)
+    assert eb.Scenario(Fr=3000.0, omega=500.0, defects=d).defects == (d,)
+    assert eb.Scenario(Fr=3000.0, omega=500.0, defects=d.to_dict()).defects == (d,)
     with pytest.raises(InputError, match=r"^defects: expected a Defect"):
-        eb.Scenario(defects="outer")
+        eb.Scenario(Fr=3000.0, omega=500.0, defects="outer")
 
 
 def test_element_options_take_a_lubricant_name_and_one_defect():
@@ -197,7 +197,7 @@ def _cli(capsys, *argv):
 
 @pytest.mark.parametrize("argv, start", [
     (["static", "6208", "--Fr", "3000", "--My", "5"], "My: a moment load needs the free tilt"),
-    (["simulate", "6208", "--dt", "3"], "dt: 3 s is far above any stable step"),
+    (["simulate", "--Fr", "3000", "--omega", "500", "6208", "--dt", "3"], "dt: 3 s is far above any stable step"),
     (["quasistatic", "6208", "--Fr", "3000", "--omega", "1e7"], "omega: the operating interference"),
     (["quasistatic", "6208", "--Fr", "3000", "--fix", "delta_x=1"], "--fix delta_x: 1 m moves the inner ring"),
     (["quasistatic", "6208", "--Fr", "3000", "--My", "5"], "My: a moment load needs the free tilt"),
@@ -281,7 +281,7 @@ def test_every_solver_has_the_same_physical_defaults():
     from exudyn_bearing.solvers.element import BallBearingElement
     qs = inspect.signature(eb.solve_quasistatic).parameters
     el = inspect.signature(BallBearingElement.__init__).parameters
-    sc = eb.Scenario()
+    sc = eb.Scenario(Fr=3000.0, omega=500.0)
     assert qs["ring_growth"].default is sc.ring_growth is el["ringGrowth"].default is RING_GROWTH is True
     assert qs["traction"].default is sc.traction is el["traction"].default is None        # None: the bearing's
     assert qs["hertz_method"].default == sc.hertz == el["hertzModel"].default == "exact"
@@ -290,9 +290,9 @@ def test_every_solver_has_the_same_physical_defaults():
 
 def test_simulate_takes_the_bearings_lubricant_and_traction():
     from exudyn_bearing.simulate import with_bearing_defaults
-    sc, lub = with_bearing_defaults(eb.catalog["ACBB-120"], eb.Scenario(traction_level="ellipse"))
+    sc, lub = with_bearing_defaults(eb.catalog["ACBB-120"], eb.Scenario(Fr=3000.0, omega=500.0, traction_level="ellipse"))
     assert (lub.name, sc.traction) == ("MIL-L-23699_492K", "ehl_mil_l_23699_492K")
-    sc, lub = with_bearing_defaults(eb.catalog["6208"], eb.Scenario(), "MIL-L-23699_492K")
+    sc, lub = with_bearing_defaults(eb.catalog["6208"], eb.Scenario(Fr=3000.0, omega=500.0), "MIL-L-23699_492K")
     assert (lub.name, sc.traction) == ("MIL-L-23699_492K", "lambda_dem")
 
 
@@ -344,7 +344,7 @@ def test_readme_b3_has_the_6208_geometry():
 # a short run: its summary window is not steady, as expected
 @pytest.mark.filterwarnings("ignore::exudyn_bearing.SteadyStateWarning")
 def test_simulate_names_its_lubricant_and_traction(capsys):
-    rc, out, err = _cli(capsys, "simulate", "6208", "--t-end", "0.0004", "--dt", "2e-6", "--json")
+    rc, out, err = _cli(capsys, "simulate", "--Fr", "3000", "--omega", "500", "6208", "--t-end", "0.0004", "--dt", "2e-6", "--json")
     d = json.loads(out)
     assert rc == 0, err
     assert d["lubricant"] == "guessasma2018" and d["ring_growth"] is True

@@ -46,7 +46,7 @@ def test_static_equilibrium_is_the_quasistatic_solution(model, speeds):
     ss = br.SimulationSettings(0.03)
     mbs.SolveDynamic(ss, solverType=ss.timeIntegration.solverType)
     got = mbs.GetNodeOutput(node, exu.OutputVariableType.Position)
-    ref = eb.solve_quasistatic("6208", Fr=FR, Fa=FA, ring_growth=False).displacement
+    ref = eb.solve_quasistatic("6208", Fr=FR, Fa=FA, ring_growth=False, fixed={}).displacement
     assert got[0] == pytest.approx(ref[0], rel=5e-3)
     assert got[2] == pytest.approx(ref[2], rel=5e-3)
     assert abs(got[1]) < 5e-3 * ref[0]
@@ -61,7 +61,8 @@ def test_quasistatic_level_runs_other_solvers(solver, step):
     mbs.Assemble()
     ss = br.SimulationSettings(0.02, stepSize=step, solverType=solver)
     mbs.SolveDynamic(ss, solverType=ss.timeIntegration.solverType)
-    ref = eb.solve_quasistatic("6208", Fr=FR, Fa=FA, ring_growth=False, hertz_method="hamrock_brewe").displacement
+    ref = eb.solve_quasistatic("6208", Fr=FR, Fa=FA, ring_growth=False, hertz_method="hamrock_brewe",
+                                fixed={}).displacement
     got = br.samples()["displacement"][-1]
     assert got[0] == pytest.approx(ref[0], rel=5e-3)
 
@@ -124,7 +125,7 @@ def test_load_along_minus_y_with_load_angle(model):
     ss = br.SimulationSettings(0.03)
     mbs.SolveDynamic(ss, solverType=ss.timeIntegration.solverType)
     got = mbs.GetNodeOutput(node, exu.OutputVariableType.Position)
-    ref = eb.solve_quasistatic("6208", Fr=FR, ring_growth=False).displacement[0]
+    ref = eb.solve_quasistatic("6208", Fr=FR, ring_growth=False, fixed={}).displacement[0]
     assert -got[1] == pytest.approx(ref, rel=5e-3)
     assert abs(got[0]) < 5e-3 * ref
 
@@ -255,7 +256,7 @@ def test_initial_coordinates_start_the_node_at_the_operating_point(model):
     mbs.Assemble()
     ss = br.SimulationSettings(2e-3)
     mbs.SolveDynamic(ss, solverType=ss.timeIntegration.solverType)
-    ref = eb.solve_quasistatic("6208", Fr=FR, Fa=FA, ring_growth=False).displacement
+    ref = eb.solve_quasistatic("6208", Fr=FR, Fa=FA, ring_growth=False, fixed={}).displacement
     got = br.samples()["displacement"]
     assert got[0][0] == pytest.approx(ref[0], rel=5e-3) and got[-1][0] == pytest.approx(ref[0], rel=5e-3)
 
@@ -270,5 +271,5 @@ def test_ball_element_initial_coordinates_have_the_levels_meaning():
     mbs.SetNodeParameter(node, "initialCoordinates", list(q0))
     mbs.Assemble()
     got = mbs.GetNodeOutput(node, exu.OutputVariableType.Position, exu.ConfigurationType.Initial)
-    ref = eb.solve_quasistatic("6208", Fr=FR, ring_growth=False).displacement
+    ref = eb.solve_quasistatic("6208", Fr=FR, ring_growth=False, fixed={}).displacement
     assert got[0] == pytest.approx(ref[0], rel=5e-3)

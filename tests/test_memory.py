@@ -26,7 +26,7 @@ def test_estimate_is_the_bytes_a_run_keeps():
 
 
 def test_refusal_names_sample_dt_and_a_value_that_fits():
-    sc = eb.Scenario(t_end=1e6, dt=1e-6)
+    sc = eb.Scenario(Fr=3000.0, omega=500.0, t_end=1e6, dt=1e-6)
     budget = 2 ** 30
     with pytest.raises(InputError) as e:
         check_sample_memory("6208", sc, budget=budget)
@@ -34,19 +34,19 @@ def test_refusal_names_sample_dt_and_a_value_that_fits():
     assert msg.startswith("sample_dt:") and "t_end" in msg
     fit = float(re.search(r"--sample-dt (\S+)\)", msg).group(1))
     # the value it names fits, and one a third smaller would not: the suggestion is close to the limit
-    assert check_sample_memory("6208", eb.Scenario(t_end=1e6, dt=1e-6, sample_dt=fit), budget=budget) <= budget
+    assert check_sample_memory("6208", eb.Scenario(Fr=3000.0, omega=500.0, t_end=1e6, dt=1e-6, sample_dt=fit), budget=budget) <= budget
     with pytest.raises(InputError):
-        check_sample_memory("6208", eb.Scenario(t_end=1e6, dt=1e-6, sample_dt=fit / 1.5), budget=budget)
+        check_sample_memory("6208", eb.Scenario(Fr=3000.0, omega=500.0, t_end=1e6, dt=1e-6, sample_dt=fit / 1.5), budget=budget)
 
 
 def test_signals_that_do_not_fit_name_signal_dt():
-    sc = eb.Scenario(t_end=1e4, dt=1e-6, sample_dt=1.0, signal_dt=1e-6)
+    sc = eb.Scenario(Fr=3000.0, omega=500.0, t_end=1e4, dt=1e-6, sample_dt=1.0, signal_dt=1e-6)
     with pytest.raises(InputError, match="^signal_dt:"):
         check_sample_memory("6208", sc, budget=2 ** 30)
 
 
 def test_cli_refuses_before_any_work(capsys):
     # 1e9 s at the default 0.1 ms samples: 1e13 samples, more than any machine holds
-    assert main(["simulate", "--t-end", "1e9", "--dt", "1e-6"]) == 2
+    assert main(["simulate", "--Fr", "3000", "--omega", "500", "--t-end", "1e9", "--dt", "1e-6"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "sample_dt" in err[0] and "--sample-dt" in err[0]

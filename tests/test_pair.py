@@ -177,6 +177,10 @@ def test_cli_pair_json(capsys, command):
     assert sum(fr) == pytest.approx(2000.0, rel=1e-6)  # both push along +x: the shares add up to F_r
     assert fa[0] - fa[1] == pytest.approx(600.0, rel=1e-6)  # bearing 0 carries +z: the difference is F_a
     assert np.asarray(d["stiffness"]).shape == (5, 5)
+    if command == "stiffness":  # averaged over the ball-set phases as a single bearing's (docs/defaults.md)
+        from exudyn_bearing.solvers.quasistatic.coefficients import DEFAULT_N_PHASES
+
+        assert d["phases"] == DEFAULT_N_PHASES and d["phase_spread_stiffness"] > 0.0
     if command != "stiffness":
         assert all(e["C"] > 0.0 and e["L10"] > 0.0 for e in d["bearings"])
         lives = [e["L10"] for e in d["bearings"]]

@@ -83,7 +83,7 @@ def test_low_speed_reproduces_the_discrete_harris_solution(name, fr, fa, omega):
 
 def test_6208_radial_q_max_published():
     # docs/theory/reference_cases.md: nine discrete balls at F_r = 3000 N, P_d = 0: about 1462 N; load free of tilt by symmetry
-    s = solve_quasistatic("6208", 3000.0)
+    s = solve_quasistatic("6208", 3000.0, fixed={})  # free: the tilts are held by symmetry
     assert s.q_max_inner == pytest.approx(1462, abs=1.0)
     assert s.held == {"delta_a": "symmetry", "tilt_x": "symmetry", "tilt_y": "symmetry"}
     assert max(abs(v) for v in s.reactions.values()) < 1e-6
@@ -98,7 +98,7 @@ def test_6208_radial_q_max_published():
 ])
 def test_free_tilt_and_moments_against_an_independent_solver(name, loads):
     b = catalog[name]
-    s = solve_quasistatic(b, loads[0], loads[2], loads[3], loads[4], Fy=loads[1])
+    s = solve_quasistatic(b, loads[0], loads[2], loads[3], loads[4], Fy=loads[1], fixed={})
     u, r = independent_solve(b, np.array(loads), s.displacement)
     # the two differ only in where the Hertz curvature radii are taken (r_p against the ball centre)
     w = np.array([1.0, 1.0, 1.0, b.pitch_radius, b.pitch_radius])
@@ -108,7 +108,7 @@ def test_free_tilt_and_moments_against_an_independent_solver(name, loads):
 
 def test_combined_load_free_tilt_against_held_tilt_6208():
     # the held tilt needs the reaction moment; releasing it more than doubles the radial displacement
-    free = solve_quasistatic("6208", 3000.0, 1000.0)
+    free = solve_quasistatic("6208", 3000.0, 1000.0, fixed={})
     held = solve_quasistatic("6208", 3000.0, 1000.0, fixed={"tilt_x": 0.0, "tilt_y": 0.0})
     u, r = independent_solve(catalog["6208"], np.array([3000.0, 0, 1000.0, 0, 0]), held.displacement, held=(3, 4))
     assert held.reactions["tilt_y"] == pytest.approx(-r[4], rel=2e-3)
@@ -133,7 +133,7 @@ def test_symmetric_thrust_gives_identical_balls(phase):
 
 @pytest.mark.parametrize("name, loads", [("6208", (3000.0, 1000.0, 0.0, 0.0)), ("7208", (2000.0, 6000.0, 10.0, 0.0))])
 def test_stiffness_is_symmetric_and_equals_finite_differences_of_reactions(name, loads):
-    s = solve_quasistatic(name, *loads)
+    s = solve_quasistatic(name, *loads, fixed={})
     k = s.stiffness
     arm = catalog[name].pitch_radius
     w = np.array([1, 1, 1, 1 / arm, 1 / arm])
@@ -230,7 +230,7 @@ def test_cli_json_keys_and_units(capsys):
     (["quasistatic", "6208", "--Fr", "100", "--control", "middle"], "control"),
     (["quasistatic", "6208", "--Fr", "100", "--traction", "honey"], "traction"),
     (["quasistatic", "6208", "--Fr", "100", "--fix", "tilt_z=0"], "--fix:"),
-    (["simulate", "--bearing", "7208", "--t-end", "0.001"], "axial_load"),
+    (["simulate", "--Fr", "3000", "--omega", "500", "--bearing", "7208", "--t-end", "0.001"], "axial_load"),
     (["static", "7208", "--Fr", "3000"], "Fa:"),
 ])
 def test_bad_input_is_a_one_line_error(argv, word, capsys):

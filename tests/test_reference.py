@@ -21,7 +21,7 @@ FAST = dict(dt=4e-6, tangential="implicit")  # within the normal-contact limit (
 
 
 def run(bearing="6208", **kw):
-    opts = dict(FAST)
+    opts = dict(Fr=3000.0, omega=500.0, **FAST)  # the papers' case (Scenario's loads and speed default to 0)
     opts.update(kw)
     return eb.simulate(bearing, eb.Scenario(**opts))
 
@@ -264,19 +264,19 @@ def test_7208_under_combined_load_carries_both_loads():
 
 def test_bad_scenarios_rejected():
     with pytest.raises(eb.InputError, match="^dt"):
-        eb.Scenario(dt=-1e-6)
+        eb.Scenario(Fr=3000.0, omega=500.0, dt=-1e-6)
     with pytest.raises(eb.InputError, match="^integrator"):
-        eb.Scenario(integrator="rk4", friction="history")
+        eb.Scenario(Fr=3000.0, omega=500.0, integrator="rk4", friction="history")
     with pytest.raises(eb.InputError, match="^cage"):
-        ReferenceEngine("6004", eb.Scenario(cage=True))
+        ReferenceEngine("6004", eb.Scenario(Fr=3000.0, omega=500.0, cage=True))
     with pytest.raises(eb.InputError, match="^Fr"):
-        eb.Scenario(Fr=float("nan"))
+        eb.Scenario(omega=500.0, Fr=float("nan"))
 
 
 def test_protocol_speed_matches_the_kernel_profile():
     from exudyn_bearing.model.motion import omega_profile
 
-    sc = eb.Scenario(omega=500.0, t_ramp_up=0.01, t_steady=0.02, t_ramp_down=0.01)
+    sc = eb.Scenario(Fr=3000.0, omega=500.0, t_ramp_up=0.01, t_steady=0.02, t_ramp_down=0.01)
     for t in np.linspace(-0.001, 0.05, 53):
         assert sc.omega_at(t) == pytest.approx(omega_profile(t, 500.0, 0.01, 0.02, 0.01), abs=1e-12)
 

@@ -85,8 +85,8 @@ def test_saved_summary_json_has_units_and_window(steady, tmp_path):
 
 def test_run_shorter_than_one_sample_is_refused():
     with pytest.raises(eb.InputError, match=r"^t_end: must be >= sample_dt \(0.0001 s\)"):
-        eb.Scenario(t_end=5e-5, sample_dt=1e-4)
-    eb.Scenario(t_end=1e-4, sample_dt=1e-4)  # one sample is enough
+        eb.Scenario(Fr=3000.0, omega=500.0, t_end=5e-5, sample_dt=1e-4)
+    eb.Scenario(Fr=3000.0, omega=500.0, t_end=1e-4, sample_dt=1e-4)  # one sample is enough
 
 
 # a short run: its summary window is not steady, as expected
@@ -99,7 +99,7 @@ def test_fast_mode_element_counts_its_steps():
 
     t_end, dt = 0.002, 2.5e-6  # two sub-steps of 2.5 us: within the fast mode's 5.7 us limit (no warning)
     for sub in (1, 2):
-        eng = ExudynEngine("6208", eb.Scenario(t_end=t_end, dt=dt, tangential="implicit"), mode="fast",
+        eng = ExudynEngine("6208", eb.Scenario(Fr=3000.0, omega=500.0, t_end=t_end, dt=dt, tangential="implicit"), mode="fast",
                            sub_steps=sub)
         with warnings.catch_warnings():
             warnings.simplefilter("error", eb.StepSizeWarning)

@@ -82,16 +82,16 @@ def test_mass_and_inertia_of_a_cage_against_the_annulus_formulas(b6208):
 @pytest.mark.parametrize("value, name", [(True, "torus"), (False, "none"), ("rigid", "rigid"), ("torus", "torus"),
                                          ("none", "none")])
 def test_cage_option_and_its_aliases(value, name):
-    assert eb.Scenario(cage=value).cage == name
+    assert eb.Scenario(Fr=3000.0, omega=500.0, cage=value).cage == name
 
 
 def test_cage_option_refusals(b6208):
     with pytest.raises(InputError, match="cage"):
-        eb.Scenario(cage="steel")
+        eb.Scenario(Fr=3000.0, omega=500.0, cage="steel")
     with pytest.raises(InputError, match="rigid_cage"):
-        eb.Scenario(cage="torus", rigid_cage=estimated_cage(b6208))
+        eb.Scenario(Fr=3000.0, omega=500.0, cage="torus", rigid_cage=estimated_cage(b6208))
     with pytest.raises(InputError, match="rigid_cage"):
-        eb.Scenario(cage="rigid", rigid_cage="brass")
+        eb.Scenario(Fr=3000.0, omega=500.0, cage="rigid", rigid_cage="brass")
 
 
 def test_the_torus_cage_needs_cage_balls():
@@ -313,9 +313,9 @@ def test_gravity_and_unbalance_act_on_the_cage_and_count_as_drive():
 
 def test_gravity_and_unbalance_refusals(b6208):
     with pytest.raises(InputError, match="gravity"):
-        eb.Scenario(cage="rigid", gravity=(0.0, -981.0, 0.0))
+        eb.Scenario(Fr=3000.0, omega=500.0, cage="rigid", gravity=(0.0, -981.0, 0.0))
     with pytest.raises(InputError, match="gravity.*rigid"):
-        eb.Scenario(gravity=(0.0, -9.81, 0.0))
+        eb.Scenario(Fr=3000.0, omega=500.0, gravity=(0.0, -9.81, 0.0))
     with pytest.raises(InputError, match="unbalance"):
         _cage(b6208, unbalance=-1.0)
     with pytest.raises(InputError, match="unbalance.*kg m"):

@@ -62,7 +62,7 @@ def test_ctrl_c_in_the_reference_run_keeps_the_samples_so_far(monkeypatch):
         return real(n_steps, *args)
 
     monkeypatch.setattr(ref_engine, "run_verlet", interrupted)
-    sc = eb.Scenario(Fr=1000.0, t_end=2e-3, dt=5e-6, sample_dt=5e-5, tangential="implicit")
+    sc = eb.Scenario(omega=500.0, Fr=1000.0, t_end=2e-3, dt=5e-6, sample_dt=5e-5, tangential="implicit")
     with pytest.raises(RunInterrupted) as exc:
         _quiet(ReferenceEngine("6208", sc).run, progress=False, chunk_steps=100)
     assert isinstance(exc.value, KeyboardInterrupt)
@@ -79,7 +79,7 @@ def test_ctrl_c_in_the_exudyn_run_is_a_run_interrupted_not_exudyns_error():
     # hands on Ctrl-C as RunInterrupted with the samples so far
     from exudyn_bearing.solvers.element.engine import ExudynEngine
 
-    sc = eb.Scenario(Fr=3000.0, t_end=2e-3, dt=5e-6, sample_dt=1e-4)
+    sc = eb.Scenario(omega=500.0, Fr=3000.0, t_end=2e-3, dt=5e-6, sample_dt=1e-4)
     eng = _quiet(ExudynEngine, "6208", sc)
     el = eng.element
     inner, count = el._force_uf, [0]
@@ -103,7 +103,7 @@ def test_ctrl_c_before_the_run_is_one_line_and_status_130(monkeypatch, capsys):
         raise KeyboardInterrupt
 
     monkeypatch.setattr(cli_simulate, "simulate", stopped)
-    assert main(["simulate", "6208", "--t-end", "1e-3"]) == 130
+    assert main(["simulate", "--Fr", "3000", "--omega", "500", "6208", "--t-end", "1e-3"]) == 130
     err = capsys.readouterr().err
     assert err == "exudyn-bearing: simulate stopped by SIGINT\n"
 
@@ -131,7 +131,7 @@ def test_sigint_of_a_long_simulate_says_its_estimate_then_one_line_130(tmp_path)
     # 1e9 steps: the estimated wall time comes on stderr first (within the first second of integration), then
     # the progress; SIGINT after a sample: one line, status 130, no traceback, the samples in --out
     out = tmp_path / "run"
-    proc = subprocess.Popen([sys.executable, "-m", "exudyn_bearing", "simulate", "6208", "--t-end", "1e3",
+    proc = subprocess.Popen([sys.executable, "-m", "exudyn_bearing", "simulate", "--Fr", "3000", "--omega", "500", "6208", "--t-end", "1e3",
                              "--dt", "1e-6", "--sample-dt", "0.05", "--out", str(out)], cwd=ROOT,
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, preexec_fn=_interruptible)
     try:
@@ -172,7 +172,7 @@ def test_the_memory_check_counts_the_address_space_limit(monkeypatch):
     room, what = memory.limit_room()
     assert room <= 2 ** 30 and "ulimit -v" in what
     assert memory.available_memory() <= 2 ** 30
-    sc = eb.Scenario(t_end=0.3, dt=1e-6, sample_dt=1e-6)  # 3e5 samples of 9 balls: 1.2 GiB
+    sc = eb.Scenario(Fr=3000.0, omega=500.0, t_end=0.3, dt=1e-6, sample_dt=1e-6)  # 3e5 samples of 9 balls: 1.2 GiB
     with pytest.raises(InputError, match=r"^sample_dt: .*ulimit -v.*--sample-dt .*--t-end"):
         memory.check_sample_memory("6208", sc)
 
@@ -190,7 +190,7 @@ def test_simulate_under_ulimit_v_refuses_instead_of_numpys_memory_error():
         _interruptible()
         resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
 
-    p = subprocess.run([sys.executable, "-m", "exudyn_bearing", "simulate", "6208", "--t-end", "0.5",
+    p = subprocess.run([sys.executable, "-m", "exudyn_bearing", "simulate", "--Fr", "3000", "--omega", "500", "6208", "--t-end", "0.5",
                         "--sample-dt", "1e-6", "--dt", "1e-6"], cwd=ROOT, capture_output=True, text=True,
                        preexec_fn=limited, timeout=300)
     assert p.returncode == 2, p.stderr
@@ -200,7 +200,7 @@ def test_simulate_under_ulimit_v_refuses_instead_of_numpys_memory_error():
 
 # -- item 4c: the wall-time estimate --------------------------------------------------------------------------
 def test_wall_time_message_names_the_estimate_and_what_shortens_it():
-    sc = eb.Scenario(t_end=1e3, dt=1e-6, sample_dt=0.1)
+    sc = eb.Scenario(Fr=3000.0, omega=500.0, t_end=1e3, dt=1e-6, sample_dt=0.1)
     msg = wall_time_message(10 ** 9, 10 ** 5, 0.2, sc, 6e-6)
     assert msg.startswith("1e+09 steps of dt = 1e-06 s") and "--t-end" in msg and "--dt" in msg
     assert re.search(r"estimated wall time [0-9.]+ min \(2 us per step over the first 100000 steps\)", msg)
@@ -224,7 +224,7 @@ def test_a_run_estimated_long_says_so_once_before_its_progress(monkeypatch, caps
 
     monkeypatch.setattr(ref_engine, "time", Clock())
     monkeypatch.setattr(memory, "LONG_RUN_S", 10.0)  # the 400 steps at 1 s per chunk of 20: 20 s or more
-    sc = eb.Scenario(Fr=1000.0, t_end=2e-3, dt=5e-6, tangential="implicit")
+    sc = eb.Scenario(omega=500.0, Fr=1000.0, t_end=2e-3, dt=5e-6, tangential="implicit")
     _quiet(ReferenceEngine("6208", sc).run, progress=None)
     err = capsys.readouterr().err
     lines = [x for x in err.replace("\r", "\n").splitlines() if "estimated wall time" in x]
@@ -241,7 +241,7 @@ def test_a_long_exudyn_run_says_its_estimate_too(monkeypatch, capsys):
 
     monkeypatch.setattr(memory, "LONG_RUN_S", 1e-9)
     monkeypatch.setattr(el_engine, "ESTIMATE_AFTER_S", 0.0)
-    sc = eb.Scenario(Fr=3000.0, t_end=1e-3, dt=5e-6, sample_dt=1e-4)
+    sc = eb.Scenario(omega=500.0, Fr=3000.0, t_end=1e-3, dt=5e-6, sample_dt=1e-4)
     _quiet(el_engine.ExudynEngine("6208", sc).run)
     err = capsys.readouterr().err
     assert err.count("estimated wall time") == 1 and err.startswith("[exudyn] 200 steps of dt = 5e-06 s"), err
@@ -277,7 +277,7 @@ def test_history_friction_has_one_rule_for_scenario_and_element():
     from exudyn_bearing.solvers.element.engine import solve_dynamic
 
     with pytest.raises(InputError) as sc_err:
-        eb.Scenario(integrator="rk4", friction="history")
+        eb.Scenario(Fr=3000.0, omega=500.0, integrator="rk4", friction="history")
     assert str(sc_err.value) == str(history_friction_error("history", "rk4", "integrator"))
     mbs, el = _element()
     expected = str(history_friction_error("history", "RK44", "solverType"))
@@ -306,7 +306,7 @@ def test_history_friction_has_one_rule_for_scenario_and_element():
 # -- item 11: the point level's friction outputs --------------------------------------------------------------
 @pytest.fixture(scope="module")
 def point_run():
-    return _quiet(eb.simulate, "6208", eb.Scenario(Fr=3000.0, t_end=2e-3, dt=4e-6, sample_dt=1e-4),
+    return _quiet(eb.simulate, "6208", eb.Scenario(omega=500.0, Fr=3000.0, t_end=2e-3, dt=4e-6, sample_dt=1e-4),
                   progress=False)
 
 
@@ -335,7 +335,7 @@ def test_results_say_the_ellipse_level_and_history_free_laws_are_not_flagged(poi
 
 
 def test_simulate_marks_the_rows_and_the_json(capsys):
-    argv = ["simulate", "6208", "--t-end", "2e-3", "--dt", "4e-6"]
+    argv = ["simulate", "--Fr", "3000", "--omega", "500", "6208", "--t-end", "2e-3", "--dt", "4e-6"]
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", SteadyStateWarning)
         assert main(argv) == 0

@@ -15,7 +15,7 @@ ROOT = Path(__file__).resolve().parents[1]
 # a short run: its summary window is not steady, as expected
 @pytest.mark.filterwarnings("ignore::exudyn_bearing.SteadyStateWarning")
 def test_saved_run_loads_back(tmp_path):
-    r = eb.simulate("6208", eb.Scenario(t_end=0.002, dt=5e-6, sample_dt=2e-4))
+    r = eb.simulate("6208", eb.Scenario(Fr=3000.0, omega=500.0, t_end=0.002, dt=5e-6, sample_dt=2e-4))
     npz, js = r.save(tmp_path)
     back = Results.load(npz)
     assert back.summary()["q_max_inner"] == pytest.approx(r.summary()["q_max_inner"], rel=1e-12)

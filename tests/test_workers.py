@@ -96,7 +96,7 @@ def _cleanup(proc, workers):
 
 
 # a dataset that runs long enough to be signalled: two cases of 20 s each on two workers
-DATASET = ["-m", "exudyn_bearing", "dataset", "ds", "--faults", "healthy", "outer", "--t-end", "20", "--workers", "2"]
+DATASET = ["-m", "exudyn_bearing", "dataset", "6205", "ds", "--faults", "healthy", "outer", "--t-end", "20", "--workers", "2"]
 SWEEP = textwrap.dedent("""
     from exudyn_bearing.sweep import run_sweep
     cases = {f"c{i}": dict(bearing="6208", scenario=dict(Fr=1000.0 + i, t_end=30.0, dt=5e-6,
@@ -176,7 +176,7 @@ def test_an_interrupted_run_ends_its_progress_line(monkeypatch, capsys):
 
     monkeypatch.setattr(engine_module, "time", Clock())
     monkeypatch.setattr(engine_module, "run_verlet", interrupted)
-    eng = engine_module.ReferenceEngine("6208", Scenario(Fr=1000.0, t_end=2e-3, dt=5e-6, tangential="implicit"))
+    eng = engine_module.ReferenceEngine("6208", Scenario(omega=500.0, Fr=1000.0, t_end=2e-3, dt=5e-6, tangential="implicit"))
     with pytest.raises(KeyboardInterrupt):
         eng.run(progress=True, chunk_steps=100)
     err = capsys.readouterr().err
@@ -216,7 +216,7 @@ def test_cli_exit_status_3_when_a_case_failed(tmp_path, monkeypatch, capsys):
 
     monkeypatch.setattr(sw, "simulate", _failing_outer(sw.simulate))
     with pytest.raises(SystemExit) as e:
-        main(["dataset", str(tmp_path), "--faults", "healthy", "outer", "--t-end", "0.002", "--workers", "1"])
+        main(["dataset", "6205", str(tmp_path), "--faults", "healthy", "outer", "--t-end", "0.002", "--workers", "1"])
     assert e.value.code == 3
     out = capsys.readouterr().out
     assert "cases.failed" in out and (tmp_path / "index.csv").exists()

@@ -1,12 +1,17 @@
-"""``dataset OUT``: labelled healthy / defective signals over a grid of speeds, loads and defect sizes.
+"""``dataset BEARING OUT``: labelled healthy / defective signals over a grid of speeds, loads and defect sizes.
 
 Exit status 0 when every case finished, 3 when some failed (listed on
 stderr and in OUT/index.json; the index.csv of the others is written, and
 the same command runs the failed ones again), 130 after Ctrl-C and 143
 after SIGTERM (one line on stderr; the same command resumes).
+
+BEARING comes first, as in every command. The older ``dataset OUT`` (the
+bearing then defaulted to 6205) and ``dataset OUT BEARING`` still run, with
+a deprecation note on stderr.
 """
 from __future__ import annotations
 
+import argparse
 import json
 import sys
 from collections import Counter
@@ -15,13 +20,34 @@ from pathlib import Path
 from ..datasets import FAULTS, build_dataset
 from ..sweep import INDEX, SweepInterrupted
 from ..outputs.jsonio import to_jsonable
-from .common import add_bearing_argument, bearing_spec_from_args, finite_float, print_table
+from ..data import InputError, catalog
+from .common import BEARING_HELP, finite_float, print_table
+
+#: The bearing of the deprecated ``dataset OUT`` form (the old default).
+OLD_DEFAULT_BEARING = "6205"
+
+
+def bearing_and_out(args) -> tuple[str, str]:
+    """(BEARING, OUT) of the arguments: ``dataset BEARING OUT``; the older ``dataset OUT [--bearing B]`` and
+    ``dataset OUT BEARING`` with a deprecation note on stderr."""
+    first, second, option = args.bearing, args.out, args.bearing_option
+    if second is None and (first in catalog or first.endswith(".json")):
+        raise InputError(f"OUT: dataset needs an output folder after the bearing: 'dataset {first} OUT'")
+    if second is None or (second in catalog and first not in catalog and not first.endswith(".json")):
+        bearing = second or option or OLD_DEFAULT_BEARING
+        print(f"exudyn-bearing: note: 'dataset OUT [BEARING]' is deprecated: give the bearing first, "
+              f"'dataset {bearing} {first}' (as every command)", file=sys.stderr)
+        return bearing, first
+    if option is not None and option != first:
+        raise InputError(f"bearing: given twice ({first!r} and --bearing {option!r})")
+    return first, second
 
 
 def add_parser(sub):
     p = sub.add_parser("dataset", help="labelled condition-monitoring signals (NPZ per case, index.csv), resumable")
-    p.add_argument("out", metavar="OUT", help="output folder (an interrupted run resumes there)")
-    add_bearing_argument(p, default="6205")
+    p.add_argument("bearing", metavar="BEARING", help=BEARING_HELP)
+    p.add_argument("out", metavar="OUT", nargs="?", help="output folder (an interrupted run resumes there)")
+    p.add_argument("--bearing", dest="bearing_option", metavar="BEARING", help=argparse.SUPPRESS)
     p.add_argument("--rpm", type=finite_float, nargs="+", default=[1797.0], help="inner-ring speeds [1/min]")
     p.add_argument("--load", type=finite_float, nargs="+", default=[1000.0], help="radial loads [N]")
     p.add_argument("--size", type=finite_float, nargs=3, action="append", metavar=("LENGTH", "WIDTH", "DEPTH"),
@@ -38,8 +64,9 @@ def add_parser(sub):
 
 
 def run(args):
+    bearing, args.out = bearing_and_out(args)
     try:
-        rows = build_dataset(args.out, bearing=bearing_spec_from_args(args), speeds_rpm=tuple(args.rpm),
+        rows = build_dataset(args.out, bearing=bearing, speeds_rpm=tuple(args.rpm),
                              loads=tuple(args.load), sizes=tuple(tuple(s) for s in (args.size or [(1e-3, 1.5e-3, 1e-4)])),
                              faults=tuple(args.faults), fs=args.fs, t_end=args.t_end,
                              steps_per_sample=args.steps_per_sample, workers=args.workers, progress=args.progress)

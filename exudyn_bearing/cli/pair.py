@@ -67,6 +67,32 @@ def _named(exc, args) -> InputError:
     return InputError(msg)
 
 
+def _phase_mean_stiffness(b, args, p, omega, loads, common, opts):
+    """(phases, spread, K): the pair's stiffness averaged over ``args.phases`` ball-set positions within one ball
+    pitch (the first is ``p``'s; solvers.quasistatic.coefficients' rule and spread: largest range of an entry
+    over the positions relative to the largest entry); the spread None with one position."""
+    from ..solvers.quasistatic.pair import solve_pair
+
+    n = args.phases
+    if not 1 <= n <= 64:
+        raise InputError(f"--phases: expected an integer in [1, 64], got {n}")
+    if n == 1:
+        return 1, None, p.stiffness
+    ks = [np.asarray(p.stiffness, float)]
+    for m in range(1, n):
+        try:
+            q = solve_pair(b, args.arrangement, omega=omega, phase=2.0 * np.pi / b.n_balls * m / n, **loads,
+                           **common, **opts)
+        except InputError as exc:
+            raise _named(exc, args) from None
+        ks.append(np.asarray(q.stiffness, float))
+    ks = np.array(ks)
+    finite = np.isfinite(ks).all(axis=0)  # NaN where a DOF is held (no spacing)
+    scale = max(float(np.abs(ks[0][finite]).max()) if finite.any() else 0.0, 1e-300)
+    spread = float(np.ptp(np.where(finite, ks, 0.0), axis=0).max() / scale)
+    return n, spread, ks.mean(axis=0)
+
+
 def run_pair(args, command, rating=None, warn_speed=None, print_matrix=None):
     """``static``, ``quasistatic`` or ``stiffness`` of a pair: solve, print JSON or text. The command hands
     over its own pieces (no import back into the commands): ``rating`` the keyword arguments of rating_life
@@ -111,8 +137,6 @@ def run_pair(args, command, rating=None, warn_speed=None, print_matrix=None):
         if args.speeds is not None or args.rpms is not None:
             raise InputError("--arrangement: a pair's stiffness at one speed only (--omega or --rpm), not a table "
                              "over --speeds / --rpms")
-        if args.phases != 1:
-            raise InputError("--phases: one ball-set position for a pair (leave --phases out)")
         from .common import RPM_TO_RAD_S
 
         omega = args.omega if args.omega is not None else (args.rpm * RPM_TO_RAD_S if args.rpm is not None
@@ -142,6 +166,11 @@ def run_pair(args, command, rating=None, warn_speed=None, print_matrix=None):
     if warn_speed is not None and omega:
         warn_speed(b, omega)  # after the solve: a refusal stays the one line on stderr
     d = p.to_dict(rating=rating)
+    kmat = p.stiffness
+    if command == "stiffness":  # the pair's stiffness averaged over --phases ball-set positions, as one bearing's
+        d["phases"], d["phase_spread_stiffness"], kmat = _phase_mean_stiffness(b, args, p, solve_omega, loads,
+                                                                               common, opts)
+        d["stiffness"] = kmat
     d["command"] = command
     d["tilt"] = args.tilt
     if args.json:
@@ -156,6 +185,8 @@ def run_pair(args, command, rating=None, warn_speed=None, print_matrix=None):
     if print_matrix is not None:
         from ..model.coefficients import STIFFNESS_UNITS
 
-        print_matrix("pair stiffness K = -dF/dq (shaft at the pair's centre)", np.asarray(p.stiffness) + 0.0,
-                      STIFFNESS_UNITS)
+        spread = d.get("phase_spread_stiffness")
+        print_matrix("pair stiffness K = -dF/dq (shaft at the pair's centre" + (
+            f"; mean of {d['phases']} ball-set phases, spread {100 * spread:.3g} %)" if spread is not None else ")"),
+            np.asarray(kmat) + 0.0, STIFFNESS_UNITS)
 

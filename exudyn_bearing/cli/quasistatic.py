@@ -16,7 +16,8 @@ from ..solvers.quasistatic import solve_quasistatic
 from ..solvers.quasistatic.kinematics import CONTROLS
 from .common import (add_strip_arguments, add_bearing_argument, add_hold_arguments, add_lubricant_argument, add_load_arguments,
                      add_ring_growth_argument, add_traction_argument, bearing_from_args, explained, finite_float,
-                     fixed_from_args, format_value, lubricant_from_args, solver_header, traction_from_args)
+                     fixed_from_args, format_value, lubricant_from_args, omega_from_args, solver_header,
+                     traction_from_args)
 from .pair import add_pair_arguments, pair_requested, run_pair
 from ..solvers.quasistatic.losses import LOSS_COMPONENTS
 from ..solvers.quasistatic.thermal import solve_thermal
@@ -30,8 +31,9 @@ def add_parser(sub):
     add_bearing_argument(p)
     add_load_arguments(p)
     speed = p.add_mutually_exclusive_group()
-    speed.add_argument("--omega", type=finite_float, help="inner-ring speed [rad/s]")
+    speed.add_argument("--omega", type=finite_float, help="inner-ring speed [rad/s] (default 0)")
     speed.add_argument("--rpm", type=finite_float, help="inner-ring speed [1/min]")
+    p.set_defaults(omega_default=0.0)  # omega_from_args: at rest without --omega / --rpm (docs/defaults.md)
     p.add_argument("--omega-outer", type=finite_float, default=0.0, help="outer-ring speed [rad/s] (default fixed)")
     p.add_argument("--control", choices=CONTROLS, default="auto",
                    help="ball kinematics: race control (outer, inner, auto = Jones' criterion) or min-energy (Gupta)")
@@ -72,7 +74,7 @@ def run(args):
     b = bearing_from_args(args)
     if args.Pd is not None:
         b = b.with_clearance(args.Pd, name="Pd")
-    omega = args.omega if args.omega is not None else (args.rpm * math.pi / 30.0 if args.rpm is not None else 0.0)
+    omega = omega_from_args(args)
     temps = dict(zip(("inner", "outer", "ball"), args.temperature)) if args.temperature else None
     traction = traction_from_args(args, b)
     check_unused("--thermal", args.thermal, (("--oil-flow", args.oil_flow, None),

@@ -6,6 +6,7 @@ import json
 import warnings
 from pathlib import Path
 
+from ..data import InputError
 from ..model.record import RunInterrupted
 from ..model.scenario import CONTROLS, INITIAL_STATES, TRACTION_LEVELS, Scenario
 from ..outputs.jsonio import to_jsonable
@@ -28,11 +29,12 @@ def add_parser(sub):
     add_bearing_argument(p, default="6208")
     p.add_argument("--engine", default="reference", choices=("reference", "exudyn"),
                    help="numba DEM reference core, or the same scene in Exudyn with the bearing element")
-    p.add_argument("--Fr", type=finite_float, default=3000.0, help="radial load [N]")
+    p.add_argument("--Fr", type=finite_float, default=0.0, help="radial load [N] (default 0; the README's example: "
+                                                               "--Fr 3000 --omega 500)")
     p.add_argument("--Fa", type=finite_float, default=0.0, help="axial load [N]")
     p.add_argument("--Pd", type=finite_float, help="diametral clearance [m] (negative: preload, e.g. -12.6e-6); "
                                                     "default: the bearing's own")
-    add_speed_arguments(p, default=500.0)
+    add_speed_arguments(p, what="none: a dynamic run needs a speed (--omega 0: at rest)")
     add_lubricant_argument(p)
     p.add_argument("--t-end", type=finite_float,
                    help=f"simulated time [s] (default: the sum of the --ramp durations, else {DEFAULT_T_END:g})")
@@ -93,7 +95,11 @@ def add_parser(sub):
 def scenario_from_args(args) -> Scenario:
     """The Scenario of the arguments: --ramp sets the protocol and, without --t-end, the run length."""
     t_end = args.t_end
-    kw = dict(Fr=args.Fr, Fa=args.Fa, omega=omega_from_args(args), Pd=args.Pd, dt=args.dt,
+    omega = omega_from_args(args)
+    if omega is None:  # no default speed (docs/defaults.md): a run needs one, the README's example is 500 rad/s
+        raise InputError("omega: simulate needs a speed: give --omega RAD_S or --rpm RPM (the README's example: "
+                         "--Fr 3000 --omega 500; --omega 0 for a run at rest)")
+    kw = dict(Fr=args.Fr, Fa=args.Fa, omega=omega, Pd=args.Pd, dt=args.dt,
               sample_dt=args.sample_dt, integrator=args.integrator, friction=args.friction,
               tangential=args.tangential, cage_damping=args.cage_damping, hertz=args.hertz, film=args.film,
               cage=args.cage,

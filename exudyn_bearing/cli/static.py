@@ -82,7 +82,7 @@ def add_parser(sub):
     p = sub.add_parser("static", help="load distribution and lubrication map (zero-speed quasi-static)",
                        description=HELP)
     add_bearing_argument(p)
-    p.add_argument("--Fr", type=finite_float, required=True, help="radial load [N] on the inner ring")
+    p.add_argument("--Fr", type=finite_float, default=0.0, help="radial load [N] on the inner ring (default 0)")
     p.add_argument("--Fa", type=finite_float, default=0.0, help="axial load [N] on the inner ring")
     p.add_argument("--Mx", type=finite_float, default=0.0, help="moment [N m] about x (needs --tilt free)")
     p.add_argument("--My", type=finite_float, default=0.0, help="moment [N m] about y (needs --tilt free)")

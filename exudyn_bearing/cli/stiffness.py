@@ -4,8 +4,11 @@ operating point from the quasi-static solver, or a table over speeds.
 One speed (``--omega`` or ``--rpm``; default 0): ``--json`` prints
 ``stiffness`` and ``damping`` (5x5, order x, y, axial, tilt x, tilt y),
 ``axes``, ``units`` (per entry), the operating point (``bearing``, loads,
-``omega``, ``rpm``, ``diametral_clearance``, ``displacement``) and the
-contacts' normal damping. Several speeds (``--speeds`` in rad/s or ``--rpms``):
+``omega``, ``rpm``, ``diametral_clearance``, ``displacement``), the
+contacts' normal damping, ``phases`` (ball-set positions averaged, default
+3 as ``bearing_coefficients``) and ``phase_spread_stiffness`` /
+``phase_spread_damping`` (largest spread over them relative to the largest
+entry; None with ``--phases 1``). Several speeds (``--speeds`` in rad/s or ``--rpms``):
 ``speeds`` and ``stiffness``, ``damping`` per speed (the
 :class:`~exudyn_bearing.model.coefficients.BearingCoefficients` dict);
 ``--plot`` draws the lateral and axial entries against speed (PNG + CSV).
@@ -22,10 +25,11 @@ from ..model.coefficients import AXES, DAMPING_UNITS, STIFFNESS_UNITS
 from ..outputs.jsonio import to_jsonable
 from ..outputs.plotting import save_figure
 from ..solvers.quasistatic import bearing_coefficients, solve_quasistatic
+from ..solvers.quasistatic.coefficients import DEFAULT_N_PHASES
 from ..solvers.quasistatic.kinematics import CONTROLS
 from .common import (add_bearing_argument, add_hold_arguments, add_lubricant_argument, add_load_arguments,
                      add_ring_growth_argument, add_traction_argument, bearing_from_args, explained, finite_float,
-                     fixed_from_args, lubricant_from_args, solver_header, traction_from_args)
+                     fixed_from_args, lubricant_from_args, omega_from_args, solver_header, traction_from_args)
 from .pair import add_pair_arguments, pair_requested, run_pair
 
 RPM = 2.0 * math.pi / 60.0
@@ -43,9 +47,10 @@ def add_parser(sub):
                        help="table over these speeds [rad/s] (increasing)")
     speed.add_argument("--rpms", type=finite_float, nargs="+", metavar="N",
                        help="table over these speeds [1/min] (increasing)")
-    p.add_argument("--phases", type=int, default=1,
-                   help="average over this many ball-set positions within one ball pitch (default 1: balls at "
-                        "psi = 2 pi j / Z)")
+    p.set_defaults(omega_default=0.0)  # omega_from_args: at rest without a speed (docs/defaults.md)
+    p.add_argument("--phases", type=int, default=DEFAULT_N_PHASES,
+                   help="average over this many ball-set positions within one ball pitch (default "
+                        f"{DEFAULT_N_PHASES}, as bearing_coefficients; 1: the balls at psi = 2 pi j / Z only)")
     p.add_argument("--control", choices=CONTROLS, default="auto",
                    help="ball kinematics: race control (outer, inner, auto = Jones' criterion) or min-energy")
     add_traction_argument(p)
@@ -61,7 +66,8 @@ def _units():
     return {"stiffness": [list(r) for r in STIFFNESS_UNITS], "damping": [list(r) for r in DAMPING_UNITS],
             "omega": "rad/s", "rpm": "1/min", "loads": "N, N m", "diametral_clearance": "m",
             "displacement": "m, m, m, rad, rad (delta_x, delta_y, delta_a, tilt_x, tilt_y)",
-            "c_normal_inner": "N s/m", "c_normal_outer": "N s/m", "speeds": "rad/s"}
+            "c_normal_inner": "N s/m", "c_normal_outer": "N s/m", "speeds": "rad/s",
+            "phase_spread_stiffness": "-", "phase_spread_damping": "-"}
 
 
 def _print_matrix(name, m, units):
@@ -128,7 +134,9 @@ def run(args):
             print(json.dumps(to_jsonable(d), indent=2))
             return
         print(f"{b.name}: Fr = {args.Fr:g} N, Fa = {args.Fa:g} N, P_d = {b.diametral_clearance * 1e6:g} um, "
-              f"{args.phases} phase(s); {header}")
+              f"{args.phases} ball-set phase(s)" + (f" (spread of K up to "
+                                                    f"{100 * max(c.operating_point['phase_spread_stiffness']):.3g} %)"
+                                                    if args.phases > 1 else "") + f"; {header}")
         print(f"{'rpm':>9} {'k_xx N/m':>11} {'k_yy N/m':>11} {'k_xy N/m':>11} {'k_zz N/m':>11} "
               f"{'c_xx Ns/m':>10} {'c_yy Ns/m':>10} {'c_zz Ns/m':>10}")
         for i, r in enumerate(c.rpm()):
@@ -138,7 +146,7 @@ def run(args):
         if args.plot:
             print(f"plot: {d['plot']}")
         return
-    omega = args.omega if args.omega is not None else (args.rpm * RPM if args.rpm is not None else 0.0)
+    omega = omega_from_args(args)
     with explained(b):
         if args.phases != 1:
             c = bearing_coefficients(b, [omega], n_phases=args.phases, **loads, **opts)
@@ -152,6 +160,8 @@ def run(args):
     kmat, cmat = np.asarray(kmat) + 0.0, np.asarray(cmat) + 0.0   # no signed zeros in the output
     d = {"bearing": b.name, "loads": {"Fr": args.Fr, "Fy": args.Fy, "Fa": args.Fa, "Mx": args.Mx, "My": args.My},
          "omega": omega, "rpm": omega / RPM, "diametral_clearance": b.diametral_clearance, "phases": args.phases,
+         "phase_spread_stiffness": c.operating_point["phase_spread_stiffness"][0] if c else None,
+         "phase_spread_damping": c.operating_point["phase_spread_damping"][0] if c else None,
          "control": args.control, "traction": s.traction, "lubricant": s.lubricant,
          "ring_growth": args.ring_growth, "tilt": args.tilt, "axes": list(AXES), "stiffness": kmat, "damping": cmat,
          "displacement": s.displacement, "held_dofs": dict(s.held),
@@ -161,7 +171,9 @@ def run(args):
         print(json.dumps(to_jsonable(d), indent=2))
         return
     print(f"{b.name}: Fr = {args.Fr:g} N, Fa = {args.Fa:g} N, omega = {omega:g} rad/s ({omega / RPM:g} rpm), "
-          f"P_d = {b.diametral_clearance * 1e6:g} um" + (f", mean of {args.phases} phases" if c else ""))
+          f"P_d = {b.diametral_clearance * 1e6:g} um" + (f", mean of {args.phases} ball-set phases (spread of K "
+                                                          f"{100 * d['phase_spread_stiffness']:.3g} %)" if c else
+                                                          ", one ball-set phase"))
     print(header)
     _print_matrix("stiffness K = -dF/dq", kmat, STIFFNESS_UNITS)
     _print_matrix("damping C = -dF/dq'", cmat, DAMPING_UNITS)

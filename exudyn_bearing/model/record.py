@@ -18,7 +18,9 @@ class RunRecord:
     signals, ``signal_t`` and ``signal`` (``SIGNAL_FIELDS``), ``steps`` the time steps taken,
     ``wall_s`` the wall time of the integration [s], ``engine`` the solver's
     name, ``stable_dt`` its stable-step estimate [s], ``static`` the
-    quasi-static solution the run started from (None if not known).
+    quasi-static solution the run started from (None if not known),
+    ``load_angle`` the azimuth of the radial load from the outer ring's x axis
+    [rad] (the element's ``loadAngle``; the summary measures psi from it).
     """
 
     bearing: Any
@@ -30,6 +32,7 @@ class RunRecord:
     engine: str
     stable_dt: float | None = None
     static: Any = None
+    load_angle: float = 0.0
 
 
 class RunInterrupted(KeyboardInterrupt):

@@ -90,9 +90,11 @@ class Scenario:
     Parameters
     ----------
     Fr, Fa : float
-        Radial load on the inner ring along +x and axial load along +z [N].
+        Radial load on the inner ring along +x and axial load along +z [N]
+        (default 0, as in every entry point: docs/defaults.md).
     omega : float
-        Inner-ring speed [rad/s] of the steady phase (outer ring fixed).
+        Inner-ring speed [rad/s] of the steady phase (outer ring fixed;
+        default 0: a run at rest; the DEM papers' case is Fr=3000, omega=500).
     t_end : float
         Simulated time [s].
     t_ramp_up, t_steady, t_ramp_down : float
@@ -246,9 +248,9 @@ class Scenario:
         0.007, hardened bearing steel; the quasi-static ``power_losses`` keyword).
     """
 
-    Fr: float = 3000.0
+    Fr: float = 0.0
     Fa: float = 0.0
-    omega: float = 500.0
+    omega: float = 0.0
     t_end: float = 0.05
     t_ramp_up: float = 0.0
     t_steady: float = math.inf
@@ -483,15 +485,16 @@ class Scenario:
         return cls(**d)
 
     @classmethod
-    def papers_protocol(cls, omega=500.0, t_ramp_up=0.02, t_steady=0.06, t_ramp_down=0.02, **kw):
-        """Start-up ramp, steady phase and slow-down (the DEM papers' protocol)."""
-        return cls(omega=omega, t_ramp_up=t_ramp_up, t_steady=t_steady, t_ramp_down=t_ramp_down,
+    def papers_protocol(cls, omega=500.0, t_ramp_up=0.02, t_steady=0.06, t_ramp_down=0.02, Fr=3000.0, **kw):
+        """Start-up ramp, steady phase and slow-down (the DEM papers' protocol, with their case's 3000 N and
+        500 rad/s as its defaults; a Scenario's own loads and speed default to 0)."""
+        return cls(Fr=Fr, omega=omega, t_ramp_up=t_ramp_up, t_steady=t_steady, t_ramp_down=t_ramp_down,
                    t_end=kw.pop("t_end", t_ramp_up + t_steady + t_ramp_down), initial="rest"
                    if kw.pop("initial", "rest") == "rest" else "analytic", **kw)
 
     @classmethod
     def quasi_static(cls, Fr=3000.0, **kw):
-        """Quasi-static protocol of the DEM papers' Appendix A: omega = 1 rad/s."""
+        """Quasi-static protocol of the DEM papers' Appendix A: omega = 1 rad/s (their 3000 N by default)."""
         kw.setdefault("t_end", 0.01)
         return cls(Fr=Fr, omega=1.0, **kw)
 

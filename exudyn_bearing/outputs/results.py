@@ -37,6 +37,7 @@ from ..physics.damping import REGIME_NAMES
 from .cage_summary import CAGE_LOSSES_NOT_MODELLED, CAGE_SUMMARY_UNITS, rigid_cage_summary
 from .contact_summary import CONTACT_SUMMARY_UNITS, contact_summary
 from .jsonio import to_jsonable
+from .whole_loss import WHOLE_LOSS_DESCRIPTIONS, WHOLE_LOSS_KEYS, WHOLE_LOSS_UNITS, whole_loss
 from .tables import NOT_CONVERGED_MARK, Summary
 from .window_checks import (LOSS_FLOOR_MU, SPEED_FLOOR, SteadyStateWarning, energy_balance, energy_check,
                             energy_floor, q_max_at_psi0, steadiness)
@@ -52,7 +53,7 @@ SUMMARY_KEYS = ("q_max_inner", "q_max_outer", "q_max_method", "q_max_inner_mean"
                 "friction_torque", "friction_power", "friction_outputs_converged", "not_converged",
                 "drive_power", "load_power", "dissipation",
                 "kinetic_energy_change", "energy_residual", "energy_source", "power_loss", "power_loss_total",
-                "not_modelled", "energy_check", "lubricant", "traction_model",
+                *WHOLE_LOSS_KEYS, "not_modelled", "energy_check", "lubricant", "traction_model",
                 "traction_level", "losses_modelled", "losses_not_modelled", "steps", "dt", "wall_s", "units",
                 "descriptions")
 
@@ -132,7 +133,7 @@ SUMMARY_UNITS = {
     "window.t0": "s", "window.t1": "s", "drive_power": "W", "load_power": "W", "dissipation": "W",
     "kinetic_energy_change": "J", "energy_residual": "-", "power_loss": "W per component",
     "power_loss_total": "W", "not_modelled": "text", "energy_check": "W, - (residual), text",
-    "friction_outputs_converged": "-", "not_converged": "summary keys"}
+    "friction_outputs_converged": "-", "not_converged": "summary keys", **WHOLE_LOSS_UNITS}
 
 #: What the loss and energy keys of the summary mean (docs/theory/dynamics.md,
 #: "Losses and the energy balance"); every summary carries it as ``descriptions``.
@@ -140,7 +141,8 @@ SUMMARY_DESCRIPTIONS = {
     "q_max_inner": "load of the ball at psi = 0 over the window, inner race (q_max_method: how it was obtained)",
     "q_max_outer": "load of the ball at psi = 0 over the window, outer race (q_max_method: how it was obtained)",
     "friction_torque": "torque that drives the inner ring about its axis, time mean: minus the torque of the balls "
-                       "on the ring; positive when the ring must be driven",
+                       "on the ring; positive when the ring must be driven; the modelled losses only (the whole "
+                       "torque is friction_torque_whole)",
     "friction_power": "frictional (tangential) power of all ball / raceway contacts, time mean; at the point level "
                       "it includes the rate of the energy stored in the tangential springs",
     "dissipation_inner": "frictional power of the inner contacts of all balls, time mean (a part of friction_power)",
@@ -164,7 +166,8 @@ SUMMARY_DESCRIPTIONS = {
                   "damping_power; None when not recorded); with Scenario.rolling_resistance also ehl_rolling and "
                   "hysteresis (the rolling-resistance moment pairs), with Scenario.ball_drag also drag (the ball "
                   "drag): time means of the engine's ehl_rolling_power, hysteresis_power, drag_power",
-    "power_loss_total": "sum of the power_loss components [W] (the sampled split of the engine's dissipation)",
+    "power_loss_total": "modelled components only: sum of the power_loss components [W] (the sampled split of the "
+                        "engine's dissipation); the whole loss is power_loss_whole",
     "not_modelled": "loss sources the dynamic engines leave out at this traction level",
     "energy_check": "drive_power = sum of power_loss + kinetic_energy_change / window length within 1 % of "
                     "drive_power (residual, passed; split_error: the sampled components against the engine's "
@@ -174,6 +177,7 @@ SUMMARY_DESCRIPTIONS = {
                                   "outputs (listed under not_converged) are step noise that falls about in "
                                   "proportion to dt, not a converged loss; use traction_level='ellipse' for losses",
     "not_converged": "summary keys whose values are not converged in the step (see friction_outputs_converged)",
+    **WHOLE_LOSS_DESCRIPTIONS,
 }
 
 #: Protocol phases (Scenario: start-up ramp, steady phase, slow-down ramp, rest).
@@ -276,9 +280,11 @@ class Results:
         return self.data["signal"][:len(t), SIGNAL_FIELDS.index(name)]
 
     def azimuth(self) -> np.ndarray:
-        """Ball azimuth psi (n, Z) [rad] from the load direction, in (-pi, pi]."""
+        """Ball azimuth psi (n, Z) [rad] from the load direction (``record.load_angle`` from x), in (-pi, pi]."""
         xb = self.data["xb"]
-        return np.arctan2(xb[..., 1], xb[..., 0])
+        psi = np.arctan2(xb[..., 1], xb[..., 0])
+        a = getattr(self.record, "load_angle", 0.0)
+        return psi if a == 0.0 else np.angle(np.exp(1j * (psi - a)))
 
     def azimuth_scatter(self, name: str = "load", race: str | int = "outer", fraction: float = 0.5):
         """(psi [deg], values) of a ``DIAG_FIELDS`` entry at every ball and
@@ -664,6 +670,8 @@ class Results:
             "losses_modelled": self.losses_lists()[0],
             "losses_not_modelled": self.losses_lists()[1],
         }
+        # the whole loss: the modelled components plus the quasi-static estimate of the others (.whole_loss)
+        out.update(whole_loss(self, out["power_loss"], out["power_loss_total"], omega))
         converged = self.friction_outputs_converged()
         out["friction_outputs_converged"] = converged
         out["not_converged"] = [] if converged else list(POINT_STEP_DEPENDENT)
@@ -703,7 +711,7 @@ class Results:
         with warnings.catch_warnings():  # the summary's own call has warned; the file holds its "steady" entry
             warnings.simplefilter("ignore", SteadyStateWarning)
             summary = self.summary()
-        summary["meta"] = {"bearing": self.bearing.to_dict(),
+        summary["meta"] = {"bearing": self.bearing.to_dict(), "load_angle": getattr(self.record, "load_angle", 0.0),
                            "scenario": dataclasses.asdict(self.scenario),
                            "lubricant": dataclasses.asdict(self.lubricant)}
         js.write_text(json.dumps(to_jsonable(summary), indent=2))
@@ -721,7 +729,8 @@ class Results:
                                for k, v in meta["meta"]["scenario"].items()})
         lub = Lubricant(**meta["meta"]["lubricant"])
         return cls(RunRecord(bearing, scenario, lub, data, steps=meta["steps"], wall_s=meta["wall_s"],
-                             engine=meta["engine"], stable_dt=meta.get("stable_dt")))
+                             engine=meta["engine"], stable_dt=meta.get("stable_dt"),
+                             load_angle=meta["meta"].get("load_angle", 0.0)))
 
     def plot(self, png):
         """Overview figure (speeds, loads, Lambda) saved as PNG; returns the path."""

@@ -9,6 +9,8 @@ from __future__ import annotations
 
 import math
 
+from .whole_loss import basis_text
+
 __all__ = ["ROUND_OFF", "NOT_CONVERGED_MARK", "Summary", "format_value", "format_table", "summary_rows"]
 
 #: Magnitudes printed as 0 in tables: round-off of solvers whose inputs are about 1e-3 m and 1 N or larger.
@@ -59,10 +61,18 @@ def summary_rows(summary, t_end=None):
                        f"{w['samples']} samples)"),
             ("steady", "yes (drift and oscillation within the thresholds of summary['steady'])" if st["steady"]
              else f"NO: {st['reason']}")]
+    # the bearing's whole loss and torque first, with what is modelled and what estimated (outputs.whole_loss)
+    first = ()
+    if "power_loss_whole" in summary:
+        first = ("power_loss_whole", "friction_torque_whole")
+        rows += [("power_loss_whole", summary["power_loss_whole"], "W"),
+                 ("friction_torque_whole", summary["friction_torque_whole"], units.get("friction_torque_whole")),
+                 ("power_loss_whole_basis", basis_text(summary["power_loss_whole_basis"]))]
+        rows += [(f"power_loss_estimated.{k}", v, "W") for k, v in (summary.get("power_loss_estimated") or {}).items()]
     # a quantity the run cannot give (None) says where the summary explains why, without a unit
     rows += [(k, v, units.get(k)) if v is not None else
              (k, f"n/a (energy_source.{k})" if k in summary.get("energy_source", {}) else "n/a")
-             for k, v in summary.items() if not isinstance(v, (dict, list)) and k not in ("window", "note")]
+             for k, v in summary.items() if not isinstance(v, (dict, list)) and k not in ("window", "note", *first)]
     if t_end is not None and "t_end" in summary and not math.isclose(summary["t_end"], t_end, rel_tol=1e-9):
         rows = [(k, f"{t_end:g} s (last sample at {summary['t_end']:.6g} s)", None) if k == "t_end" else r
                 for r in rows for k in (r[0],)]

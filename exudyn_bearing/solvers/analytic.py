@@ -187,7 +187,7 @@ def static_analysis(bearing: BallBearing | str, radial_load: float, axial_load: 
     if mx != 0.0 or my != 0.0:
         raise InputError("moment: static_analysis holds the inner ring's tilt at zero (translation-only "
                          "distribution); moment loads need the free tilt of "
-                         "exudyn_bearing.solve_quasistatic(..., Mx=..., My=...)")
+                         "exudyn_bearing.solve_quasistatic(..., Mx=..., My=..., fixed={})")
     phase = float(phase)
     if not math.isfinite(phase):
         raise InputError(f"phase: must be finite, got {phase}")

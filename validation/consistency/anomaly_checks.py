@@ -56,7 +56,7 @@ from exudyn_bearing.solvers.quasistatic import kinematics as km
 
 HELD = {"tilt_x": 0.0, "tilt_y": 0.0}
 #: The engines' least rolling speed of the ellipse traction (Scenario default) [m/s].
-V_REG = eb.Scenario().regularizing_speed
+V_REG = eb.Scenario(Fr=3000.0, omega=500.0).regularizing_speed
 
 
 def contact_inputs(sol, j, floor):

@@ -250,7 +250,7 @@ def matrix(quick, only=None):
             # diagnostic: rolling speeds below the engines' least rolling speed, and the equilibrium with it
             loaded = (sol.balls["q_inner"] > 0.0) & (sol.balls["q_outer"] > 0.0)
             u_min = float(np.min(np.minimum(sol.balls["u_roll_inner"], sol.balls["u_roll_outer"])[loaded]))
-            v_floor = ellipse_rolling_floor(load_bearing(case["bearing"]), eb.Scenario(omega=case["omega"]))
+            v_floor = ellipse_rolling_floor(load_bearing(case["bearing"]), eb.Scenario(Fr=3000.0, omega=case["omega"]))
             if u_min < v_floor:
                 floor = eb.solve_quasistatic(case["bearing"], Fr=case["Fr"], Fa=case["Fa"], omega=case["omega"],
                                              control="equilibrium", fixed=HELD, stiffness=False,

@@ -79,7 +79,7 @@ def largest_stable_step(tangential, lo=1e-6, hi=3e-5, t_end=0.01):
 
 def second_start_seconds():
     code = ("import time; t = time.perf_counter(); import exudyn_bearing as eb; "
-            "eb.simulate('6208', eb.Scenario(t_end=1e-3, dt=5e-6, tangential='implicit')); "
+            "eb.simulate('6208', eb.Scenario(Fr=3000.0, omega=500.0, t_end=1e-3, dt=5e-6, tangential='implicit')); "
             "print(time.perf_counter() - t)")
     subprocess.run([sys.executable, "-c", code], check=True, capture_output=True)  # fills the cache
     out = subprocess.run([sys.executable, "-c", code], check=True, capture_output=True, text=True)

@@ -265,7 +265,8 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
     here rather than as a load on ``cageBody``: the element's energy balance
     counts it as drive); with the rigid cage the bearing axis must be the
     world z axis;
-    ``initialLoad`` is (Fr, Fa) [N] or a radial load Fr; an invalid option
+    ``initialLoad`` is (Fr, Fa) [N] or a radial load Fr, its radial part along ``loadAngle`` [rad] from
+    the outer ring's x axis (default 0, as the levels); an invalid option
     raises InputError naming it (``stepSize``, ``sampleInterval``,
     ``initialLoad``, ``markerOuterRing``, ...).
     """
@@ -281,7 +282,7 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
                  temperatures=None, control="auto", initialState=None, defects=(),
                  signalInterval=None, rollingResistance=False, ballDrag=False, oilVolumeFraction=0.0,
                  hysteresisLossFactor=HYSTERESIS_LOSS_FACTOR_STEEL, cageDamping="explicit", rigidCage=None,
-                 gravity=(0.0, 0.0, 0.0), show=False):
+                 gravity=(0.0, 0.0, 0.0), show=False, loadAngle=0.0):
         announce_compilation(forces, EK.fast_step if mode == "fast" else EK.body_step)
         self.mbs = mbs
         self.bearing = b = load_bearing(bearing)
@@ -291,6 +292,11 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
                 raise InputError(f"{name}: must be a function of time t [s] returning rad/s")
         self.speed = (innerRingSpeed, outerRingSpeed)
         self._initial_state = initialState
+        from ..quasistatic.levels.base import check_load_angle
+
+        #: azimuth of the radial load in the outer-ring frame [rad] (the levels' option): the initial state's
+        #: balls and ring displacement are turned about z from +x to it
+        self.loadAngle = check_load_angle(loadAngle)
         self.scenario = _scenario_from_options(dict(locals()), b)
         sampleInterval = check_positive("sampleInterval", sampleInterval)
         if self.scenario.cage == "torus" and not b.has_cage:
@@ -357,7 +363,19 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
         concentric within the play and that no ball overlaps beyond the
         preload. Returns (xb, vb, wb, xc, vc)."""
         b = self.bearing
-        st = initial_state(b, self.scenario, self._initial_state)
+        st = dict(initial_state(b, self.scenario, self._initial_state))
+        if self.loadAngle != 0.0:  # the load along loadAngle instead of +x: the state turned about z
+            from ..quasistatic.levels.base import load_rotation
+
+            rz = load_rotation(self.loadAngle)
+            rigid = self.scenario.cage == "rigid"  # its cage rows hold (axial position, angle, speed): turn the angle
+            for k in ("xb", "vb", "wb") + (() if rigid else ("xc", "vc")):
+                st[k] = np.asarray(st[k], float) @ rz.T
+            if rigid:
+                st["xc"] = np.array(st["xc"], float)
+                st["xc"][1, 0] += self.loadAngle
+            ring = np.asarray(st["ring"], float)
+            st["ring"] = np.concatenate([rz @ ring[:3], rz @ ring[3:6], ring[6:]])
         self.initialRingDisplacement = np.asarray(st["ring"][:3], float)
         x_o, a_o, v_o, w_o = poses[1]
         rel = poses[0][0] - x_o

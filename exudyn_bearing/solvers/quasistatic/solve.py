@@ -85,11 +85,20 @@ class TractionResolutionWarning(UserWarning):
 MAX_HELD_DISPLACEMENT = 0.1
 
 
-def _check_fixed(fixed, b):
+#: DOFs ``solve_quasistatic`` holds when ``fixed`` is None: the tilts at zero (one rule in every entry point).
+HELD_TILT = {"tilt_x": 0.0, "tilt_y": 0.0}
+
+
+def _check_fixed(fixed, b, moments=(0.0, 0.0)):
     """``fixed`` as a dict DOF name -> float, each value finite and within
-    ``MAX_HELD_DISPLACEMENT`` R_b (tilts: times the groove radius), else InputError naming ``fixed.DOF``."""
+    ``MAX_HELD_DISPLACEMENT`` R_b (tilts: times the groove radius), else InputError naming ``fixed.DOF``.
+    None: :data:`HELD_TILT`, refused with a moment load ``moments`` (Mx, My), which needs the free tilt."""
     if fixed is None:
-        return {}
+        for name, m in zip(("Mx", "My"), moments):
+            if m != 0.0:
+                raise InputError(f"{name}: a moment load needs the free tilt; the default holds the tilt at zero "
+                                 "(pass fixed={} to free it, as the CLI's --tilt free)")
+        return dict(HELD_TILT)
     if not isinstance(fixed, dict):
         raise InputError(f"fixed: expected a dict of DOF name -> value, got {fixed!r}")
     out = {}
@@ -211,7 +220,10 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
         ``{"inner", "outer", "ball"}`` temperatures [K] for uniform thermal growth.
     fixed : dict, optional
         DOFs to hold, name -> value (names ``delta_x, delta_y, delta_a,
-        tilt_x, tilt_y``); their reactions are reported.
+        tilt_x, tilt_y``); their reactions are reported. Default (None):
+        the tilts held at zero (:data:`HELD_TILT`, as the CLI's ``--tilt
+        fixed`` and the dynamic engines' translating ring); ``fixed={}``
+        frees every DOF (moment loads need their tilt free).
     hertz_method : str
         Hertz fidelity level.
     phase : float
@@ -302,7 +314,7 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
     shoulder_angle = check_finite("shoulder_angle", shoulder_angle)
     if not 0.0 < shoulder_angle <= 0.5 * math.pi:
         raise InputError(f"shoulder_angle: must lie in (0, pi/2] rad, got {shoulder_angle:g}")
-    fixed = _check_fixed(fixed, b)
+    fixed = _check_fixed(fixed, b, (loads[3], loads[4]))
     # the same case at rest, to tell a refusal the speed causes from one the loads cause (_speed_cause)
     rest = dict(fixed=fixed, hertz_method=hertz_method, phase=phase, fit=fit, temperatures=temperatures,
                 shoulder_angle=shoulder_angle, lubricant=lub, cage=cage, rigid_cage=rigid_cage)

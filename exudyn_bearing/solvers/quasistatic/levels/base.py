@@ -42,6 +42,20 @@ DEFAULT_SPEEDS = (0.0, 100.0, 250.0, 500.0, 750.0, 1000.0)
 LOAD_ANGLE_RANGE = 2.0 * math.pi
 
 
+def check_load_angle(value) -> float:
+    """``loadAngle`` [rad] of every level and the ball element: finite, within one turn either way
+    (a value in degrees beyond that says so)."""
+    return check_plausible("loadAngle", value, -LOAD_ANGLE_RANGE, LOAD_ANGLE_RANGE, "rad",
+                           "the azimuth of the radial load is in radians", ((math.radians, "deg"),))
+
+
+def load_rotation(angle) -> np.ndarray:
+    """3x3 rotation about the bearing axis z by ``angle`` [rad]: from the solvers' axes (radial load along
+    +x) to the outer-ring frame where the radial load points at ``loadAngle``."""
+    c, s = math.cos(angle), math.sin(angle)
+    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+
+
 def _load_pair(load):
     """(Fr, Fa) [N] of ``initialLoad``: a pair or a radial load."""
     if isinstance(load, (int, float, np.integer, np.floating)) and not isinstance(load, bool):
@@ -139,11 +153,11 @@ class LevelBearing:
         #: quasi-static solution at initialLoad and initialOmega (the operating point)
         self.operatingPoint = solve_quasistatic(b, Fr=fr, Fa=fa, omega=abs(self.initialOmega),
                                                 ring_growth=self.ringGrowth, temperatures=temperatures,
-                                                lubricant=self.lubricant, hertz_method=hertzModel, stiffness=False)
+                                                lubricant=self.lubricant, hertz_method=hertzModel, stiffness=False,
+                                                fixed={})  # the tilt is a DOF of the user's model
         #: inner-ring pose (d_x, d_y, d_z, theta_x, theta_y) at the operating point (outer-ring frame):
         #: place the inner ring there to start in equilibrium
-        self.loadAngle = check_plausible("loadAngle", loadAngle, -LOAD_ANGLE_RANGE, LOAD_ANGLE_RANGE, "rad",
-                                         "the azimuth of the radial load is in radians", ((math.radians, "deg"),))
+        self.loadAngle = check_load_angle(loadAngle)
         self.initialRingDisplacement = self.rotation() @ np.array(self.operatingPoint.displacement, float)
         self.coefficients = self._table(coefficientSpeeds) if coefficients is None else self._given_table(coefficients)
         a0 = b.free_contact_angle
@@ -199,7 +213,7 @@ class LevelBearing:
         try:
             return bearing_coefficients(self.bearing, speeds, Fr=fr, Fa=fa, ring_growth=self.ringGrowth,
                                         temperatures=self.temperatures, lubricant=self.lubricant,
-                                        hertz_method=self.hertzModel)
+                                        hertz_method=self.hertzModel, fixed={})
         except InputError as exc:
             if str(exc).startswith("speeds"):
                 raise InputError(f"coefficientSpeeds{str(exc)[len('speeds'):]}") from None
@@ -337,3 +351,11 @@ class LevelBearing:
 
     def _extra_fields(self, rest):
         return {}
+
+    def results(self):
+        """The run's samples as :class:`~.results.LevelResults`: the methods of the ball element's
+        ``results()`` (``Results``) that a level can give (``t``, ``window``, ``summary``, ``save``), the
+        summary's whole loss estimated by the quasi-static loss model (docs/theory/levels.md)."""
+        from .results import LevelResults
+
+        return LevelResults(self)
