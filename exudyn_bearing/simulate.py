@@ -259,5 +259,27 @@ def _create_level(mbs, bearing, markerInnerRing, markerOuterRing, model, options
     for key in options:
         if key not in allowed:
             raise InputError(f"{key}: not an option of model={model!r} (valid: {', '.join(allowed)})")
-    cls = QuasiStaticBearing if model == "quasistatic" else LinearBearing
+    cls = _with_results(QuasiStaticBearing if model == "quasistatic" else LinearBearing)
     return cls(mbs, bearing, markerInnerRing, markerOuterRing, **options)
+
+
+_LEVEL_CLASSES = {}
+
+
+def _with_results(level_class):
+    """``level_class`` with ``results()``: the run's samples as
+    :class:`~exudyn_bearing.outputs.level_results.LevelResults` (the methods of the ball element's
+    ``results()`` that a level can give: ``t``, ``window``, ``summary``, ``save``; the summary's whole loss
+    estimated by the quasi-static loss model, docs/theory/levels.md), as :class:`BallBearingElement` adds
+    it to the element (the outputs layer sits above the solvers)."""
+    if level_class not in _LEVEL_CLASSES:
+        from .outputs.level_results import LevelResults
+
+        def results(self):
+            return LevelResults(self)
+
+        results.__doc__ = _with_results.__doc__.split(":", 1)[1].strip()
+        _LEVEL_CLASSES[level_class] = type(level_class.__name__, (level_class,),
+                                           {"results": results, "__doc__": level_class.__doc__,
+                                            "__module__": level_class.__module__})
+    return _LEVEL_CLASSES[level_class]

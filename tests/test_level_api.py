@@ -9,7 +9,7 @@ exu = pytest.importorskip("exudyn")
 
 import exudyn_bearing as eb  # noqa: E402
 from exudyn_bearing.outputs.results import SUMMARY_KEYS  # noqa: E402
-from exudyn_bearing.solvers.quasistatic.levels.results import LEVEL_SUMMARY_KEYS  # noqa: E402
+from exudyn_bearing.outputs.level_results import LEVEL_SUMMARY_KEYS  # noqa: E402
 
 from test_levels import FR, SPEEDS, shaft  # noqa: E402
 

@@ -89,7 +89,6 @@ from ..physics.geometry import _groove_geometry, _raceway_radii_cos
 from ..physics.hertz import _curvature_sum_radius, _kfe_fast, _semi_axes, _semi_axes_overlap, _stiffness
 from ..physics.losses import _ehl_rolling_force, _hysteresis_rolling_force, ball_drag_force
 from ..physics.short_bearing import _short_bearing_xy
-from ..physics.friction import _regularized_coulomb
 from .layout import (G_CAGE_LOAD_POWER, G_LAND_ECC, G_LAND_FX, G_LAND_FY, G_LAND_POWER, G_POCKET_POWER, P_GUIDANCE, P_IC, P_K_LAND,
                      P_K_POCKET, P_LAND_C, P_LAND_EPS, P_LAND_ETA, P_LAND_L, P_LAND_R, P_MC, P_MU_POCKET,
                      P_POCKET_GAP, P_POCKET_SHAPE, P_POCKET_VREG, P_RIGID, P_GX, P_GY, P_GZ, P_UNBALANCE)

@@ -131,6 +131,7 @@ from ...data.traction import DEFAULT_REGULARIZING_SRR
 from ...model import layout as L
 from ...model.contact import forces
 from ...model.initial_state import initial_state
+from ...model.load_angle import check_load_angle, load_rotation
 from ...model.motion import ring_poses
 from ...model.parameters import scene_parameters
 from ...physics.losses import HYSTERESIS_LOSS_FACTOR_STEEL
@@ -292,8 +293,6 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
                 raise InputError(f"{name}: must be a function of time t [s] returning rad/s")
         self.speed = (innerRingSpeed, outerRingSpeed)
         self._initial_state = initialState
-        from ..quasistatic.levels.base import check_load_angle
-
         #: azimuth of the radial load in the outer-ring frame [rad] (the levels' option): the initial state's
         #: balls and ring displacement are turned about z from +x to it
         self.loadAngle = check_load_angle(loadAngle)
@@ -365,8 +364,6 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
         b = self.bearing
         st = dict(initial_state(b, self.scenario, self._initial_state))
         if self.loadAngle != 0.0:  # the load along loadAngle instead of +x: the state turned about z
-            from ..quasistatic.levels.base import load_rotation
-
             rz = load_rotation(self.loadAngle)
             rigid = self.scenario.cage == "rigid"  # its cage rows hold (axial position, angle, speed): turn the angle
             for k in ("xb", "vb", "wb") + (() if rigid else ("xc", "vc")):

@@ -23,6 +23,7 @@ import numpy as np
 
 from ....data import InputError, Lubricant, load_bearing, load_lubricant
 from ....data.errors import check_finite, check_plausible, check_positive
+from ....model.load_angle import LOAD_ANGLE_RANGE, check_load_angle, load_rotation  # noqa: F401 (re-exported)
 from ....model.load_range import MAX_CONTACT_PRESSURE, check_load_range
 from ....model.solver_types import IMPLICIT_SOLVERS, settings_solver, unstable_solver_error
 from ....physics import kinematics as _kin
@@ -38,24 +39,6 @@ LEVEL_OPTIONS = ("lubricant", "initialLoad", "loadAngle", "initialOmega", "ringG
 #: Default speeds [rad/s] of the coefficient table (damping, linear level): up to the larger of 1000 rad/s and
 #: 1.5 times the initial speed.
 DEFAULT_SPEEDS = (0.0, 100.0, 250.0, 500.0, 750.0, 1000.0)
-#: ``loadAngle`` [rad] is accepted in [-LOAD_ANGLE_RANGE, LOAD_ANGLE_RANGE] (one turn either way)
-LOAD_ANGLE_RANGE = 2.0 * math.pi
-
-
-def check_load_angle(value) -> float:
-    """``loadAngle`` [rad] of every level and the ball element: finite, within one turn either way
-    (a value in degrees beyond that says so)."""
-    return check_plausible("loadAngle", value, -LOAD_ANGLE_RANGE, LOAD_ANGLE_RANGE, "rad",
-                           "the azimuth of the radial load is in radians", ((math.radians, "deg"),))
-
-
-def load_rotation(angle) -> np.ndarray:
-    """3x3 rotation about the bearing axis z by ``angle`` [rad]: from the solvers' axes (radial load along
-    +x) to the outer-ring frame where the radial load points at ``loadAngle``."""
-    c, s = math.cos(angle), math.sin(angle)
-    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
-
-
 def _load_pair(load):
     """(Fr, Fa) [N] of ``initialLoad``: a pair or a radial load."""
     if isinstance(load, (int, float, np.integer, np.floating)) and not isinstance(load, bool):
@@ -351,11 +334,3 @@ class LevelBearing:
 
     def _extra_fields(self, rest):
         return {}
-
-    def results(self):
-        """The run's samples as :class:`~.results.LevelResults`: the methods of the ball element's
-        ``results()`` (``Results``) that a level can give (``t``, ``window``, ``summary``, ``save``), the
-        summary's whole loss estimated by the quasi-static loss model (docs/theory/levels.md)."""
-        from .results import LevelResults
-
-        return LevelResults(self)

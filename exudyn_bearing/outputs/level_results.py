@@ -18,9 +18,9 @@ from pathlib import Path
 
 import numpy as np
 
-from ....data import InputError
-from ....outputs.jsonio import to_jsonable
-from ....outputs.whole_loss import WHOLE_LOSS_DESCRIPTIONS, WHOLE_LOSS_UNITS, NOT_ESTIMATED, estimate_losses
+from ..data import InputError
+from .jsonio import to_jsonable
+from .whole_loss import WHOLE_LOSS_DESCRIPTIONS, WHOLE_LOSS_UNITS, NOT_ESTIMATED, estimate_losses
 
 __all__ = ["LEVEL_SUMMARY_KEYS", "LevelResults"]
 
