@@ -22,7 +22,7 @@ import math
 import numpy as np
 
 from ....data import InputError, Lubricant, load_bearing, load_lubricant
-from ....data.errors import check_finite, check_plausible, check_positive
+from ....data.errors import check_finite, check_positive
 from ....model.load_angle import LOAD_ANGLE_RANGE, check_load_angle, load_rotation  # noqa: F401 (re-exported)
 from ....model.load_range import MAX_CONTACT_PRESSURE, check_load_range
 from ....model.solver_types import IMPLICIT_SOLVERS, settings_solver, unstable_solver_error
