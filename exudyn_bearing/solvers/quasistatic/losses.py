@@ -323,8 +323,10 @@ def power_losses(sol, bearing=None, lubricant=None, *, hysteresis_loss_factor=_l
         p_land = 0.0
     if rigid is not None:
         q_c = np.abs(np.asarray(bl["pocket_force"], float))
-        pocket = np.atleast_1d(_ls.cage_pocket_friction_power(q_c, np.asarray(bl["ball_speed"], float), 2.0 * r_b,
-                                                              rigid["pocket_friction"]))
+        # the ball's spin while its pocket holds it (pocket_sliding_speed / R_b; ball_speed is the time mean of
+        # held and free with the pocket play)
+        w_held = np.asarray(bl["pocket_sliding_speed"], float) / r_b
+        pocket = np.atleast_1d(_ls.cage_pocket_friction_power(q_c, w_held, 2.0 * r_b, rigid["pocket_friction"]))
     elif guidance == "none":
         q_c = np.zeros_like(drag)
         pocket = np.zeros_like(drag)

@@ -471,6 +471,14 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
     # final contact results
     out = _ball_results(b, geom, psi, balls, cs, kin, geo, model, n_strips, n_across, w_i, w_o, rd_o, rd_i,
                         lub, e_prime, mass, inertia, controls, moving, prob.fto, prob.fti)
+    if rc is not None and moving and cage_info is not None and cage_info.get("free_kinematics") is not None:
+        # pocket play: each ball's outputs the time mixture of the held ball (kin) and the free one
+        f = cage_info["pocket_contact_fraction"]
+        if np.any(f < 1.0):
+            free_out = _ball_results(b, geom, psi, balls, cs, cage_info["free_kinematics"], geo, model, n_strips,
+                                     n_across, w_i, w_o, rd_o, rd_i, lub, e_prime, mass, inertia, controls, moving,
+                                     prob.fto, prob.fti)
+            _mix_ball_results(out, free_out, f)
     cage_out = None if rc is None else _cage_result(rc, cage_info, out, moving, w_i)
     if control == "equilibrium" and moving and not np.any(controls == "equilibrium"):
         bad = next((j for j, c in enumerate(checks) if c is not None), 0)
@@ -730,6 +738,23 @@ def _ball_results(b, geom, psi, balls, cs, kin, geo, model, n_strips, n_across, 
     return out
 
 
+#: Outputs of _ball_results that depend on a ball's kinematics (the time mixture of the pocket play).
+_KINEMATIC_OUTPUTS = ("centrifugal_force", "gyroscopic_moment", "orbital_speed", "pivot_slip", "ball_speed",
+                      "ball_speed_absolute", "beta", "spin_roll_inner", "spin_roll_outer", "rolling_point_outer",
+                      "rolling_point_inner", "dissipation_inner_ball", "dissipation_outer_ball", "qv_inner_ball",
+                      "qv_outer_ball", "traction_drag", "u_roll_inner", "u_roll_outer", "drive_torque_inner_ball",
+                      "drive_torque_outer_ball", "slip_inner", "slip_outer")
+
+
+def _mix_ball_results(out, free_out, f):
+    """``out`` (the held balls) becomes the time mean f held + (1 - f) free of every kinematic output; a ball
+    held all the time (f = 1) keeps its values as they are (NaN included)."""
+    for k in _KINEMATIC_OUTPUTS:
+        held, free = np.asarray(out[k], float), np.asarray(free_out[k], float)
+        w = f.reshape((-1,) + (1,) * (held.ndim - 1))
+        out[k] = np.where(w >= 1.0, held, w * held + (1.0 - w) * free)
+
+
 def _load_name(loads, fixed):
     """The input to name when the contacts leave the elastic range: the largest load (N and N m as given),
     else the held DOFs or the speed."""
@@ -831,8 +856,78 @@ def _land_state(rc, lub, omega_c, omega_ring, force):
     return eps, torque, crushed
 
 
+def pocket_contact_fraction(u, psi, omega_c, radius, clearance, substeps=64):
+    """Share of the time each ball rests on a pocket wall, the balls moving freely inside their pockets' play
+    (docs/theory/quasistatic.md#pocket-play).
+
+    A ball whose own orbital speed (its cageless equilibrium) differs from the cage's by ``u`` [rad/s] drifts
+    along the orbit at ds/dt = ``radius`` u sign(omega_c) relative to its pocket's centre; the pocket stops it
+    at s = +-``clearance`` [m] (a play operator: while it rests on a wall and u pushes it outward it moves with
+    the cage, the pocket holding it at the cage's speed). ``u`` is sampled at the balls' azimuths ``psi`` [rad]
+    (one ball seen at every azimuth: the quasi-static solution is steady in the cage's frame), linear between
+    them, integrated over ``substeps`` steps per spacing (the wall reached within a step counted to the
+    instant, so that the fraction is continuous in ``u``). The periodic solution: with a net drift D per
+    revolution of the free path S(t), the ball rests on the front wall (D > 0; the back wall for D < 0) where S
+    reaches its largest (smallest) value of the revolution, so one revolution from there is periodic; with no
+    net drift it floats when S spans less than the play 2 ``clearance``. Returns the fraction in [0, 1] per
+    ball: the time on a wall within half a spacing either side of its azimuth."""
+    u = np.asarray(u, float)
+    z = u.size
+    direction = 1.0 if omega_c >= 0.0 else -1.0
+    ang_all = np.mod(direction * np.asarray(psi, float), 2.0 * np.pi)
+    order = np.argsort(ang_all, kind="stable")
+    ang = ang_all[order]
+    gaps = np.diff(np.append(ang, ang[0] + 2.0 * np.pi))
+    rate = radius * u[order] * direction                  # ds/dt [m/s] at each azimuth, in travel order
+    x = (np.arange(substeps) + 0.5) / substeps
+    r = ((1.0 - x)[None, :] * rate[:, None] + x[None, :] * np.roll(rate, -1)[:, None]).ravel()
+    dt = np.repeat(gaps / max(abs(omega_c), 1e-300) / substeps, substeps)
+    owner = np.where(x[None, :] < 0.5, np.arange(z)[:, None], (np.arange(z)[:, None] + 1) % z).ravel()
+    path = np.cumsum(r * dt)                              # the free path S over one revolution
+    on = np.zeros(r.size)
+    if abs(path[-1]) > 1e-12 * clearance or np.ptp(np.append(path, 0.0)) > 2.0 * clearance:
+        side = 1.0 if path[-1] >= 0.0 else -1.0
+        start = int(np.argmax(path) if side > 0.0 else np.argmin(path)) + 1
+        s = side * clearance
+        for m in np.roll(np.arange(r.size), -start):
+            ds = r[m] * dt[m]
+            wall = clearance if ds > 0.0 else -clearance
+            if ds != 0.0 and abs(s + ds) >= clearance:      # on the wall from where it reaches it
+                on[m] = dt[m] * (1.0 - (wall - s) / ds)
+                s = wall
+            else:
+                s += ds
+    time = np.bincount(owner, weights=dt, minlength=z)
+    held = np.bincount(owner, weights=on, minlength=z)
+    out = np.empty(z)
+    out[order] = np.divide(held, time, out=np.ones(z), where=time > 0.0)
+    return out
+
+
+def _free_balls(geo, loaded, races, stage, kin, model, n_strips, n_across, inertia):
+    """Each ball's own kinematics without the cage (z x 4; NaN rows for a ball without them: no inner load, or
+    a traction equilibrium that does not converge): the traction equilibrium of a cageless ball, or race
+    control by ``races[j]``."""
+    z = geo.shape[0]
+    free = np.full((z, 4), np.nan)
+    for j in range(z):
+        if not loaded[j]:
+            continue
+        same = next((i for i in range(j) if np.allclose(geo[i], geo[j], rtol=1e-12, atol=0.0)), None)
+        if same is not None:
+            free[j] = free[same]
+        elif stage == "equilibrium":
+            k, chk = km.traction_equilibrium(geo[j], model, n_strips, n_across, kin[j], inertia)
+            if chk["converged"]:
+                free[j] = k
+        else:
+            free[j, :3] = km.race_control(geo[j], races[j])
+            free[j, 3] = 0.0
+    return free
+
+
 def _caged_balls(omega_c, geo, loaded, races, stage, kin, rc, model, n_strips, n_across, inertia, lub, w_i, w_o,
-                 psi):
+                 psi, free=None):
     """Every ball at the cage speed ``omega_c`` (docs/theory/quasistatic.md#the-rigid-cage): its kinematics
     (race control at the cage speed by ``races[j]``, the traction equilibrium of its moments with the pocket
     force and its friction, or, without an inner load, rolling on the outer race), its pocket force
@@ -864,6 +959,17 @@ def _caged_balls(omega_c, geo, loaded, races, stage, kin, rc, model, n_strips, n
         new[j] = km.cage_kinematics(geo[j], omega_c, race)
         c = km.ball_contacts(new[j], geo[j], model, n_strips, n_across)
         q_p[j] = -(c[0, 6] + c[1, 6])
+    # pocket play: a ball with an orbit of its own (free[j]) rests on a pocket wall only the fraction f of the
+    # time (pocket_contact_fraction); the cage feels the time mean f Q_p of its force
+    q_held = q_p.copy()
+    f = np.ones(z)
+    if free is not None:
+        has = np.isfinite(free[:, 0])
+        if has.any():
+            u = np.where(has, free[:, 0] - omega_c, 0.0)
+            f = np.where(has, pocket_contact_fraction(u, psi, omega_c, float(np.mean(geo[:, km.G_CR])),
+                                                      rc.pocket_clearance), 1.0)
+        q_p = f * q_held
     cr = geo[:, km.G_CR]
     rb = geo[:, km.G_RB]
     w = np.hypot(new[:, 1], new[:, 2])
@@ -889,17 +995,19 @@ def _caged_balls(omega_c, geo, loaded, races, stage, kin, rc, model, n_strips, n
                  "land_power": -t_land * (omega_c - w_ring), "land_eccentricity": eps, "land_crushed": crushed,
                  "land_force": math.hypot(fx, fy), "ring_speed": w_ring, "torque": torque,
                  "torque_scale": scale, "checks": checks, "controls": used,
-                 "wr_unit": wr_unit}
+                 "wr_unit": wr_unit, "pocket_contact_fraction": f, "pocket_force_held": q_held,
+                 "free_kinematics": None if free is None else np.where(np.isfinite(free), free, new)}
 
 
 def _solve_cage(geo, loaded, races, stage, kin, rc, model, n_strips, n_across, inertia, lub, w_i, w_o, psi):
     """The cage speed that balances the cage's torque (:func:`_caged_balls`; brentq on a bracket widened from
     the balls' present orbital speeds: the torque falls with the cage speed) and the balls at it."""
     last = {}
+    free = _free_balls(geo, loaded, races, stage, kin, model, n_strips, n_across, inertia)
 
     def torque(wc):
         k, info = _caged_balls(wc, geo, loaded, races, stage, last.get("kin", kin), rc, model, n_strips, n_across,
-                               inertia, lub, w_i, w_o, psi)
+                               inertia, lub, w_i, w_o, psi, free)
         last["kin"], last["info"], last["wc"] = k, info, wc
         return info["torque"]
 
@@ -946,10 +1054,13 @@ def _cage_result(rc, info, out, moving, w_i):
     z = out["psi"].size
     if not moving or info is None:  # the rings turn together: the cage with them, no pocket or land force
         info = {"speed": float(w_i), "pocket_force": np.zeros(z), "pocket_sliding_speed": np.zeros(z),
+                "pocket_contact_fraction": np.zeros(z),
                 "pocket_power_ball": np.zeros(z), "land_torque": 0.0, "land_power": 0.0, "land_eccentricity": 0.0,
                 "land_crushed": False, "land_force": 0.0, "torque_residual": 0.0}
     out["pocket_force"] = np.asarray(info["pocket_force"], float).copy()
     out["pocket_sliding_speed"] = np.asarray(info["pocket_sliding_speed"], float).copy()
+    out["pocket_force_held"] = np.asarray(info.get("pocket_force_held", info["pocket_force"]), float).copy()
+    out["pocket_contact_fraction"] = np.asarray(info.get("pocket_contact_fraction", np.ones(z)), float).copy()
     if info["land_crushed"]:
         warnings.warn(CageLandWarning(
             f"rigid_cage: the land film cannot carry the net pocket force {info['land_force']:.4g} N within the "
