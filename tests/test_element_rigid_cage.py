@@ -200,9 +200,11 @@ def test_element_options_of_the_rigid_cage():
     s = element_scenario("6208", cage="rigid", rigidCage=CAGE, gravity=(0.0, -9.81, 0.0))
     assert (s.cage, s.rigid_cage, s.gravity) == ("rigid", CAGE, (0.0, -9.81, 0.0))
     with pytest.raises(InputError, match="^gravity: acts on the rigid cage only"):
-        element_scenario("6208", gravity=(0.0, -9.81, 0.0))
+        element_scenario("6208", gravity=(0.0, -9.81, 0.0))           # the 6208's default cage is the torus
+    assert element_scenario("ACBB-120", gravity=(0.0, -9.81, 0.0)).cage == "rigid"   # the ACBB-120's the rigid one
+    assert element_scenario("6208", rigidCage=CAGE).cage == "rigid"   # a RigidCage chooses the rigid cage
     with pytest.raises(InputError, match="^rigidCage: given with cage='torus'"):
-        element_scenario("6208", rigidCage=CAGE)
+        element_scenario("6208", cage=True, rigidCage=CAGE)
     with pytest.raises(InputError, match="^cage: bearing ACBB-120 has no cage balls; use cage='rigid'"):
         _user_model_on("ACBB-120", cage=True)
 

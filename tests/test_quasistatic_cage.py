@@ -269,3 +269,34 @@ def test_pocket_play_lowers_the_cage_losses_of_unequal_balls():
     assert free.size and np.all(np.abs(free / play.cage["speed"] - 1.0) < 0.01)
     axial = solve_quasistatic(b, 0.0, 3000.0, **common)
     assert np.all(axial.balls["pocket_contact_fraction"] == 1.0)
+
+
+def test_acbb120_rigid_cage_dem_equals_the_quasistatic_equilibrium():
+    """Gupta's ACBB-120 at 25,000 rpm under 22,240 N (its oil and EHL traction, the estimated outer-land brass
+    cage, the bearing's default cage): the reference engine's steady state (40 ms from the quasi-static start,
+    ellipse traction) equals the quasi-static traction equilibrium with the cage within 1 % in the loads and
+    the cage speed and 3 % in the dissipation, cage losses included (issue 34's check;
+    validation/consistency/acbb120_rigid_cage.py prints it)."""
+    import warnings
+
+    import exudyn_bearing as eb
+
+    ehl, lub = "ehl_mil_l_23699_492K", "MIL-L-23699_492K"
+    s = solve_quasistatic("ACBB-120", 0.0, 22240.0, omega=2618.0, control="equilibrium", cage="rigid", traction=ehl,
+                          lubricant=lub, fixed={"tilt_x": 0.0, "tilt_y": 0.0}, stiffness=False, n_strips=16,
+                          n_across=4)
+    pl = power_losses(s)["power_loss"]
+    sc = eb.Scenario(Fa=22240.0, omega=2618.0, t_end=0.04, dt=2e-6, traction_level="ellipse", traction=ehl,
+                     n_strips=16, n_across=4, initial="quasistatic", control="equilibrium", cage_damping="implicit",
+                     sample_dt=1e-4)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", eb.SteadyStateWarning)
+        d = eb.simulate("ACBB-120", sc, lubricant=lub, progress=False).summary()
+    assert d["steady"]["steady"] and d["cage_motion"] == "centred"
+    for k in ("q_max_inner", "q_max_outer"):
+        assert d[k] == pytest.approx(getattr(s, k), rel=0.01)
+    assert d["cage_speed"] == pytest.approx(s.cage["speed"], rel=0.01)
+    qs = s.dissipation_total + pl["cage_pocket"] + pl["cage_land"]
+    assert d["dissipation"] == pytest.approx(qs, rel=0.03)
+    assert d["cage_power_land"] == pytest.approx(pl["cage_land"], rel=0.03)
+    assert d["cage_power_pocket"] == pytest.approx(pl["cage_pocket"], rel=0.1)

@@ -14,6 +14,7 @@ from exudyn_bearing.model import layout as L
 from exudyn_bearing.model.contact import scene_loss_path, scene_paths
 from exudyn_bearing.model.motion import ring_poses
 from exudyn_bearing.model.stability import land_step_check, stable_step
+from exudyn_bearing.model.scenario import resolve_cage
 from exudyn_bearing.outputs.cage_summary import whirl
 from exudyn_bearing.physics.short_bearing import short_bearing_force_xy
 from exudyn_bearing.solvers.reference.engine import ReferenceEngine
@@ -92,6 +93,18 @@ def test_cage_option_refusals(b6208):
         eb.Scenario(Fr=3000.0, omega=500.0, cage="torus", rigid_cage=estimated_cage(b6208))
     with pytest.raises(InputError, match="rigid_cage"):
         eb.Scenario(Fr=3000.0, omega=500.0, cage="rigid", rigid_cage="brass")
+
+
+def test_the_default_cage_is_the_bearings_own():
+    """cage='auto' (the default): the torus where the bearing has cage balls (the papers' bearings keep their
+    validated scenes), the rigid cage where it has none (the ACBB-120); a RigidCage given chooses the rigid cage."""
+    sc = eb.Scenario(Fr=3000.0, omega=500.0)
+    assert sc.cage == "auto"
+    assert ReferenceEngine("6208", sc).scenario.cage == "torus"
+    assert ReferenceEngine("ACBB-120", eb.Scenario(Fa=22240.0, omega=2618.0)).scenario.cage == "rigid"
+    assert eb.Scenario(rigid_cage=estimated_cage(eb.catalog["6208"])).cage == "rigid"
+    with pytest.raises(InputError, match="rigid_cage"):
+        eb.Scenario(cage="none", rigid_cage=estimated_cage(eb.catalog["6208"]))
 
 
 def test_the_torus_cage_needs_cage_balls():
@@ -315,7 +328,13 @@ def test_gravity_and_unbalance_refusals(b6208):
     with pytest.raises(InputError, match="gravity"):
         eb.Scenario(Fr=3000.0, omega=500.0, cage="rigid", gravity=(0.0, -981.0, 0.0))
     with pytest.raises(InputError, match="gravity.*rigid"):
-        eb.Scenario(Fr=3000.0, omega=500.0, gravity=(0.0, -9.81, 0.0))
+        eb.Scenario(Fr=3000.0, omega=500.0, cage="torus", gravity=(0.0, -9.81, 0.0))
+    # the default cage ("auto") with gravity: refused where it resolves to the torus (the 6208), taken on the
+    # ACBB-120, whose default is the rigid cage
+    auto = eb.Scenario(Fr=3000.0, omega=500.0, gravity=(0.0, -9.81, 0.0))
+    with pytest.raises(InputError, match="gravity.*rigid"):
+        resolve_cage(auto, b6208)
+    assert resolve_cage(auto, eb.catalog["ACBB-120"]).cage == "rigid"
     with pytest.raises(InputError, match="unbalance"):
         _cage(b6208, unbalance=-1.0)
     with pytest.raises(InputError, match="unbalance.*kg m"):

@@ -55,10 +55,11 @@ def add_parser(sub):
     p.add_argument("--hertz", choices=METHODS, default="exact", help="Hertz fidelity level")
     p.add_argument("--film", choices=("hd", "mk"), default="hd",
                    help="film model: Hamrock-Dowson or Masjedi-Khonsari reading")
-    p.add_argument("--cage", nargs="?", const="torus", default="torus", choices=("torus", "rigid", "none"),
-                   help="cage model: the DEM papers' torus of cage balls (default), a rigid cage body with pockets "
+    p.add_argument("--cage", nargs="?", const="torus", default="auto", choices=("auto", "torus", "rigid", "none"),
+                   help="cage model: the DEM papers' torus of cage balls, a rigid cage body with pockets "
                         "and a guiding land (both engines; geometry estimated from the ball diameter, "
-                        "docs/theory/cage.md), or none")
+                        "docs/theory/cage.md), or none; default auto: the torus where the bearing has cage balls "
+                        "(the papers' bearings), else the rigid cage (ACBB-120)")
     p.add_argument("--no-cage", dest="cage", action="store_const", const="none", help="the same as --cage none")
     p.add_argument("--lubrication", action=argparse.BooleanOptionalAction, default=True,
                    help="Lambda-switched damping and friction on/off")

@@ -13,6 +13,7 @@ from ..physics.load_distribution import static_equilibrium
 from .contact import HZ_N
 from .layout import H_E1, H_E2, HIST_N
 from .operating_geometry import start_geometry
+from .scenario import resolve_cage
 
 __all__ = ["initial_state", "initial_history", "ring_mass_estimate", "rigid_cage_state", "state_from_ball_kinematics"]
 
@@ -36,7 +37,7 @@ def initial_state(bearing: BallBearing, scenario, start: dict | None = None) -> 
 
     ``start``: a state of :func:`state_from_ball_kinematics` (from the
     quasi-static solver, ``initial='quasistatic'``) used instead (copied)."""
-    b, s = bearing, scenario
+    b, s = bearing, resolve_cage(scenario, bearing)
     if start is not None:
         state = {k: (np.array(v, float) if isinstance(v, np.ndarray) else v) for k, v in start.items()}
         return rigid_cage_state(state) if s.cage == "rigid" else state

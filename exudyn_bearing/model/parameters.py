@@ -18,7 +18,7 @@ from ..physics.losses import OIL_DENSITY, mixture_density, mixture_viscosity
 from . import layout as L
 from .initial_state import ring_mass_estimate
 from .operating_geometry import operating_geometry
-from .scenario import FRICTION_MODELS, Scenario, ellipse_rolling_floor
+from .scenario import FRICTION_MODELS, Scenario, ellipse_rolling_floor, resolve_cage
 
 __all__ = ["scene_parameters", "fill_defects", "traction_vector", "dynamic_traction_model"]
 
@@ -27,7 +27,7 @@ def scene_parameters(bearing: BallBearing, scenario: Scenario, lubricant: Lubric
     """Kernel parameter vector (layout ``kernels.P_*``) of a bearing, a
     scenario's model switches and loads, and a lubricant; shared by the
     reference engine and the Exudyn element."""
-    b, s, lub = bearing, scenario, lubricant
+    b, s, lub = bearing, resolve_cage(scenario, bearing), lubricant
     p = np.zeros(L.N_PARAMS)
     em = material_reduced_modulus(b.material)
     rho_i, z_i = b.inner_groove_center

@@ -69,8 +69,9 @@ def history_friction_error(friction: str, solver: str, parameter: str = "solverT
                       "(friction='regularized' or 'none')")
 
 
-#: Cage models of a scene (:class:`Scenario` ``cage``): True and False are aliases of "torus" and "none".
-CAGE_MODELS = ("torus", "rigid", "none")
+#: Cage models of a scene (:class:`Scenario` ``cage``): True and False are aliases of "torus" and "none";
+#: "auto" (the default) is the bearing's own: the torus where it has cage balls, else the rigid cage.
+CAGE_MODELS = ("torus", "rigid", "none", "auto")
 
 
 def cage_model(cage) -> str:
@@ -81,6 +82,22 @@ def cage_model(cage) -> str:
     if isinstance(cage, str) and cage in CAGE_MODELS:
         return cage
     raise InputError(f"cage: must be one of {', '.join(CAGE_MODELS)} (True: torus, False: none), got {cage!r}")
+
+
+def bearing_cage(cage: str, bearing) -> str:
+    """The cage model ``cage`` means on ``bearing``: "auto" is the torus where the bearing has cage balls (the
+    DEM papers' bearings, whose validated numbers use it) and the rigid cage where it has none (the
+    ACBB-120: the rigid cage's estimated geometry, docs/theory/cage.md); any other name as it is."""
+    if cage != "auto":
+        return cage
+    return "torus" if bearing.has_cage else "rigid"
+
+
+def resolve_cage(scenario: "Scenario", bearing) -> "Scenario":
+    """``scenario`` with its cage model for ``bearing`` (:func:`bearing_cage`); the same object when there is
+    nothing to resolve."""
+    cage = bearing_cage(scenario.cage, bearing)
+    return scenario if cage == scenario.cage else dataclasses.replace(scenario, cage=cage)
 
 
 @dataclass(frozen=True)
@@ -104,12 +121,16 @@ class Scenario:
         slows down.
     Pd : float or None
         Diametral clearance override [m] (None: the bearing's own).
-    cage : {"torus", "rigid", "none"} or bool
-        The cage: the DEM papers' torus cage (cage balls between the balls,
-        the default; True is an alias), a rigid cage body with pockets and a
-        guiding land (``rigid_cage``; reference engine and Exudyn element, docs/theory/cage.md)
-        or none (False is an alias): the balls kept apart by ball / ball
-        contact only. Read back as one of the three names.
+    cage : {"auto", "torus", "rigid", "none"} or bool
+        The cage: the DEM papers' torus cage (cage balls between the balls;
+        True is an alias), a rigid cage body with pockets and a guiding land
+        (``rigid_cage``; reference engine and Exudyn element,
+        docs/theory/cage.md) or none (False is an alias): the balls kept apart
+        by ball / ball contact only. "auto" (default): the torus where the
+        bearing has cage balls, else the rigid cage (:func:`bearing_cage`;
+        the engines resolve it, their records carry the resolved name). A
+        ``rigid_cage`` given with "auto" means "rigid". Read back as one of
+        the four names.
     rigid_cage : RigidCage or None
         Geometry and material of the rigid cage (``exudyn_bearing.data.cages``);
         None: :func:`~exudyn_bearing.data.cages.estimated_cage` of the bearing
@@ -256,7 +277,7 @@ class Scenario:
     t_steady: float = math.inf
     t_ramp_down: float = 0.0
     Pd: float | None = None
-    cage: bool | str = True
+    cage: bool | str = "auto"
     rigid_cage: object = None
     gravity: tuple = (0.0, 0.0, 0.0)
     lubrication: bool = True
@@ -307,6 +328,8 @@ class Scenario:
             if getattr(self, name) is not None:
                 object.__setattr__(self, name, check_number(name, getattr(self, name)))
         object.__setattr__(self, "cage", cage_model(self.cage))
+        if self.rigid_cage is not None and self.cage == "auto":  # a rigid cage's geometry chooses the rigid cage
+            object.__setattr__(self, "cage", "rigid")
         try:
             grav = tuple(check_number("gravity", x) for x in self.gravity)
         except TypeError:
@@ -314,7 +337,7 @@ class Scenario:
         if len(grav) != 3 or not all(math.isfinite(x) for x in grav) or math.hypot(*grav) > 100.0:
             raise InputError(f"gravity: expected three finite components [m/s^2] of at most 100 m/s^2 in magnitude "
                              f"(Earth: 9.81), got {self.gravity!r}")
-        if any(grav) and self.cage != "rigid":
+        if any(grav) and self.cage not in ("rigid", "auto"):
             raise InputError("gravity: acts on the rigid cage only (cage='rigid'); the balls' and rings' weights are "
                              "left out")
         object.__setattr__(self, "gravity", grav)

@@ -19,7 +19,7 @@ from ..physics.friction import sphere_tangential_mass
 from ..physics.hertz import material_reduced_modulus
 from ..physics.load_distribution import race_stiffness
 from .load_range import MAX_CONTACT_PRESSURE, check_load_range
-from .scenario import Scenario, ellipse_rolling_floor
+from .scenario import Scenario, ellipse_rolling_floor, resolve_cage
 
 __all__ = ["ellipse_traction_damping", "SimulationError", "StepSizeWarning", "StableStep", "STABILITY_SAFETY", "START_UP_CAGE_LOAD",
            "STEADY_CAGE_LOAD", "CAGE_BLOW_UP_RATIO", "CAGE_BLOW_UP_RATIO_IMPLICIT", "explicit_step_factor", "expected_cage_load", "stable_step",
@@ -203,7 +203,8 @@ def expected_cage_load(bearing: BallBearing, scenario: Scenario, solution=None) 
 
 def stable_step(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant | None = None,
                 cage_load: float | None = None, land_eccentricity: float | None = None) -> StableStep:
-    """Largest stable time step of the explicit integrator for a scene [s].
+    """Largest stable time step of the explicit integrator for a scene [s] (the scene's cage model on
+    ``bearing``: :func:`~.scenario.resolve_cage`).
 
     ``STABILITY_SAFETY`` times the smallest of the limits below, linearised at
     the largest expected ball load (quasi-static Q_max plus the
@@ -239,6 +240,7 @@ def stable_step(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant |
     cage damping, :data:`CAGE_BLOW_UP_RATIO_IMPLICIT`: right above it). The implicit
     tangential spring sets no limit.
     """
+    scenario = resolve_cage(scenario, bearing)
     b = bearing if scenario.Pd is None else bearing.with_clearance(scenario.Pd)
     lub = default_lubricant(b) if lubricant is None else lubricant
     mb = b.ball_mass
@@ -349,6 +351,7 @@ def land_step_check(bearing: BallBearing, scenario: Scenario, lubricant: Lubrica
                     dt: float) -> str | None:
     """A warning text when the land film at the largest eccentricity a run reached has a stable step
     (:func:`land_film_step`, with ``STABILITY_SAFETY``) below the run's step ``dt``, else None."""
+    scenario = resolve_cage(scenario, bearing)
     if scenario.cage != "rigid" or not eccentricity > 0.0:
         return None
     b = bearing if scenario.Pd is None else bearing.with_clearance(scenario.Pd)
@@ -471,6 +474,7 @@ def cage_load_check(bearing: BallBearing, scenario: Scenario, lubricant: Lubrica
     """A warning text when the largest ball / cage-ball load a run reached
     puts those contacts' stable step (:func:`stable_step` at that load, with
     ``STABILITY_SAFETY``) below its step ``dt``, else None."""
+    scenario = resolve_cage(scenario, bearing)
     if not max_cage_load > 0.0 or not ((scenario.cage == "torus" and bearing.has_cage) or scenario.cage == "rigid"):
         return None
     # the rigid cage's land has a check of its own (land_step_check): its film taken at a small eccentricity

@@ -135,7 +135,7 @@ from ...model.load_angle import check_load_angle, load_rotation
 from ...model.motion import ring_poses
 from ...model.parameters import scene_parameters
 from ...physics.losses import HYSTERESIS_LOSS_FACTOR_STEEL
-from ...model.scenario import Scenario
+from ...model.scenario import Scenario, resolve_cage
 from ...model.stability import (FAST_STEP_SHARE, StepSizeWarning, ring_contact_stiffness, stable_step,
                                 step_warning)
 from ...physics import hertz
@@ -218,7 +218,13 @@ def element_scenario(bearing=None, **options) -> Scenario:
         raise InputError(f"{unknown[0]}: unknown option of the bearing element (valid: {', '.join(names)})")
     o = {n: sig.parameters[n].default for n in names}
     o.update(options)
-    return _scenario_from_options(o, None if bearing is None else load_bearing(bearing))
+    if bearing is None:
+        return _scenario_from_options(o, None)
+    b = load_bearing(bearing)
+    try:
+        return resolve_cage(_scenario_from_options(o, b), b)
+    except InputError as exc:  # the resolved cage refused with the element's option names
+        raise InputError(str(exc).replace("rigid_cage", "rigidCage")) from None
 
 
 class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMixin):
@@ -273,7 +279,7 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
     """
 
     def __init__(self, mbs, bearing, markerInnerRing, markerOuterRing, lubricant: Lubricant | None = None,
-                 cage=True, lubrication=True, friction="history", tangential="explicit", hertzModel="exact",
+                 cage="auto", lubrication=True, friction="history", tangential="explicit", hertzModel="exact",
                  film="hd", guideClearance=50e-6, muDry=0.1, regularizingSpeed=0.1,
                  tangentialStiffnessRatio=2.0 / 3.0, stepSize=1e-6, innerRingSpeed=None, outerRingSpeed=None,
                  initialOmega=0.0, initialLoad=(0.0, 0.0), initial="analytic", sampleInterval=1e-4,
@@ -296,7 +302,7 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
         #: azimuth of the radial load in the outer-ring frame [rad] (the levels' option): the initial state's
         #: balls and ring displacement are turned about z from +x to it
         self.loadAngle = check_load_angle(loadAngle)
-        self.scenario = _scenario_from_options(dict(locals()), b)
+        self.scenario = resolve_cage(_scenario_from_options(dict(locals()), b), b)  # "auto": the bearing's cage
         sampleInterval = check_positive("sampleInterval", sampleInterval)
         if self.scenario.cage == "torus" and not b.has_cage:
             raise InputError(f"cage: bearing {b.name} has no cage balls; use cage='rigid' (a rigid cage body) or "

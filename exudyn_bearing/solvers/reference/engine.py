@@ -23,7 +23,7 @@ from ...model.memory import ESTIMATE_AFTER_S, wall_time_message
 from ...model.motion import ring_poses
 from ...model.parameters import scene_parameters
 from ...model.record import RunInterrupted, RunRecord
-from ...model.scenario import Scenario
+from ...model.scenario import Scenario, resolve_cage
 from ...model.stability import StepSizeWarning, cage_load_check, land_step_check, runaway_error, stable_step, step_warning
 from ...physics import hertz
 from ...physics.contact_slip import DEFAULT_N_ACROSS, DEFAULT_N_STRIPS
@@ -67,7 +67,7 @@ class ReferenceEngine:
             b = b.with_clearance(scenario.Pd)
         self.bearing = b
         self.start = start
-        self.scenario = scenario
+        self.scenario = scenario = resolve_cage(scenario, b)  # "auto": the bearing's own cage
         self.lubricant = default_lubricant(b) if lubricant is None else lubricant  # None: the bearing's
         if scenario.cage == "torus" and not b.has_cage:
             raise InputError(f"cage: bearing {b.name} has no torus cage (cage_ball_radius is None); "
