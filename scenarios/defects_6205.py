@@ -40,6 +40,8 @@ from exudyn_bearing.outputs.plotting import pyplot, save_figure
 from exudyn_bearing.simulate import ENGINES
 from exudyn_bearing.outputs.signals import FAULT_FREQUENCY, envelope_signature, plot_defect_spectrum, spectrum
 
+from _printed import recording
+
 CASES = ("healthy", "outer", "inner", "ball")
 #: The test scene: the CWRU rig speed (1797 rpm) and a 1 kN radial load.
 RPM, LOAD, FS = 1797.0, 1000.0, 48000.0
@@ -171,6 +173,12 @@ def main(argv=None):
     ap.add_argument("--Pd", type=float, help="diametral clearance [m] instead of the catalogue's 0")
     ap.add_argument("--out", default=str(Path(__file__).parent / "out" / "defects_6205"))
     args = ap.parse_args(argv)
+    with recording(Path(args.out) / "printed.txt", __file__, argv):
+        run(args)
+
+
+def run(args):
+    """The runs of :func:`main`'s arguments: simulate, analyse, plot, print."""
     runs = run_cases(args.t_end, args.engine, **({} if args.Pd is None else {"Pd": args.Pd}))
     sig, table = analyse(runs)
     plot_all(runs, sig, args.out)
