@@ -74,7 +74,10 @@ from pathlib import Path
 
 import numpy as np
 
+import exudyn_bearing._jit as _jit  # its once-per-process compile notice (the workers leave it to the sweep)
+
 from .data import InputError, catalog
+from .model.contact import forces
 from .model.stability import SimulationError, StepSizeWarning
 from .outputs.jsonio import to_jsonable
 from .simulate import simulate, spec_inputs
@@ -422,6 +425,7 @@ def _worker_init(parent: int):
     is inherited at fork)."""
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     signal.signal(signal.SIGTERM, signal.SIG_DFL)
+    _jit._announced = True  # the sweep said it once, on a line of its own (run_sweep), not over the progress line
     ppid = os.getppid()
     _die_with_parent()
     if _parent_gone(parent, ppid):  # the parent died before the death signal was set
@@ -497,6 +501,8 @@ def run_sweep(cases: dict, out_dir, workers: int | None = None, scheduler: str |
         if progress:
             _progress(len(status), total, t0, stream, len(errors))
 
+    if todo:  # a cold numba cache: said once here, before the progress line, not by every worker over it
+        _jit.announce_compilation(forces)
     if progress:
         _progress(len(status), total, t0, stream)
     try:

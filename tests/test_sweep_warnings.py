@@ -75,3 +75,13 @@ def test_a_dataset_index_lists_the_warning_types_of_each_case(tmp_path, capsys):
     assert read_index(tmp_path)[0]["warnings"] == SteadyStateWarning.__name__
     err = capsys.readouterr().err
     assert err.count("SteadyStateWarning") == 1 and "SteadyStateWarning in 1 of 1 cases" in err
+
+
+def test_a_cold_kernel_cache_is_said_once_before_the_progress_line(tmp_path, monkeypatch, capsys):
+    import exudyn_bearing._jit as jit
+
+    monkeypatch.setattr(jit, "_announced", False)
+    monkeypatch.setattr(jit, "_cache_is_cold", lambda dispatcher: True)
+    sw.run_sweep({"a": {"bearing": "6208", "scenario": {"dt": -1e-6}}}, tmp_path, workers=1, progress=True)
+    err = capsys.readouterr().err
+    assert err.count(jit.COMPILE_NOTICE) == 1 and err.startswith(jit.COMPILE_NOTICE + "\n\r[sweep] |")
