@@ -185,8 +185,9 @@ def print_summary(s):
 
 
 def loss_line(losses, s) -> str:
-    """``power loss ... W (components [W]), friction torque ... N m`` of a losses dict
-    (solvers/quasistatic/losses.py: ``power_loss``, ``power_loss_total``, ``friction_torque_total``)."""
+    """The line of the total power loss [W], its components [W] and the friction torque [N m] of a
+    losses dict (solvers/quasistatic/losses.py: ``power_loss``, ``power_loss_total``,
+    ``friction_torque_total``)."""
     pl = losses["power_loss"]
     return (f"power loss {losses['power_loss_total']:.4g} W (" + ", ".join(f"{k} {pl[k]:.4g}" for k in LOSS_COMPONENTS)
             + f" W), friction torque {losses['friction_torque_total']:.4g} N m" + _still(s))
