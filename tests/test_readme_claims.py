@@ -119,6 +119,22 @@ CLAIMS = [
      "6208 radial quasistatic 42.59 2.116 2.355", "python validation/consistency/losses_dynamic.py"),
     ("41.7, 2.123 and 2.328 W in both engines", "6208 radial exudyn 41.7 2.123 2.328 -2.09 %, +0.36 %, -1.14 % +0.064 %",
      "python validation/consistency/losses_dynamic.py"),
+    ("at\n100 rad/s the totals agree within 0.64-1.30", "traction / SKF sliding 1.21 - 1.74 (median 1.61); total / SKF "
+     "total 0.71 - 1.30", "python validation/published/losses_6208_7208.py"),
+    ("at\n100 rad/s the totals agree within 0.64-1.30", "traction / SKF sliding 1.19 - 1.42 (median 1.34); total / SKF "
+     "total 0.64 - 0.96", "python validation/published/losses_6208_7208.py"),
+    ("isothermal, fully flooded rolling force is 2.33-3.16 times SKF's rolling\nterm on the 6208",
+     "6208 highest speed (1700 rad/s): rolling / SKF rolling 2.33 - 3.16", "python validation/published/losses_6208_7208.py"),
+    ("within 1 % (-0.02 % on the script's 6208\nthrust run at the ellipse level)",
+     "holds (residual -0.02 %, tolerance 1 %)", "python validation/published/losses_6208_7208.py"),
+    ("prints inner ring 483.0 K, outer ring 480.2 K, balls 483.4 K, oil 476.6 K (7 iterations)",
+     "temperatures [K]: inner 483.0, outer 480.2, ball 483.4, oil 476.6 (oil in 394.0, contacts 482.5); 7 iterations",
+     "python -m exudyn_bearing quasistatic ACBB-120 --Fa 22240 --rpm 25000 --thermal --oil-inlet-temperature 394 "
+     "--oil-flow 6e-5"),
+    ("and 11.14 kW (traction 6419 W, EHL rolling 2881 W, hysteresis 822.2 W, drag 1016 W",
+     "power loss 1.114e+04 W (traction 6419, ehl_rolling 2881, hysteresis 822.2, drag 1016,",
+     "python -m exudyn_bearing quasistatic ACBB-120 --Fa 22240 --rpm 25000 --thermal --oil-inlet-temperature 394 "
+     "--oil-flow 6e-5"),
     ("(0.363 s with an assumed outer-land cage, five nodes)",
      "assumed outer-land cage (5 nodes): median 0.363 s", "python validation/performance/bench_thermal.py"),
     # defect signals (docs/howto/defects_and_datasets.md; the scenario's stored run)
