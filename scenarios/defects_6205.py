@@ -40,8 +40,6 @@ from exudyn_bearing.outputs.plotting import pyplot, save_figure
 from exudyn_bearing.simulate import ENGINES
 from exudyn_bearing.outputs.signals import FAULT_FREQUENCY, envelope_signature, plot_defect_spectrum, spectrum
 
-from _printed import recording
-
 CASES = ("healthy", "outer", "inner", "ball")
 #: The test scene: the CWRU rig speed (1797 rpm) and a 1 kN radial load.
 RPM, LOAD, FS = 1797.0, 1000.0, 48000.0
@@ -173,6 +171,8 @@ def main(argv=None):
     ap.add_argument("--Pd", type=float, help="diametral clearance [m] instead of the catalogue's 0")
     ap.add_argument("--out", default=str(Path(__file__).parent / "out" / "defects_6205"))
     args = ap.parse_args(argv)
+    from _printed import recording  # scenarios/_printed.py (here, not at import: levels_checks.py loads build())
+
     with recording(Path(args.out) / "printed.txt", __file__, argv):
         run(args)
 

@@ -67,8 +67,6 @@ from exudyn.itemInterface import (LoadForceVector, LoadMassProportional, LoadTor
 import exudyn_bearing as eb
 from exudyn_bearing.outputs.plotting import pyplot, save_figure
 
-from _printed import recording
-
 
 def build(omega_target=1000.0, torque_max=5.0, unbalance=1e-4, dt=5e-6, mode="fast", sub_steps=1):
     rho, r, length, half_span = 7850.0, 0.02, 0.25, 0.1
@@ -118,6 +116,8 @@ def main(argv=None):
     ap.add_argument("--sub-steps", type=int, default=1, help="fast mode: ball sub-steps of 5 us per Exudyn step")
     ap.add_argument("--out", default=str(Path(__file__).parent / "out" / "rotor_two_6208"))
     args = ap.parse_args(argv)
+    from _printed import recording  # scenarios/_printed.py (here, not at import: levels_checks.py loads build())
+
     with recording(Path(args.out) / "printed.txt", __file__, argv):
         run(args)
 

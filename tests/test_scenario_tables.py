@@ -64,3 +64,15 @@ def test_the_rotor_script_prints_what_the_stored_run_holds(tmp_path, load_script
     assert first == f"$ python scenarios/rotor_two_6208.py --t-end 0.04 --omega 30 --out {tmp_path}"
     end, rows, tail = rotor_table(lines)
     assert end is not None and len(rows) == 5 and set(tail) == {"A", "B"}
+
+
+def test_the_scenarios_import_without_their_folder_on_the_path(monkeypatch):
+    # validation/consistency/levels_checks.py loads rotor_two_6208's build() by file: _printed is imported in main()
+    import importlib.util
+    import sys
+
+    monkeypatch.setattr(sys, "path", [p for p in sys.path if p != str(ROOT / "scenarios")])
+    monkeypatch.delitem(sys.modules, "_printed", raising=False)
+    for name in ("rotor_two_6208", "defects_6205"):
+        spec = importlib.util.spec_from_file_location(f"{name}_by_file", ROOT / "scenarios" / f"{name}.py")
+        spec.loader.exec_module(importlib.util.module_from_spec(spec))
