@@ -39,7 +39,7 @@ def command_line(script, argv=None) -> str:
 @contextlib.contextmanager
 def recording(path, script, argv=None):
     """Print as usual and, when the block ends without an error, write the command and what was printed
-    to ``path``."""
+    to ``path`` (paths inside the repository written relative to it)."""
     buf = io.StringIO()
     old = sys.stdout
     sys.stdout = _Tee(old, buf)
@@ -49,4 +49,5 @@ def recording(path, script, argv=None):
         sys.stdout = old
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
-    path.write_text(f"$ {command_line(script, argv)}\n{buf.getvalue()}")
+    root = f"{Path(script).resolve().parents[1]}/"
+    path.write_text(f"$ {command_line(script, argv)}\n{buf.getvalue().replace(root, '')}")
