@@ -101,6 +101,60 @@ CLAIMS = [
      "linear, speed table GeneralizedAlpha 1.0e-04 0.050 0.238", "python validation/performance/bench_levels.py --repeat 3"),
     ("1.65 times in bench_element.py and 3.40 s at 5 us in\nprofile_element.py",
      "full element step 16.99 (3.40 s wall per simulated s)", "python validation/performance/profile_element.py"),
+    # the bearing levels in a rotor (docs/howto/rotor.md)
+    ("2.8 s with Hamrock-Brewe", "quasistatic, hamrock_brewe 2.8 s wall, final speed 986 rad/s", "python validation/performance/bench_levels.py --repeat 3"),
+    ("and 1.6 s at the linear level", "linear, speed table 1.6 s wall, final speed 986 rad/s", "python validation/performance/bench_levels.py --repeat 3"),
+    ("The compiled call for the nine balls takes 4.1 us at the operating pose\n  instead of 54.3 us",
+     "the compiled kernel 4.1 us (with direct exact Hertz constants and cold-started balls 54.3 us)", "python validation/performance/bench_levels.py --repeat 3"),
+    ("3.54 instead of 5.30 evaluations per\n  step on the test shaft", "relative tolerance 1e-08: x 7.59e-07 nm "
+     "(7.1e-06 % of the step halving's), y 1.71e-05 nm (1e-05 %), 5.30 evaluations per step", "python validation/performance/bench_levels.py --repeat 3"),
+    ("3.54 instead of 5.30 evaluations per\n  step on the test shaft", "y 0.0827 nm (0.05 %), 3.54 evaluations per step",
+     "python validation/performance/bench_levels.py --repeat 3"),
+    ("and 4.7 instead of 8.0 in the run-up", "quasistatic, exact Hertz 3.8 s wall, final speed 986 rad/s, 4.69 "
+     "evaluations per step and bearing", "python validation/performance/bench_levels.py --repeat 3"),
+    ("The shaft's\n  motion changes by at most 0.05 % (test shaft) and 0.43 % (20 um\n  clearance, 500 N)",
+     "relative tolerance 0.0001: x 2.86 nm (0.43 % of the step halving's)", "python validation/performance/bench_levels.py --repeat 3"),
+    ("only returns zeros costs 3.8 us; the level's user function itself takes\n  5.2 us (4.1 us of it the compiled call",
+     "a user function returning zeros adds 3.8 us per call (Exudyn's Python boundary) the level's user function 5.2 "
+     "us per call at its operating pose, of which _evaluate 4.7 us and the compiled kernel 4.1 us", "python validation/performance/bench_levels.py --repeat 3"),
+    ("and 3.54 instead of the linear level's 2.03", "linear, speed table GeneralizedAlpha 1.0e-04 0.050 0.238 2.03",
+     "python validation/performance/bench_levels.py --repeat 3"),
+    ("The ball element is 0.023 % off\n  under radial load", "balls x = 24.811 um (+0.023 %)", "python validation/consistency/levels_checks.py"),
+    ("Under the combined load it is 1.40 % off in x", "balls x = 26.454 um (-1.401 %), axial 110.121 um (-0.209 %), "
+     "tilt_y 2.5366 mrad", "python validation/consistency/levels_checks.py"),
+    ("the quasi-static 2.607 mrad", "axial 110.352 um, tilt_y 2.6072 mrad", "python validation/consistency/levels_checks.py"),
+    ("7.5124 um with a ball under the load and 7.4805 um with two balls\n  straddling it, 31.95 nm peak-to-peak (0.425 %",
+     "delta(ball under the load) = 7.5124 um, delta(two balls straddling) = 7.4805 um, peak-to-peak 31.95 nm (0.425 % "
+     "of the mean)", "python validation/published/levels_published_vc.py"),
+    ("level gives 31.97 nm (+0.077 %), and across the load +0.557 %", "level 31.9747 nm (+0.077 %)", "python validation/published/levels_published_vc.py"),
+    ("level gives 31.97 nm (+0.077 %), and across the load +0.557 %", "level 200.7815 nm (+0.557 %)", "python validation/published/levels_published_vc.py"),
+    ("20 um clearance +4.6 % (x) and -0.43 % (y)", "level 81.7448 nm (+4.627 %)", "python validation/published/levels_published_vc.py"),
+    ("20 um clearance +4.6 % (x) and -0.43 % (y)", "level 1167.8553 nm (-0.429 %)", "python validation/published/levels_published_vc.py"),
+    ("+0.1 %,\n  +5.4 %, +1.2 % and -15.4 % at 50, 500, 1000 and 1400 rad/s", "16.376 nm (+0.1 %)", "python validation/published/levels_published_vc.py"),
+    ("+0.1 %,\n  +5.4 %, +1.2 % and -15.4 % at 50, 500, 1000 and 1400 rad/s", "17.764 nm (+5.4 %)", "python validation/published/levels_published_vc.py"),
+    ("+0.1 %,\n  +5.4 %, +1.2 % and -15.4 % at 50, 500, 1000 and 1400 rad/s", "23.657 nm (+1.2 %)", "python validation/published/levels_published_vc.py"),
+    ("+0.1 %,\n  +5.4 %, +1.2 % and -15.4 % at 50, 500, 1000 and 1400 rad/s", "39.990 nm (-15.4 %)", "python validation/published/levels_published_vc.py"),
+    ("peaks at 285.7 Hz against Z f_c = 283.6 Hz\n  (resolution 23.8 Hz)",
+     "Z omega_c / 2 pi = 283.6 Hz; x spectrum peak above it/2 at 285.7 Hz (resolution 23.8 Hz)", "python validation/published/levels_published_vc.py"),
+    ("283.2 Hz, with\n  Z f_c = 283.6 Hz and a spectral resolution of 3.3 Hz", "P_d = 0 um: Z omega_c / 2 pi = 283.6 Hz; "
+     "spectrum peak above it/2 at 283.2 Hz (resolution 3.3 Hz)", "python validation/consistency/levels_checks.py"),
+    ("(54.5, 9.67 and 102 nm)", "amplitudes at 1, 2, 3 x Z f_c: 54.5, 9.67, 102 nm", "python validation/consistency/levels_checks.py"),
+    ("The largest peak, at 953.0 Hz", "spectrum peak above it/2 at 953.0 Hz (resolution 3.3 Hz)", "python validation/consistency/levels_checks.py"),
+    ("natural frequency on the bearing (1001 Hz linearised)", "shaft natural frequency sqrt(k_xx/m)/2 pi = 1001 Hz", "python validation/consistency/levels_checks.py"),
+    ("settle at\n  an orbit radius of 2.13 um (quasi-static) and 3.25 um (linear",
+     "205- 300 3.95 / 224.4 / 154.8 2.13 / 53.9 / 396.0 3.25 / 54.3 / 396.0", "python validation/consistency/levels_checks.py"),
+    ("(155 against\n  396 rad/s at 205-300 ms: the balls skid)", "205- 300 3.95 / 224.4 / 154.8", "python validation/consistency/levels_checks.py"),
+    ("whirls at 205-300 ms (3.95 um orbit radius, 224 N ring force)", "205- 300 3.95 / 224.4 / 154.8", "python validation/consistency/levels_checks.py"),
+    ("3.5 us 1.2e-4\n  (45.9 s/s)", "balls (bodies), VelocityVerlet 3.5e-06 s wall 0.92 s ( 45.9 s per simulated s), "
+     "error 0.000116", "python validation/performance/levels_work_precision.py"),
+    ("fast mode 3.5 us 1.2e-4 (27.7 s/s), 4 sub-steps 4.5e-4\n  (6.9 s/s)", "balls (fast), VelocityVerlet 3.5e-06 s wall "
+     "0.55 s ( 27.7 s per simulated s), error 0.000116", "python validation/performance/levels_work_precision.py"),
+    ("fast mode 3.5 us 1.2e-4 (27.7 s/s), 4 sub-steps 4.5e-4\n  (6.9 s/s)", "balls (fast, 4 sub-steps), VelocityVerlet "
+     "3.5e-06 s wall 0.14 s ( 6.9 s per simulated s), error 0.000453", "python validation/performance/levels_work_precision.py"),
+    ("quasi-static 1.1e-3 at every step up to 1e-4 s (1.1 s/s at\n  1e-4 s), 8.6e-3 at 5e-4 s",
+     "quasistatic, GeneralizedAlpha 0.0001 s wall 0.02 s ( 1.1 s per simulated s), error 0.00108", "python validation/performance/levels_work_precision.py"),
+    ("8.6e-3 at 5e-4 s; linear 0.116 at every step", "quasistatic, GeneralizedAlpha 0.0005 s wall 0.01 s ( 0.3 s per "
+     "simulated s), error 0.00863", "python validation/performance/levels_work_precision.py"),
     # losses and temperatures (docs/howto/losses_and_temperatures.md)
     ("prints 61.47 W, of it traction\n16.7 W, EHL rolling 42.59 W, hysteresis 2.116 W, drag 0.06424 W",
      "power loss 61.47 W (traction 16.7, ehl_rolling 42.59, hysteresis 2.116, drag 0.06424,",
