@@ -17,6 +17,7 @@ A re-measured report or stored run that moves a number fails here until the
 page follows. Numbers that a test checks against an independent value are
 not listed (they are asserted there).
 """
+import re
 import shlex
 
 import pytest
@@ -206,6 +207,37 @@ CLAIMS = [
 ]
 
 
+#: Decimal numbers of the how-to pages that are not measured results, or not one command's output: each page's
+#: values with why (inputs and settings of the runs, bounds over a report table, values derived from claimed ones,
+#: history named as such). Any other decimal number on a how-to page must lie inside a claim above.
+NOT_MEASURED = {
+    "defects_and_datasets.md": {
+        "0.5": "run lengths (0.5 s, --t-end 0.5) and the lower end of a drift range of the dataset's summaries",
+        "1.5": "spall size 1 x 1.5 x 0.1 mm (input); halving the step changes the line by 1.5 % or less (bound)",
+        "0.1": "spall depth 0.1 mm (input)", "2.98": "the scenario's step dt = 1/(7 x 48 kHz) (input)",
+        "0.2": "dataset run length (input)",
+        "1.3": "the dataset command's progress-line time (re-measured with the command on the page, 12/2026)",
+        "3.5": "history: an earlier measurement of the same command", "31.9": "history: a cold-cache run",
+        "7.8": "history: the dataset command with --t-end 0.5"},
+    "load_and_stiffness.md": {"0.65": "bound asserted by tests/test_ross_export.py (docs/theory/vibration.md)",
+                              "0.3": "bound asserted by tests/test_ross_export.py (docs/theory/vibration.md)"},
+    "losses_and_temperatures.md": {"0.05": "oil volume fraction (input)", "333.15": "temperature (input)",
+                                   "0.01": "the thermal iteration's tolerance (setting)"},
+    "rotor.md": {
+        "0.02": "bound over the explicit-solver rows of fast_mode_checks.py (REPORT: 'Explicit solvers')",
+        "1.25": "ring mass (input)", "2.5": "shaft mass (input)", "0.1": "run length (input)",
+        "0.3": "run length (input)", "0.06": "run length (input)", "3.5": "step (input)",
+        "4.2": "the contact-pressure limit (setting)",
+        "0.001": "bounds over the rows of fast_mode_checks.py and levels_checks.py (their claims above)",
+        "0.2": "bound over the loaded rotor's cage speeds of fast_mode_checks.py (REPORT: 'Rotor on two 6208')",
+        "0.5": "tolerance asserted by tests/test_levels.py", "4.8": "ratio of two claimed numbers",
+        "2.7": "ratio of two claimed numbers (tilt 2.5366 / 2.6072 mrad)", "-3.6": "slope -3.63 of levels_published_vc",
+        "2.82": "RMS orbit 2817.6 nm of levels_work_precision.py's reference run"},
+}
+
+NUMBER = re.compile(r"(?<![\w.])[-+]?\d+\.\d+(?:e[-+]?\d+)?(?![\w.])")
+
+
 def _flat(text):
     return " ".join(text.split())
 
@@ -234,3 +266,19 @@ def test_readme_number_is_what_its_command_printed(readme, report, command, caps
     assert pages, f"neither README.md nor a page under docs/ says {readme!r} any longer"
     assert _flat(report) in _flat(printed_by(command, capsys)), \
         f"{command} no longer prints {report!r}: re-measure and update {pages[0].relative_to(ROOT)}"
+
+
+@pytest.mark.parametrize("page", sorted(p.name for p in (ROOT / "docs" / "howto").glob("*.md")))
+def test_every_number_of_a_howto_page_is_a_claim(page):
+    text = _flat(re.sub(r"```.*?```", "", (ROOT / "docs" / "howto" / page).read_text(), flags=re.S))
+    spans = []
+    for claim, _printed, _command in CLAIMS:
+        flat, i = _flat(claim), 0
+        while (i := text.find(flat, i)) >= 0:
+            spans.append((i, i + len(flat)))
+            i += 1
+    exempt = NOT_MEASURED.get(page, {})
+    loose = [m.group() for m in NUMBER.finditer(text)
+             if m.group() not in exempt and not any(a <= m.start() < b for a, b in spans)]
+    assert not loose, (f"docs/howto/{page} quotes {loose} outside any claim: add each with the command that printed it "
+                       "to CLAIMS, or to NOT_MEASURED with why it is not a measured result")
