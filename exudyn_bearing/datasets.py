@@ -6,8 +6,11 @@ inner-ring acceleration at the sample rate ``fs`` (``Scenario.signal_dt``;
 layout ``model.layout.SIGNAL_FIELDS``). :func:`build_dataset` runs the
 cases through :func:`exudyn_bearing.sweep.run_sweep` (parallel, one
 atomically written ``<case>.npz`` + ``<case>.json`` per case, resumable:
-finished cases are not run again; progress on stderr) and writes
-``index.csv``, one row per finished case with its label and parameters::
+finished cases are not run again; progress on stderr, the cases' warnings
+summarised at the end, one line per type) and writes ``index.csv``, one row
+per finished case with its label, parameters and the types of its warnings
+(``warnings``, separated by ``;``; the messages are in the sweep's
+``index.json`` and the case's JSON)::
 
     from exudyn_bearing.datasets import build_dataset, load_case_signals
     rows = build_dataset("out/ds", speeds_rpm=(1797, 1750), loads=(500, 1000),
@@ -35,7 +38,7 @@ from .model.layout import SIGNAL_FIELDS
 from .model.scenario import Scenario
 from .model.stability import stable_step
 from .physics import kinematics
-from .sweep import run_sweep
+from .sweep import run_sweep, warning_types
 
 __all__ = ["FAULTS", "LABELS", "INDEX_COLUMNS", "REFINE", "fault_defects", "signal_scenario", "dataset_cases",
            "build_dataset", "read_index", "load_case_signals"]
@@ -47,7 +50,7 @@ LABELS = {f: i for i, f in enumerate(FAULTS)}
 #: Columns of ``index.csv``.
 INDEX_COLUMNS = ("name", "file", "fault", "label", "bearing", "rpm", "load_N", "length_m", "width_m", "depth_m",
                  "fs_Hz", "t_end_s", "n_samples", "shaft_Hz", "ftf_Hz", "bpfo_Hz", "bpfi_Hz", "bsf_Hz",
-                 "contact_angle_rad", "dt_s", "wall_s")
+                 "contact_angle_rad", "dt_s", "wall_s", "warnings")
 #: Times a case that blows up or finds its step unstable is run again at half the step
 #: (``refine`` of :func:`exudyn_bearing.sweep.run_case`).
 REFINE = 2
@@ -191,7 +194,8 @@ def _index_row(name, rec, bearing) -> dict:
             "t_end_s": lab["t_end_s"], "n_samples": int(len(arr["signal_t"])),
             "shaft_Hz": omega / (2.0 * math.pi), "ftf_Hz": f["ftf"], "bpfo_Hz": f["bpfo"], "bpfi_Hz": f["bpfi"],
             "bsf_Hz": f["bsf"], "contact_angle_rad": alpha,
-            "dt_s": rec.get("dt", rec["spec"]["scenario"].get("dt")), "wall_s": rec.get("wall_case_s")}
+            "dt_s": rec.get("dt", rec["spec"]["scenario"].get("dt")), "wall_s": rec.get("wall_case_s"),
+            "warnings": warning_types(rec.get("warnings") or [])}
 
 
 def write_index(out_dir, rows) -> Path:
@@ -211,7 +215,7 @@ def read_index(out_dir) -> list:
         rows = list(csv.DictReader(f))
     for r in rows:
         for k, v in r.items():
-            if k in ("name", "file", "fault", "bearing"):
+            if k in ("name", "file", "fault", "bearing", "warnings"):
                 continue
             if k in ("label", "n_samples"):
                 r[k] = int(v)

@@ -21,8 +21,9 @@ rename, with the usual permissions of the process umask, 0644 under umask
 ``index.json``, ``index.csv``
     Every case of the last call with its status (``done``, ``failed``, or
     ``pending`` when the sweep was stopped), ``spec_hash``, the error of a
-    failed case, and the parameters (``index.csv``: one row per case, the
-    scenario parameters as ``scenario.<name>`` columns).
+    failed case, its warnings, and the parameters (``index.csv``: one row per
+    case, the warning types separated by ``;`` in ``warnings``, the scenario
+    parameters as ``scenario.<name>`` columns).
 
 Resume: a case is done when its JSON exists and holds the hash of the same
 spec (:func:`spec_hash`: the spec as written, with a bearing given as a JSON
@@ -34,8 +35,11 @@ spelled out) counts as changed; ``3000`` for ``3000.0`` does not.
 A case that raises is recorded and the sweep goes on with the others; the
 failures are listed on stderr at the end and in the index, and their
 records come back with ``"status": "failed"``. The warnings of a case
-(``{"type", "message"}`` in its record) are printed on stderr with its name
-when it finishes. Ctrl-C or SIGTERM stop the sweep: queued cases are
+(``{"type", "message"}`` in its record) go into the index with the case
+(``index.json``: the list; ``index.csv``: their types) and are summarised at
+the end on stderr, one line per warning type with the number of cases, the
+first cases' names and the first line of one message (:func:`warning_summary`),
+so that they do not break up the progress line. Ctrl-C or SIGTERM stop the sweep: queued cases are
 cancelled, the worker processes terminated, the index written with the
 unfinished cases ``pending``, and :class:`SweepInterrupted` (a
 KeyboardInterrupt with the signal and the conventional exit status 130 or
@@ -70,12 +74,16 @@ from pathlib import Path
 
 import numpy as np
 
+import exudyn_bearing._jit as _jit  # its once-per-process compile notice (the workers leave it to the sweep)
+
 from .data import InputError, catalog
+from .model.contact import forces
 from .model.stability import SimulationError, StepSizeWarning
 from .outputs.jsonio import to_jsonable
 from .simulate import simulate, spec_inputs
 
-__all__ = ["run_sweep", "run_case", "load_case", "spec_hash", "SweepInterrupted", "INDEX"]
+__all__ = ["INDEX", "SweepInterrupted", "load_case", "run_case", "run_sweep", "spec_hash", "warning_summary",
+           "warning_types"]
 
 #: Index files of the last sweep in the output folder.
 INDEX = ("index.json", "index.csv")
@@ -217,6 +225,11 @@ def _run_case(name, spec, out_dir, caught) -> str:
     return name
 
 
+def warning_types(warns) -> str:
+    """The distinct types of a case's warnings, in order, separated by ``;`` (a cell of ``index.csv``)."""
+    return ";".join(dict.fromkeys(w["type"] for w in warns))
+
+
 def _warning_list(caught) -> list:
     """The distinct warnings of a case as ``{"type", "message"}`` dicts, in order."""
     out = []
@@ -286,10 +299,39 @@ def _progress(done, total, t0, stream, failed=0):
           file=stream, flush=True)
 
 
-def _write_index(out: Path, cases: dict, keys: dict, status: dict, errors: dict) -> None:
+def _record_warnings(out: Path, name: str) -> list:
+    """The warnings kept in the record of a case finished by an earlier call (empty if unreadable)."""
+    try:
+        return list(json.loads((out / f"{name}.json").read_text()).get("warnings") or [])
+    except (OSError, ValueError, AttributeError):
+        return []
+
+
+def warning_summary(case_warnings: dict, width: int = 200) -> list:
+    """One line per warning type of a sweep: ``case_warnings`` maps a case
+    name to its warnings (``{"type", "message"}``, as in its record); a line
+    names the type, how many of the cases warned, the first of them, and the
+    first line of its first message of that type (the line cut at ``width``
+    characters; the index holds every case's messages)."""
+    by_type = {}
+    for name, warns in case_warnings.items():
+        for w in warns:
+            cases, _ = by_type.setdefault(w["type"], ([], w["message"]))
+            if name not in cases:
+                cases.append(name)
+    lines = []
+    for kind, (cases, message) in by_type.items():
+        first = (message.strip().splitlines() or [""])[0]
+        line = f"{kind} in {len(cases)} of {len(case_warnings)} cases (first {cases[0]}): {first}"
+        lines.append(line if len(line) <= width else line[:width - 3] + "...")
+    return lines
+
+
+def _write_index(out: Path, cases: dict, keys: dict, status: dict, errors: dict, case_warnings: dict) -> None:
     entries = {}
     for n, spec in cases.items():
-        e = {"status": status.get(n, "pending"), "spec_hash": keys[n], "spec": spec}
+        e = {"status": status.get(n, "pending"), "spec_hash": keys[n], "spec": spec,
+             "warnings": case_warnings.get(n, [])}
         if n in errors:
             e["error"] = errors[n]["error"]
         entries[n] = e
@@ -300,7 +342,7 @@ def _write_index(out: Path, cases: dict, keys: dict, status: dict, errors: dict)
                         for k in spec["scenario"]})
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
-    w.writerow(["name", "status", "error_type", "error_message", "engine", "bearing", "spec_hash"]
+    w.writerow(["name", "status", "error_type", "error_message", "engine", "bearing", "spec_hash", "warnings"]
                + [f"scenario.{k}" for k in scen_keys])
     for n, spec in cases.items():
         e = entries[n]
@@ -308,7 +350,8 @@ def _write_index(out: Path, cases: dict, keys: dict, status: dict, errors: dict)
         scen = spec.get("scenario") if isinstance(spec.get("scenario"), dict) else {}
         w.writerow([n, e["status"], e.get("error", {}).get("type", ""), e.get("error", {}).get("message", ""),
                     spec.get("engine", "reference"),
-                    bearing.get("name", "dict") if isinstance(bearing, dict) else bearing, keys[n]]
+                    bearing.get("name", "dict") if isinstance(bearing, dict) else bearing, keys[n],
+                    warning_types(e["warnings"])]
                    + [to_jsonable(scen.get(k, "")) for k in scen_keys])
     _atomic_write_bytes(out / INDEX[1], buf.getvalue().encode())
 
@@ -382,6 +425,7 @@ def _worker_init(parent: int):
     is inherited at fork)."""
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     signal.signal(signal.SIGTERM, signal.SIG_DFL)
+    _jit._announced = True  # the sweep said it once, on a line of its own (run_sweep), not over the progress line
     ppid = os.getppid()
     _die_with_parent()
     if _parent_gone(parent, ppid):  # the parent died before the death signal was set
@@ -436,6 +480,7 @@ def run_sweep(cases: dict, out_dir, workers: int | None = None, scheduler: str |
     keys = {n: spec_hash(spec) for n, spec in cases.items()}
     status = {n: "done" for n in cases if _is_done(out, n, keys[n])}
     errors = {}
+    case_warnings = {n: _record_warnings(out, n) for n in status}
     todo = [n for n in cases if n not in status]
     total = len(cases)
     t0 = time.perf_counter()
@@ -452,11 +497,12 @@ def run_sweep(cases: dict, out_dir, workers: int | None = None, scheduler: str |
         status[name] = "failed" if err else "done"
         if err:
             errors[name] = err
-        for w in warns:  # named, on a line of its own (over the progress line)
-            print(f"\r[sweep] {name}: {w['type']}: {w['message']}", file=stream, flush=True)
+        case_warnings[name] = list(warns)  # into the index and the summary at the end, not over the progress line
         if progress:
             _progress(len(status), total, t0, stream, len(errors))
 
+    if todo:  # a cold numba cache: said once here, before the progress line, not by every worker over it
+        _jit.announce_compilation(forces)
     if progress:
         _progress(len(status), total, t0, stream)
     try:
@@ -477,7 +523,12 @@ def run_sweep(cases: dict, out_dir, workers: int | None = None, scheduler: str |
     finally:
         if progress:
             print(file=stream)
-        _write_index(out, cases, keys, status, errors)
+        _write_index(out, cases, keys, status, errors, case_warnings)
+    summary = warning_summary({n: case_warnings.get(n, []) for n in cases if n in status})
+    if summary:
+        print(f"[sweep] warnings (each case's in {INDEX[0]} and <name>.json in {out}):", file=stream)
+        for line in summary:
+            print(f"  {line}", file=stream)
     if errors:
         print(f"[sweep] {len(errors)} of {total} cases failed (records <name>.error.json and {INDEX[0]} in "
               f"{out}):", file=stream)

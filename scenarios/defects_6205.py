@@ -171,6 +171,14 @@ def main(argv=None):
     ap.add_argument("--Pd", type=float, help="diametral clearance [m] instead of the catalogue's 0")
     ap.add_argument("--out", default=str(Path(__file__).parent / "out" / "defects_6205"))
     args = ap.parse_args(argv)
+    from _printed import recording  # scenarios/_printed.py (here, not at import: levels_checks.py loads build())
+
+    with recording(Path(args.out) / "printed.txt", __file__, argv):
+        run(args)
+
+
+def run(args):
+    """The runs of :func:`main`'s arguments: simulate, analyse, plot, print."""
     runs = run_cases(args.t_end, args.engine, **({} if args.Pd is None else {"Pd": args.Pd}))
     sig, table = analyse(runs)
     plot_all(runs, sig, args.out)

@@ -258,12 +258,12 @@ def test_a_blow_up_or_an_unstable_step_is_refined(tmp_path, monkeypatch, capsys)
     assert [r["dt"] for r in rec["retries"]] == [4e-6, 2e-6] and "cage" in rec["retries"][1]["reason"]
     # the kept run's: no step warning (a 1 ms run's summary says it is too short to judge steadiness)
     assert [w for w in rec["warnings"] if w["type"] == "StepSizeWarning"] == []
-    # without refine the warning stays, in the record and on stderr with the case's name
+    # without refine the warning stays, in the record and in the summary on stderr with the case's name
     seen.clear()
     seen.append(None)
     res = sw.run_sweep({"d": {**spec, "refine": 0}}, tmp_path, workers=1, progress=False)
     assert res["d"]["warnings"][0]["type"] == "StepSizeWarning" and res["d"]["dt"] == 4e-6
-    assert "[sweep] d: StepSizeWarning: dt: the ball / cage-ball" in capsys.readouterr().err
+    assert "StepSizeWarning in 1 of 1 cases (first d): dt: the ball / cage-ball" in capsys.readouterr().err
 
 
 def test_refine_must_be_a_small_integer(tmp_path):

@@ -106,18 +106,10 @@ def run(args):
             d[k] = d[k].tolist()
         print(json.dumps(to_jsonable(d), indent=2))
         return
-    lines = s.summary().splitlines()
-    print("\n".join(lines[:len(lines) - len(s.held)]))  # the held DOFs' lines below, round-off shown as 0
-    for name, why in s.held.items():
-        unit = "N m" if name.startswith("tilt") else "N"
-        print(f"{name} held ({why}); reaction {format_value(s.reactions.get(name, 0.0), unit)} {unit}")
-    print_reaction_convention(s.held)
+    print_summary(s)
     print(solver_header(lub, traction, args.ring_growth))
     if d["power_loss"] is not None:  # solvers/quasistatic/losses.py
-        pl = d["power_loss"]
-        print(f"power loss {d['power_loss_total']:.4g} W (" + ", ".join(f"{k} {pl[k]:.4g}" for k in LOSS_COMPONENTS)
-              + f"), friction torque {d['friction_torque_total']:.4g} N m" + _still(s)
-              + "; not modelled: seals and more (--json not_modelled)")
+        print(loss_line(d, s) + "; not modelled: seals and more (--json not_modelled)")
     print_ball_table(s.balls)
     print("\n".join(rating.summary()))
     if args.plot:
@@ -173,17 +165,34 @@ def run_thermal(args, b, omega, traction):
             d[k] = d[k].tolist()
         print(json.dumps(to_jsonable(d), indent=2))
         return
-    print(s.summary())
-    print_reaction_convention(s.held)
+    print_summary(s)
     print(solver_header(r.lubricant, s.traction, args.ring_growth))
-    pl = r.losses["power_loss"]
     print("temperatures [K]: " + ", ".join(f"{k} {v:.1f}" for k, v in r.temperatures.items())
           + f" (oil in {r.oil_inlet_temperature:.1f}, contacts {r.contact_temperature:.1f}); "
           + f"{r.iterations} iterations, {'converged' if r.converged else 'NOT converged'}")
-    print(f"power loss {r.power_loss_total:.4g} W (" + ", ".join(f"{k} {pl[k]:.4g}" for k in LOSS_COMPONENTS)
-          + f"); heat out: oil {r.heat_out['oil']:.4g} W, ambient {r.heat_out['ambient']:.4g} W")
+    print(loss_line(r.losses, s) + f"; heat out: oil {r.heat_out['oil']:.4g} W, ambient {r.heat_out['ambient']:.4g} W")
     print_ball_table(s.balls)
     print("\n".join(rating.summary()))
+
+
+def print_summary(s):
+    """The solution's summary lines with each held DOF's reaction in its unit (round-off shown as 0), then the
+    sign convention of the reactions."""
+    lines = s.summary().splitlines()
+    print("\n".join(lines[:len(lines) - len(s.held)]))  # the held DOFs' lines below, round-off shown as 0
+    for name, why in s.held.items():
+        unit = "N m" if name.startswith("tilt") else "N"
+        print(f"{name} held ({why}); reaction {format_value(s.reactions.get(name, 0.0), unit)} {unit}")
+    print_reaction_convention(s.held)
+
+
+def loss_line(losses, s) -> str:
+    """The line of the total power loss [W], its components [W] and the friction torque [N m] of a
+    losses dict (solvers/quasistatic/losses.py: ``power_loss``, ``power_loss_total``,
+    ``friction_torque_total``)."""
+    pl = losses["power_loss"]
+    return (f"power loss {losses['power_loss_total']:.4g} W (" + ", ".join(f"{k} {pl[k]:.4g}" for k in LOSS_COMPONENTS)
+            + f" W), friction torque {losses['friction_torque_total']:.4g} N m" + _still(s))
 
 
 def _still(s) -> str:

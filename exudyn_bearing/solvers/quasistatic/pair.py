@@ -284,7 +284,8 @@ class PairSolution:
         k = self.stiffness
         lines.append(f"stiffness: k_xx = {k[0, 0]:.4g} N/m, k_aa = {k[2, 2]:.4g} N/m, k_tilt = {k[3, 3]:.4g} N m/rad")
         for name, why in self.held.items():
-            lines.append(f"{name} held ({why}); reaction {self.reactions.get(name, 0.0):.6g}")
+            lines.append(f"{name} held ({why}); reaction {self.reactions.get(name, 0.0):.6g} "
+                         f"{'N m' if name.startswith('tilt') else 'N'}")
         lines.extend(self.notes)
         return "\n".join(lines)
 

@@ -268,6 +268,7 @@ class QuasiStaticSolution:
             lines.append("pocket force per ball [N] (+: pushes the ball forward): "
                          + " ".join(f"{q:.4g}" for q in self.balls["pocket_force"]))
         for name, why in self.held.items():
-            lines.append(f"{name} held ({why}); reaction {self.reactions.get(name, 0.0):.6g}")
+            lines.append(f"{name} held ({why}); reaction {self.reactions.get(name, 0.0):.6g} "
+                         f"{'N m' if name.startswith('tilt') else 'N'}")
         return "\n".join(lines)
 
