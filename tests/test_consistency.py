@@ -136,6 +136,11 @@ def test_the_exudyn_engine_hands_every_scenario_field_to_the_element():
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         element = ExudynEngine("6208", s).element
+    # the default cage ("auto") is resolved for the bearing by both engines alike (model.scenario.resolve_cage)
+    from exudyn_bearing.model.scenario import resolve_cage
+
+    assert element.scenario.cage == resolve_cage(s, eb.catalog["6208"]).cage == "torus"
+    s = resolve_cage(s, eb.catalog["6208"])
     differ = {f.name for f in dataclasses.fields(s) if getattr(s, f.name) != getattr(element.scenario, f.name)}
     assert differ <= {"t_end", "traction", "t_ramp_up"}
     t = np.linspace(0.0, 0.004, 9)

@@ -8,9 +8,7 @@ import numpy as np
 import pytest
 
 exu = pytest.importorskip("exudyn")
-from exudyn.itemInterface import (LoadForceVector, LoadTorqueVector, MarkerBodyMass, MarkerBodyRigid,  # noqa: E402
-                                  NodeRigidBodyRxyz, ObjectConnectorRigidBodySpringDamper, ObjectGround,
-                                  ObjectRigidBody)
+from exudyn.itemInterface import MarkerBodyMass  # noqa: E402
 
 import exudyn_bearing as eb  # noqa: E402
 
@@ -18,22 +16,26 @@ FR, FA = 3000.0, 1000.0
 SPEEDS = [0.0, 200.0]  # a short coefficient table keeps the set-up quick
 
 
+def _levels_checks():
+    """validation/consistency/levels_checks.py as a module (its shaft serves the tests and the script)."""
+    import importlib.util
+    from pathlib import Path
+
+    path = Path(__file__).resolve().parents[1] / "validation" / "consistency" / "levels_checks.py"
+    spec = importlib.util.spec_from_file_location("levels_checks", path)
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
+
+
+_CHECKS = _levels_checks()
+
+
 def shaft(load=(FR, 0.0, FA), omega=0.0, moment=None):
     """A 2.5 kg shaft (Rxyz node) at the origin, the load (and ``moment``) on it, an outer-ring marker on ground
-    and a pure damper to ground (no force at rest: it settles the shaft without moving its equilibrium)."""
-    sc = exu.SystemContainer()
-    mbs = sc.AddSystem()
-    ground = mbs.AddObject(ObjectGround())
-    node = mbs.AddNode(NodeRigidBodyRxyz(referenceCoordinates=[0.0] * 6, initialVelocities=[0, 0, 0, 0, 0, omega]))
-    body = mbs.AddObject(ObjectRigidBody(nodeNumber=node, mass=2.5, inertia=[0.01, 0.01, 5e-4, 0, 0, 0]))
-    m_g = mbs.AddMarker(MarkerBodyRigid(bodyNumber=ground))
-    m_b = mbs.AddMarker(MarkerBodyRigid(bodyNumber=body))
-    mbs.AddLoad(LoadForceVector(markerNumber=m_b, loadVector=list(load)))
-    if moment is not None:
-        mbs.AddLoad(LoadTorqueVector(markerNumber=m_b, loadVector=list(moment)))
-    mbs.AddObject(ObjectConnectorRigidBodySpringDamper(markerNumbers=[m_g, m_b],
-                                                       damping=np.diag([2e4, 2e4, 2e4, 20.0, 20.0, 0.0])))
-    return sc, mbs, node, m_b, m_g
+    and a pure damper to ground (no force at rest: it settles the shaft without moving its equilibrium):
+    levels_checks.shaft's."""
+    return _CHECKS.shaft(load, omega=omega, moment=moment)[:5]
 
 
 @pytest.mark.parametrize("model, speeds", [("quasistatic", SPEEDS), ("linear", SPEEDS), ("linear", [0.0])])

@@ -1,5 +1,5 @@
 """Gupta's high-speed ACBB-120 with a rigid cage: the reference engine against the quasi-static traction
-equilibrium with the cage (docs/theory/quasistatic.md#the-rigid-cage, issue 34's check).
+equilibrium with the cage (docs/theory/quasistatic.md#the-rigid-cage).
 
 The ACBB-120 (15 balls of 20.6 mm, 24 deg) at 25,000 rpm under 22,240 N thrust, its oil MIL-L-23699 at 492 K with
 its EHL traction model, the inner ring growing with speed, tilts held, the estimated outer-land-guided brass cage
