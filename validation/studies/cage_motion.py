@@ -10,8 +10,12 @@ damping, --t-end long, summaries over the last quarter.
     force of each run, to see whether and where the cage's motion turns irregular as mu_c grows (the
     published trend: more readily at high load and low speed, where the balls slide less on the races).
 (c) Gravity at low speed: where the cage rides (its offset against the land clearance) at 20 rad/s.
+(d) High speed: Gupta's ACBB-120 at 25,000 rpm under 22,240 N thrust (its oil and EHL traction, the estimated
+    outer-land brass cage, its default cage, 2 us, ellipse traction from the quasi-static start, --t-end-hs),
+    balanced and with an unbalance U = 2e-6 kg m (U omega_c^2 about 2.8 N): orbit, whirl ratio, class, land loss.
 
-    python validation/studies/cage_motion.py [--t-end 0.2] [--out validation/out/cage_motion]
+    python validation/studies/cage_motion.py [--t-end 0.2] [--t-end-hs 0.06] [--only a b c d]
+        [--out validation/out/cage_motion]
 
 Writes cage_motion.json, cage_motion_orbits.png and cage_motion_orbits.npz into --out.
 """
@@ -48,26 +52,44 @@ def run(fr, omega, t_end, mu=0.1, unbalance=0.0):
     return {k: s.get(k) for k in KEYS}, rec
 
 
+def run_high_speed(t_end, unbalance=0.0):
+    """(d): the ACBB-120 at 25,000 rpm, 22,240 N thrust, its estimated outer-land cage with ``unbalance``."""
+    b = eb.catalog["ACBB-120"]
+    cage = dataclasses.replace(estimated_cage(b), unbalance=unbalance)
+    sc = eb.Scenario(Fa=22240.0, omega=2618.0, t_end=t_end, dt=2e-6, sample_dt=2e-5, rigid_cage=cage,
+                     traction_level="ellipse", traction="ehl_mil_l_23699_492K", n_strips=16, n_across=4,
+                     initial="quasistatic", control="equilibrium", cage_damping="implicit")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", eb.SteadyStateWarning)
+        rec = eb.simulate(b, sc, lubricant="MIL-L-23699_492K", progress=False)
+        s = rec.summary(fraction=0.25)
+    return {k: s.get(k) for k in KEYS + ("steady",)}, rec
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--t-end", type=float, default=0.2)
+    ap.add_argument("--t-end-hs", type=float, default=0.06, help="run length of the high-speed runs (d) [s]")
+    ap.add_argument("--only", nargs="+", choices=("a", "b", "c", "d"), default=["a", "b", "c", "d"])
     ap.add_argument("--out", default=str(ROOT / "validation" / "out" / "cage_motion"))
     args = ap.parse_args(argv)
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     report, orbits = {"t_end_s": args.t_end, "dt_s": 1e-6}, {}
 
-    print("(a) whirl at 300 N, 1000 rad/s")
-    for name, u in (("balanced", 0.0), ("unbalance_2e-5", 2e-5)):
+    if "a" in args.only:
+        print("(a) whirl at 300 N, 1000 rad/s")
+    for name, u in (("balanced", 0.0), ("unbalance_2e-5", 2e-5)) if "a" in args.only else ():
         s, rec = run(300.0, 1000.0, args.t_end, unbalance=u)
         report[f"a_{name}"] = s
         orbits[f"a_{name}"] = rec
         print(f"    {name:16s} {s['cage_motion']:9s} orbit/clearance {s['cage_orbit_ratio']:.3f} whirl ratio "
               f"{s['cage_whirl_ratio']} offset {np.round(np.array(s['cage_offset']) * 1e6, 1)} um")
 
-    print("(b) pocket friction sweep")
     report["b_sweep"] = []
-    for fr, omega in ((3000.0, 100.0), (300.0, 1000.0)):
+    if "b" in args.only:
+        print("(b) pocket friction sweep")
+    for fr, omega in ((3000.0, 100.0), (300.0, 1000.0)) if "b" in args.only else ():
         for mu in (0.0, 0.05, 0.1, 0.2, 0.3, 0.5):
             s, rec = run(fr, omega, args.t_end, mu=mu)
             report["b_sweep"].append({"Fr": fr, "omega": omega, "pocket_friction": mu, **s})
@@ -78,14 +100,28 @@ def main(argv=None):
                   f"{s['cage_centre_speed']:.3g} pocket max {s['pocket_force_max']:.3g} N energy "
                   f"{s['energy_residual']:.3g}", flush=True)
 
-    print("(c) gravity at 20 rad/s, 3000 N")
-    s, rec = run(3000.0, 20.0, args.t_end)
-    report["c_low_speed"] = s
-    orbits["c_low_speed"] = rec
-    print(f"    offset {np.round(np.array(s['cage_offset']) * 1e6, 1)} um, land clearance "
-          f"{rec.model_parameters()[L.P_LAND_C] * 1e6:.0f} um, eccentricity max {s['land_eccentricity_max']:.3f}")
+    if "c" in args.only:
+        print("(c) gravity at 20 rad/s, 3000 N")
+        s, rec = run(3000.0, 20.0, args.t_end)
+        report["c_low_speed"] = s
+        orbits["c_low_speed"] = rec
+        print(f"    offset {np.round(np.array(s['cage_offset']) * 1e6, 1)} um, land clearance "
+              f"{rec.model_parameters()[L.P_LAND_C] * 1e6:.0f} um, eccentricity max {s['land_eccentricity_max']:.3f}")
 
-    fig, axes = pyplot().subplots(2, 3, figsize=(13, 8.4))
+    for name, u in (("balanced", 0.0), ("unbalance_2e-6", 2e-6)) if "d" in args.only else ():
+        if name == "balanced":
+            print(f"(d) ACBB-120 at 25000 rpm, 22240 N thrust, {args.t_end_hs:g} s")
+        s, rec = run_high_speed(args.t_end_hs, unbalance=u)
+        report[f"d_{name}"] = s
+        orbits[f"d_{name}"] = rec
+        print(f"    {name:16s} {s['cage_motion']:9s} orbit/clearance {s['cage_orbit_ratio']:.3f} whirl ratio "
+              f"{s['cage_whirl_ratio']} land eccentricity max {s['land_eccentricity_max']:.3f}, land loss "
+              f"{s['cage_power_land']:.1f} W, pocket loss {s['cage_power_pocket']:.1f} W, cage "
+              f"{s['cage_speed']:.1f} rad/s, steady {s['steady']['steady']}", flush=True)
+
+    cols = max(1, min(4, len(orbits)))
+    rows = max(1, -(-len(orbits) // cols))
+    fig, axes = pyplot().subplots(rows, cols, figsize=(3.4 * cols, 3.6 * rows), squeeze=False)
     arrays = {}
     for ax, (name, rec) in zip(axes.ravel(), orbits.items()):
         xy = rec.data["xc"][:, 0, :2] * 1e6
