@@ -355,3 +355,20 @@ def test_cage_motion_classes():
     m = cage_motion(t, circle, c, 200.0)
     assert m["orbit_ratio"] == pytest.approx(0.3, rel=1e-3)
     assert m["centre_speed"] == pytest.approx(0.3 * w / 200.0, rel=1e-3)
+
+
+def test_info_names_the_default_cage_and_the_estimated_rigid_cage(capsys):
+    import json
+
+    from exudyn_bearing.cli import main
+
+    assert main(["info", "ACBB-120", "--json"]) == 0
+    d = json.loads(capsys.readouterr().out)
+    rc = estimated_cage(eb.catalog["ACBB-120"])
+    assert d["default_cage"] == "rigid" and d["rigid_cage"]["estimated"] == list(rc.estimated)
+    assert d["rigid_cage"]["land_clearance"] == rc.land_clearance and d["rigid_cage"]["guidance"] == "outer_land"
+    assert d["rigid_cage"]["mass"] == pytest.approx(rc.mass(eb.catalog["ACBB-120"]), rel=1e-12)
+    assert main(["info", "6208"]) == 0
+    out = capsys.readouterr().out
+    assert "default_cage" in out and "torus" in out and "rigid cage (cage='rigid'):" in out
+    assert "ESTIMATED: pocket_clearance" in out

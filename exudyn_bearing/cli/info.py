@@ -4,7 +4,9 @@ from __future__ import annotations
 import json
 
 from ..data import InputError
+from ..data.cages import estimated_cage
 from ..data.catalog import catalog_listing
+from ..model.scenario import bearing_cage
 from ..outputs.jsonio import to_jsonable
 from ..outputs.units import INFO_UNITS, with_units
 from ..physics.hertz import METHODS
@@ -78,11 +80,36 @@ def run(args):
     ratings = rating_life(b, (0.0, 0.0), warn=False).to_dict()
     info.update({k: ratings[k] for k in RATING_KEYS})
     info["estimated"] = list(b.estimated)
-    units = {**INFO_UNITS, **RATING_UNITS}
+    info["default_cage"] = bearing_cage("auto", b)
+    info["rigid_cage"] = rigid_cage_info(b)
+    units = {**INFO_UNITS, **RATING_UNITS, "default_cage": "the cage model of cage='auto' (the default)",
+             "rigid_cage": RIGID_CAGE_UNITS}
     if args.json:
         print(json.dumps(to_jsonable(with_units(info, units)), indent=2))
         return
-    print_table([(k, v, units.get(k)) for k, v in info.items() if k not in ("source", "estimated")])
+    print_table([(k, v, units.get(k)) for k, v in info.items() if k not in ("source", "estimated", "rigid_cage")])
     print(f"source: {info['source']}")
     if b.estimated:
         print(f"estimated (not from a data sheet): {', '.join(b.estimated)}")
+    rc = info["rigid_cage"]
+    print(f"rigid cage (cage='rigid'{' and the default' if info['default_cage'] == 'rigid' else ''}): "
+          + ", ".join(f"{k} {v:.4g} {RIGID_CAGE_UNITS[k]}" if isinstance(v, float) else f"{k} {v}"
+                      for k, v in rc.items() if k not in ("estimated", "source"))
+          + f"; ESTIMATED: {', '.join(rc['estimated'])} ({rc['source']})")
+
+
+#: Units of ``info``'s rigid-cage fields.
+RIGID_CAGE_UNITS = {"guidance": "", "pocket_shape": "", "material": "", "pocket_clearance": "m",
+                    "inner_radius": "m", "outer_radius": "m", "width": "m", "land_clearance": "m", "land_width": "m",
+                    "pocket_friction": "-", "mass": "kg", "polar_inertia": "kg m^2"}
+
+
+def rigid_cage_info(b) -> dict:
+    """The rigid cage a run with cage='rigid' (or the default, where it resolves to it) takes for ``b``: the
+    bearing's estimated cage (docs/theory/cage.md#estimated-geometry), each estimated field named."""
+    rc = estimated_cage(b)
+    return {"guidance": rc.guidance, "pocket_shape": rc.pocket_shape, "material": rc.material.name,
+            "pocket_clearance": rc.pocket_clearance, "inner_radius": rc.inner_radius, "outer_radius": rc.outer_radius,
+            "width": rc.width, "land_clearance": rc.land_clearance, "land_width": rc.land_width,
+            "pocket_friction": rc.pocket_friction, "mass": rc.mass(b), "polar_inertia": rc.polar_inertia(b),
+            "estimated": list(rc.estimated), "source": rc.source}
