@@ -241,6 +241,9 @@ def test_energy_closes_with_the_rigid_cage_and_its_losses_are_reported(rigid_620
     assert s["land_eccentricity_max"] < 1.0
     for key in ("cage_whirl_radius", "cage_slip", "pocket_force_max"):
         assert key in s["units"] and s[key] is not None
+    # the cage it ran (no RigidCage given: the estimated one) names its estimated fields in the summary and its JSON
+    assert s["rigid_cage_estimated"] == list(estimated_cage(eb.catalog["6208"]).estimated)
+    assert "rigid_cage_estimated" in s["units"]
 
 
 def test_a_frictionless_ball_guided_rigid_cage_runs_like_the_torus_cage_on_the_papers_6208():

@@ -30,6 +30,8 @@ CAGE_SUMMARY_UNITS = {
                         "the pocket clearance of a ball-guided cage)",
     "cage_orbit_variation": "- (standard deviation of that distance over its mean)",
     "cage_centre_speed": "- (RMS speed of the cage centre over the clearance times the cage speed)",
+    "rigid_cage_estimated": "the run's rigid-cage fields that are estimates, not a data sheet's "
+                            "(docs/theory/cage.md#estimated-geometry; info BEARING lists their values)",
 }
 
 #: :func:`cage_motion`: an orbit whose mean radius is below this share of the clearance is ``centred``;

@@ -34,6 +34,7 @@ from ..model.parameters import scene_parameters
 from ..model.record import RunRecord
 from ..model.scenario import Scenario
 from ..physics.damping import REGIME_NAMES
+from ..data.cages import estimated_cage
 from .cage_summary import CAGE_LOSSES_NOT_MODELLED, CAGE_SUMMARY_UNITS, rigid_cage_summary
 from .contact_summary import CONTACT_SUMMARY_UNITS, contact_summary
 from .jsonio import to_jsonable
@@ -684,6 +685,8 @@ class Results:
         if self.scenario.cage == "rigid":
             out.update(rigid_cage_summary(self.data, w, self.model_parameters(), out["cage_speed"],
                                           out.get("kinematic_cage_speed")))
+            # the cage the run took (the scenario's, else the bearing's estimated one): its estimated fields
+            out["rigid_cage_estimated"] = list((self.scenario.rigid_cage or estimated_cage(b)).estimated)
         if self.has_protocol():
             out["phases"] = self._phase_summaries()
         out["units"] = dict(SUMMARY_UNITS, **(CAGE_SUMMARY_UNITS if self.scenario.cage == "rigid" else {}))
