@@ -177,7 +177,11 @@ def test_torque_residual_relative_to_the_tractions_where_the_pockets_carry_nothi
 def test_thermal_checks_the_cage_against_its_material_limit():
     """The cage node against the rigid cage material's permissible temperature: within for brass (523 K) at a
     40 degC inlet, a CageTemperatureWarning for a material whose limit lies below the computed cage node."""
-    from exudyn_bearing.data.cages import CAGE_MATERIALS, CageMaterial, CageTemperatureWarning
+    from exudyn_bearing.data.cages import (
+        CAGE_MATERIALS,
+        CageMaterial,
+        CageTemperatureWarning,
+    )
 
     common = {"omega": 500.0, "oil_inlet_temperature": 313.15, "oil_flow": 1e-6, "control": "equilibrium",
               "cage": "rigid"}

@@ -13,8 +13,8 @@ from exudyn_bearing.data.cages import CAGE_MATERIALS, RigidCage, estimated_cage
 from exudyn_bearing.model import layout as L
 from exudyn_bearing.model.contact import scene_loss_path, scene_paths
 from exudyn_bearing.model.motion import ring_poses
-from exudyn_bearing.model.stability import land_step_check, stable_step
 from exudyn_bearing.model.scenario import resolve_cage
+from exudyn_bearing.model.stability import land_step_check, stable_step
 from exudyn_bearing.outputs.cage_summary import whirl
 from exudyn_bearing.physics.short_bearing import short_bearing_force_xy
 from exudyn_bearing.solvers.reference.engine import ReferenceEngine

@@ -93,7 +93,7 @@ def bearing_cage(cage: str, bearing) -> str:
     return "torus" if bearing.has_cage else "rigid"
 
 
-def resolve_cage(scenario: "Scenario", bearing) -> "Scenario":
+def resolve_cage(scenario: Scenario, bearing) -> Scenario:
     """``scenario`` with its cage model for ``bearing`` (:func:`bearing_cage`); the same object when there is
     nothing to resolve."""
     cage = bearing_cage(scenario.cage, bearing)

@@ -69,10 +69,9 @@ def main(argv=None):
           f"{args.t_end:g} s at {args.dt:g} s, window {w['t0']:.4g}-{w['t1']:.4g} s, steady "
           f"{d['steady']['steady']}, cage motion {d['cage_motion']}")
     print(f"{'':22s}{'quasi-static':>14s}{'engine':>14s}{'engine/QS - 1':>16s}")
-    for k in qs:
-        if k == "wall_s":
-            continue
-        print(f"{k:22s}{qs[k]:14.6g}{dem[k]:14.6g}{100 * (dem[k] / qs[k] - 1):15.3f} %")
+    for k, q in qs.items():
+        if k != "wall_s":
+            print(f"{k:22s}{q:14.6g}{dem[k]:14.6g}{100 * (dem[k] / q - 1):15.3f} %")
     print(f"wall: quasi-static {qs['wall_s']:.1f} s, engine {dem['wall_s']:.1f} s")
     report = {"case": CASE, "t_end": args.t_end, "dt": args.dt, "window": w, "quasistatic": qs, "engine": dem,
               "cage_motion": d["cage_motion"], "steady": d["steady"]["steady"]}

@@ -96,7 +96,8 @@ def _qs(*args):
     return ("quasistatic", *args)
 
 
-_SIM = ("simulate", "6208", "--no-progress")
+#: simulate on the DEM papers' case (loads and speed default to 0; a dynamic run needs a speed)
+_SIM = ("simulate", "6208", "--Fr", "3000", "--omega", "500", "--no-progress")
 _TAB500 = "coefficientSpeeds=[0.0, 250.0, 500.0]"
 
 CASES = [
@@ -131,7 +132,7 @@ CASES = [
     Case("item4_memory_under_ulimit", "refuse", "sample",
          api="import resource; resource.setrlimit(resource.RLIMIT_AS, (3 * 2**30, 3 * 2**30))\n"
              "from exudyn_bearing.cli import main\n"
-             "sys.exit(main(['simulate', '6208', '--t-end', '2', '--sample-dt', '1e-6', '--dt', '1e-6', "
+             "sys.exit(main(['simulate', '6208', '--Fr', '3000', '--omega', '500', '--t-end', '2', '--sample-dt', '1e-6', '--dt', '1e-6', "
              "'--no-progress']))"),
     # 5. zero relative speed
     Case("item5_rings_same_speed", "clean", "",
