@@ -282,10 +282,14 @@ class PairSolution:
                             f"Fr = {e['Fr']:.1f} N, Fa = {e['Fa']:.1f} N, q_max = {e['q_max_inner']:.1f} N, "
                             f"alpha = {e['alpha_inner_mean_loaded']:.2f} deg"))
         k = self.stiffness
-        lines.append(f"stiffness: k_xx = {k[0, 0]:.4g} N/m, k_aa = {k[2, 2]:.4g} N/m, k_tilt = {k[3, 3]:.4g} N m/rad")
+        k_tilt = (f"{k[3, 3]:.4g} N m/rad" if np.isfinite(k[3, 3]) else
+                  "n/a (the tilt is held without a spacing: give spacing / --spacing)")
+        lines.append(f"stiffness at this ball-set position: k_xx = {k[0, 0]:.4g} N/m, k_aa = {k[2, 2]:.4g} N/m, "
+                     f"k_tilt = {k_tilt}")
         for name, why in self.held.items():
-            lines.append(f"{name} held ({why}); reaction {self.reactions.get(name, 0.0):.6g} "
-                         f"{'N m' if name.startswith('tilt') else 'N'}")
+            r = self.reactions.get(name, 0.0)
+            r = 0.0 if abs(r) < 1e-9 * max(1.0, float(np.max(np.abs(self.loads)))) else r  # round-off shown as 0
+            lines.append(f"{name} held ({why}); reaction {r:.6g} {'N m' if name.startswith('tilt') else 'N'}")
         lines.extend(self.notes)
         return "\n".join(lines)
 
