@@ -278,4 +278,4 @@ def test_summary_without_spacing_says_why_there_is_no_tilt_stiffness():
     p = solve_pair(B, "DB", Fr=2000.0, Fa=600.0, preload=F0)
     text = p.summary()
     assert "nan" not in text and "k_tilt = n/a (the tilt is held without a spacing" in text
-    assert "tilt_x held (fixed); reaction 0 N m" in text      # round-off of the symmetric case shown as 0
+    assert "tilt_x held (no spacing); reaction 0 N m" in text      # round-off of the symmetric case shown as 0
