@@ -146,6 +146,12 @@ class RigidCage:
     unbalance : float
         U [kg m]: the cage's mass times the offset of its centre of mass from its geometric centre, along
         the cage's angle 0 (default 0: balanced).
+    pocket_spacing_error : float
+        e [m]: unequal pocket spacing, the once-per-revolution harmonic of the pockets' position errors
+        along the pitch circle: pocket j sits at the cage angle + 2 pi j / Z + (e / r_p) sin(2 pi j / Z)
+        (default 0: equal spacing). Its size is at most half the pocket clearance (the balls, which the
+        races space equally, start in their pockets). Dynamic engines only: the quasi-static solver takes
+        equally spaced pockets.
     estimated : tuple of str
         Names of the fields that are estimates (:func:`estimated_cage`), not a data sheet's values.
     """
@@ -161,6 +167,7 @@ class RigidCage:
     material: CageMaterial | str = "brass"
     pocket_friction: float = 0.1
     unbalance: float = 0.0
+    pocket_spacing_error: float = 0.0
     estimated: tuple = field(default=())
     source: str = ""
 
@@ -184,9 +191,19 @@ class RigidCage:
         if u < 0.0:
             raise InputError(f"unbalance: must be >= 0 (mass times offset of the centre of mass, kg m), got {u}")
         object.__setattr__(self, "unbalance", u)
+        e = check_finite("pocket_spacing_error", self.pocket_spacing_error)
+        if abs(e) > 0.5 * self.pocket_clearance:
+            raise InputError(f"pocket_spacing_error: {e:.3e} m is more than half the pocket clearance "
+                             f"({self.pocket_clearance:.3e} m): the balls, spaced equally by the races, would not "
+                             "start inside their pockets (lengths are in metres)")
+        object.__setattr__(self, "pocket_spacing_error", e)
         object.__setattr__(self, "estimated", tuple(str(x) for x in self.estimated))
         check_text("source", self.source)
         if self.guidance == "ball":
+            if self.pocket_shape == "cylindrical":
+                raise InputError("pocket_shape: a ball-guided cage needs spherical pockets: cylindrical pockets (axis "
+                                 "radial) do not hold the cage radially on its balls, which move along the orbit, and "
+                                 "it drifts off them (use pocket_shape='spherical', or a land-guided cage)")
             return
         for key in ("land_clearance", "land_width"):
             object.__setattr__(self, key, check_positive(key, getattr(self, key)))
@@ -262,14 +279,16 @@ class RigidCage:
 ESTIMATE = {"pocket_clearance": 0.02, "land_clearance": 0.01, "half_section": 0.22, "width": 1.3}
 
 
-def estimated_cage(bearing, guidance: str = "outer_land", material="brass", pocket_shape="cylindrical",
+def estimated_cage(bearing, guidance: str = "outer_land", material="brass", pocket_shape=None,
                    pocket_friction=0.1) -> RigidCage:
     """A rigid cage for a bearing without cage data, from the proportions :data:`ESTIMATE` of the ball
     diameter D: radial pocket clearance 0.02 D, radial land clearance 0.01 D, a section r_p +- 0.22 D
     (a land-guided cage's guiding surface then lies 0.22 D from the pitch circle, within the ring
     shoulders, which stand about 0.25 D off the pitch circle for grooves about 0.25 D deep), width 1.3 D
     (side rails of 0.13 D beside the pockets), the guiding surface the two rails (width less the pocket
-    diameter). Every geometric field is marked estimated.
+    diameter). Pockets: cylindrical (axis radial) for a land-guided cage, spherical for a ball-guided one
+    (``pocket_shape=None``; cylindrical pockets do not locate a cage radially). Every geometric field is
+    marked estimated.
 
     >>> from exudyn_bearing import catalog
     >>> c = estimated_cage(catalog["6208"])
@@ -279,6 +298,8 @@ def estimated_cage(bearing, guidance: str = "outer_land", material="brass", pock
     d = 2.0 * bearing.ball_radius
     rp = bearing.pitch_radius
     e = ESTIMATE
+    if pocket_shape is None:
+        pocket_shape = "spherical" if guidance == "ball" else "cylindrical"
     cage = RigidCage(guidance=guidance, pocket_clearance=e["pocket_clearance"] * d,
                      inner_radius=rp - e["half_section"] * d, outer_radius=rp + e["half_section"] * d,
                      width=e["width"] * d, land_clearance=e["land_clearance"] * d if guidance != "ball" else 0.0,

@@ -89,9 +89,10 @@ from ..physics.geometry import _groove_geometry, _raceway_radii_cos
 from ..physics.hertz import _curvature_sum_radius, _kfe_fast, _semi_axes, _semi_axes_overlap, _stiffness
 from ..physics.losses import _ehl_rolling_force, _hysteresis_rolling_force, ball_drag_force
 from ..physics.short_bearing import _short_bearing_xy
-from .layout import (G_CAGE_LOAD_POWER, G_LAND_ECC, G_LAND_FX, G_LAND_FY, G_LAND_POWER, G_POCKET_POWER, P_GUIDANCE, P_IC, P_K_LAND,
+from .layout import (POCKET_ESCAPE, G_CAGE_LOAD_POWER, G_LAND_ECC, G_LAND_FX, G_LAND_FY, G_LAND_POWER, G_POCKET_POWER, P_GUIDANCE, P_IC, P_K_LAND,
                      P_K_POCKET, P_LAND_C, P_LAND_EPS, P_LAND_ETA, P_LAND_L, P_LAND_R, P_MC, P_MU_POCKET,
-                     P_POCKET_GAP, P_POCKET_SHAPE, P_POCKET_VREG, P_RIGID, P_GX, P_GY, P_GZ, P_UNBALANCE)
+                     P_CAGE_HALF_SECTION, P_POCKET_GAP, P_POCKET_SHAPE, P_POCKET_SPACING, P_POCKET_VREG, P_RIGID, P_GX, P_GY, P_GZ,
+                     P_UNBALANCE)
 from .layout import HZ_E, HZ_EXP, HZ_F, HZ_FILM_K, HZ_GEO, HZ_K, HZ_LN_U, HZ_LN_W, HZ_N, HZ_RATIO
 from .layout import (D_ROLLRES, G_DRAG_POWER, G_EHL_POWER, G_HYST_POWER, P_ALPHA_H, P_DRAG, P_ETA_MIX, P_RHO_MIX,
                      P_ROLLRES)
@@ -855,7 +856,8 @@ def _rigid_cage(p, xb, vb, wb, xc, vc, rings, fb, tb, fc, fr, glob, cage_load, w
     """The rigid cage (docs/theory/cage.md): ball j in pocket j, and the cage on its land.
 
     The cage's centre is ``xc[0]``, its angle ``xc[1, 0]``, their rates ``vc[0]``, ``vc[1, 0]``
-    (:mod:`.layout`); pocket j sits on the pitch circle at the cage angle + 2 pi j / Z, at the cage's
+    (:mod:`.layout`); pocket j sits on the pitch circle at the cage angle + 2 pi j / Z (+ the unequal spacing
+    P_POCKET_SPACING sin(2 pi j / Z)), at the cage's
     axial position. A ball that leaves the pocket's clearance c_p (its centre farther than c_p from the
     pocket's axis, cylindrical pockets, or from its centre, spherical) presses on the wall: Hertz with the
     constant ``P_K_POCKET``, critical damping of the reduced mass of ball and cage (backward-Euler over the
@@ -888,17 +890,21 @@ def _rigid_cage(p, xb, vb, wb, xc, vc, rings, fb, tb, fc, fr, glob, cage_load, w
     pocket_power = 0.0
     worst = 0.0
     pitch = 2.0 * math.pi / z
+    spacing = p[P_POCKET_SPACING]
+    half_section = p[P_CAGE_HALF_SECTION]
     for j in range(z):
         if want:
             cage_load[j, 0] = 0.0
             cage_load[j, 1] = 0.0
-        phi = xc[1, 0] + j * pitch
+        phi = xc[1, 0] + j * pitch + spacing * math.sin(j * pitch)
         co, si = math.cos(phi), math.sin(phi)
         dx = xb[j, 0] - (cx + rp * co)
         dy = xb[j, 1] - (cy + rp * si)
         dz = xb[j, 2] - cz
+        dr = dx * co + dy * si  # along the pocket's (radial) axis
+        if abs(dr) > half_section:  # the ball's centre is outside the cage's section: it has left its pocket
+            worst = POCKET_ESCAPE
         if cyl:  # the offset from the pocket's (radial) axis
-            dr = dx * co + dy * si
             dx -= dr * co
             dy -= dr * si
         d2 = dx * dx + dy * dy + dz * dz

@@ -185,6 +185,12 @@ P_GY = _entry("gravity_y", "m/s^2", "gravity on the rigid cage, y")
 P_GZ = _entry("gravity_z", "m/s^2", "gravity on the rigid cage, z (bearing axis)")
 P_UNBALANCE = _entry("cage_unbalance", "kg m", "unbalance U of the rigid cage (mass times the offset of its centre of "
                      "mass, along the cage's angle 0)")
+P_CAGE_HALF_SECTION = _entry("cage_half_section", "m", "half the radial section of the rigid cage, (R_o - R_i) / 2: a "
+                             "ball whose centre moves farther along its pocket's axis has left the cage (the run stops)")
+#: :data:`G_WORST` of a step in which a ball left its rigid cage's pocket (the engines stop and say so)
+POCKET_ESCAPE = 1e300
+P_POCKET_SPACING = _entry("pocket_spacing_error", "rad", "unequal pocket spacing e / r_p: pocket j at the cage angle + "
+                          "2 pi j / Z + (e / r_p) sin(2 pi j / Z)")
 
 #: All entries of the parameter vector, in index order.
 PARAMETERS: tuple[ParameterEntry, ...] = tuple(_ENTRIES)

@@ -103,6 +103,8 @@ def _set_rigid_cage(p, b, s, lub):
     p[L.P_IC] = ic
     p[L.P_POCKET_GAP] = rc.pocket_clearance
     p[L.P_POCKET_SHAPE] = POCKET_SHAPES.index(rc.pocket_shape)
+    p[L.P_POCKET_SPACING] = rc.pocket_spacing_error / b.pitch_radius
+    p[L.P_CAGE_HALF_SECTION] = 0.5 * (rc.outer_radius - rc.inner_radius)
     e_pocket = hertz.reduced_modulus(b.material.youngs_modulus, b.material.poisson_ratio,
                                      rc.material.youngs_modulus, rc.material.poisson_ratio)
     p[L.P_K_POCKET] = float(hertz.ball_in_pocket_stiffness(b.ball_radius, rc.pocket_clearance,

@@ -10,11 +10,15 @@ damping, --t-end long, summaries over the last quarter.
     force of each run, to see whether and where the cage's motion turns irregular as mu_c grows (the
     published trend: more readily at high load and low speed, where the balls slide less on the races).
 (c) Gravity at low speed: where the cage rides (its offset against the land clearance) at 20 rad/s.
+(e) Unequal pocket spacing: the 6208 under F_r = 3000 N at 500 rad/s with its estimated ball-guided cage
+    (spherical pockets), equal pockets and a once-per-revolution spacing error of 0.4 of the pocket clearance
+    (``RigidCage.pocket_spacing_error``), --t-end-spacing long at 2 us: the strongest lines of the cage centre's
+    whirl spectrum over the last half (frequency over the cage speed; + in the cage's direction of rotation).
 (d) High speed: Gupta's ACBB-120 at 25,000 rpm under 22,240 N thrust (its oil and EHL traction, the estimated
     outer-land brass cage, its default cage, 2 us, ellipse traction from the quasi-static start, --t-end-hs),
     balanced and with an unbalance U = 2e-6 kg m (U omega_c^2 about 2.8 N): orbit, whirl ratio, class, land loss.
 
-    python validation/studies/cage_motion.py [--t-end 0.2] [--t-end-hs 0.06] [--only a b c d]
+    python validation/studies/cage_motion.py [--t-end 0.2] [--t-end-hs 0.06] [--t-end-spacing 1.2] [--only a b c d e]
         [--out validation/out/cage_motion]
 
 Writes cage_motion.json, cage_motion_orbits.png and cage_motion_orbits.npz into --out.
@@ -66,11 +70,46 @@ def run_high_speed(t_end, unbalance=0.0):
     return {k: s.get(k) for k in KEYS + ("steady",)}, rec
 
 
+def whirl_lines(rec, cage_speed, n=5):
+    """The ``n`` strongest lines of the cage centre's whirl over the last half of ``rec``: (frequency over the
+    cage speed, + in the cage's direction of rotation; amplitude over the strongest), from the FFT of
+    x + i y about its mean (Hann window; the frequency resolution is 2 pi / the window's length)."""
+    t = rec.data["t"]
+    w = t >= 0.5 * t[-1]
+    xy = rec.data["xc"][w, 0, :2]
+    zc = (xy[:, 0] - xy[:, 0].mean()) + 1j * (xy[:, 1] - xy[:, 1].mean())
+    f = np.fft.fftfreq(zc.size, d=t[1] - t[0]) * 2.0 * np.pi * np.sign(cage_speed)
+    a = np.abs(np.fft.fft(zc * np.hanning(zc.size)))
+    picked = []
+    for i in np.argsort(a)[::-1]:
+        if all(abs(f[i] - f[k]) > 3.0 * abs(f[1] - f[0]) for k in picked):
+            picked.append(int(i))
+        if len(picked) == n:
+            break
+    return [(float(f[i] / abs(cage_speed)), float(a[i] / a[picked[0]])) for i in picked], \
+        float(abs(f[1] - f[0]) / abs(cage_speed))
+
+
+def run_spacing(t_end, error):
+    """(e): the 6208's ball-guided cage with a pocket spacing error ``error`` [m]."""
+    b = eb.catalog["6208"]
+    cage = dataclasses.replace(estimated_cage(b, guidance="ball"), pocket_spacing_error=error)
+    sc = eb.Scenario(Fr=3000.0, omega=500.0, t_end=t_end, dt=2e-6, sample_dt=2e-5, rigid_cage=cage,
+                     cage_damping="implicit", friction="regularized")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", eb.SteadyStateWarning)
+        warnings.simplefilter("ignore", eb.StepSizeWarning)
+        rec = eb.simulate(b, sc, progress=False)
+        s = rec.summary(fraction=0.5)
+    return {k: s.get(k) for k in KEYS}, rec
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--t-end", type=float, default=0.2)
     ap.add_argument("--t-end-hs", type=float, default=0.06, help="run length of the high-speed runs (d) [s]")
-    ap.add_argument("--only", nargs="+", choices=("a", "b", "c", "d"), default=["a", "b", "c", "d"])
+    ap.add_argument("--t-end-spacing", type=float, default=1.2, help="run length of the spacing runs (e) [s]")
+    ap.add_argument("--only", nargs="+", choices=("a", "b", "c", "d", "e"), default=["a", "b", "c", "d", "e"])
     ap.add_argument("--out", default=str(ROOT / "validation" / "out" / "cage_motion"))
     args = ap.parse_args(argv)
     out = Path(args.out)
@@ -118,6 +157,18 @@ def main(argv=None):
               f"{s['cage_whirl_ratio']} land eccentricity max {s['land_eccentricity_max']:.3f}, land loss "
               f"{s['cage_power_land']:.1f} W, pocket loss {s['cage_power_pocket']:.1f} W, cage "
               f"{s['cage_speed']:.1f} rad/s, steady {s['steady']['steady']}", flush=True)
+
+    clearance = estimated_cage(eb.catalog["6208"], guidance="ball").pocket_clearance
+    for name, e in (("equal", 0.0), ("unequal_0.4", 0.4 * clearance)) if "e" in args.only else ():
+        if name == "equal":
+            print(f"(e) 6208 ball-guided cage, 3000 N, 500 rad/s, {args.t_end_spacing:g} s: pocket spacing")
+        s, rec = run_spacing(args.t_end_spacing, e)
+        lines, resolution = whirl_lines(rec, s["cage_speed"])
+        report[f"e_{name}"] = {**s, "whirl_lines": lines, "resolution": resolution, "pocket_spacing_error": e}
+        orbits[f"e_{name}"] = rec
+        print(f"    {name:12s} {s['cage_motion']:9s} orbit/clearance {s['cage_orbit_ratio']:.3f} pocket max "
+              f"{s['pocket_force_max']:.1f} N; whirl lines (f / cage speed: amplitude, resolution "
+              f"{resolution:.3f}): " + ", ".join(f"{fq:+.3f}: {amp:.2f}" for fq, amp in lines), flush=True)
 
     cols = max(1, min(4, len(orbits)))
     rows = max(1, -(-len(orbits) // cols))

@@ -11,11 +11,11 @@ import numpy as np
 
 from ...data import InputError
 from ...model.contact import forces
-from ...model.layout import H_E1
+from ...model.layout import H_E1, POCKET_ESCAPE
 from ...model.load_range import pressure_excess
 from ...model.scenario import history_friction_error
 from ...model.solver_types import IMPLICIT_SOLVERS, UNSTABLE_SOLVERS, settings_solver, unstable_solver_error
-from ...model.stability import FAST_STEP_SHARE, StepSizeWarning, runaway_error, step_warning
+from ...model.stability import FAST_STEP_SHARE, SimulationError, StepSizeWarning, runaway_error, step_warning
 from ...physics import hertz
 from ...physics.geometry import raceway_radii
 from . import kernels as EK
@@ -476,6 +476,12 @@ class UserFunctionsMixin:
         the elastic contact limit (the loads); else the step."""
         if math.isfinite(worst) and worst <= self._max_overlap:
             return
+        if worst >= POCKET_ESCAPE:
+            raise SimulationError(
+                f"rigidCage: at t = {t:.4g} s a ball left its pocket (its centre moved beyond the cage's section "
+                "along the pocket's axis): the cage drifted off its balls, which this model cannot represent; a "
+                "ball-guided cage needs spherical pockets, a land-guided one a land clearance below its pocket "
+                "clearance")
         what = "non-finite or runaway"
         for r, ring in enumerate(("inner", "outer")):
             parts = [name for name, cols in (("position", _POSE_POSITION), ("velocity", _POSE_VELOCITY))

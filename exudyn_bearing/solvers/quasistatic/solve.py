@@ -831,6 +831,10 @@ def _check_cage(cage, rigid_cage, control, b):
         raise InputError(f"rigid_cage: expected a RigidCage (exudyn_bearing.data.cages), got "
                          f"{type(rigid_cage).__name__}")
     rigid_cage.check_fits(b)
+    if rigid_cage.pocket_spacing_error != 0.0:
+        raise InputError("rigid_cage: its pocket_spacing_error (unequal pockets) is not for the quasi-static solver, "
+                         "which sees one ball at every azimuth of equally spaced pockets; run it in the dynamic "
+                         "engines (eb.simulate(..., Scenario(rigid_cage=...)))")
     return rigid_cage
 
 

@@ -18,13 +18,13 @@ from ..._jit import announce_compilation
 from ...data import InputError, Lubricant, default_lubricant, load_bearing
 from ...model.contact import forces, scene_loss_path, scene_paths
 from ...model.initial_state import initial_state
-from ...model.layout import G_LAND_ECC, H_E1, NDIAG, NGLOBAL, NSIGNAL
+from ...model.layout import G_LAND_ECC, G_WORST, H_E1, NDIAG, NGLOBAL, NSIGNAL, POCKET_ESCAPE
 from ...model.memory import ESTIMATE_AFTER_S, wall_time_message
 from ...model.motion import ring_poses
 from ...model.parameters import scene_parameters
 from ...model.record import RunInterrupted, RunRecord
 from ...model.scenario import Scenario, resolve_cage
-from ...model.stability import StepSizeWarning, cage_load_check, land_step_check, runaway_error, stable_step, step_warning
+from ...model.stability import SimulationError, StepSizeWarning, cage_load_check, land_step_check, runaway_error, stable_step, step_warning
 from ...physics import hertz
 from ...physics.contact_slip import DEFAULT_N_ACROSS, DEFAULT_N_STRIPS
 from .integrators import evaluate, run_rk4, run_verlet
@@ -174,6 +174,12 @@ class ReferenceEngine:
                     sig_every, sig_acc, s_sig, glob, *work, defect_path, ellipse_path, signal_path, loss_path)
                 done += steps
                 k_samp += ns
+                if status == 2 and glob[G_WORST] >= POCKET_ESCAPE:
+                    raise SimulationError(
+                        f"rigid_cage: at t = {done * s.dt:.4g} s a ball left its pocket (its centre moved beyond the "
+                        "cage's section along the pocket's axis): the cage drifted off its balls, which this model "
+                        "cannot represent; a ball-guided cage needs spherical pockets, a land-guided one a land "
+                        "clearance below its pocket clearance")
                 if status != 0:
                     t_fail = done * s.dt
                     what = ("non-finite" if status == 1 else
