@@ -58,6 +58,7 @@ cases.
 from __future__ import annotations
 
 import csv
+import dataclasses
 import hashlib
 import io
 import json
@@ -78,6 +79,7 @@ import exudyn_bearing._jit as _jit  # its once-per-process compile notice (the w
 
 from .data import InputError, catalog
 from .model.contact import forces
+from .model.scenario import Scenario
 from .model.stability import SimulationError, StepSizeWarning
 from .outputs.jsonio import to_jsonable
 from .simulate import simulate, spec_inputs
@@ -137,11 +139,29 @@ def _canonical(obj):
     return to_jsonable(obj)
 
 
+def _fields(obj):
+    """A dataclass instance (a Scenario, its Defects and RigidCage, ...) as nested dicts of its fields."""
+    if dataclasses.is_dataclass(obj) and not isinstance(obj, type):
+        return {f.name: _fields(getattr(obj, f.name)) for f in dataclasses.fields(obj)}
+    if isinstance(obj, (list, tuple)):
+        return [_fields(v) for v in obj]
+    return obj
+
+
 def spec_hash(spec: dict) -> str:
     """SHA-256 (hex) of a case spec: its canonical JSON (sorted keys, numbers
     as floats), with a bearing given as a path to a JSON file replaced by the
-    file's content, so that an edited bearing file re-runs its cases."""
+    file's content, so that an edited bearing file re-runs its cases, and the
+    scenario with every field (the defaults filled in), so that a case
+    computed under other defaults (a changed default of the package) runs
+    again rather than counting as done."""
     spec = dict(spec)
+    scenario = spec.get("scenario", {})
+    try:
+        full = Scenario.from_dict(scenario)
+        spec["scenario"] = _fields(full)
+    except (InputError, TypeError):
+        pass  # an invalid scenario: hashed as written (its case fails and is recorded)
     bearing = spec.get("bearing")
     if isinstance(bearing, (str, os.PathLike)) and str(bearing) not in catalog and Path(bearing).is_file():
         try:

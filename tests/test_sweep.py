@@ -148,3 +148,22 @@ def test_dask_local_cluster(tmp_path):
     assert res["Fr1000"]["summary"]["steps"] == 400
     assert res["bad"]["error"]["type"] == "InputError"
     assert load_case(tmp_path, "Fr3000")["summary"]["q_max_inner"] > 1000
+
+
+def test_the_hash_is_over_the_whole_scenario_so_a_changed_default_reruns(monkeypatch):
+    """A spec that leaves a field out is hashed with the field's default: a spec written out in full hashes
+    alike, and a case computed under another default (the package's Fr default was 3000 N before issue 36's
+    defaults) hashes differently, so a resumed sweep runs it again instead of taking the old result."""
+    import dataclasses
+
+    from exudyn_bearing.model.scenario import Scenario
+
+    short = {"bearing": "6208", "scenario": {"omega": 500.0, "t_end": 0.01}}
+    full = {"bearing": "6208", "scenario": {"omega": 500, "t_end": 0.01, "Fr": 0.0, "cage": "auto"}}
+    assert spec_hash(short) == spec_hash(full)
+    h = spec_hash(short)
+    old_default = dataclasses.make_dataclass("Scenario", [("Fr", float, 3000.0)], bases=(Scenario,), frozen=True)
+    assert old_default().Fr == 3000.0
+    monkeypatch.setattr("exudyn_bearing.sweep.Scenario", old_default)
+    assert spec_hash(short) != h
+    assert spec_hash({"bearing": "6208", "scenario": {"Fr": 1.0, "nonsense": 1}})  # invalid: hashed as written
