@@ -20,6 +20,7 @@ import numpy as np
 
 from ..data import InputError
 from .jsonio import to_jsonable
+from .window_checks import sample_window
 from .whole_loss import WHOLE_LOSS_DESCRIPTIONS, WHOLE_LOSS_UNITS, NOT_ESTIMATED, estimate_losses
 
 __all__ = ["LEVEL_SUMMARY_KEYS", "LevelResults"]
@@ -60,16 +61,9 @@ class LevelResults:
         return self.data["t"]
 
     def window(self, fraction: float = 0.25, t_window=None) -> slice:
-        """Slice of the last ``fraction`` of the samples, or of those with t in ``t_window = (t0, t1)``."""
-        n = len(self.t)
-        if t_window is not None:
-            idx = np.nonzero((self.t >= t_window[0]) & (self.t < t_window[1]))[0]
-            if idx.size == 0:
-                raise InputError(f"t_window: no samples in {t_window}")
-            return slice(int(idx[0]), int(idx[-1]) + 1)
-        if not 0.0 < fraction <= 1.0:
-            raise InputError(f"fraction: must lie in (0, 1], got {fraction!r}")
-        return slice(max(0, n - max(1, round(fraction * n))), n)
+        """Slice of the last ``fraction`` of the samples, or of those with t in ``t_window = (t0, t1)``
+        (:func:`.window_checks.sample_window`, as the ball element's results)."""
+        return sample_window(self.t, fraction, t_window)
 
     def summary(self, fraction: float | None = None, t_window=None) -> dict:
         """Scalar results over the window (the last quarter of the run, the last ``fraction`` or

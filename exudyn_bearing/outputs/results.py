@@ -40,7 +40,7 @@ from .contact_summary import CONTACT_SUMMARY_UNITS, contact_summary
 from .jsonio import to_jsonable
 from .whole_loss import WHOLE_LOSS_DESCRIPTIONS, WHOLE_LOSS_KEYS, WHOLE_LOSS_UNITS, whole_loss
 from .tables import NOT_CONVERGED_MARK, Summary
-from .window_checks import (LOSS_FLOOR_MU, SPEED_FLOOR, SteadyStateWarning, energy_balance, energy_check,
+from .window_checks import (LOSS_FLOOR_MU, sample_window, SPEED_FLOOR, SteadyStateWarning, energy_balance, energy_check,
                             energy_floor, q_max_at_psi0, steadiness)
 
 __all__ = ["Results", "SUMMARY_KEYS", "SUMMARY_UNITS", "SUMMARY_DESCRIPTIONS", "PHASE_NAMES", "LOSSES_MODELLED",
@@ -313,14 +313,8 @@ class Results:
 
     def window(self, fraction: float = 0.25, t_window=None) -> slice:
         """Slice of the last ``fraction`` of the samples, or of the samples
-        with t in ``t_window = (t0, t1)`` when given."""
-        n = len(self.t)
-        if t_window is not None:
-            idx = np.nonzero((self.t >= t_window[0]) & (self.t < t_window[1]))[0]
-            if idx.size == 0:
-                raise ValueError(f"t_window: no samples in {t_window}")
-            return slice(int(idx[0]), int(idx[-1]) + 1)
-        return slice(max(0, n - max(1, int(round(fraction * n)))), n)
+        with t in ``t_window = (t0, t1)`` when given (:func:`.window_checks.sample_window`)."""
+        return sample_window(self.t, fraction, t_window)
 
     def nearest_psi0(self) -> np.ndarray:
         """Index of the ball nearest psi = 0 at every sample (n,)."""

@@ -11,9 +11,10 @@ import math
 
 import numpy as np
 
+from ..data import InputError
 from ..physics.losses import LOSS_FLOOR_MU  # noqa: F401 (the summaries' loss floor; one definition)
 
-__all__ = ["STEADY_BLOCKS", "MIN_STEADY_SAMPLES", "DRIFT_REL", "OSCILLATION_REL", "DRIFT_DEG", "OSCILLATION_DEG",
+__all__ = ["sample_window", "STEADY_BLOCKS", "MIN_STEADY_SAMPLES", "DRIFT_REL", "OSCILLATION_REL", "DRIFT_DEG", "OSCILLATION_DEG",
            "LOSS_DRIFT_REL", "LOSS_OSCILLATION_REL", "LOSS_FLOOR_MU", "SPEED_FLOOR", "PSI0_TOLERANCE",
            "STEADY_THRESHOLDS", "SteadyStateWarning", "drift_and_oscillation", "passage_average", "steadiness", "q_max_at_psi0",
            "energy_balance", "ENERGY_TOLERANCE", "ENERGY_FLOOR_OMEGA", "energy_check", "energy_floor"]
@@ -294,3 +295,19 @@ def energy_check(drive_power: float, losses: dict, kinetic_energy_change: float,
             "components": used, "missing": missing, "drive_power": float(drive_power), "power_loss_total": total,
             "kinetic_energy_rate": float(rate), "residual": residual, "tolerance": tolerance, "passed": passed,
             "split_error": split, "reason": reason}
+
+
+def sample_window(t, fraction: float = 0.25, t_window=None) -> slice:
+    """Slice of the last ``fraction`` of the sample times ``t``, or of those in ``t_window = (t0, t1)``
+    (t0 <= t < t1); InputError for an empty ``t_window`` or a fraction outside (0, 1]. The window of the
+    dynamic runs' and of the bearing levels' results."""
+    t = np.asarray(t)
+    n = len(t)
+    if t_window is not None:
+        idx = np.nonzero((t >= t_window[0]) & (t < t_window[1]))[0]
+        if idx.size == 0:
+            raise InputError(f"t_window: no samples in {t_window}")
+        return slice(int(idx[0]), int(idx[-1]) + 1)
+    if not 0.0 < fraction <= 1.0:
+        raise InputError(f"fraction: must lie in (0, 1], got {fraction!r}")
+    return slice(max(0, n - max(1, round(fraction * n))), n)
