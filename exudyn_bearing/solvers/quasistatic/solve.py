@@ -429,7 +429,7 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
                         if not loaded:
                             controls[j], checks[j] = "cage", None
                             continue
-                        same = next((i for i in range(j) if np.allclose(geo[i], geo[j], rtol=1e-12, atol=0.0)), None)
+                        same = _alike(geo, j)
                         if same is not None:
                             new[j], checks[j] = new[same], checks[same]
                         else:
@@ -438,7 +438,7 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
                         controls[j] = "equilibrium" if checks[j]["converged"] else "cage"
                     elif loaded:
                         controls[j] = "min-energy"
-                        same = next((i for i in range(j) if np.allclose(geo[i], geo[j], rtol=1e-12, atol=0.0)), None)
+                        same = _alike(geo, j)
                         if same is not None:
                             new[j], checks[j] = new[same], checks[same]
                         else:
@@ -860,6 +860,12 @@ def _land_state(rc, lub, omega_c, omega_ring, force):
     return eps, torque, crushed
 
 
+def _alike(geo, j):
+    """The first ball before ``j`` whose contact geometry equals ball j's (rtol 1e-12: balls alike by symmetry,
+    solved once), else None."""
+    return next((i for i in range(j) if np.allclose(geo[i], geo[j], rtol=1e-12, atol=0.0)), None)
+
+
 def pocket_contact_fraction(u, psi, omega_c, radius, clearance, substeps=64):
     """Share of the time each ball rests on a pocket wall, the balls moving freely inside their pockets' play
     (docs/theory/quasistatic.md#pocket-play).
@@ -917,7 +923,7 @@ def _free_balls(geo, loaded, races, stage, kin, model, n_strips, n_across, inert
     for j in range(z):
         if not loaded[j]:
             continue
-        same = next((i for i in range(j) if np.allclose(geo[i], geo[j], rtol=1e-12, atol=0.0)), None)
+        same = _alike(geo, j)
         if same is not None:
             free[j] = free[same]
         elif stage == "equilibrium":
@@ -944,7 +950,7 @@ def _caged_balls(omega_c, geo, loaded, races, stage, kin, rc, model, n_strips, n
     checks = [None] * z
     used = np.array(["outer"] * z, dtype=object)
     for j in range(z):
-        same = next((i for i in range(j) if np.allclose(geo[i], geo[j], rtol=1e-12, atol=0.0)), None)
+        same = _alike(geo, j)
         if same is not None:
             new[j], q_p[j], checks[j], used[j] = new[same], q_p[same], checks[same], used[same]
             continue
