@@ -156,6 +156,9 @@ CLAIMS = [
      "quasistatic, GeneralizedAlpha 0.0001 s wall 0.02 s ( 1.1 s per simulated s), error 0.00108", "python validation/performance/levels_work_precision.py"),
     ("8.6e-3 at 5e-4 s; linear 0.116 at every step", "quasistatic, GeneralizedAlpha 0.0005 s wall 0.01 s ( 0.3 s per "
      "simulated s), error 0.00863", "python validation/performance/levels_work_precision.py"),
+    # load distribution and stiffness (docs/howto/load_and_stiffness.md)
+    ("13.2 % on the 6208 at 3000 N", "mean of 3 ball-set phases (spread of K 13.2 %)",
+     "python -m exudyn_bearing stiffness 6208 --Fr 3000 --omega 500"),
     # losses and temperatures (docs/howto/losses_and_temperatures.md)
     ("prints 61.47 W, of it traction\n16.7 W, EHL rolling 42.59 W, hysteresis 2.116 W, drag 0.06424 W",
      "power loss 61.47 W (traction 16.7, ehl_rolling 42.59, hysteresis 2.116, drag 0.06424,",
