@@ -30,6 +30,7 @@ if TYPE_CHECKING:  # the public names, imported on first use by __getattr__ belo
     from .physics.rating_life import RatingLife, rating_life
     from .solvers.quasistatic.levels.linear import LinearValidityWarning
     from .solvers.quasistatic.pair import PairSolution, solve_pair
+    from .solvers.quasistatic.inertia import BallInertiaWarning
     from .solvers.quasistatic.solve import TractionResolutionWarning
     from .solvers.quasistatic.thermal import ThermalSolution, solve_thermal
 
@@ -50,6 +51,7 @@ _PUBLIC = {
     ".physics.rating_life": ("RatingLife", "rating_life"),
     ".solvers.quasistatic.levels.linear": ("LinearValidityWarning",),
     ".solvers.quasistatic.pair": ("PairSolution", "solve_pair"),
+    ".solvers.quasistatic.inertia": ("BallInertiaWarning",),
     ".solvers.quasistatic.solve": ("TractionResolutionWarning",),
     ".solvers.quasistatic.thermal": ("ThermalSolution", "solve_thermal"),
 }
@@ -63,7 +65,7 @@ __all__ = ["CreateBallBearing", "filter_exudyn_notes", "BallBearing", "Defect", 
            "Results", "Scenario", "SimulationError", "SteadyStateWarning", "StepSizeWarning", "catalog", "get_bearing", "load_bearing",
            "load_lubricant", "lubricants", "materials", "simulate", "solve_quasistatic", "QuasiStaticSolution",
            "bearing_coefficients", "BearingCoefficients", "solve_thermal", "ThermalSolution", "LinearValidityWarning",
-           "TractionResolutionWarning", "RatingLife", "rating_life", "solve_pair", "PairSolution",
+           "TractionResolutionWarning", "BallInertiaWarning", "RatingLife", "rating_life", "solve_pair", "PairSolution",
            "CageMaterial", "CageTemperatureWarning", "RigidCage", "estimated_cage"]
 
 

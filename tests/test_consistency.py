@@ -43,6 +43,7 @@ def _equilibrium_power_balance(sol):
     return eq, drive, diss
 
 
+@pytest.mark.filterwarnings("ignore::exudyn_bearing.BallInertiaWarning")  # expected: lightly loaded balls
 @pytest.mark.parametrize("omega", [100.0, 1700.0, 6000.0])
 def test_traction_equilibrium_converges_on_the_radial_6208(omega):
     # every ball that touches both races reaches its traction equilibrium; those with a contact without
@@ -63,6 +64,7 @@ def test_traction_equilibrium_converges_on_the_radial_6208(omega):
     dict(bearing="7208", Fr=3000.0, Fa=3000.0, omega=500.0),
     dict(bearing="ACBB-120", Fa=22240.0, omega=25000.0 * math.pi / 30.0, **ACBB_OIL),
 ], ids=["6208-thrust-8x1", "7208-combined", "ACBB-120-own-oil"])
+@pytest.mark.filterwarnings("ignore::exudyn_bearing.BallInertiaWarning")  # expected: lightly loaded balls
 def test_traction_equilibrium_converges_and_conserves_energy(case):
     # every ball of these cases is loaded at both races and reaches its equilibrium; the bearing's drive
     # power is then its dissipation (round-off and the 1e-8 residual of the scaled equations)

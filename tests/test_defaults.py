@@ -66,6 +66,7 @@ def test_simulate_acbb120_under_thrust_has_no_radial_load():
     assert (sc.Fr, sc.Fa) == (0.0, 22240.0)
 
 
+@pytest.mark.filterwarnings("ignore::exudyn_bearing.BallInertiaWarning")  # expected: lightly loaded balls
 def test_tilt_is_held_alike_in_the_api_and_on_the_command_line(capsys):
     # the 7208 under F_r = F_a = 3000 N at 500 rad/s: refused with a free tilt (shoulder), solved held
     with pytest.raises(eb.InputError, match="shoulder"):

@@ -23,6 +23,7 @@ def _reaction_units(out):
     return units
 
 
+@pytest.mark.filterwarnings("ignore::exudyn_bearing.BallInertiaWarning")  # the 7208's balls under race control
 @pytest.mark.parametrize("thermal", [False, True])
 def test_quasistatic_prints_reactions_with_units_and_the_friction_torque(capsys, thermal):
     assert main(["quasistatic", *ARGS, *(THERMAL if thermal else [])]) == 0

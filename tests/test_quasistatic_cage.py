@@ -304,3 +304,42 @@ def test_acbb120_rigid_cage_dem_equals_the_quasistatic_equilibrium():
     assert d["dissipation"] == pytest.approx(qs, rel=0.03)
     assert d["cage_power_land"] == pytest.approx(pl["cage_land"], rel=0.03)
     assert d["cage_power_pocket"] == pytest.approx(pl["cage_pocket"], rel=0.1)
+
+
+def test_ball_inertia_power_is_the_sliding_cost_of_the_speed_changes():
+    """check_ball_inertia's power by hand (exudyn_bearing/solvers/quasistatic/inertia.py): two balls whose
+    angular velocities and orbital speeds differ; each ball pitch costs J |dw|^2 / 2 + m (r d omega_m)^2 / 2."""
+    from types import SimpleNamespace
+
+    from exudyn_bearing.solvers.quasistatic.inertia import ball_mass_inertia, check_ball_inertia
+    kin = np.array([[200.0, -100.0, 1000.0, 0.0], [220.0, -50.0, 1100.0, 0.0]])
+    sol = SimpleNamespace(kinematics=kin, omega=500.0, omega_outer=0.0, geometry={"ball_thermal_growth": 0.0},
+                          balls={"ball_center_r": np.array([0.03, 0.03]), "psi": np.array([0.0, np.pi])},
+                          dissipation_total=10.0, cage_power=2.0)
+    m, j = ball_mass_inertia(B, B.ball_radius)
+    dt = 2.0 * np.pi / (2 * 210.0)
+    per_pitch = 0.5 * j * (50.0 ** 2 + 100.0 ** 2) + 0.5 * m * (0.03 * 20.0) ** 2
+    with pytest.warns(UserWarning) as rec:
+        out = check_ball_inertia(sol, B, tolerance=0.0)
+    assert out["power"] == pytest.approx(2 * per_pitch / dt, rel=1e-12)
+    assert out["share"] == pytest.approx(out["power"] / 12.0, rel=1e-12) and not out["valid"]
+    assert any("inertia" in str(w.message) for w in rec)
+    sol.kinematics = np.tile(kin[:1], (2, 1))               # alike balls: nothing to change
+    assert check_ball_inertia(sol, B)["power"] == 0.0
+    sol.omega_outer = sol.omega                             # no orbit: no check
+    assert check_ball_inertia(sol, B) is None
+
+
+def test_quasistatic_warns_where_the_balls_inertia_matters():
+    """The caged 7208 at 500 rad/s: under F_r = F_a = 3000 N its lightly loaded balls leave and re-enter the
+    load zone, and changing their spin costs a third of the dissipation (the case where the reference engine
+    dissipates 35 % more, validation/consistency/quasistatic_cage.py); under F_r = 3000, F_a = 10000 N every
+    ball stays loaded and the check passes."""
+    from exudyn_bearing import BallInertiaWarning
+    with pytest.warns(BallInertiaWarning, match="inertia"):
+        light = solve_quasistatic("7208", 3000.0, 3000.0, omega=500.0, control="equilibrium", cage="rigid", **QUICK)
+    assert not light.inertia_check["valid"] and light.inertia_check["share"] > 0.1
+    assert light.to_dict()["ball_inertia"] == light.inertia_check
+    heavy = solve_quasistatic("7208", 3000.0, 10000.0, omega=500.0, control="equilibrium", cage="rigid", **QUICK)
+    assert heavy.inertia_check["valid"] and heavy.inertia_check["share"] < 1e-3
+    assert solve_quasistatic(B, 3000.0, omega=500.0, inertia_check=False, **QUICK).inertia_check is None

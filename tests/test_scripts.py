@@ -54,6 +54,7 @@ def test_rotor_scenario_script(tmp_path, capsys, load_script):
 
 # a short run: its summary window is not steady, as expected
 @pytest.mark.filterwarnings("ignore::exudyn_bearing.SteadyStateWarning")
+@pytest.mark.filterwarnings("ignore::exudyn_bearing.BallInertiaWarning")  # expected: lightly loaded balls
 def test_7208_scenario_script(tmp_path, capsys, load_script):
     mod = load_script("scenarios/bearing_7208.py")
     mod.main(["--t-end", "0.002", "--out", str(tmp_path)])

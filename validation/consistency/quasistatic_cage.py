@@ -54,7 +54,9 @@ def quasistatic(cage, case=CASE):
             "pocket_force_mean": float(np.mean(np.abs(s.balls.get("pocket_force", [0.0])))),
             "land_force": c.get("land_force"), "land_eccentricity": c.get("land_eccentricity"),
             "q_max_inner": s.q_max_inner, "q_max_outer": s.q_max_outer, "energy_residual": s.energy_residual,
-            "torque_residual": c.get("torque_residual")}
+            "torque_residual": c.get("torque_residual"),
+            # the solver's own check of the balls' inertia along the orbit (solvers/quasistatic/inertia.py)
+            "inertia_power": (s.inertia_check or {}).get("power"), "inertia_share": (s.inertia_check or {}).get("share")}
 
 
 def dem(dt, t_end, case=CASE):
@@ -136,7 +138,8 @@ def main(argv=None):
               f"({100 * (q['dissipation'] / d['dissipation'] - 1):+.1f} %); contacts {q['dissipation_contacts']:.2f} / "
               f"{d['dissipation_contacts']:.2f}, pocket {q['cage_power_pocket']:.2f} / {d['cage_power_pocket']:.2f}, "
               f"land {q['cage_power_land']:.2f} / {d['cage_power_land']:.2f} W; cage {q['cage_speed']:.3f} / "
-              f"{d['cage_speed']:.3f} rad/s", flush=True)
+              f"{d['cage_speed']:.3f} rad/s; QS ball-inertia check {q['inertia_power']:.3g} W "
+              f"({100 * q['inertia_share']:.3g} % of its dissipation)", flush=True)
     (out / "quasistatic_cage.json").write_text(json.dumps(report, indent=2, default=float))
     print(f"wrote {out / 'quasistatic_cage.json'}")
 

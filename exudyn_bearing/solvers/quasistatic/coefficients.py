@@ -156,6 +156,9 @@ def bearing_coefficients(bearing, speeds, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=
         if bad in options:
             raise InputError(f"{bad}: set by bearing_coefficients, not an option")
     phases = float(phase) + 2.0 * math.pi / b.n_balls * np.arange(n_phases) / n_phases
+    # stiffness and damping do not depend on the balls' inertia along the orbit (which concerns the kinematics
+    # and losses, solvers/quasistatic/inertia.py): no check per table entry unless asked for
+    options = {"inertia_check": False, **options}
     n = s.size
     kk = np.zeros((n, 5, 5))
     cc = np.zeros((n, 5, 5))

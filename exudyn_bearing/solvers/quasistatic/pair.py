@@ -61,6 +61,7 @@ from ...data import InputError, load_bearing
 from ...data.errors import check_finite, check_nonnegative, check_positive
 from ...model.operating_geometry import operating_geometry
 from ...physics.load_distribution import check_axial_load
+from .inertia import check_ball_inertia
 from .ring import DOF_NAMES
 from .solve import axial_load_as_fa, solve_quasistatic
 
@@ -458,6 +459,8 @@ def solve_pair(bearing, arrangement="DB", Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=
     ts = [_transform(z, tu) for z, tu in zip(positions, turned)]
     kw = {k: v for k, v in options.items()}
     kw.setdefault("resolution_check", False)
+    final_inertia = kw.pop("inertia_check", True)  # once, at the converged pose (below), not per Newton step
+    kw["inertia_check"] = False
     arm = math.hypot(*b.inner_groove_center)
     wts = np.array([1.0, 1.0, 1.0, 1.0 / arm, 1.0 / arm])   # moments / arm ~ forces
     scale = max(float(np.max(np.abs(loads) * wts)), f0, 1.0)
@@ -528,6 +531,9 @@ def solve_pair(bearing, arrangement="DB", Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=
                              "read 0)") from None
         raise InputError(f"{names}: {rest} (in a bearing of the {arrangement} pair, held at its pose: its own "
                          "loads read 0)") from None
+    if final_inertia:
+        for one in sols:
+            one.inertia_check = check_ball_inertia(one, b)
     reactions = {k: float((g - loads)[DOF_NAMES.index(k)]) for k in held}
     kmat = np.array(kk, float)
     if spacing is None:

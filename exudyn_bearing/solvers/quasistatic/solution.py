@@ -109,6 +109,7 @@ class QuasiStaticSolution:
     wall_s: float = 0.0
     resolution_check: dict | None = None  #: check of the traction integration (solve.check_traction_resolution)
     cage: dict | None = None  #: the rigid cage's speed, losses, land (solve._cage_result); None: no cage
+    inertia_check: dict | None = None  #: can the balls follow the kinematics along the orbit (inertia.check_ball_inertia)
 
     # convenient totals -------------------------------------------------------------
     @property
@@ -220,6 +221,7 @@ class QuasiStaticSolution:
         d["iterations"] = self.iterations
         d["n_strips"], d["n_across"] = self.n_strips, self.n_across
         d["traction_resolution"] = self.resolution_check
+        d["ball_inertia"] = self.inertia_check
         d["wall_s"] = self.wall_s
         d["units"] = {**UNITS, **LOSS_UNITS}
         if rating is not None:
@@ -267,6 +269,13 @@ class QuasiStaticSolution:
                          f"{c['land_eccentricity']:.3g})")
             lines.append("pocket force per ball [N] (+: pushes the ball forward): "
                          + " ".join(f"{q:.4g}" for q in self.balls["pocket_force"]))
+        if self.inertia_check is not None:
+            c = self.inertia_check
+            lines.append(f"quasi-static hypothesis (the balls' inertia along the orbit): their changes of speed from one position to the next "
+                         f"cost about {c['power']:.3g} W sliding, {100 * c['share']:.3g} % of the dissipation "
+                         f"({c['dissipation']:.4g} W; limit {100 * c['tolerance']:g} %): "
+                         + ("holds" if c["valid"] else
+                            "OUTSIDE it (the balls' inertia matters; run the case dynamically)"))
         for name, why in self.held.items():
             lines.append(f"{name} held ({why}); reaction {self.reactions.get(name, 0.0):.6g} "
                          f"{'N m' if name.startswith('tilt') else 'N'}")

@@ -63,6 +63,7 @@ from ...model.load_range import MAX_CONTACT_PRESSURE, check_load_estimate, check
 from ...model.operating_geometry import operating_geometry
 from ...model.scenario import rolling_speed_floor as _rolling_floor
 from .damping import condensed_matrices, contact_damping
+from .inertia import ball_mass_inertia, check_ball_inertia
 from .ring import DOF_NAMES, LOAD_NAMES, RingProblem, solve_ring
 from .solution import QuasiStaticSolution
 from .stiffness import stiffness_matrix
@@ -188,7 +189,7 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
                       phase=0.0, n_strips=DEFAULT_N_STRIPS, n_across=DEFAULT_N_ACROSS,
                       traction_regularizing_srr=DEFAULT_REGULARIZING_SRR, rolling_speed_floor=None,
                       shoulder_angle=MAX_FREE_CONTACT_ANGLE, stiffness=True, start=None,
-                      resolution_check=True, cage=None, rigid_cage=None) -> QuasiStaticSolution:
+                      resolution_check=True, cage=None, rigid_cage=None, inertia_check=True) -> QuasiStaticSolution:
     """Quasi-static equilibrium of a ball bearing with free inner-ring DOFs, speed effects and kinematics.
 
     Parameters
@@ -272,6 +273,12 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
         Geometry, material and pocket friction of the rigid cage (default:
         :func:`~exudyn_bearing.data.cages.estimated_cage` of the bearing, as the
         dynamic engines).
+    inertia_check : bool
+        Check that the balls can follow the solution's kinematics along the orbit
+        (:func:`~exudyn_bearing.solvers.quasistatic.inertia.check_ball_inertia`: a
+        :class:`~exudyn_bearing.solvers.quasistatic.inertia.BallInertiaWarning` when the
+        slip power of their changes of speed from one ball position to the next exceeds
+        1 % of the dissipation); its result is the solution's ``inertia_check``.
 
     Returns
     -------
@@ -362,8 +369,7 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
     # (orbital speed, w_r, w_z, transverse pivot slip v_t: zero but for the equilibrium stage)
     kin = np.tile([wm0, -wr0 * math.sin(a0), wr0 * math.cos(a0), 0.0], (z, 1))
     moving = w_i != w_o
-    mass = b.ball_mass * (geom.r_b / b.ball_radius) ** 3
-    inertia = 0.4 * mass * geom.r_b ** 2
+    mass, inertia = ball_mass_inertia(b, geom.r_b)
     rd_o = float(deformed_contact_radius(geom.r_b, geom.r_co))
     rd_i = float(deformed_contact_radius(geom.r_b, geom.r_ci))
     wref = max(abs(w_i - w_o), 1e-300)
@@ -528,6 +534,8 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
         contact_geometry=geo, kinematics=kin, traction_model=model, cage=cage_out)
     if resolution_check:
         sol.resolution_check = check_traction_resolution(sol)
+    if inertia_check:
+        sol.inertia_check = check_ball_inertia(sol, b)
     return sol
 
 

@@ -56,6 +56,7 @@ from ...physics.lubricant_properties import lubricant_at, properties_at
 from .losses import cage_land_geometry, power_losses
 from .solution import QuasiStaticSolution
 from .solve import check_traction_resolution, solve_quasistatic
+from .inertia import check_ball_inertia
 
 __all__ = ["CAGE_NODE", "NODES", "THERMAL_UNITS", "ThermalConvergenceWarning", "ThermalRunawayError", "ThermalSolution",
            "solve_thermal", "thermal_lubricant"]
@@ -364,8 +365,9 @@ def solve_thermal(bearing, Fr=0.0, Fa=0.0, *, omega, oil_inlet_temperature, oil_
         ...); the land values also set the land film's conductance.
     **quasistatic
         Further arguments of :func:`~.solve.solve_quasistatic` (``control``, ``fit``, ...; not
-        ``temperatures``, which the network sets). The traction resolution is checked once, at the
-        last solution (:func:`~.solve.check_traction_resolution`).
+        ``temperatures``, which the network sets). The traction resolution and the balls' inertia are
+        checked once, at the last solution (:func:`~.solve.check_traction_resolution`,
+        :func:`~.inertia.check_ball_inertia`).
 
     Returns
     -------
@@ -419,6 +421,7 @@ def solve_thermal(bearing, Fr=0.0, Fa=0.0, *, omega, oil_inlet_temperature, oil_
                          "its result); leave it out, or call solve_quasistatic with fixed temperatures")
     _check_names("solve_thermal", "keyword argument", quasistatic, _QUASISTATIC_KEYWORDS)
     final_check = quasistatic.pop("resolution_check", True)
+    final_inertia = quasistatic.pop("inertia_check", True)
     loss_options = dict(loss_options or {})
     for k in ("oil_volume_fraction", "oil_density", "cage_guidance", "lubricant", "bearing"):
         if k in loss_options:
@@ -445,7 +448,8 @@ def solve_thermal(bearing, Fr=0.0, Fa=0.0, *, omega, oil_inlet_temperature, oil_
         oil = properties_at(lt, temps[3])
         sol = solve_quasistatic(b, Fr, Fa, omega=omega, traction=tm, lubricant=lub, start=sol,
                                 temperatures={"inner": float(temps[0]), "outer": float(temps[1]),
-                                              "ball": float(temps[2])}, resolution_check=False, **quasistatic)
+                                              "ball": float(temps[2])}, resolution_check=False, inertia_check=False,
+                                **quasistatic)
         losses = power_losses(sol, b, lub, oil_density=oil["density"], **loss_options)
         if it == 1:  # the cage node: its data once, its start temperature the previous solution's or the oil's
             rigid = sol.cage["rigid_cage"] if sol.cage is not None else None
@@ -493,6 +497,8 @@ def solve_thermal(bearing, Fr=0.0, Fa=0.0, *, omega, oil_inlet_temperature, oil_
     out_heat = th.network_heat_out(temps, gb, tb)
     if final_check:  # the traction integration, once at the last quasi-static solution
         sol.resolution_check = check_traction_resolution(sol)
+    if final_inertia:  # the balls' inertia along the orbit, once at the last quasi-static solution
+        sol.inertia_check = check_ball_inertia(sol, b)
     temperatures = dict(zip(nodes, map(float, temps)))
     cage_limit = None
     if cage is not None and sol.cage is not None and sol.cage.get("rigid_cage") is not None:

@@ -137,7 +137,10 @@ class LevelBearing:
         self.operatingPoint = solve_quasistatic(b, Fr=fr, Fa=fa, omega=abs(self.initialOmega),
                                                 ring_growth=self.ringGrowth, temperatures=temperatures,
                                                 lubricant=self.lubricant, hertz_method=hertzModel, stiffness=False,
-                                                fixed={})  # the tilt is a DOF of the user's model
+                                                fixed={},  # the tilt is a DOF of the user's model
+                                                # the level takes forces and damping from it, not the balls'
+                                                # kinematics and losses that the inertia check judges
+                                                inertia_check=False)
         #: inner-ring pose (d_x, d_y, d_z, theta_x, theta_y) at the operating point (outer-ring frame):
         #: place the inner ring there to start in equilibrium
         self.loadAngle = check_load_angle(loadAngle)
