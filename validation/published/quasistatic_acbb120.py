@@ -114,11 +114,12 @@ def main():
     res["plot_rigid_vs_growing"] = str(plot_loads_angles(
         {"rigid rings": sols[(tr0, "rigid_race_control")], "growing rings": sols[(tr0, "race_control")]},
         OUT / "qs_acbb120_rigid_vs_growing.png"))
-    # a combined radial + moment case: loads and contact angles against azimuth
+    # a combined radial + moment case: loads and contact angles against azimuth (the tilt free: a moment load
+    # needs it, solve_quasistatic holds it by default)
     comb = {}
     for label, kw in (("thrust only", dict()), ("Fr 3 kN + My 150 N m", dict(Fr=3000.0, My=150.0))):
         comb[label] = solve_quasistatic("ACBB-120", kw.get("Fr", 0.0), FA, 0.0, kw.get("My", 0.0), omega=W,
-                                        traction=tr0, lubricant=LUB, control="auto")
+                                        traction=tr0, lubricant=LUB, control="auto", fixed={})
     s = comb["Fr 3 kN + My 150 N m"]
     res["combined"] = {"displacement": s.displacement.tolist(), "held": s.held,
                        "q_inner_N": s.balls["q_inner"].tolist(), "q_outer_N": s.balls["q_outer"].tolist(),
