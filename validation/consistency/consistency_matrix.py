@@ -438,7 +438,7 @@ def report_section(run):
     d = run.load("consistency_matrix.json")
     rows, dev, terms = d["rows"], d["deviations"], d["terms_7208"]
     lines = ["## Consistency of the solvers", "",
-             "Command: `python validation/consistency/consistency_matrix.py` (static, the quasi-static solver under each "
+             f"Command: `{run.command}` (static, the quasi-static solver under each "
              "control, the reference engine and the Exudyn element on the same cases; ring growth on everywhere, "
              "tilt held; dynamic runs cageless at the ellipse traction level unless the row says otherwise, "
              f"{'4' if d['quick'] else '12'} ms from the quasi-static traction equilibrium with the step of "

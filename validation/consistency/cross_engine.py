@@ -66,7 +66,7 @@ def report_section(run):
     """The report's section on the two engines against each other, from cross_engine.json and two figures."""
     d = run.load("cross_engine.json")
     lines = ["## Cross-engine check", "",
-             "Command: `python validation/consistency/cross_engine.py` (T = 0.05 s, dt = 5 us, both engines on each scene; "
+             f"Command: `{run.command}` (T = 0.05 s, dt = 5 us, both engines on each scene; "
              "figures `out/cross_engine_<scene>.png`, two of them below). Largest relative difference of "
              "q_max_inner, q_max_outer, "
              "cage_speed, ball_spin and lambda_outer_psi0:", "", "| scene | largest relative difference |",

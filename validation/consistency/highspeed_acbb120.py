@@ -207,7 +207,7 @@ def report_section(run):
     (bench_traction.py's part, the cost and strip count, follows it)."""
     d = run.load("highspeed.json")
     lines = ["## High-speed dynamics: traction over the contact ellipse", "",
-             "Command: `python validation/consistency/highspeed_acbb120.py` (both engines; ACBB-120 of Gupta 2020, 25,000 rpm, "
+             f"Command: `{run.command}` (both engines; ACBB-120 of Gupta 2020, 25,000 rpm, "
              "22,240 N thrust, cageless, growing inner ring, traction over each ellipse with 16 strips, "
              f"dt = {d['settings']['dt'] * 1e6:g} us, {d['settings']['t_end'] * 1e3:g} ms from a quasi-static start; "
              "steady state = mean of the last 5 ms, ball 0 for loads and ratios, the whole bearing for the "

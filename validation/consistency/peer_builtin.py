@@ -148,7 +148,7 @@ def report_section(run):
 
     d = run.load("peer_builtin.json")
     lines = ["## Peer check against Exudyn's built-in bearing", "",
-             "Command: `python validation/consistency/peer_builtin.py` (T = 0.04 s). The element with Exudyn's "
+             f"Command: `{run.command}` (T = 0.04 s). The element with Exudyn's "
              "ObjectContactSphereTorus law (`contact_law=\"power\"`: k delta^1.5 + d d(delta)/dt, k = 3.35e10, "
              "d = 200 N s/m, mu = 0.1 linear below 0.1 m/s) against `exudyn.machines.CreateBallBearing` on the "
              "same geometry (r_p = 30 mm), 500 rad/s, F_r = 3000 N; means over the last quarter:", "",

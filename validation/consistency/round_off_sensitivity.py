@@ -84,7 +84,7 @@ def report_section(run):
     """The report's round-off section, from round_off_sensitivity.json."""
     d = run.load("round_off_sensitivity.json")
     lines = ["## Round-off sensitivity: which numbers are reproducible", "",
-             "Command: `python validation/consistency/round_off_sensitivity.py` (engine: reference core, dt = 5 us). The same "
+             f"Command: `{run.command}` (engine: reference core, dt = 5 us). The same "
              "scene with F_r perturbed by a relative 0, +-1e-15 and 1e-14 (the last bits of the input); the table "
              "gives the relative spread (max - min) / |unperturbed| of each reported quantity. A code change that "
              "only reorders floating-point operations moves a quantity by about this much: comparisons between code "

@@ -338,7 +338,7 @@ def report_section(run):
     figures (bench_stiffness.py's part, the speed table, follows it)."""
     d = run.load("stiffness_checks.json")
     lines = ["## Linearised bearing stiffness and damping (quasi-static solver)", "",
-             "Command: `python validation/consistency/stiffness_checks.py` (figures below, each with its CSV in "
+             f"Command: `{run.command}` (figures below, each with its CSV in "
              "validation/out). Matrices: `solve_quasistatic(...).stiffness` "
              "(central differences) and `.damping` (the contact model's normal damping condensed over each ball's "
              "two contacts in series); theory: docs/theory/vibration.md, sec. 8.", "",

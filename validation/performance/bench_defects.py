@@ -230,7 +230,7 @@ def report_section(run):
     """The report's section on localized defects, from bench_defects.json."""
     d = run.load("bench_defects.json")
     lines = ["## Localized defects and vibration signals", "",
-             "Command: `python validation/performance/bench_defects.py` (engine: reference core; 6205 at 1797 rpm, F_r = 1000 N, "
+             f"Command: `{run.command}` (engine: reference core; 6205 at 1797 rpm, F_r = 1000 N, "
              "1 x 1.5 x 0.1 mm spall of `datasets.fault_defects`, dt = 1/(4 x 48 kHz) = 5.21 us, implicit tangential "
              "spring, housing force and inner-ring acceleration at 48 kHz).", ""]
     if "speed" in d:

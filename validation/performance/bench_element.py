@@ -206,7 +206,7 @@ def report_section(run):
         m = [v["mean_10_20ms"] for v in runs.values()]
         return max(m) / min(m) - 1
     lines = ["## Exudyn element against the reference core and Exudyn's built-in bearing", "",
-             f"Command: `python validation/performance/bench_element.py --ga` (T = {d['t_end']} s, median of 3; the built-in "
+             f"Command: `{run.command}` (T = {d['t_end']} s, median of 3; the built-in "
              "bearing 0.02 s). Same scene, dt = 5 us, explicit spring; wall times are the solves alone. Errors of "
              "our engines against the reference core at 1.25 us; of the built-in bearing, of its cage speed "
              "against its own run at 5e-6 s.", "",

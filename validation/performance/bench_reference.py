@@ -161,7 +161,7 @@ def report_section(run):
 
     d = run.load("bench_reference.json")
     lines = ["## Reference core: speed against error", "",
-             "Command: `python validation/performance/bench_reference.py` (engine: reference core; T = "
+             f"Command: `{run.command}` (engine: reference core; T = "
              f"{d['t_end']} s per run, median of {d['repeat']}). Scene: 6208, F_r = 3000 N, 500 rad/s, cage, "
              "lubrication and Cundall-Strack history on, analytic start. Errors: the summary over the last "
              "quarter against the same setting at a quarter of the step.", "",

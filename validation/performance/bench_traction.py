@@ -95,7 +95,7 @@ def main(argv=None):
 def report_section(run):
     """The cost and strip count that end the report's high-speed section, from bench_traction.json."""
     t = run.load("bench_traction.json")
-    lines = ["Cost and strip count: `python validation/performance/bench_traction.py` (6208, 3000 N, 500 rad/s, dt = "
+    lines = [f"Cost and strip count: `{run.command}` (6208, 3000 N, 500 rad/s, dt = "
              f"{t['scene']['dt'] * 1e6:g} us, medians of {t['repeat']} interleaved runs):", ""]
     for eng, c in t["cost"].items():
         lines.append(f"- {eng}: point level {c['us_per_step']['point']:.2f} us per step, ellipse level (the default "

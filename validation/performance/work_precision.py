@@ -118,7 +118,7 @@ def report_section(run):
 
     d = run.load("work_precision.json")
     lines = ["## Speed against error (work-precision)", "",
-             "Command: `python validation/performance/work_precision.py` (figure `out/work_precision.png`, below). Every setting "
+             f"Command: `{run.command}` (figure `out/work_precision.png`, below). Every setting "
              "against the reference core with the full model at dt = 0.5 us (T = 0.1 s).", "",
              "| family | dt [us] | wall s per simulated s | err q_max | err cage | err Q_max(t) (RMS) |",
              "|---|---|---|---|---|---|"]

@@ -408,7 +408,7 @@ def report_section(run):
 
     d = run.load("figures/figures.json")
     lines = ["## The papers' figures (docs/theory/reference_cases.md)", "",
-             "Command: `python validation/published/figures.py` (figures and their CSV in `out/figures/`, shown below; "
+             f"Command: `{run.command}` (figures and their CSV in `out/figures/`, shown below; "
              "sweeps through the sweep runner). Step 5 us, implicit tangential spring, unless said.", ""]
     if "item1" in d:
         lines += ["### 1. Quasi-static loads (omega = 1 rad/s)", "",

@@ -144,7 +144,7 @@ def report_section(run):
 
     d = run.load("quasistatic_acbb120.json")
     lines = ["## Quasi-static solver: the ACBB-120 of Gupta (2020)", "",
-             "Command: `python validation/published/quasistatic_acbb120.py` (solver: `solve_quasistatic`). ACBB-120, "
+             f"Command: `{run.command}` (solver: `solve_quasistatic`). ACBB-120, "
              "25,000 rpm, 22,240 N thrust, cageless, M-50, films with the MIL-L-23699 entry at 492 K. Traction: "
              "`ester_curve_illustrative` (the form of Gupta's traction curve with illustrative parameters, not his "
              "Fig. 6) and `ehl_mil_l_23699_492K` (this project's EHL parameters). Ball 0 (all balls are equal).", "",

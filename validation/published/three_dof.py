@@ -230,7 +230,7 @@ def report_section(run):
     ev = lambda z: f"{z[0]:.4g} {'+' if z[1] >= 0 else '-'} {abs(z[1]):.5g}i"  # noqa: E731
     pair = s["inner_pair"]
     lines = ["## 3-DOF vibration model (El Had et al. 2014)", "",
-             "Command: `python validation/published/three_dof.py` (figures `out/three_dof_frf.png`, "
+             f"Command: `{run.command}` (figures `out/three_dof_frf.png`, "
              "`out/three_dof_time_response.png`, `out/three_dof_modes.png`, each with its CSV). Theory and "
              "readings: docs/theory/vibration.md.", "",
              "**Where the source's eigenvalues come from.** It prints V = "

@@ -97,7 +97,7 @@ def report_section(run):
     """The report's section on the cage contacts' stable step, from cage_step_checks.json."""
     d = run.load("cage_step_checks.json")
     lines = ["## Stable step of the cage contacts", "",
-             "Command: `python validation/studies/cage_step_checks.py`. The ball / cage-ball contacts are critically damped, "
+             f"Command: `{run.command}`. The ball / cage-ball contacts are critically damped, "
              "and velocity Verlet with the damping force at the half-step velocity is stable up to "
              "2 (sqrt(1 + zeta^2) - zeta) / omega, 0.83 / omega at zeta = 1 (tests/test_reference.py checks this "
              "against the amplification matrix). Above it the cage loads chatter at about twice their value; from "
