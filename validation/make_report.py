@@ -183,6 +183,7 @@ def run_all(skip=(), start_at=None):
     machine.setdefault("start", machine_facts())
     machine.pop("end", None)
     (out / "make_report_machine.json").write_text(json.dumps(machine, indent=2))
+    (out / "make_report_walls.json").write_text(json.dumps(walls, indent=2))
     first = [r.script for r in SCRIPTS].index(start_at) if start_at else 0
     probe = _record("make_report_probe.json", start_at) or {"probes": []}
     probe.pop("end", None)
@@ -198,7 +199,7 @@ def run_all(skip=(), start_at=None):
         print(proc.stdout, end="", flush=True)
         run.printout.write_text(proc.stdout)  # what Run.printed quotes
         walls[run.key] = time.perf_counter() - t0
-    (out / "make_report_walls.json").write_text(json.dumps(walls, indent=2))
+        (out / "make_report_walls.json").write_text(json.dumps(walls, indent=2))  # kept for --start-at after a stop
     probe["end"] = host_probe()
     (out / "make_report_probe.json").write_text(json.dumps(probe, indent=2))
     machine["end"] = machine_facts()
