@@ -60,7 +60,9 @@ def test_a_file_someone_else_writes_into_the_clone_does_not_fail_the_run():
 
 
 def _scripts():
-    return sorted((ROOT / "scenarios").glob("*.py")) + sorted((ROOT / "validation").rglob("*.py"))
+    # not validation/out: the scripts' outputs (untracked; bench_defects.py copies a baseline's sources there)
+    return sorted((ROOT / "scenarios").glob("*.py")) + sorted(
+        p for p in (ROOT / "validation").rglob("*.py") if p.relative_to(ROOT / "validation").parts[0] != "out")
 
 
 #: Private names a script may import: benchmarks that time a compiled kernel itself.
@@ -125,12 +127,12 @@ def test_make_report_publishes_a_figure_small(tmp_path, monkeypatch):
     import sys
 
     sys.path.insert(0, str(ROOT / "validation"))
-    import make_report
+    import _report
     from exudyn_bearing.outputs.plotting import pyplot, save_figure
 
-    monkeypatch.setattr(make_report, "OUT", tmp_path / "out")
-    monkeypatch.setattr(make_report, "FIGURES", tmp_path / "report_figures")
-    monkeypatch.setattr(make_report, "_published", [])
+    monkeypatch.setattr(_report, "OUT", tmp_path / "out")
+    monkeypatch.setattr(_report, "FIGURES", tmp_path / "report_figures")
+    monkeypatch.setattr(_report, "_published", [])
     (tmp_path / "out").mkdir()
     plt = pyplot()
     fig, ax = plt.subplots()
@@ -138,10 +140,10 @@ def test_make_report_publishes_a_figure_small(tmp_path, monkeypatch):
     save_figure(fig, tmp_path / "out" / "a.png")
     (tmp_path / "report_figures").mkdir()
     (tmp_path / "report_figures" / "stale.png").write_bytes(b"x")
-    lines = make_report.figure("a.png", "A line.")
+    lines = _report.Run("cross_engine.py").figure("a.png", "A line.")
     assert lines == ["![a](report_figures/a.png)", "", "*a.png*: A line.", ""]
-    assert make_report.figure("missing.png", "Not there.") == []
-    make_report.remove_unpublished()
+    assert _report.figure(tmp_path / "out" / "missing.png", "Not there.") == []
+    _report.remove_unpublished()
     assert sorted(p.name for p in (tmp_path / "report_figures").iterdir()) == ["a.png"]
     from PIL import Image
 
@@ -156,18 +158,19 @@ def test_make_report_names_the_machine_of_its_run(tmp_path, monkeypatch):
     import sys
 
     sys.path.insert(0, str(ROOT / "validation"))
+    import _report
     import make_report
 
-    monkeypatch.setattr(make_report, "OUT", tmp_path)
+    monkeypatch.setattr(_report, "OUT", tmp_path)
     monkeypatch.setattr(make_report, "SCRIPTS", [])
     make_report.run_all()
     record = json.loads((tmp_path / "make_report_machine.json").read_text())
     assert record["start"]["cores"] == os.cpu_count() and record["end"]["cores"] == os.cpu_count()
-    sentence = make_report.machine_sentence(record)
+    sentence = _report.machine_sentence(record)
     assert record["start"]["cpu"] in sentence and f"{os.cpu_count()} logical cores" in sentence
     if hasattr(os, "getloadavg"):
         assert str(record["end"]["load"]) in sentence
-    assert make_report.machine_sentence({}) == ""
+    assert _report.machine_sentence({}) == ""
 
 
 def test_the_repository_cites_its_own_theory_document():
@@ -206,11 +209,10 @@ def test_validation_is_laid_out_by_purpose_and_make_report_finds_every_script():
     undocumented = [p.name for f in folders for p in (ROOT / "validation" / f).glob("*.py")
                     if not ast.get_docstring(ast.parse(p.read_text()))]
     assert undocumented == []
-    for entry in make_report.SCRIPTS:
-        script = make_report.script_entry(entry)[0]
-        assert make_report.script_path(script).is_file(), script
-        parts = make_report.script_command(script).split("/")
-        assert len(parts) == 2 or parts[1] in folders, script  # a new script may wait at the top level
+    for run in make_report.SCRIPTS:
+        assert run.path.is_file(), run.script
+        parts = run.command.split()[1].split("/")
+        assert len(parts) == 2 or parts[1] in folders, run.script  # a new script may wait at the top level
 
 
 def test_make_report_names_the_scripts_the_host_slowed():
@@ -219,19 +221,19 @@ def test_make_report_names_the_scripts_the_host_slowed():
     import sys
 
     sys.path.insert(0, str(ROOT / "validation"))
-    import make_report
+    import _report
 
-    share = make_report.PROBE_SHARE
+    share = _report.PROBE_SHARE
     fast = 3.8e5
     slow = 0.99 * share * fast
     probes = [("a.py", fast), ("b.py", fast), ("c.py", slow), ("d.py", 0.999 * fast)]
     # c ran after a slow probe; b ended on it; a and d are between fast probes
-    assert make_report.disturbed_scripts(probes, end=fast) == [("b.py", fast, slow), ("c.py", slow, 0.999 * fast)]
+    assert _report.disturbed_scripts(probes, end=fast) == [("b.py", fast, slow), ("c.py", slow, 0.999 * fast)]
     # a slow end probe names the last script; no end probe: the last script has its own probe only
-    assert make_report.disturbed_scripts(probes[:2], end=slow) == [("b.py", fast, slow)]
-    assert make_report.disturbed_scripts([("a.py", fast), ("b.py", 1.01 * share * fast)], end=None) == []
-    assert make_report.disturbed_scripts([]) == []
-    text = make_report.probe_sentence({"probes": [list(p) for p in probes], "end": fast})
+    assert _report.disturbed_scripts(probes[:2], end=slow) == [("b.py", fast, slow)]
+    assert _report.disturbed_scripts([("a.py", fast), ("b.py", 1.01 * share * fast)], end=None) == []
+    assert _report.disturbed_scripts([]) == []
+    text = _report.probe_sentence({"probes": [list(p) for p in probes], "end": fast})
     assert "c.py" in text and "b.py" in text and "a.py" not in text and "d.py" not in text
-    assert make_report.probe_sentence({"probes": [["a.py", fast]], "end": fast}).endswith(": none.")
-    assert make_report.probe_sentence({}) == ""
+    assert _report.probe_sentence({"probes": [["a.py", fast]], "end": fast}).endswith(": none.")
+    assert _report.probe_sentence({}) == ""

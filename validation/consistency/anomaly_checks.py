@@ -154,5 +154,15 @@ def main():
     part_b()
 
 
+def report_section(run):
+    """The report's section: what this script printed in the report's run, introduced."""
+    return run.printed(
+        "Two results explained",
+        "The 6208's dissipation at 1 rad/s (the engines' least rolling speed, since fixed) and the 7208's "
+        "orbital speed above half the ring speed under outer-race control (a real result, against the closed "
+        "form).",
+        last_lines=40)
+
+
 if __name__ == "__main__":
     main()

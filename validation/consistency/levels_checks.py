@@ -287,5 +287,18 @@ def main(argv=None):
     print("written:", out)
 
 
+def report_section(run):
+    """The report's section: what this script printed in the report's run, introduced."""
+    return run.printed(
+        "Bearing levels in Exudyn",
+        "The ball element, the quasi-static level and the linear level in Exudyn (docs/theory/levels.md): "
+        "static equilibrium against solve_quasistatic, the ball-pass varying compliance, the rotor scenario "
+        "at the three levels.",
+        [("levels/levels_vc.png", "varying-compliance vibration of the quasi-static level: spectrum with the "
+                                  "ball-pass frequency and its harmonics."),
+         ("levels/levels_rotor.png", "the rotor scenario at the three levels.")],
+        last_lines=40)
+
+
 if __name__ == "__main__":
     main()

@@ -141,5 +141,19 @@ def main(argv=None):
     print(f"\nwrote {png} and {png.with_suffix('.csv')}")
 
 
+def report_section(run):
+    """The report's section: what this script printed in the report's run, introduced."""
+    return run.printed(
+        "Rolling resistance and ball drag in the dynamic engines",
+        "The switches `rolling_resistance` (hysteresis + EHL rolling force as a moment pair at every loaded "
+        "ball / raceway contact) and `ball_drag` (drag of each ball in the oil-air mixture, oil volume "
+        "fraction 0.05) of both dynamic engines against the quasi-static loss report of the same case "
+        "(docs/theory/losses.md, \"In the dynamic engines\"), and their cost (switches off against on, run "
+        "in turn, medians).",
+        [("losses_dynamic.png", "EHL rolling, hysteresis and drag power of both engines against the "
+                                "quasi-static report, per case.")],
+        last_lines=30)
+
+
 if __name__ == "__main__":
     main()

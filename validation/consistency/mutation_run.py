@@ -220,5 +220,22 @@ def main(argv=None):
     return 1 if args.strict and len(caught) < len(applied) else 0
 
 
+def report_section(run):
+    """The report's mutation-run section, from mutation_run.json (none without it)."""
+    if not (run.out / "mutation_run.json").exists():
+        return ""
+    d = run.load("mutation_run.json")
+    lines = ["## Mutation run", "",
+             f"Command: `python validation/consistency/mutation_run.py{' --quick' if d['set'] == 'quick' else ''}`: planted errors "
+             "of 2 % (and sign errors) in the relations of exudyn_bearing/physics/ and the contact kernel, each in "
+             "a temporary copy of the repository with a fresh numba cache, against the test files that check the "
+             f"relation. Score: **{d['caught']} of {d['applied']}** applied mutants caught"
+             + (f" ({d['total'] - d['applied']} not applied: their source snippet moved)" if d['total'] > d['applied']
+                else "") + ".", "", "| mutant | planted error | file | result |", "|---|---|---|---|"]
+    lines += [f"| {r['mutant']} | {r['error']} | {r['file'].replace('exudyn_bearing/', '')} | {r['result']} |"
+              for r in d["rows"]]
+    return "\n".join(lines + [""])
+
+
 if __name__ == "__main__":
     sys.exit(main())

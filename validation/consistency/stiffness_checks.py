@@ -333,5 +333,98 @@ def main():
           f"wall {out['wall_s']:.0f} s; written {OUT / 'stiffness_checks.json'}")
 
 
+def report_section(run):
+    """The report's section on the linearised stiffness and damping, from stiffness_checks.json and its
+    figures (bench_stiffness.py's part, the speed table, follows it)."""
+    d = run.load("stiffness_checks.json")
+    lines = ["## Linearised bearing stiffness and damping (quasi-static solver)", "",
+             f"Command: `{run.command}` (figures below, each with its CSV in "
+             "validation/out). Matrices: `solve_quasistatic(...).stiffness` "
+             "(central differences) and `.damping` (the contact model's normal damping condensed over each ball's "
+             "two contacts in series); theory: docs/theory/vibration.md, sec. 8.", "",
+             f"**Stiffness against the DEM** (6208, F_r = 3000 N; reference engine, dt = {d['increments']['dt'] * 1e6:g} "
+             f"us; static increments F_r -+ {d['increments']['dFr']:g} N and F_a as given; ring position averaged "
+             "over whole ball-pass periods after settling). Quasi-static value: the compliance of the translational "
+             "block (the DEM ring cannot tilt) averaged over Z ball-set positions, rigid rings. The target is agreement within "
+             f"{100 * d['tolerance']:.0f} %.", "",
+             "| case | friction | dF_a [N] | k_xx DEM [N/m] | k_xx QS [N/m] | diff | k_zz DEM [N/m] | k_zz QS [N/m] | diff "
+             "| k_zz QS secant [N/m] | within | DEM wall [s] |", "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    for r in d["stiffness"]:
+        dm, q, e = r["dem"], r["quasistatic"], r["relative_difference"]
+        lines.append(f"| {r['case']} | {r['friction']} | {r['dFa']:g} | {dm['k_xx']:.5g} | {q['k_xx']:.5g} | "
+                     f"{100 * e['k_xx']:+.2f} % | {dm['k_zz']:.5g} | {q['k_zz']:.5g} | {100 * e['k_zz']:+.2f} % | "
+                     f"{q['k_zz_secant']:.5g} | {'yes' if r['within_tolerance'] else '**no**'} | {dm['wall_s']:.1f} |")
+    fast = [r for r in d["stiffness"] if r["omega"] == 3000.0]
+    lines += ["", "The matrix holds the ball kinematics (and so the gyroscopic traction) at the operating point; the "
+              "secant column re-solves them at F_a. At 100 and 500 rad/s DEM and matrix agree within "
+              + f"{100 * max(max(abs(v) for v in r['relative_difference'].values()) for r in d['stiffness'] if r['omega'] < 3000):.2f} %. "
+              "At 3000 rad/s the radial stiffness agrees; the DEM's axial stiffness depends on its friction: "
+              + "; ".join(f"friction {r['friction']}, dF_a {r['dFa']:g} N: {r['dem']['k_zz']:.4g} N/m" for r in fast)
+              + f" against the matrix's {fast[0]['quasistatic']['k_zz']:.4g} N/m. Without friction the DEM reproduces "
+              "the matrix; with it, its axial stiffness depends on the increment, so its tangential contact forces "
+              "(Cundall-Strack springs, Coulomb friction) take part in the axial balance at this speed, which the "
+              "matrix (normal contact forces and the gyroscopic traction, kinematics held) does not model. The "
+              "mechanism inside the DEM was not isolated.", "",
+              "**Damping against the DEM** (free decay: the ring kicked with 0.02 m/s, minus the same run without "
+              "kick; logarithmic decrement of 15 peaks; dt = 1 us; prediction zeta = C_ii / (2 sqrt(K_ii m)), "
+              "omega_n = sqrt(K_ii / m), m the DEM's ring mass, phase 0):", "",
+              "| omega [rad/s] | axis | friction | zeta DEM | zeta matrix | ratio | omega_n DEM [1/s] | omega_n matrix "
+              "[1/s] | ratio |", "|---|---|---|---|---|---|---|---|---|"]
+    for r in d["damping"]:
+        lines.append(f"| {r['omega']:g} | {r['axis']} | {r['friction']} | {r['dem']['zeta']:.5f} | "
+                     f"{r['quasistatic']['zeta']:.5f} | {r['zeta_ratio']:.3f} | {r['dem']['omega_n']:.0f} | "
+                     f"{r['quasistatic']['omega_n']:.0f} | {r['omega_ratio']:.3f} |")
+    none = [r for r in d["damping"] if r["friction"] == "none"]
+    lines += ["", "The matrix holds the contacts' normal damping only. With friction off the DEM's damping ratio is "
+              f"within {100 * max(abs(r['zeta_ratio'] - 1) for r in none):.1f} % of it; with the DEM's friction "
+              "the ratio grows with speed (friction damps the ring through the balls' tangential forces). The "
+              "DEM's frequencies are lower because the condensation neglects the balls' inertia (friction off: "
+              f"{100 * (1 - min(r['omega_ratio'] for r in none)):.1f} % at most) and, with friction, the balls' "
+              "rolling inertia that the tangential forces couple to the ring.", ""]
+    lines += run.figure("stiffness_dem_check.png", "Relative difference of the DEM's radial (left) and axial (right) "
+                        "stiffness from the quasi-static matrix for each case and increment, with the 5 % target band.")
+    lines += run.figure("stiffness_decay_500.png", "Free decay of the kicked inner ring at 500 rad/s in the DEM (kicked "
+                        "minus unkicked run) against the envelope of the matrix's damping ratio.")
+    t = d["three_dof"]
+    op = t["operating_point"]
+    r_ring = t["ring"].get("radius", 0.011)
+    scale = np.array([1.0, 1.0, 1.0, r_ring, r_ring])
+    names = ("x", "y", "axial", "tilt_x", "tilt_y")
+
+    def dominant(m):
+        a = np.array(m["shape_abs"]) * scale    # tilts times the ring radius: lengths like the translations
+        order = np.argsort(a)[::-1]
+        return " + ".join(names[i] for i in order if a[i] > 0.3 * a[order[0]])
+
+    def zeta(z):
+        return f"{z:.3g}" if abs(z) > 1e-9 else "0"
+    inner = t["three_dof_modes"][t["three_dof_inner_mode"]]
+    lines += [f"**3-DOF model against the linearised full model** (6004, F_r = {op['Fr']:g} N, "
+              f"{op['omega'] * 30 / np.pi:.0f} rpm, P_d = {op['Pd'] * 1e6:g} um, rigid rings): most loaded ball "
+              f"Q = {t['q_max']['quasistatic']:.2f} N (3-DOF {t['q_max']['three_dof']:.2f} N); Hertz tangent "
+              f"stiffness inner / outer {t['k_hertz']['quasistatic_inner']:.4g} / {t['k_hertz']['quasistatic_outer']:.4g} "
+              f"N/m (3-DOF {t['k_hertz']['three_dof_inner']:.4g} / {t['k_hertz']['three_dof_outer']:.4g}); contact "
+              f"damping {t['c_contact']['quasistatic_inner']:.4g} / {t['c_contact']['quasistatic_outer']:.4g} N s/m "
+              f"(3-DOF contact-model reading {t['c_contact']['three_dof_inner']:.4g} / "
+              f"{t['c_contact']['three_dof_outer']:.4g}; Lambda {t['c_contact']['lambda_quasistatic_inner']:.3f}). "
+              f"One ball, inner and outer Hertz in series: {t['k_ball']['quasistatic_hertz']:.4g} N/m; the 3-DOF "
+              f"link with the film in series {t['k_ball']['three_dof_series_film']:.4g} N/m. The bearing: K_xx = "
+              f"{t['k_xx']:.4g} N/m (sum over the balls of the series stiffness times cos^2 psi: "
+              f"{t['k_xx_sum_over_balls']:.4g}), K_yy = {t['k_yy']:.4g} N/m, C_xx = {t['c_xx']:.4g}, C_yy = "
+              f"{t['c_yy']:.4g} N s/m: the 3-DOF model's one-ball line holds 1/{t['effective_balls']:.3f} of the "
+              "bearing's radial stiffness.", "",
+              f"Rigid inner ring of the 3-DOF model's mass ({t['ring']['mass'] * 1e3:.2f} g, diametral inertia "
+              f"{t['ring']['inertia_diametral']:.3g} kg m^2) on the 5x5 matrices, outer ring fixed: "
+              + ", ".join(f"{m['f_n_hz']:.0f} Hz ({dominant(m)}, zeta {zeta(m['zeta'])})" for m in t["full_modes"][::2])
+              + f". The 3-DOF model's inner-ring mode: {inner['f_n_hz']:.0f} Hz (zeta {inner['zeta']:.3g}), carried "
+              f"by its ring-bending spring to ground k3 and one ball link (sqrt((k3 + k_link)/M3) = "
+              f"{t['ring_on_one_ball_hz']:.0f} Hz), where the rigid ring on the bearing's K_xx alone gives "
+              f"{t['ring_on_bearing_x_hz']:.0f} Hz; all 3-DOF modes: "
+              + ", ".join(f"{m['f_n_hz']:.0f} Hz" for m in t["three_dof_modes"][::2])
+              + ". The full model adds the bearing's y, axial and tilt modes, which the 3-DOF line cannot have; its "
+              "axial and tilt modes are undamped here (radial contact normals carry no damping across them).", ""]
+    return "\n".join(lines)
+
+
 if __name__ == "__main__":
     main()

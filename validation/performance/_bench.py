@@ -1,4 +1,4 @@
-"""Timing helper shared by the benchmark scripts of this folder."""
+"""Timing helpers shared by the benchmark scripts of this folder, and their report table."""
 from __future__ import annotations
 
 import time
@@ -35,3 +35,16 @@ def interleaved_ab(run_one, rounds):
     ratio = float(np.median(np.array(walls["new"]) / np.array(walls["baseline"])))
     control = float(np.median(np.array(walls["control"]) / np.array(walls["new"])))
     return walls, med, ratio, control, last
+
+
+def speed_table(run, name):
+    """The report's lines on a benchmark's median wall times against its targets: each ``<case>_s`` of the JSON
+    ``name`` under ``run.out`` with ``targets_s[<case>_s]`` [s], under the command of ``run``
+    (validation/_report.py's Run)."""
+    d = run.load(name)
+    lines = [f"Speed (`{run.command}`, medians, one run):", "", "| case | wall [ms] | target [ms] |", "|---|---|---|"]
+    for k, v in d.items():
+        if k.endswith("_s") and isinstance(v, float):
+            t = d["targets_s"].get(k)
+            lines.append(f"| {k[:-2]} | {1e3 * v:.1f} | {'' if t is None else f'{1e3 * t:.0f}'} |")
+    return lines

@@ -175,5 +175,119 @@ def main(argv=None):
         fast_step_share=FAST_STEP_SHARE, t_end=T, k_builtin=k), indent=2))
 
 
+def report_section(run):
+    """The report's section on the Exudyn element against the reference engine and Exudyn's built-in
+    bearing, from bench_element.json, with fast_mode_checks.json and bench_overhead.json (those two scripts
+    have no section of their own) and fast_mode_limits.json's bare ring."""
+    from _report import pct
+
+    d = run.load("bench_element.json")
+    c = run.load("fast_mode_checks.json")
+    rows = d["rows"]
+    lim = run.load("fast_mode_limits.json")
+    bare = lim["masses"][0]
+    ov = run.load("bench_overhead.json")
+    rotor = c["rotor_sub_steps"]
+    whirl = c["rotor_scenario_whirl"]
+
+    def light_txt(label, r):
+        if "error" in r:
+            return f"{label}: {r['error'].split(';')[0]}"
+        return (f"{label} ({r.get('exudyn_step_us', 5):g} us) {100 * r['dev_cage_speed']:+.3f} / "
+                f"{100 * r['dev_centre']:+.2f} %")
+
+    def light_worst(rows, lo, hi, key="dev_centre", digits=2):
+        """Largest |deviation| of the fast-mode rows whose Exudyn step lies in (lo, hi] us."""
+        devs = [abs(v[key]) for k, v in rows.items()
+                if k.startswith("fast") and "error" not in v and lo < v["exudyn_step_us"] <= hi]
+        return pct(max(devs), digits) if devs else "n/a"
+
+    def spread(runs):
+        m = [v["mean_10_20ms"] for v in runs.values()]
+        return max(m) / min(m) - 1
+    lines = ["## Exudyn element against the reference core and Exudyn's built-in bearing", "",
+             f"Command: `{run.command}` (T = {d['t_end']} s, median of 3; the built-in "
+             "bearing 0.02 s). Same scene, dt = 5 us, explicit spring; wall times are the solves alone. Errors of "
+             "our engines against the reference core at 1.25 us; of the built-in bearing, of its cage speed "
+             "against its own run at 5e-6 s.", "",
+             "| engine | wall s per simulated s | err q_max_inner | err cage_speed |", "|---|---|---|---|"]
+    for name, r in rows.items():
+        lines.append(f"| {name} | {r['wall_per_sim_s']:.3g} | {pct(r.get('err_q_max_inner'))} | "
+                     f"{pct(r.get('err_cage_speed'))} |")
+    b = rows.get("built-in CreateBallBearing", {})
+    lines += ["",
+              f"- Body mode / built-in bearing: **{d['ratio_body_builtin']:.3f}** (target <= 0.5). The built-in "
+              f"bearing (GeneralizedAlpha, best step {b.get('h', float('nan')):g} s, same Hertz stiffness "
+              f"k = {d['k_builtin']:.3g} N/m^1.5, exponent 1.5) runs only with the load ramped in over 5 ms; with "
+              "the load applied at once its solver stops at the minimum step size.",
+              f"- Fast mode ({d['fast_sub_steps']} x 5 us sub-step{'s' if d['fast_sub_steps'] > 1 else ''}) / "
+              f"reference core: **{d['ratio_fast_reference']:.2f}** (target <= 2); with a ring of "
+              f"{d['heavy_ring']:g} kg (half of a 2.5 kg rotor; {d['heavy_sub_steps']} x 5 us sub-steps): "
+              f"**{d['ratio_fast_reference_heavy']:.2f}**. Besides the compiled sub-steps, each Exudyn step "
+              "pays Exudyn's Python user-function call, the conversion of its coordinate lists and numba's "
+              "argument dispatch (a few us). The sub-steps of one Exudyn step are centred on its time and the "
+              "ring gets their mean reaction, so ring and balls exchange equal impulses "
+              "(tests/test_element.py). The number of sub-steps is limited by that staggered coupling "
+              f"(`fastStepLimit`, {d['fast_step_share']:g} of the ring's stable-step estimate; next section): "
+              f"on the {bare['ring_mass'] * 1e3:.0f} g ring of this scene (estimate "
+              f"{bare['ring_stable_step'] * 1e6:.1f} us) one sub-step of 5 us.",
+              "- Rotor on two 6208 bearings (2.5 kg, motor torque 5 N m from rest, same script), mean cage speed "
+              "of bearing A over 10-20 ms [rad/s]: "
+              + "; ".join(f"{load} N: " + ", ".join(f"{k} {v['mean_10_20ms']:.2f}" for k, v in r.items())
+                          for load, r in rotor.items())
+              + ". Loaded (600 and 3000 N), every mode and step lies within "
+              f"{pct(max(spread(r) for k, r in rotor.items() if k != '24.5'), 1)} of each other. At 24.5 N the "
+              "rotor rattles near the centre and the run-up is chaotic: the body mode alone spreads "
+              f"{pct(spread({k: v for k, v in rotor['24.5'].items() if k.startswith('bodies')}), 0)} over its "
+              "step sizes, and the fast-mode runs fall in the same band. With one sub-step the fast mode costs "
+              f"{d['ratio_fast1_body']:.2f} of the body mode (bench_element.py).",
+              "- Lightly loaded rotor (2.5 kg on two 6208, 500 rad/s, radial load at its centre, analytic start, "
+              "same script), deviation of bearing A's cage speed / orbit-centre distance from the body mode at 5 us "
+              "over 10-20 ms, by Exudyn step of the ring (sub-steps x sub-step): "
+              + "; ".join(f"{load}: " + ", ".join(light_txt(k, v) for k, v in rows.items() if k != "bodies 5 us")
+                          for load, rows in (("50 N", c["light_load_sub_steps"]), ("5 N", c.get("light_load_5N", {}))))
+              + ". The body mode's own step error (2.5 against 5 us) is the yardstick. The deviation grows with the "
+              "ring's Exudyn step (the rotor, integrated by Exudyn, feels the balls' mean reaction once per "
+              "Exudyn step; the sub-steps only integrate the balls): largest orbit-centre deviation with Exudyn steps up to 20 us "
+              + ", ".join(f"{load} {light_worst(rows, 0, 20)}" for load, rows in
+                          (("50 N", c["light_load_sub_steps"]), ("5 N", c.get("light_load_5N", {}))))
+              + "; with 40 us " + ", ".join(f"{load} {light_worst(rows, 20, 40)}" for load, rows in
+                                            (("50 N", c["light_load_sub_steps"]), ("5 N", c.get("light_load_5N", {}))))
+              + " (against the yardstick's " + ", ".join(
+                  f"{load} {pct(abs(rows.get('bodies 2.5 us', {}).get('dev_centre', float('nan'))), 2)}"
+                  for load, rows in (("50 N", c["light_load_sub_steps"]), ("5 N", c.get("light_load_5N", {}))))
+              + "); cage speed, largest deviation over all of them: " + ", ".join(
+                  f"{load} {light_worst(rows, 0, 1e9, 'dev_cage_speed', 3)}" for load, rows in
+                  (("50 N", c["light_load_sub_steps"]), ("5 N", c.get("light_load_5N", {})))) + ".",
+              "- The run-up of scenarios/rotor_two_6208.py (no load but gravity and unbalance) has two outcomes, "
+              "a shaft rattling near the centre or a whirl (the 6208 has no clearance: the orbit is the contacts' "
+              "compliance) from about 25 ms on; which one "
+              "occurs is decided by round-off-level differences, not by the mode (same script, mean over 40-50 "
+              "ms, orbit radius / largest outer ball load): " + "; ".join(
+                  f"{k} {v['orbit_radius_um']:.1f} um / {v['q_max_outer_N']:.0f} N" for k, v in whirl.items()) + ".",
+              "- Explicit solvers (same script, 6208 test scene, 10 ms at 2 us, errors of q_max_inner / cage speed "
+              "against the reference core with the same friction model): " + "; ".join(
+                  f"{k}: " + (v["error"].split(";")[0] if "error" in v else
+                              f"{pct(v['q_max_inner'], 4)} / {pct(v['cage_speed'], 4)}")
+                  for k, v in c["solvers_6208"].items())
+              + ". VelocityVerlet (history friction) and RK44 (regularized friction) are the supported explicit "
+              "solvers in both modes; ExplicitEuler is refused before the first step (not symplectic: unusable for stiff "
+              "contact).",
+              "- Where an Exudyn step goes (`python validation/performance/bench_overhead.py`, medians, us per Exudyn step): "
+              + "; ".join(f"{k} {v * 1e6:.2f}" for k, v in ov.items() if k.endswith(("alone", "element")))
+              + ". Converting Exudyn's coordinate lists to arrays: "
+              f"{ov['list to array, body-mode coordinates'] * 1e6:.2f} us for the body mode's {ov['coordinates']} coordinates (twice per evaluation); one sample of the "
+              f"element's state (compiled): {ov['one sample'] * 1e6:.2f} us.",
+              "- GeneralizedAlpha (h = 10 us, regularized friction) works with the element (numerical Jacobian of "
+              "the whole bearing object, modified Newton): "
+              f"{rows.get('element body mode, GeneralizedAlpha 10 us', {}).get('wall_per_sim_s', float('nan')):.0f} "
+              "s per simulated second, "
+              f"{rows.get('element body mode, GeneralizedAlpha 10 us', {}).get('evaluations', 0)} force evaluations "
+              "for 200 steps: usable for short checks, not recommended.",
+              "- The body mode cannot use `computeMassMatrixInversePerBody` (not implemented for ObjectGenericODE2 "
+              "in Exudyn 1.13.6); `BallBearingElement.SimulationSettings` sets the sparse linear solver.", ""]
+    return "\n".join(lines)
+
+
 if __name__ == "__main__":
     main()

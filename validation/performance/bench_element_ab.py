@@ -92,5 +92,29 @@ def main(argv=None):
     print(f"written {out / 'bench_element_ab.json'}")
 
 
+def report_section(run):
+    """The report's section on each run of this script (``run.tag``: which): what it printed, introduced."""
+    if run.tag == "session":
+        return run.printed(
+            "Element step against the start of this work",
+            "The element's body and fast modes against 58652e8: before one compiled call on one structure of the "
+            "element's arrays, views of Exudyn's coordinate vectors instead of copies, the element's kernels "
+            "without numba's memory runtime and the scene's contact-kernel paths only; interleaved rounds, "
+            "medians; sampled arrays compared bit for bit.",
+            last_lines=20)
+    if run.tag == "session_fast":
+        return run.printed(
+            "Element fast mode against the start of this work",
+            "As above, the fast mode (one sub-step per Exudyn step).",
+            last_lines=20)
+    return run.printed(
+        "Element body mode against the one-object layout",
+        "The body mode of this code against b8c12a7 (one ObjectGenericODE2 holding all balls), both in one "
+        "process, interleaved rounds, medians; new/new is the noise floor; the sampled arrays compared bit "
+        "for bit (equal on the branch that changed the layout; not since the contact kernel's divisions were "
+        "reordered, whose summary differences bench_kernel_ab.py shows within the round-off floor).",
+        last_lines=15)
+
+
 if __name__ == "__main__":
     main()

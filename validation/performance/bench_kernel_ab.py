@@ -181,5 +181,33 @@ def main(argv=None):
     print(f"written {out / 'bench_kernel_ab.json'}")
 
 
+def report_section(run):
+    """The report's section on each run of this script (``run.tag``: which): what it printed, introduced."""
+    if run.tag == "session":
+        return run.printed(
+            "Step time against the start of this work",
+            "As above, against 58652e8: before the HD film's logarithms and exponential came from per-contact "
+            "anchors (series near the anchor, equal to the library functions to round-off: "
+            "tests/test_kernel_cache.py) and before the ball / raceway geometry was computed for all contacts "
+            "first.",
+            last_lines=20)
+    if run.tag == "cold":
+        return run.printed(
+            "Cold start against the start of this work",
+            "The README's first run on an empty numba cache (a fresh process with a new NUMBA_CACHE_DIR: import, "
+            "then a 2 ms run of the 6208 scene, which compiles the kernels it uses), this code against 58652e8 "
+            "(before numba's inlining copied a callee's scope once per block, before one specialisation per "
+            "argument type and kernels without the wrappers nothing calls), the two alternately; medians of the "
+            "wall and CPU seconds. Per compiled function: `python validation/performance/profile_reference.py --compile`.",
+            last_lines=8)
+    return run.printed(
+        "Step time against the code before the kernel work",
+        "The reference engine's step on the two headline settings of bench_reference.py, this code against "
+        "e61f1e5 (before the semi-axes from the overlap, ln(xi E') once per evaluation, the divisions off the "
+        "dependency chains and the cached film ellipticity factor), both in one "
+        "process, interleaved rounds, medians; the new/new control is the noise floor.",
+        last_lines=20)
+
+
 if __name__ == "__main__":
     main()

@@ -19,7 +19,7 @@ from exudyn_bearing.data import traction_models
 from exudyn_bearing.physics.contact_slip import _contact_traction
 from exudyn_bearing.solvers.quasistatic import solve_quasistatic
 
-from _bench import median_wall  # validation/performance/_bench.py (the script's folder is on sys.path)
+from _bench import median_wall, speed_table  # validation/performance/_bench.py (the script's folder is on sys.path)
 
 OUT = Path(__file__).resolve().parents[1] / "out"
 W = 25000 * math.pi / 30
@@ -79,6 +79,19 @@ def main():
     out["kernel_ns_per_call"] = kernel_cost()
     (OUT / "bench_quasistatic.json").write_text(json.dumps(out, indent=2))
     print(f"wrote {OUT / 'bench_quasistatic.json'}")
+
+
+def report_section(run):
+    """The speed tables that end the report's quasi-static ACBB-120 section, from bench_quasistatic.json."""
+    lines = speed_table(run, "bench_quasistatic.json")
+    bq = run.load("bench_quasistatic.json")
+    lines += ["", "Compiled contact-slip integration (`physics.contact_slip._contact_traction`, one call, "
+              "timed in a compiled loop):", "", "| traction model | strips x points across | ns per call |",
+              "|---|---|---|"]
+    for k, v in bq["kernel_ns_per_call"].items():
+        name, grid = k.split("|")
+        lines.append(f"| {name} | {grid} | {v:.0f} |")
+    return "\n".join(lines + [""])
 
 
 if __name__ == "__main__":

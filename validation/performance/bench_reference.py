@@ -155,5 +155,64 @@ def main(argv=None):
     print(f"written {out / 'bench_reference.json'}")
 
 
+def report_section(run):
+    """The report's section on the reference engine's speed against error, from bench_reference.json."""
+    from _report import pct
+
+    d = run.load("bench_reference.json")
+    lines = ["## Reference core: speed against error", "",
+             f"Command: `{run.command}` (engine: reference core; T = "
+             f"{d['t_end']} s per run, median of {d['repeat']}). Scene: 6208, F_r = 3000 N, 500 rad/s, cage, "
+             "lubrication and Cundall-Strack history on, analytic start. Errors: the summary over the last "
+             "quarter against the same setting at a quarter of the step.", "",
+             "| setting | wall s per simulated s | steps/s | err q_max_inner | err q_max_outer | err cage_speed | "
+             "mean frictional power [W] |", "|---|---|---|---|---|---|---|"]
+    for name, r in d["settings"].items():
+        lines.append(f"| {name} | {r['wall_per_sim_s']:.3f} | {r['steps_per_s']:.3g} | {pct(r['err_q_max_inner'])} | "
+                     f"{pct(r['err_q_max_outer'])} | {pct(r['err_cage_speed'])} | "
+                     f"{r['summary']['friction_power']:.2g} |")
+    est, meas = d["stable_step_estimate"], d["stable_step_measured"]
+    ok = [f"{n} ({r['wall_per_sim_s']:.2f} s)" for n, r in d["settings"].items()
+          if r["wall_per_sim_s"] <= 0.5 and max(r["err_q_max_inner"], r["err_q_max_outer"], r["err_cage_speed"]) <= 5e-3
+          and r["summary"]["friction_power"] < 1.0]
+    lines += ["", "- Requirement (at most 0.5 s per simulated second, errors of q_max and cage_speed <= 0.5 %, "
+              "tangential springs resolved): met in this run by " + ("; ".join(ok) if ok else "no setting") + "."]
+    lim = d["stable_step_limits"]
+
+    def limits_text(t):
+        names = {"normal": "normal Hertz mode of a ball between its races",
+                 "tangential": "rocking mode of the Cundall-Strack springs", "friction": "regularised friction",
+                 "cage": f"critically damped ball / cage-ball contacts at {lim[t]['cage_load']:.2f} N "
+                         f"({lim[t]['cage_basis']})"}
+        return ", ".join(f"{names[k]} {lim[t][k] * 1e6:.2f} us" for k in names
+                         if lim[t][k] is not None and math.isfinite(lim[t][k]))  # inf is null in the JSON
+
+    imp = lim["implicit"]
+    lines += [
+              f"- Stable step: estimate {est['explicit'] * 1e6:.2f} us (explicit spring, limited by "
+              f"{lim['explicit']['limited_by']}) and {est['implicit'] * 1e6:.2f} us (implicit, limited by "
+              f"{imp['limited_by']}): `stable_step`, the safety factor times the smallest of its limits (explicit "
+              f"spring: {limits_text('explicit')}; implicit: {limits_text('implicit')}). The largest step that did "
+              f"not blow up (bisection on 10 ms runs) was {meas['explicit'] * 1e6:.2f} and "
+              f"{meas['implicit'] * 1e6:.2f} us. The explicit Cundall-Strack spring does not blow up above its "
+              "rocking-mode limit because its force is capped at mu F_n, but it chatters at the cap (the large "
+              "frictional power of the explicit 8 us row, against about 1e-4 W when resolved); the implicit spring "
+              "(K_t / (1 + K_t dt^2 / m_t)) removes that limit. Beyond the normal mode the cage contacts come next, "
+              f"at {imp['cage'] / imp['normal']:.2f} times its limit in this steady scene (their loads are small "
+              "here; in start-up and slow-down they limit first: next section): a step twice as large needs both "
+              "integrated implicitly.",
+              "- Cost: one kernel call per force evaluation, the contact laws being scalar physics functions "
+              "compiled into the force loop (no calls that pass arrays inside it), the exact Hertz level "
+              "tabulated (relative error "
+              "<= 1e-7) and re-evaluated per contact only when R_y/R_x moves by more than 1e-6.",
+              "- RK4 (history-free friction only) costs four evaluations per step; it is the most accurate per "
+              "step, not the fast choice.",
+              f"- Numba cache: a second process starts and runs 1 ms in {d['second_start_s']:.2f} s.",
+              f"- Memory does not grow with the number of steps: peak traced memory for 50 samples "
+              f"{d['memory_bytes']['T=0.05'] / 1e6:.2f} MB for T = 0.05 s and "
+              f"{d['memory_bytes']['T=0.2'] / 1e6:.2f} MB for T = 0.2 s.", ""]
+    return "\n".join(lines)
+
+
 if __name__ == "__main__":
     main()

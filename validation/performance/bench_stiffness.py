@@ -17,7 +17,7 @@ import numpy as np
 
 from exudyn_bearing.solvers.quasistatic import bearing_coefficients, solve_quasistatic
 
-from _bench import median_wall  # validation/performance/_bench.py (the script's folder is on sys.path)
+from _bench import median_wall, speed_table  # validation/performance/_bench.py (the script's folder is on sys.path)
 
 OUT = Path(__file__).resolve().parents[1] / "out"
 TARGETS = {"matrix_6208_s": 0.2, "matrix_7208_s": 0.2, "table20_6208_s": 5.0, "table20_6208_3phases_s": 5.0,
@@ -51,6 +51,11 @@ def main():
     out["all_within_targets"] = all(out[k] < t for k, t in TARGETS.items())
     (OUT / "bench_stiffness.json").write_text(json.dumps(out, indent=1))
     print(f"all within targets: {out['all_within_targets']}; written {OUT / 'bench_stiffness.json'}")
+
+
+def report_section(run):
+    """The speed table that ends the report's stiffness section, from bench_stiffness.json."""
+    return "\n".join(speed_table(run, "bench_stiffness.json") + [""])
 
 
 if __name__ == "__main__":

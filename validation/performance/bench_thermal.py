@@ -65,5 +65,13 @@ def main(argv=None):
     return res
 
 
+def report_section(run):
+    """The report's section: what this script printed in the report's run, introduced."""
+    return run.printed(
+        "Speed of the thermal solution",
+        "One thermal quasi-static solution and a warm-started 20-speed sweep (medians).",
+        last_lines=5)
+
+
 if __name__ == "__main__":
     main()

@@ -387,5 +387,16 @@ def main(argv=None):
             profile(name, kw, args.reps, args.repeat, args.settle)
 
 
+def report_section(run):
+    """The report's section: what this script printed in the report's run, introduced."""
+    return run.printed(
+        "Where the reference engine's step time goes",
+        "The bench_reference scene (6208, 3000 N, 500 rad/s, cage, lubrication, tangential history) in steady "
+        "running: the compiled contact kernel timed with stages switched off through the parameter vector on "
+        "a frozen state (CPU time per step, interleaved rounds, medians). The cold start is measured by "
+        "`python validation/performance/profile_reference.py --compile` (a fresh process, empty numba cache).",
+        last_lines=40)
+
+
 if __name__ == "__main__":
     main()

@@ -189,5 +189,16 @@ def main(argv=None):
     return status
 
 
+def report_section(run):
+    """The report's section: what this script printed in the report's run, introduced."""
+    return run.printed(
+        "Start-up of a fresh process",
+        "Wall and CPU time of fresh processes with warm caches (medians): `import exudyn_bearing` (lazy: "
+        "nothing loads until a public name is used), the imports `simulate` and `solve_quasistatic` need, "
+        "`python -m exudyn_bearing --help` and `info 6208`. The suite's per-test profile, cold and warm numba "
+        "cache: `python validation/performance/profile_suite.py` (not part of this run: it runs the whole suite twice).",
+        last_lines=12)
+
+
 if __name__ == "__main__":
     sys.exit(main())

@@ -297,5 +297,17 @@ def main(argv=None):
     return res
 
 
+def report_section(run):
+    """The report's section: what this script printed in the report's run, introduced."""
+    return run.printed(
+        "Varying compliance against the published theory",
+        "The quasi-static level's ball-pass motion against the rigid-ring Hertz theory of Sunnersjo (1978) "
+        "in closed form (docs/theory/varying_compliance.md): the two boundary positions, the orbit over a "
+        "ball passage, the first harmonic against speed, and a short ball-element run.",
+        [("levels/levels_published_vc.png", "ring-centre motion over a ball passage and its first harmonic "
+                                            "against speed, quasi-static level against the closed form.")],
+        last_lines=30)
+
+
 if __name__ == "__main__":
     main()

@@ -286,5 +286,18 @@ def main():
     print(f"wrote {csv_path} and {png}")
 
 
+def report_section(run):
+    """The report's section: what this script printed in the report's run, introduced."""
+    return run.printed(
+        "Power loss against SKF's and Palmgren's models",
+        "The quasi-static solver's loss components (traction, EHL rolling, hysteresis, drag; "
+        "docs/theory/losses.md) for the 6208 (radial) and the 7208 (thrust) against SKF's catalogue friction "
+        "model and Palmgren's M0 + M1 (per term: rolling, sliding, drag and churning, cage), the DEM papers' oil "
+        "at its one temperature, for balls in air and in an oil bath; the dynamic energy check by component.",
+        [("losses_6208_7208.png", "friction torque of the project's components, SKF's model and Palmgren's "
+                                  "band over speed and load.")],
+        last_lines=30)
+
+
 if __name__ == "__main__":
     main()

@@ -114,11 +114,12 @@ def main():
     res["plot_rigid_vs_growing"] = str(plot_loads_angles(
         {"rigid rings": sols[(tr0, "rigid_race_control")], "growing rings": sols[(tr0, "race_control")]},
         OUT / "qs_acbb120_rigid_vs_growing.png"))
-    # a combined radial + moment case: loads and contact angles against azimuth
+    # a combined radial + moment case: loads and contact angles against azimuth (the tilt free: a moment load
+    # needs it, solve_quasistatic holds it by default)
     comb = {}
     for label, kw in (("thrust only", dict()), ("Fr 3 kN + My 150 N m", dict(Fr=3000.0, My=150.0))):
         comb[label] = solve_quasistatic("ACBB-120", kw.get("Fr", 0.0), FA, 0.0, kw.get("My", 0.0), omega=W,
-                                        traction=tr0, lubricant=LUB, control="auto")
+                                        traction=tr0, lubricant=LUB, control="auto", fixed={})
     s = comb["Fr 3 kN + My 150 N m"]
     res["combined"] = {"displacement": s.displacement.tolist(), "held": s.held,
                        "q_inner_N": s.balls["q_inner"].tolist(), "q_outer_N": s.balls["q_outer"].tolist(),
@@ -134,6 +135,73 @@ def main():
           f"{sorted(set(res['combined']['control_used']))}")
     (OUT / "quasistatic_acbb120.json").write_text(json.dumps(res, indent=2, default=float))
     print(f"wrote {OUT / 'quasistatic_acbb120.json'}")
+
+
+def report_section(run):
+    """The report's section on the quasi-static ACBB-120, from quasistatic_acbb120.json and its figures
+    (bench_quasistatic.py's part, the solver's speed, follows it)."""
+    from exudyn_bearing.physics.contact_slip import DEFAULT_N_ACROSS, DEFAULT_N_STRIPS
+
+    d = run.load("quasistatic_acbb120.json")
+    lines = ["## Quasi-static solver: the ACBB-120 of Gupta (2020)", "",
+             f"Command: `{run.command}` (solver: `solve_quasistatic`). ACBB-120, "
+             "25,000 rpm, 22,240 N thrust, cageless, M-50, films with the MIL-L-23699 entry at 492 K. Traction: "
+             "`ester_curve_illustrative` (the form of Gupta's traction curve with illustrative parameters, not his "
+             "Fig. 6) and `ehl_mil_l_23699_492K` (this project's EHL parameters). Ball 0 (all balls are equal).", "",
+             "| traction | case | control | alpha_i [deg] | alpha_o [deg] | Q_i [N] | Q_o [N] | omega_m [rad/s] | "
+             "omega_b [rad/s] | beta [deg] | spin/roll i | spin/roll o | P_i [W] | P_o [W] | P total [W] |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    for tr, v in d["tractions"].items():
+        for case in ("rigid_race_control", "race_control", "inner_control", "min_energy", "rigid_min_energy",
+                     "min_energy_492K"):
+            r = v[case]
+            lines.append(f"| {tr} | {case} | {r['control_used']} | {r['alpha_inner_deg']:.2f} | "
+                         f"{r['alpha_outer_deg']:.2f} | {r['q_inner_N']:.0f} | {r['q_outer_N']:.0f} | "
+                         f"{r['orbital_speed_rad_s']:.1f} | {r['ball_speed_rad_s']:.0f} | {r['beta_deg']:.3f} | "
+                         f"{r['spin_roll_inner']:.4f} | {r['spin_roll_outer']:.4f} | {r['dissipation_inner_W']:.0f} | "
+                         f"{r['dissipation_outer_W']:.0f} | {r['dissipation_total_W']:.0f} |")
+    lines.append("")
+    for tr, v in d["tractions"].items():
+        me = v["min_energy"]
+        lines.append(f"- {tr}: minimum energy changes the total dissipation by **{100 * v['min_energy_change']:+.1f} %** "
+                     f"against race control ({v['race_control']['control_used']} race by Jones' criterion; Gupta "
+                     f"reports about -24 % with his traction curve); minimum check: Hessian eigenvalues "
+                     f"{', '.join(f'{x:.3g}' for x in me['minimum_check']['hessian_eigenvalues'])}, neighbours higher "
+                     f"{me['minimum_check']['neighbours_higher']}; pure-rolling points x1/a = "
+                     f"{me['x1_over_a_outer']:.3f} (outer), x2/a = {me['x2_over_a_inner']:.3f} (inner); net rolling-"
+                     f"direction traction on a ball (zero in a cageless steady state) {v['race_control']['traction_drag_N']:.1f} N "
+                     f"under race control, {me['traction_drag_N']:.1f} N under minimum energy; traction coefficient "
+                     f"the outer race must supply for the gyroscopic moment under race control "
+                     f"{v['race_control']['gyro_traction_outer']:.4f}. Plots: "
+                     f"`{Path(v['beta_scan']['plot']).name}`, `{Path(v['plot_slip']).name}`.")
+    cv = d["strip_convergence"]
+    lines.append(f"- Strip integration (default {DEFAULT_N_STRIPS} strips x {DEFAULT_N_ACROSS} points): total dissipation with the curve, race control / "
+                 "minimum energy: " + "; ".join(f"{c['n_strips']}x{c['n_across']}: {c['race_control_W']:.1f} / "
+                                                f"{c['min_energy_W']:.1f} W ({100 * c['change']:+.2f} %)" for c in cv)
+                 + ".")
+    rc, rg = d["tractions"]["ester_curve_illustrative"]["rigid_race_control"], \
+        d["tractions"]["ester_curve_illustrative"]["race_control"]
+    c = d["combined"]
+    lines += [f"- Inner-ring growth at 25,000 rpm: {rg['inner_ring_growth_um']:.1f} um (rotating annular disc); "
+              f"contact angles rigid -> growing rings: inner {rc['alpha_inner_deg']:.2f} -> {rg['alpha_inner_deg']:.2f}"
+              f" deg, outer {rc['alpha_outer_deg']:.2f} -> {rg['alpha_outer_deg']:.2f} deg "
+              "(`qs_acbb120_rigid_vs_growing.png`).",
+              f"- Combined case F_r = 3 kN, M_y = 150 N m with the thrust: tilt_y = {c['displacement'][4] * 1e3:.3f} "
+              f"mrad, inner loads {min(c['q_inner_N']):.0f} to {max(c['q_inner_N']):.0f} N, inner contact angles "
+              f"{min(c['alpha_inner_deg']):.1f} to {max(c['alpha_inner_deg']):.1f} deg (`qs_acbb120_combined.png`).",
+              ""]
+    for tr, v in d["tractions"].items():
+        lines += run.figure(Path(v["beta_scan"]["plot"]).name, f"Dissipation of one ball against the spin-axis angle "
+                            f"beta with traction {tr}: the least dissipation at each fixed beta, the race-control "
+                            "solution and the minimum-energy solution.")
+        lines += run.figure(Path(v["plot_slip"]).name, f"Slip of ball 0 against its race along the major axis of the "
+                            f"outer (left) and inner (right) contact ellipse, race control and minimum energy, traction "
+                            f"{tr}.")
+    lines += run.figure("qs_acbb120_rigid_vs_growing.png", "Contact loads (left) and contact angles (right) of all balls "
+                        "against azimuth with rigid and with growing rings.")
+    lines += run.figure("qs_acbb120_combined.png", "Contact loads (left) and contact angles (right) against azimuth under "
+                        "the thrust alone and with F_r = 3 kN and M_y = 150 N m added.")
+    return "\n".join(lines)
 
 
 if __name__ == "__main__":

@@ -193,5 +193,18 @@ def main(argv=None):
     return rows
 
 
+def report_section(run):
+    """The report's section: what this script printed in the report's run, introduced."""
+    return run.printed(
+        "Thermal network: the 120-mm bearing of NASA TN D-7870",
+        "The quasi-static ACBB-120 solved with its lumped thermal network (docs/theory/thermal.md) over speed "
+        "and thrust. Only the report's abstract was available here: the script checks its statements, not its "
+        "measured values, and nothing is calibrated.",
+        [("thermal_nasa_d7870.png", "power loss, outer-ring temperature and operating contact angles against "
+                                    "speed at three thrust loads."),
+         ("thermal_nasa_d7870_components.png", "losses by component and node temperatures against speed.")],
+        last_lines=40)
+
+
 if __name__ == "__main__":
     main()

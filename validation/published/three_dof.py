@@ -223,5 +223,96 @@ def main():
     print(f"written {OUT / 'three_dof.json'} ({out['wall_s']:.1f} s)")
 
 
+def report_section(run):
+    """The report's section on the 3-DOF model of El Had et al., from three_dof.json and its figures."""
+    d = run.load("three_dof.json")
+    s = d["source"]
+    ev = lambda z: f"{z[0]:.4g} {'+' if z[1] >= 0 else '-'} {abs(z[1]):.5g}i"  # noqa: E731
+    pair = s["inner_pair"]
+    lines = ["## 3-DOF vibration model (El Had et al. 2014)", "",
+             f"Command: `{run.command}` (figures `out/three_dof_frf.png`, "
+             "`out/three_dof_time_response.png`, `out/three_dof_modes.png`, each with its CSV). Theory and "
+             "readings: docs/theory/vibration.md.", "",
+             "**Where the source's eigenvalues come from.** It prints V = "
+             + ", ".join(f"{v:g}" for v in s["printed_eigenvalues"]) + " 1/s. Its printed state matrix L has "
+             "eigenvalues " + ", ".join(f"{v:.5g}" for v in s["printed_state_matrix_eigenvalues"])
+             + " (the printed values to their 4-5 digits; its characteristic polynomial starts "
+             f"X^6 {s['printed_polynomial'][1]:+.6g} X^5, the source prints -5,363 X^5). L is "
+             "[[0, I], [+A^-1 C, +A^-1 B]]: both lower blocks carry the wrong sign (M y'' + B y' + C y = 0 gives "
+             "-A^-1 C and -A^-1 B), and A^-1 B holds 413.25 where 43.5 x 9.9 = "
+             f"{s['rebuilt_vs_printed_entries']['A^-1 B [5,5] = 43.5 * 9.9']:.2f}. With +k/M a ring on its spring "
+             "has lambda^2 = +k/M, real roots +-sqrt(k/M), instead of +-i sqrt(k/M): "
+             + "; ".join(f"{k}: sqrt(k/M) = {v['sqrt_k_over_M']:.5g} 1/s ({v['f_hz']:.5g} Hz)"
+                         for k, v in s["sqrt_k_over_M"].items())
+             + f". The inner-ring pair of L, {pair['source_roots'][0]:.6g} and {pair['source_roots'][1]:.6g}, "
+             f"solves r^2 - b r - k/M = 0: product {pair['product']:.5g} against |lambda|^2 = "
+             f"{pair['correct_modulus_squared']:.5g} of the correct root {ev(pair['correct_eigenvalue'])}, sum "
+             f"{pair['sum']:.4g} against -2 Re(lambda) = {pair['correct_minus_twice_real']:.4g} (the source's "
+             "rounded A^-1 and its 413.25 make the difference).", "",
+             "Correct eigenvalues of the printed matrices (scipy.linalg.eig of [[0, I], [-M^-1 K, -M^-1 C]]): "
+             + ", ".join(ev(r["eigenvalue"]) for r in s["correct_printed_matrices"]) + " 1/s.", "",
+             "Each reading of the source's printed values (ball links k21 = 0.9925 N/m, C21 = 9.9072 N s/m, "
+             "masses 25, 2, 23 g):", "",
+             "| reading | eigenvalues [1/s] | f_n [Hz] | zeta |", "|---|---|---|---|"]
+    for name, r in s["readings"].items():
+        lines.append(f"| {name} | " + ", ".join(ev(m["eigenvalue"]) for m in r["modes"]) + " | "
+                     + ", ".join(f"{m['f_n_hz']:.5g}" for m in r["modes"]) + " | "
+                     + ", ".join(f"{m['zeta']:.3g}" for m in r["modes"]) + " |")
+    fv = d["source_film_values"]
+    lines += ["", "Real roots have zeta = 1 and f_n = |lambda| / 2 pi. The readings: inner_ring printed_matrix "
+              "k3 = 1e8 N/m (its numeric matrix), parameter_list 1e7; outer_link printed_matrix: no ball / outer "
+              "race link (its numeric matrices), eq7: k22 = 0.9925 N/m, C22 = 9.9072 N s/m; damping_row "
+              "eq7_literal: the ball row of eq. 7 as printed (C22 on y2' twice, no y1' term).", "",
+              "The source's ball-race values are not dimensional film coefficients. Read as the dimensionless "
+              "values of its eqs. 5-6 with its printed prefactor, 0.9925 needs eps_0 = "
+              + ", ".join(f"{e:.4f}" for e in fv["printed prefactor"]["k 0.9925"]) + " and 9.9072 needs eps_0 = "
+              + ", ".join(f"{e:.4f}" for e in fv["printed prefactor"]["C 9.9072"])
+              + "; with the corrected prefactor 0.9925 is reached at no eccentricity ("
+              + (", ".join(f"{e:.4f}" for e in fv["corrected prefactor"]["k 0.9925"]) or "none")
+              + ") and 9.9072 at " + ", ".join(f"{e:.4f}" for e in fv["corrected prefactor"]["C 9.9072"])
+              + ". No single film gives both.", ""]
+    for key, title in (("contact_model", "contact-model damping"), ("short_bearing", "short-bearing film damping")):
+        v = d["derived"][key]
+        dv = v["derivation"]
+        ci, co = dv["contacts"]["inner"], dv["contacts"]["outer"]
+        lines += [f"**Derived 6004, {title}** (F_r = {dv['radial_load']:g} N, {dv['omega'] * 30 / 3.141592653589793:.0f} "
+                  f"rpm, P_d = {dv['diametral_clearance'] * 1e6:g} um, eta = {dv['viscosity']:g} Pa s): "
+                  f"outer ring {dv['outer_ring']['mass'] * 1e3:.2f} g, oval mode {dv['outer_ring']['f_2_hz']:.0f} Hz, "
+                  f"k1 = {dv['outer_ring']['stiffness']:.4g} N/m; inner ring {dv['inner_ring']['mass'] * 1e3:.2f} g, "
+                  f"{dv['inner_ring']['f_2_hz']:.0f} Hz, k3 = {dv['inner_ring']['stiffness']:.4g} N/m; ball "
+                  f"{dv['ball_mass'] * 1e3:.3f} g, Q = {dv['q_max']:.1f} N; inner / outer contact: Hertz "
+                  f"{ci['k_hertz']:.4g} / {co['k_hertz']:.4g} N/m, h_min {ci['h_min'] * 1e9:.0f} / "
+                  f"{co['h_min'] * 1e9:.0f} nm, eps_0 {ci['eccentricity']:.4f} / {co['eccentricity']:.4f}, film "
+                  f"{ci['k_film']:.3g} / {co['k_film']:.3g} N/m, series link {ci['k_link']:.4g} / "
+                  f"{co['k_link']:.4g} N/m; damping short-bearing {ci['c_film']:.3g} / {co['c_film']:.3g} N s/m, "
+                  f"contact model {ci['c_contact_model']:.3g} / {co['c_contact_model']:.3g} N s/m (Lambda "
+                  f"{ci['film_parameter']:.2f} / {co['film_parameter']:.2f}).", "",
+                  "| eigenvalue [1/s] | f_n [Hz] | zeta | abs(shape) outer, ball, inner |", "|---|---|---|---|"]
+        for m in v["modes"]:
+            lines.append(f"| {ev(m['eigenvalue'])} | {m['f_n_hz']:.6g} | {m['zeta']:.4g} | "
+                         + ", ".join(f"{x:.3g}" for x in m["shape_abs"]) + " |")
+        tr = v["time_response"]
+        lines += ["", f"Ball-pass train at BPFO = {tr['bpfo_hz']:.2f} Hz (half-sine pulses of {tr['amplitude_N']:g} N, "
+                  f"{tr['pulse_duration_s'] * 1e3:.3f} ms, pushing outer ring and ball apart): peak displacements "
+                  + ", ".join(f"{x * 1e9:.1f}" for x in tr["peak_displacement_m"]) + " nm (outer, ball, inner).", ""]
+    ci = d["derived"]["short_bearing"]["derivation"]["contacts"]["inner"]
+    lines += ["The source's short-bearing film damping, normalised with the load, the radial clearance and the "
+              f"shaft speed, is {ci['c_film']:.3g} N s/m at the inner contact, {ci['c_film'] / ci['c_contact_model']:.2g} "
+              f"times the contact model's damping there ({ci['c_contact_model']:.3g} N s/m, hysteretic at Lambda < 1; "
+              f"its squeeze-film term alone is {ci['c_squeeze']:.3g} N s/m): it locks the ball to the rings, leaves "
+              "one oscillating mode (the two rings and the ball moving together on k1 + k3) and turns the rest into "
+              "real roots. The contact-model run keeps three lightly damped modes.", ""]
+    lines += run.figure("three_dof_frf.png", "Direct receptances of the outer ring, ball and inner ring against "
+                        "frequency: the source's printed matrices (left), the derived 6004 with short-bearing film "
+                        "damping (middle) and with the contact model's damping (right); thin vertical lines at the "
+                        "natural frequencies.")
+    lines += run.figure("three_dof_time_response.png", "Response of the derived 6004 to the ball-pass force train at "
+                        "BPFO (top: force, bottom: displacements), short-bearing damping (left) and contact-model "
+                        "damping (right).")
+    lines += run.figure("three_dof_modes.png", "Mode shapes (largest entry 1, signed by the real part) with their "
+                        "eigenvalues or natural frequencies and damping ratios, for the same three models.")
+    return "\n".join(lines)
+
+
 if __name__ == "__main__":
     main()

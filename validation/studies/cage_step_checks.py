@@ -93,5 +93,82 @@ def main():
     (HERE.parent / "out" / "cage_step_checks.json").write_text(json.dumps(out, indent=2))
 
 
+def report_section(run):
+    """The report's section on the cage contacts' stable step, from cage_step_checks.json."""
+    d = run.load("cage_step_checks.json")
+    lines = ["## Stable step of the cage contacts", "",
+             f"Command: `{run.command}`. The ball / cage-ball contacts are critically damped, "
+             "and velocity Verlet with the damping force at the half-step velocity is stable up to "
+             "2 (sqrt(1 + zeta^2) - zeta) / omega, 0.83 / omega at zeta = 1 (tests/test_reference.py checks this "
+             "against the amplification matrix). Above it the cage loads chatter at about twice their value; from "
+             "1.6 times the estimate runs blew up (`python validation/studies/step_limits.py`). With "
+             "`cage_damping=\"implicit\"` the damping acts with C / (1 + C dt / m), backward Euler of the "
+             "contact's own damping over the step: stable up to 1.58 / omega (tests/test_cage_damping.py checks it "
+             "against the amplification matrix), 1.9 times the explicit limit; the main job's implicit runs take "
+             "the implicit tangential spring too (the explicit one limits at 6.3 us). Sampled cage loads, and "
+             "what the engine said (a priori: dt above "
+             "`stable_step`; after the run: the loads reached put the contacts' stable step below dt), and the "
+             "integration's wall time (one run each, on the machine of the header):", "",
+             "| scene | cage damping | tangential spring | dt | dt / estimate | largest cage load [N] | "
+             "99.9 % cage load [N] | q_max_inner [N] | cage [rad/s] | a-priori warning | cage-load warning | "
+             "wall [s] |", "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    for scene, rows in d.items():
+        for r in rows["runs"].values():
+            head = (f"| {scene} | {r['cage_damping']} | {r['tangential']} | {r['dt_s'] * 1e6:g} us | "
+                    f"{r['dt_over_estimate']:.2f} |")
+            if "blew_up" in r:
+                lines.append(head + f" blew up: {r['blew_up']} | | | | | | |")
+                continue
+            lines.append(head + f" {r['max_cage_load_N']:.1f} | {r['p99_9_cage_load_N']:.1f} | "
+                         f"{r['q_max_inner']:.1f} | {r['cage_speed']:.2f} | {'yes' if r['a_priori_warning'] else 'no'} "
+                         f"| {'yes' if r['cage_load_warning'] else 'no'} | {r['wall_s']:.2f} |")
+
+    def spread(scene_rows, key):
+        v = [r[key] for r in scene_rows["runs"].values()
+             if r["cage_damping"] == "explicit" and r["tangential"] == "explicit"]
+        return 100.0 * (max(v) - min(v)) / min(v)
+
+    def implicit(scene_rows):
+        runs = [r for r in scene_rows["runs"].values() if r["cage_damping"] == "implicit"]
+        quiet = [r for r in runs if "blew_up" not in r and not r["cage_load_warning"] and not r["a_priori_warning"]]
+        text = "no run within the estimate without a warning"
+        if quiet:
+            dev = {k: 100.0 * max(abs(r["difference"][k]) for r in quiet)
+                   for k in ("q_max_inner", "cage_speed", "p99_9_cage_load_N")}
+            text = (f"up to {max(r['dt_s'] for r in quiet) * 1e6:g} us "
+                    f"({max(r['dt_over_estimate'] for r in quiet):.2f} of its estimate) without a warning, at most "
+                    f"{dev['q_max_inner']:.2f} % off in q_max_inner, {dev['cage_speed']:.3f} % in cage speed and "
+                    f"{dev['p99_9_cage_load_N']:.1f} % in the 99.9 % cage load from the "
+                    f"{quiet[0]['compared_with']} run")
+        chatter = [r for r in runs if "blew_up" not in r and r["cage_load_warning"]]
+        blown = [r for r in runs if "blew_up" in r]
+        return (text + "; first cage-load warning at "
+                + (f"{chatter[0]['dt_over_estimate']:.2f}" if chatter else "-") + ", first blow-up at "
+                + (f"{blown[0]['dt_over_estimate']:.2f}" if blown else "- (none up to "
+                   f"{max(r['dt_over_estimate'] for r in runs):.2f})") + " of the estimate")
+
+    def drift(scene_rows):
+        return 100 * max(abs(r["q_max_inner_drift"]) for r in scene_rows["runs"].values() if "blew_up" not in r)
+
+    lines += ["", "Estimates (`stable_step`; cage contacts at a tenth of the ball load in start-up, slow-down, from "
+              "rest and with the loaded balls at unequal contact angles, at 0.1 % in steady runs from the analytic "
+              "state): " + "; ".join(
+                  f"{scene}, {group}: {e['dt_s'] * 1e6:.2f} us (limited by the {e['limited_by']} contact)"
+                  for scene, rows in d.items() for group, e in rows["estimates"].items())
+              + ". The check of the loads a run reached flags the runs whose "
+              "cage loads doubled. Over the explicit steps (explicit spring) q_max_inner (the largest ball load) "
+              "spreads by "
+              + ", ".join(f"{spread(rows, 'q_max_inner'):.2f} % ({scene})" for scene, rows in d.items())
+              + " and the cage speed by "
+              + ", ".join(f"{spread(rows, 'cage_speed'):.3f} % ({scene})" for scene, rows in d.items()) + ".", "",
+              "Implicit cage damping: " + "; ".join(f"{scene}: {implicit(rows)}" for scene, rows in d.items())
+              + ". Runs whose summary window is not steady (the steady-state check of the summary): "
+              + "; ".join(f"{scene}: {sum(1 for r in rows['runs'].values() if r.get('steady') is False)} of "
+                          f"{len(rows['runs'])}, q_max_inner drifting by up to {drift(rows):.2f} % over the window"
+                          for scene, rows in d.items())
+              + "; their differences include that drift.", ""]
+    return "\n".join(lines)
+
+
 if __name__ == "__main__":
     main()

@@ -129,5 +129,17 @@ def main(argv=None):
     print(f"wrote {OUT / 'traction_convergence.csv'} and .png")
 
 
+def report_section(run):
+    """The report's section: what this script printed in the report's run, introduced."""
+    return run.printed(
+        "Traction integration: strips and points across",
+        "The quasi-static traction equilibrium of three high-speed cases at a grid of strips x points across, "
+        "against a 64 x 8 integration; the default of every solver (16 x 4) is the cheapest setting within 1 % "
+        "dissipation and 0.1 deg beta on every case.",
+        [("traction_convergence.png", "dissipation and beta errors against the points per contact, per case and "
+                                      "points across; dashed: the targets.")],
+        last_lines=60)
+
+
 if __name__ == "__main__":
     main()
