@@ -167,19 +167,27 @@ def test_node_kinematics_are_the_connectors():
     assert np.allclose(a["force"][0], b["force"][0], rtol=1e-6, atol=1e-6 * np.abs(a["force"][0]).max())
 
 
-def test_level_jacobian_is_the_derivative_of_its_force():
-    # K and C of the kernel (mats) against central differences of the level's force at the 6208's operating pose
+def _body(node_item):
+    """A system with a 2.5 kg body on ``node_item`` and ground: (system container, mbs, node, body marker, ground
+    marker, node-rigid marker)."""
     sc = exu.SystemContainer()
     mbs = sc.AddSystem()
     ground = mbs.AddObject(ObjectGround())
-    node = mbs.AddNode(NodeRigidBodyRxyz(referenceCoordinates=[0.0] * 6))
+    node = mbs.AddNode(node_item)
     body = mbs.AddObject(ObjectRigidBody(nodeNumber=node, mass=2.5, inertia=[0.01, 0.01, 5e-4, 0, 0, 0]))
-    br = eb.CreateBallBearing(mbs, "6208", mbs.AddMarker(MarkerBodyRigid(bodyNumber=body)),
-                              mbs.AddMarker(MarkerBodyRigid(bodyNumber=ground)), model="quasistatic",
-                              initialLoad=(3000.0, 500.0), initialOmega=OMEGA, formulation="node")
+    return (sc, mbs, node, mbs.AddMarker(MarkerBodyRigid(bodyNumber=body)),
+            mbs.AddMarker(MarkerBodyRigid(bodyNumber=ground)), mbs.AddMarker(MarkerNodeRigid(nodeNumber=node)))
+
+
+def test_level_jacobian_is_the_derivative_of_its_force():
+    # K and C of the kernel (mats) against central differences of the level's force at the 6208's operating pose
+    sc, mbs, node, m_b, m_g, _ = _body(NodeRigidBodyRxyz(referenceCoordinates=[0.0] * 6))
+    br = eb.CreateBallBearing(mbs, "6208", m_b, m_g, model="quasistatic", initialLoad=(3000.0, 500.0),
+                              initialOmega=OMEGA, formulation="node")
     u0 = np.array(br.initialRingDisplacement)
 
-    def force(u, rates=np.zeros(5)):
+    def force(u, rates=None):
+        rates = np.zeros(5) if rates is None else rates
         br._evaluate(list(u[:3]), [u[3], u[4], 0.4], list(rates[:3]), [rates[3], rates[4], OMEGA])
         return br._force.copy()
 
@@ -201,13 +209,7 @@ def test_level_jacobian_is_the_derivative_of_its_force():
 
 
 def test_formulation_option_errors_and_fallback():
-    sc = exu.SystemContainer()
-    mbs = sc.AddSystem()
-    ground = mbs.AddObject(ObjectGround())
-    node = mbs.AddNode(NodeRigidBodyRotVecLG(referenceCoordinates=[0.0] * 6))
-    body = mbs.AddObject(ObjectRigidBody(nodeNumber=node, mass=2.5, inertia=[0.01, 0.01, 5e-4, 0, 0, 0]))
-    m_b = mbs.AddMarker(MarkerBodyRigid(bodyNumber=body))
-    m_g = mbs.AddMarker(MarkerBodyRigid(bodyNumber=ground))
+    sc, mbs, node, m_b, m_g, m_n = _body(NodeRigidBodyRotVecLG(referenceCoordinates=[0.0] * 6))
     with pytest.raises(InputError, match="^formulation: must be one of"):
         eb.CreateBallBearing(mbs, "6208", m_b, m_g, model="quasistatic", formulation="generic")
     with pytest.raises(InputError, match="^formulation: 'node' needs .*RotVecLG"):
@@ -219,12 +221,11 @@ def test_formulation_option_errors_and_fallback():
 
 
 def test_node_rigid_marker_takes_the_node_formulation():
-    sc = exu.SystemContainer()
-    mbs = sc.AddSystem()
-    ground = mbs.AddObject(ObjectGround())
-    node = mbs.AddNode(NodeRigidBodyRxyz(referenceCoordinates=[0.0] * 6))
-    mbs.AddObject(ObjectRigidBody(nodeNumber=node, mass=2.5, inertia=[0.01, 0.01, 5e-4, 0, 0, 0]))
-    br = eb.CreateBallBearing(mbs, "6208", mbs.AddMarker(MarkerNodeRigid(nodeNumber=node)),
-                              mbs.AddMarker(MarkerBodyRigid(bodyNumber=ground)), model="quasistatic")
+    sc, mbs, node, m_b, m_g, m_n = _body(NodeRigidBodyRxyz(referenceCoordinates=[0.0] * 6))
+    br = eb.CreateBallBearing(mbs, "6208", m_n, m_g, model="quasistatic")
     assert br.formulationUsed == "node"
     assert math.isfinite(br.initialCoordinates[0])
+    # the rings on one body: the connector under "auto", an error naming formulation under "node"
+    assert eb.CreateBallBearing(mbs, "6208", m_n, m_b, model="quasistatic").formulationUsed == "connector"
+    with pytest.raises(InputError, match="^formulation: 'node' needs .* both ring markers sit on node"):
+        eb.CreateBallBearing(mbs, "6208", m_n, m_b, model="quasistatic", formulation="node")

@@ -73,6 +73,7 @@ SCRIPTS = [
     ("profile_reference.py", []),
     ("profile_suite.py", ["--startup", "--repeat", "3"]),
     ("bench_levels.py", ["--repeat", "3"]),
+    ("bench_qs_rotor.py", ["--repeat", "7"]),
     ("bench_kernel_ab.py", []),
     # (script, arguments, tag): a second run of a script under another name (its printout "<stem>_<tag>")
     ("bench_kernel_ab.py", ["--cold", "3", "--baseline", "58652e8"], "cold"),
@@ -350,7 +351,15 @@ def section_new_checks():
             "Wall time per simulated second of the ball element (body and fast mode) and of the two levels "
             "without ball degrees of freedom on a 2.5 kg shaft on one 6208 at 3000 N and 500 rad/s, medians of "
             "three runs, and the two-bearing run-up of scenarios/rotor_two_6208.py built with each level.",
-            last_lines=60)
+            last_lines=70)
+        + section_printed(
+            "Two bearings at the quasi-static level against the reference engine's bearing", "bench_qs_rotor.py",
+            "A 2.5 kg shaft on two 6208 under 6000 N at 500 rad/s (validation/consistency/levels_damping.py) at the "
+            "quasi-static level, GeneralizedAlpha at 1e-4 s, in its connector and node formulations, against one "
+            "6208 in the reference engine at its fast setting (implicit tangential spring, 8 us), in one process: "
+            "wall time per simulated second (medians of seven runs), its ratio to the reference engine's, the "
+            "calls into Python and the evaluations per step, and the microseconds per step and per call.",
+            last_lines=10)
         + section_printed(
             "Varying compliance against the published theory", "levels_published_vc.py",
             "The quasi-static level's ball-pass motion against the rigid-ring Hertz theory of Sunnersjo (1978) "

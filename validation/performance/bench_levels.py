@@ -8,7 +8,8 @@
    user function, and one speed as Exudyn's own connector), GeneralizedAlpha at 1e-4 s. Medians of
    ``--repeat`` runs (after one warm-up run that compiles).
 2. The rotor of scenarios/rotor_two_6208.py run up from 0 to 1000 rad/s in about 1 s (motor torque 0.5 N m)
-   at the two levels without ball DOFs: wall time of the 1 s run.
+   at the two levels without ball DOFs (the quasi-static level also with ``formulation="connector"``): wall
+   time of the 1 s run.
 3. Where an evaluation of the quasi-static level goes (``--skip-cost`` leaves it out): Exudyn's
    Python boundary (a connector whose user function returns zeros, against the same connector without a
    user function), the level's Python wrapper and its compiled kernel (smallest of 15 repeats each), the
@@ -251,6 +252,8 @@ def main(argv=None):
               "GeneralizedAlpha 1e-4 s:")
         for label, model, options in (("quasistatic, hamrock_brewe", "quasistatic", {"hertzModel": "hamrock_brewe"}),
                                       ("quasistatic, exact Hertz", "quasistatic", {}),
+                                      ("quasistatic, exact Hertz, connector", "quasistatic",
+                                       {"formulation": "connector"}),
                                       ("linear, speed table", "linear", {})):
             wall, w_end, per = runup(model, options=options)
             res[f"runup {label}"] = {"wall_s": wall, "final_speed": w_end, "evaluations_per_step": per}

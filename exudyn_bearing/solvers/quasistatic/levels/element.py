@@ -31,10 +31,13 @@ theta_y) and relative spin w_z against the outer ring (:mod:`.base`):
   for reference).
 
 The force F = G(u, psi) - C(u, psi, w_z) u' on the inner ring (G: the balls'
-generalized force) is one compiled call. Exudyn's implicit solvers
-differentiate the connector numerically for their Jacobian (modified Newton
-keeps it; see :meth:`.base.LevelBearing.SimulationSettings` for the
-tolerances); the explicit ones call it once per stage.
+generalized force) is one compiled call. With ``formulation="connector"``
+Exudyn's implicit solvers differentiate the connector numerically for their
+Jacobian (modified Newton keeps it; see
+:meth:`.base.LevelBearing.SimulationSettings` for the tolerances); the node
+formulation (:mod:`.nodes`, the default where the markers allow it) has the
+same call return the balls' K and C for a Jacobian at every step. The
+explicit solvers call it once per stage.
 """
 from __future__ import annotations
 
@@ -43,13 +46,22 @@ import math
 import numpy as np
 
 from ...._jit import kernel
-from ....data import MAX_FREE_CONTACT_ANGLE, InputError, load_lubricant
+from ....data import MAX_FREE_CONTACT_ANGLE, load_lubricant
 from ....data.errors import check_finite
 from ....model.operating_geometry import operating_geometry
 from ....physics import hertz as _hz
 from ..balls import B_NIR, B_NIZ, B_QI, B_QO, NB, _ring_forces
 from ..damping import ring_damping_force
-from .base import WS_CAGE, WS_FORCE, WS_HEADER, WS_OUT, WS_POSE, WS_QMAX, LevelBearing, entry_point
+from .base import (
+    WS_CAGE,
+    WS_FORCE,
+    WS_HEADER,
+    WS_OUT,
+    WS_POSE,
+    WS_QMAX,
+    LevelBearing,
+    entry_point,
+)
 from .nodes import (
     N_CONN,
     N_FIXED,
