@@ -229,3 +229,28 @@ def test_node_rigid_marker_takes_the_node_formulation():
     assert eb.CreateBallBearing(mbs, "6208", m_n, m_b, model="quasistatic").formulationUsed == "connector"
     with pytest.raises(InputError, match="^formulation: 'node' needs .* both ring markers sit on node"):
         eb.CreateBallBearing(mbs, "6208", m_n, m_b, model="quasistatic", formulation="node")
+
+
+def test_moving_housing_run_is_within_newtons_tolerance():
+    # the housing on its own moving node (two nodes in the object, the outer ring's Jacobian blocks): 5 ms of the
+    # shaft's motion at the node formulation within 1 % of the step's own error of the connector run at Newton's
+    # relative tolerance 1e-10, as in the rotor test above; fewer evaluations per step than the connector's
+    runs = {}
+    for key, form, rel, step in (("node", "node", None, 1e-4), ("connector", "connector", None, 1e-4),
+                                 ("tight", "connector", 1e-10, 1e-4), ("half", "connector", 1e-10, 5e-5)):
+        mbs, br = _housing_system(form)
+        sensor = mbs.AddSensor(SensorNode(nodeNumber=1, outputVariableType=exu.OutputVariableType.Position,
+                                          storeInternal=True, writeToFile=False))  # node 1: the shaft
+        mbs.Assemble()
+        ss = br.SimulationSettings(5e-3, stepSize=step)
+        ss.solution.sensors.writePeriod = 1e-4
+        if rel is not None:
+            ss.timeIntegration.newton.relativeTolerance = rel
+        with eb.filter_exudyn_notes():
+            mbs.SolveDynamic(ss, solverType=ss.timeIntegration.solverType)
+        runs[key] = (mbs.GetSensorStoredData(sensor), br.samples()["evaluations"] / round(5e-3 / step))
+    tight, half = runs["tight"][0], runs["half"][0]
+    step_error = np.array([np.abs(np.interp(tight[:, 0], half[:, 0], half[:, i]) - tight[:, i]).max()
+                           for i in (1, 2, 3)])
+    assert np.all(np.abs(runs["node"][0][:, 1:] - tight[:, 1:]).max(axis=0) < 0.01 * step_error)
+    assert runs["node"][1] < runs["connector"][1] - 1.0
