@@ -358,8 +358,9 @@ def section_new_checks():
             "quasi-static level, GeneralizedAlpha at 1e-4 s, in its connector and node formulations, against one "
             "6208 in the reference engine at its fast setting (implicit tangential spring, 8 us), in one process: "
             "wall time per simulated second (medians of seven runs), its ratio to the reference engine's, the "
-            "calls into Python and the evaluations per step, and the microseconds per step and per call.",
-            last_lines=10)
+            "calls into Python and the evaluations per step, the microseconds per step and per call, and where a "
+            "step goes.",
+            last_lines=12)
         + section_printed(
             "Varying compliance against the published theory", "levels_published_vc.py",
             "The quasi-static level's ball-pass motion against the rigid-ring Hertz theory of Sunnersjo (1978) "

@@ -14,7 +14,8 @@ solver time only), the ratio to the reference engine's bearing, the calls into P
 the evaluations per step and bearing, Newton iterations and Jacobians per step, the microseconds per step and
 per call (wall per step over calls per step: Exudyn's own step included), the shaft's final x and its
 difference from the first formulation's (the results agree within Newton's tolerance). The runs alternate
-between the formulations and the reference, so that a change of the machine's load falls on all alike.
+between the formulations and the reference, so that a change of the machine's load falls on all alike. Then one
+more run per formulation splits its step into the level's calls and the rest, Exudyn's.
 
     python validation/performance/bench_qs_rotor.py [--repeat 5] [--t-end 0.2] [--formulations connector node]
 
@@ -65,6 +66,41 @@ def level_run(formulation, t_end):
             "us_per_step": wall / steps * 1e6, "x_end": float(pos[-1, 1]), "y_end": float(pos[-1, 2])}
 
 
+def split_run(formulation, t_end):
+    """One more run, its level's calls timed from inside (not one of the timed runs: the timers add their own
+    cost): microseconds per step inside the level's Python calls (the node formulation's force and Jacobian calls,
+    the connector's user function) and the rest of the step (Exudyn: its step, the calls' boundary, the Jacobian),
+    wall time (the timers' own cost, two clock reads per call, falls into the level's share)."""
+    from exudyn_bearing.solvers.quasistatic.levels import base, nodes
+
+    inside = [0.0]
+
+    def timed(fn):
+        def wrapper(*args):
+            t0 = time.perf_counter()
+            out = fn(*args)
+            inside[0] += time.perf_counter() - t0
+            return out
+        return wrapper
+
+    saved = (nodes.NodeGroup._force, nodes.NodeGroup._jacobian, base.LevelBearing._user_function)
+    nodes.NodeGroup._force, nodes.NodeGroup._jacobian, base.LevelBearing._user_function = map(timed, saved)
+    try:
+        mbs, bearing, sensor = rotor("quasistatic", **dict(LEVEL, formulation=formulation))
+        ss = bearing.SimulationSettings(t_end, stepSize=STEP)
+        ss.solution.sensors.writePeriod = 1e-3
+        with eb.filter_exudyn_notes(), warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            t0 = time.perf_counter()
+            mbs.SolveDynamic(ss, solverType=ss.timeIntegration.solverType)
+            cpu = time.perf_counter() - t0
+    finally:
+        nodes.NodeGroup._force, nodes.NodeGroup._jacobian, base.LevelBearing._user_function = saved
+    steps = round(t_end / STEP)
+    return {"us_per_step": cpu / steps * 1e6, "level_us_per_step": inside[0] / steps * 1e6,
+            "exudyn_us_per_step": (cpu - inside[0]) / steps * 1e6}
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--repeat", type=int, default=5)
@@ -107,6 +143,13 @@ def main(argv=None):
               f"{(last['x_end'] - first['x_end']) * 1e9:7.3f}")
         report["levels"][key] = {"median": med, "runs": rows, "ratio_to_reference": med["wall_per_sim_s"] / ref_med,
                                  "us_per_call": per_call}
+    print("  where a step goes (one more run each, the level's calls timed from inside):")
+    for f in forms:
+        sp = split_run(f, args.t_end)
+        report["levels"][str(f)]["split"] = sp
+        print(f"    {str(f):12s} {sp['us_per_step']:6.1f} us per step: {sp['level_us_per_step']:5.1f} us in the "
+              f"level's calls (compiled kernels and their Python), {sp['exudyn_us_per_step']:5.1f} us in Exudyn "
+              "(its step, the calls' boundary, the Jacobian)")
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     (out / "bench_qs_rotor.json").write_text(json.dumps(report, indent=1))
