@@ -52,32 +52,9 @@ from ....model.operating_geometry import operating_geometry
 from ....physics import hertz as _hz
 from ..balls import B_NIR, B_NIZ, B_QI, B_QO, NB, _ring_forces
 from ..damping import ring_damping_force
-from .base import (
-    WS_CAGE,
-    WS_FORCE,
-    WS_HEADER,
-    WS_OUT,
-    WS_POSE,
-    WS_QMAX,
-    LevelBearing,
-    entry_point,
-)
-from .nodes import (
-    N_CONN,
-    N_FIXED,
-    N_LOCAL,
-    N_MATS,
-    N_OFFS,
-    N_REFS,
-    N_SHARE,
-    NodeGroup,
-    check_formulation,
-    node_force,
-    node_formulation_markers,
-    node_jacobian,
-    node_kinematics,
-    refuse_node,
-)
+from .base import WS_CAGE, WS_FORCE, WS_HEADER, WS_OUT, WS_POSE, WS_QMAX, LevelBearing, entry_point
+from .nodes import (N_CONN, N_FIXED, N_LOCAL, N_MATS, N_OFFS, N_REFS, N_SHARE, NodeGroup, check_formulation, node_force,
+                    node_formulation_markers, node_jacobian, node_kinematics, refuse_node)
 
 __all__ = ["QuasiStaticBearing", "level_forces", "node_level_forces"]
 
