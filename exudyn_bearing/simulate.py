@@ -255,7 +255,7 @@ def _create_level(mbs, bearing, markerInnerRing, markerOuterRing, model, options
         QuasiStaticBearing,
     )
 
-    allowed = LEVEL_OPTIONS + (("cageAngle",) if model == "quasistatic" else ())
+    allowed = LEVEL_OPTIONS + (("cageAngle", "formulation") if model == "quasistatic" else ())
     for key in options:
         if key not in allowed:
             raise InputError(f"{key}: not an option of model={model!r} (valid: {', '.join(allowed)})")

@@ -3,18 +3,22 @@
 1. One-bearing test shaft: a 2.5 kg shaft on one 6208 under F_r = 3000 N, spinning at 500 rad/s, started at
    the quasi-static pose: the ball element (body and fast mode, VelocityVerlet at 3.5 us with the implicit
    tangential spring, the README's example), the
-   quasi-static level (Hertz "exact" and "hamrock_brewe") and the linear level (speed table through the
+   quasi-static level (Hertz "exact" and "hamrock_brewe", the default node formulation; exact Hertz also with
+   ``formulation="connector"``) and the linear level (speed table through the
    user function, and one speed as Exudyn's own connector), GeneralizedAlpha at 1e-4 s. Medians of
    ``--repeat`` runs (after one warm-up run that compiles).
 2. The rotor of scenarios/rotor_two_6208.py run up from 0 to 1000 rad/s in about 1 s (motor torque 0.5 N m)
-   at the two levels without ball DOFs: wall time of the 1 s run.
+   at the two levels without ball DOFs (the quasi-static level also with ``formulation="connector"``): wall
+   time of the 1 s run.
 3. Where an evaluation of the quasi-static level goes (``--skip-cost`` leaves it out): Exudyn's
    Python boundary (a connector whose user function returns zeros, against the same connector without a
-   user function), the level's Python wrapper and its compiled kernel (smallest of 15 repeats each).
+   user function), the level's Python wrapper and its compiled kernel (smallest of 15 repeats each), the
+   connector formulation's user function, and the node formulation's force call (the object's
+   forceUserFunction for the one bearing) and Jacobian call.
 4. Newton's relative tolerance (``--skip-newton`` leaves it out): on the test shaft and on the
    varying-compliance case of validation/consistency/levels_checks.py (500 N, 20 um clearance), the largest difference
    of the shaft's x and y from a run at relative tolerance 1e-10, against the difference that halving the
-   step makes, and the evaluations per step.
+   step makes, and the evaluations per step; with the node formulation (the default) and the connector.
 
     python validation/performance/bench_levels.py [--repeat 3] [--skip-shaft] [--skip-runup] [--skip-cost] [--skip-newton]
 
@@ -45,6 +49,8 @@ CASES = (("balls, body mode", "balls", {"tangential": "implicit"}, "VelocityVerl
          ("quasistatic, exact Hertz", "quasistatic", {}, "GeneralizedAlpha", 1e-4, 0.05),
          ("quasistatic, hamrock_brewe", "quasistatic", {"hertzModel": "hamrock_brewe"}, "GeneralizedAlpha", 1e-4,
           0.05),
+         ("quasistatic, exact Hertz, connector", "quasistatic", {"formulation": "connector"}, "GeneralizedAlpha",
+          1e-4, 0.05),
          ("linear, speed table", "linear", {}, "GeneralizedAlpha", 1e-4, 0.05),
          ("linear, one speed (Exudyn connector)", "linear", {"coefficientSpeeds": [OMEGA]}, "GeneralizedAlpha",
           1e-4, 0.05))
@@ -133,15 +139,24 @@ def boundary_cost(repeat=5, steps=2000):
 
 
 def level_call_cost(number=500, repeat=15):
-    """[us] per call of the quasi-static level at its operating pose (warm balls): the connector's user function,
-    the level's _evaluate and the compiled kernel alone; smallest of ``repeat``."""
+    """[us] per call of the quasi-static level at its operating pose (warm balls): the connector formulation's
+    user function, the level's _evaluate and the compiled kernel alone, the node formulation's force and
+    Jacobian calls; smallest of ``repeat``."""
     import timeit
 
     import numpy as np
 
     sc, mbs, node, m_b, m_g, pos = shaft((FR, 0.0, 0.0), omega=OMEGA, damper=False)
-    br = eb.CreateBallBearing(mbs, "6208", m_b, m_g, model="quasistatic", initialLoad=(FR, 0.0), initialOmega=OMEGA)
+    br = eb.CreateBallBearing(mbs, "6208", m_b, m_g, model="quasistatic", initialLoad=(FR, 0.0), initialOmega=OMEGA,
+                              formulation="connector")
+    sc2, mbs2, node2, m_b2, m_g2, pos2 = shaft((FR, 0.0, 0.0), omega=OMEGA, damper=False)
+    nb = eb.CreateBallBearing(mbs2, "6208", m_b2, m_g2, model="quasistatic", initialLoad=(FR, 0.0),
+                              initialOmega=OMEGA, formulation="node")
     mbs.Assemble()
+    mbs2.Assemble()
+    q = [*(float(x) for x in nb.initialRingDisplacement), 0.3]
+    qt = [0.0] * 5 + [OMEGA]
+    group = nb._group
     u = [float(x) for x in br.initialRingDisplacement]
     d, r, v, w = u[:3], [u[3], u[4], 0.3], [0.0] * 3, [0.0, 0.0, OMEGA]
     m6, m3 = [[0.0] * 6 for _ in range(6)], [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]
@@ -151,18 +166,20 @@ def level_call_cost(number=500, repeat=15):
 
     def kernel_cold_direct():  # what the kernel did before: direct exact Hertz constants, cold starts
         cold[:] = 0.0
-        br._kernel(*args, direct, cold, br._balls)
+        br._kernel(*args, direct, cold, br._balls, br._mats)
 
     calls = {"user function": lambda: br._user_function(mbs, 1e-3, 0, d, r, v, w, m6, m6, m3, m3, [0.0] * 6),
              "_evaluate": lambda: br._evaluate(d, r, v, w),
-             "kernel": lambda: br._kernel(*args, br._hz_table, br._start, br._balls),
-             "kernel, direct Hertz, cold starts": kernel_cold_direct}
+             "kernel": lambda: br._kernel(*args, br._hz_table, br._start, br._balls, br._mats),
+             "kernel, direct Hertz, cold starts": kernel_cold_direct,
+             "node force call": lambda: group._force(mbs2, 1e-3, 0, q, qt),
+             "node Jacobian call": lambda: group._jacobian(mbs2, 1e-3, 0, q, qt, 1e9, 1e5)}
     for f in calls.values():
         f()
     return {k: min(timeit.repeat(f, number=number, repeat=repeat)) / number * 1e6 for k, f in calls.items()}
 
 
-def newton_study(case, t_end, tolerances):
+def newton_study(case, t_end, tolerances, formulation="auto"):
     """Largest |x|, |y| differences [m] from a run at relative tolerance 1e-10 (and of a run at half the step),
     evaluations per step, per relative tolerance."""
     import numpy as np
@@ -171,7 +188,7 @@ def newton_study(case, t_end, tolerances):
         bearing, load = ("6208", FR) if case == "shaft" else (eb.catalog["6208"].with_clearance(20e-6), 500.0)
         sc, mbs, node, m_b, m_g, pos = shaft((load, 0.0, 0.0), omega=OMEGA, damper=False)
         br = eb.CreateBallBearing(mbs, bearing, m_b, m_g, model="quasistatic", initialLoad=(load, 0.0),
-                                  initialOmega=OMEGA, sampleInterval=1e-3)
+                                  initialOmega=OMEGA, sampleInterval=1e-3, formulation=formulation)
         mbs.SetNodeParameter(node, "initialCoordinates", [*br.initialRingDisplacement, 0.0])
         ss = br.SimulationSettings(t_end, stepSize=h)
         ss.timeIntegration.newton.relativeTolerance = rel
@@ -235,6 +252,8 @@ def main(argv=None):
               "GeneralizedAlpha 1e-4 s:")
         for label, model, options in (("quasistatic, hamrock_brewe", "quasistatic", {"hertzModel": "hamrock_brewe"}),
                                       ("quasistatic, exact Hertz", "quasistatic", {}),
+                                      ("quasistatic, exact Hertz, connector", "quasistatic",
+                                       {"formulation": "connector"}),
                                       ("linear, speed table", "linear", {})):
             wall, w_end, per = runup(model, options=options)
             res[f"runup {label}"] = {"wall_s": wall, "final_speed": w_end, "evaluations_per_step": per}
@@ -249,15 +268,19 @@ def main(argv=None):
         print("one evaluation of the quasi-static level (exact Hertz) on the test shaft, smallest of repeats:")
         print(f"  Exudyn step with its own connector {plain:.1f} us; a user function returning zeros adds "
               f"{per_call:.1f} us per call (Exudyn's Python boundary)")
-        print(f"  the level's user function {level['user function']:.1f} us per call at its operating pose, of "
+        print(f"  the level's user function (connector formulation) {level['user function']:.1f} us per call at its operating pose, of "
               f"which _evaluate {level['_evaluate']:.1f} us and the compiled kernel {level['kernel']:.1f} us (with "
               f"direct exact Hertz constants and cold-started balls {level['kernel, direct Hertz, cold starts']:.1f} "
               "us)")
+        print(f"  node formulation: the object's force call {level['node force call']:.1f} us (kernel included), "
+              f"its Jacobian call {level['node Jacobian call']:.1f} us")
     if not args.skip_newton:
         print("Newton's relative tolerance (quasi-static level, exact Hertz, GeneralizedAlpha 1e-4 s): largest "
               "difference of the shaft's x, y from the run at 1e-10")
-        for case, t_end in (("shaft", 0.05), ("clearance 20 um, 500 N", 0.1)):
-            st = newton_study("shaft" if case == "shaft" else "vc", t_end, (1e-8, 1e-5, 1e-4, 1e-3))
+        for case, t_end, form in (("shaft", 0.05, "node"), ("clearance 20 um, 500 N", 0.1, "node"),
+                                  ("shaft, connector", 0.05, "connector"),
+                                  ("clearance 20 um, 500 N, connector", 0.1, "connector")):
+            st = newton_study("shaft" if case.startswith("shaft") else "vc", t_end, (1e-8, 1e-5, 1e-4, 1e-3), form)
             res[f"newton {case}"] = {str(k): v for k, v in st.items()}
             print(f"  {case}, {t_end:g} s (peak-to-peak x {st['ptp'][0] * 1e9:.0f} nm, y {st['ptp'][1] * 1e9:.0f} nm):"
                   f" halving the step changes x by {st['step_halving'][0] * 1e9:.3g} nm, y by "
@@ -278,7 +301,7 @@ def report_section(run):
         "Wall time per simulated second of the ball element (body and fast mode) and of the two levels "
         "without ball degrees of freedom on a 2.5 kg shaft on one 6208 at 3000 N and 500 rad/s, medians of "
         "three runs, and the two-bearing run-up of scenarios/rotor_two_6208.py built with each level.",
-        last_lines=60)
+        last_lines=70)
 
 
 if __name__ == "__main__":

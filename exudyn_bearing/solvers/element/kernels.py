@@ -27,6 +27,8 @@ from ...model.contact import accumulate_energy, forces
 from ...model.layout import (NDIAG, NGLOBAL, NSIGNAL, P_CAGE, P_IB, P_IC, P_MB, P_MC, P_MZ, P_NDEF, P_RIGID, R_ANGLE,
                              RING_N)
 from ...model.motion import kick_drift
+from ...model.rigid_nodes import g_xyz as _g_xyz
+from ...model.rigid_nodes import rot_xyz as _rot_xyz
 
 #: Ring couplings: fixed in space (ground), node with position coordinates
 #: only (mass point: axes parallel to the world, prescribed spin), rigid-body
@@ -34,17 +36,6 @@ from ...model.motion import kick_drift
 #: rigid-body node with a rotation vector and the local angular velocity as
 #: velocity coordinates (Exudyn's Lie-group node NodeRigidBodyRotVecLG).
 RING_FIXED, RING_POINT, RING_RXYZ, RING_ROTVEC = 0, 1, 2, 3
-
-
-@kernel
-def _rot_xyz(a0, a1, a2):
-    """Rotation matrix A = Ax Ay Az of Tait-Bryan xyz angles (Exudyn's Rxyz), row-major."""
-    c0, s0 = math.cos(a0), math.sin(a0)
-    c1, s1 = math.cos(a1), math.sin(a1)
-    c2, s2 = math.cos(a2), math.sin(a2)
-    return (c1 * c2, -c1 * s2, s1,
-            s0 * s1 * c2 + c0 * s2, -s0 * s1 * s2 + c0 * c2, -s0 * c1,
-            -c0 * s1 * c2 + s0 * s2, c0 * s1 * s2 + s0 * c2, c0 * c1)
 
 
 @kernel
@@ -67,16 +58,6 @@ def node_rotation(kind, rq):
     if kind == RING_ROTVEC:
         return _rot_vec(rq[3], rq[4], rq[5])
     return _rot_xyz(rq[3], rq[4], rq[5])
-
-
-@kernel
-def _g_xyz(a0, a1):
-    """G of Tait-Bryan xyz angles (global angular velocity = G d(angles)/dt), row-major."""
-    c0, s0 = math.cos(a0), math.sin(a0)
-    c1, s1 = math.cos(a1), math.sin(a1)
-    return (1.0, 0.0, s1,
-            0.0, c0, -c1 * s0,
-            0.0, s0, c0 * c1)
 
 
 @kernel(no_runtime=True)

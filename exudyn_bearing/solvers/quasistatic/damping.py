@@ -256,9 +256,12 @@ def _state_damping(q, delta, k, r_x, r_y, u_r, r_ball, e_prime, method, table, a
 
 @kernel
 def ring_damping_force(rates, psi, rho_i, z_i, rho_o, z_o, rci, rco, rb, balls, m_w2, fto, fti, w_orbit, w_ring,
-                       e_prime, method, table, alpha_e, eta, ln_g, sigma, lambda_mixed, lambda_full_film, out):
+                       e_prime, method, table, alpha_e, eta, ln_g, sigma, lambda_mixed, lambda_full_film, out,
+                       mats):
     """Damping force of the balls on the inner ring at their current state, -C u' with C = sum_j J^T D'(0) J
-    (module docstring), into ``out`` (5,) [N, N m].
+    (module docstring), into ``out`` (5,) [N, N m]; with ``mats`` of size 50 also the ring's stiffness
+    K = sum_j J^T D(0) J (row-major, mats[:25]) and damping C (mats[25:]) of the same condensation
+    (:func:`condensed_matrices`' K and C at the balls' current state; size 0: not computed).
 
     rates: u' (5,), the pose rates (the ring's velocity and tilt rates against the outer ring); psi (Z,), balls
     (Z, NB), m_w2, fto, fti (Z,): the ball set as :func:`.balls._ring_forces` left it for the current pose; the
@@ -271,6 +274,10 @@ def ring_damping_force(rates, psi, rho_i, z_i, rho_o, z_o, rci, rco, rb, balls, 
     C_n e omega_c, e the ring's displacement, 0.5 N per ball for the 6208 at 3000 N and 500 rad/s)."""
     for k in range(5):
         out[k] = 0.0
+    both = mats.size == 50
+    if both:
+        for k in range(50):
+            mats[k] = 0.0
     for j in range(psi.size):
         qi = balls[j, B_QI]
         if qi <= 0.0:
@@ -290,10 +297,21 @@ def ring_damping_force(rates, psi, rho_i, z_i, rho_o, z_o, rci, rco, rb, balls, 
             f_to = fto[j]
         else:
             qo = co = kto = f_to = 0.0
-        d1 = ball_condensation(nor, noz, qo, kto, rco - rb + do, f_to, co, nir, niz, qi, kti, rci - rb + di, fti[j],
-                               ci, m_w2[j])[1]
+        d0, d1 = ball_condensation(nor, noz, qo, kto, rco - rb + do, f_to, co, nir, niz, qi, kti, rci - rb + di,
+                                   fti[j], ci, m_w2[j])
         c = math.cos(psi[j])
         s = math.sin(psi[j])
+        if both:  # J^T D J, J the ring Jacobian of ring_jacobian
+            jr = (c, s, 0.0, -z_i * s, z_i * c)
+            jz = (0.0, 0.0, 1.0, rho_i * s, -rho_i * c)
+            for a in range(5):
+                ka_r = jr[a] * d0[0] + jz[a] * d0[2]
+                ka_z = jr[a] * d0[1] + jz[a] * d0[3]
+                ca_r = jr[a] * d1[0] + jz[a] * d1[2]
+                ca_z = jr[a] * d1[1] + jz[a] * d1[3]
+                for b in range(5):
+                    mats[5 * a + b] += ka_r * jr[b] + ka_z * jz[b]
+                    mats[25 + 5 * a + b] += ca_r * jr[b] + ca_z * jz[b]
         # J u': the inner groove centre's velocity in the ball's plane; the force -D'(0) J u', returned by J^T
         vr = rates[0] * c + rates[1] * s + z_i * (rates[4] * c - rates[3] * s)
         vz = rates[2] + rho_i * (rates[3] * s - rates[4] * c)

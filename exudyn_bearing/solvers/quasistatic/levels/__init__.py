@@ -11,9 +11,12 @@ physics as force elements between two ring markers.
   and damping of :func:`..coefficients.bearing_coefficients` interpolated in
   the current speed, about the operating point they were computed at.
 
-Both are ``ObjectConnectorRigidBodySpringDamper`` connectors with a
-``springForceTorqueUserFunction`` (one compiled call per evaluation), so
-Exudyn's implicit solvers run them with the connector's numerical Jacobian.
+The linear level is an ``ObjectConnectorRigidBodySpringDamper`` connector with a
+``springForceTorqueUserFunction`` (one compiled call per evaluation), which
+Exudyn's implicit solvers run with the connector's numerical Jacobian; so is
+the quasi-static level with ``formulation="connector"``. Its default node
+formulation (:mod:`.nodes`) is an ``ObjectGenericODE2`` on the ring nodes with
+the level's own Jacobian, one call for the bearings between the same nodes.
 They live in the quasi-static solver's package because they evaluate its
 ball equilibrium and coefficient tables (no solver imports another).
 The entry point is :func:`exudyn_bearing.CreateBallBearing` (``model=``).

@@ -98,6 +98,9 @@ def entry_point(dispatcher, args):
 
 #: Newton's relative tolerance in :meth:`LevelBearing.SimulationSettings` (Exudyn's default: 1e-8)
 NEWTON_RELATIVE_TOLERANCE = 1e-4
+#: Calls from Exudyn into the levels' Python (user functions of every level in this process; [count]): the
+#: benchmarks' calls per step (validation/performance/bench_qs_rotor.py)
+python_calls = [0]
 #: Header of a level's work array: out = -(F, 0) (6), F (5), pose u (5), cage (angle, speed) (2), q_max (3).
 WS_OUT, WS_FORCE, WS_POSE, WS_CAGE, WS_QMAX, WS_HEADER = 0, 6, 11, 16, 18, 21
 
@@ -226,16 +229,9 @@ class LevelBearing:
         return hi
 
     def _add_items(self, mbs, show):
-        from exudyn.itemInterface import (
-            ObjectConnectorRigidBodySpringDamper,
-            SensorUserFunction,
-            VObjectConnectorRigidBodySpringDamper,
-        )
+        from exudyn.itemInterface import SensorUserFunction
 
-        inner, outer = self.markers
-        kw = self._connector_parameters()
-        self.object = mbs.AddObject(ObjectConnectorRigidBodySpringDamper(
-            markerNumbers=[outer, inner], visualization=VObjectConnectorRigidBodySpringDamper(show=bool(show)), **kw))
+        self.object = self._add_object(mbs, show)
         self._sys = mbs.sys
         self._run = None
         defs = {"innerRingForce": lambda: list(-self._rot0 @ self._out[:3]),
@@ -249,6 +245,15 @@ class LevelBearing:
             sensorUserFunction=_sensor_function(fn))) for k, fn in defs.items()}
         self.items = {"object": self.object, "sensors": dict(self.sensors)}
 
+    def _add_object(self, mbs, show):
+        """The Exudyn object of the bearing (default: the connector between the ring markers); its number."""
+        from exudyn.itemInterface import ObjectConnectorRigidBodySpringDamper, VObjectConnectorRigidBodySpringDamper
+
+        inner, outer = self.markers
+        kw = self._connector_parameters()
+        return mbs.AddObject(ObjectConnectorRigidBodySpringDamper(
+            markerNumbers=[outer, inner], visualization=VObjectConnectorRigidBodySpringDamper(show=bool(show)), **kw))
+
     def _workspace_size(self):
         return 0
 
@@ -259,9 +264,22 @@ class LevelBearing:
     # -- evaluation ---------------------------------------------------------
     def _user_function(self, mbs, t, itemNumber, displacement, rotation, velocity, angularVelocity, stiffness,
                        damping, rotJ0, rotJ1, offset):
+        python_calls[0] += 1
+        self._call(t, displacement, rotation, velocity, angularVelocity, rotJ0)
+        return self._out
+
+    def _call(self, t, displacement, rotation, velocity, angularVelocity, rotJ0=None):
+        """One evaluation at time t for the connector's quantities (module docstring): a new run starts over,
+        samples are taken every sample interval (``rotJ0``: the joint frame's rotation the sensors turn the forces
+        by; None: the identity). Fills ``self._out``."""
+        self._begin(t)
+        self._evaluate(displacement, rotation, velocity, angularVelocity)
+        self._end(t, rotJ0)
+
+    def _begin(self, t):
+        """Before an evaluation at time t: a new SolveDynamic, or back to the run's start time, starts over."""
         solver = self._sys.get("dynamicSolver")
-        # a new SolveDynamic, or back to the run's start time: start over (a step the solver repeats with a
-        # smaller size goes back in time too, but not to the start)
+        # a step the solver repeats with a smaller size goes back in time too, but not to the start
         if solver is not self._run or (t < self._t_last - 1e-12 and t <= self._t_start + 1e-12):
             self._run = solver
             self._t_start = t
@@ -269,12 +287,14 @@ class LevelBearing:
             self._restart(t)
         self._t_last = t
         self._evaluations += 1
-        self._evaluate(displacement, rotation, velocity, angularVelocity)
+
+    def _end(self, t, rotJ0=None):
+        """After an evaluation at time t: a sample every sample interval."""
         if t >= self._next_sample - 1e-12:
-            self._rot0 = asarray(rotJ0, float)
+            if rotJ0 is not None:
+                self._rot0 = asarray(rotJ0, float)
             self._samples.append(self._sample_row(t))
             self._next_sample = t + self.sampleInterval
-        return self._out
 
     def _restart(self, t):
         self.restarts += 1

@@ -31,10 +31,13 @@ theta_y) and relative spin w_z against the outer ring (:mod:`.base`):
   for reference).
 
 The force F = G(u, psi) - C(u, psi, w_z) u' on the inner ring (G: the balls'
-generalized force) is one compiled call. Exudyn's implicit solvers
-differentiate the connector numerically for their Jacobian (modified Newton
-keeps it; see :meth:`.base.LevelBearing.SimulationSettings` for the
-tolerances); the explicit ones call it once per stage.
+generalized force) is one compiled call. With ``formulation="connector"``
+Exudyn's implicit solvers differentiate the connector numerically for their
+Jacobian (modified Newton keeps it; see
+:meth:`.base.LevelBearing.SimulationSettings` for the tolerances); the node
+formulation (:mod:`.nodes`, the default where the markers allow it) has the
+same call return the balls' K and C for a Jacobian at every step. The
+explicit solvers call it once per stage.
 """
 from __future__ import annotations
 
@@ -50,8 +53,10 @@ from ....physics import hertz as _hz
 from ..balls import B_NIR, B_NIZ, B_QI, B_QO, NB, _ring_forces
 from ..damping import ring_damping_force
 from .base import WS_CAGE, WS_FORCE, WS_HEADER, WS_OUT, WS_POSE, WS_QMAX, LevelBearing, entry_point
+from .nodes import (N_CONN, N_FIXED, N_LOCAL, N_MATS, N_OFFS, N_REFS, N_SHARE, NodeGroup, check_formulation, node_force,
+                    node_formulation_markers, node_jacobian, node_kinematics, refuse_node)
 
-__all__ = ["QuasiStaticBearing", "level_forces"]
+__all__ = ["QuasiStaticBearing", "level_forces", "node_level_forces"]
 
 _TWO_PI = 2.0 * math.pi
 #: Speed [rad/s] below which the ring growth (proportional to the speed squared) is not updated again
@@ -90,13 +95,14 @@ _BALLS = _DAMP + 5
 
 
 @kernel
-def level_forces(d0, d1, d2, r0, r1, r2, v0, v1, v2, w0, w1, w2, method, ws, table, start, balls):
+def level_forces(d0, d1, d2, r0, r1, r2, v0, v1, v2, w0, w1, w2, method, ws, table, start, balls, mats):
     """One evaluation of the quasi-static level (module docstring) for the connector's displacement d,
     Tait-Bryan angles r, velocity v and angular velocity w (.base).
 
     ws: the work array (layout above; state = [last Tait-Bryan spin angle, unwrapped spin angle, cage angle
     at zero spin angle]); table, start: Hertz constants and warm starts of :func:`..balls._ring_forces`; balls
-    (Z, NB).
+    (Z, NB); mats: size 50 for the stiffness K = -dG/du and damping C of the balls' current state as well
+    (:func:`..damping.ring_damping_force`; the node formulation's Jacobian), size 0 for the force alone.
     Writes the header (pose u, ``out`` = -(F, 0), F, cage (angle, speed), q_max = (largest inner and outer
     ball load, largest loaded inner contact angle)) and the balls table; returns the largest ball load."""
     z = balls.shape[0]
@@ -135,7 +141,7 @@ def level_forces(d0, d1, d2, r0, r1, r2, v0, v1, v2, w0, w1, w2, method, ws, tab
     rates[4] = w1 + w2 * r0
     ring_damping_force(rates, psi, ws[_GEO], ws[_GEO + 1], ws[_GEO + 2], ws[_GEO + 3], ws[_GEO + 4], ws[_GEO + 5],
                        ws[_GEO + 6], balls, m_w2, fto, fti, wc, w2, ws[_EPRIME], method, table, ws[_ALPHA_E],
-                       ws[_ETA], ws[_LN_G], ws[_SIGMA], ws[_L1], ws[_L3], damp)
+                       ws[_ETA], ws[_LN_G], ws[_SIGMA], ws[_L1], ws[_L3], damp, mats)
     q_in = 0.0
     q_out = 0.0
     alpha = 0.0
@@ -156,15 +162,104 @@ def level_forces(d0, d1, d2, r0, r1, r2, v0, v1, v2, w0, w1, w2, method, ws, tab
     return max(q_in, q_out)
 
 
+@kernel
+def node_level_forces(q, qt, nws, method, ws, table, start, balls, gen):
+    """One evaluation of a bearing in the node formulation: :func:`.nodes.node_kinematics`, the level's
+    :func:`level_forces` (with K and C, into the node work array ``nws``), the generalized force of its f
+    (:func:`.nodes.node_force`) into the bearing's share, added to ``gen``. Returns the largest ball load."""
+    node_kinematics(q, qt, nws)
+    conn = nws[N_CONN:N_CONN + 12]
+    qmax = level_forces(conn[0], conn[1], conn[2], conn[3], conn[4], conn[5], conn[6], conn[7], conn[8], conn[9],
+                        conn[10], conn[11], method, ws, table, start, balls, nws[N_MATS:N_MATS + 50])
+    share = nws[N_SHARE:]
+    for k in range(share.size):
+        share[k] = 0.0
+    node_force(ws[WS_OUT:WS_OUT + 6], nws, share)
+    for k in range(share.size):
+        gen[k] += share[k]
+    return qmax
+
+
 class QuasiStaticBearing(LevelBearing):
-    """The quasi-static level (module docstring); options of :class:`.base.LevelBearing` and
-    ``cageAngle`` (cage angle [rad] at the start: azimuth of ball 0)."""
+    """The quasi-static level (module docstring); options of :class:`.base.LevelBearing`,
+    ``cageAngle`` (cage angle [rad] at the start: azimuth of ball 0) and ``formulation`` (the Exudyn object:
+    "connector", an ObjectConnectorRigidBodySpringDamper between the markers with Exudyn's numerical Jacobian;
+    "node", an ObjectGenericODE2 on the ring nodes, shared by the bearings between the same nodes, with the
+    level's own Jacobian every step (:mod:`.nodes`); "auto" (default): "node" where the markers allow it (ground,
+    or a RigidBody with a NodeRigidBodyRxyz node), else "connector"). ``formulationUsed`` says which."""
 
     model = "quasistatic"
 
-    def __init__(self, *args, cageAngle=0.0, **options):
+    def __init__(self, *args, cageAngle=0.0, formulation="auto", **options):
         self._cage0 = check_finite("cageAngle", cageAngle)
+        self.formulation = check_formulation(formulation)
         super().__init__(*args, **options)
+
+    def _add_object(self, mbs, show):
+        rings = [node_formulation_markers(mbs, m) for m in (self.markers[1], self.markers[0])]  # outer, inner
+        why = next(((r, w) for r, w in zip(rings, ("markerOuterRing", "markerInnerRing")) if isinstance(r, str)),
+                   None)
+        if why is None and rings[0][0] == rings[1][0]:
+            why = (f"both ring markers sit on {'ground' if rings[0][0] < 0 else f'node {rings[0][0]}'}",
+                   "markerOuterRing")
+        if self.formulation == "connector" or (why is not None and self.formulation == "auto"):
+            self.formulationUsed = "connector"
+            self._mats = np.zeros(0)
+            return super()._add_object(mbs, show)
+        if why is not None:
+            raise refuse_node(*why)
+        group = NodeGroup.of(mbs, tuple(sorted({r[0] for r in rings if r[0] >= 0})))
+        self.formulationUsed = "node"
+        self._group = group
+        nws = self._nws = np.zeros(N_SHARE + 6 * len(group.nodes))
+        for i, (node, local, fixed) in enumerate(rings):
+            nws[N_OFFS + i] = group.offset(node)
+            if node >= 0:
+                nws[N_REFS + 6 * i:N_REFS + 6 * i + 6] = mbs.GetNode(node)["referenceCoordinates"]
+            nws[N_LOCAL + 3 * i:N_LOCAL + 3 * i + 3] = local
+            nws[N_FIXED + 12 * i:N_FIXED + 12 * i + 12] = fixed
+        self._conn = nws[N_CONN:N_CONN + 12]
+        self._mats = nws[N_MATS:N_MATS + 50]
+        self._share = nws[N_SHARE:]
+        self._mats_ready = False
+        q0 = np.zeros(6 * len(group.nodes))
+        self._node_kinematics = entry_point(node_kinematics, (q0, q0, nws))
+        self._node_jacobian = entry_point(node_jacobian, (nws, 1.0, 1.0, group._jac))
+        #: the node kernel's arguments after the coordinates (all but ``gen``)
+        self._node_args = (nws, self._method, self._ws, self._hz_table, self._start, self._balls)
+        self._node_kernel = entry_point(node_level_forces, (q0, q0, *self._node_args, q0))
+        group.bearings.append(self)
+        return group.object
+
+    def _node_evaluation(self, t, q, q_t, gen):
+        """One evaluation of the node formulation (:mod:`.nodes`): the connector's quantities from the nodes'
+        coordinates, the level's evaluation and its generalized force, added to ``gen``, in one compiled call
+        (:func:`node_level_forces`), with the steps of the connector's :meth:`_evaluate` around it."""
+        self._begin(t)
+        c = self._conn
+        if self._first:  # the spin angle of this state is the cage angle's zero
+            self._node_kinematics(q, q_t, self._nws)
+            self._prepare(abs(c[11]), c[5])
+        lo, hi = self._geo_band
+        qmax = self._node_kernel(q, q_t, *self._node_args, gen)
+        if not lo <= abs(c[11]) <= hi:
+            # the speed left the band of the grooves' last update: again with the grooves at this speed
+            gen -= self._share
+            self._prepare(abs(c[11]), c[5])
+            qmax = self._node_kernel(q, q_t, *self._node_args, gen)
+        if not qmax <= self._q_limit or self._qmax[2] > MAX_FREE_CONTACT_ANGLE:
+            self._check(qmax)
+        if t >= self._next_sample - 1e-12:
+            self._end(t)
+        self._mats_ready = True
+
+    def SimulationSettings(self, endTime, stepSize=1e-4, solverType="GeneralizedAlpha"):
+        """:meth:`.base.LevelBearing.SimulationSettings`; with the node formulation also Newton's Jacobian
+        recomputed at every step (``modifiedNewtonJacUpdatePerStep``: the level's own Jacobian, :mod:`.nodes`)."""
+        ss = super().SimulationSettings(endTime, stepSize=stepSize, solverType=solverType)
+        if self.formulationUsed == "node":
+            ss.timeIntegration.newton.modifiedNewtonJacUpdatePerStep = True
+        return ss
 
     def _workspace_size(self):
         return _BALLS - WS_HEADER + 4 * self.bearing.n_balls
@@ -194,8 +289,12 @@ class QuasiStaticBearing(LevelBearing):
         self._geo_band = (math.inf, -math.inf)
         self._update_geometry(abs(self.initialOmega))
         self._first = True
+        if getattr(self, "formulation", "connector") == "connector":
+            self._mats = np.zeros(0)  # K and C only for the node formulation's Jacobian (.nodes)
+        else:  # "node" or "auto": sized now, the kernel's argument types do not change
+            self._mats = np.zeros(50)
         self._kernel = entry_point(level_forces, (*[0.0] * 12, self._method, ws, self._hz_table, self._start,
-                                                  self._balls))
+                                                  self._balls, self._mats))
 
     def _update_geometry(self, speed):
         """Grooves, ball mass and inertia at ``speed`` (rigid rings: once; growing rings, whose growth goes with
@@ -221,15 +320,23 @@ class QuasiStaticBearing(LevelBearing):
         self._first = True
 
     def _evaluate(self, d, r, v, w):
-        speed = abs(w[2])
+        self._prepare(abs(w[2]), r[2])
+        qmax = self._kernel(d[0], d[1], d[2], r[0], r[1], r[2], v[0], v[1], v[2], w[0], w[1], w[2], self._method,
+                            self._ws, self._hz_table, self._start, self._balls, self._mats)
+        self._check(qmax)
+
+    def _prepare(self, speed, spin_angle):
+        """Before the kernel: the grooves at this speed (:meth:`_update_geometry`), and the first evaluation's spin
+        angle as the zero of the cage angle."""
         lo, hi = self._geo_band
         if not lo <= speed <= hi:
             self._update_geometry(speed)
-        if self._first:  # the spin angle of the first evaluation is the zero of the cage angle
-            self._state[0] = r[2]
+        if self._first:
+            self._state[0] = spin_angle
             self._first = False
-        qmax = self._kernel(d[0], d[1], d[2], r[0], r[1], r[2], v[0], v[1], v[2], w[0], w[1], w[2], self._method,
-                            self._ws, self._hz_table, self._start, self._balls)
+
+    def _check(self, qmax):
+        """After the kernel: the ball loads within the elastic limit, the contacts within the grooves."""
         if not qmax <= self._q_limit:
             self._check_ball_load(self._t_last, qmax)
         if self._qmax[2] > MAX_FREE_CONTACT_ANGLE:
