@@ -1,0 +1,91 @@
+"""The reduced engine against the reference engine: steady states and cost (docs/theory/reduced.md).
+
+Two cases, both engines in this session, no cage (the reduced engine's first version), traction over the
+Hertz ellipse (the DEM papers' mu(Lambda) traction model, the 6208's default):
+
+* the 6208 radial, the DEM papers' case: F_r = 3000 N, 500 rad/s, from the analytic start;
+* the 6208 under thrust: F_a = 3000 N, 500 rad/s, from the quasi-static start (control 'equilibrium').
+
+Printed per case and engine: Q_max inner / outer at psi = 0, the mean orbital speed of the balls (the summary's
+cage_speed), the dissipation and the drive power of the summary window (the second half of the run), the
+energy residual, the step and the steps taken; then the relative differences of the reduced engine from the
+reference engine against the criteria (loads 0.5 %, orbital speeds 0.2 %, dissipation 1 %), and the wall time
+per simulated second of each engine (median of ``--repeats`` runs; the integration alone, the compiled kernels
+loaded before the clock starts) and their ratio. ``--dt`` lists the reduced engine's steps (default 2e-5 and
+4e-5 s); the reference engine takes 2e-6 s.
+
+    python validation/consistency/reduced_engine.py [--repeats 3] [--dt 2e-5 4e-5] [--quick]
+"""
+from __future__ import annotations
+
+import argparse
+import statistics
+import warnings
+
+import exudyn_bearing as eb
+
+#: name: (scenario fields, simulated time [s])
+CASES = {
+    "6208 radial (Fr 3000 N, 500 rad/s)": (dict(Fr=3000.0, omega=500.0), 0.06),
+    "6208 thrust (Fa 3000 N, 500 rad/s)": (dict(Fa=3000.0, omega=500.0, initial="quasistatic",
+                                                control="equilibrium"), 0.02),
+}
+COMMON = dict(cage="none", traction_level="ellipse", sample_dt=1e-4)
+REFERENCE_DT = 2e-6
+#: The criteria (relative): loads, orbital speeds, dissipation.
+CRITERIA = {"q_max_inner": 0.005, "q_max_outer": 0.005, "cage_speed": 0.002, "dissipation": 0.01}
+KEYS = ("q_max_inner", "q_max_outer", "cage_speed", "dissipation", "drive_power", "energy_residual")
+
+
+def run(fields, t_end, engine, dt):
+    sc = eb.Scenario(**fields, **COMMON, t_end=t_end, dt=dt)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        res = eb.simulate("6208", sc, engine=engine)
+        return res, res.summary(fraction=0.5)
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--repeats", type=int, default=3, help="timed runs per engine and case (median)")
+    ap.add_argument("--dt", type=float, nargs="+", default=[2e-5, 4e-5], help="steps of the reduced engine [s]")
+    ap.add_argument("--quick", action="store_true", help="one run each")
+    args = ap.parse_args(argv)
+    repeats = 1 if args.quick else max(1, args.repeats)
+    failed = []
+    for name, (fields, t_end) in CASES.items():
+        print(f"\n== {name}, {t_end:g} s simulated, summary over the second half")
+        rows = {}
+        walls = {}
+        for engine, dt in [("reference", REFERENCE_DT)] + [("reduced", d) for d in args.dt]:
+            tag = f"{engine} dt={dt:g}"
+            times = []
+            for _ in range(repeats):
+                res, s = run(fields, t_end, engine, dt)
+                times.append(res.wall_s / t_end)
+            rows[tag] = s
+            walls[tag] = statistics.median(times)
+            print(f"{tag:>22}: " + "  ".join(f"{k} {s[k]:.6g}" for k in KEYS)
+                  + f"  steps {s['steps']}  wall/simulated s {walls[tag]:.3g}")
+        ref_tag = f"reference dt={REFERENCE_DT:g}"
+        ref = rows[ref_tag]
+        for tag, s in rows.items():
+            if tag == ref_tag:
+                continue
+            parts = []
+            for k, tol in CRITERIA.items():
+                d = (s[k] - ref[k]) / ref[k]
+                ok = abs(d) <= tol
+                if not ok:
+                    failed.append(f"{name} {tag} {k}")
+                parts.append(f"{k} {100 * d:+.4f} % ({'ok' if ok else 'FAILS'} {100 * tol:g} %)")
+            d_drive = (s["drive_power"] - ref["drive_power"]) / ref["drive_power"]
+            print(f"{tag:>22} - reference: " + "  ".join(parts) + f"  drive_power {100 * d_drive:+.3f} % (no criterion)")
+            print(f"{'':>22}   cost: {walls[tag]:.3g} s per simulated second against {walls[ref_tag]:.3g} "
+                  f"(reference/reduced {walls[ref_tag] / walls[tag]:.3g}); median of {repeats}")
+    print("\nall criteria hold" if not failed else "\nFAILS: " + "; ".join(failed))
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
