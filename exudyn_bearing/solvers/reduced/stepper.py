@@ -13,7 +13,7 @@ State (outer-ring frame = world frame, the bearing axis z):
   ``R_j(q) = (f_j . e_r + m_b r om_j^2, f_j . e_z) = 0`` (f_j the contact kernel's force on ball j, the
   centrifugal force m_b r om^2 the balance's inertia term); ``q_old`` its value one step earlier;
 * ``ring`` (6,): inner-ring position and velocity (it translates; its spin follows the protocol, as in the
-  reference engine, :func:`~exudyn_bearing.solvers.reference.integrators._set_inner_ring`).
+  reference engine, :func:`~exudyn_bearing.model.engine_steps.set_inner_ring`).
 
 The ball centre's velocity handed to the contact kernel is r om e_t plus the radial and axial rate
 ``(q - q_old) / dt``: inside the step's force balance the backward difference of the equilibrium positions,
@@ -29,7 +29,7 @@ import numpy as np
 from ..._jit import kernel
 from ...model.contact import accumulate_energy, forces
 from ...model.layout import HZ_GEO, P_IB, P_MAX_OVERLAP, P_MB, P_MR, P_RB
-from ..reference.integrators import _finite, _finite_ring, _inner_ring_force, _set_inner_ring, _store
+from ...model.engine_steps import finite, finite_ring, inner_ring_force, set_inner_ring, store_sample
 
 __all__ = ["reduced_evaluate", "run_reduced", "N_WORK"]
 
@@ -71,10 +71,10 @@ def reduced_evaluate(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, x
         wb[j, 0] = wo[j, 0] * c - wo[j, 1] * s
         wb[j, 1] = wo[j, 0] * s + wo[j, 1] * c
         wb[j, 2] = wo[j, 2]
-    _set_inner_ring(t, p, ring, rings, defect_path)
+    set_inner_ring(t, p, ring, rings, defect_path)
     worst = forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist, dt, hz, fb, tb, fc, fr, glob, diag, cage_load,
                    want, defect_path, ellipse_path, loss_path)
-    _inner_ring_force(p, fr, fring)
+    inner_ring_force(p, fr, fring)
     inv_ib = 1.0 / p[P_IB]
     for j in range(z):
         c = math.cos(phi[j])
@@ -365,13 +365,13 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
                              fc, fr, fring, glob, diag, cage_load, want_yes, res, acc, defect_path, ellipse_path,
                              loss_path)
             work[W_EVALS] += 1.0
-            _store(n_samp, t1, glob, diag, cage_load, xb, vb, wb, xc, vc, ring,
+            store_sample(n_samp, t1, glob, diag, cage_load, xb, vb, wb, xc, vc, ring,
                    s_t, s_glob, s_diag, s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring)
             n_samp += 1
-            if not (_finite(xb) and _finite(vb) and _finite(wb) and _finite_ring(ring)):
+            if not (finite(xb) and finite(vb) and finite(wb) and finite_ring(ring)):
                 return step + 1, n_samp, 1
         if worst > p[P_MAX_OVERLAP] or not math.isfinite(worst):
             return step + 1, n_samp, 2
-    if not (_finite(q) and _finite(wo) and _finite_ring(ring)):
+    if not (finite(q) and finite(wo) and finite_ring(ring)):
         return n_steps, n_samp, 1
     return n_steps, n_samp, 0
