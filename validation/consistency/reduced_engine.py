@@ -8,7 +8,8 @@ Hertz ellipse (the DEM papers' mu(Lambda) traction model, the 6208's default):
 
 Printed per case and engine: Q_max inner / outer at psi = 0, the mean orbital speed of the balls (the summary's
 cage_speed), the dissipation and the drive power of the summary window (the second half of the run), the
-energy residual, the step and the steps taken; then the relative differences of the reduced engine from the
+energy residual, the step and the steps taken (the reduced engine: its force evaluations and Newton
+iterations per step); then the relative differences of the reduced engine from the
 reference engine against the criteria (loads 0.5 %, orbital speeds 0.2 %, dissipation 1 %), and the wall time
 per simulated second of each engine (median of ``--repeats`` runs; the integration alone, the compiled kernels
 loaded before the clock starts) and their ratio. ``--dt`` lists the reduced engine's steps (default 2e-5 and
@@ -65,8 +66,11 @@ def main(argv=None):
                 times.append(res.wall_s / t_end)
             rows[tag] = s
             walls[tag] = statistics.median(times)
+            stats = getattr(res.record, "reduced_stats", None)
+            work = (f"  force evaluations/step {stats['evaluations_per_step']:.3g}  Newton iterations/step "
+                    f"{stats['newton_per_step']:.3g}") if stats else ""
             print(f"{tag:>22}: " + "  ".join(f"{k} {s[k]:.6g}" for k in KEYS)
-                  + f"  steps {s['steps']}  wall/simulated s {walls[tag]:.3g}")
+                  + f"  steps {s['steps']}  wall/simulated s {walls[tag]:.3g}{work}")
         ref_tag = f"reference dt={REFERENCE_DT:g}"
         ref = rows[ref_tag]
         for tag, s in rows.items():

@@ -1,6 +1,6 @@
 """Driver of the reduced engine (docs/theory/reduced.md): the ball centres on their normal force balance
 at every step (the reduction of Walters 1971 and of Gupta's ADORE), the ball speeds and the inner ring
-advanced by a linearly implicit Euler step, so that the step is not bound by the ball / race contact
+advanced by a linearly implicit (BDF2) step, so that the step is not bound by the ball / race contact
 vibration. Same contact kernel, parameter vector, initial state, samples and
 :class:`~exudyn_bearing.model.record.RunRecord` as the reference engine
 (:mod:`exudyn_bearing.solvers.reference`), so :class:`~exudyn_bearing.outputs.results.Results`, the summary,
@@ -24,7 +24,7 @@ from ...model.record import RunInterrupted, RunRecord
 from ...model.scenario import Scenario, resolve_cage
 from ...model.stability import SimulationError
 from ...physics import hertz
-from .stepper import N_WORK, W_EVALS, W_ITER, W_ITER_MAX, W_UNCONVERGED, run_reduced
+from .stepper import N_WORK, W_EVALS, W_ITER, W_ITER_MAX, W_REFRESH, W_UNCONVERGED, run_reduced
 
 __all__ = ["ReducedEngine", "reduced_support_error", "BALANCE_TOL", "MAX_ITER", "CHUNK_STEPS"]
 
@@ -34,6 +34,11 @@ BALANCE_TOL = 1e-12
 #: Newton iterations of a step's force balance at most (a step that needs more is counted in the summary's
 #: ``reduced.unconverged_steps`` and goes on from the last iterate).
 MAX_ITER = 12
+#: Steps over which the Jacobians of the ball speeds and of the ring are kept at most.
+JAC_EVERY = 4
+#: Change of a ball's load proxy (its overlaps^1.5), relative to the largest ball's, that retakes the Jacobians
+#: before JAC_EVERY steps (a ball entering or leaving the load zone).
+JAC_TOL = 0.1
 #: Steps of a chunk (the progress line's and Ctrl-C's granularity).
 CHUNK_STEPS = 2000
 
@@ -91,6 +96,7 @@ class ReducedEngine:
         self.params = scene_parameters(b, scenario, self.lubricant)
         self.table = hertz.exact_table()
         self.work = np.zeros(N_WORK)
+        self.jac_every, self.jac_tol = JAC_EVERY, JAC_TOL
 
     def initial_state(self):
         """The reduced state at t = 0 from the scene's initial state
@@ -118,6 +124,7 @@ class ReducedEngine:
         phi, om, wo, q, ring, hz = st["phi"], st["om"], st["wo"], st["q"], st["ring"], st["hz"]
         wb = np.zeros((z, 3))
         q_old = q.copy()
+        prev, ring_prev = np.zeros((z, 5)), np.zeros(6)  # the state of the step before (BDF2)
         xb, vb = np.zeros((z, 3)), np.zeros((z, 3))
         xc, vc = np.zeros((z, 3)), np.zeros((z, 3))
         fb, tb, fc = np.zeros((z, 3)), np.zeros((z, 3)), np.zeros((z, 3))
@@ -143,12 +150,13 @@ class ReducedEngine:
                                hist, hz, fb, tb, fc, fr, fring, glob, diag, cage_load, BALANCE_TOL, MAX_ITER, every,
                                done, buf["t"][sl], buf["glob"][sl], buf["diag"][sl], buf["cage_load"][sl],
                                buf["xb"][sl], buf["vb"][sl], buf["wb"][sl], buf["xc"][sl], buf["vc"][sl],
-                               buf["ring"][sl], work, True, defect_path, ellipse_path, loss_path)
+                               buf["ring"][sl], work, True, self.jac_every, self.jac_tol, prev, ring_prev,
+                               defect_path, ellipse_path, loss_path)
 
         # compile (or load from the cache) before the clock starts: zero steps on copies of the state
-        saved = [a.copy() for a in (phi, om, wo, q, q_old, ring, hz, glob, work)]
+        saved = [a.copy() for a in (phi, om, wo, q, q_old, ring, hz, glob, work, prev, ring_prev)]
         call(0, 0, 0)
-        for a, b in zip((phi, om, wo, q, q_old, ring, hz, glob, work), saved):
+        for a, b in zip((phi, om, wo, q, q_old, ring, hz, glob, work, prev, ring_prev), saved):
             a[...] = b
         chunk = chunk_steps or CHUNK_STEPS
         done = 0
@@ -163,9 +171,11 @@ class ReducedEngine:
                 done += steps
                 k_samp += ns
                 if status != 0:
-                    what = "non-finite state" if status == 1 else "runaway overlap (above 5 % of the ball radius)"
+                    what = ("non-finite state" if status == 1 else
+                            "runaway overlap (above 5 % of the ball radius, at a ball / race or a ball / ball contact)")
                     raise SimulationError(f"reduced engine: {what} at t = {done * dt:.4g} s with dt = {dt:.3g} s; "
-                                          "a smaller dt, or the reference engine for this scene")
+                                          "its ball / ball contacts (no cage) are explicit, so balls that collide "
+                                          "(a run-up from rest) need the reference engine; else a smaller dt")
                 if progress and (time.perf_counter() - last > 0.5 or done >= n_steps):
                     last = time.perf_counter()
                     print(f"\r[reduced] t = {done * dt:.4f}/{s.t_end:.4f} s  wall {last - wall0:6.1f} s", end="",
@@ -186,7 +196,8 @@ class ReducedEngine:
         w = self.work
         n = max(steps, 1)
         return {"newton_per_step": float(w[W_ITER]) / n, "newton_max": int(w[W_ITER_MAX]),
-                "evaluations_per_step": float(w[W_EVALS]) / n, "unconverged_steps": int(w[W_UNCONVERGED])}
+                "evaluations_per_step": float(w[W_EVALS]) / n, "unconverged_steps": int(w[W_UNCONVERGED]),
+                "jacobian_steps": int(w[W_REFRESH])}
 
     def _record(self, buf, k_samp, done, wall, st) -> RunRecord:
         data = {k: v[:k_samp] for k, v in buf.items()}

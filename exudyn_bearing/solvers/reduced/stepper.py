@@ -1,5 +1,5 @@
 """Compiled step of the reduced engine (docs/theory/reduced.md): the ball centres on their normal force
-balance at every step, the ball speeds and the inner ring advanced by a linearly implicit Euler step, over
+balance at every step, the ball states and the inner ring advanced by a linearly implicit BDF2 step, over
 the shared contact kernel :func:`exudyn_bearing.model.contact.forces`.
 
 State (outer-ring frame = world frame, the bearing axis z):
@@ -35,15 +35,18 @@ __all__ = ["reduced_evaluate", "run_reduced", "N_WORK"]
 
 #: Slots of the run's work vector ``work`` (floats kept across calls): the step's Newton iterations in total,
 #: the Newton iterations of the worst step, the force evaluations in total, the steps whose force balance did
-#: not converge within ``max_iter``.
-N_WORK = 4
-W_ITER, W_ITER_MAX, W_EVALS, W_UNCONVERGED = 0, 1, 2, 3
+#: not converge within ``max_iter``, the balance Jacobians taken, the steps that took the speeds' and the ring's
+#: Jacobians, and 1 once the state of the step before is kept (``prev``, ``ring_prev``: the BDF2 step).
+N_WORK = 7
+W_ITER, W_ITER_MAX, W_EVALS, W_UNCONVERGED, W_JAC, W_REFRESH, W_HAVE_PREV = 0, 1, 2, 3, 4, 5, 6
 #: Surface-speed perturbation [m/s] of the finite-difference Jacobian of the ball speeds (the traction's
 #: low-slip slope is resolved down to slips far below the regularising speeds, 1e-3 m/s and more).
 H_SPEED = 1e-6
 #: Position perturbation [m] of the Jacobians of the force balance and of the ring force (1e-4 of the
 #: 1e-5 m Hertz overlaps of loaded balls: the forward difference's error stays below 1e-4 of the stiffness).
 H_POS = 1e-9
+#: Orbital-angle perturbation [rad] of the forces' dependence on the ball's place in the load zone.
+H_ANGLE = 1e-7
 
 
 @kernel(internal=True)
@@ -125,11 +128,13 @@ def _solve_small(a, b, n):
 
 @kernel(internal=True)
 def _balance(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb, tb, fc, fr, fring,
-             glob, diag, cage_load, res, acc, g, r0, done, tol, max_iter, work, defect_path, ellipse_path, loss_path):
+             glob, diag, cage_load, res, acc, g, r0, done, tol, max_iter, work, fresh, defect_path, ellipse_path,
+             loss_path):
     """Solve the normal force balance of every ball for q (warm start: q on entry) by Newton's method with
-    the per-ball 2 x 2 Jacobians ``g`` (Z, 2, 2) of dR/dq, taken by differences at the first iteration (one
-    evaluation per component, every ball perturbed at once: balls couple only through the rings, held here)
-    and kept (modified Newton). Where G is not negative definite (a ball without contact, or whose contact
+    the per-ball 2 x 2 Jacobians ``g`` (Z, 2, 2) of dR/dq, taken by differences (one evaluation per
+    component, every ball perturbed at once: balls couple only through the rings, held here) at the first
+    iteration when ``fresh``, else kept from an earlier step, and retaken at an iteration where the residual
+    of a ball not yet converged grew (modified Newton). Where G is not negative definite (a ball without contact, or whose contact
     is just closing) the iteration adds m_b / dt^2 to the stiffness it inverts, so that a ball whose contacts
     are all open moves by its force from rest over one step, dq = R dt^2 / m_b, and then stays put for the
     step (the rule of docs/theory/reduced.md); a loaded ball converges to its balance (|dq| < ``tol``). Leaves the forces of the final q evaluated (the step's committed evaluation).
@@ -141,6 +146,7 @@ def _balance(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, r
     it = 0
     converged = False
     worst = 0.0
+    need_jac = fresh
     while True:
         worst = reduced_evaluate(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz,
                                  fb, tb, fc, fr, fring, glob, diag, cage_load, False, res, acc, defect_path,
@@ -149,9 +155,14 @@ def _balance(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, r
         if converged or it >= max_iter or not math.isfinite(worst):
             break
         for j in range(z):
+            if it > 0 and done[j] < 0.5 and (res[j, 0] * res[j, 0] + res[j, 1] * res[j, 1]
+                                             > r0[j, 0] * r0[j, 0] + r0[j, 1] * r0[j, 1]):
+                need_jac = True  # a kept Jacobian that no longer serves
             r0[j, 0] = res[j, 0]
             r0[j, 1] = res[j, 1]
-        if it == 0:
+        if need_jac:
+            need_jac = False
+            work[W_JAC] += 1.0
             for c in range(2):
                 for j in range(z):
                     q[j, c] += H_POS
@@ -200,16 +211,21 @@ def _balance(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, r
 @kernel
 def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb, tb,
                 fc, fr, fring, glob, diag, cage_load, tol, max_iter, sample_every, step0, s_t, s_glob, s_diag,
-                s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring, work, ring_free, defect_path=True, ellipse_path=True,
-                loss_path=True):
+                s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring, work, ring_free, jac_every, jac_tol, prev, ring_prev,
+                defect_path=True, ellipse_path=True, loss_path=True):
     """``n_steps`` steps of the reduced engine from t0 (module docstring; docs/theory/reduced.md).
 
-    Each step from t_n: (1) the forces at t_n (the balls on their balance of the last step); (2) the per-ball
-    4 x 4 Jacobian of (om', w') in (om, w) by differences, one evaluation per component with every ball
-    perturbed at once; (3) with ``ring_free``, the inner ring's 3 x 3 stiffness K, condensed over the balls'
-    force balance, and damping C (balls held) by differences; (4) linearly implicit Euler:
-    (I - dt J_j) d = dt a_j for each ball's speeds, phi += dt om_{n+1}; the ring's (m - dt C - dt^2 K) dv =
-    dt (F + dt K v), x += dt (v + dv); (5) the balls' force balance at t_{n+1} (:func:`_balance`), warm
+    Each step from t_n: (1) the forces at t_n (the balls on their balance of the last step); the Jacobians of
+    (2) and (3) are retaken at a chunk's first step, after ``jac_every`` steps, and where a ball's load proxy
+    (the overlaps^1.5 of its contacts) moved by more than ``jac_tol`` of the largest ball's since, else kept;
+    (2) the per-ball Jacobian of (om', w') in (phi, om, w) by differences, one evaluation per component with every ball
+    perturbed at once (phi: the ball's place in the load zone, whose geometry the step would otherwise take
+    one step late); (3) with ``ring_free``, the inner ring's 3 x 3 stiffness K, condensed over the balls'
+    force balance, and damping C (balls held) by differences; (4) linearly implicit BDF2 of each ball's
+    (phi, om, w_o) and of the ring's (x, v): one Newton step of y_{n+1} - 4/3 y_n + 1/3 y_{n-1} =
+    2/3 dt f(y_{n+1}) from the extrapolation 2 y_n - y_{n-1}, with f there f_n + J (y_n - y_{n-1}) (no force
+    evaluation beyond the step's), linearly implicit Euler where the state before is not yet kept (``prev``
+    (Z, 5), ``ring_prev`` (6), flag in ``work``); (5) the balls' force balance at t_{n+1} (:func:`_balance`), warm
     started by the extrapolation 2 q_n - q_{n-1}. The energy integrals take the committed evaluation of each
     step; every ``sample_every``-th step (counted from ``step0``) goes to the sample buffers (as
     :func:`~exudyn_bearing.solvers.reference.integrators.run_verlet`).
@@ -221,6 +237,7 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
     acc = np.zeros((z, 4))
     acc0 = np.zeros((z, 4))
     jb = np.zeros((z, 4, 4))
+    jphi = np.zeros((z, 4))
     g = np.zeros((z, 2, 2))
     r0 = np.zeros((z, 2))
     done = np.zeros(z)
@@ -229,11 +246,19 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
     fring0 = np.zeros(3)
     kr = np.zeros((3, 3))
     cr = np.zeros((3, 3))
-    a4 = np.zeros((4, 4))
-    b4 = np.zeros(4)
-    a3 = np.zeros((3, 3))
-    b3 = np.zeros(3)
     q_n = np.zeros((z, 2))
+    proxy = np.zeros(z)
+    load_ref = np.zeros(z)
+    since = 0
+    a5 = np.zeros((5, 5))
+    b5 = np.zeros(5)
+    j5 = np.zeros((5, 5))
+    y5 = np.zeros(5)
+    d5 = np.zeros(5)
+    a6 = np.zeros((6, 6))
+    b6 = np.zeros(6)
+    j6 = np.zeros((6, 6))
+    d6 = np.zeros(6)
     n_samp = np.int64(0)
     want_no = np.bool_(False)
     want_yes = np.bool_(True)
@@ -243,7 +268,7 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
     # the first step's Jacobians of the force balance
     it, ok, worst = _balance(t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb, tb,
                              fc, fr, fring, glob, diag, cage_load, res, acc, g, r0, done, tol, max_iter, work,
-                             defect_path, ellipse_path, loss_path)
+                             want_yes, defect_path, ellipse_path, loss_path)
     for step in range(n_steps):
         t = t0 + step * dt
         # (1) the committed forces at t_n are those of the last balance (acc, fb, fring)
@@ -254,100 +279,171 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
                 fb0[j, d] = fb[j, d]
         for d in range(3):
             fring0[d] = fring[d]
-        # (2) ball-speed Jacobians: component k of every ball at once
-        for k in range(4):
-            h = h_om if k == 0 else h_w
+        # the Jacobians of steps (2), (3): kept for up to jac_every steps, retaken sooner where a ball's load
+        # proxy (overlaps^1.5 of both contacts) moved by more than jac_tol of the largest one
+        big = 0.0
+        moved = 0.0
+        for j in range(z):
+            pj = 0.0
+            for race in range(2):
+                d = hz[j, race, HZ_GEO + 6]
+                if d > 0.0:
+                    pj += d * math.sqrt(d)
+            proxy[j] = pj
+            if load_ref[j] > big:
+                big = load_ref[j]
+            if abs(pj - load_ref[j]) > moved:
+                moved = abs(pj - load_ref[j])
+        refresh = since >= jac_every or moved > jac_tol * big or step == 0
+        since += 1
+        if refresh:
+            since = 1
+            work[W_REFRESH] += 1.0
             for j in range(z):
-                if k == 0:
-                    om[j] += h
-                else:
-                    wo[j, k - 1] += h
-            reduced_evaluate(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb, tb,
-                             fc, fr, fring, glob, diag, cage_load, want_no, res, acc, defect_path, ellipse_path,
+                load_ref[j] = proxy[j]
+            # (2) ball-speed Jacobians: component k of every ball at once; and the forces' dependence on the
+            # orbital angle (the load zone's geometry the ball moves through)
+            for j in range(z):
+                phi[j] += H_ANGLE
+            reduced_evaluate(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb,
+                             tb, fc, fr, fring, glob, diag, cage_load, want_no, res, acc, defect_path, ellipse_path,
                              loss_path)
             work[W_EVALS] += 1.0
             for j in range(z):
-                if k == 0:
-                    om[j] -= h
-                else:
-                    wo[j, k - 1] -= h
+                phi[j] -= H_ANGLE
                 for i in range(4):
-                    jb[j, i, k] = (acc[j, i] - acc0[j, i]) / h
-        # (3) the ring's stiffness (condensed over the balls' balance) and damping
-        if ring_free:
-            for k in range(3):
-                ring[k] += H_POS
-                reduced_evaluate(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb,
-                                 tb, fc, fr, fring, glob, diag, cage_load, want_no, res, acc, defect_path,
-                                 ellipse_path, loss_path)
-                work[W_EVALS] += 1.0
-                ring[k] -= H_POS
-                for i in range(3):
-                    kr[i, k] = (fring[i] - fring0[i]) / H_POS
+                    jphi[j, i] = (acc[j, i] - acc0[j, i]) / H_ANGLE
+            for k in range(4):
+                h = h_om if k == 0 else h_w
                 for j in range(z):
-                    for i in range(3):
-                        bmat[j, i, k] = (fb[j, i] - fb0[j, i]) / H_POS
-                ring[3 + k] += h_v
-                reduced_evaluate(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb,
-                                 tb, fc, fr, fring, glob, diag, cage_load, want_no, res, acc, defect_path,
-                                 ellipse_path, loss_path)
+                    if k == 0:
+                        om[j] += h
+                    else:
+                        wo[j, k - 1] += h
+                reduced_evaluate(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb, tb,
+                                 fc, fr, fring, glob, diag, cage_load, want_no, res, acc, defect_path, ellipse_path,
+                                 loss_path)
                 work[W_EVALS] += 1.0
-                ring[3 + k] -= h_v
-                for i in range(3):
-                    cr[i, k] = (fring[i] - fring0[i]) / h_v
-            # K += sum_j B_j E_j (-(G_j - k_min I)^-1) E_j^T B_j: dF_ring/dx_b = B_j = dF_b/dx_ring (the contact
-            # force depends on x_b - x_ring; the ring takes its reaction), the balls' q re-solved
-            k_min = mb / (dt * dt)
-            for j in range(z):
-                c = math.cos(phi[j])
-                s = math.sin(phi[j])
-                # E^T B (2 x 3): rows e_r . B, e_z . B
-                e0 = (c * bmat[j, 0, 0] + s * bmat[j, 1, 0], c * bmat[j, 0, 1] + s * bmat[j, 1, 1],
-                      c * bmat[j, 0, 2] + s * bmat[j, 1, 2])
-                e1 = (bmat[j, 2, 0], bmat[j, 2, 1], bmat[j, 2, 2])
-                a11 = g[j, 0, 0] - k_min
-                a12 = g[j, 0, 1]
-                a21 = g[j, 1, 0]
-                a22 = g[j, 1, 1] - k_min
-                det = a11 * a22 - a12 * a21
-                # M = -(G - k_min I)^-1 (2 x 2)
-                m11 = -a22 / det
-                m12 = a12 / det
-                m21 = a21 / det
-                m22 = -a11 / det
+                for j in range(z):
+                    if k == 0:
+                        om[j] -= h
+                    else:
+                        wo[j, k - 1] -= h
+                    for i in range(4):
+                        jb[j, i, k] = (acc[j, i] - acc0[j, i]) / h
+            # (3) the ring's stiffness (condensed over the balls' balance) and damping
+            if ring_free:
                 for k in range(3):
-                    y0 = m11 * e0[k] + m12 * e1[k]  # dq_r / dx_ring_k
-                    y1 = m21 * e0[k] + m22 * e1[k]  # dq_z / dx_ring_k
-                    # B E y: E y = y0 e_r + y1 e_z
-                    ux, uy, uz = y0 * c, y0 * s, y1
+                    ring[k] += H_POS
+                    reduced_evaluate(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb,
+                                     tb, fc, fr, fring, glob, diag, cage_load, want_no, res, acc, defect_path,
+                                     ellipse_path, loss_path)
+                    work[W_EVALS] += 1.0
+                    ring[k] -= H_POS
                     for i in range(3):
-                        kr[i, k] += bmat[j, i, 0] * ux + bmat[j, i, 1] * uy + bmat[j, i, 2] * uz
-        # (4) linearly implicit Euler of the ball speeds and the ring
+                        kr[i, k] = (fring[i] - fring0[i]) / H_POS
+                    for j in range(z):
+                        for i in range(3):
+                            bmat[j, i, k] = (fb[j, i] - fb0[j, i]) / H_POS
+                    ring[3 + k] += h_v
+                    reduced_evaluate(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb,
+                                     tb, fc, fr, fring, glob, diag, cage_load, want_no, res, acc, defect_path,
+                                     ellipse_path, loss_path)
+                    work[W_EVALS] += 1.0
+                    ring[3 + k] -= h_v
+                    for i in range(3):
+                        cr[i, k] = (fring[i] - fring0[i]) / h_v
+                # K += sum_j B_j E_j (-(G_j - k_min I)^-1) E_j^T B_j: dF_ring/dx_b = B_j = dF_b/dx_ring (the contact
+                # force depends on x_b - x_ring; the ring takes its reaction), the balls' q re-solved
+                k_min = mb / (dt * dt)
+                for j in range(z):
+                    c = math.cos(phi[j])
+                    s = math.sin(phi[j])
+                    # E^T B (2 x 3): rows e_r . B, e_z . B
+                    e0 = (c * bmat[j, 0, 0] + s * bmat[j, 1, 0], c * bmat[j, 0, 1] + s * bmat[j, 1, 1],
+                          c * bmat[j, 0, 2] + s * bmat[j, 1, 2])
+                    e1 = (bmat[j, 2, 0], bmat[j, 2, 1], bmat[j, 2, 2])
+                    a11 = g[j, 0, 0] - k_min
+                    a12 = g[j, 0, 1]
+                    a21 = g[j, 1, 0]
+                    a22 = g[j, 1, 1] - k_min
+                    det = a11 * a22 - a12 * a21
+                    # M = -(G - k_min I)^-1 (2 x 2)
+                    m11 = -a22 / det
+                    m12 = a12 / det
+                    m21 = a21 / det
+                    m22 = -a11 / det
+                    for k in range(3):
+                        y0 = m11 * e0[k] + m12 * e1[k]  # dq_r / dx_ring_k
+                        y1 = m21 * e0[k] + m22 * e1[k]  # dq_z / dx_ring_k
+                        # B E y: E y = y0 e_r + y1 e_z
+                        ux, uy, uz = y0 * c, y0 * s, y1
+                        for i in range(3):
+                            kr[i, k] += bmat[j, i, 0] * ux + bmat[j, i, 1] * uy + bmat[j, i, 2] * uz
+        # (4) the ball states y = (phi, om, w_o) and the ring (x, v): linearly implicit BDF2 from the second step
+        # (one Newton step of y_{n+1} - 4/3 y_n + 1/3 y_{n-1} = 2/3 dt f(y_{n+1}) from the extrapolation y_n + D,
+        # D = y_n - y_{n-1}, f there taken as f_n + J D), linearly implicit Euler at the first
+        bdf2 = work[W_HAVE_PREV] > 0.5
+        gam = 2.0 / 3.0 if bdf2 else 1.0
         for j in range(z):
+            y5[0] = phi[j]
+            y5[1] = om[j]
+            for d in range(3):
+                y5[2 + d] = wo[j, d]
+            for i in range(5):
+                for k in range(5):
+                    j5[i, k] = 0.0
+            j5[0, 1] = 1.0  # phi' = om
             for i in range(4):
+                j5[1 + i, 0] = jphi[j, i]
                 for k in range(4):
-                    a4[i, k] = -dt * jb[j, i, k]
-                a4[i, i] += 1.0
-                b4[i] = dt * acc0[j, i]
-            if not _solve_small(a4, b4, 4):
+                    j5[1 + i, 1 + k] = jb[j, i, k]
+            b5[0] = om[j]
+            for i in range(4):
+                b5[1 + i] = acc0[j, i]
+            for i in range(5):
+                d5[i] = y5[i] - prev[j, i] if bdf2 else 0.0
+            for i in range(5):
+                fi = b5[i]
+                for k in range(5):
+                    fi += j5[i, k] * d5[k]
+                    a5[i, k] = -gam * dt * j5[i, k]
+                a5[i, i] += 1.0
+                b5[i] = gam * dt * fi - gam * d5[i]
+            if not _solve_small(a5, b5, 5):
                 return step, n_samp, 1
-            om[j] += b4[0]
+            for i in range(5):
+                prev[j, i] = y5[i]
+            phi[j] = y5[0] + d5[0] + b5[0]
+            om[j] = y5[1] + d5[1] + b5[1]
             for d in range(3):
-                wo[j, d] += b4[1 + d]
-            phi[j] += dt * om[j]
+                wo[j, d] = y5[2 + d] + d5[2 + d] + b5[2 + d]
         if ring_free:
+            for i in range(6):
+                for k in range(6):
+                    j6[i, k] = 0.0
             for i in range(3):
+                j6[i, 3 + i] = 1.0  # x' = v
                 for k in range(3):
-                    a3[i, k] = -dt * cr[i, k] - dt * dt * kr[i, k]
-                a3[i, i] += mr
-                b3[i] = dt * fring0[i]
-                for k in range(3):
-                    b3[i] += dt * dt * kr[i, k] * ring[3 + k]
-            if not _solve_small(a3, b3, 3):
+                    j6[3 + i, k] = kr[i, k] / mr
+                    j6[3 + i, 3 + k] = cr[i, k] / mr
+                b6[i] = ring[3 + i]
+                b6[3 + i] = fring0[i] / mr
+            for i in range(6):
+                d6[i] = ring[i] - ring_prev[i] if bdf2 else 0.0
+            for i in range(6):
+                fi = b6[i]
+                for k in range(6):
+                    fi += j6[i, k] * d6[k]
+                    a6[i, k] = -gam * dt * j6[i, k]
+                a6[i, i] += 1.0
+                b6[i] = gam * dt * fi - gam * d6[i]
+            if not _solve_small(a6, b6, 6):
                 return step, n_samp, 1
-            for d in range(3):
-                ring[d] += dt * (ring[3 + d] + b3[d])
-                ring[3 + d] += b3[d]
+            for i in range(6):
+                ring_prev[i] = ring[i]
+                ring[i] += d6[i] + b6[i]
+        work[W_HAVE_PREV] = 1.0
         # (5) the balls' force balance at t_{n+1}, warm started by extrapolation
         for j in range(z):
             for c in range(2):
@@ -357,7 +453,7 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
         t1 = t0 + (step + 1) * dt
         it, ok, worst = _balance(t1, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb,
                                  tb, fc, fr, fring, glob, diag, cage_load, res, acc, g, r0, done, tol, max_iter, work,
-                                 defect_path, ellipse_path, loss_path)
+                                 want_yes, defect_path, ellipse_path, loss_path)
         accumulate_energy(glob, dt)
         want = (step0 + step + 1) % sample_every == 0 and n_samp < s_t.shape[0]
         if want:
