@@ -63,6 +63,7 @@ SCRIPTS = [
     ("traction_convergence.py", []),
     ("losses_6208_7208.py", []),
     ("losses_dynamic.py", []),
+    ("reduced_engine.py", []),
     ("thermal_nasa_d7870.py", []),
     ("bench_thermal.py", []),
     ("anomaly_checks.py", []),
@@ -324,6 +325,13 @@ def section_new_checks():
             "in turn, medians).",
             [("losses_dynamic.png", "EHL rolling, hysteresis and drag power of both engines against the "
                                     "quasi-static report, per case.")], last_lines=30)
+        + section_printed(
+            "The reduced engine against the reference engine", "reduced_engine.py",
+            "The reduced engine (ball centres on their normal force balance, linearly implicit step; "
+            "docs/theory/reduced.md) against the reference engine on the 6208 radial (the DEM papers' case) and "
+            "under 3 kN thrust, no cage, traction over the ellipse: Q_max, orbital speed, dissipation and drive "
+            "power, the criteria (0.5 %, 0.2 %, 1 %), and the wall time per simulated second of both engines "
+            "in one session (medians).", last_lines=20)
         + section_printed(
             "Where the element's step time goes", "profile_element.py",
             "The Exudyn element's body mode on the bench_element scene (6208, 3000 N, 500 rad/s, VelocityVerlet "
