@@ -20,7 +20,7 @@ from ...model.initial_state import initial_state
 from ...model.layout import HIST_N, NDIAG, NGLOBAL
 from ...model.motion import ring_poses
 from ...model.parameters import scene_parameters
-from ...model.record import RunInterrupted, RunRecord
+from ...model.record import RunInterrupted, RunRecord, sample_buffers
 from ...model.scenario import Scenario, resolve_cage
 from ...model.stability import SimulationError
 from ...physics import hertz
@@ -133,13 +133,7 @@ class ReducedEngine:
         rings = ring_poses()
         glob = np.zeros(NGLOBAL)
         diag, cage_load = np.zeros((z, 2, NDIAG)), np.zeros((z, 2))
-        buf = {
-            "t": np.zeros(n_samples), "glob": np.zeros((n_samples, NGLOBAL)),
-            "diag": np.zeros((n_samples, z, 2, NDIAG)), "cage_load": np.zeros((n_samples, z, 2)),
-            "xb": np.zeros((n_samples, z, 3)), "vb": np.zeros((n_samples, z, 3)),
-            "wb": np.zeros((n_samples, z, 3)), "xc": np.zeros((n_samples, z, 3)),
-            "vc": np.zeros((n_samples, z, 3)), "ring": np.zeros((n_samples, 6)),
-        }
+        buf = sample_buffers(n_samples, z)
         defect_path, ellipse_path = scene_paths(p)
         loss_path = scene_loss_path(p)
         work = self.work

@@ -126,6 +126,30 @@ def _solve_small(a, b, n):
     return True
 
 
+@kernel(no_runtime=True, internal=True)
+def _implicit_step(jm, f, y, y_prev, n, gam, dt, bdf2, a, d):
+    """One linearly implicit step of y' = f(y) for the n states ``y`` (updated in place; ``y_prev`` takes y_n):
+    BDF2 (``gam`` 2/3, ``bdf2`` True), one Newton step of y_{n+1} - 4/3 y_n + 1/3 y_{n-1} = gam dt f(y_{n+1})
+    from the extrapolation 2 y_n - y_{n-1} with f there f_n + J (y_n - y_{n-1}); or Euler (``gam`` 1, ``bdf2``
+    False), (I - dt J) dy = dt f_n. ``jm`` the n x n Jacobian J, ``f`` f_n (overwritten), ``a``, ``d`` scratch.
+    Returns False when the step's matrix is singular."""
+    for i in range(n):
+        d[i] = y[i] - y_prev[i] if bdf2 else 0.0
+    for i in range(n):
+        fi = f[i]
+        for k in range(n):
+            fi += jm[i, k] * d[k]
+            a[i, k] = -gam * dt * jm[i, k]
+        a[i, i] += 1.0
+        f[i] = gam * dt * fi - gam * d[i]
+    if not _solve_small(a, f, n):
+        return False
+    for i in range(n):
+        y_prev[i] = y[i]
+        y[i] += d[i] + f[i]
+    return True
+
+
 @kernel(internal=True)
 def _balance(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb, tb, fc, fr, fring,
              glob, diag, cage_load, res, acc, g, r0, done, tol, max_iter, work, fresh, defect_path, ellipse_path,
@@ -401,23 +425,12 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
             b5[0] = om[j]
             for i in range(4):
                 b5[1 + i] = acc0[j, i]
-            for i in range(5):
-                d5[i] = y5[i] - prev[j, i] if bdf2 else 0.0
-            for i in range(5):
-                fi = b5[i]
-                for k in range(5):
-                    fi += j5[i, k] * d5[k]
-                    a5[i, k] = -gam * dt * j5[i, k]
-                a5[i, i] += 1.0
-                b5[i] = gam * dt * fi - gam * d5[i]
-            if not _solve_small(a5, b5, 5):
+            if not _implicit_step(j5, b5, y5, prev[j], 5, gam, dt, bdf2, a5, d5):
                 return step, n_samp, 1
-            for i in range(5):
-                prev[j, i] = y5[i]
-            phi[j] = y5[0] + d5[0] + b5[0]
-            om[j] = y5[1] + d5[1] + b5[1]
+            phi[j] = y5[0]
+            om[j] = y5[1]
             for d in range(3):
-                wo[j, d] = y5[2 + d] + d5[2 + d] + b5[2 + d]
+                wo[j, d] = y5[2 + d]
         if ring_free:
             for i in range(6):
                 for k in range(6):
@@ -429,20 +442,8 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
                     j6[3 + i, 3 + k] = cr[i, k] / mr
                 b6[i] = ring[3 + i]
                 b6[3 + i] = fring0[i] / mr
-            for i in range(6):
-                d6[i] = ring[i] - ring_prev[i] if bdf2 else 0.0
-            for i in range(6):
-                fi = b6[i]
-                for k in range(6):
-                    fi += j6[i, k] * d6[k]
-                    a6[i, k] = -gam * dt * j6[i, k]
-                a6[i, i] += 1.0
-                b6[i] = gam * dt * fi - gam * d6[i]
-            if not _solve_small(a6, b6, 6):
+            if not _implicit_step(j6, b6, ring, ring_prev, 6, gam, dt, bdf2, a6, d6):
                 return step, n_samp, 1
-            for i in range(6):
-                ring_prev[i] = ring[i]
-                ring[i] += d6[i] + b6[i]
         work[W_HAVE_PREV] = 1.0
         # (5) the balls' force balance at t_{n+1}, warm started by extrapolation
         for j in range(z):
