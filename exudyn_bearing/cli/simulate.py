@@ -12,7 +12,7 @@ from ..model.scenario import CONTROLS, INITIAL_STATES, TRACTION_LEVELS, Scenario
 from ..outputs.jsonio import to_jsonable
 from ..outputs.tables import summary_rows
 from ..physics.hertz import METHODS
-from ..simulate import simulate
+from ..simulate import ENGINES, simulate
 from .common import (add_strip_arguments, add_bearing_argument, add_lubricant_argument, add_ring_growth_argument, add_speed_arguments,
                      add_traction_argument, bearing_from_args, finite_float, lubricant_from_args,
                      omega_from_args, print_table)
@@ -27,7 +27,7 @@ def add_parser(sub):
                                    "steady phase of a --ramp protocol (else over the last quarter of the run) "
                                    "and its window.")
     add_bearing_argument(p, default="6208")
-    p.add_argument("--engine", default="reference", choices=("reference", "exudyn", "reduced"),
+    p.add_argument("--engine", default="reference", choices=ENGINES,
                    help="numba DEM reference core, the same scene in Exudyn with the bearing element, or the "
                         "reduced engine (ball centres on their force balance, steps of tens of us: --dt 2e-5; "
                         "takes --cage none and --traction-level ellipse or --friction regularized)")
