@@ -38,6 +38,18 @@ def test_steady_state_equals_the_reference_engine(case):
     assert any("contact vibration" in item for item in red["not_modelled"])
 
 
+def test_thrust_steady_state_equals_the_quasistatic_traction_equilibrium():
+    # every ball loaded alike: the steady state is the quasi-static traction equilibrium (tilt held, as the
+    # dynamic engines hold it)
+    fields, t_end = CASES["thrust"]
+    _, red = _summary(fields, t_end, "reduced", 2e-5)
+    qs = eb.solve_quasistatic("6208", Fa=3000.0, omega=500.0, control="equilibrium",
+                              fixed={"tilt_x": 0.0, "tilt_y": 0.0}, stiffness=False)
+    for key, ref in (("q_max_inner", qs.q_max_inner), ("q_max_outer", qs.q_max_outer),
+                     ("dissipation", qs.dissipation_total)):
+        assert abs(red[key] - ref) <= CRITERIA[key] * abs(ref), (key, red[key], ref)
+
+
 @pytest.mark.parametrize("fields, name", [
     (dict(cage="torus"), "cage"),
     (dict(cage="rigid"), "cage"),

@@ -4,7 +4,8 @@ Two cases, both engines in this session, no cage (the reduced engine's first ver
 Hertz ellipse (the DEM papers' mu(Lambda) traction model, the 6208's default):
 
 * the 6208 radial, the DEM papers' case: F_r = 3000 N, 500 rad/s, from the analytic start;
-* the 6208 under thrust: F_a = 3000 N, 500 rad/s, from the quasi-static start (control 'equilibrium').
+* the 6208 under thrust: F_a = 3000 N, 500 rad/s, from the quasi-static start (control 'equilibrium'); every
+  ball is loaded alike, so both engines are also compared with the quasi-static traction equilibrium.
 
 Printed per case and engine: Q_max inner / outer at psi = 0, the mean orbital speed of the balls (the summary's
 cage_speed), the dissipation and the drive power of the summary window (the second half of the run), the
@@ -25,11 +26,11 @@ import warnings
 
 import exudyn_bearing as eb
 
-#: name: (scenario fields, simulated time [s])
+#: name: (scenario fields, simulated time [s], compared with the quasi-static traction equilibrium)
 CASES = {
-    "6208 radial (Fr 3000 N, 500 rad/s)": (dict(Fr=3000.0, omega=500.0), 0.06),
+    "6208 radial (Fr 3000 N, 500 rad/s)": (dict(Fr=3000.0, omega=500.0), 0.06, False),
     "6208 thrust (Fa 3000 N, 500 rad/s)": (dict(Fa=3000.0, omega=500.0, initial="quasistatic",
-                                                control="equilibrium"), 0.02),
+                                                control="equilibrium"), 0.02, True),
 }
 COMMON = dict(cage="none", traction_level="ellipse", sample_dt=1e-4)
 REFERENCE_DT = 2e-6
@@ -54,7 +55,7 @@ def main(argv=None):
     args = ap.parse_args(argv)
     repeats = 1 if args.quick else max(1, args.repeats)
     failed = []
-    for name, (fields, t_end) in CASES.items():
+    for name, (fields, t_end, with_qs) in CASES.items():
         print(f"\n== {name}, {t_end:g} s simulated, summary over the second half")
         rows = {}
         walls = {}
@@ -87,6 +88,21 @@ def main(argv=None):
             print(f"{tag:>22} - reference: " + "  ".join(parts) + f"  drive_power {100 * d_drive:+.3f} % (no criterion)")
             print(f"{'':>22}   cost: {walls[tag]:.3g} s per simulated second against {walls[ref_tag]:.3g} "
                   f"(reference/reduced {walls[ref_tag] / walls[tag]:.3g}); median of {repeats}")
+        if with_qs:  # every ball loaded alike: the quasi-static traction equilibrium is the steady state
+            qs = eb.solve_quasistatic("6208", Fr=fields.get("Fr", 0.0), Fa=fields.get("Fa", 0.0), omega=fields["omega"],
+                                      control="equilibrium", fixed={"tilt_x": 0.0, "tilt_y": 0.0}, stiffness=False)
+            qs_vals = {"q_max_inner": qs.q_max_inner, "q_max_outer": qs.q_max_outer, "dissipation": qs.dissipation_total}
+            print(f"{'quasi-static':>22}: " + "  ".join(f"{k} {v:.6g}" for k, v in qs_vals.items())
+                  + " (traction equilibrium, control='equilibrium', tilt held)")
+            for tag, s in rows.items():
+                parts = []
+                for k, v in qs_vals.items():
+                    d = (s[k] - v) / v
+                    ok = abs(d) <= CRITERIA[k]
+                    if not ok and tag != ref_tag:
+                        failed.append(f"{name} {tag} {k} against the quasi-static equilibrium")
+                    parts.append(f"{k} {100 * d:+.4f} %")
+                print(f"{tag:>22} - quasi-static: " + "  ".join(parts))
     print("\nall criteria hold" if not failed else "\nFAILS: " + "; ".join(failed))
     return 1 if failed else 0
 
