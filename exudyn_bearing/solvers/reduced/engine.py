@@ -39,6 +39,9 @@ JAC_EVERY = 4
 #: Change of a ball's load proxy (its overlaps^1.5), relative to the largest ball's, that retakes the Jacobians
 #: before JAC_EVERY steps (a ball entering or leaving the load zone).
 JAC_TOL = 0.1
+#: The ring's Jacobians are retaken at every RING_EVERY-th retaking of the balls' (the ring's stiffness moves
+#: little as the balls pass).
+RING_EVERY = 4
 #: Steps of a chunk (the progress line's and Ctrl-C's granularity).
 CHUNK_STEPS = 2000
 
@@ -96,7 +99,7 @@ class ReducedEngine:
         self.params = scene_parameters(b, scenario, self.lubricant)
         self.table = hertz.exact_table()
         self.work = np.zeros(N_WORK)
-        self.jac_every, self.jac_tol = JAC_EVERY, JAC_TOL
+        self.jac_every, self.jac_tol, self.ring_every = JAC_EVERY, JAC_TOL, RING_EVERY
 
     def initial_state(self):
         """The reduced state at t = 0 from the scene's initial state
@@ -144,7 +147,8 @@ class ReducedEngine:
                                hist, hz, fb, tb, fc, fr, fring, glob, diag, cage_load, BALANCE_TOL, MAX_ITER, every,
                                done, buf["t"][sl], buf["glob"][sl], buf["diag"][sl], buf["cage_load"][sl],
                                buf["xb"][sl], buf["vb"][sl], buf["wb"][sl], buf["xc"][sl], buf["vc"][sl],
-                               buf["ring"][sl], work, True, self.jac_every, self.jac_tol, prev, ring_prev,
+                               buf["ring"][sl], work, True, self.jac_every, self.jac_tol, self.ring_every, prev,
+                               ring_prev,
                                defect_path, ellipse_path, loss_path)
 
         # compile (or load from the cache) before the clock starts: zero steps on copies of the state

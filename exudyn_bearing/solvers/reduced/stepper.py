@@ -235,7 +235,7 @@ def _balance(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, r
 @kernel
 def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb, tb,
                 fc, fr, fring, glob, diag, cage_load, tol, max_iter, sample_every, step0, s_t, s_glob, s_diag,
-                s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring, work, ring_free, jac_every, jac_tol, prev, ring_prev,
+                s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring, work, ring_free, jac_every, jac_tol, ring_every, prev, ring_prev,
                 defect_path=True, ellipse_path=True, loss_path=True):
     """``n_steps`` steps of the reduced engine from t0 (module docstring; docs/theory/reduced.md).
 
@@ -274,6 +274,7 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
     proxy = np.zeros(z)
     load_ref = np.zeros(z)
     since = 0
+    n_ref = 0
     a5 = np.zeros((5, 5))
     b5 = np.zeros(5)
     j5 = np.zeros((5, 5))
@@ -355,8 +356,10 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
                         wo[j, k - 1] -= h
                     for i in range(4):
                         jb[j, i, k] = (acc[j, i] - acc0[j, i]) / h
-            # (3) the ring's stiffness (condensed over the balls' balance) and damping
-            if ring_free:
+            # (3) the ring's stiffness (condensed over the balls' balance) and damping, at every ring_every-th
+            # retaking of the Jacobians
+            n_ref += 1
+            if ring_free and (n_ref - 1) % ring_every == 0:
                 for k in range(3):
                     ring[k] += H_POS
                     reduced_evaluate(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb,
