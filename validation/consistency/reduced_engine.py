@@ -13,10 +13,10 @@ energy residual, the step and the steps taken (the reduced engine: its force eva
 iterations per step); then the relative differences of the reduced engine from the
 reference engine against the criteria (loads 0.5 %, orbital speeds 0.2 %, dissipation 1 %), and the wall time
 per simulated second of each engine (median of ``--repeats`` runs; the integration alone, the compiled kernels
-loaded before the clock starts) and their ratio. ``--dt`` lists the reduced engine's steps (default 2e-5 and
-4e-5 s); the reference engine takes 2e-6 s.
+loaded before the clock starts) and their ratio. ``--dt`` lists the reduced engine's steps (default 2e-5, 4e-5
+and 1e-4 s, the largest step a Scenario takes); the reference engine takes 2e-6 s.
 
-    python validation/consistency/reduced_engine.py [--repeats 3] [--dt 2e-5 4e-5] [--quick]
+    python validation/consistency/reduced_engine.py [--repeats 3] [--dt 2e-5 4e-5 1e-4] [--quick]
 """
 from __future__ import annotations
 
@@ -50,7 +50,7 @@ def run(fields, t_end, engine, dt):
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--repeats", type=int, default=3, help="timed runs per engine and case (median)")
-    ap.add_argument("--dt", type=float, nargs="+", default=[2e-5, 4e-5], help="steps of the reduced engine [s]")
+    ap.add_argument("--dt", type=float, nargs="+", default=[2e-5, 4e-5, 1e-4], help="steps of the reduced engine [s]")
     ap.add_argument("--quick", action="store_true", help="one run each")
     args = ap.parse_args(argv)
     repeats = 1 if args.quick else max(1, args.repeats)
