@@ -5,7 +5,8 @@ Hertz ellipse (the DEM papers' mu(Lambda) traction model, the 6208's default):
 
 * the 6208 radial, the DEM papers' case: F_r = 3000 N, 500 rad/s, from the analytic start;
 * the 6208 under thrust: F_a = 3000 N, 500 rad/s, from the quasi-static start (control 'equilibrium'); every
-  ball is loaded alike, so both engines are also compared with the quasi-static traction equilibrium.
+  ball is loaded alike, so both engines are also compared with the quasi-static traction equilibrium;
+* a transient: the same thrust, run up from rest to 500 rad/s in 20 ms (:func:`runup`).
 
 Printed per case and engine: Q_max inner / outer at psi = 0, the mean orbital speed of the balls (the summary's
 cage_speed), the dissipation and the drive power of the summary window (the second half of the run), the
@@ -24,6 +25,8 @@ import argparse
 import statistics
 import warnings
 
+import numpy as np
+
 import exudyn_bearing as eb
 
 #: name: (scenario fields, simulated time [s], compared with the quasi-static traction equilibrium)
@@ -36,6 +39,10 @@ COMMON = dict(cage="none", traction_level="ellipse", sample_dt=1e-4)
 REFERENCE_DT = 2e-6
 #: The criteria (relative): loads, orbital speeds, dissipation.
 CRITERIA = {"q_max_inner": 0.005, "q_max_outer": 0.005, "cage_speed": 0.002, "dissipation": 0.01}
+#: The run-up's check: the mean orbital speed within RUNUP_TOL of the reference engine's from RUNUP_FROM [s] on
+#: (the cage's first revolution ends near 40 ms; the check starts a quarter into the ramp).
+RUNUP_TOL = 0.02
+RUNUP_FROM = 0.005
 KEYS = ("q_max_inner", "q_max_outer", "cage_speed", "dissipation", "drive_power", "energy_residual")
 
 
@@ -45,6 +52,43 @@ def run(fields, t_end, engine, dt):
         warnings.simplefilter("ignore")
         res = eb.simulate("6208", sc, engine=engine)
         return res, res.summary(fraction=0.5)
+
+
+def runup(dts, repeats):
+    """The 6208 under 3000 N thrust run up from rest to 500 rad/s in 20 ms (the DEM papers' ramp; no cage, every
+    ball loaded alike, so the balls do not collide): the balls' mean orbital speed of each reduced run against
+    the reference engine's at every sample from RUNUP_FROM on (interpolated to the reference's sample times);
+    returns the failed checks."""
+    print(f"\n== 6208 thrust run-up 0 -> 500 rad/s in 20 ms, then 20 ms steady: mean orbital speed against the "
+          f"reference engine from {1e3 * RUNUP_FROM:g} ms on (criterion {100 * RUNUP_TOL:g} %)")
+    failed = []
+    fields = dict(Fr=0.0, Fa=3000.0, cage="none", traction_level="ellipse", t_steady=0.02, t_ramp_down=0.0,
+                  sample_dt=5e-4)
+    runs = {}
+    for engine, dt in [("reference", REFERENCE_DT)] + [("reduced", d) for d in dts]:
+        walls = []
+        for _ in range(repeats):
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")
+                res = eb.simulate("6208", eb.Scenario.papers_protocol(**fields, dt=dt), engine=engine)
+            walls.append(res.wall_s / float(res.t[-1]))
+        runs[(engine, dt)] = (res.t, res.cage_speed_series(), statistics.median(walls))
+    t, ref, ref_wall = runs[("reference", REFERENCE_DT)]
+    late = t >= RUNUP_FROM
+    for (engine, dt), (t2, speed, wall) in runs.items():
+        if engine == "reference":
+            print(f"{'reference dt=' + format(dt, 'g'):>22}: wall/simulated s {wall:.3g}")
+            continue
+        rel = (np.interp(t, t2, speed) - ref) / ref
+        worst = float(np.max(np.abs(rel[late])))
+        ok = worst <= RUNUP_TOL
+        if not ok:
+            failed.append(f"run-up reduced dt={dt:g}")
+        k = int(np.argmax(np.abs(rel) * late))
+        print(f"{'reduced dt=' + format(dt, 'g'):>22}: largest |difference| {100 * worst:.3f} % at {1e3 * t[k]:.1f} ms "
+              f"({'ok' if ok else 'FAILS'} {100 * RUNUP_TOL:g} %)  wall/simulated s {wall:.3g} "
+              f"(reference/reduced {ref_wall / wall:.3g})")
+    return failed
 
 
 def main(argv=None):
@@ -103,6 +147,7 @@ def main(argv=None):
                         failed.append(f"{name} {tag} {k} against the quasi-static equilibrium")
                     parts.append(f"{k} {100 * d:+.4f} %")
                 print(f"{tag:>22} - quasi-static: " + "  ".join(parts))
+    failed += runup(args.dt, repeats)
     print("\nall criteria hold" if not failed else "\nFAILS: " + "; ".join(failed))
     return 1 if failed else 0
 

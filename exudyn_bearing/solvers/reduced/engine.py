@@ -35,13 +35,13 @@ BALANCE_TOL = 1e-12
 #: ``reduced.unconverged_steps`` and goes on from the last iterate).
 MAX_ITER = 12
 #: Steps over which the Jacobians of the ball speeds and of the ring are kept at most.
-JAC_EVERY = 4
+JAC_EVERY = 2
 #: Change of a ball's load proxy (its overlaps^1.5), relative to the largest ball's, that retakes the Jacobians
 #: before JAC_EVERY steps (a ball entering or leaving the load zone).
 JAC_TOL = 0.1
 #: The ring's Jacobians are retaken at every RING_EVERY-th retaking of the balls' (the ring's stiffness moves
 #: little as the balls pass).
-RING_EVERY = 4
+RING_EVERY = 1
 #: Steps of a chunk (the progress line's and Ctrl-C's granularity).
 CHUNK_STEPS = 2000
 

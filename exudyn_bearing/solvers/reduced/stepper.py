@@ -158,10 +158,11 @@ def _balance(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, r
     the per-ball 2 x 2 Jacobians ``g`` (Z, 2, 2) of dR/dq, taken by differences (one evaluation per
     component, every ball perturbed at once: balls couple only through the rings, held here) at the first
     iteration when ``fresh``, else kept from an earlier step, and retaken at an iteration where the residual
-    of a ball not yet converged grew (modified Newton). Where G is not negative definite (a ball without contact, or whose contact
-    is just closing) the iteration adds m_b / dt^2 to the stiffness it inverts, so that a ball whose contacts
-    are all open moves by its force from rest over one step, dq = R dt^2 / m_b, and then stays put for the
-    step (the rule of docs/theory/reduced.md); a loaded ball converges to its balance (|dq| < ``tol``). Leaves the forces of the final q evaluated (the step's committed evaluation).
+    of a ball not yet converged grew (modified Newton). Where G is not negative definite (a ball without
+    contact, or whose contact is just closing) the iteration adds m_b / dt^2 to the stiffness it inverts, so
+    that a ball whose contacts are all open moves by its force from rest over one step, dq = R dt^2 / m_b,
+    and then stays put for the step (the rule of docs/theory/reduced.md); a loaded ball converges to its
+    balance (|dq| < ``tol``). Leaves the forces of the final q evaluated (the step's committed evaluation).
     Returns (iterations, converged, worst overlap ratio)."""
     z = phi.shape[0]
     k_min = p[P_MB] / (dt * dt)
@@ -242,15 +243,15 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
     Each step from t_n: (1) the forces at t_n (the balls on their balance of the last step); the Jacobians of
     (2) and (3) are retaken at a chunk's first step, after ``jac_every`` steps, and where a ball's load proxy
     (the overlaps^1.5 of its contacts) moved by more than ``jac_tol`` of the largest ball's since, else kept;
-    (2) the per-ball Jacobian of (om', w') in (phi, om, w) by differences, one evaluation per component with every ball
-    perturbed at once (phi: the ball's place in the load zone, whose geometry the step would otherwise take
+    (2) the per-ball Jacobian of (om', w') in (phi, om, w) by differences, one evaluation per component with
+    every ball perturbed at once (phi: the ball's place in the load zone, whose geometry the step would otherwise take
     one step late); (3) with ``ring_free``, the inner ring's 3 x 3 stiffness K, condensed over the balls'
     force balance, and damping C (balls held) by differences; (4) linearly implicit BDF2 of each ball's
     (phi, om, w_o) and of the ring's (x, v): one Newton step of y_{n+1} - 4/3 y_n + 1/3 y_{n-1} =
     2/3 dt f(y_{n+1}) from the extrapolation 2 y_n - y_{n-1}, with f there f_n + J (y_n - y_{n-1}) (no force
     evaluation beyond the step's), linearly implicit Euler where the state before is not yet kept (``prev``
-    (Z, 5), ``ring_prev`` (6), flag in ``work``); (5) the balls' force balance at t_{n+1} (:func:`_balance`), warm
-    started by the extrapolation 2 q_n - q_{n-1}. The energy integrals take the committed evaluation of each
+    (Z, 5), ``ring_prev`` (6), flag in ``work``); (5) the balls' force balance at t_{n+1} (:func:`_balance`),
+    warm started by the extrapolation 2 q_n - q_{n-1}. The energy integrals take the committed evaluation of each
     step; every ``sample_every``-th step (counted from ``step0``) goes to the sample buffers (as
     :func:`~exudyn_bearing.solvers.reference.integrators.run_verlet`).
     Returns (steps done, samples written, status): 0 ok, 1 non-finite state, 2 runaway overlap."""
