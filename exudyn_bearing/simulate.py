@@ -21,7 +21,7 @@ __all__ = ["simulate", "ENGINES", "MODELS", "CreateBallBearing", "BallBearingEle
 SPEC_KEYS = ("bearing", "scenario", "engine", "lubricant", "labels")
 
 #: Engines that :func:`simulate` knows.
-ENGINES = ("reference", "exudyn")
+ENGINES = ("reference", "exudyn", "reduced")
 
 
 def simulate(bearing, scenario: Scenario | None = None, engine: str = "reference",
@@ -36,9 +36,15 @@ def simulate(bearing, scenario: Scenario | None = None, engine: str = "reference
         The run (None: ``Scenario()``, no load and at rest, docs/defaults.md;
         the DEM papers' case is ``Scenario(Fr=3000, omega=500)`` or
         ``Scenario.papers_protocol()``).
-    engine : {"reference", "exudyn"}
-        The numba DEM reference core, or the same scene built in Exudyn with
-        the bearing element (:mod:`exudyn_bearing.solvers.element`).
+    engine : {"reference", "exudyn", "reduced"}
+        The numba DEM reference core, the same scene built in Exudyn with
+        the bearing element (:mod:`exudyn_bearing.solvers.element`), or the
+        reduced engine (:mod:`exudyn_bearing.solvers.reduced`,
+        docs/theory/reduced.md): the ball centres on their normal force
+        balance at every step and a linearly implicit step of tens of
+        microseconds (``Scenario.dt``); in this version cage="none" only, no
+        Cundall-Strack spring (friction="history" at the point level), no
+        defects or signals (InputError naming what it does not take).
     lubricant : Lubricant or str, optional
         Lubricant, catalogue name, JSON file or dict (default: the bearing's,
         :func:`exudyn_bearing.data.default_lubricant`; the scenario's traction
@@ -69,6 +75,12 @@ def simulate(bearing, scenario: Scenario | None = None, engine: str = "reference
         raise InputError(f"engine: unknown engine {engine!r} (valid: {', '.join(ENGINES)})")
     bearing = load_bearing(bearing)
     scenario, lubricant = with_bearing_defaults(bearing, scenario, lubricant)
+    if engine == "reduced":  # what it does not model, before any work
+        from .solvers.reduced.engine import reduced_support_error
+
+        err = reduced_support_error(scenario, bearing)
+        if err is not None:
+            raise err
     check_sample_memory(bearing, scenario)  # before any work: the sampled series must fit in memory
     # the applied loads within the elastic contact model before the engines (and their compilation) start
     check_load_range(bearing if scenario.Pd is None else bearing.with_clearance(scenario.Pd), scenario.Fr,
@@ -79,6 +91,10 @@ def simulate(bearing, scenario: Scenario | None = None, engine: str = "reference
             from .solvers.reference import ReferenceEngine
 
             record = ReferenceEngine(bearing, scenario, lubricant, start=start).run(progress=progress)
+        elif engine == "reduced":
+            from .solvers.reduced import ReducedEngine
+
+            record = ReducedEngine(bearing, scenario, lubricant, start=start).run(progress=progress)
         else:
             from .solvers.element.engine import ExudynEngine
 

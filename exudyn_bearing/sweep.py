@@ -177,7 +177,7 @@ def run_case(name: str, spec: dict, out_dir: str) -> str:
     the case raises; :func:`run_sweep` records that instead).
 
     ``spec``: ``bearing`` (name, JSON path or dict), ``scenario`` (Scenario
-    keyword arguments), optional ``engine`` ('reference' or 'exudyn'),
+    keyword arguments), optional ``engine`` ('reference', 'exudyn' or 'reduced'),
     ``lubricant`` (Lubricant keyword arguments) and ``refine`` (default 0):
     how many times a run that blows up (SimulationError) or warns that its
     step was unstable (StepSizeWarning, e.g. the cage loads it reached) is

@@ -1,4 +1,4 @@
-"""``simulate [BEARING]``: dynamic simulation with the reference engine or the Exudyn element."""
+"""``simulate [BEARING]``: dynamic simulation with the reference engine, the Exudyn element or the reduced engine."""
 from __future__ import annotations
 
 import argparse
@@ -12,7 +12,7 @@ from ..model.scenario import CONTROLS, INITIAL_STATES, TRACTION_LEVELS, Scenario
 from ..outputs.jsonio import to_jsonable
 from ..outputs.tables import summary_rows
 from ..physics.hertz import METHODS
-from ..simulate import simulate
+from ..simulate import ENGINES, simulate
 from .common import (add_strip_arguments, add_bearing_argument, add_lubricant_argument, add_ring_growth_argument, add_speed_arguments,
                      add_traction_argument, bearing_from_args, finite_float, lubricant_from_args,
                      omega_from_args, print_table)
@@ -27,8 +27,10 @@ def add_parser(sub):
                                    "steady phase of a --ramp protocol (else over the last quarter of the run) "
                                    "and its window.")
     add_bearing_argument(p, default="6208")
-    p.add_argument("--engine", default="reference", choices=("reference", "exudyn"),
-                   help="numba DEM reference core, or the same scene in Exudyn with the bearing element")
+    p.add_argument("--engine", default="reference", choices=ENGINES,
+                   help="numba DEM reference core, the same scene in Exudyn with the bearing element, or the "
+                        "reduced engine (ball centres on their force balance, steps of tens of us: --dt 2e-5; "
+                        "takes --cage none and --traction-level ellipse or --friction regularized)")
     p.add_argument("--Fr", type=finite_float, default=0.0, help="radial load [N] (default 0; the README's example: "
                                                                "--Fr 3000 --omega 500)")
     p.add_argument("--Fa", type=finite_float, default=0.0, help="axial load [N]")

@@ -5,7 +5,24 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any
 
-__all__ = ["RunRecord", "RunInterrupted"]
+import numpy as np
+
+from .layout import NDIAG, NGLOBAL
+
+__all__ = ["RunRecord", "RunInterrupted", "sample_buffers"]
+
+
+def sample_buffers(n_samples: int, z: int) -> dict:
+    """The zeroed sample buffers of a dynamic engine's run of ``n_samples`` samples and ``z`` balls: the
+    arrays of :attr:`RunRecord.data` (``t``, ``glob``, ``diag``, ``cage_load``, ``xb``, ``vb``, ``wb``, ``xc``,
+    ``vc``, ``ring``; layouts in :mod:`.layout`), one row per sample."""
+    return {
+        "t": np.zeros(n_samples), "glob": np.zeros((n_samples, NGLOBAL)),
+        "diag": np.zeros((n_samples, z, 2, NDIAG)), "cage_load": np.zeros((n_samples, z, 2)),
+        "xb": np.zeros((n_samples, z, 3)), "vb": np.zeros((n_samples, z, 3)),
+        "wb": np.zeros((n_samples, z, 3)), "xc": np.zeros((n_samples, z, 3)),
+        "vc": np.zeros((n_samples, z, 3)), "ring": np.zeros((n_samples, 6)),
+    }
 
 
 @dataclass

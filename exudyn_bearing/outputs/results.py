@@ -103,6 +103,11 @@ CHURNING_NOT_MODELLED = "churning in an oil bath (the drag through the oil-air m
 #: level's own ``losses_not_modelled``).
 DYNAMIC_NOT_MODELLED = ("cage land friction (the cage balls' guide contact is frictionless)",
                         "seal friction (open bearing)")
+#: What an engine leaves out beyond its losses (``not_modelled`` of its summaries).
+ENGINE_NOT_MODELLED = {
+    "reduced": ("the ball / race contact vibration (reduced engine: the ball centres sit on their normal force "
+                "balance; no impacts at the contact's frequency, so defect signals stay with the reference engine)",),
+}
 #: Note of a point-level summary on its losses, by friction law.
 POINT_LEVEL_NOTES = {
     "history": ("point traction level: no rolling losses; the tangential Cundall-Strack spring stores energy, so "
@@ -414,7 +419,8 @@ class Results:
         floor = energy_floor(self._loss_floor(), np.mean(self.global_series("omega")[w]))
         check = energy_check(energy["drive_power"], comp, energy["kinetic_energy_change"], dur, recorded, floor)
         return {"power_loss": comp, "power_loss_total": check["power_loss_total"],
-                "not_modelled": self.losses_lists()[1] + list(self.cage_not_modelled()),
+                "not_modelled": (self.losses_lists()[1] + list(self.cage_not_modelled())
+                                 + list(ENGINE_NOT_MODELLED.get(self.engine, ()))),
                 "energy_check": check}
 
     def cage_not_modelled(self) -> tuple:

@@ -22,7 +22,7 @@ from ...model.layout import G_LAND_ECC, G_WORST, H_E1, NDIAG, NGLOBAL, NSIGNAL, 
 from ...model.memory import ESTIMATE_AFTER_S, wall_time_message
 from ...model.motion import ring_poses
 from ...model.parameters import scene_parameters
-from ...model.record import RunInterrupted, RunRecord
+from ...model.record import RunInterrupted, RunRecord, sample_buffers
 from ...model.scenario import Scenario, resolve_cage
 from ...model.stability import SimulationError, StepSizeWarning, cage_load_check, land_step_check, runaway_error, stable_step, step_warning
 from ...physics import hertz
@@ -117,13 +117,7 @@ class ReferenceEngine:
         tb = np.zeros((z, 3))
         fc = np.zeros((z, 3))
         fring = np.zeros(3)
-        buf = {
-            "t": np.zeros(n_samples), "glob": np.zeros((n_samples, NGLOBAL)),
-            "diag": np.zeros((n_samples, z, 2, NDIAG)), "cage_load": np.zeros((n_samples, z, 2)),
-            "xb": np.zeros((n_samples, z, 3)), "vb": np.zeros((n_samples, z, 3)),
-            "wb": np.zeros((n_samples, z, 3)), "xc": np.zeros((n_samples, z, 3)),
-            "vc": np.zeros((n_samples, z, 3)), "ring": np.zeros((n_samples, 6)),
-        }
+        buf = sample_buffers(n_samples, z)
         sig_every = s.signal_every
         s_sig = np.zeros((n_steps // sig_every if sig_every else 0, 1 + NSIGNAL))
         sig_acc = np.zeros(NSIGNAL + 1)

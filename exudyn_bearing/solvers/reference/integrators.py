@@ -24,33 +24,16 @@ import numpy as np
 
 from ..._jit import kernel
 from ...model.contact import accumulate_energy, forces
-from ...model.layout import (NSIGNAL, P_AXIAL_FREE, P_CAGE, P_DT, P_FA, P_FR, P_IB, P_MAX_OVERLAP, P_MB, P_MR,
-                             P_MZ, P_NDEF, P_RIGID, P_T_DOWN, P_T_STEADY, P_T_UP, P_W_MAX, R_ANGLE)
-from ...model.motion import kick_drift, omega_profile, spin_angle
+from ...model.layout import (NSIGNAL, P_CAGE, P_DT, P_IB, P_MAX_OVERLAP, P_MB, P_MR,
+                             P_MZ, P_RIGID)
+from ...model.engine_steps import finite as _finite
+from ...model.engine_steps import finite_ring as _finite_ring
+from ...model.engine_steps import inner_ring_force as _inner_ring_force
+from ...model.engine_steps import set_inner_ring as _set_inner_ring
+from ...model.engine_steps import store_sample as _store
+from ...model.motion import kick_drift
 
 __all__ = ["run_verlet", "run_rk4", "evaluate"]
-
-
-@kernel(inline="always")
-def _set_inner_ring(t, p, ring, rings, defect_path):
-    """Reference engine: the inner ring translates (state ``ring``: position,
-    velocity) and spins at the protocol speed; the outer ring stays fixed.
-    Its rotation matrix stays the identity; with defects in the scene its
-    spin angle (the protocol's integral) goes to ``R_ANGLE`` (compiled only
-    with a ``defect_path``, :func:`~exudyn_bearing.model.contact.forces`)."""
-    for d in range(6):
-        rings[0, d] = ring[d]
-    rings[0, 17] = omega_profile(t, p[P_W_MAX], p[P_T_UP], p[P_T_STEADY], p[P_T_DOWN])
-    if defect_path is not None and p[P_NDEF] > 0.0:
-        rings[0, R_ANGLE] = spin_angle(t, p[P_W_MAX], p[P_T_UP], p[P_T_STEADY], p[P_T_DOWN])
-
-
-@kernel(inline="always")
-def _inner_ring_force(p, fr, fring):
-    """Force that accelerates the inner ring: applied load plus the ball reactions."""
-    fring[0] = p[P_FR] + fr[0, 0]
-    fring[1] = fr[0, 1]
-    fring[2] = (p[P_FA] + fr[0, 2]) if p[P_AXIAL_FREE] > 0.5 else 0.0
 
 
 @kernel
@@ -63,30 +46,6 @@ def evaluate(t, p, table, xb, vb, wb, xc, vc, ring, rings, hist, hz, fb, tb, fc,
                    cage_load, want, defect_path, ellipse_path, loss_path)
     _inner_ring_force(p, fr, fring)
     return worst
-
-
-@kernel(inline="always")
-def _store(k, t, glob, diag, cage_load, xb, vb, wb, xc, vc, ring,
-           s_t, s_glob, s_diag, s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring):
-    """Copy the state and diagnostics into row k of the sample buffers
-    (element by element: numba's broadcasting row assignment compiled for
-    about 10 s of a cold start)."""
-    s_t[k] = t
-    for i in range(glob.shape[0]):
-        s_glob[k, i] = glob[i]
-    for i in range(ring.shape[0]):
-        s_ring[k, i] = ring[i]
-    for j in range(xb.shape[0]):
-        for r in range(diag.shape[1]):
-            for i in range(diag.shape[2]):
-                s_diag[k, j, r, i] = diag[j, r, i]
-            s_cage[k, j, r] = cage_load[j, r]
-        for d in range(3):
-            s_xb[k, j, d] = xb[j, d]
-            s_vb[k, j, d] = vb[j, d]
-            s_wb[k, j, d] = wb[j, d]
-            s_xc[k, j, d] = xc[j, d]
-            s_vc[k, j, d] = vc[j, d]
 
 
 @kernel(internal=True)
@@ -107,27 +66,6 @@ def _signal_step(k_step, t, p, rings, fr, fring, sig_every, sig_acc, s_sig):
             sig_acc[NSIGNAL] = row + 1
         for c in range(NSIGNAL):
             sig_acc[c] = 0.0
-
-
-@kernel(no_runtime=True, internal=True)
-def _finite(a):
-    """True when every entry of the 2-D array ``a`` is finite (a loop: numba's
-    np.all(np.isfinite(...)) compiled for about 0.6 s of a cold start)."""
-    for i in range(a.shape[0]):
-        for k in range(a.shape[1]):
-            if not math.isfinite(a[i, k]):
-                return False
-    return True
-
-
-@kernel(inline="always")
-def _finite_ring(ring):
-    """True when the ring state (6,) is finite (the 2-D check on a reshaped view made the integrator
-    need numba's memory runtime for the view)."""
-    for d in range(ring.shape[0]):
-        if not math.isfinite(ring[d]):
-            return False
-    return True
 
 
 @kernel(no_runtime=True)

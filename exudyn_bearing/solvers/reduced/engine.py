@@ -1,0 +1,205 @@
+"""Driver of the reduced engine (docs/theory/reduced.md): the ball centres on their normal force balance
+at every step (the reduction of Walters 1971 and of Gupta's ADORE), the ball speeds and the inner ring
+advanced by a linearly implicit (BDF2) step, so that the step is not bound by the ball / race contact
+vibration. Same contact kernel, parameter vector, initial state, samples and
+:class:`~exudyn_bearing.model.record.RunRecord` as the reference engine
+(:mod:`exudyn_bearing.solvers.reference`), so :class:`~exudyn_bearing.outputs.results.Results`, the summary,
+the energy balance and the steady-state verdict read it unchanged.
+"""
+from __future__ import annotations
+
+import sys
+import time
+
+import numpy as np
+
+from ..._jit import announce_compilation
+from ...data import InputError, Lubricant, default_lubricant, load_bearing
+from ...model.contact import forces, scene_loss_path, scene_paths
+from ...model.initial_state import initial_state
+from ...model.layout import HIST_N, NDIAG, NGLOBAL
+from ...model.motion import ring_poses
+from ...model.parameters import scene_parameters
+from ...model.record import RunInterrupted, RunRecord, sample_buffers
+from ...model.scenario import Scenario, resolve_cage
+from ...model.stability import SimulationError
+from ...physics import hertz
+from .stepper import N_WORK, W_EVALS, W_ITER, W_ITER_MAX, W_REFRESH, W_UNCONVERGED, run_reduced
+
+__all__ = ["ReducedEngine", "reduced_support_error", "BALANCE_TOL", "MAX_ITER", "CHUNK_STEPS"]
+
+#: Newton tolerance of the balls' force balance [m]: the centre's last correction (1e-7 of the 1e-5 m
+#: overlap of a loaded ball; its load to about 1.5e-7).
+BALANCE_TOL = 1e-12
+#: Newton iterations of a step's force balance at most (a step that needs more is counted in the summary's
+#: ``reduced.unconverged_steps`` and goes on from the last iterate).
+MAX_ITER = 12
+#: Steps over which the Jacobians of the ball speeds and of the ring are kept at most.
+JAC_EVERY = 2
+#: Change of a ball's load proxy (its overlaps^1.5), relative to the largest ball's, that retakes the Jacobians
+#: before JAC_EVERY steps (a ball entering or leaving the load zone).
+JAC_TOL = 0.1
+#: The ring's Jacobians are retaken at every RING_EVERY-th retaking of the balls' (the ring's stiffness moves
+#: little as the balls pass).
+RING_EVERY = 1
+#: Steps of a chunk (the progress line's and Ctrl-C's granularity).
+CHUNK_STEPS = 2000
+
+def reduced_support_error(scenario: Scenario, bearing) -> InputError | None:
+    """The InputError naming what ``scenario`` asks of the reduced engine that it does not model on ``bearing``
+    (None when it models all of it)."""
+    s = resolve_cage(scenario, bearing)
+    if s.cage == "torus":
+        return InputError("cage: the reduced engine does not take the torus cage (its light cage balls on their "
+                          "own contacts would set the step again); use cage='none' or the reference engine")
+    if s.cage == "rigid":
+        return InputError("cage: the reduced engine's first version takes cage='none' only (the rigid cage's "
+                          "pocket contacts are not yet treated implicitly); use cage='none' or the reference engine")
+    if s.traction_level == "point" and s.friction == "history":
+        return InputError("friction: 'history' (the Cundall-Strack spring) is non-smooth and stays with the "
+                          "reference engine; the reduced engine takes friction='regularized' or 'none' at the "
+                          "point level, or traction_level='ellipse'")
+    if s.defects:
+        return InputError("defects: the reduced engine leaves out the ball / race contact vibration, so defect "
+                          "impacts and their signals stay with the reference engine")
+    if s.signal_dt is not None:
+        return InputError("signal_dt: the condition-monitoring signals (contact vibration) are recorded by the "
+                          "reference engine only")
+    return None
+
+
+def _orbital(wb, phi):
+    """World-frame angular velocities (Z, 3) in the orbital frames (e_r, e_t, e_z) at the angles ``phi``."""
+    c, s = np.cos(phi), np.sin(phi)
+    return np.stack([wb[:, 0] * c + wb[:, 1] * s, -wb[:, 0] * s + wb[:, 1] * c, wb[:, 2]], axis=1)
+
+
+class ReducedEngine:
+    """The reduced engine for one bearing, lubricant and scenario (``Scenario.dt`` its step, typically
+    10-50 us; the scenario's ``integrator`` names the reference engine's scheme and is not used).
+
+    Parameters as :class:`~exudyn_bearing.solvers.reference.ReferenceEngine`; a scenario asking for what the
+    engine does not model raises InputError naming it (:func:`reduced_support_error`).
+    """
+
+    name = "reduced"
+
+    def __init__(self, bearing, scenario: Scenario, lubricant: Lubricant | None = None, start: dict | None = None):
+        b = load_bearing(bearing)
+        if scenario.Pd is not None:
+            b = b.with_clearance(scenario.Pd)
+        err = reduced_support_error(scenario, b)
+        if err is not None:
+            raise err
+        announce_compilation(forces, run_reduced)
+        self.bearing = b
+        self.start = start
+        self.scenario = scenario = resolve_cage(scenario, b)
+        self.lubricant = default_lubricant(b) if lubricant is None else lubricant
+        self.params = scene_parameters(b, scenario, self.lubricant)
+        self.table = hertz.exact_table()
+        self.work = np.zeros(N_WORK)
+        self.jac_every, self.jac_tol, self.ring_every = JAC_EVERY, JAC_TOL, RING_EVERY
+
+    def initial_state(self):
+        """The reduced state at t = 0 from the scene's initial state
+        (:func:`exudyn_bearing.model.initial_state.initial_state`): orbital angle, radius and axial position,
+        orbital speed of each ball centre, the ball angular velocities and the ring."""
+        st = initial_state(self.bearing, self.scenario, self.start)
+        xb, vb = st["xb"], st["vb"]
+        r = np.hypot(xb[:, 0], xb[:, 1])
+        return {"phi": np.arctan2(xb[:, 1], xb[:, 0]), "om": (xb[:, 0] * vb[:, 1] - xb[:, 1] * vb[:, 0]) / r ** 2,
+                "wo": _orbital(st["wb"], np.arctan2(xb[:, 1], xb[:, 0])), "q": np.stack([r, xb[:, 2]], axis=1), "ring": st["ring"].copy(),
+                "hz": st["hz"], "static": st["static"]}
+
+    def run(self, progress=None, chunk_steps=None):
+        """Integrate the scenario; returns the :class:`~exudyn_bearing.model.record.RunRecord` (``progress``
+        True prints progress on stderr; Ctrl-C between chunks raises RunInterrupted with the samples so
+        far)."""
+        s = self.scenario
+        p = self.params
+        dt = s.dt
+        n_steps = int(round(s.t_end / dt))
+        every = max(1, int(round(s.sample_dt / dt)))
+        n_samples = n_steps // every
+        z = self.bearing.n_balls
+        st = self.initial_state()
+        phi, om, wo, q, ring, hz = st["phi"], st["om"], st["wo"], st["q"], st["ring"], st["hz"]
+        wb = np.zeros((z, 3))
+        q_old = q.copy()
+        prev, ring_prev = np.zeros((z, 5)), np.zeros(6)  # the state of the step before (BDF2)
+        xb, vb = np.zeros((z, 3)), np.zeros((z, 3))
+        xc, vc = np.zeros((z, 3)), np.zeros((z, 3))
+        fb, tb, fc = np.zeros((z, 3)), np.zeros((z, 3)), np.zeros((z, 3))
+        fr, fring = np.zeros((2, 6)), np.zeros(3)
+        hist = np.zeros((z, HIST_N, 3))
+        rings = ring_poses()
+        glob = np.zeros(NGLOBAL)
+        diag, cage_load = np.zeros((z, 2, NDIAG)), np.zeros((z, 2))
+        buf = sample_buffers(n_samples, z)
+        defect_path, ellipse_path = scene_paths(p)
+        loss_path = scene_loss_path(p)
+        work = self.work
+
+        def call(m, done, k_samp):
+            sl = slice(k_samp, n_samples)
+            return run_reduced(m, done * dt, dt, p, self.table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings,
+                               hist, hz, fb, tb, fc, fr, fring, glob, diag, cage_load, BALANCE_TOL, MAX_ITER, every,
+                               done, buf["t"][sl], buf["glob"][sl], buf["diag"][sl], buf["cage_load"][sl],
+                               buf["xb"][sl], buf["vb"][sl], buf["wb"][sl], buf["xc"][sl], buf["vc"][sl],
+                               buf["ring"][sl], work, True, self.jac_every, self.jac_tol, self.ring_every, prev,
+                               ring_prev,
+                               defect_path, ellipse_path, loss_path)
+
+        # compile (or load from the cache) before the clock starts: zero steps on copies of the state
+        saved = [a.copy() for a in (phi, om, wo, q, q_old, ring, hz, glob, work, prev, ring_prev)]
+        call(0, 0, 0)
+        for a, b in zip((phi, om, wo, q, q_old, ring, hz, glob, work, prev, ring_prev), saved):
+            a[...] = b
+        chunk = chunk_steps or CHUNK_STEPS
+        done = 0
+        k_samp = 0
+        wall0 = time.perf_counter()
+        last = wall0
+        line_open = False
+        try:
+            while done < n_steps:
+                m = min(chunk, n_steps - done)
+                steps, ns, status = call(m, done, k_samp)
+                done += steps
+                k_samp += ns
+                if status != 0:
+                    what = ("non-finite state" if status == 1 else
+                            "runaway overlap (above 5 % of the ball radius, at a ball / race or a ball / ball contact)")
+                    raise SimulationError(f"reduced engine: {what} at t = {done * dt:.4g} s with dt = {dt:.3g} s; "
+                                          "its ball / ball contacts (no cage) are explicit, so balls that collide "
+                                          "(a run-up from rest) need the reference engine; else a smaller dt")
+                if progress and (time.perf_counter() - last > 0.5 or done >= n_steps):
+                    last = time.perf_counter()
+                    print(f"\r[reduced] t = {done * dt:.4f}/{s.t_end:.4f} s  wall {last - wall0:6.1f} s", end="",
+                          file=sys.stderr, flush=True)
+                    line_open = True
+            wall = time.perf_counter() - wall0
+        except KeyboardInterrupt:
+            raise RunInterrupted(done * dt, s.t_end, self._record(buf, k_samp, done, time.perf_counter() - wall0,
+                                                                  st)) from None
+        finally:
+            if line_open:
+                print(file=sys.stderr)
+        return self._record(buf, k_samp, done, wall, st)
+
+    def stats(self, steps: int) -> dict:
+        """Work of the run: Newton iterations of the force balance per step (mean, worst), force evaluations
+        per step, steps whose balance did not converge within MAX_ITER."""
+        w = self.work
+        n = max(steps, 1)
+        return {"newton_per_step": float(w[W_ITER]) / n, "newton_max": int(w[W_ITER_MAX]),
+                "evaluations_per_step": float(w[W_EVALS]) / n, "unconverged_steps": int(w[W_UNCONVERGED]),
+                "jacobian_steps": int(w[W_REFRESH])}
+
+    def _record(self, buf, k_samp, done, wall, st) -> RunRecord:
+        data = {k: v[:k_samp] for k, v in buf.items()}
+        rec = RunRecord(self.bearing, self.scenario, self.lubricant, data, steps=done, wall_s=wall,
+                        engine=self.name, stable_dt=None, static=st["static"])
+        rec.reduced_stats = self.stats(done)  # the engine's work (not a sampled series)
+        return rec

@@ -1,0 +1,478 @@
+"""Compiled step of the reduced engine (docs/theory/reduced.md): the ball centres on their normal force
+balance at every step, the ball states and the inner ring advanced by a linearly implicit BDF2 step, over
+the shared contact kernel :func:`exudyn_bearing.model.contact.forces`.
+
+State (outer-ring frame = world frame, the bearing axis z):
+
+* ``phi``, ``om`` (Z,): the orbital angle [rad] and orbital speed [rad/s] of each ball centre;
+* ``wo`` (Z, 3): ball angular velocities [rad/s] in the ball's orbital frame (e_r, e_t, e_z), which turns
+  with it (a steady ball has a constant ``wo``: a fixed point of the implicit step, where the world-frame
+  vector turns and the step's frozen Jacobian would resist its turning); ``wb`` its world-frame value for
+  the kernel;
+* ``q`` (Z, 2): the centre's radius r and axial position z [m], solved from the normal force balance
+  ``R_j(q) = (f_j . e_r + m_b r om_j^2, f_j . e_z) = 0`` (f_j the contact kernel's force on ball j, the
+  centrifugal force m_b r om^2 the balance's inertia term); ``q_old`` its value one step earlier;
+* ``ring`` (6,): inner-ring position and velocity (it translates; its spin follows the protocol, as in the
+  reference engine, :func:`~exudyn_bearing.model.engine_steps.set_inner_ring`).
+
+The ball centre's velocity handed to the contact kernel is r om e_t plus the radial and axial rate
+``(q - q_old) / dt``: inside the step's force balance the backward difference of the equilibrium positions,
+so that the normal damping of the contacts acts on the centre's actual (quasi-static) motion through the load
+zone. The Coriolis term of the orbital equation, m_b (r om' + 2 r' om) = f . e_t, takes the same rate.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..._jit import kernel
+from ...model.contact import accumulate_energy, forces
+from ...model.layout import HZ_GEO, P_IB, P_MAX_OVERLAP, P_MB, P_MR, P_RB
+from ...model.engine_steps import finite, finite_ring, inner_ring_force, set_inner_ring, store_sample
+
+__all__ = ["reduced_evaluate", "run_reduced", "N_WORK"]
+
+#: Slots of the run's work vector ``work`` (floats kept across calls): the step's Newton iterations in total,
+#: the Newton iterations of the worst step, the force evaluations in total, the steps whose force balance did
+#: not converge within ``max_iter``, the balance Jacobians taken, the steps that took the speeds' and the ring's
+#: Jacobians, and 1 once the state of the step before is kept (``prev``, ``ring_prev``: the BDF2 step).
+N_WORK = 7
+W_ITER, W_ITER_MAX, W_EVALS, W_UNCONVERGED, W_JAC, W_REFRESH, W_HAVE_PREV = 0, 1, 2, 3, 4, 5, 6
+#: Surface-speed perturbation [m/s] of the finite-difference Jacobian of the ball speeds (the traction's
+#: low-slip slope is resolved down to slips far below the regularising speeds, 1e-3 m/s and more).
+H_SPEED = 1e-6
+#: Position perturbation [m] of the Jacobians of the force balance and of the ring force (1e-4 of the
+#: 1e-5 m Hertz overlaps of loaded balls: the forward difference's error stays below 1e-4 of the stiffness).
+H_POS = 1e-9
+#: Orbital-angle perturbation [rad] of the forces' dependence on the ball's place in the load zone.
+H_ANGLE = 1e-7
+
+
+@kernel(internal=True)
+def reduced_evaluate(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb, tb, fc,
+                     fr, fring, glob, diag, cage_load, want, res, acc, defect_path, ellipse_path, loss_path):
+    """Forces of the reduced state at time t: the ball centres (r cos phi, r sin phi, z) moving at
+    r om e_t + (q - q_old) / dt, the contact kernel's forces, then per ball the residual of the normal force
+    balance ``res`` (Z, 2) [N] and the accelerations ``acc`` (Z, 4): om' [rad/s^2] and w' (3) [rad/s^2];
+    ``fring`` the force that accelerates the inner ring. Returns the kernel's largest overlap ratio."""
+    z = phi.shape[0]
+    mb = p[P_MB]
+    inv_dt = 1.0 / dt
+    for j in range(z):
+        c = math.cos(phi[j])
+        s = math.sin(phi[j])
+        r = q[j, 0]
+        rd = (q[j, 0] - q_old[j, 0]) * inv_dt
+        zd = (q[j, 1] - q_old[j, 1]) * inv_dt
+        xb[j, 0] = r * c
+        xb[j, 1] = r * s
+        xb[j, 2] = q[j, 1]
+        vb[j, 0] = rd * c - r * om[j] * s
+        vb[j, 1] = rd * s + r * om[j] * c
+        vb[j, 2] = zd
+        wb[j, 0] = wo[j, 0] * c - wo[j, 1] * s
+        wb[j, 1] = wo[j, 0] * s + wo[j, 1] * c
+        wb[j, 2] = wo[j, 2]
+    set_inner_ring(t, p, ring, rings, defect_path)
+    worst = forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist, dt, hz, fb, tb, fc, fr, glob, diag, cage_load,
+                   want, defect_path, ellipse_path, loss_path)
+    inner_ring_force(p, fr, fring)
+    inv_ib = 1.0 / p[P_IB]
+    for j in range(z):
+        c = math.cos(phi[j])
+        s = math.sin(phi[j])
+        r = q[j, 0]
+        rd = (q[j, 0] - q_old[j, 0]) * inv_dt
+        f_r = fb[j, 0] * c + fb[j, 1] * s
+        f_t = -fb[j, 0] * s + fb[j, 1] * c
+        res[j, 0] = f_r + mb * r * om[j] * om[j]
+        res[j, 1] = fb[j, 2]
+        acc[j, 0] = (f_t - 2.0 * mb * rd * om[j]) / (mb * r)
+        # w_o' = A^T T / I - om e_z x w_o in the orbital frame (e_r, e_t, e_z), which turns with the ball
+        acc[j, 1] = (tb[j, 0] * c + tb[j, 1] * s) * inv_ib + om[j] * wo[j, 1]
+        acc[j, 2] = (-tb[j, 0] * s + tb[j, 1] * c) * inv_ib - om[j] * wo[j, 0]
+        acc[j, 3] = tb[j, 2] * inv_ib
+    return worst
+
+
+@kernel(no_runtime=True, internal=True)
+def _solve_small(a, b, n):
+    """Solve a x = b in place (b becomes x) for the n x n matrix a (overwritten) by Gaussian elimination
+    with partial pivoting; returns False when a pivot vanishes."""
+    for k in range(n):
+        piv = k
+        big = abs(a[k, k])
+        for i in range(k + 1, n):
+            if abs(a[i, k]) > big:
+                big = abs(a[i, k])
+                piv = i
+        if big == 0.0 or not math.isfinite(big):
+            return False
+        if piv != k:
+            for m in range(n):
+                a[k, m], a[piv, m] = a[piv, m], a[k, m]
+            b[k], b[piv] = b[piv], b[k]
+        for i in range(k + 1, n):
+            f = a[i, k] / a[k, k]
+            for m in range(k, n):
+                a[i, m] -= f * a[k, m]
+            b[i] -= f * b[k]
+    for k in range(n - 1, -1, -1):
+        s = b[k]
+        for m in range(k + 1, n):
+            s -= a[k, m] * b[m]
+        b[k] = s / a[k, k]
+    return True
+
+
+@kernel(no_runtime=True, internal=True)
+def _implicit_step(jm, f, y, y_prev, n, gam, dt, bdf2, a, d):
+    """One linearly implicit step of y' = f(y) for the n states ``y`` (updated in place; ``y_prev`` takes y_n):
+    BDF2 (``gam`` 2/3, ``bdf2`` True), one Newton step of y_{n+1} - 4/3 y_n + 1/3 y_{n-1} = gam dt f(y_{n+1})
+    from the extrapolation 2 y_n - y_{n-1} with f there f_n + J (y_n - y_{n-1}); or Euler (``gam`` 1, ``bdf2``
+    False), (I - dt J) dy = dt f_n. ``jm`` the n x n Jacobian J, ``f`` f_n (overwritten), ``a``, ``d`` scratch.
+    Returns False when the step's matrix is singular."""
+    for i in range(n):
+        d[i] = y[i] - y_prev[i] if bdf2 else 0.0
+    for i in range(n):
+        fi = f[i]
+        for k in range(n):
+            fi += jm[i, k] * d[k]
+            a[i, k] = -gam * dt * jm[i, k]
+        a[i, i] += 1.0
+        f[i] = gam * dt * fi - gam * d[i]
+    if not _solve_small(a, f, n):
+        return False
+    for i in range(n):
+        y_prev[i] = y[i]
+        y[i] += d[i] + f[i]
+    return True
+
+
+@kernel(internal=True)
+def _balance(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb, tb, fc, fr, fring,
+             glob, diag, cage_load, res, acc, g, r0, done, tol, max_iter, work, fresh, defect_path, ellipse_path,
+             loss_path):
+    """Solve the normal force balance of every ball for q (warm start: q on entry) by Newton's method with
+    the per-ball 2 x 2 Jacobians ``g`` (Z, 2, 2) of dR/dq, taken by differences (one evaluation per
+    component, every ball perturbed at once: balls couple only through the rings, held here) at the first
+    iteration when ``fresh``, else kept from an earlier step, and retaken at an iteration where the residual
+    of a ball not yet converged grew (modified Newton). Where G is not negative definite (a ball without
+    contact, or whose contact is just closing) the iteration adds m_b / dt^2 to the stiffness it inverts, so
+    that a ball whose contacts are all open moves by its force from rest over one step, dq = R dt^2 / m_b,
+    and then stays put for the step (the rule of docs/theory/reduced.md); a loaded ball converges to its
+    balance (|dq| < ``tol``). Leaves the forces of the final q evaluated (the step's committed evaluation).
+    Returns (iterations, converged, worst overlap ratio)."""
+    z = phi.shape[0]
+    k_min = p[P_MB] / (dt * dt)
+    for j in range(z):
+        done[j] = 0.0
+    it = 0
+    converged = False
+    worst = 0.0
+    need_jac = fresh
+    while True:
+        worst = reduced_evaluate(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz,
+                                 fb, tb, fc, fr, fring, glob, diag, cage_load, False, res, acc, defect_path,
+                                 ellipse_path, loss_path)
+        work[W_EVALS] += 1.0
+        if converged or it >= max_iter or not math.isfinite(worst):
+            break
+        for j in range(z):
+            if it > 0 and done[j] < 0.5 and (res[j, 0] * res[j, 0] + res[j, 1] * res[j, 1]
+                                             > r0[j, 0] * r0[j, 0] + r0[j, 1] * r0[j, 1]):
+                need_jac = True  # a kept Jacobian that no longer serves
+            r0[j, 0] = res[j, 0]
+            r0[j, 1] = res[j, 1]
+        if need_jac:
+            need_jac = False
+            work[W_JAC] += 1.0
+            for c in range(2):
+                for j in range(z):
+                    q[j, c] += H_POS
+                reduced_evaluate(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz,
+                                 fb, tb, fc, fr, fring, glob, diag, cage_load, False, res, acc, defect_path,
+                                 ellipse_path, loss_path)
+                work[W_EVALS] += 1.0
+                for j in range(z):
+                    q[j, c] -= H_POS
+                    g[j, 0, c] = (res[j, 0] - r0[j, 0]) / H_POS
+                    g[j, 1, c] = (res[j, 1] - r0[j, 1]) / H_POS
+        it += 1
+        converged = True
+        for j in range(z):
+            if done[j] > 0.5:
+                continue
+            # dq = -G^-1 R, G = dR/dq, negative definite where the contacts hold the ball; where it is not
+            # (no contact, or a contact just closing), -(G - k_min I)^-1 R
+            a11 = g[j, 0, 0]
+            a12 = g[j, 0, 1]
+            a21 = g[j, 1, 0]
+            a22 = g[j, 1, 1]
+            det = a11 * a22 - a12 * a21
+            if not (det > 1e-6 * k_min * k_min and a11 + a22 < 0.0):
+                a11 -= k_min
+                a22 -= k_min
+                det = a11 * a22 - a12 * a21
+            d0 = -(a22 * r0[j, 0] - a12 * r0[j, 1]) / det
+            d1 = -(a11 * r0[j, 1] - a21 * r0[j, 0]) / det
+            q[j, 0] += d0
+            q[j, 1] += d1
+            open_contacts = hz[j, 0, HZ_GEO + 6] <= 0.0 and hz[j, 1, HZ_GEO + 6] <= 0.0
+            if open_contacts or math.sqrt(d0 * d0 + d1 * d1) < tol:
+                done[j] = 1.0  # converged, or free: moved once from rest, then held for the step
+            else:
+                converged = False
+    # hz[.., HZ_GEO + 6] above is the overlap of the evaluation at the q before the update
+    work[W_ITER] += it
+    if it > work[W_ITER_MAX]:
+        work[W_ITER_MAX] = it
+    if not converged:
+        work[W_UNCONVERGED] += 1.0
+    return it, converged, worst
+
+
+@kernel
+def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb, tb,
+                fc, fr, fring, glob, diag, cage_load, tol, max_iter, sample_every, step0, s_t, s_glob, s_diag,
+                s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring, work, ring_free, jac_every, jac_tol, ring_every, prev, ring_prev,
+                defect_path=True, ellipse_path=True, loss_path=True):
+    """``n_steps`` steps of the reduced engine from t0 (module docstring; docs/theory/reduced.md).
+
+    Each step from t_n: (1) the forces at t_n (the balls on their balance of the last step); the Jacobians of
+    (2) and (3) are retaken at a chunk's first step, after ``jac_every`` steps, and where a ball's load proxy
+    (the overlaps^1.5 of its contacts) moved by more than ``jac_tol`` of the largest ball's since, else kept;
+    (2) the per-ball Jacobian of (om', w') in (phi, om, w) by differences, one evaluation per component with
+    every ball perturbed at once (phi: the ball's place in the load zone, whose geometry the step would otherwise take
+    one step late); (3) with ``ring_free``, the inner ring's 3 x 3 stiffness K, condensed over the balls'
+    force balance, and damping C (balls held) by differences; (4) linearly implicit BDF2 of each ball's
+    (phi, om, w_o) and of the ring's (x, v): one Newton step of y_{n+1} - 4/3 y_n + 1/3 y_{n-1} =
+    2/3 dt f(y_{n+1}) from the extrapolation 2 y_n - y_{n-1}, with f there f_n + J (y_n - y_{n-1}) (no force
+    evaluation beyond the step's), linearly implicit Euler where the state before is not yet kept (``prev``
+    (Z, 5), ``ring_prev`` (6), flag in ``work``); (5) the balls' force balance at t_{n+1} (:func:`_balance`),
+    warm started by the extrapolation 2 q_n - q_{n-1}. The energy integrals take the committed evaluation of each
+    step; every ``sample_every``-th step (counted from ``step0``) goes to the sample buffers (as
+    :func:`~exudyn_bearing.solvers.reference.integrators.run_verlet`).
+    Returns (steps done, samples written, status): 0 ok, 1 non-finite state, 2 runaway overlap."""
+    z = phi.shape[0]
+    mb = p[P_MB]
+    mr = p[P_MR]
+    res = np.zeros((z, 2))
+    acc = np.zeros((z, 4))
+    acc0 = np.zeros((z, 4))
+    jb = np.zeros((z, 4, 4))
+    jphi = np.zeros((z, 4))
+    g = np.zeros((z, 2, 2))
+    r0 = np.zeros((z, 2))
+    done = np.zeros(z)
+    fb0 = np.zeros((z, 3))
+    bmat = np.zeros((z, 3, 3))
+    fring0 = np.zeros(3)
+    kr = np.zeros((3, 3))
+    cr = np.zeros((3, 3))
+    q_n = np.zeros((z, 2))
+    proxy = np.zeros(z)
+    load_ref = np.zeros(z)
+    since = 0
+    n_ref = 0
+    a5 = np.zeros((5, 5))
+    b5 = np.zeros(5)
+    j5 = np.zeros((5, 5))
+    y5 = np.zeros(5)
+    d5 = np.zeros(5)
+    a6 = np.zeros((6, 6))
+    b6 = np.zeros(6)
+    j6 = np.zeros((6, 6))
+    d6 = np.zeros(6)
+    n_samp = np.int64(0)
+    want_no = np.bool_(False)
+    want_yes = np.bool_(True)
+    h_om = H_SPEED / np.mean(q[:, 0])  # a surface speed of H_SPEED at the pitch circle
+    h_w = H_SPEED / p[P_RB]            # and on the ball's surface
+    h_v = H_SPEED
+    # the first step's Jacobians of the force balance
+    it, ok, worst = _balance(t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb, tb,
+                             fc, fr, fring, glob, diag, cage_load, res, acc, g, r0, done, tol, max_iter, work,
+                             want_yes, defect_path, ellipse_path, loss_path)
+    for step in range(n_steps):
+        t = t0 + step * dt
+        # (1) the committed forces at t_n are those of the last balance (acc, fb, fring)
+        for j in range(z):
+            for k in range(4):
+                acc0[j, k] = acc[j, k]
+            for d in range(3):
+                fb0[j, d] = fb[j, d]
+        for d in range(3):
+            fring0[d] = fring[d]
+        # the Jacobians of steps (2), (3): kept for up to jac_every steps, retaken sooner where a ball's load
+        # proxy (overlaps^1.5 of both contacts) moved by more than jac_tol of the largest one
+        big = 0.0
+        moved = 0.0
+        for j in range(z):
+            pj = 0.0
+            for race in range(2):
+                d = hz[j, race, HZ_GEO + 6]
+                if d > 0.0:
+                    pj += d * math.sqrt(d)
+            proxy[j] = pj
+            if load_ref[j] > big:
+                big = load_ref[j]
+            if abs(pj - load_ref[j]) > moved:
+                moved = abs(pj - load_ref[j])
+        refresh = since >= jac_every or moved > jac_tol * big or step == 0
+        since += 1
+        if refresh:
+            since = 1
+            work[W_REFRESH] += 1.0
+            for j in range(z):
+                load_ref[j] = proxy[j]
+            # (2) ball-speed Jacobians: component k of every ball at once; and the forces' dependence on the
+            # orbital angle (the load zone's geometry the ball moves through)
+            for j in range(z):
+                phi[j] += H_ANGLE
+            reduced_evaluate(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb,
+                             tb, fc, fr, fring, glob, diag, cage_load, want_no, res, acc, defect_path, ellipse_path,
+                             loss_path)
+            work[W_EVALS] += 1.0
+            for j in range(z):
+                phi[j] -= H_ANGLE
+                for i in range(4):
+                    jphi[j, i] = (acc[j, i] - acc0[j, i]) / H_ANGLE
+            for k in range(4):
+                h = h_om if k == 0 else h_w
+                for j in range(z):
+                    if k == 0:
+                        om[j] += h
+                    else:
+                        wo[j, k - 1] += h
+                reduced_evaluate(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb, tb,
+                                 fc, fr, fring, glob, diag, cage_load, want_no, res, acc, defect_path, ellipse_path,
+                                 loss_path)
+                work[W_EVALS] += 1.0
+                for j in range(z):
+                    if k == 0:
+                        om[j] -= h
+                    else:
+                        wo[j, k - 1] -= h
+                    for i in range(4):
+                        jb[j, i, k] = (acc[j, i] - acc0[j, i]) / h
+            # (3) the ring's stiffness (condensed over the balls' balance) and damping, at every ring_every-th
+            # retaking of the Jacobians
+            n_ref += 1
+            if ring_free and (n_ref - 1) % ring_every == 0:
+                for k in range(3):
+                    ring[k] += H_POS
+                    reduced_evaluate(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb,
+                                     tb, fc, fr, fring, glob, diag, cage_load, want_no, res, acc, defect_path,
+                                     ellipse_path, loss_path)
+                    work[W_EVALS] += 1.0
+                    ring[k] -= H_POS
+                    for i in range(3):
+                        kr[i, k] = (fring[i] - fring0[i]) / H_POS
+                    for j in range(z):
+                        for i in range(3):
+                            bmat[j, i, k] = (fb[j, i] - fb0[j, i]) / H_POS
+                    ring[3 + k] += h_v
+                    reduced_evaluate(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb,
+                                     tb, fc, fr, fring, glob, diag, cage_load, want_no, res, acc, defect_path,
+                                     ellipse_path, loss_path)
+                    work[W_EVALS] += 1.0
+                    ring[3 + k] -= h_v
+                    for i in range(3):
+                        cr[i, k] = (fring[i] - fring0[i]) / h_v
+                # K += sum_j B_j E_j (-(G_j - k_min I)^-1) E_j^T B_j: dF_ring/dx_b = B_j = dF_b/dx_ring (the contact
+                # force depends on x_b - x_ring; the ring takes its reaction), the balls' q re-solved
+                k_min = mb / (dt * dt)
+                for j in range(z):
+                    c = math.cos(phi[j])
+                    s = math.sin(phi[j])
+                    # E^T B (2 x 3): rows e_r . B, e_z . B
+                    e0 = (c * bmat[j, 0, 0] + s * bmat[j, 1, 0], c * bmat[j, 0, 1] + s * bmat[j, 1, 1],
+                          c * bmat[j, 0, 2] + s * bmat[j, 1, 2])
+                    e1 = (bmat[j, 2, 0], bmat[j, 2, 1], bmat[j, 2, 2])
+                    a11 = g[j, 0, 0] - k_min
+                    a12 = g[j, 0, 1]
+                    a21 = g[j, 1, 0]
+                    a22 = g[j, 1, 1] - k_min
+                    det = a11 * a22 - a12 * a21
+                    # M = -(G - k_min I)^-1 (2 x 2)
+                    m11 = -a22 / det
+                    m12 = a12 / det
+                    m21 = a21 / det
+                    m22 = -a11 / det
+                    for k in range(3):
+                        y0 = m11 * e0[k] + m12 * e1[k]  # dq_r / dx_ring_k
+                        y1 = m21 * e0[k] + m22 * e1[k]  # dq_z / dx_ring_k
+                        # B E y: E y = y0 e_r + y1 e_z
+                        ux, uy, uz = y0 * c, y0 * s, y1
+                        for i in range(3):
+                            kr[i, k] += bmat[j, i, 0] * ux + bmat[j, i, 1] * uy + bmat[j, i, 2] * uz
+        # (4) the ball states y = (phi, om, w_o) and the ring (x, v): linearly implicit BDF2 from the second step
+        # (one Newton step of y_{n+1} - 4/3 y_n + 1/3 y_{n-1} = 2/3 dt f(y_{n+1}) from the extrapolation y_n + D,
+        # D = y_n - y_{n-1}, f there taken as f_n + J D), linearly implicit Euler at the first
+        bdf2 = work[W_HAVE_PREV] > 0.5
+        gam = 2.0 / 3.0 if bdf2 else 1.0
+        for j in range(z):
+            y5[0] = phi[j]
+            y5[1] = om[j]
+            for d in range(3):
+                y5[2 + d] = wo[j, d]
+            for i in range(5):
+                for k in range(5):
+                    j5[i, k] = 0.0
+            j5[0, 1] = 1.0  # phi' = om
+            for i in range(4):
+                j5[1 + i, 0] = jphi[j, i]
+                for k in range(4):
+                    j5[1 + i, 1 + k] = jb[j, i, k]
+            b5[0] = om[j]
+            for i in range(4):
+                b5[1 + i] = acc0[j, i]
+            if not _implicit_step(j5, b5, y5, prev[j], 5, gam, dt, bdf2, a5, d5):
+                return step, n_samp, 1
+            phi[j] = y5[0]
+            om[j] = y5[1]
+            for d in range(3):
+                wo[j, d] = y5[2 + d]
+        if ring_free:
+            for i in range(6):
+                for k in range(6):
+                    j6[i, k] = 0.0
+            for i in range(3):
+                j6[i, 3 + i] = 1.0  # x' = v
+                for k in range(3):
+                    j6[3 + i, k] = kr[i, k] / mr
+                    j6[3 + i, 3 + k] = cr[i, k] / mr
+                b6[i] = ring[3 + i]
+                b6[3 + i] = fring0[i] / mr
+            if not _implicit_step(j6, b6, ring, ring_prev, 6, gam, dt, bdf2, a6, d6):
+                return step, n_samp, 1
+        work[W_HAVE_PREV] = 1.0
+        # (5) the balls' force balance at t_{n+1}, warm started by extrapolation
+        for j in range(z):
+            for c in range(2):
+                q_n[j, c] = q[j, c]
+                q[j, c] = 2.0 * q[j, c] - q_old[j, c]
+                q_old[j, c] = q_n[j, c]
+        t1 = t0 + (step + 1) * dt
+        it, ok, worst = _balance(t1, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb,
+                                 tb, fc, fr, fring, glob, diag, cage_load, res, acc, g, r0, done, tol, max_iter, work,
+                                 want_yes, defect_path, ellipse_path, loss_path)
+        accumulate_energy(glob, dt)
+        want = (step0 + step + 1) % sample_every == 0 and n_samp < s_t.shape[0]
+        if want:
+            reduced_evaluate(t1, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb, tb,
+                             fc, fr, fring, glob, diag, cage_load, want_yes, res, acc, defect_path, ellipse_path,
+                             loss_path)
+            work[W_EVALS] += 1.0
+            store_sample(n_samp, t1, glob, diag, cage_load, xb, vb, wb, xc, vc, ring,
+                   s_t, s_glob, s_diag, s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring)
+            n_samp += 1
+            if not (finite(xb) and finite(vb) and finite(wb) and finite_ring(ring)):
+                return step + 1, n_samp, 1
+        if worst > p[P_MAX_OVERLAP] or not math.isfinite(worst):
+            return step + 1, n_samp, 2
+    if not (finite(q) and finite(wo) and finite_ring(ring)):
+        return n_steps, n_samp, 1
+    return n_steps, n_samp, 0
