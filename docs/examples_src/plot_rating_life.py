@@ -2,8 +2,10 @@
 Load ratings and rating life
 ============================
 
-The load ratings of the catalogue's radial ball bearings from their geometry (ISO 281 C, ISO 76 C_0, the
-fatigue load limit C_u) and the rating life of the 6208 against its radial load at 500 rad/s
+The load ratings of the catalogue's radial ball bearings from their geometry (ISO 281's C, ISO 76's C_0, the
+fatigue load limit C_u; for grooves looser than the standards assume, as the 7208's, C is scaled by the
+conformity relation of ISO/TR 1281-1 and C_0 is the load that puts 4.2 GPa on a contact: the table's last
+column says which) and the rating life of the 6208 against its radial load at 500 rad/s
 (:func:`eb.rating_life <exudyn_bearing.physics.rating_life.rating_life>`): ISO 281's basic life L10h, its
 modified life L10mh (a_ISO from the film parameter kappa of the bearing's oil, normal cleanliness) and, at a
 few loads, ISO/TS 16281's modified reference life L10mrh from the computed load distribution
@@ -17,10 +19,10 @@ import numpy as np
 
 import exudyn_bearing as eb
 
-print("bearing    C [kN]   C0 [kN]   C_u [kN]")
+print("bearing    C [kN]   C0 [kN]   C_u [kN]   C0 from")
 for name in ("6004", "6205", "6208", "7208"):
     r = eb.rating_life(name, (0.0, 0.0))
-    print(f"{name:8s} {r.C / 1e3:8.2f} {r.C0 / 1e3:9.2f} {r.C_u / 1e3:10.3f}")
+    print(f"{name:8s} {r.C / 1e3:8.2f} {r.C0 / 1e3:9.2f} {r.C_u / 1e3:10.3f}   {r.C0_method.split(' (')[0]}")
 
 # %%
 # The 6208's lives against the radial load at 500 rad/s.
