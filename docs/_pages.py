@@ -1,11 +1,11 @@
 """Pages of the documentation written from the repository at build time (docs/conf.py calls
-:func:`write_all`): the example scenarios, one page per folder of validation/ and the validation
+:func:`write_all`): one page per folder of validation/ and per validation script, and the validation
 report. Nothing here runs a simulation: the pages are assembled from the scripts' docstrings,
 tests/test_readme_claims.py's claims and the report the validation scripts last wrote
-(validation/REPORT.md, its figures in validation/report_figures/).
+(validation/REPORT.md, its figures in validation/report_figures/). The examples and the scenarios are
+sphinx-gallery's (docs/conf.py, docs/_gallery.py).
 
-The generated files are listed in .gitignore (docs/examples.md, docs/validation/*.md except
-what is tracked there)."""
+The generated files are listed in .gitignore (docs/validation/)."""
 import ast
 import re
 from pathlib import Path
@@ -146,20 +146,8 @@ def validation_pages(docs, root):
         f"```{{toctree}}\n:maxdepth: 1\n\n{toc}\n```\n")
 
 
-def examples_page(docs, root):
-    """docs/examples.md: the scenarios of scenarios/ with their docstrings (plain pages, not
-    sphinx-gallery: each scenario runs for minutes, too long to execute in the build)."""
-    lines = ["# Example scenarios", "",
-             "Scripts in `scenarios/` that run a whole study; each writes its figures and files under "
-             "`scenarios/out/`. Run one as `python scenarios/NAME.py` from the repository root. "
-             "The short examples are on the repository's front page (README.md) and in the how-to guides.", ""]
-    for p in sorted((root / "scenarios").glob("*.py")):
-        if p.name.startswith("_"):
-            continue
-        lines += [f"## {p.name}", "", "```text", docstring(p) or "(no docstring)", "```", ""]
-    (docs / "examples.md").write_text("\n".join(lines).rstrip() + "\n")
-
-
 def write_all(docs, root):
     validation_pages(docs, root)
-    examples_page(docs, root)
+    # docs/examples.md was the scenarios' page before the gallery (docs/examples/): a copy left in a checkout
+    # would be a page outside every toctree, which -W fails
+    (docs / "examples.md").unlink(missing_ok=True)

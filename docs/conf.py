@@ -1,10 +1,12 @@
 """Sphinx configuration of the exudyn_bearing documentation.
 
 Build: ``pip install -e ".[docs]" && python -m sphinx -W -b html docs docs/_build/html``
-(warnings, broken references included, are errors; .ci/docs runs it).
-The pages are Markdown (MyST): README's guides, docs/theory/*.md as they are,
+(warnings, broken references included, are errors; the last step of .ci/run; docs/developer.md has the time
+it takes). The pages are Markdown (MyST): README's guides, docs/theory/*.md as they are,
 the validation report from the outputs the validation scripts stored (nothing
-reruns here), the API reference from the numpydoc docstrings.
+reruns here), the API reference from the numpydoc docstrings, and a sphinx-gallery of examples: the short
+scripts of docs/examples_src/ run in the build (their output and figures shown), the scenarios of
+scenarios/ rendered from their source with the output the repository stores (not run).
 """
 import os
 import re
@@ -17,6 +19,7 @@ ROOT = DOCS.parent
 sys.path.insert(0, str(DOCS))
 sys.path.insert(0, str(ROOT))
 
+import _gallery  # noqa: E402  (docs/_gallery.py: the example gallery's hooks)
 import _pages  # noqa: E402  (docs/_pages.py: the generated pages)
 
 # autosummary's recursion imports every module of the package, exudyn_bearing/__main__.py too, which runs the
@@ -39,10 +42,12 @@ extensions = [
     "sphinx.ext.autosummary",
     "sphinx.ext.napoleon",
     "sphinx.ext.mathjax",
+    "sphinx_gallery.gen_gallery",
 ]
 source_suffix = {".md": "markdown", ".rst": "restructuredtext"}
 root_doc = "index"
-exclude_patterns = ["_build", "Thumbs.db", ".DS_Store"]
+# examples_src/ holds the gallery's sources (its GALLERY_HEADER.rst goes into the generated examples/index.rst)
+exclude_patterns = ["_build", "Thumbs.db", ".DS_Store", "examples_src"]
 
 # MyST: anchors for headings (docs/theory links to "page.md#heading"), $...$ maths, ::: fences
 myst_heading_anchors = 4
@@ -67,6 +72,27 @@ napoleon_use_ivar = True  # "Attributes" sections as fields: a dataclass field i
 suppress_warnings = ["ref.python", "ref.footnote"]
 
 nitpicky = False  # docstrings name numpy/scipy/exudyn types without intersphinx (no network in the build)
+
+
+
+# The gallery (sphinx-gallery): docs/examples_src/*.py, a few seconds each, are run and shown with their output
+# (docs/examples/, generated); scenarios/*.py, minutes each, are rendered from their source without running
+# (docs/scenarios/, generated), with the output the repository stores (_gallery.stored_output). Generated
+# files stay under docs/ (.gitignore).
+sphinx_gallery_conf = {
+    "examples_dirs": ["examples_src", "../scenarios"],
+    "gallery_dirs": ["examples", "scenarios"],
+    "filename_pattern": re.escape(f"{os.sep}examples_src{os.sep}"),  # run these; the scenarios are not run
+    "ignore_pattern": r"(^|[/\\])(_[^/\\]*|__init__)\.py$",  # scenarios/_printed.py is a helper
+    "within_subsection_order": "FileNameSortKey",
+    "run_stale_examples": True,  # their numbers always come from the code being documented
+    "download_all_examples": False,
+    "notebook_extensions": set(),  # no notebooks: a scenario reads its command line (argparse), not a kernel's
+    "write_computation_times": False,  # each example's page states its own run time
+    "reset_modules": ("matplotlib", "_gallery.example_warnings_are_errors"),  # names: a config value Sphinx can cache
+    "reset_modules_order": "both",
+    "show_signature": False,
+}
 
 html_theme = "pydata_sphinx_theme"
 html_title = "exudyn_bearing"
@@ -130,6 +156,7 @@ def _free_text_after_parameters(app, what, name, obj, options, lines):
 
 
 def setup(app):
+    app.connect("source-read", _gallery.stored_output)
     app.connect("autodoc-process-docstring", _free_text_after_parameters)
     app.connect("autodoc-process-docstring", _escape_bars)
     app.connect("autodoc-process-docstring", _plain_data_and_field_ends)

@@ -1,4 +1,5 @@
-"""The 7208 angular-contact bearing under F_r = F_a = 3000 N at 500 rad/s, both engines.
+"""The 7208 angular-contact bearing under F_r = F_a = 3000 N at 500 rad/s, both engines
+====================================================================================
 
 Runs the reference core and the Exudyn element on the same scene (analytic
 start, torus cage, dt = 0.5 us) and draws the ball loads
@@ -16,6 +17,8 @@ needs dt <= 0.5 us (at 1 us it stops with a dt error after about 15 ms;
 estimate, which assumes cage loads of a tenth of the ball load, is
 optimistic here).
 ``--no-cage`` runs without the cage (ball / ball contact) at 2 us.
+
+Command::
 
     python scenarios/bearing_7208.py [--t-end 0.02]
 """

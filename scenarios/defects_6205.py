@@ -1,4 +1,5 @@
-"""Healthy and damaged 6205 (CWRU test-rig geometry) at 1797 rpm under 1 kN radial load.
+"""Healthy and damaged 6205 (CWRU test-rig geometry) at 1797 rpm under 1 kN radial load
+====================================================================================
 
 Four runs of the reference engine (analytic start, torus cage, lubrication,
 implicit tangential spring, dt = 1/(7 x 48 kHz) = 2.98 us): a healthy bearing,
@@ -22,6 +23,8 @@ CSV beside it:
 * ``defects_6205.json``: defect frequencies, the band, the strongest
   envelope line in the fault range and the amplitudes at the defect
   frequencies of each case, and the healthy margin.
+
+Command::
 
     python scenarios/defects_6205.py [--t-end 1.0] [--engine reference]
 """

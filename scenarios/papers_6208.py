@@ -1,10 +1,15 @@
-"""The DEM papers' 6208 test with the reference engine: inner ring driven to
-500 rad/s (start-up ramp, steady phase, slow-down) under F_r = 3000 N, P_d = 0.
+"""The DEM papers' 6208 test with the reference engine
+===================================================
+
+The inner ring driven to 500 rad/s (start-up ramp, steady phase, slow-down)
+under F_r = 3000 N, P_d = 0.
 
 Writes into ``--out`` (default scenarios/out/papers_6208): the run (NPZ +
 JSON summary) and the figures of docs/theory/reference_cases.md, each PNG with a CSV:
 speeds against time, slide-to-roll ratio of one ball, h_min and Lambda of the
 outer contact against azimuth by phase, and the overview.
+
+Command::
 
     python scenarios/papers_6208.py [--up 0.05 --steady 0.2 --down 0.05] [--dt 3e-6] [--engine exudyn]
 

@@ -1,5 +1,8 @@
-"""A flexible rotor on two 6208 bearings in ROSS: our speed-dependent
-bearing coefficients against ROSS's empirical ball-bearing element.
+"""A flexible rotor on two 6208 bearings in ROSS
+=============================================
+
+Our speed-dependent bearing coefficients against ROSS's empirical
+ball-bearing element.
 
 Rotor (ROSS, 6 DOF per node, Timoshenko beam elements with rotary inertia
 and gyroscopic terms): a solid steel shaft 40 mm (the 6208's bore) x 600 mm
@@ -63,6 +66,8 @@ below is printed by it or stored in results.json):
   600 and 1050 rad/s, where the loaded contacts leave boundary lubrication
   (squeeze film in the mixed regime). The disk's conical modes at rest: ours
   2605.7 / 2632.7 rad/s, ROSS 2587.1 / 2634.7 rad/s.
+
+Command::
 
     python scenarios/ross_rotor_6208.py [--speeds 22] [--extra-load 1000] [--out DIR]
 """

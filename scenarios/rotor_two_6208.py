@@ -1,4 +1,5 @@
-"""A rigid rotor on two 6208 bearings: gravity, unbalance and a motor run-up to 1000 rad/s.
+"""A rigid rotor on two 6208 bearings: gravity, unbalance and a motor run-up to 1000 rad/s
+=======================================================================================
 
 The rotor (steel shaft, 40 mm x 250 mm, 2.5 kg) is an Exudyn rigid body with
 a NodeRigidBodyRxyz node; each end sits in a 6208 whose outer ring is fixed
@@ -50,6 +51,8 @@ Writes into ``--out`` (default scenarios/out/rotor_two_6208): rotor.png
 (speed, orbit of the shaft centre, largest ball loads and Lambda_out at
 psi = 0 of both bearings) with rotor.csv beside it, and the runs of both
 bearings (bearing_A.npz/json, bearing_B.npz/json).
+
+Command::
 
     python scenarios/rotor_two_6208.py [--t-end 0.3] [--omega 1000] [--sub-steps 1] [--mode fast]
 """

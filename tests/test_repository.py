@@ -60,9 +60,11 @@ def test_a_file_someone_else_writes_into_the_clone_does_not_fail_the_run():
 
 
 def _scripts():
-    # not validation/out: the scripts' outputs (untracked; bench_defects.py copies a baseline's sources there)
+    # not validation/out: the scripts' outputs (untracked; bench_defects.py copies a baseline's sources there);
+    # the documentation's gallery examples too
     return sorted((ROOT / "scenarios").glob("*.py")) + sorted(
-        p for p in (ROOT / "validation").rglob("*.py") if p.relative_to(ROOT / "validation").parts[0] != "out")
+        p for p in (ROOT / "validation").rglob("*.py") if p.relative_to(ROOT / "validation").parts[0] != "out") + \
+        sorted((ROOT / "docs" / "examples_src").glob("*.py"))
 
 
 #: Private names a script may import: benchmarks that time a compiled kernel itself.
@@ -98,7 +100,7 @@ def test_no_unused_imports_or_variables():
     if ruff is None:
         pytest.skip("ruff not installed (pip install ruff)")
     out = subprocess.run([ruff, "check", "--no-cache", "--select", "F401,F841", "tests", "validation", "scenarios",
-                          "exudyn_bearing"], cwd=ROOT, capture_output=True, text=True)
+                          "exudyn_bearing", "docs"], cwd=ROOT, capture_output=True, text=True)
     assert out.returncode == 0, out.stdout
 
 
