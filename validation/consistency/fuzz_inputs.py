@@ -248,6 +248,18 @@ CASES = [
     Case("qs_api_coarse_resolution_warned", "flag", "TractionResolutionWarning",
          api="eb.solve_quasistatic('ACBB-120', Fa=22240.0, omega=25000 * math.pi / 30, n_strips=2, n_across=4, "
              "stiffness=False)"),
+    # this session: the reduced engine's refusals and the quasi-static solver's inertia check
+    Case("s37_reduced_torus_cage", "refuse", "cage", cli=(*_SIM, "--engine", "reduced", "--cage", "torus")),
+    Case("s37_reduced_history_friction", "refuse", "friction", cli=(*_SIM, "--engine", "reduced", "--cage", "none")),
+    Case("s37_reduced_cageless_runup_collides", "refuse", "reference engine",
+         cli=(*_SIM, "--engine", "reduced", "--cage", "none", "--traction-level", "ellipse", "--ramp", "0.01", "0.01",
+              "0", "--dt", "2e-5")),
+    Case("s37_reduced_nan_load", "refuse", "Fr",
+         api="report(lambda: eb.simulate('6208', eb.Scenario(Fr=float('nan'), omega=500.0, cage='none', "
+             "traction_level='ellipse'), engine='reduced', progress=False))"),
+    Case("s34_quasistatic_light_balls_flagged", "flag", "inertia",
+         cli=_qs("7208", "--Fr", "3000", "--Fa", "3000", "--omega", "500", "--control", "equilibrium", "--cage",
+                 "rigid")),
 ]
 
 
