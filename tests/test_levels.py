@@ -275,3 +275,25 @@ def test_ball_element_initial_coordinates_have_the_levels_meaning():
     got = mbs.GetNodeOutput(node, exu.OutputVariableType.Position, exu.ConfigurationType.Initial)
     ref = eb.solve_quasistatic("6208", Fr=FR, ring_growth=False, fixed={}).displacement
     assert got[0] == pytest.approx(ref[0], rel=5e-3)
+
+
+def test_operating_tilt_of_an_angular_contact_bearing_under_combined_load():
+    """A single 7208 under F_r = F_a = 3000 N with its inner ring free to tilt tilts until a contact passes the
+    shoulder (solve_quasistatic(fixed={}) refuses it); in a rotor the other supports hold the tilt:
+    operatingTilt='held' solves the operating point and the tables with the tilt at zero (as solve_quasistatic's
+    default). The refusals name what to change: initialLoad (with the held tilt's way out) and, for a default
+    table that reaches a speed the bearing cannot carry, coefficientSpeeds."""
+    load, w = (3000.0, 3000.0), 500.0
+    _sc, mbs, _node, m_b, m_g = shaft()
+    with pytest.raises(eb.InputError, match="^initialLoad: with the inner ring's tilt free.*operatingTilt='held'"):
+        eb.CreateBallBearing(mbs, "7208", m_b, m_g, model="quasistatic", initialLoad=load, initialOmega=w)
+    with pytest.raises(eb.InputError, match="^coefficientSpeeds: the level's table .* 750 rad/s"):
+        eb.CreateBallBearing(mbs, "7208", m_b, m_g, model="linear", initialLoad=load, initialOmega=w,
+                             operatingTilt="held")
+    with pytest.raises(eb.InputError, match="^operatingTilt: "):
+        eb.CreateBallBearing(mbs, "7208", m_b, m_g, model="quasistatic", initialLoad=load, operatingTilt="fixed")
+    br = eb.CreateBallBearing(mbs, "7208", m_b, m_g, model="quasistatic", initialLoad=load, initialOmega=w,
+                              operatingTilt="held", coefficientSpeeds=[0.0, 250.0, 500.0])
+    held = eb.solve_quasistatic("7208", *load, omega=w, stiffness=False, inertia_check=False).displacement
+    np.testing.assert_array_equal(br.initialRingDisplacement, held)
+    assert np.all(br.initialRingDisplacement[3:] == 0.0)

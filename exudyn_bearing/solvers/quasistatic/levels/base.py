@@ -35,7 +35,11 @@ __all__ = ["IMPLICIT_SOLVERS", "LEVEL_OPTIONS", "LevelBearing", "WS_HEADER"]
 
 #: Options every level takes (the ball element's names).
 LEVEL_OPTIONS = ("lubricant", "initialLoad", "loadAngle", "initialOmega", "ringGrowth", "temperatures", "hertzModel",
-                 "sampleInterval", "coefficients", "coefficientSpeeds", "show")
+                 "sampleInterval", "coefficients", "coefficientSpeeds", "show", "operatingTilt")
+#: ``operatingTilt`` -> the tilts the operating point and the level's own tables hold (solve_quasistatic's
+#: ``fixed``): "free" (a single bearing's own equilibrium), "held" (at zero: a bearing in a rotor whose other
+#: supports hold the shaft's tilt; solve_quasistatic's default)
+OPERATING_TILT = {"free": {}, "held": {"tilt_x": 0.0, "tilt_y": 0.0}}
 #: Default speeds [rad/s] of the coefficient table (damping, linear level): up to the larger of 1000 rad/s and
 #: 1.5 times the initial speed.
 DEFAULT_SPEEDS = (0.0, 100.0, 250.0, 500.0, 750.0, 1000.0)
@@ -118,7 +122,8 @@ class LevelBearing:
 
     def __init__(self, mbs, bearing, markerInnerRing, markerOuterRing, lubricant: Lubricant | str | None = None,
                  initialLoad=(0.0, 0.0), loadAngle=0.0, initialOmega=0.0, ringGrowth=True, temperatures=None,
-                 hertzModel="exact", sampleInterval=1e-4, coefficients=None, coefficientSpeeds=None, show=False):
+                 hertzModel="exact", sampleInterval=1e-4, coefficients=None, coefficientSpeeds=None, show=False,
+                 operatingTilt="free"):
         self.mbs = mbs
         self.bearing = b = load_bearing(bearing)
         #: the lubricant (None: the quasi-static solver's default)
@@ -133,17 +138,17 @@ class LevelBearing:
                         rigid_marker(mbs, markerOuterRing, "markerOuterRing"))
         if self.markers[0] == self.markers[1]:
             raise InputError(f"markerOuterRing: marker {markerOuterRing} is also markerInnerRing")
+        if operatingTilt not in OPERATING_TILT:
+            raise InputError(f"operatingTilt: must be one of {', '.join(map(repr, OPERATING_TILT))}, got "
+                             f"{operatingTilt!r}")
+        #: the tilts the operating point and the level's own tables hold (OPERATING_TILT); at run time the
+        #: tilt is always a DOF of the user's model
+        self.operatingTilt = operatingTilt
         fr, fa = self.initialLoad
         # loads beyond the elastic contact model are refused before anything is solved
         check_load_range(b, fr, fa, hertzModel, names=("initialLoad", "initialLoad", "bearing"))
         #: quasi-static solution at initialLoad and initialOmega (the operating point)
-        self.operatingPoint = solve_quasistatic(b, Fr=fr, Fa=fa, omega=abs(self.initialOmega),
-                                                ring_growth=self.ringGrowth, temperatures=temperatures,
-                                                lubricant=self.lubricant, hertz_method=hertzModel, stiffness=False,
-                                                fixed={},  # the tilt is a DOF of the user's model
-                                                # the level takes forces and damping from it, not the balls'
-                                                # kinematics and losses that the inertia check judges
-                                                inertia_check=False)
+        self.operatingPoint = self._operating_point(temperatures)
         #: inner-ring pose (d_x, d_y, d_z, theta_x, theta_y) at the operating point (outer-ring frame):
         #: place the inner ring there to start in equilibrium
         self.loadAngle = check_load_angle(loadAngle)
@@ -172,6 +177,33 @@ class LevelBearing:
         self._setup()
         self._add_items(mbs, show)
 
+    def _operating_point(self, temperatures):
+        """solve_quasistatic at initialLoad and initialOmega with the tilt of ``operatingTilt``; its refusal
+        names ``initialLoad``, and says so where the free tilt alone puts the contacts out of range (a single
+        angular-contact bearing under a radial and an axial load tilts until a contact passes the shoulder,
+        which the held tilt of a rotor's other supports prevents)."""
+        fr, fa = self.initialLoad
+        kw = dict(Fr=fr, Fa=fa, omega=abs(self.initialOmega), ring_growth=self.ringGrowth, temperatures=temperatures,
+                  lubricant=self.lubricant, hertz_method=self.hertzModel, stiffness=False,
+                  # the level takes forces and damping from it, not the balls' kinematics and losses that the
+                  # inertia check judges
+                  inertia_check=False)
+        try:
+            return solve_quasistatic(self.bearing, fixed=dict(OPERATING_TILT[self.operatingTilt]), **kw)
+        except InputError as exc:
+            reason = str(exc).partition(": ")[2]
+            if self.operatingTilt == "free":
+                try:
+                    solve_quasistatic(self.bearing, fixed=dict(OPERATING_TILT["held"]), **kw)
+                except InputError:
+                    pass
+                else:
+                    raise InputError(f"initialLoad: with the inner ring's tilt free (operatingTilt='free', the "
+                                     f"equilibrium of a single bearing) {reason}; with the tilt held at zero it "
+                                     "solves: a bearing in a rotor whose other supports hold the shaft's tilt takes "
+                                     "operatingTilt='held'") from None
+            raise InputError(f"initialLoad: {reason}") from None
+
     @property
     def initialCoordinates(self):
         """The 6 initial coordinates of the inner ring's rigid-body node at the operating point, for a node
@@ -195,6 +227,7 @@ class LevelBearing:
         1.5 times the initial speed) under initialLoad."""
         from ..coefficients import bearing_coefficients
 
+        given = speeds is not None
         if speeds is None:
             top = max(DEFAULT_SPEEDS[-1], 1.5 * abs(self.initialOmega))
             speeds = [s * top / DEFAULT_SPEEDS[-1] for s in DEFAULT_SPEEDS]
@@ -202,10 +235,17 @@ class LevelBearing:
         try:
             return bearing_coefficients(self.bearing, speeds, Fr=fr, Fa=fa, ring_growth=self.ringGrowth,
                                         temperatures=self.temperatures, lubricant=self.lubricant,
-                                        hertz_method=self.hertzModel, fixed={})
+                                        hertz_method=self.hertzModel, fixed=dict(OPERATING_TILT[self.operatingTilt]))
         except InputError as exc:
             if str(exc).startswith("speeds"):
                 raise InputError(f"coefficientSpeeds{str(exc)[len('speeds'):]}") from None
+            if str(exc).startswith("omega") and (not given or max(map(abs, speeds)) > abs(self.initialOmega)):
+                # a speed of the table above the run's initial speed, where the bearing does not carry the load
+                raise InputError(f"coefficientSpeeds: the level's table of stiffness and damping at "
+                                 f"{', '.join(f'{w:g}' for w in speeds)} rad/s: {str(exc).partition(': ')[2]}; give "
+                                 "coefficientSpeeds that end at the run's highest speed"
+                                 + ("" if given else " (the default table reaches 1000 rad/s or 1.5 initialOmega)")
+                                 ) from None
             raise
 
     def _given_table(self, coefficients):
