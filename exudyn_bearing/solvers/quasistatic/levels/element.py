@@ -52,7 +52,8 @@ from ....model.operating_geometry import operating_geometry
 from ....physics import hertz as _hz
 from ..balls import B_NIR, B_NIZ, B_QI, B_QO, NB, _ring_forces
 from ..damping import ring_damping_force
-from .base import WS_CAGE, WS_FORCE, WS_HEADER, WS_OUT, WS_POSE, WS_QMAX, LevelBearing, entry_point
+from .base import (SAMPLE_HEADER, WS_CAGE, WS_FORCE, WS_HEADER, WS_OUT, WS_POSE, WS_QMAX, LevelBearing,
+                   entry_point, sample_header)
 from .nodes import (N_CONN, N_FIXED, N_LOCAL, N_MATS, N_OFFS, N_REFS, N_SHARE, NodeGroup, check_formulation, node_force,
                     node_formulation_markers, node_jacobian, node_kinematics, refuse_node)
 
@@ -94,7 +95,7 @@ _DAMP = _RATES + 5
 _BALLS = _DAMP + 5
 
 
-@kernel
+@kernel(no_runtime=True)
 def level_forces(d0, d1, d2, r0, r1, r2, v0, v1, v2, w0, w1, w2, method, ws, table, start, balls, mats):
     """One evaluation of the quasi-static level (module docstring) for the connector's displacement d,
     Tait-Bryan angles r, velocity v and angular velocity w (.base).
@@ -162,7 +163,7 @@ def level_forces(d0, d1, d2, r0, r1, r2, v0, v1, v2, w0, w1, w2, method, ws, tab
     return max(q_in, q_out)
 
 
-@kernel
+@kernel(no_runtime=True)
 def node_level_forces(q, qt, nws, method, ws, table, start, balls, gen):
     """One evaluation of a bearing in the node formulation: :func:`.nodes.node_kinematics`, the level's
     :func:`level_forces` (with K and C, into the node work array ``nws``), the generalized force of its f
@@ -178,6 +179,20 @@ def node_level_forces(q, qt, nws, method, ws, table, start, balls, gen):
     for k in range(share.size):
         gen[k] += share[k]
     return qmax
+
+
+@kernel(no_runtime=True)
+def sample_row(t, ws, balls, row):
+    """The level's sample row (:meth:`QuasiStaticBearing._sample_row`): the common part (:func:`.base.sample_header`),
+    then per ball the inner and outer load and (-n_z, -n_r) of the inner contact's normal, whose angle (the contact
+    angle from the groove bottom) :meth:`QuasiStaticBearing._extra_fields` takes when the samples are read."""
+    sample_header(t, ws, row)
+    z = balls.shape[0]
+    for j in range(z):
+        row[SAMPLE_HEADER + j] = balls[j, B_QI]
+        row[SAMPLE_HEADER + z + j] = balls[j, B_QO]
+        row[SAMPLE_HEADER + 2 * z + j] = -balls[j, B_NIZ]
+        row[SAMPLE_HEADER + 3 * z + j] = -balls[j, B_NIR]
 
 
 class QuasiStaticBearing(LevelBearing):
@@ -293,6 +308,7 @@ class QuasiStaticBearing(LevelBearing):
             self._mats = np.zeros(0)  # K and C only for the node formulation's Jacobian (.nodes)
         else:  # "node" or "auto": sized now, the kernel's argument types do not change
             self._mats = np.zeros(50)
+        self._sampler = entry_point(sample_row, (0.0, ws, self._balls, np.empty(SAMPLE_HEADER + 4 * z)))
         self._kernel = entry_point(level_forces, (*[0.0] * 12, self._method, ws, self._hz_table, self._start,
                                                   self._balls, self._mats))
 
@@ -349,11 +365,11 @@ class QuasiStaticBearing(LevelBearing):
                                   f"{self._pose[2]:.3g} m); reduce the moment or axial load")
 
     def _sample_row(self, t):
-        b = self._balls
-        alpha = np.arctan2(-b[:, B_NIZ], -b[:, B_NIR])
-        return np.concatenate([super()._sample_row(t), b[:, B_QI], b[:, B_QO], alpha])
+        row = np.empty(SAMPLE_HEADER + 4 * self.bearing.n_balls)
+        self._sampler(t, self._ws, self._balls, row)
+        return row
 
     def _extra_fields(self, rest):
         z = self.bearing.n_balls
         return {"ball_load_inner": rest[:, :z], "ball_load_outer": rest[:, z:2 * z],
-                "contact_angle_inner": rest[:, 2 * z:3 * z]}
+                "contact_angle_inner": np.arctan2(rest[:, 2 * z:3 * z], rest[:, 3 * z:4 * z])}

@@ -48,12 +48,14 @@ _P, _A, _V, _W, _G, _O, _NS = 0, 3, 12, 15, 18, 27, 30
 #: a bearing's node work array (one array: each array argument of a compiled call costs its unboxing): per ring
 #: (outer = marker 0, inner = marker 1) the coordinate offset in the object (-1: ground), the node's reference
 #: coordinates (6), the marker's local position (3), a ground marker's position and rotation (12), the ring state
-#: (_NS); then the connector's quantities d, r, v, w (12), the level's K and C (50), the bearing's share of the
-#: generalized force (6 per node of the object)
+#: (_NS); then the connector's quantities d, r, v, w (12), the level's K and C (50), the Jacobian's scratch (the
+#: 6x6 matrix of K and C, the two B_i and B_i^T of that matrix: 36 + 72 + 36), the bearing's share of the generalized
+#: force (6 per node of the object)
 N_OFFS, N_REFS, N_LOCAL, N_FIXED, N_STATES = 0, 2, 14, 20, 44
 N_CONN = N_STATES + 2 * _NS
 N_MATS = N_CONN + 12
-N_SHARE = N_MATS + 50
+N_SCRATCH = N_MATS + 50
+N_SHARE = N_SCRATCH + 144
 
 
 def node_formulation_markers(mbs, marker):
@@ -83,7 +85,7 @@ def node_formulation_markers(mbs, marker):
     return node, local, fixed
 
 
-@kernel
+@kernel(no_runtime=True)
 def _ring_state(q, qt, nws, i):
     """Ring i's state (layout _P.._O, in ``nws``) from the object's coordinates ``q``, ``qt``."""
     s = nws[N_STATES + _NS * i:N_STATES + _NS * (i + 1)]
@@ -119,7 +121,7 @@ def _col_dot(s0, s1, i, j):
     return s0[_A + i] * s1[_A + j] + s0[_A + 3 + i] * s1[_A + 3 + j] + s0[_A + 6 + i] * s1[_A + 6 + j]
 
 
-@kernel
+@kernel(no_runtime=True)
 def node_kinematics(q, qt, nws):
     """Both rings' states and the connector's quantities d, r, v, w (module docstring) into the node work array."""
     _ring_state(q, qt, nws, 0)
@@ -146,7 +148,7 @@ def node_kinematics(q, qt, nws):
     conn[5] = a2
 
 
-@kernel
+@kernel(no_runtime=True)
 def _b_matrix(s0, si, sign, b):
     """B_i (6x6 row-major, module docstring) of ring state ``si`` in the frame of ring state ``s0``, into ``b``."""
     for k in range(36):
@@ -167,7 +169,7 @@ def _b_matrix(s0, si, sign, b):
                 b[6 * (r + 3) + 3 + m] += sign * at * si[_G + 3 * c + m]
 
 
-@kernel
+@kernel(no_runtime=True)
 def node_force(out, nws, gen):
     """gen -= B_i^T out for both rings on a node: the connector's f = ``out`` (6,) applied as Exudyn applies it
     (module docstring): on ring i (sign s_i) s_i A0 f_force on the position coordinates and
@@ -198,38 +200,49 @@ def node_force(out, nws, gen):
             gen[off + 3 + m] -= sign * (si[_G + m] * t0 + si[_G + 3 + m] * t1 + si[_G + 6 + m] * t2)
 
 
-@kernel
+@kernel(no_runtime=True)
 def node_jacobian(nws, f2, f2t, jac):
     """jac += f2 B_i^T K6 B_j + f2t B_i^T C6 B_j over both rings on a node (module docstring), K and C and the
-    connector's quantities of the bearing's last evaluation (in ``nws``)."""
+    connector's quantities of the bearing's last evaluation (in ``nws``; the products in its scratch, N_SCRATCH:
+    no allocation, the kernel runs without numba's runtime)."""
     mats = nws[N_MATS:N_MATS + 50]
     conn = nws[N_CONN:N_CONN + 12]
-    m = np.zeros((6, 6))
+    m = nws[N_SCRATCH:N_SCRATCH + 36]  # row-major 6x6
+    bs = nws[N_SCRATCH + 36:N_SCRATCH + 108]  # B_0, B_1 (row-major 6x6 each)
+    left = nws[N_SCRATCH + 108:N_SCRATCH + 144]  # B_i^T m
+    for k in range(36):
+        m[k] = 0.0
     w2 = conn[11]
     for r in range(5):
         for c in range(5):
-            m[r, c] = f2 * mats[5 * r + c] + f2t * mats[25 + 5 * r + c]
+            m[6 * r + c] = f2 * mats[5 * r + c] + f2t * mats[25 + 5 * r + c]
         # the tilt rates (w_x - w_z theta_y, w_y + w_z theta_x): their C columns on theta and on w_z
-        m[r, 4] -= f2 * mats[25 + 5 * r + 3] * w2
-        m[r, 3] += f2 * mats[25 + 5 * r + 4] * w2
-        m[r, 5] = f2t * (-mats[25 + 5 * r + 3] * conn[4] + mats[25 + 5 * r + 4] * conn[3])
-    bs = np.empty((2, 36))
+        m[6 * r + 4] -= f2 * mats[25 + 5 * r + 3] * w2
+        m[6 * r + 3] += f2 * mats[25 + 5 * r + 4] * w2
+        m[6 * r + 5] = f2t * (-mats[25 + 5 * r + 3] * conn[4] + mats[25 + 5 * r + 4] * conn[3])
     for i in range(2):
         _b_matrix(nws[N_STATES:N_STATES + _NS], nws[N_STATES + _NS * i:N_STATES + _NS * (i + 1)],
-                  1.0 if i == 1 else -1.0, bs[i])
+                  1.0 if i == 1 else -1.0, bs[36 * i:36 * (i + 1)])
     for i in range(2):
         oi = int(nws[N_OFFS + i])
         if oi < 0:
             continue
-        left = bs[i].reshape(6, 6).T @ m
+        for r in range(6):
+            for c in range(6):
+                acc = 0.0
+                for k in range(6):
+                    acc += bs[36 * i + 6 * k + r] * m[6 * k + c]
+                left[6 * r + c] = acc
         for j in range(2):
             oj = int(nws[N_OFFS + j])
             if oj < 0:
                 continue
-            blk = left @ bs[j].reshape(6, 6)
             for r in range(6):
                 for c in range(6):
-                    jac[oi + r, oj + c] += blk[r, c]
+                    acc = 0.0
+                    for k in range(6):
+                        acc += left[6 * r + k] * bs[36 * j + 6 * k + c]
+                    jac[oi + r, oj + c] += acc
 
 
 class NodeGroup:
