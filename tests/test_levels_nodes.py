@@ -294,3 +294,29 @@ def test_node_jacobian_is_the_matrix_product_of_its_docstring():
             want[offs[i]:offs[i] + 6, offs[j]:offs[j] + 6] += b[i].T @ m @ b[j]
     assert np.abs(want).max() > 0.0
     assert np.abs(jac - want).max() <= 1e-12 * np.abs(want).max()
+
+
+def test_group_call_is_each_bearings_own_evaluation():
+    # the group's one compiled call for both bearings (element.group_level_forces) against each bearing's own
+    # evaluation (node_level_forces with the steps around it in Python), on two fresh rotors at the same two
+    # states, the second at a speed outside the band of the grooves' last update (the group's call hands that
+    # back to Python, which evaluates again at the new grooves): the same generalized force, balls, K and C
+    mbs_a, bs_a, _, _ = rotor("node")
+    mbs_b, bs_b, _, _ = rotor("node")
+    group = bs_a[0]._group
+    q = np.array([24.7e-6, 1e-7, 2e-7, 1e-5, -2e-5, 0.3])
+    states = ((0.0, q, np.array([1e-3, -2e-3, 1e-3, 0.1, 0.2, OMEGA])),
+              (1e-4, 1.01 * q, np.array([2e-3, 1e-3, -1e-3, -0.1, 0.1, 1.3 * OMEGA])))
+    for t, qq, qt in states:
+        got = group._force(mbs_a, t, group.object, qq, qt).copy()
+        want = np.zeros_like(got)
+        for b in bs_b:
+            b._node_evaluation(t, qq, qt, want)
+    lo, hi = bs_a[0]._geo_band
+    assert lo <= 1.3 * OMEGA <= hi and not lo <= OMEGA <= hi  # the grooves were updated
+    scale = np.abs(want).max()
+    assert scale > 1e3 and np.allclose(got, want, rtol=0.0, atol=1e-12 * scale)
+    for a, b in zip(bs_a, bs_b):
+        assert np.allclose(a._balls, b._balls, rtol=1e-12, atol=0.0)
+        assert np.allclose(a._mats, b._mats, rtol=1e-12, atol=1e-12 * np.abs(b._mats).max())
+        assert a._qmax[0] == pytest.approx(b._qmax[0], rel=1e-12)
