@@ -9,7 +9,8 @@ evaluations. Here the same evaluation (:func:`.element.level_forces`) also retur
 damping C of the balls' current state (:func:`..damping.ring_damping_force`, the condensation of
 :func:`..damping.condensed_matrices`), Exudyn's ``jacobianUserFunction`` hands them to Newton at every step
 (``modifiedNewtonJacUpdatePerStep``, set by ``SimulationSettings``), and the bearings between the same nodes share
-one object and one call into Python per evaluation.
+one object, one call into Python per evaluation and in it one compiled call for all of them
+(:func:`.element.group_level_forces`; the Jacobian :func:`group_jacobian`).
 
 Kinematics (those of the connector, ObjectConnectorRigidBodySpringDamper with its default rotationMarker0/1 = I):
 each ring marker is a ``MarkerBodyRigid`` on ground or on a ``RigidBody`` with a ``NodeRigidBodyRxyz`` node, or a
