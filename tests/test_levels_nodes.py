@@ -302,7 +302,7 @@ def test_group_call_is_each_bearings_own_evaluation():
     # states, the second at a speed outside the band of the grooves' last update (the group's call hands that
     # back to Python, which evaluates again at the new grooves): the same generalized force, balls, K and C
     mbs_a, bs_a, _, _ = rotor("node")
-    mbs_b, bs_b, _, _ = rotor("node")
+    _, bs_b, _, _ = rotor("node")
     group = bs_a[0]._group
     q = np.array([24.7e-6, 1e-7, 2e-7, 1e-5, -2e-5, 0.3])
     states = ((0.0, q, np.array([1e-3, -2e-3, 1e-3, 0.1, 0.2, OMEGA])),
