@@ -254,3 +254,69 @@ def test_moving_housing_run_is_within_newtons_tolerance():
                            for i in (1, 2, 3)])
     assert np.all(np.abs(runs["node"][0][:, 1:] - tight[:, 1:]).max(axis=0) < 0.01 * step_error)
     assert runs["node"][1] < runs["connector"][1] - 1.0
+
+
+def test_node_jacobian_is_the_matrix_product_of_its_docstring():
+    # node_jacobian's products (loops over the node work array's scratch, no allocation) against NumPy's of the
+    # module docstring's d(lhs_i)/dq_j = f2 B_i^T K6 B_j + f2t B_i^T C6 B_j with both rings on moving, turned nodes
+    # (all four blocks), K6 and C6 from the level's K and C of one evaluation: equal to round-off
+    from exudyn_bearing.solvers.quasistatic.levels import nodes
+
+    mbs, br = _housing_system("node")
+    group = br._group
+    n = 6 * len(group.nodes)
+    q = np.array([2e-6, -1e-6, 1e-6, 2e-5, -1e-5, 1.0, 1e-6, 3e-6, -2e-6, 1e-5, 2e-5, 0.5])[:n]
+    qt = np.array([0.02, 0.01, -0.01, 0.5, 0.1, 400.0, 0.01, -0.02, 0.005, 0.3, -0.2, 0.1])[:n]
+    group._force(mbs, 0.0, group.object, q, qt)
+    f2, f2t = 0.7, 0.3
+    jac = np.zeros((n, n))
+    nodes.node_jacobian(br._nws, f2, f2t, jac)
+    nws = br._nws
+    kk, cc = nws[nodes.N_MATS:nodes.N_MATS + 25].reshape(5, 5), nws[nodes.N_MATS + 25:nodes.N_MATS + 50].reshape(5, 5)
+    conn = nws[nodes.N_CONN:nodes.N_CONN + 12]
+    m = np.zeros((6, 6))
+    m[:5, :5] = f2 * kk + f2t * cc
+    m[:5, 4] -= f2 * cc[:, 3] * conn[11]
+    m[:5, 3] += f2 * cc[:, 4] * conn[11]
+    m[:5, 5] = f2t * (-cc[:, 3] * conn[4] + cc[:, 4] * conn[3])
+    s0 = nws[nodes.N_STATES:nodes.N_STATES + nodes._NS]
+    b = []
+    for i in range(2):
+        bi = np.zeros(36)
+        nodes._b_matrix(s0, nws[nodes.N_STATES + nodes._NS * i:nodes.N_STATES + nodes._NS * (i + 1)],
+                        1.0 if i == 1 else -1.0, bi)
+        b.append(bi.reshape(6, 6))
+    want = np.zeros((n, n))
+    offs = [int(nws[nodes.N_OFFS + i]) for i in range(2)]
+    assert sorted(offs) == [0, 6]  # both rings on nodes
+    for i in range(2):
+        for j in range(2):
+            want[offs[i]:offs[i] + 6, offs[j]:offs[j] + 6] += b[i].T @ m @ b[j]
+    assert np.abs(want).max() > 0.0
+    assert np.abs(jac - want).max() <= 1e-12 * np.abs(want).max()
+
+
+def test_group_call_is_each_bearings_own_evaluation():
+    # the group's one compiled call for both bearings (element.group_level_forces) against each bearing's own
+    # evaluation (node_level_forces with the steps around it in Python), on two fresh rotors at the same two
+    # states, the second at a speed outside the band of the grooves' last update (the group's call hands that
+    # back to Python, which evaluates again at the new grooves): the same generalized force, balls, K and C
+    mbs_a, bs_a, _, _ = rotor("node")
+    _, bs_b, _, _ = rotor("node")
+    group = bs_a[0]._group
+    q = np.array([24.7e-6, 1e-7, 2e-7, 1e-5, -2e-5, 0.3])
+    states = ((0.0, q, np.array([1e-3, -2e-3, 1e-3, 0.1, 0.2, OMEGA])),
+              (1e-4, 1.01 * q, np.array([2e-3, 1e-3, -1e-3, -0.1, 0.1, 1.3 * OMEGA])))
+    for t, qq, qt in states:
+        got = group._force(mbs_a, t, group.object, qq, qt).copy()
+        want = np.zeros_like(got)
+        for b in bs_b:
+            b._node_evaluation(t, qq, qt, want)
+    lo, hi = bs_a[0]._geo_band
+    assert lo <= 1.3 * OMEGA <= hi and not lo <= OMEGA <= hi  # the grooves were updated
+    scale = np.abs(want).max()
+    assert scale > 1e3 and np.allclose(got, want, rtol=0.0, atol=1e-12 * scale)
+    for a, b in zip(bs_a, bs_b):
+        assert np.allclose(a._balls, b._balls, rtol=1e-12, atol=0.0)
+        assert np.allclose(a._mats, b._mats, rtol=1e-12, atol=1e-12 * np.abs(b._mats).max())
+        assert a._qmax[0] == pytest.approx(b._qmax[0], rel=1e-12)

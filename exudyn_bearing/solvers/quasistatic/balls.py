@@ -57,7 +57,7 @@ _DIRECT = np.empty((3, 0))
 _COLD = np.empty((0, 3))
 
 
-@kernel
+@kernel(no_runtime=True)
 def _hertz_constant(r_x, r_y, e_prime, method, table):
     """Hertz constant K [N/m^1.5] of one contact: the direct solution (:func:`exudyn_bearing.physics.hertz._hertz`)
     when ``table`` is empty, else (k, F, E) from :func:`exudyn_bearing.physics.hertz._kfe_fast` (the exact level
@@ -68,7 +68,7 @@ def _hertz_constant(r_x, r_y, e_prime, method, table):
     return _hz._stiffness(kappa, ell_f, ell_e, _hz._curvature_sum_radius(r_x, r_y), e_prime)
 
 
-@kernel
+@kernel(no_runtime=True)
 def _contact_radii(por, rco, rb, rci, nor, nir):
     """Effective radii (R_x, R_y) [m] of the outer and inner contact at the contact angles given by the normals
     (curvature radii at the undeformed contact points, ball centre at its groove-centre distance from the outer
@@ -81,7 +81,7 @@ def _contact_radii(por, rco, rb, rci, nor, nir):
     return rxo, ryo, rxi, ryi
 
 
-@kernel
+@kernel(no_runtime=True)
 def _contact_constants(por, rco, rb, rci, nor, nir, e_prime, method, table):
     """Hertz constants K_o, K_i [N/m^1.5] at the contact angles given by the normals (:func:`_contact_radii`);
     ``table``: see :func:`_hertz_constant`."""
@@ -89,7 +89,7 @@ def _contact_constants(por, rco, rb, rci, nor, nir, e_prime, method, table):
     return _hertz_constant(rxo, ryo, e_prime, method, table), _hertz_constant(rxi, ryi, e_prime, method, table)
 
 
-@kernel
+@kernel(no_runtime=True)
 def _ball_equilibrium(pir, piz, por, poz, rci, rco, rb, m_w2, fto, fti, e_prime, method, table, out, start):
     """Solve one ball; writes the fields of BALL_FIELDS into ``out``.
 
@@ -159,7 +159,7 @@ def _ball_equilibrium(pir, piz, por, poz, rci, rco, rb, m_w2, fto, fti, e_prime,
         start[2] = kind if out[B_OK] == 1.0 else 0.0
 
 
-@kernel
+@kernel(no_runtime=True)
 def _ball_newton(cr, cz, pir, piz, por, poz, rci, rco, rb, m_w2, fto, fti, e_prime, method, table, scale, out):
     """Newton's method for one ball's centre (cr, cz) from the given start (:func:`_ball_equilibrium`); ``scale``
     [N]: the residual's absolute floor (< 0: from the Hertz constants at the start)."""
@@ -244,7 +244,7 @@ def _ball_newton(cr, cz, pir, piz, por, poz, rci, rco, rb, m_w2, fto, fti, e_pri
     out[B_OK] = ok
 
 
-@kernel
+@kernel(no_runtime=True)
 def _ring_forces(u, psi, rho_i, z_i, rho_o, z_o, rci, rco, rb, m_w2, fto, fti, e_prime, method, table, start, balls,
                  gen):
     """All balls for the ring pose u (5,); per-ball results into ``balls`` (Z, NB),
@@ -254,7 +254,7 @@ def _ring_forces(u, psi, rho_i, z_i, rho_o, z_o, rci, rco, rb, m_w2, fto, fti, e
     for k in range(5):
         gen[k] = 0.0
     warm = start.shape[0] == psi.size
-    cold = np.empty(0)
+    cold = start.reshape(-1)[:0]  # an empty warm start (no allocation: the kernel runs without numba's runtime)
     for j in range(psi.size):
         c = math.cos(psi[j])
         s = math.sin(psi[j])

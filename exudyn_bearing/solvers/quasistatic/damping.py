@@ -83,7 +83,7 @@ CONTACT_DAMPING_FIELDS = ("c_normal", "c_hysteretic", "c_squeeze", "film_paramet
 
 
 
-@kernel
+@kernel(no_runtime=True)
 def normal_damping(q, delta, k, major, h, r_ball, alpha_e, eta, sigma, lambda_mixed, lambda_full_film):
     """Normal damping of one contact (module docstring; the law of
     :mod:`exudyn_bearing.physics.damping`, switched as in the DEM kernel's
@@ -172,7 +172,7 @@ def _contact_jacobians(nr, nz, q, k_t, length, f_t, c_n):
     return a, b
 
 
-@kernel
+@kernel(no_runtime=True)
 def ball_condensation(no_r, no_z, q_o, k_to, l_o, f_to, c_o, ni_r, ni_z, q_i, k_ti, l_i, f_ti, c_i, m_w2):
     """Dynamic stiffness of one ball between the rings, D(0) and D'(0) (module docstring; row-major 4-tuples).
 
@@ -241,7 +241,7 @@ def condensed_matrices(psi, geom, u, balls, m_w2, fto, fti, c_inner, c_outer):
     return kk, cc
 
 
-@kernel
+@kernel(no_runtime=True)
 def _state_damping(q, delta, k, r_x, r_y, u_r, r_ball, e_prime, method, table, alpha_e, eta, ln_g, sigma,
                    lambda_mixed, lambda_full_film):
     """:func:`normal_damping` of one contact at its current state: semi-major axis from the overlap
@@ -254,7 +254,7 @@ def _state_damping(q, delta, k, r_x, r_y, u_r, r_ball, e_prime, method, table, a
     return normal_damping(q, delta, k, major, h, r_ball, alpha_e, eta, sigma, lambda_mixed, lambda_full_film)[0]
 
 
-@kernel
+@kernel(no_runtime=True)
 def ring_damping_force(rates, psi, rho_i, z_i, rho_o, z_o, rci, rco, rb, balls, m_w2, fto, fti, w_orbit, w_ring,
                        e_prime, method, table, alpha_e, eta, ln_g, sigma, lambda_mixed, lambda_full_film, out,
                        mats):

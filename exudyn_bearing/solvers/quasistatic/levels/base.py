@@ -21,6 +21,7 @@ import math
 
 import numpy as np
 
+from ...._jit import kernel
 from ....data import InputError, Lubricant, load_bearing, load_lubricant
 from ....data.errors import check_finite, check_positive
 from ....model.load_angle import LOAD_ANGLE_RANGE, check_load_angle, load_rotation  # noqa: F401 (re-exported)
@@ -107,6 +108,22 @@ NEWTON_RELATIVE_TOLERANCE = 1e-4
 python_calls = [0]
 #: Header of a level's work array: out = -(F, 0) (6), F (5), pose u (5), cage (angle, speed) (2), q_max (3).
 WS_OUT, WS_FORCE, WS_POSE, WS_CAGE, WS_QMAX, WS_HEADER = 0, 6, 11, 16, 18, 21
+#: Length of a sample row's common part (:func:`sample_header`): t, pose (5), F (5), cage (2), q_max inner and outer
+SAMPLE_HEADER = 15
+
+
+@kernel(no_runtime=True)
+def sample_header(t, ws, row):
+    """A sample row's common part from the work array's header: t, pose u, F, cage (angle, speed), the largest
+    inner and outer ball load (one compiled call: a level samples at every step by default)."""
+    row[0] = t
+    for k in range(5):
+        row[1 + k] = ws[WS_POSE + k]
+        row[6 + k] = ws[WS_FORCE + k]
+    row[11] = ws[WS_CAGE]
+    row[12] = ws[WS_CAGE + 1]
+    row[13] = ws[WS_QMAX]
+    row[14] = ws[WS_QMAX + 1]
 
 
 class LevelBearing:
@@ -343,7 +360,9 @@ class LevelBearing:
         self._evaluations = 0
 
     def _sample_row(self, t):
-        return np.concatenate([[t], self._pose, self._force, self._cage, self._qmax[:2]])
+        row = np.empty(SAMPLE_HEADER)
+        sample_header(t, self._ws, row)
+        return row
 
     def _check_ball_load(self, t, q_max):
         if not q_max <= self._q_limit:  # also NaN
@@ -391,7 +410,7 @@ class LevelBearing:
         a = np.array(self._samples)
         out = {"t": a[:, 0], "displacement": a[:, 1:6], "force": a[:, 6:11], "cage_angle": a[:, 11],
                "cage_speed": a[:, 12], "q_max_inner": a[:, 13], "q_max_outer": a[:, 14]}
-        out.update(self._extra_fields(a[:, 15:]))
+        out.update(self._extra_fields(a[:, SAMPLE_HEADER:]))
         out["evaluations"] = self._evaluations
         return out
 

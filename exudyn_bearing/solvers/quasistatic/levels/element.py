@@ -52,11 +52,12 @@ from ....model.operating_geometry import operating_geometry
 from ....physics import hertz as _hz
 from ..balls import B_NIR, B_NIZ, B_QI, B_QO, NB, _ring_forces
 from ..damping import ring_damping_force
-from .base import WS_CAGE, WS_FORCE, WS_HEADER, WS_OUT, WS_POSE, WS_QMAX, LevelBearing, entry_point
-from .nodes import (N_CONN, N_FIXED, N_LOCAL, N_MATS, N_OFFS, N_REFS, N_SHARE, NodeGroup, check_formulation, node_force,
-                    node_formulation_markers, node_jacobian, node_kinematics, refuse_node)
+from .base import (SAMPLE_HEADER, WS_CAGE, WS_FORCE, WS_HEADER, WS_OUT, WS_POSE, WS_QMAX, LevelBearing,
+                   entry_point, sample_header)
+from .nodes import (N_BAND, N_CONN, N_FIXED, N_LOCAL, N_MATS, N_OFFS, N_QLIMIT, N_QMAX, N_REFS, N_SHARE, NodeGroup,
+                    check_formulation, node_force, node_formulation_markers, node_kinematics, refuse_node)
 
-__all__ = ["QuasiStaticBearing", "level_forces", "node_level_forces"]
+__all__ = ["QuasiStaticBearing", "group_level_forces", "level_forces", "node_level_forces"]
 
 _TWO_PI = 2.0 * math.pi
 #: Speed [rad/s] below which the ring growth (proportional to the speed squared) is not updated again
@@ -94,7 +95,7 @@ _DAMP = _RATES + 5
 _BALLS = _DAMP + 5
 
 
-@kernel
+@kernel(no_runtime=True)
 def level_forces(d0, d1, d2, r0, r1, r2, v0, v1, v2, w0, w1, w2, method, ws, table, start, balls, mats):
     """One evaluation of the quasi-static level (module docstring) for the connector's displacement d,
     Tait-Bryan angles r, velocity v and angular velocity w (.base).
@@ -162,7 +163,7 @@ def level_forces(d0, d1, d2, r0, r1, r2, v0, v1, v2, w0, w1, w2, method, ws, tab
     return max(q_in, q_out)
 
 
-@kernel
+@kernel(no_runtime=True)
 def node_level_forces(q, qt, nws, method, ws, table, start, balls, gen):
     """One evaluation of a bearing in the node formulation: :func:`.nodes.node_kinematics`, the level's
     :func:`level_forces` (with K and C, into the node work array ``nws``), the generalized force of its f
@@ -178,6 +179,43 @@ def node_level_forces(q, qt, nws, method, ws, table, start, balls, gen):
     for k in range(share.size):
         gen[k] += share[k]
     return qmax
+
+
+@kernel(no_runtime=True)
+def group_level_forces(q, qt, gen, table, methods, nwss, wss, starts, ballss):
+    """:func:`node_level_forces` for each bearing of a node group (the tuples: their arguments), ``gen`` their
+    summed generalized force: one compiled call per evaluation for all. Each bearing's largest ball load goes to
+    its node work array (N_QMAX). Returns True where a bearing needs the steps after the kernel
+    (:meth:`QuasiStaticBearing._node_after`): its relative speed left the band of its grooves' last update
+    (N_BAND), a ball load is beyond its limit (N_QLIMIT) or not a number, or a loaded contact sits beyond
+    MAX_FREE_CONTACT_ANGLE."""
+    for k in range(gen.size):
+        gen[k] = 0.0
+    more = False
+    for i in range(len(nwss)):
+        nws = nwss[i]
+        ws = wss[i]
+        qmax = node_level_forces(q, qt, nws, methods[i], ws, table, starts[i], ballss[i], gen)
+        nws[N_QMAX] = qmax
+        w = abs(nws[N_CONN + 11])
+        if not (nws[N_BAND] <= w <= nws[N_BAND + 1] and qmax <= nws[N_QLIMIT]) \
+                or ws[WS_QMAX + 2] > MAX_FREE_CONTACT_ANGLE:
+            more = True
+    return more
+
+
+@kernel(no_runtime=True)
+def sample_row(t, ws, balls, row):
+    """The level's sample row (:meth:`QuasiStaticBearing._sample_row`): the common part (:func:`.base.sample_header`),
+    then per ball the inner and outer load and (-n_z, -n_r) of the inner contact's normal, whose angle (the contact
+    angle from the groove bottom) :meth:`QuasiStaticBearing._extra_fields` takes when the samples are read."""
+    sample_header(t, ws, row)
+    z = balls.shape[0]
+    for j in range(z):
+        row[SAMPLE_HEADER + j] = balls[j, B_QI]
+        row[SAMPLE_HEADER + z + j] = balls[j, B_QO]
+        row[SAMPLE_HEADER + 2 * z + j] = -balls[j, B_NIZ]
+        row[SAMPLE_HEADER + 3 * z + j] = -balls[j, B_NIR]
 
 
 class QuasiStaticBearing(LevelBearing):
@@ -218,40 +256,56 @@ class QuasiStaticBearing(LevelBearing):
                 nws[N_REFS + 6 * i:N_REFS + 6 * i + 6] = mbs.GetNode(node)["referenceCoordinates"]
             nws[N_LOCAL + 3 * i:N_LOCAL + 3 * i + 3] = local
             nws[N_FIXED + 12 * i:N_FIXED + 12 * i + 12] = fixed
+        nws[N_BAND:N_BAND + 2] = self._geo_band
+        nws[N_QLIMIT] = self._q_limit
         self._conn = nws[N_CONN:N_CONN + 12]
         self._mats = nws[N_MATS:N_MATS + 50]
         self._share = nws[N_SHARE:]
         self._mats_ready = False
         q0 = np.zeros(6 * len(group.nodes))
         self._node_kinematics = entry_point(node_kinematics, (q0, q0, nws))
-        self._node_jacobian = entry_point(node_jacobian, (nws, 1.0, 1.0, group._jac))
         #: the node kernel's arguments after the coordinates (all but ``gen``)
         self._node_args = (nws, self._method, self._ws, self._hz_table, self._start, self._balls)
         self._node_kernel = entry_point(node_level_forces, (q0, q0, *self._node_args, q0))
+        group.kernel = group_level_forces
         group.bearings.append(self)
         return group.object
 
     def _node_evaluation(self, t, q, q_t, gen):
-        """One evaluation of the node formulation (:mod:`.nodes`): the connector's quantities from the nodes'
-        coordinates, the level's evaluation and its generalized force, added to ``gen``, in one compiled call
-        (:func:`node_level_forces`), with the steps of the connector's :meth:`_evaluate` around it."""
+        """One evaluation of the node formulation (:mod:`.nodes`) for this bearing alone: the connector's
+        quantities from the nodes' coordinates, the level's evaluation and its generalized force, added to ``gen``,
+        in one compiled call (:func:`node_level_forces`), with the steps of the connector's :meth:`_evaluate`
+        around it (:meth:`_node_before`, :meth:`_node_after`). The group's force call makes the same evaluation
+        for all its bearings in one compiled call (:func:`group_level_forces`)."""
+        self._node_before(t, q, q_t)
+        self._nws[N_QMAX] = self._node_kernel(q, q_t, *self._node_args, gen)
+        self._node_after(q, q_t, gen)
+        if t >= self._next_sample - 1e-12:
+            self._end(t)
+        self._mats_ready = True
+
+    def _node_before(self, t, q, q_t):
+        """Before the node kernel: a new run starts over (:meth:`.base.LevelBearing._begin`); the first
+        evaluation's spin angle is the cage angle's zero."""
         self._begin(t)
-        c = self._conn
-        if self._first:  # the spin angle of this state is the cage angle's zero
+        if self._first:
+            c = self._conn
             self._node_kinematics(q, q_t, self._nws)
             self._prepare(abs(c[11]), c[5])
+
+    def _node_after(self, q, q_t, gen):
+        """After the node kernel (its largest ball load in the node work array): where the speed left the band of
+        the grooves' last update, the evaluation again with the grooves at this speed; then the checks of the
+        ball loads and contact angles (:meth:`_check`)."""
+        c = self._conn
         lo, hi = self._geo_band
-        qmax = self._node_kernel(q, q_t, *self._node_args, gen)
+        qmax = float(self._nws[N_QMAX])
         if not lo <= abs(c[11]) <= hi:
-            # the speed left the band of the grooves' last update: again with the grooves at this speed
             gen -= self._share
             self._prepare(abs(c[11]), c[5])
             qmax = self._node_kernel(q, q_t, *self._node_args, gen)
         if not qmax <= self._q_limit or self._qmax[2] > MAX_FREE_CONTACT_ANGLE:
             self._check(qmax)
-        if t >= self._next_sample - 1e-12:
-            self._end(t)
-        self._mats_ready = True
 
     def SimulationSettings(self, endTime, stepSize=1e-4, solverType="GeneralizedAlpha"):
         """:meth:`.base.LevelBearing.SimulationSettings`; with the node formulation also Newton's Jacobian
@@ -293,6 +347,7 @@ class QuasiStaticBearing(LevelBearing):
             self._mats = np.zeros(0)  # K and C only for the node formulation's Jacobian (.nodes)
         else:  # "node" or "auto": sized now, the kernel's argument types do not change
             self._mats = np.zeros(50)
+        self._sampler = entry_point(sample_row, (0.0, ws, self._balls, np.empty(SAMPLE_HEADER + 4 * z)))
         self._kernel = entry_point(level_forces, (*[0.0] * 12, self._method, ws, self._hz_table, self._start,
                                                   self._balls, self._mats))
 
@@ -312,6 +367,9 @@ class QuasiStaticBearing(LevelBearing):
         band = 0.02 * speed * speed + GROWTH_SPEED_FLOOR ** 2
         self._geo_band = (math.sqrt(max(speed * speed - band, 0.0)) if speed * speed > band else -math.inf,
                           math.sqrt(speed * speed + band)) if self.ringGrowth else (-math.inf, math.inf)
+        nws = getattr(self, "_nws", None)
+        if nws is not None:  # the node formulation's compiled check of the band (group_level_forces)
+            nws[N_BAND:N_BAND + 2] = self._geo_band
 
     def _restart(self, t):
         super()._restart(t)
@@ -349,11 +407,11 @@ class QuasiStaticBearing(LevelBearing):
                                   f"{self._pose[2]:.3g} m); reduce the moment or axial load")
 
     def _sample_row(self, t):
-        b = self._balls
-        alpha = np.arctan2(-b[:, B_NIZ], -b[:, B_NIR])
-        return np.concatenate([super()._sample_row(t), b[:, B_QI], b[:, B_QO], alpha])
+        row = np.empty(SAMPLE_HEADER + 4 * self.bearing.n_balls)
+        self._sampler(t, self._ws, self._balls, row)
+        return row
 
     def _extra_fields(self, rest):
         z = self.bearing.n_balls
         return {"ball_load_inner": rest[:, :z], "ball_load_outer": rest[:, z:2 * z],
-                "contact_angle_inner": rest[:, 2 * z:3 * z]}
+                "contact_angle_inner": np.arctan2(rest[:, 2 * z:3 * z], rest[:, 3 * z:4 * z])}

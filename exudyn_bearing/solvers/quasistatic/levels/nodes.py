@@ -9,7 +9,8 @@ evaluations. Here the same evaluation (:func:`.element.level_forces`) also retur
 damping C of the balls' current state (:func:`..damping.ring_damping_force`, the condensation of
 :func:`..damping.condensed_matrices`), Exudyn's ``jacobianUserFunction`` hands them to Newton at every step
 (``modifiedNewtonJacUpdatePerStep``, set by ``SimulationSettings``), and the bearings between the same nodes share
-one object and one call into Python per evaluation.
+one object, one call into Python per evaluation and in it one compiled call for all of them
+(:func:`.element.group_level_forces`; the Jacobian :func:`group_jacobian`).
 
 Kinematics (those of the connector, ObjectConnectorRigidBodySpringDamper with its default rotationMarker0/1 = I):
 each ring marker is a ``MarkerBodyRigid`` on ground or on a ``RigidBody`` with a ``NodeRigidBodyRxyz`` node, or a
@@ -35,9 +36,10 @@ import numpy as np
 from ...._jit import kernel
 from ....data import InputError
 from ....model.rigid_nodes import g_xyz, rot_xyz, rot_xyz_angles
-from .base import python_calls
+from .base import entry_point, python_calls
 
-__all__ = ["FORMULATIONS", "NodeGroup", "node_force", "node_formulation_markers", "node_jacobian", "node_kinematics"]
+__all__ = ["FORMULATIONS", "NodeGroup", "group_jacobian", "node_force", "node_formulation_markers", "node_jacobian",
+           "node_kinematics"]
 
 #: Values of the quasi-static level's ``formulation`` option ("auto": "node" where the markers allow it)
 FORMULATIONS = ("auto", "connector", "node")
@@ -48,12 +50,18 @@ _P, _A, _V, _W, _G, _O, _NS = 0, 3, 12, 15, 18, 27, 30
 #: a bearing's node work array (one array: each array argument of a compiled call costs its unboxing): per ring
 #: (outer = marker 0, inner = marker 1) the coordinate offset in the object (-1: ground), the node's reference
 #: coordinates (6), the marker's local position (3), a ground marker's position and rotation (12), the ring state
-#: (_NS); then the connector's quantities d, r, v, w (12), the level's K and C (50), the bearing's share of the
-#: generalized force (6 per node of the object)
+#: (_NS); then the connector's quantities d, r, v, w (12), the level's K and C (50), what the group's call checks
+#: (:meth:`NodeGroup._force`: the speed band of the grooves' last update (2), the ball load limit, the largest ball
+#: load of the last evaluation), the Jacobian's scratch (the 6x6 matrix of K and C, the two B_i and B_i^T of that
+#: matrix: 36 + 72 + 36), the bearing's share of the generalized force (6 per node of the object)
 N_OFFS, N_REFS, N_LOCAL, N_FIXED, N_STATES = 0, 2, 14, 20, 44
 N_CONN = N_STATES + 2 * _NS
 N_MATS = N_CONN + 12
-N_SHARE = N_MATS + 50
+N_BAND = N_MATS + 50
+N_QLIMIT = N_BAND + 2
+N_QMAX = N_QLIMIT + 1
+N_SCRATCH = N_QMAX + 1
+N_SHARE = N_SCRATCH + 144
 
 
 def node_formulation_markers(mbs, marker):
@@ -83,7 +91,7 @@ def node_formulation_markers(mbs, marker):
     return node, local, fixed
 
 
-@kernel
+@kernel(no_runtime=True)
 def _ring_state(q, qt, nws, i):
     """Ring i's state (layout _P.._O, in ``nws``) from the object's coordinates ``q``, ``qt``."""
     s = nws[N_STATES + _NS * i:N_STATES + _NS * (i + 1)]
@@ -119,7 +127,7 @@ def _col_dot(s0, s1, i, j):
     return s0[_A + i] * s1[_A + j] + s0[_A + 3 + i] * s1[_A + 3 + j] + s0[_A + 6 + i] * s1[_A + 6 + j]
 
 
-@kernel
+@kernel(no_runtime=True)
 def node_kinematics(q, qt, nws):
     """Both rings' states and the connector's quantities d, r, v, w (module docstring) into the node work array."""
     _ring_state(q, qt, nws, 0)
@@ -146,7 +154,7 @@ def node_kinematics(q, qt, nws):
     conn[5] = a2
 
 
-@kernel
+@kernel(no_runtime=True)
 def _b_matrix(s0, si, sign, b):
     """B_i (6x6 row-major, module docstring) of ring state ``si`` in the frame of ring state ``s0``, into ``b``."""
     for k in range(36):
@@ -167,7 +175,7 @@ def _b_matrix(s0, si, sign, b):
                 b[6 * (r + 3) + 3 + m] += sign * at * si[_G + 3 * c + m]
 
 
-@kernel
+@kernel(no_runtime=True)
 def node_force(out, nws, gen):
     """gen -= B_i^T out for both rings on a node: the connector's f = ``out`` (6,) applied as Exudyn applies it
     (module docstring): on ring i (sign s_i) s_i A0 f_force on the position coordinates and
@@ -198,49 +206,74 @@ def node_force(out, nws, gen):
             gen[off + 3 + m] -= sign * (si[_G + m] * t0 + si[_G + 3 + m] * t1 + si[_G + 6 + m] * t2)
 
 
-@kernel
+@kernel(no_runtime=True)
+def group_jacobian(nwss, f2, f2t, jac):
+    """jac = the sum of :func:`node_jacobian` over the bearings of a group (``nwss``: a tuple of their node work
+    arrays): one compiled call for all."""
+    for r in range(jac.shape[0]):
+        for c in range(jac.shape[1]):
+            jac[r, c] = 0.0
+    for i in range(len(nwss)):
+        node_jacobian(nwss[i], f2, f2t, jac)
+
+
+@kernel(no_runtime=True)
 def node_jacobian(nws, f2, f2t, jac):
     """jac += f2 B_i^T K6 B_j + f2t B_i^T C6 B_j over both rings on a node (module docstring), K and C and the
-    connector's quantities of the bearing's last evaluation (in ``nws``)."""
+    connector's quantities of the bearing's last evaluation (in ``nws``; the products in its scratch, N_SCRATCH:
+    no allocation, the kernel runs without numba's runtime)."""
     mats = nws[N_MATS:N_MATS + 50]
     conn = nws[N_CONN:N_CONN + 12]
-    m = np.zeros((6, 6))
+    m = nws[N_SCRATCH:N_SCRATCH + 36]  # row-major 6x6
+    bs = nws[N_SCRATCH + 36:N_SCRATCH + 108]  # B_0, B_1 (row-major 6x6 each)
+    left = nws[N_SCRATCH + 108:N_SCRATCH + 144]  # B_i^T m
+    for k in range(36):
+        m[k] = 0.0
     w2 = conn[11]
     for r in range(5):
         for c in range(5):
-            m[r, c] = f2 * mats[5 * r + c] + f2t * mats[25 + 5 * r + c]
+            m[6 * r + c] = f2 * mats[5 * r + c] + f2t * mats[25 + 5 * r + c]
         # the tilt rates (w_x - w_z theta_y, w_y + w_z theta_x): their C columns on theta and on w_z
-        m[r, 4] -= f2 * mats[25 + 5 * r + 3] * w2
-        m[r, 3] += f2 * mats[25 + 5 * r + 4] * w2
-        m[r, 5] = f2t * (-mats[25 + 5 * r + 3] * conn[4] + mats[25 + 5 * r + 4] * conn[3])
-    bs = np.empty((2, 36))
+        m[6 * r + 4] -= f2 * mats[25 + 5 * r + 3] * w2
+        m[6 * r + 3] += f2 * mats[25 + 5 * r + 4] * w2
+        m[6 * r + 5] = f2t * (-mats[25 + 5 * r + 3] * conn[4] + mats[25 + 5 * r + 4] * conn[3])
     for i in range(2):
         _b_matrix(nws[N_STATES:N_STATES + _NS], nws[N_STATES + _NS * i:N_STATES + _NS * (i + 1)],
-                  1.0 if i == 1 else -1.0, bs[i])
+                  1.0 if i == 1 else -1.0, bs[36 * i:36 * (i + 1)])
     for i in range(2):
         oi = int(nws[N_OFFS + i])
         if oi < 0:
             continue
-        left = bs[i].reshape(6, 6).T @ m
+        for r in range(6):
+            for c in range(6):
+                acc = 0.0
+                for k in range(6):
+                    acc += bs[36 * i + 6 * k + r] * m[6 * k + c]
+                left[6 * r + c] = acc
         for j in range(2):
             oj = int(nws[N_OFFS + j])
             if oj < 0:
                 continue
-            blk = left @ bs[j].reshape(6, 6)
             for r in range(6):
                 for c in range(6):
-                    jac[oi + r, oj + c] += blk[r, c]
+                    acc = 0.0
+                    for k in range(6):
+                        acc += left[6 * r + k] * bs[36 * j + 6 * k + c]
+                    jac[oi + r, oj + c] += acc
 
 
 class NodeGroup:
     """The ObjectGenericODE2 of the bearings (node formulation) between one set of nodes: one force and one
-    Jacobian call per evaluation for all of them."""
+    Jacobian call per evaluation for all of them, each one compiled call for all of them (``kernel``: the
+    level's kernel over a group's bearings, :func:`.element.group_level_forces`; set by the level)."""
 
     def __init__(self, mbs, nodes):
         from exudyn.itemInterface import ObjectGenericODE2, VObjectGenericODE2
 
         self.nodes = tuple(nodes)
         self.bearings = []
+        self.kernel = None
+        self._calls = None  # (bearings, force call, its arguments after gen, Jacobian call): made on first use
         n = 6 * len(self.nodes)
         self._gen = np.zeros(n)
         self._jac = np.zeros((n, n))
@@ -260,25 +293,46 @@ class NodeGroup:
     def offset(self, node):
         return -1 if node < 0 else 6 * self.nodes.index(node)
 
+    def _compiled_calls(self):
+        """(bearings, the force kernel's entry point and its arguments after ``gen``, the Jacobian kernel's): one
+        compiled call for the group's bearings (tuples of their arrays), made again when a bearing joined."""
+        if self._calls is None or len(self._calls[0]) != len(self.bearings):
+            bs = tuple(self.bearings)
+            args = (bs[0]._hz_table, tuple(b._method for b in bs), tuple(b._nws for b in bs),
+                    tuple(b._ws for b in bs), tuple(b._start for b in bs), tuple(b._balls for b in bs))
+            self._calls = (bs, entry_point(self.kernel, (self._gen, self._gen, self._gen, *args)), args,
+                           entry_point(group_jacobian, (args[2], 1.0, 1.0, self._jac)))
+        return self._calls
+
     def _force(self, mbs, t, itemNumber, q, q_t):
+        """The generalized force of the group's bearings: per bearing the steps of the connector's evaluation
+        before the kernel (a new run, the first evaluation's cage angle), one compiled call for all
+        (:func:`.element.group_level_forces`), per bearing the steps after it where that call asks for them (the
+        speed left the grooves' band, a ball load or contact angle beyond its limit), and the samples."""
         python_calls[0] += 1
         gen = self._gen
-        gen.fill(0.0)
         q = np.asarray(q, float)
         q_t = np.asarray(q_t, float)
-        for b in self.bearings:
-            b._node_evaluation(t, q, q_t, gen)
+        bs, kern, args, _ = self._compiled_calls()
+        for b in bs:
+            b._node_before(t, q, q_t)
+        if kern(q, q_t, gen, *args):
+            for b in bs:
+                b._node_after(q, q_t, gen)
+        for b in bs:
+            if t >= b._next_sample - 1e-12:
+                b._end(t)
+            b._mats_ready = True
         return gen
 
     def _jacobian(self, mbs, t, itemNumber, q, q_t, fODE2, fODE2_t):
         python_calls[0] += 1
-        jac = self._jac
-        jac.fill(0.0)
-        for b in self.bearings:
+        bs, _, args, jac_kernel = self._compiled_calls()
+        for b in bs:
             if not b._mats_ready:  # no evaluation yet: one at this state
                 b._node_evaluation(t, np.asarray(q, float), np.asarray(q_t, float), np.zeros_like(self._gen))
-            b._node_jacobian(b._nws, float(fODE2), float(fODE2_t), jac)
-        return jac
+        jac_kernel(args[2], float(fODE2), float(fODE2_t), self._jac)
+        return self._jac
 
 
 def check_formulation(value):
