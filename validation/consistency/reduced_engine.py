@@ -188,7 +188,8 @@ def main(argv=None):
             walls[tag] = statistics.median(times)
             stats = getattr(res.record, "reduced_stats", None)
             work = (f"  force evaluations/step {stats['evaluations_per_step']:.3g}  Newton iterations/step "
-                    f"{stats['newton_per_step']:.3g}") if stats else ""
+                    f"{stats['newton_per_step']:.3g} (most {stats['newton_max']}, unconverged steps "
+                    f"{stats['unconverged_steps']})") if stats else ""
             print(f"{tag:>22}: " + "  ".join(f"{k} {s[k]:.6g}" for k in KEYS)
                   + f"  steps {s['steps']}  wall/simulated s {walls[tag]:.3g}{work}")
         ref_tag = f"reference dt={REFERENCE_DT:g}"
