@@ -289,6 +289,37 @@ CLAIMS = [
     # defects: the cost of the defect feature in a scene without defects (bench_defects.py)
     ("wall-time ratio against the code before the\ndefect feature is 0.646 against a noise floor of 1.002",
      "median per-round ratio 0.646, against 1.002", "python validation/performance/bench_defects.py"),
+    # the reduced engine on the ACBB-120 at 25,000 rpm and its work-precision (docs/theory/reduced.md, Checks)
+    ("Q_max inner +0.0002 %, dissipation -0.0009 %",
+     "reduced dt=0.0001 - quasi-static: q_max_inner +0.0002 % (ok 0.5 %) q_max_outer +0.0001 % (ok 0.5 %) "
+     "cage_speed -0.0002 % (ok 0.2 %) dissipation -0.0009 %", "python validation/consistency/reduced_engine.py"),
+    ("Q_max inner +0.0771 %, outer +0.0529 %, contact angles +0.0061 and -0.0081 deg, orbital speed +0.0125 %, "
+     "dissipation -0.0881 %",
+     "reduced dt=0.0001 - reference: q_max_inner +0.0771 % (ok 0.5 %) q_max_outer +0.0529 % (ok 0.5 %) "
+     "cage_speed +0.0125 % (ok 0.2 %) dissipation -0.0881 % (ok 1 %) alpha_inner +0.0061 deg (ok 0.1 deg) "
+     "alpha_outer -0.0081 deg", "python validation/consistency/reduced_engine.py"),
+    ("its Q_max inner is -0.0768 % off the equilibrium at 2 us",
+     "reference dt=2e-06 - quasi-static: q_max_inner -0.0768 %", "python validation/consistency/reduced_engine.py"),
+    ("-0.0386 % at 1 us", "reference dt=1e-06 - quasi-static: q_max_inner -0.0386 %", "python validation/consistency/reduced_engine.py"),
+    ("-0.0193 % at 0.5 us", "reference dt=5e-07 - quasi-static: q_max_inner -0.0193 %", "python validation/consistency/reduced_engine.py"),
+    ("the balance takes 1.82 Newton iterations per step at 100 us (most 13, at the start)",
+     "force evaluations/step 10.5 Newton iterations/step 1.82 (most 13, unconverged steps 0)", "python validation/consistency/reduced_engine.py"),
+    ("9.23 s of wall time per simulated second at 100 us (10.5 force evaluations per step) against 43.5 for the "
+     "reference engine at 2 us, 4.71 times cheaper",
+     "cost: 9.23 s per simulated second against 43.5 (reference/reduced 4.71)", "python validation/consistency/reduced_engine.py"),
+    ("the reference engine at 2 us 0.0126 % for 3.64 s", "reference 2 us: wall/simulated s 3.64 errors: "
+     "dissipation 0.0126 %", "python validation/performance/reduced_work_precision.py"),
+    ("at 4 us 158 %", "reference 4 us: wall/simulated s 1.79 errors: dissipation 158 %",
+     "python validation/performance/reduced_work_precision.py"),
+    ("the reduced engine 0.00641 % at 20 us for 4.35 s",
+     "reduced 20 us: wall/simulated s 4.35 errors: dissipation 0.00641 %", "python validation/performance/reduced_work_precision.py"),
+    ("0.0771 % at 100 us for 0.992 s", "reduced 100 us: wall/simulated s 0.992 errors: dissipation 0.0771 %", "python validation/performance/reduced_work_precision.py"),
+    ("one per run at 20 and at 100 us", "Newton iterations/step 2.08 (most 29, unconverged steps 1)", "python validation/consistency/reduced_engine.py"),
+    ("one per run at 20 and at 100 us", "Newton iterations/step 2.53 (most 39, unconverged steps 1)", "python validation/consistency/reduced_engine.py"),
+    ("from 0.0029 % (10 us) to 0.117 % (100 us)", "reduced 10 us: wall/simulated s 8.59 errors: dissipation "
+     "0.00193 % q_max_inner 0.0029 %", "python validation/performance/reduced_work_precision.py"),
+    ("from 0.0029 % (10 us) to 0.117 % (100 us)", "errors: dissipation 0.0771 % q_max_inner 0.117 %", "python validation/performance/reduced_work_precision.py"),
+    ("4.77e-05 % at 2 us", "errors: dissipation 0.0126 % q_max_inner 4.77e-05 %", "python validation/performance/reduced_work_precision.py"),
 ]
 
 

@@ -1,23 +1,34 @@
 """The reduced engine against the reference engine: steady states and cost (docs/theory/reduced.md).
 
-Two cases, both engines in this session, no cage (the reduced engine's first version), traction over the
-Hertz ellipse (the DEM papers' mu(Lambda) traction model, the 6208's default):
+Three steady cases and a transient, both engines in this session, no cage (the reduced engine's first version),
+traction over the Hertz ellipse (each bearing's default traction model and lubricant):
 
 * the 6208 radial, the DEM papers' case: F_r = 3000 N, 500 rad/s, from the analytic start;
 * the 6208 under thrust: F_a = 3000 N, 500 rad/s, from the quasi-static start (control 'equilibrium'); every
   ball is loaded alike, so both engines are also compared with the quasi-static traction equilibrium;
-* a transient: the same thrust, run up from rest to 500 rad/s in 20 ms (:func:`runup`).
+* the high-speed case: Gupta's ACBB-120 at 25,000 rpm under F_a = 22,240 N (cageless as its source, its
+  catalogue lubricant and EHL traction, the inner ring growing with speed, as
+  validation/consistency/highspeed_acbb120.py), 40 ms from the quasi-static race-control (Jones) start, so
+  that both engines move to the steady state rather than start on it; compared with the reference engine and
+  with the quasi-static traction equilibrium;
+* a transient: the 6208 under thrust, run up from rest to 500 rad/s in 20 ms (:func:`runup`).
 
-Printed per case and engine: Q_max inner / outer at psi = 0, the mean orbital speed of the balls (the summary's
-cage_speed), the dissipation and the drive power of the summary window (the second half of the run), the
-energy residual, the step and the steps taken (the reduced engine: its force evaluations and Newton
-iterations per step); then the relative differences of the reduced engine from the
-reference engine against the criteria (loads 0.5 %, orbital speeds 0.2 %, dissipation 1 %), and the wall time
-per simulated second of each engine (median of ``--repeats`` runs; the integration alone, the compiled kernels
+Printed per case and engine: Q_max inner / outer at psi = 0, the contact angles, the mean orbital speed of the
+balls (the summary's cage_speed), the dissipation and the drive power of the summary window (the second half of
+the run), the energy residual, the step and the steps taken (the reduced engine: its force evaluations and
+Newton iterations per step); then the differences of the reduced engine from the reference engine against the
+criteria (loads 0.5 %, contact angles 0.1 deg, orbital speeds 0.2 %, dissipation 1 %), and the wall time per
+simulated second of each engine (median of ``--repeats`` runs; the integration alone, the compiled kernels
 loaded before the clock starts) and their ratio. ``--dt`` lists the reduced engine's steps (default 2e-5, 4e-5
-and 1e-4 s, the largest step a Scenario takes); the reference engine takes 2e-6 s.
+and 1e-4 s, the largest step a Scenario takes); the reference engine takes 2e-6 s. ``--case`` runs the cases
+whose name contains one of its words (the run-up with "run-up"); ``--jac-every`` and ``--ring-every`` set
+how long the reduced engine keeps its Jacobians (:data:`exudyn_bearing.solvers.reduced.engine.JAC_EVERY`,
+``RING_EVERY``: fewer force evaluations per step, at the accuracy the printout shows). In the cases compared
+with the quasi-static equilibrium the reference engine also runs once at 1 and 0.5 us, untimed (its difference
+from the equilibrium shrinks with its step: its step error).
 
-    python validation/consistency/reduced_engine.py [--repeats 3] [--dt 2e-5 4e-5 1e-4] [--quick]
+    python validation/consistency/reduced_engine.py [--repeats 3] [--dt 2e-5 4e-5 1e-4] [--quick] [--case ACBB]
+        [--jac-every 2] [--ring-every 1]
 """
 from __future__ import annotations
 
@@ -28,30 +39,77 @@ import warnings
 import numpy as np
 
 import exudyn_bearing as eb
+from exudyn_bearing.simulate import quasistatic_start
+from exudyn_bearing.solvers.reduced import engine as reduced
 
-#: name: (scenario fields, simulated time [s], compared with the quasi-static traction equilibrium)
+#: name: (bearing, scenario fields (over COMMON), simulated time [s], compared with the quasi-static traction
+#: equilibrium); the ACBB-120 sampled as highspeed_acbb120.py (at the 100 us step a sample every step would add
+#: a force evaluation to each)
 CASES = {
-    "6208 radial (Fr 3000 N, 500 rad/s)": (dict(Fr=3000.0, omega=500.0), 0.06, False),
-    "6208 thrust (Fa 3000 N, 500 rad/s)": (dict(Fa=3000.0, omega=500.0, initial="quasistatic",
-                                                control="equilibrium"), 0.02, True),
+    "6208 radial (Fr 3000 N, 500 rad/s)": ("6208", dict(Fr=3000.0, omega=500.0), 0.06, False),
+    "6208 thrust (Fa 3000 N, 500 rad/s)": ("6208", dict(Fa=3000.0, omega=500.0, initial="quasistatic",
+                                                        control="equilibrium"), 0.02, True),
+    "ACBB-120 thrust (Fa 22240 N, 25000 rpm)": ("ACBB-120", dict(Fa=22240.0, omega=2618.0, ring_growth=True,
+                                                                 initial="quasistatic", control="outer",
+                                                                 sample_dt=5e-4), 0.04, True),
 }
 COMMON = dict(cage="none", traction_level="ellipse", sample_dt=1e-4)
 REFERENCE_DT = 2e-6
+#: Finer steps of the reference engine in the cases compared with the quasi-static equilibrium (one run each,
+#: untimed): whether the reference engine's difference from it is its own step error.
+FINE_REFERENCE_DT = (1e-6, 5e-7)
 #: The criteria (relative): loads, orbital speeds, dissipation.
 CRITERIA = {"q_max_inner": 0.005, "q_max_outer": 0.005, "cage_speed": 0.002, "dissipation": 0.01}
+#: The criteria of the contact angles (absolute) [deg].
+ANGLE_CRITERIA = {"alpha_inner": 0.1, "alpha_outer": 0.1}
 #: The run-up's check: the mean orbital speed within RUNUP_TOL of the reference engine's from RUNUP_FROM [s] on
 #: (the cage's first revolution ends near 40 ms; the check starts a quarter into the ramp).
 RUNUP_TOL = 0.02
 RUNUP_FROM = 0.005
-KEYS = ("q_max_inner", "q_max_outer", "cage_speed", "dissipation", "drive_power", "energy_residual")
+KEYS = ("q_max_inner", "q_max_outer", "alpha_inner", "alpha_outer", "cage_speed", "dissipation", "drive_power",
+        "energy_residual")
 
 
-def run(fields, t_end, engine, dt):
-    sc = eb.Scenario(**fields, **COMMON, t_end=t_end, dt=dt)
+def run(bearing, fields, t_end, engine, dt):
+    sc = eb.Scenario(**{**COMMON, **fields}, t_end=t_end, dt=dt)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        res = eb.simulate("6208", sc, engine=engine)
+        res = eb.simulate(bearing, sc, engine=engine)
         return res, res.summary(fraction=0.5)
+
+
+def quasistatic_equilibrium(bearing, fields):
+    """The quasi-static traction equilibrium of a case (control 'equilibrium', the inner ring's tilt held, the
+    traction model, lubricant and ring growth of the dynamic engines:
+    :func:`exudyn_bearing.simulate.quasistatic_start`),
+    as the summary's keys: Q_max, contact angles [deg] and orbital speed of ball 0 (every ball alike under
+    thrust), the bearing's dissipation."""
+    sc = eb.Scenario(**{**COMMON, **fields, "initial": "quasistatic", "control": "equilibrium"}, t_end=1e-3, dt=1e-5)
+    sol = quasistatic_start(bearing, sc)["static"]
+    b = sol.balls
+    return {"q_max_inner": sol.q_max_inner, "q_max_outer": sol.q_max_outer,
+            "alpha_inner": float(np.degrees(b["alpha_inner"][0])),
+            "alpha_outer": float(np.degrees(b["alpha_outer"][0])),
+            "cage_speed": float(b["orbital_speed"][0]), "dissipation": sol.dissipation_total}
+
+
+def differences(s, ref, failed, what, check=True):
+    """The printed differences of summary ``s`` from ``ref`` against the criteria (relative, angles absolute);
+    the failed ones appended to ``failed`` as ``what`` and the key (when ``check``)."""
+    parts = []
+    for k, tol in {**CRITERIA, **ANGLE_CRITERIA}.items():
+        if k in ANGLE_CRITERIA:
+            d = s[k] - ref[k]
+            text = f"{k} {d:+.4f} deg"
+        else:
+            d = (s[k] - ref[k]) / ref[k]
+            text = f"{k} {100 * d:+.4f} %"
+        ok = abs(d) <= tol
+        if check and not ok:
+            failed.append(f"{what} {k}")
+        tol_text = f"{tol:g} deg" if k in ANGLE_CRITERIA else f"{100 * tol:g} %"
+        parts.append(text + (f" ({'ok' if ok else 'FAILS'} {tol_text})" if check else ""))
+    return parts
 
 
 def runup(dts, repeats):
@@ -96,10 +154,27 @@ def main(argv=None):
     ap.add_argument("--repeats", type=int, default=3, help="timed runs per engine and case (median)")
     ap.add_argument("--dt", type=float, nargs="+", default=[2e-5, 4e-5, 1e-4], help="steps of the reduced engine [s]")
     ap.add_argument("--quick", action="store_true", help="one run each")
+    ap.add_argument("--jac-every", type=int, default=None,
+                    help=f"the reduced engine's JAC_EVERY (steps a Jacobian is kept; default {reduced.JAC_EVERY})")
+    ap.add_argument("--ring-every", type=int, default=None,
+                    help=f"the reduced engine's RING_EVERY (default {reduced.RING_EVERY})")
+    ap.add_argument("--case", nargs="+", default=None,
+                    help="run only the cases whose name contains one of these words ('run-up': the transient)")
     args = ap.parse_args(argv)
     repeats = 1 if args.quick else max(1, args.repeats)
+    if args.jac_every is not None or args.ring_every is not None:  # the engines built below take them
+        reduced.JAC_EVERY = args.jac_every or reduced.JAC_EVERY
+        reduced.RING_EVERY = args.ring_every or reduced.RING_EVERY
+        print(f"reduced engine: Jacobians kept for up to JAC_EVERY = {reduced.JAC_EVERY} steps, the ring's at every "
+              f"RING_EVERY = {reduced.RING_EVERY}-th retaking")
+
+    def chosen(name):
+        return args.case is None or any(w.lower() in name.lower() for w in args.case)
+
     failed = []
-    for name, (fields, t_end, with_qs) in CASES.items():
+    for name, (bearing, fields, t_end, with_qs) in CASES.items():
+        if not chosen(name):
+            continue
         print(f"\n== {name}, {t_end:g} s simulated, summary over the second half")
         rows = {}
         walls = {}
@@ -107,13 +182,14 @@ def main(argv=None):
             tag = f"{engine} dt={dt:g}"
             times = []
             for _ in range(repeats):
-                res, s = run(fields, t_end, engine, dt)
+                res, s = run(bearing, fields, t_end, engine, dt)
                 times.append(res.wall_s / t_end)
             rows[tag] = s
             walls[tag] = statistics.median(times)
             stats = getattr(res.record, "reduced_stats", None)
             work = (f"  force evaluations/step {stats['evaluations_per_step']:.3g}  Newton iterations/step "
-                    f"{stats['newton_per_step']:.3g}") if stats else ""
+                    f"{stats['newton_per_step']:.3g} (most {stats['newton_max']}, unconverged steps "
+                    f"{stats['unconverged_steps']})") if stats else ""
             print(f"{tag:>22}: " + "  ".join(f"{k} {s[k]:.6g}" for k in KEYS)
                   + f"  steps {s['steps']}  wall/simulated s {walls[tag]:.3g}{work}")
         ref_tag = f"reference dt={REFERENCE_DT:g}"
@@ -121,33 +197,23 @@ def main(argv=None):
         for tag, s in rows.items():
             if tag == ref_tag:
                 continue
-            parts = []
-            for k, tol in CRITERIA.items():
-                d = (s[k] - ref[k]) / ref[k]
-                ok = abs(d) <= tol
-                if not ok:
-                    failed.append(f"{name} {tag} {k}")
-                parts.append(f"{k} {100 * d:+.4f} % ({'ok' if ok else 'FAILS'} {100 * tol:g} %)")
+            parts = differences(s, ref, failed, f"{name} {tag}")
             d_drive = (s["drive_power"] - ref["drive_power"]) / ref["drive_power"]
             print(f"{tag:>22} - reference: " + "  ".join(parts) + f"  drive_power {100 * d_drive:+.3f} % (no criterion)")
             print(f"{'':>22}   cost: {walls[tag]:.3g} s per simulated second against {walls[ref_tag]:.3g} "
                   f"(reference/reduced {walls[ref_tag] / walls[tag]:.3g}); median of {repeats}")
         if with_qs:  # every ball loaded alike: the quasi-static traction equilibrium is the steady state
-            qs = eb.solve_quasistatic("6208", Fr=fields.get("Fr", 0.0), Fa=fields.get("Fa", 0.0), omega=fields["omega"],
-                                      control="equilibrium", fixed={"tilt_x": 0.0, "tilt_y": 0.0}, stiffness=False)
-            qs_vals = {"q_max_inner": qs.q_max_inner, "q_max_outer": qs.q_max_outer, "dissipation": qs.dissipation_total}
+            qs_vals = quasistatic_equilibrium(bearing, fields)
             print(f"{'quasi-static':>22}: " + "  ".join(f"{k} {v:.6g}" for k, v in qs_vals.items())
                   + " (traction equilibrium, control='equilibrium', tilt held)")
+            for dt in FINE_REFERENCE_DT:
+                rows[f"reference dt={dt:g}"] = run(bearing, fields, t_end, "reference", dt)[1]
             for tag, s in rows.items():
-                parts = []
-                for k, v in qs_vals.items():
-                    d = (s[k] - v) / v
-                    ok = abs(d) <= CRITERIA[k]
-                    if not ok and tag != ref_tag:
-                        failed.append(f"{name} {tag} {k} against the quasi-static equilibrium")
-                    parts.append(f"{k} {100 * d:+.4f} %")
+                parts = differences(s, qs_vals, failed, f"{name} {tag} against the quasi-static equilibrium",
+                                    check=tag.startswith("reduced"))
                 print(f"{tag:>22} - quasi-static: " + "  ".join(parts))
-    failed += runup(args.dt, repeats)
+    if chosen("run-up"):
+        failed += runup(args.dt, repeats)
     print("\nall criteria hold" if not failed else "\nFAILS: " + "; ".join(failed))
     return 1 if failed else 0
 
@@ -157,10 +223,12 @@ def report_section(run):
     return run.printed(
         "The reduced engine against the reference engine",
         "The reduced engine (ball centres on their normal force balance, linearly implicit step; "
-        "docs/theory/reduced.md) against the reference engine on the 6208 radial (the DEM papers' case) and "
-        "under 3 kN thrust, no cage, traction over the ellipse: Q_max, orbital speed, dissipation and drive "
-        "power, the criteria (0.5 %, 0.2 %, 1 %), and the wall time per simulated second of both engines "
-        "in one session (medians).", last_lines=20)
+        "docs/theory/reduced.md) against the reference engine on the 6208 radial (the DEM papers' case), the 6208 "
+        "under 3 kN thrust and the ACBB-120 at 25,000 rpm under 22,240 N thrust (from the race-control start), "
+        "no cage, traction over the ellipse: Q_max, contact angles, orbital speed, dissipation and drive "
+        "power, the criteria (0.5 %, 0.1 deg, 0.2 %, 1 %), under thrust also against the quasi-static traction "
+        "equilibrium, a thrust run-up, and the wall time per simulated second of both engines "
+        "in one session (medians).", last_lines=60)
 
 
 if __name__ == "__main__":

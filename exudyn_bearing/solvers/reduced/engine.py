@@ -32,7 +32,8 @@ __all__ = ["ReducedEngine", "reduced_support_error", "BALANCE_TOL", "MAX_ITER", 
 #: overlap of a loaded ball; its load to about 1.5e-7).
 BALANCE_TOL = 1e-12
 #: Newton iterations of a step's force balance at most (a step that needs more is counted in the summary's
-#: ``reduced.unconverged_steps`` and goes on from the last iterate).
+#: ``reduced.unconverged_steps`` and goes on from the last iterate); the balance at a run's start, from a state
+#: that may be far off it, takes up to :data:`~exudyn_bearing.solvers.reduced.stepper.START_ITER` times as many.
 MAX_ITER = 12
 #: Steps over which the Jacobians of the ball speeds and of the ring are kept at most.
 JAC_EVERY = 2

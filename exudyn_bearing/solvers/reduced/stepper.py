@@ -45,6 +45,11 @@ H_SPEED = 1e-6
 #: Position perturbation [m] of the Jacobians of the force balance and of the ring force (1e-4 of the
 #: 1e-5 m Hertz overlaps of loaded balls: the forward difference's error stays below 1e-4 of the stiffness).
 H_POS = 1e-9
+#: Iterations of the force balance at a call's start (before its first step), in units of ``max_iter``: a start off
+#: the balance (the analytic start, the quasi-static race-control start of the ACBB-120) may need more than
+#: ``max_iter`` to 1e-12 m (the modified Newton iteration converges linearly from afar) where a warm-started step
+#: needs one or two.
+START_ITER = 4
 #: Orbital-angle perturbation [rad] of the forces' dependence on the ball's place in the load zone.
 H_ANGLE = 1e-7
 
@@ -291,10 +296,12 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
     h_om = H_SPEED / np.mean(q[:, 0])  # a surface speed of H_SPEED at the pitch circle
     h_w = H_SPEED / p[P_RB]            # and on the ball's surface
     h_v = H_SPEED
-    # the first step's Jacobians of the force balance
+    # the first step's Jacobians of the force balance; from a start off the balance (the analytic start, a
+    # quasi-static start under another hypothesis than the dynamics') the iteration converges linearly from afar
+    # and may take more than max_iter: START_ITER times as many here
     it, ok, worst = _balance(t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb, tb,
-                             fc, fr, fring, glob, diag, cage_load, res, acc, g, r0, done, tol, max_iter, work,
-                             want_yes, defect_path, ellipse_path, loss_path)
+                             fc, fr, fring, glob, diag, cage_load, res, acc, g, r0, done, tol, START_ITER * max_iter,
+                             work, want_yes, defect_path, ellipse_path, loss_path)
     for step in range(n_steps):
         t = t0 + step * dt
         # (1) the committed forces at t_n are those of the last balance (acc, fb, fring)
