@@ -4,6 +4,8 @@ chosen engine and returns :class:`~exudyn_bearing.outputs.results.Results`;
 :func:`CreateBallBearing` adds the bearing element to an Exudyn model."""
 from __future__ import annotations
 
+import warnings
+
 from .data import BallBearing, InputError, Lubricant, default_traction, load_bearing, load_lubricant
 from .model.load_range import check_load_range, check_run_pressures
 from .model.memory import check_sample_memory
@@ -95,6 +97,13 @@ def simulate(bearing, scenario: Scenario | None = None, engine: str = "reference
             from .solvers.reduced import ReducedEngine
 
             record = ReducedEngine(bearing, scenario, lubricant, start=start).run(progress=progress)
+            bad = record.reduced_stats["unconverged_steps"]
+            if bad:  # said, not hidden: the balance of these steps went on from its last iterate
+                warnings.warn(f"reduced engine: the balls' force balance did not converge within its iteration "
+                              f"limit in {bad} of {record.steps} steps (the run went on from the last iterate; "
+                              "typically where a ball leaves the load zone and its contact opens); the summary's "
+                              "reduced_work counts them: a smaller dt, or the reference engine, resolves them",
+                              UserWarning, stacklevel=2)
         else:
             from .solvers.element.engine import ExudynEngine
 

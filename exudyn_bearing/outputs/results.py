@@ -139,7 +139,7 @@ SUMMARY_UNITS = {
     "window.t0": "s", "window.t1": "s", "drive_power": "W", "load_power": "W", "dissipation": "W",
     "kinetic_energy_change": "J", "energy_residual": "-", "power_loss": "W per component",
     "power_loss_total": "W", "not_modelled": "text", "energy_check": "W, - (residual), text",
-    "friction_outputs_converged": "-", "not_converged": "summary keys", **WHOLE_LOSS_UNITS}
+    "friction_outputs_converged": "-", "not_converged": "summary keys", "reduced_work": "-", **WHOLE_LOSS_UNITS}
 
 #: What the loss and energy keys of the summary mean (docs/theory/dynamics.md,
 #: "Losses and the energy balance"); every summary carries it as ``descriptions``.
@@ -183,6 +183,9 @@ SUMMARY_DESCRIPTIONS = {
                                   "outputs (listed under not_converged) are step noise that falls about in "
                                   "proportion to dt, not a converged loss; use traction_level='ellipse' for losses",
     "not_converged": "summary keys whose values are not converged in the step (see friction_outputs_converged)",
+    "reduced_work": "the reduced engine's work over the whole run: Newton iterations of the balls' force balance per "
+                    "step (mean, most), force evaluations per step, steps whose balance did not converge within "
+                    "its iteration limit (the run went on from the last iterate), steps that retook the Jacobians",
     **WHOLE_LOSS_DESCRIPTIONS,
 }
 
@@ -689,6 +692,9 @@ class Results:
             out["rigid_cage_estimated"] = list((self.scenario.rigid_cage or estimated_cage(b)).estimated)
         if self.has_protocol():
             out["phases"] = self._phase_summaries()
+        work = getattr(self.record, "reduced_stats", None)
+        if work is not None:  # the reduced engine's work, and the steps whose force balance did not converge
+            out["reduced_work"] = dict(work)
         out["units"] = dict(SUMMARY_UNITS, **(CAGE_SUMMARY_UNITS if self.scenario.cage == "rigid" else {}))
         out["descriptions"] = dict(SUMMARY_DESCRIPTIONS)
         for key in out["not_converged"]:
