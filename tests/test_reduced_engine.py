@@ -1,14 +1,16 @@
 """The reduced engine (docs/theory/reduced.md): steady states equal the reference engine's on the 6208 radial
-(the DEM papers' case) and under thrust, no cage, traction over the ellipse: Q_max within 0.5 %, the balls'
-mean orbital speed within 0.2 %, the dissipation within 1 % (the criteria of the reduced engine; the long runs
-and the costs: validation/consistency/reduced_engine.py); what it does not model is refused by name."""
+(the DEM papers' case, without cage and with its rigid cage) and under thrust, traction over the ellipse: Q_max
+within 0.5 %, the balls' mean orbital speed (the rigid cage's speed) within 0.2 %, the dissipation within 1 % (the
+criteria of the reduced engine; the long runs and the costs: validation/consistency/reduced_engine.py); the rigid
+cage's arrow-shaped step solves its dense system; what it does not model is refused by name."""
 import warnings
 
 import numpy as np
 import pytest
 
 import exudyn_bearing as eb
-from exudyn_bearing.data import InputError
+from exudyn_bearing.data import InputError, load_bearing
+from exudyn_bearing.data.cages import estimated_cage
 from exudyn_bearing.simulate import quasistatic_start
 
 COMMON = dict(cage="none", traction_level="ellipse", sample_dt=1e-4)
@@ -95,7 +97,7 @@ def test_acbb120_high_speed_moves_to_the_quasistatic_traction_equilibrium():
 
 @pytest.mark.parametrize("fields, name", [
     (dict(cage="torus"), "cage"),
-    (dict(cage="rigid"), "cage"),
+    (dict(cage="rigid", cage_damping="implicit", traction_level="ellipse"), "cage_damping"),
     (dict(cage="none"), "friction"),  # the default friction="history" at the point level
     (dict(cage="none", traction_level="ellipse", signal_dt=4e-5), "signal_dt"),
     (dict(cage="none", traction_level="ellipse",
@@ -108,6 +110,34 @@ def test_refuses_what_it_does_not_model_by_name(fields, name):
         eb.simulate("6208", sc, engine="reduced")
 
 
+def test_rigid_cage_steady_state_equals_the_reference_engine():
+    # the 6208 radial (the DEM papers' case) with its estimated rigid cage (outer-land guided, cylindrical
+    # pockets): the cage whirls irregularly in its land clearance in both engines, so the summary is taken over
+    # the last three quarters of 0.2 s (window 0.05-0.2 s); the issue's criteria at dt = 20 us against the
+    # reference engine's 2 us for the loads, the cage's speed and the dissipation of the ball / race contacts.
+    # The cage's own losses follow the irregular whirl (land and pocket losses moved by 3-6 % between two
+    # versions of the start, either way): not a deterministic comparison over 0.15 s; the longer runs and the
+    # whole dissipation: validation/consistency/reduced_engine.py
+    fields = dict(Fr=3000.0, omega=500.0, cage="rigid", traction_level="ellipse", sample_dt=1e-4, t_end=0.2)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        ref = eb.simulate("6208", eb.Scenario(**fields, dt=2e-6)).summary(fraction=0.75)
+        res = eb.simulate("6208", eb.Scenario(**fields, dt=2e-5), engine="reduced")
+        red = res.summary(fraction=0.75)
+    assert red["engine"] == "reduced" and red["steps"] == 10000
+    for s in (ref, red):
+        s["dissipation_contacts"] = s["dissipation"] - s["cage_power_pocket"] - s["cage_power_land"]
+    criteria = {**{k: v for k, v in CRITERIA.items() if k != "dissipation"},
+                "dissipation_contacts": CRITERIA["dissipation"]}
+    for key, tol in criteria.items():  # cage_speed: the rigid cage body's speed
+        assert abs(red[key] - ref[key]) <= tol * abs(ref[key]), (key, red[key], ref[key])
+    # the cage is integrated (it turns and moves in its clearance) and its losses are counted
+    assert red["cage_power_land"] > 0.0 and red["cage_power_pocket"] > 0.0
+    clearance = estimated_cage(load_bearing("6208")).land_clearance
+    assert 0.0 < red["cage_whirl_radius"] < clearance
+    assert res.record.reduced_stats["pocket_corrections"] > 0
+
+
 def test_balls_without_contact_stay_put():
     # no load, at rest: every ball's force balance is singular (no contact, no centrifugal force); the rule holds
     # the centres where they are and the run stays finite
@@ -116,3 +146,61 @@ def test_balls_without_contact_stay_put():
     xb = res.data["xb"]
     assert np.all(np.isfinite(xb))
     assert np.max(np.abs(xb[-1] - xb[0])) == 0.0
+
+
+def test_arrow_step_solves_the_dense_system():
+    # the rigid cage's step (solvers/reduced/stepper.py, _arrow_step): the balls' blocks eliminated by a Schur
+    # complement give the same change as the dense arrow-shaped system I - gam dt J, for the step (BDF2, from the
+    # extrapolation) and for a Newton correction (right-hand side minus the residuals)
+    import numba
+    from exudyn_bearing.solvers.reduced.stepper import N_CAGE, _arrow_step
+
+    @numba.njit
+    def call(jphi, jb, acc0, phi, om, wo, prev, jbc, jcb, jcc, ac0, xc, vc, cage_prev, gam, dt, bdf2, corr, resb,
+             resc):
+        z = phi.shape[0]
+        return _arrow_step(jphi, jb, acc0, phi, om, wo, prev, jbc, jcb, jcc, ac0, xc, vc, cage_prev, gam, dt, bdf2,
+                           np.zeros((5, 5)), np.zeros(5), np.zeros(5), np.zeros((z, 5, N_CAGE)), np.zeros((z, 5)),
+                           np.zeros(N_CAGE), np.zeros(N_CAGE), np.zeros((N_CAGE, N_CAGE)), corr, resb, resc)
+
+    rng = np.random.default_rng(7)
+    z, nc, dt, gam = 4, N_CAGE, 2e-5, 2.0 / 3.0
+    scale = 3e4  # gam dt J of order 0.4: the couplings matter
+    jphi, jb = scale * rng.uniform(-1, 1, (z, 4)), scale * rng.uniform(-1, 1, (z, 4, 4))
+    jbc, jcb, jcc = scale * rng.uniform(-1, 1, (z, 4, nc)), scale * rng.uniform(-1, 1, (z, 4, 5)), \
+        scale * rng.uniform(-1, 1, (4, nc))
+    acc0, ac0 = rng.uniform(-1, 1, (z, 4)), rng.uniform(-1, 1, 4)
+    y_b, y_c = rng.uniform(-1, 1, (z, 5)), rng.uniform(-1, 1, nc)
+    prev_b, prev_c = y_b + 1e-3 * rng.uniform(-1, 1, (z, 5)), y_c + 1e-3 * rng.uniform(-1, 1, nc)
+    resb, resc = 1e-3 * rng.uniform(-1, 1, (z, 5)), 1e-3 * rng.uniform(-1, 1, nc)
+    # the dense system: ball j's entries at 5 j, the cage's at 5 Z
+    n, c0 = 5 * z + nc, 5 * z
+    jac = np.zeros((n, n))
+    f = np.zeros(n)
+    for j in range(z):
+        b = 5 * j
+        jac[b, b + 1] = 1.0
+        jac[b + 1:b + 5, b] = jphi[j]
+        jac[b + 1:b + 5, b + 1:b + 5] = jb[j]
+        jac[b + 1:b + 5, c0:] = jbc[j]
+        jac[c0 + 4:, b:b + 5] = jcb[j]
+        f[b], f[b + 1:b + 5] = y_b[j, 1], acc0[j]
+    for i in range(4):
+        jac[c0 + i, c0 + 4 + i] = 1.0
+    jac[c0 + 4:, c0:] = jcc
+    f[c0:c0 + 4], f[c0 + 4:] = y_c[4:], ac0
+    y = np.concatenate([y_b.ravel(), y_c])
+    d = y - np.concatenate([prev_b.ravel(), prev_c])
+    a = np.eye(n) - gam * dt * jac
+    for corr in (False, True):
+        rhs = -np.concatenate([resb.ravel(), resc]) if corr else gam * dt * (f + jac @ d) - gam * d
+        expected = y + np.linalg.solve(a, rhs) + (0.0 if corr else d)
+        phi, om, wo, prev = y_b[:, 0].copy(), y_b[:, 1].copy(), y_b[:, 2:].copy(), prev_b.copy()
+        xc, vc, cage_prev = np.zeros((z, 3)), np.zeros((z, 3)), prev_c.copy()
+        xc[0], xc[1, 0], vc[0], vc[1, 0] = y_c[:3], y_c[3], y_c[4:7], y_c[7]
+        assert call(jphi, jb, acc0, phi, om, wo, prev, jbc, jcb, jcc, ac0, xc, vc, cage_prev, gam, dt, True, corr,
+                    resb, resc)
+        got = np.concatenate([np.column_stack([phi, om, wo]).ravel(), xc[0], [xc[1, 0]], vc[0], [vc[1, 0]]])
+        assert np.allclose(got - y, expected - y, rtol=1e-9, atol=1e-15), (corr, np.max(np.abs(got - expected)))
+        # the step keeps the state it started from as the previous one; a correction leaves it
+        assert np.array_equal(prev, prev_b if corr else y_b)

@@ -1,5 +1,5 @@
 """Driver of the reduced engine (docs/theory/reduced.md): the ball centres on their normal force balance
-at every step (the reduction of Walters 1971 and of Gupta's ADORE), the ball speeds and the inner ring
+at every step (the reduction of Walters 1971 and of Gupta's ADORE), the ball speeds, the rigid cage and the inner ring
 advanced by a linearly implicit (BDF2) step, so that the step is not bound by the ball / race contact
 vibration. Same contact kernel, parameter vector, initial state, samples and
 :class:`~exudyn_bearing.model.record.RunRecord` as the reference engine
@@ -24,7 +24,7 @@ from ...model.record import RunInterrupted, RunRecord, sample_buffers
 from ...model.scenario import Scenario, resolve_cage
 from ...model.stability import SimulationError
 from ...physics import hertz
-from .stepper import N_WORK, W_EVALS, W_ITER, W_ITER_MAX, W_REFRESH, W_UNCONVERGED, run_reduced
+from .stepper import N_CAGE, N_CORR, N_WORK, W_CORR, W_EVALS, W_ITER, W_ITER_MAX, W_REFRESH, W_UNCONVERGED, run_reduced
 
 __all__ = ["ReducedEngine", "reduced_support_error", "BALANCE_TOL", "MAX_ITER", "CHUNK_STEPS"]
 
@@ -53,9 +53,10 @@ def reduced_support_error(scenario: Scenario, bearing) -> InputError | None:
     if s.cage == "torus":
         return InputError("cage: the reduced engine does not take the torus cage (its light cage balls on their "
                           "own contacts would set the step again); use cage='none' or the reference engine")
-    if s.cage == "rigid":
-        return InputError("cage: the reduced engine's first version takes cage='none' only (the rigid cage's "
-                          "pocket contacts are not yet treated implicitly); use cage='none' or the reference engine")
+    if s.cage == "rigid" and s.cage_damping == "implicit":
+        return InputError("cage_damping: 'implicit' is the reference engine's backward-Euler damping over its step; "
+                          "the reduced engine takes the rigid cage's contacts (stiffness and damping) into its own "
+                          "implicit step, so it takes cage_damping='explicit' (the contacts' own damping)")
     if s.traction_level == "point" and s.friction == "history":
         return InputError("friction: 'history' (the Cundall-Strack spring) is non-smooth and stays with the "
                           "reference engine; the reduced engine takes friction='regularized' or 'none' at the "
@@ -101,6 +102,8 @@ class ReducedEngine:
         self.table = hertz.exact_table()
         self.work = np.zeros(N_WORK)
         self.jac_every, self.jac_tol, self.ring_every = JAC_EVERY, JAC_TOL, RING_EVERY
+        #: Newton corrections of a step in which a rigid cage's pocket contact closed or opened (stepper.N_CORR)
+        self.n_corr = N_CORR
 
     def initial_state(self):
         """The reduced state at t = 0 from the scene's initial state
@@ -111,7 +114,7 @@ class ReducedEngine:
         r = np.hypot(xb[:, 0], xb[:, 1])
         return {"phi": np.arctan2(xb[:, 1], xb[:, 0]), "om": (xb[:, 0] * vb[:, 1] - xb[:, 1] * vb[:, 0]) / r ** 2,
                 "wo": _orbital(st["wb"], np.arctan2(xb[:, 1], xb[:, 0])), "q": np.stack([r, xb[:, 2]], axis=1), "ring": st["ring"].copy(),
-                "hz": st["hz"], "static": st["static"]}
+                "hz": st["hz"], "static": st["static"], "xc": st["xc"].copy(), "vc": st["vc"].copy()}
 
     def run(self, progress=None, chunk_steps=None):
         """Integrate the scenario; returns the :class:`~exudyn_bearing.model.record.RunRecord` (``progress``
@@ -130,7 +133,12 @@ class ReducedEngine:
         q_old = q.copy()
         prev, ring_prev = np.zeros((z, 5)), np.zeros(6)  # the state of the step before (BDF2)
         xb, vb = np.zeros((z, 3)), np.zeros((z, 3))
-        xc, vc = np.zeros((z, 3)), np.zeros((z, 3))
+        cage_free = self.scenario.cage == "rigid"
+        if cage_free:  # the rigid cage's rows (model/layout.py): integrated with the balls
+            xc, vc = st["xc"], st["vc"]
+        else:  # no cage: rows the kernel does not read
+            xc, vc = np.zeros((z, 3)), np.zeros((z, 3))
+        cage_prev = np.zeros(N_CAGE)
         fb, tb, fc = np.zeros((z, 3)), np.zeros((z, 3)), np.zeros((z, 3))
         fr, fring = np.zeros((2, 6)), np.zeros(3)
         hist = np.zeros((z, HIST_N, 3))
@@ -149,13 +157,14 @@ class ReducedEngine:
                                done, buf["t"][sl], buf["glob"][sl], buf["diag"][sl], buf["cage_load"][sl],
                                buf["xb"][sl], buf["vb"][sl], buf["wb"][sl], buf["xc"][sl], buf["vc"][sl],
                                buf["ring"][sl], work, True, self.jac_every, self.jac_tol, self.ring_every, prev,
-                               ring_prev,
+                               ring_prev, cage_free, cage_prev, self.n_corr,
                                defect_path, ellipse_path, loss_path)
 
         # compile (or load from the cache) before the clock starts: zero steps on copies of the state
-        saved = [a.copy() for a in (phi, om, wo, q, q_old, ring, hz, glob, work, prev, ring_prev)]
+        kept = (phi, om, wo, q, q_old, ring, hz, glob, work, prev, ring_prev, xc, vc, cage_prev)
+        saved = [a.copy() for a in kept]
         call(0, 0, 0)
-        for a, b in zip((phi, om, wo, q, q_old, ring, hz, glob, work, prev, ring_prev), saved):
+        for a, b in zip(kept, saved):
             a[...] = b
         chunk = chunk_steps or CHUNK_STEPS
         done = 0
@@ -171,10 +180,13 @@ class ReducedEngine:
                 k_samp += ns
                 if status != 0:
                     what = ("non-finite state" if status == 1 else
-                            "runaway overlap (above 5 % of the ball radius, at a ball / race or a ball / ball contact)")
+                            "runaway overlap (above 5 % of the ball radius, at a ball / race, ball / ball or "
+                            "ball / pocket contact, or a ball out of its pocket)")
+                    why = ("its ball / ball contacts (no cage) are explicit, so balls that collide (a run-up from "
+                           "rest) need the reference engine; else a smaller dt" if not cage_free else
+                           "a smaller dt, or the reference engine")
                     raise SimulationError(f"reduced engine: {what} at t = {done * dt:.4g} s with dt = {dt:.3g} s; "
-                                          "its ball / ball contacts (no cage) are explicit, so balls that collide "
-                                          "(a run-up from rest) need the reference engine; else a smaller dt")
+                                          + why)
                 if progress and (time.perf_counter() - last > 0.5 or done >= n_steps):
                     last = time.perf_counter()
                     print(f"\r[reduced] t = {done * dt:.4f}/{s.t_end:.4f} s  wall {last - wall0:6.1f} s", end="",
@@ -196,7 +208,7 @@ class ReducedEngine:
         n = max(steps, 1)
         return {"newton_per_step": float(w[W_ITER]) / n, "newton_max": int(w[W_ITER_MAX]),
                 "evaluations_per_step": float(w[W_EVALS]) / n, "unconverged_steps": int(w[W_UNCONVERGED]),
-                "jacobian_steps": int(w[W_REFRESH])}
+                "jacobian_steps": int(w[W_REFRESH]), "pocket_corrections": int(w[W_CORR])}
 
     def _record(self, buf, k_samp, done, wall, st) -> RunRecord:
         data = {k: v[:k_samp] for k, v in buf.items()}

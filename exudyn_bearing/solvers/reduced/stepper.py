@@ -13,7 +13,10 @@ State (outer-ring frame = world frame, the bearing axis z):
   ``R_j(q) = (f_j . e_r + m_b r om_j^2, f_j . e_z) = 0`` (f_j the contact kernel's force on ball j, the
   centrifugal force m_b r om^2 the balance's inertia term); ``q_old`` its value one step earlier;
 * ``ring`` (6,): inner-ring position and velocity (it translates; its spin follows the protocol, as in the
-  reference engine, :func:`~exudyn_bearing.model.engine_steps.set_inner_ring`).
+  reference engine, :func:`~exudyn_bearing.model.engine_steps.set_inner_ring`);
+* with the rigid cage, its centre, angle and their rates in the cage rows of ``xc``, ``vc``
+  (:mod:`exudyn_bearing.model.layout`; :data:`N_CAGE` entries), advanced with the balls in one arrow-shaped
+  linearly implicit step (:func:`_arrow_step`).
 
 The ball centre's velocity handed to the contact kernel is r om e_t plus the radial and axial rate
 ``(q - q_old) / dt``: inside the step's force balance the backward difference of the equilibrium positions,
@@ -27,18 +30,19 @@ import math
 import numpy as np
 
 from ..._jit import kernel
-from ...model.contact import accumulate_energy, forces
-from ...model.layout import HZ_GEO, P_IB, P_MAX_OVERLAP, P_MB, P_MR, P_RB
+from ...model.contact import _rigid_cage, accumulate_energy, forces
+from ...model.layout import HZ_GEO, NGLOBAL, P_IB, P_IC, P_MAX_OVERLAP, P_MB, P_MC, P_MR, P_RB, P_RP
 from ...model.engine_steps import finite, finite_ring, inner_ring_force, set_inner_ring, store_sample
 
-__all__ = ["reduced_evaluate", "run_reduced", "N_WORK"]
+__all__ = ["reduced_evaluate", "run_reduced", "N_WORK", "N_CAGE", "N_CORR"]
 
 #: Slots of the run's work vector ``work`` (floats kept across calls): the step's Newton iterations in total,
 #: the Newton iterations of the worst step, the force evaluations in total, the steps whose force balance did
 #: not converge within ``max_iter``, the balance Jacobians taken, the steps that took the speeds' and the ring's
-#: Jacobians, and 1 once the state of the step before is kept (``prev``, ``ring_prev``: the BDF2 step).
-N_WORK = 7
-W_ITER, W_ITER_MAX, W_EVALS, W_UNCONVERGED, W_JAC, W_REFRESH, W_HAVE_PREV = 0, 1, 2, 3, 4, 5, 6
+#: Jacobians, 1 once the state of the step before is kept (``prev``, ``ring_prev``: the BDF2 step), and the
+#: Newton corrections of steps where a pocket contact closed or opened (the rigid cage).
+N_WORK = 8
+W_ITER, W_ITER_MAX, W_EVALS, W_UNCONVERGED, W_JAC, W_REFRESH, W_HAVE_PREV, W_CORR = 0, 1, 2, 3, 4, 5, 6, 7
 #: Surface-speed perturbation [m/s] of the finite-difference Jacobian of the ball speeds (the traction's
 #: low-slip slope is resolved down to slips far below the regularising speeds, 1e-3 m/s and more).
 H_SPEED = 1e-6
@@ -50,6 +54,16 @@ H_POS = 1e-9
 #: ``max_iter`` to 1e-12 m (the modified Newton iteration converges linearly from afar) where a warm-started step
 #: needs one or two.
 START_ITER = 4
+#: Largest correction [m] of a ball centre in one Newton iteration of its force balance (a fifth of the 1e-5 m
+#: Hertz overlaps of a loaded ball: a balance whose Jacobian came from another contact state, a pocket contact
+#: closing, moved a centre by tens of micrometres in one iteration before this bound).
+STEP_MAX = 2e-6
+#: Newton corrections of a step in which a rigid cage's pocket contact closed or opened (the linearly implicit
+#: step saw the contact in its state at t_n; the corrections solve the step's equations at the state reached).
+N_CORR = 4
+#: The corrections stop once the step equations' largest speed residual is below CORR_TOL [m/s] (a surface
+#: speed), or when a correction made it larger (that correction is undone).
+CORR_TOL = 1e-6
 #: Orbital-angle perturbation [rad] of the forces' dependence on the ball's place in the load zone.
 H_ANGLE = 1e-7
 
@@ -155,6 +169,228 @@ def _implicit_step(jm, f, y, y_prev, n, gam, dt, bdf2, a, d):
     return True
 
 
+#: Entries of the rigid cage's state vector ``yc``: its centre (x, y, z) [m] and angle [rad], then their rates
+#: [m/s, rad/s] (the reference engine's cage rows ``xc[0]``, ``xc[1, 0]``, ``vc[0]``, ``vc[1, 0]``).
+N_CAGE = 8
+
+
+@kernel(inline="always")
+def _cage_get(xc, vc, k):
+    """Entry k of the rigid cage's state vector (:data:`N_CAGE`) from the cage rows."""
+    if k < 3:
+        return xc[0, k]
+    if k == 3:
+        return xc[1, 0]
+    if k < 7:
+        return vc[0, k - 4]
+    return vc[1, 0]
+
+
+@kernel(inline="always")
+def _cage_add(xc, vc, k, h):
+    """Add h to entry k of the rigid cage's state vector in the cage rows."""
+    if k < 3:
+        xc[0, k] += h
+    elif k == 3:
+        xc[1, 0] += h
+    elif k < 7:
+        vc[0, k - 4] += h
+    else:
+        vc[1, 0] += h
+
+
+@kernel(inline="always")
+def _cage_accelerations(p, fc, out):
+    """The rigid cage's accelerations (x'', y'', z'' [m/s^2], angle'' [rad/s^2]) from the contact kernel's cage
+    rows (``fc[1, 0]`` the moment scaled by m_c / I_c, :func:`~exudyn_bearing.model.contact._rigid_cage`)."""
+    inv = 1.0 / p[P_MC]
+    out[0] = fc[0, 0] * inv
+    out[1] = fc[0, 1] * inv
+    out[2] = fc[0, 2] * inv
+    out[3] = fc[1, 0] * inv
+
+
+@kernel(internal=True)
+def _pocket_shares(p, xb, vb, wb, xc, vc, rings, fbp, tbp, fcp, frp, globp, clp, out):
+    """Each ball's share of the rigid cage's accelerations ``out`` (Z, 4) through its pocket contact, from the
+    contact kernel's pocket code (:func:`~exudyn_bearing.model.contact._rigid_cage`, on scratch arrays): the
+    pocket's force G_j on ball j acts on the cage as -G_j at the contact point p_j, so the cage's share is
+    -G_j / m_c and its moment about the axis -((x_j - x_c) x G_j + R_b n x t)_z / I_c, R_b n x t the
+    friction's moment on the ball (the pocket's normal force has none). Differences of these shares give the
+    cage rows of the Jacobian per ball, where perturbing every ball at once gives only their sum in the cage's
+    own force."""
+    z = xb.shape[0]
+    for j in range(z):
+        for d in range(3):
+            fbp[j, d] = 0.0
+            tbp[j, d] = 0.0
+    _rigid_cage(p, xb, vb, wb, xc, vc, rings, fbp, tbp, fcp, frp, globp, clp, False)
+    inv_m = 1.0 / p[P_MC]
+    inv_i = 1.0 / p[P_IC]
+    for j in range(z):
+        gx, gy = fbp[j, 0], fbp[j, 1]
+        out[j, 0] = -gx * inv_m
+        out[j, 1] = -gy * inv_m
+        out[j, 2] = -fbp[j, 2] * inv_m
+        out[j, 3] = -((xb[j, 0] - xc[0, 0]) * gy - (xb[j, 1] - xc[0, 1]) * gx + tbp[j, 2]) * inv_i
+
+
+@kernel(internal=True)
+def _arrow_step(jphi, jb, acc0, phi, om, wo, prev, jbc, jcb, jcc, ac0, xc, vc, cage_prev, gam, dt, bdf2, a5, b5, d5,
+                ya, xa, dca, rc, a8, corr, resb, resc):
+    """One linearly implicit step (as :func:`_implicit_step`: BDF2, or Euler where ``bdf2`` is False) of the
+    balls' (phi, om, w_o) and the rigid cage's state (:data:`N_CAGE`) together. The system's matrix
+    A = I - gam dt J is arrow-shaped: per ball the 5 x 5 block A_j (its speeds' Jacobian, ``jphi``, ``jb``),
+    its coupling to the cage B_j = -gam dt dy_j'/dy_c (``jbc`` (Z, 4, 8)) and the cage's to it
+    C_j = -gam dt dy_c'/dy_j (``jcb`` (Z, 4, 5)), and the cage's block A_c (``jcc`` (4, 8), the kinematic rows
+    x' = v). The balls' blocks are eliminated (Schur complement): S = A_c - sum_j C_j A_j^-1 B_j,
+    S D_c = r_c - sum_j C_j A_j^-1 r_j, then D_j = A_j^-1 (r_j - B_j D_c); ``acc0`` (Z, 4) and ``ac0`` (4) the
+    accelerations at t_n. Updates the states and their previous values in place; returns False when a matrix
+    is singular. With ``corr`` a Newton correction of the step just taken instead: the right-hand sides are
+    minus the step equations' residuals ``resb`` (Z, 5), ``resc`` (8) (:func:`_step_residual`), the states
+    move by the solution, their previous values stay. ``a5`` (5, 5), ``b5``, ``d5`` (5), ``ya`` (Z, 5, 8),
+    ``xa`` (Z, 5), ``dca``, ``rc`` (8), ``a8`` (8, 8) scratch."""
+    z = phi.shape[0]
+    g = gam * dt
+    nc = N_CAGE
+    for i in range(nc):
+        dca[i] = _cage_get(xc, vc, i) - cage_prev[i] if (bdf2 and not corr) else 0.0
+    # the cage's right-hand side g (f_c + J_cc d_c) - gam d_c (the balls' share J_cj d_j added below) and the
+    # cage's block A_c = I - g J_cc
+    for i in range(nc):
+        for k in range(nc):
+            a8[i, k] = 0.0
+        a8[i, i] = 1.0
+    for i in range(4):
+        a8[i, 4 + i] -= g
+        rc[i] = g * (_cage_get(xc, vc, 4 + i) + dca[4 + i]) - gam * dca[i]
+        fi = ac0[i]
+        for k in range(nc):
+            fi += jcc[i, k] * dca[k]
+            a8[4 + i, k] -= g * jcc[i, k]
+        rc[4 + i] = g * fi - gam * dca[4 + i]
+    if corr:
+        for i in range(nc):
+            rc[i] = -resc[i]
+    for j in range(z):
+        # d_j and the ball's right-hand side r_j = g (f_j + J_jj d_j + J_jc d_c) - gam d_j
+        use = bdf2 and not corr
+        d5[0] = phi[j] - prev[j, 0] if use else 0.0
+        d5[1] = om[j] - prev[j, 1] if use else 0.0
+        for k in range(3):
+            d5[2 + k] = wo[j, k] - prev[j, 2 + k] if use else 0.0
+        b5[0] = g * (om[j] + d5[1]) - gam * d5[0]
+        for i in range(4):
+            fi = acc0[j, i] + jphi[j, i] * d5[0]
+            for k in range(4):
+                fi += jb[j, i, k] * d5[1 + k]
+            for k in range(nc):
+                fi += jbc[j, i, k] * dca[k]
+            b5[1 + i] = g * fi - gam * d5[1 + i]
+        if corr:
+            for i in range(5):
+                b5[i] = -resb[j, i]
+        else:
+            for i in range(4):
+                for k in range(5):
+                    rc[4 + i] += g * jcb[j, i, k] * d5[k]
+        # X_j = A_j^-1 r_j and Y_j = A_j^-1 B_j, column by column
+        for col in range(nc + 1):
+            for i in range(5):
+                for k in range(5):
+                    a5[i, k] = 0.0
+                a5[i, i] = 1.0
+            a5[0, 1] -= g
+            for i in range(4):
+                a5[1 + i, 0] -= g * jphi[j, i]
+                for k in range(4):
+                    a5[1 + i, 1 + k] -= g * jb[j, i, k]
+            if col == 0:
+                for i in range(5):
+                    xa[j, i] = b5[i]
+                ok = _solve_small(a5, xa[j], 5)
+            else:
+                for i in range(5):
+                    ya[j, i, col - 1] = 0.0 if i == 0 else -g * jbc[j, i - 1, col - 1]
+                for i in range(5):
+                    d5[i] = ya[j, i, col - 1]
+                ok = _solve_small(a5, d5, 5)
+                for i in range(5):
+                    ya[j, i, col - 1] = d5[i]
+            if not ok:
+                return False
+        # S -= C_j Y_j, s -= C_j X_j (C_j = -g J_cj: the cage's acceleration rows only)
+        for i in range(4):
+            for k in range(nc):
+                acc_ = 0.0
+                for m in range(5):
+                    acc_ += jcb[j, i, m] * ya[j, m, k]
+                a8[4 + i, k] += g * acc_
+            acc_ = 0.0
+            for m in range(5):
+                acc_ += jcb[j, i, m] * xa[j, m]
+            rc[4 + i] += g * acc_
+    if not _solve_small(a8, rc, nc):
+        return False
+    for j in range(z):
+        for i in range(5):
+            dj = xa[j, i]
+            for k in range(nc):
+                dj -= ya[j, i, k] * rc[k]
+            xa[j, i] = dj
+        if corr:
+            phi[j] += xa[j, 0]
+            om[j] += xa[j, 1]
+            for k in range(3):
+                wo[j, k] += xa[j, 2 + k]
+            continue
+        dd = phi[j] - prev[j, 0] if bdf2 else 0.0
+        prev[j, 0] = phi[j]
+        phi[j] += dd + xa[j, 0]
+        dd = om[j] - prev[j, 1] if bdf2 else 0.0
+        prev[j, 1] = om[j]
+        om[j] += dd + xa[j, 1]
+        for k in range(3):
+            dd = wo[j, k] - prev[j, 2 + k] if bdf2 else 0.0
+            prev[j, 2 + k] = wo[j, k]
+            wo[j, k] += dd + xa[j, 2 + k]
+    for i in range(nc):
+        if not corr:
+            cage_prev[i] = _cage_get(xc, vc, i)
+        _cage_add(xc, vc, i, dca[i] + rc[i])
+    return True
+
+
+@kernel(internal=True)
+def _step_residual(phi, om, wo, prev, prev2, acc, xc, vc, cage_prev, cage_prev2, ac, gam, dt, resb, resc, rp, rb):
+    """Residuals of the step equations of :func:`_arrow_step` at the state reached, ``resb`` (Z, 5) and
+    ``resc`` (8): (y - y_n) - (1 - gam) (y_n - y_{n-1}) - gam dt f(y), f the committed evaluation there
+    (``acc`` (Z, 4) the balls' accelerations, ``ac`` (4) the cage's), y_n the states before the step (``prev``,
+    ``cage_prev``), y_{n-1} the ones before that (``prev2``, ``cage_prev2``; BDF2, gam 2/3; Euler: gam 1).
+    Returns the largest residual of a speed as a surface speed [m/s] (the orbital speeds and the cage's angular
+    speed times the pitch radius ``rp``, the ball's angular velocity times its radius ``rb``)."""
+    z = phi.shape[0]
+    c1 = 1.0 - gam
+    g = gam * dt
+    for j in range(z):
+        resb[j, 0] = (phi[j] - prev[j, 0]) - c1 * (prev[j, 0] - prev2[j, 0]) - g * om[j]
+        resb[j, 1] = (om[j] - prev[j, 1]) - c1 * (prev[j, 1] - prev2[j, 1]) - g * acc[j, 0]
+        for k in range(3):
+            resb[j, 2 + k] = (wo[j, k] - prev[j, 2 + k]) - c1 * (prev[j, 2 + k] - prev2[j, 2 + k]) - g * acc[j, 1 + k]
+    for i in range(N_CAGE):
+        y = _cage_get(xc, vc, i)
+        f = _cage_get(xc, vc, 4 + i) if i < 4 else ac[i - 4]
+        resc[i] = (y - cage_prev[i]) - c1 * (cage_prev[i] - cage_prev2[i]) - g * f
+    big = 0.0
+    for j in range(z):
+        big = max(big, abs(resb[j, 1]) * rp)
+        for k in range(3):
+            big = max(big, abs(resb[j, 2 + k]) * rb)
+    for i in range(4, 7):
+        big = max(big, abs(resc[i]))
+    return max(big, abs(resc[7]) * rp)
+
+
 @kernel(internal=True)
 def _balance(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb, tb, fc, fr, fring,
              glob, diag, cage_load, res, acc, g, r0, done, tol, max_iter, work, fresh, defect_path, ellipse_path,
@@ -222,6 +458,10 @@ def _balance(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, r
                 det = a11 * a22 - a12 * a21
             d0 = -(a22 * r0[j, 0] - a12 * r0[j, 1]) / det
             d1 = -(a11 * r0[j, 1] - a21 * r0[j, 0]) / det
+            size = math.sqrt(d0 * d0 + d1 * d1)
+            if size > STEP_MAX:  # a trust region: the linearisation holds over a fraction of the overlaps
+                d0 *= STEP_MAX / size
+                d1 *= STEP_MAX / size
             q[j, 0] += d0
             q[j, 1] += d1
             open_contacts = hz[j, 0, HZ_GEO + 6] <= 0.0 and hz[j, 1, HZ_GEO + 6] <= 0.0
@@ -238,11 +478,93 @@ def _balance(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, r
     return it, converged, worst
 
 
+@kernel(internal=True)
+def _speed_jacobians(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb, tb, fc,
+                      fr, fring, glob, diag, cage_load, res, acc, acc0, ac0, sh0, sh1, ac1, fbp, tbp, fcp, frp, globp,
+                      clp, jphi, jb, jcb, jbc, jcc, h_om, h_w, h_cage, pockets, want_no, work, defect_path,
+                      ellipse_path, loss_path):
+    """Step (2) of :func:`run_reduced`: the Jacobians of the balls' (om', w') in (phi, om, w) (``jphi``, ``jb``)
+    and, with ``pockets`` (the rigid cage), the cage's rows and columns (``jcb``, ``jbc``, ``jcc``; the pockets'
+    shares :func:`_pocket_shares`), by differences about the state evaluated last, whose accelerations are
+    ``acc0``, ``ac0`` and pocket shares ``sh0``."""
+    z = phi.shape[0]
+    nc = N_CAGE
+    # (2) ball-speed Jacobians: component k of every ball at once; and the forces' dependence on the
+    # orbital angle (the load zone's geometry the ball moves through)
+    # with the cage, the balls and the cage turned together (the pockets' gaps unchanged: the load zone's
+    # geometry alone); the column of phi_j is this joint column less the cage angle's, taken below, so that
+    # the pockets' stiffness in them cancels exactly where balls and cage turn alike (a step turns them by
+    # om dt, thousands of times the pockets' overlaps)
+    for j in range(z):
+        phi[j] += H_ANGLE
+    if pockets:
+        xc[1, 0] += H_ANGLE
+    reduced_evaluate(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb,
+                     tb, fc, fr, fring, glob, diag, cage_load, want_no, res, acc, defect_path, ellipse_path,
+                     loss_path)
+    work[W_EVALS] += 1.0
+    if pockets:
+        _pocket_shares(p, xb, vb, wb, xc, vc, rings, fbp, tbp, fcp, frp, globp, clp, sh1)
+        xc[1, 0] -= H_ANGLE
+        for j in range(z):
+            for i in range(4):
+                jcb[j, i, 0] = (sh1[j, i] - sh0[j, i]) / H_ANGLE
+    for j in range(z):
+        phi[j] -= H_ANGLE
+        for i in range(4):
+            jphi[j, i] = (acc[j, i] - acc0[j, i]) / H_ANGLE
+    for k in range(4):
+        h = h_om if k == 0 else h_w
+        for j in range(z):
+            if k == 0:
+                om[j] += h
+            else:
+                wo[j, k - 1] += h
+        reduced_evaluate(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb, tb,
+                         fc, fr, fring, glob, diag, cage_load, want_no, res, acc, defect_path, ellipse_path,
+                         loss_path)
+        work[W_EVALS] += 1.0
+        if pockets:
+            _pocket_shares(p, xb, vb, wb, xc, vc, rings, fbp, tbp, fcp, frp, globp, clp, sh1)
+            for j in range(z):
+                for i in range(4):
+                    jcb[j, i, 1 + k] = (sh1[j, i] - sh0[j, i]) / h
+        for j in range(z):
+            if k == 0:
+                om[j] -= h
+            else:
+                wo[j, k - 1] -= h
+            for i in range(4):
+                jb[j, i, k] = (acc[j, i] - acc0[j, i]) / h
+    # the cage's entries: every ball's acceleration and the cage's (balls, ring held)
+    if pockets:
+        for k in range(nc):
+            _cage_add(xc, vc, k, h_cage[k])
+            reduced_evaluate(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist,
+                             hz, fb, tb, fc, fr, fring, glob, diag, cage_load, want_no, res, acc,
+                             defect_path, ellipse_path, loss_path)
+            work[W_EVALS] += 1.0
+            _cage_add(xc, vc, k, -h_cage[k])
+            _cage_accelerations(p, fc, ac1)
+            for i in range(4):
+                jcc[i, k] = (ac1[i] - ac0[i]) / h_cage[k]
+                for j in range(z):
+                    jbc[j, i, k] = (acc[j, i] - acc0[j, i]) / h_cage[k]
+            if k == 3:  # the columns of phi_j: the joint rotation's less the cage angle's
+                _cage_add(xc, vc, k, h_cage[k])
+                _pocket_shares(p, xb, vb, wb, xc, vc, rings, fbp, tbp, fcp, frp, globp, clp, sh1)
+                _cage_add(xc, vc, k, -h_cage[k])
+                for j in range(z):
+                    for i in range(4):
+                        jphi[j, i] -= jbc[j, i, 3]
+                        jcb[j, i, 0] -= (sh1[j, i] - sh0[j, i]) / h_cage[3]
+
+
 @kernel
 def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb, tb,
                 fc, fr, fring, glob, diag, cage_load, tol, max_iter, sample_every, step0, s_t, s_glob, s_diag,
                 s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring, work, ring_free, jac_every, jac_tol, ring_every, prev, ring_prev,
-                defect_path=True, ellipse_path=True, loss_path=True):
+                cage_free, cage_prev, n_corr, defect_path=True, ellipse_path=True, loss_path=True):
     """``n_steps`` steps of the reduced engine from t0 (module docstring; docs/theory/reduced.md).
 
     Each step from t_n: (1) the forces at t_n (the balls on their balance of the last step); the Jacobians of
@@ -256,7 +578,15 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
     2/3 dt f(y_{n+1}) from the extrapolation 2 y_n - y_{n-1}, with f there f_n + J (y_n - y_{n-1}) (no force
     evaluation beyond the step's), linearly implicit Euler where the state before is not yet kept (``prev``
     (Z, 5), ``ring_prev`` (6), flag in ``work``); (5) the balls' force balance at t_{n+1} (:func:`_balance`),
-    warm started by the extrapolation 2 q_n - q_{n-1}. The energy integrals take the committed evaluation of each
+    warm started by the extrapolation 2 q_n - q_{n-1}. With ``cage_free`` (the rigid cage) the cage's state
+    (:data:`N_CAGE`, in the cage rows of ``xc``, ``vc``; ``cage_prev`` its value one step earlier) is advanced
+    with the balls in one arrow-shaped linearly implicit step (:func:`_arrow_step`), its Jacobians by
+    differences at (2) (:func:`_speed_jacobians`): every ball's acceleration and the cage's in the cage's 8
+    entries (one evaluation each, every ball's column at once) and the cage's in each ball's state (the
+    pockets' shares, :func:`_pocket_shares`, in the evaluations of (2)); a pocket contact that closed or opened
+    since the last step retakes them, and one that closed or opened over the step gets up to ``n_corr`` Newton
+    corrections of the step's equations at the state reached, with the Jacobians retaken there. The energy
+    integrals take the committed evaluation of each
     step; every ``sample_every``-th step (counted from ``step0``) goes to the sample buffers (as
     :func:`~exudyn_bearing.solvers.reference.integrators.run_verlet`).
     Returns (steps done, samples written, status): 0 ok, 1 non-finite state, 2 runaway overlap."""
@@ -287,6 +617,43 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
     y5 = np.zeros(5)
     d5 = np.zeros(5)
     a6 = np.zeros((6, 6))
+    # the rigid cage: its Jacobians, its accelerations at t_n, the pockets' shares and the step's scratch
+    nc = N_CAGE
+    jbc = np.zeros((z, 4, nc))
+    jcb = np.zeros((z, 4, 5))
+    jcc = np.zeros((4, nc))
+    ac0 = np.zeros(4)
+    ac1 = np.zeros(4)
+    sh0 = np.zeros((z, 4))
+    sh1 = np.zeros((z, 4))
+    fbp = np.zeros((z, 3))
+    tbp = np.zeros((z, 3))
+    fcp = np.zeros((z, 3))
+    frp = np.zeros((2, 6))
+    globp = np.zeros(NGLOBAL)
+    clp = np.zeros((z, 2))
+    ya = np.zeros((z, 5, nc))
+    xa = np.zeros((z, 5))
+    dca = np.zeros(nc)
+    rca = np.zeros(nc)
+    a8 = np.zeros((nc, nc))
+    h_cage = np.zeros(nc)
+    pocket_on = np.zeros(z)
+    prev2 = np.zeros((z, 5))
+    cage_prev2 = np.zeros(nc)
+    resb = np.zeros((z, 5))
+    resc = np.zeros(nc)
+    keep_b = np.zeros((z, 5))
+    keep_q = np.zeros((z, 2))
+    keep_c = np.zeros(nc)
+    acc_b = np.zeros((z, 4))
+    ac_b = np.zeros(4)
+    sh_b = np.zeros((z, 4))
+    for k in range(3):
+        h_cage[k] = H_POS
+        h_cage[4 + k] = H_SPEED
+    h_cage[3] = H_ANGLE  # as the balls' angle: the joint rotation below takes the same difference
+    h_cage[7] = H_SPEED / p[P_RP]
     b6 = np.zeros(6)
     j6 = np.zeros((6, 6))
     d6 = np.zeros(6)
@@ -312,6 +679,8 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
                 fb0[j, d] = fb[j, d]
         for d in range(3):
             fring0[d] = fring[d]
+        if cage_free:
+            _cage_accelerations(p, fc, ac0)
         # the Jacobians of steps (2), (3): kept for up to jac_every steps, retaken sooner where a ball's load
         # proxy (overlaps^1.5 of both contacts) moved by more than jac_tol of the largest one
         big = 0.0
@@ -328,42 +697,26 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
             if abs(pj - load_ref[j]) > moved:
                 moved = abs(pj - load_ref[j])
         refresh = since >= jac_every or moved > jac_tol * big or step == 0
+        # the rigid cage: a pocket contact that closed or opened since the last step retakes the Jacobians (the
+        # pockets' shares at t_n, sh0, serve the Jacobians below)
+        pockets = cage_free
+        if pockets:
+            _pocket_shares(p, xb, vb, wb, xc, vc, rings, fbp, tbp, fcp, frp, globp, clp, sh0)
+            for j in range(z):
+                touch = 1.0 if fbp[j, 0] != 0.0 or fbp[j, 1] != 0.0 or fbp[j, 2] != 0.0 else 0.0
+                if touch != pocket_on[j]:
+                    refresh = True
+                    pocket_on[j] = touch
         since += 1
         if refresh:
             since = 1
             work[W_REFRESH] += 1.0
             for j in range(z):
                 load_ref[j] = proxy[j]
-            # (2) ball-speed Jacobians: component k of every ball at once; and the forces' dependence on the
-            # orbital angle (the load zone's geometry the ball moves through)
-            for j in range(z):
-                phi[j] += H_ANGLE
-            reduced_evaluate(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb,
-                             tb, fc, fr, fring, glob, diag, cage_load, want_no, res, acc, defect_path, ellipse_path,
-                             loss_path)
-            work[W_EVALS] += 1.0
-            for j in range(z):
-                phi[j] -= H_ANGLE
-                for i in range(4):
-                    jphi[j, i] = (acc[j, i] - acc0[j, i]) / H_ANGLE
-            for k in range(4):
-                h = h_om if k == 0 else h_w
-                for j in range(z):
-                    if k == 0:
-                        om[j] += h
-                    else:
-                        wo[j, k - 1] += h
-                reduced_evaluate(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb, tb,
-                                 fc, fr, fring, glob, diag, cage_load, want_no, res, acc, defect_path, ellipse_path,
-                                 loss_path)
-                work[W_EVALS] += 1.0
-                for j in range(z):
-                    if k == 0:
-                        om[j] -= h
-                    else:
-                        wo[j, k - 1] -= h
-                    for i in range(4):
-                        jb[j, i, k] = (acc[j, i] - acc0[j, i]) / h
+            _speed_jacobians(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings,
+                             hist, hz, fb, tb, fc, fr, fring, glob, diag, cage_load, res, acc, acc0, ac0,
+                             sh0, sh1, ac1, fbp, tbp, fcp, frp, globp, clp, jphi, jb, jcb, jbc, jcc, h_om,
+                             h_w, h_cage, pockets, want_no, work, defect_path, ellipse_path, loss_path)
             # (3) the ring's stiffness (condensed over the balls' balance) and damping, at every ring_every-th
             # retaking of the Jacobians
             n_ref += 1
@@ -420,7 +773,18 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
         # D = y_n - y_{n-1}, f there taken as f_n + J D), linearly implicit Euler at the first
         bdf2 = work[W_HAVE_PREV] > 0.5
         gam = 2.0 / 3.0 if bdf2 else 1.0
+        if cage_free:
+            for j in range(z):
+                for i in range(5):
+                    prev2[j, i] = prev[j, i]
+            for i in range(nc):
+                cage_prev2[i] = cage_prev[i]
+            if not _arrow_step(jphi, jb, acc0, phi, om, wo, prev, jbc, jcb, jcc, ac0, xc, vc, cage_prev, gam, dt,
+                               bdf2, a5, b5, d5, ya, xa, dca, rca, a8, False, resb, resc):
+                return step, n_samp, 1
         for j in range(z):
+            if cage_free:
+                break
             y5[0] = phi[j]
             y5[1] = om[j]
             for d in range(3):
@@ -466,6 +830,67 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
         it, ok, worst = _balance(t1, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb,
                                  tb, fc, fr, fring, glob, diag, cage_load, res, acc, g, r0, done, tol, max_iter, work,
                                  want_yes, defect_path, ellipse_path, loss_path)
+        # the rigid cage: where a pocket contact closed or opened over the step, Newton corrections of the step's
+        # equations at the state reached (the same matrix), each followed by the balls' balance
+        if cage_free and n_corr > 0:
+            _pocket_shares(p, xb, vb, wb, xc, vc, rings, fbp, tbp, fcp, frp, globp, clp, sh1)
+            changed = False
+            for j in range(z):
+                touch = 1.0 if fbp[j, 0] != 0.0 or fbp[j, 1] != 0.0 or fbp[j, 2] != 0.0 else 0.0
+                if touch != pocket_on[j]:
+                    changed = True
+            if changed:
+                last = 1e300
+                for _c in range(n_corr + 1):
+                    _cage_accelerations(p, fc, ac1)
+                    size = _step_residual(phi, om, wo, prev, prev2, acc, xc, vc, cage_prev, cage_prev2, ac1, gam, dt,
+                                          resb, resc, p[P_RP], p[P_RB])
+                    if size > last:  # the correction did not serve: back to the state before it
+                        for j in range(z):
+                            phi[j] = keep_b[j, 0]
+                            om[j] = keep_b[j, 1]
+                            for k in range(3):
+                                wo[j, k] = keep_b[j, 2 + k]
+                            q[j, 0] = keep_q[j, 0]
+                            q[j, 1] = keep_q[j, 1]
+                        for i in range(nc):
+                            _cage_add(xc, vc, i, keep_c[i] - _cage_get(xc, vc, i))
+                        it, ok, worst = _balance(t1, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc,
+                                                 rings, hist, hz, fb, tb, fc, fr, fring, glob, diag, cage_load, res,
+                                                 acc, g, r0, done, tol, max_iter, work, want_no, defect_path,
+                                                 ellipse_path, loss_path)
+                        break
+                    if size < CORR_TOL or _c == n_corr:
+                        break
+                    last = size
+                    for j in range(z):
+                        keep_b[j, 0] = phi[j]
+                        keep_b[j, 1] = om[j]
+                        for k in range(3):
+                            keep_b[j, 2 + k] = wo[j, k]
+                        keep_q[j, 0] = q[j, 0]
+                        keep_q[j, 1] = q[j, 1]
+                    for i in range(nc):
+                        keep_c[i] = _cage_get(xc, vc, i)
+                    # Newton's matrix at the state reached (the step's came from t_n, where the contact was in
+                    # its other state): the Jacobians retaken about it
+                    for j in range(z):
+                        for i in range(4):
+                            acc_b[j, i] = acc[j, i]
+                    for i in range(4):
+                        ac_b[i] = ac1[i]
+                    _pocket_shares(p, xb, vb, wb, xc, vc, rings, fbp, tbp, fcp, frp, globp, clp, sh_b)
+                    _speed_jacobians(t1, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist,
+                                     hz, fb, tb, fc, fr, fring, glob, diag, cage_load, res, acc, acc_b, ac_b, sh_b,
+                                     sh1, ac1, fbp, tbp, fcp, frp, globp, clp, jphi, jb, jcb, jbc, jcc, h_om, h_w,
+                                     h_cage, True, want_no, work, defect_path, ellipse_path, loss_path)
+                    if not _arrow_step(jphi, jb, acc0, phi, om, wo, prev, jbc, jcb, jcc, ac0, xc, vc, cage_prev, gam,
+                                       dt, bdf2, a5, b5, d5, ya, xa, dca, rca, a8, True, resb, resc):
+                        return step, n_samp, 1
+                    work[W_CORR] += 1.0
+                    it, ok, worst = _balance(t1, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings,
+                                             hist, hz, fb, tb, fc, fr, fring, glob, diag, cage_load, res, acc, g, r0,
+                                             done, tol, max_iter, work, want_no, defect_path, ellipse_path, loss_path)
         accumulate_energy(glob, dt)
         want = (step0 + step + 1) % sample_every == 0 and n_samp < s_t.shape[0]
         if want:
@@ -476,10 +901,10 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
             store_sample(n_samp, t1, glob, diag, cage_load, xb, vb, wb, xc, vc, ring,
                    s_t, s_glob, s_diag, s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring)
             n_samp += 1
-            if not (finite(xb) and finite(vb) and finite(wb) and finite_ring(ring)):
+            if not (finite(xb) and finite(vb) and finite(wb) and finite_ring(ring) and finite(xc) and finite(vc)):
                 return step + 1, n_samp, 1
         if worst > p[P_MAX_OVERLAP] or not math.isfinite(worst):
             return step + 1, n_samp, 2
-    if not (finite(q) and finite(wo) and finite_ring(ring)):
+    if not (finite(q) and finite(wo) and finite_ring(ring) and finite(xc) and finite(vc)):
         return n_steps, n_samp, 1
     return n_steps, n_samp, 0
