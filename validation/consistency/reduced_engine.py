@@ -234,7 +234,7 @@ def report_section(run):
         "thrust (from the race-control start), without cage unless named, traction over the ellipse: Q_max, "
         "contact angles, orbital speed, dissipation and drive power, the criteria (0.5 %, 0.1 deg, 0.2 %, 1 %), under thrust also against the quasi-static traction "
         "equilibrium, a thrust run-up, and the wall time per simulated second of both engines "
-        "in one session (medians).", last_lines=60)
+        "in one session (medians).", last_lines=120)
 
 
 if __name__ == "__main__":
