@@ -44,7 +44,7 @@ def simulate(bearing, scenario: Scenario | None = None, engine: str = "reference
         reduced engine (:mod:`exudyn_bearing.solvers.reduced`,
         docs/theory/reduced.md): the ball centres on their normal force
         balance at every step and a linearly implicit step of tens of
-        microseconds (``Scenario.dt``); in this version cage="none" only, no
+        microseconds (``Scenario.dt``, e.g. 2e-5); cage="none" or "rigid", no
         Cundall-Strack spring (friction="history" at the point level), no
         defects or signals (InputError naming what it does not take).
     lubricant : Lubricant or str, optional
@@ -96,14 +96,18 @@ def simulate(bearing, scenario: Scenario | None = None, engine: str = "reference
         elif engine == "reduced":
             from .solvers.reduced import ReducedEngine
 
+            if scenario.dt < 5e-6:  # allowed, but it is the reference engine's step at a higher cost
+                warnings.warn(f"dt: {scenario.dt:g} s is a step of the reference engine; the reduced engine's steps "
+                              "are 1e-5 to 1e-4 s (docs/theory/reduced.md), and at this one it costs more than the "
+                              "reference engine", UserWarning, stacklevel=2)
             record = ReducedEngine(bearing, scenario, lubricant, start=start).run(progress=progress)
             bad = record.reduced_stats["unconverged_steps"]
             if bad:  # said, not hidden: the balance of these steps went on from its last iterate
                 warnings.warn(f"reduced engine: the balls' force balance did not converge within its iteration "
                               f"limit in {bad} of {record.steps} steps (the run went on from the last iterate; "
-                              "typically where a ball leaves the load zone and its contact opens); the summary's "
-                              "reduced_work counts them: a smaller dt, or the reference engine, resolves them",
-                              UserWarning, stacklevel=2)
+                              "where a ball leaves the load zone and its contact opens, or at a pocket impact); the "
+                              "summary's reduced_work counts them (--json on the command line); the reference "
+                              "engine has no such balance", UserWarning, stacklevel=2)
         else:
             from .solvers.element.engine import ExudynEngine
 
@@ -224,11 +228,13 @@ def CreateBallBearing(mbs, bearing: BallBearing | str, markerInnerRing, markerOu
     ``"quasistatic"`` (5-DOF force element from the quasi-static ball
     equilibrium, no ball DOFs) or ``"linear"`` (speed-dependent 5x5 stiffness
     and damping about the operating point ``initialLoad``); the last two are
-    :mod:`exudyn_bearing.solvers.quasistatic.levels` (README, "Bearing levels
-    in Exudyn") and take ``lubricant``, ``initialLoad``, ``loadAngle``, ``initialOmega``,
+    :mod:`exudyn_bearing.solvers.quasistatic.levels` (docs/howto/rotor.md,
+    docs/theory/levels.md) and take ``lubricant``, ``initialLoad``, ``loadAngle``, ``initialOmega``,
     ``ringGrowth``, ``temperatures``, ``hertzModel``, ``sampleInterval``,
-    ``coefficients``, ``coefficientSpeeds``, ``show`` (quasistatic also
-    ``cageAngle``). ``model="quasistatic"`` with ``arrangement`` ("DB", "DF", "DT"), ``preload`` and
+    ``coefficients``, ``coefficientSpeeds``, ``show``, ``operatingTilt``
+    ("free": the operating point and the tables with the tilt free, a single
+    bearing's equilibrium; "held": at zero, a bearing whose rotor's other
+    supports hold the tilt) (quasistatic also ``cageAngle``, ``formulation``). ``model="quasistatic"`` with ``arrangement`` ("DB", "DF", "DT"), ``preload`` and
     ``spacing`` puts a pair of angular-contact bearings between the markers
     (:mod:`exudyn_bearing.solvers.quasistatic.levels.pair`, docs/theory/pairs.md).
 
@@ -259,6 +265,13 @@ def CreateBallBearing(mbs, bearing: BallBearing | str, markerInnerRing, markerOu
     """
     if model != "balls":
         return _create_level(mbs, bearing, markerInnerRing, markerOuterRing, model, options)
+    import inspect
+
+    valid = [k for k in inspect.signature(BallBearingElement.__init__).parameters
+             if k not in ("self", "mbs", "bearing", "markerInnerRing", "markerOuterRing")]
+    for key in options:  # the element's own keyword check raises TypeError: the option named instead
+        if key not in valid:
+            raise InputError(f"{key}: not an option of model='balls' (valid: {', '.join(valid)})")
     if options.get("initial") == "quasistatic" and options.get("initialState") is None:
         # the element's own option checks (messages name the options), then its quasi-static start
         sc = element_scenario(bearing, **options)

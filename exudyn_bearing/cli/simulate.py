@@ -30,7 +30,7 @@ def add_parser(sub):
     p.add_argument("--engine", default="reference", choices=ENGINES,
                    help="numba DEM reference core, the same scene in Exudyn with the bearing element, or the "
                         "reduced engine (ball centres on their force balance, steps of tens of us: --dt 2e-5; "
-                        "takes --cage none and --traction-level ellipse or --friction regularized)")
+                        "takes --cage none or rigid, and --traction-level ellipse or --friction regularized)")
     p.add_argument("--Fr", type=finite_float, default=0.0, help="radial load [N] (default 0; the README's example: "
                                                                "--Fr 3000 --omega 500)")
     p.add_argument("--Fa", type=finite_float, default=0.0, help="axial load [N]")

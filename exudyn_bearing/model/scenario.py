@@ -357,7 +357,7 @@ class Scenario:
                 raise InputError(f"{name}: must be > 0, got {getattr(self, name)}")
         if self.dt > 1e-4:  # first: a huge dt is the mistake, not the sample interval below it
             raise InputError(f"dt: {self.dt:g} s is far above any stable step of a Hertz contact (at most 1e-4 s; "
-                             "typical 1e-6 to 8e-6 s)")
+                             "typical 1e-6 to 8e-6 s; the reduced engine's 1e-5 to 1e-4 s)")
         if self.sample_dt < self.dt:
             raise InputError(f"sample_dt: must be >= dt ({self.dt}), got {self.sample_dt}")
         if self.t_end < self.sample_dt:

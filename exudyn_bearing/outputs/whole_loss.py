@@ -57,7 +57,10 @@ def estimate_losses(bearing, lubricant, Fr, Fa, omega, *, traction=None, ring_gr
                             ("traction_regularizing_srr", traction_regularizing_srr)) if v is not None}
     sol = solve_quasistatic(bearing, Fr=Fr, Fa=Fa, omega=omega, traction=traction, lubricant=lubricant,
                             ring_growth=ring_growth, temperatures=temperatures, fixed={"tilt_x": 0.0, "tilt_y": 0.0},
-                            hertz_method=hertz, stiffness=False, resolution_check=False, **kw)
+                            hertz_method=hertz, stiffness=False, resolution_check=False,
+                            # an estimate of the parts a dynamic run does not model, beside that run: the balls'
+                            # inertia along the orbit is the run's own (no quasi-static inertia check here)
+                            inertia_check=False, **kw)
     lkw = {} if hysteresis_loss_factor is None else {"hysteresis_loss_factor": hysteresis_loss_factor}
     return power_losses(sol, bearing, lubricant, oil_volume_fraction=oil_volume_fraction,
                         cage_guidance=cage_guidance, **lkw)

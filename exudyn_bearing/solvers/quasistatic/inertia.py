@@ -80,8 +80,11 @@ def check_ball_inertia(sol, bearing, tolerance=INERTIA_TOLERANCE, warn=True) -> 
     dw2 = (kin[nxt, 1] - kin[:, 1]) ** 2 + (kin[nxt, 2] - kin[:, 2]) ** 2
     dv2 = (0.5 * (r + r[nxt]) * (kin[nxt, 0] - kin[:, 0])) ** 2
     terms = (ball_inertia * dw2 + ball_mass * dv2) / (2.0 * dt)
-    power = float(terms.sum())
     lost = float(sol.dissipation_total + sol.cage_power)
+    power = float(terms.sum())
+    if power <= 1e-12 * max(lost, 1e-300):  # round-off of alike balls' speeds
+        power = 0.0
+        terms = np.zeros_like(terms)
     share = power / lost if lost > 0.0 else (0.0 if power == 0.0 else math.inf)
     ball = int(np.argmax(terms))
     out = {"power": power, "dissipation": lost, "share": share, "ball": ball, "tolerance": float(tolerance),
@@ -90,7 +93,8 @@ def check_ball_inertia(sol, bearing, tolerance=INERTIA_TOLERANCE, warn=True) -> 
         warnings.warn(BallInertiaWarning(
             f"the balls cannot follow the quasi-static kinematics along the orbit: changing each ball's angular "
             f"velocity and orbital speed from one position to the next by sliding costs about {power:.3g} W, "
-            f"{100 * share:.3g} % of the dissipation ({lost:.4g} W; the largest step from ball {ball} at "
+            f"{100 * share:.3g} % of the solution's losses ({lost:.4g} W: its ball / race contacts "
+            f"{sol.dissipation_total:.4g} W and its cage {sol.cage_power:.4g} W; the largest step from ball {ball} at "
             f"psi = {math.degrees(float(sol.balls['psi'][ball])):.1f} deg), more than {100 * tolerance:g} %: "
             "the balls' inertia matters (lightly loaded balls entering and leaving the load zone), which the "
             "quasi-static solution leaves out; its losses may be low. Run the case dynamically "

@@ -46,28 +46,39 @@ RING_EVERY = 1
 #: Steps of a chunk (the progress line's and Ctrl-C's granularity).
 CHUNK_STEPS = 2000
 
+#: A command line the reduced engine runs (its docs and its refusals quote it).
+EXAMPLE_COMMAND = ("python -m exudyn_bearing simulate 6208 --Fr 3000 --omega 500 --engine reduced --cage none "
+                   "--traction-level ellipse --dt 2e-5")
+
+
 def reduced_support_error(scenario: Scenario, bearing) -> InputError | None:
     """The InputError naming what ``scenario`` asks of the reduced engine that it does not model on ``bearing``
-    (None when it models all of it)."""
+    (None when it models all of it): the first such parameter leads the message, which lists every one of them
+    (the defaults cage='auto' and friction='history' need two changes at once) and a command that runs."""
     s = resolve_cage(scenario, bearing)
+    problems = []
     if s.cage == "torus":
-        return InputError("cage: the reduced engine does not take the torus cage (its light cage balls on their "
-                          "own contacts would set the step again); use cage='none' or the reference engine")
+        given = "" if scenario.cage == "torus" else f" (cage={scenario.cage!r} gives the {bearing.name} its torus cage)"
+        problems.append(("cage", f"the reduced engine does not take the torus cage{given}: its light cage balls on "
+                                 "their own contacts would set the step again; use cage='none' or 'rigid'"))
     if s.cage == "rigid" and s.cage_damping == "implicit":
-        return InputError("cage_damping: 'implicit' is the reference engine's backward-Euler damping over its step; "
-                          "the reduced engine takes the rigid cage's contacts (stiffness and damping) into its own "
-                          "implicit step, so it takes cage_damping='explicit' (the contacts' own damping)")
+        problems.append(("cage_damping", "'implicit' is the reference engine's backward-Euler damping over its "
+                                         "step; the reduced engine takes the rigid cage's contacts into its own "
+                                         "implicit step: cage_damping='explicit'"))
     if s.traction_level == "point" and s.friction == "history":
-        return InputError("friction: 'history' (the Cundall-Strack spring) is non-smooth and stays with the "
-                          "reference engine; the reduced engine takes friction='regularized' or 'none' at the "
-                          "point level, or traction_level='ellipse'")
+        problems.append(("friction", "'history' (the Cundall-Strack spring, the point level's default) is "
+                                     "non-smooth and stays with the reference engine; the reduced engine takes "
+                                     "traction_level='ellipse', or friction='regularized' or 'none'"))
     if s.defects:
-        return InputError("defects: the reduced engine leaves out the ball / race contact vibration, so defect "
-                          "impacts and their signals stay with the reference engine")
+        problems.append(("defects", "the reduced engine leaves out the ball / race contact vibration, so defect "
+                                    "impacts and their signals stay with the reference engine"))
     if s.signal_dt is not None:
-        return InputError("signal_dt: the condition-monitoring signals (contact vibration) are recorded by the "
-                          "reference engine only")
-    return None
+        problems.append(("signal_dt", "the condition-monitoring signals (contact vibration) are recorded by the "
+                                      "reference engine only"))
+    if not problems:
+        return None
+    text = "; ".join(f"{name}: {why}" if k else why for k, (name, why) in enumerate(problems))
+    return InputError(f"{problems[0][0]}: {text} (a run it takes: {EXAMPLE_COMMAND}; docs/theory/reduced.md)")
 
 
 def _orbital(wb, phi):

@@ -404,7 +404,9 @@ class QuasiStaticBearing(LevelBearing):
                                   f"{math.degrees(self._qmax[2]):.1f} deg from the groove bottom, beyond the "
                                   f"{math.degrees(MAX_FREE_CONTACT_ANGLE):.0f} deg the grooves take (tilt "
                                   f"{math.degrees(math.hypot(self._pose[3], self._pose[4])):.3g} deg, axial "
-                                  f"{self._pose[2]:.3g} m); reduce the moment or axial load")
+                                  f"{self._pose[2]:.3g} m); reduce the moment or axial load, or hold the shaft's tilt (a single "
+                                  "angular-contact bearing under a radial and an axial load tilts until a contact "
+                                  "passes the shoulder; operatingTilt='held' assumes other supports hold it)")
 
     def _sample_row(self, t):
         row = np.empty(SAMPLE_HEADER + 4 * self.bearing.n_balls)
