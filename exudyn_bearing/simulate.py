@@ -87,6 +87,12 @@ def simulate(bearing, scenario: Scenario | None = None, engine: str = "reference
     # the applied loads within the elastic contact model before the engines (and their compilation) start
     check_load_range(bearing if scenario.Pd is None else bearing.with_clearance(scenario.Pd), scenario.Fr,
                      scenario.Fa, scenario.hertz)
+    # a speed whose ring growth closes the bearing is refused naming omega (the quasi-static solver's check),
+    # not through the grown geometry's own plausibility check
+    from .solvers.quasistatic.solve import check_operating_fit
+
+    check_operating_fit(bearing if scenario.Pd is None else bearing.with_clearance(scenario.Pd), scenario.omega,
+                        0.0, scenario.ring_growth)
     start = quasistatic_start(bearing, scenario, lubricant) if scenario.initial == "quasistatic" else None
     try:
         if engine == "reference":
