@@ -257,6 +257,10 @@ CASES = [
     Case("s37_reduced_nan_load", "refuse", "Fr",
          api="report(lambda: eb.simulate('6208', eb.Scenario(Fr=float('nan'), omega=500.0, cage='none', "
              "traction_level='ellipse'), engine='reduced', progress=False))"),
+    Case("s37_simulate_absurd_speed_names_omega", "refuse", "omega",
+         cli=("simulate", "6208", "--Fr", "3000", "--omega", "1e9", "--no-progress")),
+    Case("s37_reduced_defaults_name_both_changes", "refuse", "friction",
+         cli=(*_SIM, "--engine", "reduced")),
     Case("s34_quasistatic_light_balls_flagged", "flag", "inertia",
          cli=_qs("7208", "--Fr", "3000", "--Fa", "3000", "--omega", "500", "--control", "equilibrium", "--cage",
                  "rigid")),
