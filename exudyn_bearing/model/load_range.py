@@ -71,7 +71,14 @@ def check_load_range(bearing: BallBearing, radial_load: float, axial_load: float
         if not (fr > 0.0 or fa > 0.0 or b.diametral_clearance < 0.0):
             return None
         check_load_estimate(b, fr, fa, hertz_method, names)
-        solution = static_equilibrium(b, fr, fa, phase=phase, hertz_method=hertz_method)
+        try:
+            solution = static_equilibrium(b, fr, fa, phase=phase, hertz_method=hertz_method)
+        except InputError as exc:  # the load's own name in the caller's spelling (names), not the solver's
+            head, sep, rest = str(exc).partition(": ")
+            spelled = {"radial_load": names[0], "axial_load": names[1]}.get(head)
+            if spelled is None or not sep:
+                raise
+            raise InputError(f"{spelled}: {rest}") from None
     p_in, p_out = contact_pressures(solution)
     worst = max(float(np.max(p_in, initial=0.0)), float(np.max(p_out, initial=0.0)))
     if worst > limit:
