@@ -230,7 +230,7 @@ def test_cli_json_keys_and_units(capsys):
     (["quasistatic", "6208", "--Fr", "100", "--control", "middle"], "control"),
     (["quasistatic", "6208", "--Fr", "100", "--traction", "honey"], "traction"),
     (["quasistatic", "6208", "--Fr", "100", "--fix", "tilt_z=0"], "--fix:"),
-    (["simulate", "--Fr", "3000", "--omega", "500", "--bearing", "7208", "--t-end", "0.001"], "axial_load"),
+    (["simulate", "--Fr", "3000", "--omega", "500", "--bearing", "7208", "--t-end", "0.001"], "Fa: 0 N cannot hold"),
     (["static", "7208", "--Fr", "3000"], "Fa:"),
 ])
 def test_bad_input_is_a_one_line_error(argv, word, capsys):
