@@ -349,3 +349,20 @@ def test_simulate_names_its_lubricant_and_traction(capsys):
     assert rc == 0, err
     assert d["lubricant"] == "guessasma2018" and d["ring_growth"] is True
     assert d["traction"].startswith("point-contact law (history, mu(Lambda)")
+
+
+def test_simulate_names_omega_where_ring_growth_closes_the_bearing():
+    with pytest.raises(eb.InputError, match="^omega: the operating interference"):
+        eb.simulate("6208", eb.Scenario(Fr=3000.0, omega=1e9, t_end=1e-4, dt=1e-6))
+
+
+def test_the_ball_element_names_an_option_it_does_not_take():
+    import exudyn as exu
+    from exudyn.utilities import InertiaCylinder, MarkerBodyRigid, ObjectGround
+
+    mbs = exu.SystemContainer().AddSystem()
+    ground = mbs.AddMarker(MarkerBodyRigid(bodyNumber=mbs.AddObject(ObjectGround())))
+    body = mbs.CreateRigidBody(inertia=InertiaCylinder(7850.0, 0.25, 0.02, axis=2), referencePosition=[0, 0, 0])
+    with pytest.raises(eb.InputError, match="^operatingTilt: not an option of model='balls'"):
+        eb.CreateBallBearing(mbs, "6208", mbs.AddMarker(MarkerBodyRigid(bodyNumber=body)), ground,
+                             operatingTilt="held")

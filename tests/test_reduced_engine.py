@@ -14,6 +14,7 @@ from exudyn_bearing.data.cages import estimated_cage
 from exudyn_bearing.simulate import quasistatic_start
 
 COMMON = dict(cage="none", traction_level="ellipse", sample_dt=1e-4)
+COMMON_NO_SAMPLE = {k: v for k, v in COMMON.items() if k != "sample_dt"}
 CASES = {
     "radial": (dict(Fr=3000.0, omega=500.0), 0.03),
     "thrust": (dict(Fa=3000.0, omega=500.0, initial="quasistatic", control="equilibrium"), 0.006),
@@ -204,3 +205,18 @@ def test_arrow_step_solves_the_dense_system():
         assert np.allclose(got - y, expected - y, rtol=1e-9, atol=1e-15), (corr, np.max(np.abs(got - expected)))
         # the step keeps the state it started from as the previous one; a correction leaves it
         assert np.array_equal(prev, prev_b if corr else y_b)
+
+
+def test_the_defaults_are_refused_naming_both_changes_and_a_command_that_runs():
+    # cage='auto' (the 6208's torus cage) and friction='history' (the point level's default): one refusal that
+    # names both and quotes a command the engine takes
+    with pytest.raises(InputError, match=r"^cage: .*cage='auto' gives the 6208 its torus cage.*friction: .*--engine "
+                                         r"reduced --cage none --traction-level ellipse"):
+        eb.simulate("6208", eb.Scenario(Fr=3000.0, omega=500.0, t_end=2e-4, dt=2e-5), engine="reduced")
+
+
+@pytest.mark.filterwarnings("ignore:reduced engine. the balls' force balance")  # 5 steps from the analytic start
+def test_a_reference_engine_step_is_said():
+    sc = eb.Scenario(Fr=3000.0, omega=500.0, t_end=1e-5, dt=2e-6, sample_dt=1e-5, **COMMON_NO_SAMPLE)
+    with pytest.warns(UserWarning, match=r"^dt: 2e-06 s is a step of the reference engine"):
+        eb.simulate("6208", sc, engine="reduced")
