@@ -118,6 +118,16 @@ def test_simulate_unstable_step_is_a_clean_error(capsys, runaway):
     assert len(err) == 1 and err[0].startswith("exudyn-bearing: error: dt: ")
 
 
+def test_cli_prints_a_warning_as_one_line_without_its_source(tmp_path):
+    # a user of the command line sees the warning's kind and text, not the package's file and line
+    out = subprocess.run([sys.executable, "-m", "exudyn_bearing", "simulate", "--Fr", "3000", "--omega", "500",
+                          "--t-end", "2e-4", "--dt", "1e-5", "--out", str(tmp_path)],
+                         capture_output=True, text=True, timeout=300)
+    lines = [ln for ln in out.stderr.splitlines() if "StepSizeWarning" in ln]
+    assert lines and all(ln.startswith("exudyn-bearing: warning (StepSizeWarning): dt = ") for ln in lines)
+    assert ".py:" not in out.stderr and "warnings.warn" not in out.stderr
+
+
 # a short run: its summary window is not steady, as expected
 @pytest.mark.filterwarnings("ignore::exudyn_bearing.SteadyStateWarning")
 def test_simulate_exudyn_engine_gives_the_same_keys(capsys):

@@ -136,6 +136,17 @@ def test_bad_cage_input(kw, name):
         solve_quasistatic(B, 3000.0, omega=500.0, **QUICK, **kw)
 
 
+@pytest.mark.parametrize("cage", [None, "none", False])
+def test_no_cage_is_spelt_as_the_scenario_spells_it(cage):
+    # the three spellings Scenario takes for "no cage" give the same cageless solution here
+    from exudyn_bearing import Scenario
+
+    assert Scenario(cage=cage).cage == "none"
+    sol = solve_quasistatic(B, 3000.0, omega=500.0, **QUICK, cage=cage)
+    ref = solve_quasistatic(B, 3000.0, omega=500.0, **QUICK)
+    assert sol.cage is None and np.array_equal(sol.balls["q_inner"], ref.balls["q_inner"])
+
+
 def test_thermal_takes_the_cage_from_the_solution():
     common = {"omega": 500.0, "oil_inlet_temperature": 313.15, "oil_flow": 1e-6, "control": "equilibrium",
               "cage": "rigid"}

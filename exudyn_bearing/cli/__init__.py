@@ -41,6 +41,7 @@ the samples taken so far there).
 from __future__ import annotations
 
 import sys
+import warnings
 from importlib import import_module
 from typing import TYPE_CHECKING
 
@@ -89,6 +90,8 @@ def main(argv=None) -> int:
     """Entry point; returns the exit status."""
     argv = sys.argv[1:] if argv is None else list(argv)
     args = None
+    shown = warnings.formatwarning
+    warnings.formatwarning = _format_warning
     try:
         args = _parser(argv).parse_args(argv)
         command_module(args.command).run(args)
@@ -105,7 +108,15 @@ def main(argv=None) -> int:
     except OSError as exc:
         print(f"exudyn-bearing: error: {exc}", file=sys.stderr)
         return 2
+    finally:
+        warnings.formatwarning = shown
     return 0
+
+
+def _format_warning(message, category, filename, lineno, line=None) -> str:
+    """A warning as the command line prints it: one line with its kind, without the source file and line that
+    Python's default adds (meant for programmers, not for the command's user)."""
+    return f"exudyn-bearing: warning ({category.__name__}): {message}\n"
 
 
 def _interrupted_detail(exc) -> str:

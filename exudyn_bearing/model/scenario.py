@@ -69,19 +69,22 @@ def history_friction_error(friction: str, solver: str, parameter: str = "solverT
                       "(friction='regularized' or 'none')")
 
 
-#: Cage models of a scene (:class:`Scenario` ``cage``): True and False are aliases of "torus" and "none";
+#: Cage models of a scene (:class:`Scenario` ``cage``): True is an alias of "torus", False and None of "none";
 #: "auto" (the default) is the bearing's own: the torus where it has cage balls, else the rigid cage.
 CAGE_MODELS = ("torus", "rigid", "none", "auto")
 
 
 def cage_model(cage) -> str:
-    """The cage model's name of a ``cage`` option: one of :data:`CAGE_MODELS`, or True ("torus") / False
-    ("none"); InputError otherwise."""
+    """The cage model's name of a ``cage`` option: one of :data:`CAGE_MODELS`, or True ("torus") / False or
+    None ("none", the spelling the quasi-static solver takes too); InputError otherwise."""
+    if cage is None:
+        return "none"
     if cage is True or cage is False or isinstance(cage, np.bool_):
         return "torus" if cage else "none"
     if isinstance(cage, str) and cage in CAGE_MODELS:
         return cage
-    raise InputError(f"cage: must be one of {', '.join(CAGE_MODELS)} (True: torus, False: none), got {cage!r}")
+    raise InputError(f"cage: must be one of {', '.join(CAGE_MODELS)} (True: torus, False or None: none), "
+                     f"got {cage!r}")
 
 
 def bearing_cage(cage: str, bearing) -> str:

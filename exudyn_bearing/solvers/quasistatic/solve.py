@@ -61,6 +61,7 @@ from . import kinematics as km
 from .balls import B_CR, B_CZ, B_DI, B_DO, B_NIR, B_NIZ, B_NOR, B_NOZ, B_QI, B_QO
 from ...model.load_range import MAX_CONTACT_PRESSURE, check_load_estimate, check_pressures, pressure_excess
 from ...model.operating_geometry import operating_geometry
+from ...model.scenario import cage_model as _cage_model
 from ...model.scenario import rolling_speed_floor as _rolling_floor
 from .damping import condensed_matrices, contact_damping
 from .inertia import ball_mass_inertia, check_ball_inertia
@@ -262,8 +263,10 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
         Check the traction integration at the solution (:func:`check_traction_resolution`: a
         :class:`TractionResolutionWarning` when doubling ``n_strips`` and ``n_across`` changes the
         dissipation by more than 1 %); its result is the solution's ``resolution_check``.
-    cage : {None, "rigid"}
-        None: no cage, each ball its own orbital speed. ``"rigid"``: a rigid cage
+    cage : {None, "none", False, "rigid"}
+        None (or "none", False, as :class:`~exudyn_bearing.model.scenario.Scenario` spells it): no cage,
+        each ball its own orbital speed; "torus" is refused (a dynamic model); "auto" is "rigid" when
+        ``rigid_cage`` is given, else no cage. ``"rigid"``: a rigid cage
         (docs/theory/quasistatic.md#the-rigid-cage): every ball at the cage's
         orbital speed, a pocket force per ball balancing its tractions along the
         orbit, the cage speed from the cage's torque balance (pocket forces, pocket
@@ -822,13 +825,19 @@ class CageLandWarning(UserWarning):
 
 
 def _check_cage(cage, rigid_cage, control, b):
-    """The RigidCage of ``cage`` / ``rigid_cage`` (None: cageless), or InputError naming the argument."""
-    if cage in (None, "none"):
+    """The RigidCage of ``cage`` / ``rigid_cage`` (None: cageless), or InputError naming the argument. ``cage``
+    is spelt as :class:`~exudyn_bearing.model.scenario.Scenario`'s (None, False and "none" are no cage), and
+    the models this solver does not have are refused by name."""
+    cage = _cage_model(cage)
+    if cage == "auto":
+        cage = "rigid" if rigid_cage is not None else "none"
+    if cage == "none":
         if rigid_cage is not None:
             raise InputError("rigid_cage: given without cage='rigid'; it is the geometry of the rigid cage")
         return None
     if cage != "rigid":
-        raise InputError(f"cage: must be None (no cage) or 'rigid', got {cage!r}")
+        raise InputError(f"cage: the quasi-static solver has no {cage!r} cage (the torus cage's cage balls are a "
+                         f"dynamic model); use 'rigid' or None (no cage)")
     if control == "min-energy":
         raise InputError("control: 'min-energy' does not take cage='rigid': Gupta's minimum-energy hypothesis "
                          "chooses each ball's orbital speed, which the cage imposes; use control='equilibrium' "
