@@ -187,22 +187,51 @@ def quasistatic_start(bearing, scenario: Scenario, lubricant: Lubricant | None =
     scenario's traction model (regularised as the dynamic engines use it),
     ring growth and temperatures. The inner ring's
     tilts are held at zero (the dynamic engines' inner ring translates only);
-    the solution is kept as ``start["static"]``."""
+    the solution is kept as ``start["static"]``.
+
+    A scene with the rigid cage starts from the quasi-static solution with that
+    cage (every ball at the cage's speed within its pocket play, the cage speed
+    from its torque balance: docs/theory/quasistatic.md#the-rigid-cage), so
+    that the run does not begin by pulling cageless balls' own orbital speeds
+    together; where that solution does not apply (pockets unequally spaced,
+    ``control='min-energy'``, the rings at rest) from the cageless one, as
+    ``start["cage_start"]`` says."""
     from .model.parameters import dynamic_traction_model
+    from .model.scenario import resolve_cage
     from .solvers.quasistatic import solve_quasistatic
 
     b = load_bearing(bearing)
     scenario, lubricant = with_bearing_defaults(b, scenario, lubricant)
     if scenario.Pd is not None:
         b = b.with_clearance(scenario.Pd)
-    sol = solve_quasistatic(b, Fr=scenario.Fr, Fa=scenario.Fa, omega=scenario.omega_at(0.0), control=scenario.control,
+    omega0 = scenario.omega_at(0.0)
+    cage, why = _quasistatic_start_cage(b, resolve_cage(scenario, b), omega0)
+    sol = solve_quasistatic(b, Fr=scenario.Fr, Fa=scenario.Fa, omega=omega0, control=scenario.control,
                             traction=dynamic_traction_model(scenario), lubricant=lubricant, ring_growth=scenario.ring_growth,
                             temperatures=scenario.temperatures, fixed={"tilt_x": 0.0, "tilt_y": 0.0},
                             hertz_method=scenario.hertz, n_strips=scenario.n_strips, n_across=scenario.n_across,
-                            stiffness=False)
+                            stiffness=False, inertia_check=False, **cage)  # a start: the run has the inertia
     start = sol.dynamic_start(b)
     start["static"] = sol
+    start["cage_start"] = why
     return start
+
+
+def _quasistatic_start_cage(bearing, scenario: Scenario, omega0: float):
+    """(keyword arguments of the quasi-static solve, what they mean) for the cage of a quasi-static start:
+    the rigid cage of a scene with one where the quasi-static solver takes it, else none."""
+    if scenario.cage != "rigid":
+        return {}, f"cageless quasi-static solution (the scene's cage: {scenario.cage})"
+    from .data.cages import estimated_cage
+
+    rc = scenario.rigid_cage if scenario.rigid_cage is not None else estimated_cage(bearing)
+    if rc.pocket_spacing_error != 0.0:
+        return {}, "cageless quasi-static solution (the pockets are unequally spaced, which it cannot represent)"
+    if scenario.control == "min-energy":
+        return {}, "cageless quasi-static solution (control='min-energy' chooses each ball's orbital speed)"
+    if omega0 == 0.0:
+        return {}, "cageless quasi-static solution (the rings at rest at t = 0: no cage speed to balance)"
+    return {"cage": "rigid", "rigid_cage": rc}, "quasi-static solution with the rigid cage"
 
 
 

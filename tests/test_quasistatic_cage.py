@@ -354,3 +354,29 @@ def test_quasistatic_warns_where_the_balls_inertia_matters():
     heavy = solve_quasistatic("7208", 3000.0, 10000.0, omega=500.0, control="equilibrium", cage="rigid", **QUICK)
     assert heavy.inertia_check["valid"] and heavy.inertia_check["share"] < 1e-3
     assert solve_quasistatic(B, 3000.0, omega=500.0, inertia_check=False, **QUICK).inertia_check is None
+
+
+def test_a_rigid_cage_scene_starts_from_the_caged_quasistatic_solution():
+    """initial='quasistatic' with the rigid cage: the balls start at the caged solution's orbital speeds (one
+    speed within the pocket play), not at the cageless balls' own; the fallbacks say why. A start does not warn
+    that the balls' inertia matters (the dynamic run has it)."""
+    import warnings
+
+    import exudyn_bearing as eb
+    from exudyn_bearing.simulate import quasistatic_start
+
+    b = catalog["7208"]
+    common = dict(Fr=3000.0, Fa=3000.0, omega=500.0, initial="quasistatic", control="equilibrium",
+                  traction_level="ellipse", n_strips=16, n_across=4)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        caged = quasistatic_start(b, eb.Scenario(cage="rigid", **common))
+        free = quasistatic_start(b, eb.Scenario(cage="none", **common))
+    assert caged["cage_start"] == "quasi-static solution with the rigid cage"
+    assert caged["static"].cage is not None and free["static"].cage is None
+    spread = [float(np.ptp(s["static"].kinematics[:, 0])) for s in (caged, free)]
+    assert spread[0] < 0.05 * spread[1]  # the cageless 7208's balls orbit at 209.5 ... 263.6 rad/s
+    assert np.allclose(caged["static"].kinematics[:, 0], caged["static"].cage["speed"], rtol=0.01)
+    uneven = dataclasses.replace(estimated_cage(b), pocket_spacing_error=1e-5)
+    fallback = quasistatic_start(b, eb.Scenario(cage="rigid", rigid_cage=uneven, **common))
+    assert fallback["static"].cage is None and "unequally spaced" in fallback["cage_start"]

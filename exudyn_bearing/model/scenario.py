@@ -231,8 +231,9 @@ class Scenario:
         Start from the quasi-static load distribution with balls and cage at
         their kinematic speeds, from rest, or from the quasi-static solver's
         solution at the scenario's loads and speed (ball positions, contact
-        angles, orbital and ball angular velocities by ``control``).
-    control : {"auto", "outer", "inner", "min-energy"}
+        angles, orbital and ball angular velocities by ``control``; with the
+        rigid cage, the solution with that cage: balls at the cage's speed).
+    control : {"auto", "outer", "inner", "min-energy", "equilibrium"}
         Kinematic hypothesis of the quasi-static start.
     integrator : {"verlet", "rk4"}
     dt : float
