@@ -107,3 +107,17 @@ def test_pocket_film_run_closes_its_energy_balance_and_says_what_it_leaves_out(f
     # the ball loads and the cage speed are the races' business: the film moves them little
     assert wet["q_max_inner"] == pytest.approx(dry["q_max_inner"], rel=0.01)
     assert wet["cage_speed"] == pytest.approx(dry["cage_speed"], rel=0.005)
+
+
+def test_the_element_and_the_command_line_take_the_pocket_film(capsys, tmp_path):
+    from exudyn_bearing.cli import main
+    from exudyn_bearing.solvers.element.element import element_scenario
+
+    assert element_scenario("6208", cage="rigid", pocketFilm=True).pocket_film
+    with pytest.raises(InputError, match="^pocketFilm: "):
+        element_scenario("6208", cage="none", pocketFilm=True)
+    rc = main(["simulate", "6208", "--Fr", "3000", "--omega", "500", "--cage", "rigid", "--pocket-film",
+               "--t-end", "0.002", "--dt", "2e-6", "--json", "--out", str(tmp_path)])
+    assert rc == 0
+    out = capsys.readouterr().out
+    assert "pocket film's viscous shear" in out
