@@ -285,7 +285,8 @@ def CreateBallBearing(mbs, bearing: BallBearing | str, markerInnerRing, markerOu
         Keyword options of :class:`~exudyn_bearing.solvers.element.BallBearingElement`
         (``lubricant``, ``cage`` ("torus", "rigid" or "none"; True / False for torus / none), ``rigidCage``
         (a RigidCage for cage="rigid"; None: the bearing's estimated cage), ``gravity`` (on the rigid cage,
-        world frame), ``lubrication``, ``friction``, ``tangential``,
+        world frame), ``pocketFilm`` (the ball / pocket oil film of the rigid cage), ``lubrication``, ``friction``,
+        ``tangential``,
         ``cageDamping`` (Scenario's ``cage_damping``; "implicit" needs VelocityVerlet), ``hertzModel``, ``film``, ``stepSize``, ``innerRingSpeed``,
         ``initialOmega``, ``initialLoad`` ((Fr, Fa) [N] or a radial load Fr),
         ``sampleInterval``, ``show``, the loss switches ``rollingResistance``,

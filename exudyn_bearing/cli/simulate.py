@@ -63,6 +63,9 @@ def add_parser(sub):
                         "docs/theory/cage.md), or none; default auto: the torus where the bearing has cage balls "
                         "(the papers' bearings), else the rigid cage (ACBB-120)")
     p.add_argument("--no-cage", dest="cage", action="store_const", const="none", help="the same as --cage none")
+    p.add_argument("--pocket-film", action="store_true",
+                   help="the oil film between each ball and its rigid-cage pocket (hydrodynamic and squeeze forces; "
+                        "docs/theory/cage.md#pocket-oil-film); needs --cage rigid")
     p.add_argument("--lubrication", action=argparse.BooleanOptionalAction, default=True,
                    help="Lambda-switched damping and friction on/off")
     p.add_argument("--initial", choices=INITIAL_STATES, default="analytic",
@@ -105,7 +108,7 @@ def scenario_from_args(args) -> Scenario:
     kw = dict(Fr=args.Fr, Fa=args.Fa, omega=omega, Pd=args.Pd, dt=args.dt,
               sample_dt=args.sample_dt, integrator=args.integrator, friction=args.friction,
               tangential=args.tangential, cage_damping=args.cage_damping, hertz=args.hertz, film=args.film,
-              cage=args.cage,
+              cage=args.cage, pocket_film=args.pocket_film,
               lubrication=args.lubrication, initial=args.initial, control=args.control,
               traction_level=args.traction_level, traction=args.traction, n_strips=args.strips, n_across=args.points_across,
               ring_growth=args.ring_growth, rolling_resistance=args.rolling_resistance, ball_drag=args.ball_drag,

@@ -88,10 +88,12 @@ from ..physics.friction import (_implicit_tangential_stiffness, _regularized_cou
 from ..physics.geometry import _groove_geometry, _raceway_radii_cos
 from ..physics.hertz import _curvature_sum_radius, _kfe_fast, _semi_axes, _semi_axes_overlap, _stiffness
 from ..physics.losses import _ehl_rolling_force, _hysteresis_rolling_force, ball_drag_force
+from ..physics.pocket_film import _pocket_film
 from ..physics.short_bearing import _short_bearing_xy
 from .layout import (POCKET_ESCAPE, G_CAGE_LOAD_POWER, G_LAND_ECC, G_LAND_FX, G_LAND_FY, G_LAND_POWER, G_POCKET_POWER, P_GUIDANCE, P_IC, P_K_LAND,
                      P_K_POCKET, P_LAND_C, P_LAND_EPS, P_LAND_ETA, P_LAND_L, P_LAND_R, P_MC, P_MU_POCKET,
-                     P_CAGE_HALF_SECTION, P_POCKET_GAP, P_POCKET_SHAPE, P_POCKET_SPACING, P_POCKET_VREG, P_RIGID, P_GX, P_GY, P_GZ,
+                     P_CAGE_HALF_SECTION, P_POCKET_ETA, P_POCKET_FILM, P_POCKET_FILM_FLOOR, P_POCKET_FILM_HHAT,
+                     P_POCKET_FILM_RX, P_POCKET_GAP, P_POCKET_SHAPE, P_POCKET_SPACING, P_POCKET_VREG, P_RIGID, P_GX, P_GY, P_GZ,
                      P_UNBALANCE)
 from .layout import HZ_E, HZ_EXP, HZ_F, HZ_FILM_K, HZ_GEO, HZ_K, HZ_LN_U, HZ_LN_W, HZ_N, HZ_RATIO
 from .layout import (D_ROLLRES, G_DRAG_POWER, G_EHL_POWER, G_HYST_POWER, P_ALPHA_H, P_DRAG, P_ETA_MIX, P_RHO_MIX,
@@ -851,6 +853,41 @@ def _land_force(p, ex, ey, evx, evy, omega_sum):
     return fx, fy, pen
 
 
+@kernel(no_runtime=True, inline="always")
+def _pocket_film_force(p, xb, vb, j, cx, cy, ux, uy, uz, wc, nx, ny, nz, sx, sy, sz, h, ddot, m_eff, tau, floor):
+    """The net force [N] of ball j's pocket film along -n (off the wall the ball approaches: docs/theory/cage.md,
+    "Pocket oil film"): the film at the near wall (gap ``h``, at least ``floor``) less the film at the opposite
+    wall (gap h + 2 c_p), each hydrodynamic (the entraining speed: half the ball's sliding ``s`` on the wall
+    less the contact point's own speed in the cage, the ball centre's across n) plus squeeze (approach speed
+    ``ddot`` toward the near wall, -ddot toward the far one; backward-Euler over ``tau`` with implicit cage
+    damping). Net zero for a centred, still ball; continuous as the ball crosses the pocket's centre."""
+    gap = p[P_POCKET_GAP]
+    rb = p[P_RB]
+    # the ball centre's velocity in the cage frame, across n: the contact point's own speed
+    qx = vb[j, 0] - (ux - wc * (xb[j, 1] - cy))
+    qy = vb[j, 1] - (uy + wc * (xb[j, 0] - cx))
+    qz = vb[j, 2] - uz
+    qn = qx * nx + qy * ny + qz * nz
+    ue_x, ue_y, ue_z = 0.5 * sx - (qx - qn * nx), 0.5 * sy - (qy - qn * ny), 0.5 * sz - (qz - qn * nz)
+    u = math.sqrt(ue_x * ue_x + ue_y * ue_y + ue_z * ue_z)
+    eta, r_x, h_hat = p[P_POCKET_ETA], p[P_POCKET_FILM_RX], p[P_POCKET_FILM_HHAT]
+    near = h if h > floor else floor
+    far = h + 2.0 * gap
+    if far < floor:
+        far = floor
+    w1, c1 = _pocket_film(eta, u, r_x, h_hat, rb, near, ddot)
+    w2, c2 = _pocket_film(eta, u, r_x, h_hat, rb, far, -ddot)
+    if tau > 0.0:
+        c1 = _implicit_damping(c1, m_eff, tau)
+        c2 = _implicit_damping(c2, m_eff, tau)
+    f = w1 - w2
+    if ddot > 0.0:
+        f += c1 * ddot
+    else:
+        f += c2 * ddot
+    return f
+
+
 @kernel(no_runtime=True, internal=True)
 def _rigid_cage(p, xb, vb, wb, xc, vc, rings, fb, tb, fc, fr, glob, cage_load, want):
     """The rigid cage (docs/theory/cage.md): ball j in pocket j, and the cage on its land.
@@ -892,6 +929,8 @@ def _rigid_cage(p, xb, vb, wb, xc, vc, rings, fb, tb, fc, fr, glob, cage_load, w
     pitch = 2.0 * math.pi / z
     spacing = p[P_POCKET_SPACING]
     half_section = p[P_CAGE_HALF_SECTION]
+    film = p[P_POCKET_FILM] > 0.5
+    film_floor = p[P_POCKET_FILM_FLOOR]
     for j in range(z):
         if want:
             cage_load[j, 0] = 0.0
@@ -911,7 +950,8 @@ def _rigid_cage(p, xb, vb, wb, xc, vc, rings, fb, tb, fc, fr, glob, cage_load, w
         if not d2 > gap * gap:
             if d2 != d2:
                 worst = d2  # a non-finite ball or cage: the engines stop on NaN
-            continue
+            if not (film and d2 > 0.0):
+                continue
         dist = math.sqrt(d2)
         delta = dist - gap
         if delta / rb > worst:
@@ -924,20 +964,26 @@ def _rigid_cage(p, xb, vb, wb, xc, vc, rings, fb, tb, fc, fr, glob, cage_load, w
         vry = vb[j, 1] + ey - (uy + wc * px)
         vrz = vb[j, 2] + ez - uz
         ddot = vrx * nx + vry * ny + vrz * nz
-        sq = math.sqrt(delta)
-        c = _damping_critical(m_eff, 1.5 * kp * sq)
-        if tau > 0.0:
-            c = _implicit_damping(c, m_eff, tau)
-        f_el = kp * delta * sq
-        f = f_el + c * ddot
-        if f < 0.0:
-            f = 0.0
+        f_el = 0.0
+        f = 0.0
+        if delta > 0.0:  # the ball touches the wall: Hertz with its damping
+            sq = math.sqrt(delta)
+            c = _damping_critical(m_eff, 1.5 * kp * sq)
+            if tau > 0.0:
+                c = _implicit_damping(c, m_eff, tau)
+            f_el = kp * delta * sq
+            f = f_el + c * ddot
+            if f < 0.0:
+                f = 0.0
         sx, sy, sz = vrx - ddot * nx, vry - ddot * ny, vrz - ddot * nz
         slip = math.sqrt(sx * sx + sy * sy + sz * sz)
         tx, ty, tz = 0.0, 0.0, 0.0
-        if slip > 0.0:
+        if slip > 0.0 and f > 0.0:
             ft = _regularized_coulomb(slip, f, mu, vreg) / slip
             tx, ty, tz = -ft * sx, -ft * sy, -ft * sz
+        if film:
+            f += _pocket_film_force(p, xb, vb, j, cx, cy, ux, uy, uz, wc, nx, ny, nz, sx, sy, sz, -delta, ddot,
+                                    m_eff, tau, film_floor)
         gx, gy, gz = tx - f * nx, ty - f * ny, tz - f * nz  # the pocket's force on the ball
         fb[j, 0] += gx
         fb[j, 1] += gy
@@ -953,7 +999,7 @@ def _rigid_cage(p, xb, vb, wb, xc, vc, rings, fb, tb, fc, fr, glob, cage_load, w
         # dissipated: the normal damping's work and the friction's (minus the pair's power on the sliding)
         pocket_power += (f - f_el) * ddot - (tx * vrx + ty * vry + tz * vrz)
         if want:
-            cage_load[j, 0] = f
+            cage_load[j, 0] = abs(f)  # a net film force may point either way
             cage_load[j, 1] = math.sqrt(tx * tx + ty * ty + tz * tz)
     land_power = 0.0
     flx, fly, t_sh, ecc = 0.0, 0.0, 0.0, 0.0

@@ -191,6 +191,14 @@ P_CAGE_HALF_SECTION = _entry("cage_half_section", "m", "half the radial section 
 POCKET_ESCAPE = 1e300
 P_POCKET_SPACING = _entry("pocket_spacing_error", "rad", "unequal pocket spacing e / r_p: pocket j at the cage angle + "
                           "2 pi j / Z + (e / r_p) sin(2 pi j / Z)")
+P_POCKET_FILM = _entry("pocket_film", "switch", "the ball / pocket oil film (1: hydrodynamic and squeeze forces, "
+                       "physics/pocket_film.py) or none (0: dry Hertz contact only)")
+P_POCKET_ETA = _entry("pocket_viscosity", "Pa s", "dynamic viscosity of the pocket film")
+P_POCKET_FILM_RX = _entry("pocket_film_rx", "m", "radius R_x of the pocket film along its entraining direction")
+P_POCKET_FILM_HHAT = _entry("pocket_film_h_hat", "-", "isoviscous-rigid film constant H_hat of the pocket film "
+                            "(Brewe, Hamrock & Taylor)")
+P_POCKET_FILM_FLOOR = _entry("pocket_film_floor", "m", "thinnest pocket film the forces are evaluated at (the "
+                             "composite roughness of ball and cage; thinner, the Hertz contact takes over)")
 
 #: All entries of the parameter vector, in index order.
 PARAMETERS: tuple[ParameterEntry, ...] = tuple(_ENTRIES)

@@ -15,6 +15,7 @@ from ..physics.contact_slip import deformed_contact_radius
 from ..physics.ehl import film_model_code
 from ..physics.hertz import material_reduced_modulus
 from ..physics.losses import OIL_DENSITY, mixture_density, mixture_viscosity
+from ..physics.pocket_film import isoviscous_rigid_film_constant, pocket_film_radii
 from . import layout as L
 from .initial_state import ring_mass_estimate
 from .operating_geometry import operating_geometry
@@ -111,6 +112,14 @@ def _set_rigid_cage(p, b, s, lub):
                                                             rc.pocket_shape == "cylindrical", float(e_pocket), s.hertz))
     p[L.P_MU_POCKET] = rc.pocket_friction
     p[L.P_POCKET_VREG] = s.regularizing_speed
+    if s.pocket_film:  # the ball / pocket oil film (physics/pocket_film.py)
+        cylindrical = rc.pocket_shape == "cylindrical"
+        r_x, alpha_r = pocket_film_radii(b.ball_radius, rc.pocket_clearance, cylindrical)
+        p[L.P_POCKET_FILM] = 1.0
+        p[L.P_POCKET_ETA] = lub.viscosity
+        p[L.P_POCKET_FILM_RX] = r_x
+        p[L.P_POCKET_FILM_HHAT] = float(isoviscous_rigid_film_constant(alpha_r))
+        p[L.P_POCKET_FILM_FLOOR] = lub.composite_roughness
     p[L.P_GUIDANCE] = GUIDANCES.index(rc.guidance)
     p[L.P_GX], p[L.P_GY], p[L.P_GZ] = s.gravity
     p[L.P_UNBALANCE] = rc.unbalance

@@ -144,6 +144,16 @@ class Scenario:
         a vertical one (0, 0, -9.81)), acting on the rigid cage (its weight
         decides where it rides at low speed); the balls' and rings' weights,
         far below their contact loads, are left out. Default none.
+    pocket_film : bool
+        The oil film between each ball and its rigid-cage pocket
+        (docs/theory/cage.md#pocket-oil-film, :mod:`exudyn_bearing.physics.pocket_film`):
+        inside the pocket's clearance the film's hydrodynamic force (rigid,
+        isoviscous: Brewe, Hamrock & Taylor) and squeeze force (sphere on a
+        plane, a lower bound for the conforming pocket) push the ball off the
+        wall, at the lubricant's viscosity; the pocket friction mu_c acts on
+        the film's force as on the contact's. Default False: the dry Hertz
+        contact only (the validated runs). Needs ``cage='rigid'`` and
+        ``lubrication``.
     lubrication : bool
         Lambda-switched damping and friction (True) or constant mu and
         hysteretic damping (False).
@@ -284,6 +294,7 @@ class Scenario:
     cage: bool | str = "auto"
     rigid_cage: object = None
     gravity: tuple = (0.0, 0.0, 0.0)
+    pocket_film: bool = False
     lubrication: bool = True
     mu_dry: float = 0.1
     friction: str = "history"
@@ -353,6 +364,13 @@ class Scenario:
                 raise InputError(f"rigid_cage: given with cage={self.cage!r}; it is the geometry of cage='rigid'")
         for name in ("lubrication", "rolling_resistance", "ball_drag"):
             object.__setattr__(self, name, check_bool(name, getattr(self, name)))
+        object.__setattr__(self, "pocket_film", check_bool("pocket_film", self.pocket_film))
+        if self.pocket_film and self.cage not in ("rigid", "auto"):
+            raise InputError(f"pocket_film: the film between ball and pocket is the rigid cage's (cage='rigid'), "
+                             f"and the scene has cage={self.cage!r} (cage='auto' means the torus cage on a bearing "
+                             f"with cage balls: set cage='rigid')")
+        if self.pocket_film and not self.lubrication:
+            raise InputError("pocket_film: needs an oil (lubrication=True); without it the pockets are dry")
         for name in ("Fr", "Fa", "t_ramp_up", "t_ramp_down", "mu_dry"):
             if getattr(self, name) < 0:
                 raise InputError(f"{name}: must be >= 0, got {getattr(self, name)}")

@@ -344,7 +344,38 @@ def rigid_cage_step(b: BallBearing, scenario: Scenario, lub: Lubricant, q: float
     land = land_film_step(b, scenario, lub, ecc)
     if land < pocket:
         basis = f"land film at eccentricity {ecc:.3g}"
-    return min(pocket, land), load, basis
+    film = pocket_film_step(b, scenario, lub)
+    if film < min(pocket, land):
+        basis = "pocket film at its thinnest (the composite roughness)"
+    return min(pocket, land, film), load, basis
+
+
+def pocket_film_step(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant) -> float:
+    """Explicit stable step [s] of the ball / pocket film (``Scenario.pocket_film``; inf without it) at its
+    thinnest, h = the composite roughness: the reduced mass of ball and cage on the hydrodynamic force's
+    stiffness k = w / (2 h) (:func:`~exudyn_bearing.physics.pocket_film.hydrodynamic_film_force`, w ~ h^-1/2;
+    the entraining speed half the ball's kinematic spin speed R_b |omega_R| at ``scenario.omega``) and the
+    squeeze damping C = 6 pi eta R_b^2 / h, by :func:`explicit_step_factor` at zeta = C / (2 sqrt(k m)); with
+    ``cage_damping='implicit'`` the squeeze is backward Euler and only the stiffness limits the step."""
+    if not scenario.pocket_film:
+        return math.inf
+    from ..data.cages import estimated_cage
+    from ..physics import pocket_film as pf
+
+    b = bearing
+    rc = scenario.rigid_cage if scenario.rigid_cage is not None else estimated_cage(b)
+    h = lubricant.composite_roughness
+    r_x, alpha_r = pf.pocket_film_radii(b.ball_radius, rc.pocket_clearance, rc.pocket_shape == "cylindrical")
+    spin = abs(float(kinematics.ball_spin_relative(scenario.omega, 0.0, b.ball_radius, b.pitch_radius,
+                                                   b.free_contact_angle)))
+    k = float(pf.hydrodynamic_film_force(lubricant.viscosity, 0.5 * b.ball_radius * spin, r_x, alpha_r, h)) / (2.0 * h)
+    c = float(pf.squeeze_film_damping(lubricant.viscosity, b.ball_radius, h))
+    mb, mc = b.ball_mass, rc.mass(b)
+    m = mb * mc / (mb + mc)
+    if k <= 0.0:  # the rings at rest: the squeeze alone, stable below 2 m / C unless backward Euler
+        return math.inf if scenario.cage_damping == "implicit" else 2.0 * m / c
+    zeta = c / (2.0 * math.sqrt(k * m))
+    return explicit_step_factor(zeta, scenario.integrator, scenario.cage_damping) / math.sqrt(k / m)
 
 
 def land_step_check(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant | None, eccentricity: float,

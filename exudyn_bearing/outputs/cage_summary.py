@@ -10,6 +10,7 @@ import numpy as np
 from ..model import layout as L
 
 __all__ = ["rigid_cage_summary", "whirl", "cage_motion", "CAGE_SUMMARY_UNITS", "CAGE_LOSSES_NOT_MODELLED",
+           "CAGE_LOSSES_NOT_MODELLED_FILM",
            "CENTRED_ORBIT", "REGULAR_RADIUS_VARIATION", "REGULAR_DIRECTION_SHARE"]
 
 #: Units of the keys of :func:`rigid_cage_summary`.
@@ -67,7 +68,12 @@ def cage_motion(t, xy, clearance, cage_speed) -> dict:
 
 #: Cage losses the rigid cage leaves out (part of ``not_modelled``).
 CAGE_LOSSES_NOT_MODELLED = ("cage windage and the oil's churning by the cage",
-                            "the pocket's oil film (the ball / pocket contact is dry Hertz with Coulomb friction)")
+                            "the pocket's oil film (the ball / pocket contact is dry Hertz with Coulomb friction; "
+                            "Scenario(pocket_film=True) adds the film's normal forces)")
+#: The same with ``Scenario(pocket_film=True)``: the film's normal forces are modelled, its shear is not.
+CAGE_LOSSES_NOT_MODELLED_FILM = ("cage windage and the oil's churning by the cage",
+                                 "the pocket film's viscous shear (the pocket friction mu_c acts where the ball "
+                                 "touches the wall; the film's hydrodynamic and squeeze forces are modelled)")
 
 
 def whirl(t, xy, cage_speed):

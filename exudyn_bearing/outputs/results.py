@@ -35,7 +35,8 @@ from ..model.record import RunRecord
 from ..model.scenario import Scenario
 from ..physics.damping import REGIME_NAMES
 from ..data.cages import estimated_cage
-from .cage_summary import CAGE_LOSSES_NOT_MODELLED, CAGE_SUMMARY_UNITS, rigid_cage_summary
+from .cage_summary import (CAGE_LOSSES_NOT_MODELLED, CAGE_LOSSES_NOT_MODELLED_FILM, CAGE_SUMMARY_UNITS,
+                           rigid_cage_summary)
 from .contact_summary import CONTACT_SUMMARY_UNITS, contact_summary
 from .jsonio import to_jsonable
 from .whole_loss import WHOLE_LOSS_DESCRIPTIONS, WHOLE_LOSS_KEYS, WHOLE_LOSS_UNITS, whole_loss
@@ -429,9 +430,11 @@ class Results:
     def cage_not_modelled(self) -> tuple:
         """Loss sources of the cage and the bearing that the run's cage model leaves out: those of
         :data:`DYNAMIC_NOT_MODELLED` for the torus cage (or none), the rigid cage's own
-        (:data:`~.cage_summary.CAGE_LOSSES_NOT_MODELLED`) and the seals for the rigid cage."""
+        (:data:`~.cage_summary.CAGE_LOSSES_NOT_MODELLED`, or ``CAGE_LOSSES_NOT_MODELLED_FILM`` with the pocket
+        film) and the seals for the rigid cage."""
         if self.scenario.cage == "rigid":
-            return CAGE_LOSSES_NOT_MODELLED + DYNAMIC_NOT_MODELLED[1:]
+            own = CAGE_LOSSES_NOT_MODELLED_FILM if getattr(self.scenario, "pocket_film", False) else CAGE_LOSSES_NOT_MODELLED
+            return own + DYNAMIC_NOT_MODELLED[1:]
         return DYNAMIC_NOT_MODELLED
 
     def losses_lists(self) -> tuple[list, list]:

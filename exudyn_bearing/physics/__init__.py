@@ -5,5 +5,6 @@ Modules: :mod:`hertz` (elliptic and sphere contact), :mod:`geometry`
 :mod:`damping`, :mod:`friction`, :mod:`kinematics`,
 :mod:`load_distribution` (quasi-static Stribeck/Harris), :mod:`ring_growth`
 (rings at speed and temperature), :mod:`traction` (traction models),
-:mod:`contact_slip` (slip and traction over the Hertz ellipse).
+:mod:`contact_slip` (slip and traction over the Hertz ellipse), :mod:`pocket_film` (the oil film between a
+ball and its cage pocket).
 """

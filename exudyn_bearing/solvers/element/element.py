@@ -159,7 +159,7 @@ OPTION_NAMES = {"Fr": "initialLoad", "Fa": "initialLoad", "omega": "initialOmega
                 "ring_growth": "ringGrowth", "signal_dt": "signalInterval",
                 "rolling_resistance": "rollingResistance", "ball_drag": "ballDrag",
                 "oil_volume_fraction": "oilVolumeFraction", "hysteresis_loss_factor": "hysteresisLossFactor",
-                "rigid_cage": "rigidCage"}
+                "rigid_cage": "rigidCage", "pocket_film": "pocketFilm"}
 
 
 def _initial_load(load):
@@ -187,7 +187,7 @@ def _scenario_from_options(o: dict, bearing) -> Scenario:
     sample = check_positive("sampleInterval", o["sampleInterval"])
     try:
         return Scenario(Fr=fr, Fa=fa, omega=check_finite("initialOmega", o["initialOmega"]), cage=o["cage"],
-                        rigid_cage=o["rigidCage"], gravity=o["gravity"],
+                        rigid_cage=o["rigidCage"], gravity=o["gravity"], pocket_film=o["pocketFilm"],
                         lubrication=o["lubrication"], friction=o["friction"], tangential=o["tangential"],
                         cage_damping=o["cageDamping"],
                         hertz=o["hertzModel"], film=o["film"], guide_clearance=o["guideClearance"], mu_dry=o["muDry"],
@@ -270,7 +270,8 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
     the bearing's estimated cage) and ``gravity`` (g_x, g_y, g_z) [m/s^2,
     world frame] the gravity the element applies on the rigid cage (give it
     here rather than as a load on ``cageBody``: the element's energy balance
-    counts it as drive); with the rigid cage the bearing axis must be the
+    counts it as drive), ``pocketFilm`` the oil film between ball and pocket
+    (``Scenario.pocket_film``); with the rigid cage the bearing axis must be the
     world z axis;
     ``initialLoad`` is (Fr, Fa) [N] or a radial load Fr, its radial part along ``loadAngle`` [rad] from
     the outer ring's x axis (default 0, as the levels); an invalid option
@@ -289,7 +290,7 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
                  temperatures=None, control="auto", initialState=None, defects=(),
                  signalInterval=None, rollingResistance=False, ballDrag=False, oilVolumeFraction=0.0,
                  hysteresisLossFactor=HYSTERESIS_LOSS_FACTOR_STEEL, cageDamping="explicit", rigidCage=None,
-                 gravity=(0.0, 0.0, 0.0), show=False, loadAngle=0.0):
+                 gravity=(0.0, 0.0, 0.0), pocketFilm=False, show=False, loadAngle=0.0):
         announce_compilation(forces, EK.fast_step if mode == "fast" else EK.body_step)
         self.mbs = mbs
         self.bearing = b = load_bearing(bearing)

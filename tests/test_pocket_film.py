@@ -1,0 +1,123 @@
+"""The ball / pocket oil film (physics/pocket_film.py, Scenario(pocket_film=True); docs/theory/cage.md#pocket-oil-film)."""
+import math
+import warnings
+
+import numpy as np
+import pytest
+from scipy import integrate
+
+import exudyn_bearing as eb
+from exudyn_bearing.data import InputError
+from exudyn_bearing.model.stability import pocket_film_step, rigid_cage_step
+from exudyn_bearing.physics import pocket_film as pf
+
+
+def test_isoviscous_rigid_constant_by_hand():
+    # Brewe, Hamrock & Taylor's fit, evaluated by hand: alpha_r = 1, lambda_b = 0.6,
+    # 0.131 atan(0.5) + 1.683 = 1.74373; 128 * 0.36 * 1.74373^2 = 140.11
+    assert float(pf.isoviscous_rigid_film_constant(1.0)) == pytest.approx(140.11, abs=0.01)
+    # the long-ellipsoid limit: lambda_b -> 1, atan -> pi/2: 128 alpha_r (0.131 pi / 2 + 1.683)^2
+    a = 1e6
+    assert float(pf.isoviscous_rigid_film_constant(a)) / a == pytest.approx(
+        128.0 * (0.131 * math.pi / 2 + 1.683) ** 2, rel=1e-5)
+
+
+def test_hydrodynamic_force_inverts_the_film_formula():
+    # the load the function returns, put into H_hat = (h / R_x) (W / U)^2 with any E', gives the fit's H_hat
+    eta, u, r_x, alpha, h, e_prime = 0.02, 3.0, 6e-3, 25.0, 1e-6, 2.2e11
+    w = float(pf.hydrodynamic_film_force(eta, u, r_x, alpha, h))
+    big_u, big_w = eta * u / (e_prime * r_x), w / (e_prime * r_x ** 2)
+    assert (h / r_x) * (big_w / big_u) ** 2 == pytest.approx(float(pf.isoviscous_rigid_film_constant(alpha)), rel=1e-12)
+    # a thinner film carries more, as h^-1/2; the entraining direction does not matter
+    assert float(pf.hydrodynamic_film_force(eta, -u, r_x, alpha, h / 4)) == pytest.approx(2.0 * w, rel=1e-12)
+
+
+def test_squeeze_force_against_reynolds_equation():
+    # Reynolds' equation for a sphere approaching a plane, axisymmetric gap h(r) = h0 + r^2 / (2 R):
+    # d/dr (r h^3 dp/dr) = 12 eta r (dh/dt), p(inf) = 0, integrated numerically: the closed form's load
+    eta, radius, h0, v = 0.05, 6e-3, 2e-6, 1e-3   # approach speed v = -dh/dt
+
+    def dpdr(r):
+        return -6.0 * eta * v * r / (h0 + r * r / (2.0 * radius)) ** 3
+
+    def p(r):
+        return -integrate.quad(dpdr, r, np.inf, limit=200)[0]
+
+    split = 50.0 * math.sqrt(2.0 * radius * h0)  # fifty times the film's width
+    load = sum(integrate.quad(lambda r: 2.0 * math.pi * r * p(r), a, b, limit=400)[0]
+               for a, b in ((0.0, split), (split, np.inf)))
+    assert load == pytest.approx(float(pf.squeeze_film_force(eta, radius, h0, v)), rel=1e-4)
+    assert float(pf.squeeze_film_force(eta, radius, h0, -v)) == 0.0  # separating: the film cavitates
+
+
+def test_pocket_film_radii():
+    rb, c = 6e-3, 2.5e-4
+    conform = rb * (rb + c) / c
+    assert pf.pocket_film_radii(rb, c, True) == pytest.approx((rb, conform / rb))
+    assert pf.pocket_film_radii(rb, c, False) == pytest.approx((conform, 1.0))
+
+
+@pytest.mark.parametrize("kw", [dict(cage="none"), dict(cage="rigid", lubrication=False), dict(cage="torus")])
+def test_pocket_film_needs_the_rigid_cage_and_oil(kw):
+    with pytest.raises(InputError, match="^pocket_film: "):
+        eb.Scenario(Fr=3000.0, omega=500.0, pocket_film=True, **kw)
+
+
+def test_pocket_film_on_a_torus_caged_bearing_is_refused_by_name():
+    # cage='auto' is the 6208's torus cage, known only with the bearing
+    with pytest.raises(InputError, match="^pocket_film: .*cage='torus' .*set cage='rigid'"):
+        eb.simulate("6208", eb.Scenario(Fr=3000.0, omega=500.0, t_end=1e-4, dt=2e-6, pocket_film=True),
+                    progress=False)
+
+
+def test_stable_step_of_the_pocket_film():
+    from exudyn_bearing.data.catalog import default_lubricant
+
+    b = eb.catalog["6208"]
+    lub = default_lubricant(b)
+    dry = eb.Scenario(Fr=3000.0, omega=500.0, cage="rigid")
+    wet = eb.Scenario(Fr=3000.0, omega=500.0, cage="rigid", pocket_film=True)
+    assert pocket_film_step(b, dry, lub) == math.inf
+    step = pocket_film_step(b, wet, lub)
+    assert 0.0 < step < math.inf
+    # it enters the rigid cage's limit only where it is the smallest
+    dt, _, basis = rigid_cage_step(b, wet, lub, 1500.0, None)
+    assert dt <= step and (dt < step or basis.startswith("pocket film"))
+
+
+@pytest.fixture(scope="module")
+def film_runs():
+    """The 6208 radial case (3000 N, 500 rad/s) with its estimated rigid cage, 60 ms at 2 us, dry and with the
+    pocket film."""
+    out = {}
+    for film in (False, True):
+        sc = eb.Scenario(Fr=3000.0, omega=500.0, t_end=0.06, dt=2e-6, cage="rigid", pocket_film=film,
+                         sample_dt=1e-4)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", eb.SteadyStateWarning)
+            out[film] = eb.simulate("6208", sc, progress=False).summary(fraction=0.5)
+    return out
+
+
+def test_pocket_film_run_closes_its_energy_balance_and_says_what_it_leaves_out(film_runs):
+    wet, dry = film_runs[True], film_runs[False]
+    assert abs(wet["energy_residual"]) < 2e-3
+    assert any("pocket film's viscous shear" in x for x in wet["not_modelled"])
+    assert any("Scenario(pocket_film=True)" in x for x in dry["not_modelled"])
+    # the ball loads and the cage speed are the races' business: the film moves them little
+    assert wet["q_max_inner"] == pytest.approx(dry["q_max_inner"], rel=0.01)
+    assert wet["cage_speed"] == pytest.approx(dry["cage_speed"], rel=0.005)
+
+
+def test_the_element_and_the_command_line_take_the_pocket_film(capsys, tmp_path):
+    from exudyn_bearing.cli import main
+    from exudyn_bearing.solvers.element.element import element_scenario
+
+    assert element_scenario("6208", cage="rigid", pocketFilm=True).pocket_film
+    with pytest.raises(InputError, match="^pocketFilm: "):
+        element_scenario("6208", cage="none", pocketFilm=True)
+    rc = main(["simulate", "6208", "--Fr", "3000", "--omega", "500", "--cage", "rigid", "--pocket-film",
+               "--t-end", "0.002", "--dt", "2e-6", "--json", "--out", str(tmp_path)])
+    assert rc == 0
+    out = capsys.readouterr().out
+    assert "pocket film's viscous shear" in out
