@@ -121,3 +121,25 @@ def test_the_element_and_the_command_line_take_the_pocket_film(capsys, tmp_path)
     assert rc == 0
     out = capsys.readouterr().out
     assert "pocket film's viscous shear" in out
+
+
+def test_the_exudyn_element_has_the_same_pocket_film():
+    # one physics implementation: the element's fast mode (the reference scheme) runs the pocket film as the
+    # reference engine does (the scene of tests/test_element_rigid_cage.py, with the film)
+    import dataclasses
+
+    from exudyn_bearing.data.cages import estimated_cage
+    from exudyn_bearing.solvers.element.engine import ExudynEngine
+
+    b = eb.catalog["6208"]
+    cage = dataclasses.replace(estimated_cage(b), pocket_clearance=60e-6, land_clearance=30e-6)
+    sc = eb.Scenario(Fr=3000.0, omega=500.0, t_end=0.006, dt=4e-6, sample_dt=1e-4, cage="rigid", rigid_cage=cage,
+                     cage_damping="implicit", pocket_film=True)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", eb.SteadyStateWarning)
+        ref = eb.simulate(b, sc, progress=False)
+        ex = eb.Results(ExudynEngine(b, sc, mode="fast").run())
+        a, c = ref.summary(), ex.summary()
+    assert a["pocket_force_max"] > 0.0
+    for key in ("cage_speed", "q_max_inner", "pocket_force_max", "cage_power_pocket"):
+        assert c[key] == pytest.approx(a[key], rel=1e-6), key

@@ -92,6 +92,7 @@ class ExudynEngine:
         mbs.AddLoad(LoadForceVector(markerNumber=m_inner, loadVector=[s.Fr, 0.0, s.Fa]))
         self.element = BallBearingElement(
             mbs, b, m_inner, m_outer, lubricant=lubricant, cage=s.cage, rigidCage=s.rigid_cage, gravity=s.gravity,
+            pocketFilm=s.pocket_film,
             lubrication=s.lubrication,
             friction=s.friction, tangential=s.tangential, cageDamping=s.cage_damping, hertzModel=s.hertz, film=s.film,
             guideClearance=s.guide_clearance, muDry=s.mu_dry, regularizingSpeed=s.regularizing_speed,
