@@ -10,7 +10,7 @@ from .data import BallBearing, InputError, Lubricant, default_traction, load_bea
 from .model.load_range import check_load_range, check_run_pressures
 from .model.memory import check_sample_memory
 from .model.record import RunInterrupted
-from .model.scenario import Scenario
+from .model.scenario import Scenario, engine_speed_error
 from .outputs.results import Results
 from .solvers.element import BallBearingElement as _ElementBase
 from .solvers.element.element import element_scenario
@@ -77,6 +77,9 @@ def simulate(bearing, scenario: Scenario | None = None, engine: str = "reference
         raise InputError(f"engine: unknown engine {engine!r} (valid: {', '.join(ENGINES)})")
     bearing = load_bearing(bearing)
     scenario, lubricant = with_bearing_defaults(bearing, scenario, lubricant)
+    err = engine_speed_error(scenario, engine)  # an engine without the outer ring's spin says so by name
+    if err is not None:
+        raise err
     if engine == "reduced":  # what it does not model, before any work
         from .solvers.reduced.engine import reduced_support_error
 
@@ -92,7 +95,7 @@ def simulate(bearing, scenario: Scenario | None = None, engine: str = "reference
     from .solvers.quasistatic.solve import check_operating_fit
 
     check_operating_fit(bearing if scenario.Pd is None else bearing.with_clearance(scenario.Pd), scenario.omega,
-                        0.0, scenario.ring_growth)
+                        scenario.omega_outer, scenario.ring_growth)
     start = quasistatic_start(bearing, scenario, lubricant) if scenario.initial == "quasistatic" else None
     try:
         if engine == "reference":
@@ -195,7 +198,8 @@ def quasistatic_start(bearing, scenario: Scenario, lubricant: Lubricant | None =
     scenario, lubricant = with_bearing_defaults(b, scenario, lubricant)
     if scenario.Pd is not None:
         b = b.with_clearance(scenario.Pd)
-    sol = solve_quasistatic(b, Fr=scenario.Fr, Fa=scenario.Fa, omega=scenario.omega_at(0.0), control=scenario.control,
+    sol = solve_quasistatic(b, Fr=scenario.Fr, Fa=scenario.Fa, omega=scenario.omega_at(0.0),
+                            omega_outer=scenario.omega_outer_at(0.0), control=scenario.control,
                             traction=dynamic_traction_model(scenario), lubricant=lubricant, ring_growth=scenario.ring_growth,
                             temperatures=scenario.temperatures, fixed={"tilt_x": 0.0, "tilt_y": 0.0},
                             hertz_method=scenario.hertz, n_strips=scenario.n_strips, n_across=scenario.n_across,
