@@ -546,9 +546,8 @@ OUTER_RING_ENGINES = ("reference",)
 OUTER_RING_REFUSALS = {
     "exudyn": "its outer ring is the ground of the Exudyn scene (rotate the outer-ring body of your own Exudyn "
               "model with CreateBallBearing instead)",
-    "reduced": "its linearly implicit step does not close the energy balance with the outer ring turning (the "
-               "drive power is off by an amount proportional to the step: 2.5 % at dt = 2e-5 s on the 6208 at "
-               "3000 N, omega_outer = 500 rad/s)",
+    "reduced": "its linearly implicit step does not yet close the energy balance with the outer ring turning (a "
+               "drive-power error proportional to the step)",
 }
 
 
