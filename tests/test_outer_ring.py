@@ -1,4 +1,4 @@
-"""Outer-ring rotation in the dynamic engines (Scenario.omega_outer, issue 34): the reference engine spins the outer
+"""Outer-ring rotation in the dynamic engines (Scenario.omega_outer): the reference engine spins the outer
 ring at the protocol's outer speed; the balls then orbit at the kinematic cage speed of a turning outer ring, the
 drive power is the outer ring's, the energy balance closes, the quasi-static solver agrees; the Exudyn and reduced
 engines refuse it by name."""
@@ -10,6 +10,7 @@ import pytest
 import exudyn_bearing as eb
 from exudyn_bearing import InputError
 from exudyn_bearing.cli import main
+from exudyn_bearing.outputs import signals
 from exudyn_bearing.physics import kinematics
 
 # the settings of tests/test_reference.py's steady500: within the normal-contact limit, 40 ms at 500 rad/s
@@ -37,6 +38,11 @@ def test_outer_ring_alone_orbits_at_the_kinematic_cage_speed(runs):
     assert s["kinematic_cage_speed"] == pytest.approx(expected, rel=1e-3)
     assert s["ball_spin"] == pytest.approx(float(kinematics.ball_spin_absolute(0.0, W, b.ball_radius, b.pitch_radius)),
                                            rel=5e-3)
+    # the defect frequencies of the run: the cage's (FTF) and the balls' passing over the turning outer race
+    # (BPFO = Z |f_c - f_o|, below the fixed-frame passing rate Z f_c)
+    f = signals.run_defect_frequencies(runs["outer"])
+    assert f["ftf"] == pytest.approx(expected / (2.0 * np.pi), rel=1e-3)
+    assert f["bpfo"] == pytest.approx(b.n_balls * (W - expected) / (2.0 * np.pi), rel=1e-3)
 
 
 def test_outer_ring_rotation_turns_the_cage_faster_in_its_direction(runs):

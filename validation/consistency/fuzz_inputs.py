@@ -264,7 +264,7 @@ CASES = [
     Case("s34_quasistatic_light_balls_flagged", "flag", "inertia",
          cli=_qs("7208", "--Fr", "3000", "--Fa", "3000", "--omega", "500", "--control", "equilibrium", "--cage",
                  "rigid")),
-    # outer-ring rotation of the dynamic engines (issue 34): a non-finite speed, the engines that refuse it
+    # outer-ring rotation of the dynamic engines (Scenario.omega_outer): a non-finite speed, an engine that refuses it
     Case("o34_scenario_nan_omega_outer", "refuse", "omega_outer",
          api="report(lambda: eb.Scenario(Fr=3000.0, omega=0.0, omega_outer=float('nan')))"),
     Case("o34_simulate_inf_omega_outer", "refuse", "omega-outer",

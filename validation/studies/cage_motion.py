@@ -90,14 +90,17 @@ FASTER_FROM, FASTER_UPTO = 1.05, 4.0
 
 def faster_whirls(rec, cage_speed):
     """The strongest line of the cage centre's whirl faster than the ball set, FASTER_FROM to FASTER_UPTO times the
-    cage speed, in the cage's direction of rotation ("+") and against it ("-"): (frequency over the cage speed,
-    amplitude over the strongest line of the spectrum) each (issue 34 (c): unequal pocket spacing adds a faster
-    whirl, in the cage's direction for inner-ring rotation and against it for outer-ring rotation)."""
+    cage speed and more than 3 bins from the strongest line, in the cage's direction of rotation ("+") and
+    against it ("-"): (frequency over the cage speed, amplitude over the strongest line of the spectrum) each.
+    Nogi et al. 2018 (from its abstract): unequal pocket spacing adds a faster whirl, in the cage's direction
+    for inner-ring rotation and against it for outer-ring rotation."""
     f, a = whirl_spectrum(rec, cage_speed)
     r = f / abs(cage_speed)
+    # a line within 3 bins of the strongest is its window's skirt, not a whirl of its own (as in whirl_lines)
+    apart = np.abs(f - f[int(np.argmax(a))]) > 3.0 * abs(f[1] - f[0])
     out = {}
     for sign, key in ((1.0, "+"), (-1.0, "-")):
-        band = (sign * r > FASTER_FROM) & (sign * r <= FASTER_UPTO)
+        band = (sign * r > FASTER_FROM) & (sign * r <= FASTER_UPTO) & apart
         i = int(np.argmax(np.where(band, a, -1.0)))
         out[key] = (float(r[i]), float(a[i] / a.max()))
     return out
