@@ -133,13 +133,15 @@ def check_record_pressures(record) -> None:
     """The elastic-contact limit on the pressures a run sampled
     (:func:`~exudyn_bearing.model.load_range.check_run_pressures`: an error
     for sustained excess, naming ``omega`` when the applied loads alone are
-    within the limit, a warning for a brief one)."""
+    within the limit, or ``omega_outer`` when the outer ring turns faster; a warning for a brief one)."""
     from .model.layout import D_PMAX
 
     diag = record.data.get("diag")
     if diag is None or len(diag) == 0:
         return
-    check_run_pressures(diag[:, :, :, D_PMAX], record.data["t"], "omega")
+    sc = record.scenario
+    faster = "omega_outer" if abs(sc.omega_outer) > abs(sc.omega) else "omega"  # the speed to reduce
+    check_run_pressures(diag[:, :, :, D_PMAX], record.data["t"], faster)
 
 
 def with_bearing_defaults(bearing: BallBearing, scenario: Scenario, lubricant=None):
