@@ -139,3 +139,27 @@ def test_simulate_cli_takes_the_outer_ring_speed(capsys):
     assert d["omega_outer"] == pytest.approx(-3000.0 * np.pi / 30.0, rel=1e-9)
     assert d["units"]["omega_outer"] == "rad/s"
     assert d["cage_speed"] < 0.0  # the cage follows the outer ring backwards
+
+
+def test_an_outer_race_spall_turns_with_the_outer_ring():
+    # the settings of test_defects.py::test_defect_impacts_where_the_kinematics_put_them (the 6205, 1000 N, 1797 rpm,
+    # 5 steps per 48 kHz sample) with the outer ring turning instead of the inner one: the spall turns with the
+    # ring (the protocol's spin angle), so the balls drop into it where psi - omega_o t = its position, and they
+    # meet it at BPFO = Z |f_c - f_o| (107.4 Hz), not at the fixed race's passing rate Z f_c (162.2 Hz)
+    from exudyn_bearing.data import Defect
+
+    b = eb.catalog["6205"]
+    w, fs = 1797.0 * np.pi / 30.0, 48000.0
+    sc = eb.Scenario(Fr=1000.0, omega=0.0, omega_outer=w, t_end=0.06, dt=1 / fs / 5, sample_dt=1 / fs / 5,
+                     tangential="implicit", defects=(Defect("outer", 0.3, 1e-3, 1.5e-3, 1e-4),))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # the cage loads chatter at this step (StepSizeWarning), not asserted
+        r = eb.simulate("6205", sc)
+    hit = r.contact("defect_drop", "outer") > 0.0
+    rel = (r.azimuth() - w * r.t[:, None] - 0.3 + np.pi) % (2.0 * np.pi) - np.pi
+    assert hit.sum() > 0 and np.all(np.abs(rel[hit]) <= 0.5e-3 / b.outer_race_radius + 1e-3)
+    d = r.contact("defect_drop", "outer") > 0.0
+    onsets = np.sort(np.concatenate([r.t[1:][d[1:, j] & ~d[:-1, j]] for j in range(b.n_balls)]))
+    f = kinematics.defect_frequencies(0.0, w, b.n_balls, b.ball_radius, b.pitch_radius, 0.0)
+    assert len(onsets) >= 4
+    assert np.median(np.diff(onsets)) == pytest.approx(1.0 / f["bpfo"], rel=0.01)
