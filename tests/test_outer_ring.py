@@ -163,3 +163,29 @@ def test_an_outer_race_spall_turns_with_the_outer_ring():
     f = kinematics.defect_frequencies(0.0, w, b.n_balls, b.ball_radius, b.pitch_radius, 0.0)
     assert len(onsets) >= 4
     assert np.median(np.diff(onsets)) == pytest.approx(1.0 / f["bpfo"], rel=0.01)
+
+
+@pytest.mark.filterwarnings("ignore::exudyn_bearing.StepSizeWarning")  # as the inner-ring protocol test
+@pytest.mark.filterwarnings("ignore::exudyn_bearing.SteadyStateWarning")  # the unloaded balls still catching up
+def test_outer_ring_start_up_and_full_stop_from_rest():
+    # test_reference.py::test_start_up_and_full_stop_from_rest with the outer ring turning: 0 -> 500 rad/s,
+    # hold, ramp to 0 under the same ramp factor (Scenario.omega_outer_at)
+    b = eb.catalog["6208"]
+    sc = eb.Scenario(Fr=3000.0, omega_outer=W, t_ramp_up=0.01, t_steady=0.01, t_ramp_down=0.01, t_end=0.032,
+                     initial="rest", sample_dt=1e-4, dt=4e-6, tangential="implicit")
+    assert [sc.omega_outer_at(t) for t in (0.005, 0.015, 0.025, 0.031)] == pytest.approx([0.5 * W, W, 0.5 * W, 0.0])
+    r = eb.simulate("6208", sc)
+    assert np.all(np.isfinite(r.data["wb"]))
+    spin = r.ball_spin_series()
+    # the loaded balls roll with the outer ring at the end of the steady phase: the kinematic absolute spin
+    k = np.argmin(np.abs(r.t - 0.02))
+    loaded = r.contact("load", "inner")[k] > 0
+    np.testing.assert_allclose(spin[k][loaded], float(kinematics.ball_spin_absolute(0.0, W, b.ball_radius,
+                                                                                    b.pitch_radius)), rtol=0.01)
+    # after the stop the balls held by the load (above 50 N: not a ball grazing the load zone's edge, which the
+    # stopped balls no longer carry through it) come to rest with the ring
+    held = r.contact("load", "inner")[-1] > 50.0
+    assert held.sum() >= 2
+    assert np.all(spin[-1][held] < 0.05 * spin[k].mean())
+    # the phases' outer-ring speed: the summary's mean over the steady phase's second half
+    assert r.summary(t_window=(0.015, 0.02))["omega_outer"] == pytest.approx(W, rel=1e-12)
