@@ -10,7 +10,7 @@ from .data import BallBearing, InputError, Lubricant, default_traction, load_bea
 from .model.load_range import check_load_range, check_run_pressures
 from .model.memory import check_sample_memory
 from .model.record import RunInterrupted
-from .model.scenario import Scenario
+from .model.scenario import Scenario, engine_speed_error
 from .outputs.results import Results
 from .solvers.element import BallBearingElement as _ElementBase
 from .solvers.element.element import element_scenario
@@ -77,6 +77,9 @@ def simulate(bearing, scenario: Scenario | None = None, engine: str = "reference
         raise InputError(f"engine: unknown engine {engine!r} (valid: {', '.join(ENGINES)})")
     bearing = load_bearing(bearing)
     scenario, lubricant = with_bearing_defaults(bearing, scenario, lubricant)
+    err = engine_speed_error(scenario, engine)  # an engine without the outer ring's spin says so by name
+    if err is not None:
+        raise err
     if engine == "reduced":  # what it does not model, before any work
         from .solvers.reduced.engine import reduced_support_error
 
@@ -92,7 +95,7 @@ def simulate(bearing, scenario: Scenario | None = None, engine: str = "reference
     from .solvers.quasistatic.solve import check_operating_fit
 
     check_operating_fit(bearing if scenario.Pd is None else bearing.with_clearance(scenario.Pd), scenario.omega,
-                        0.0, scenario.ring_growth)
+                        scenario.omega_outer, scenario.ring_growth)
     start = quasistatic_start(bearing, scenario, lubricant) if scenario.initial == "quasistatic" else None
     try:
         if engine == "reference":
@@ -130,13 +133,15 @@ def check_record_pressures(record) -> None:
     """The elastic-contact limit on the pressures a run sampled
     (:func:`~exudyn_bearing.model.load_range.check_run_pressures`: an error
     for sustained excess, naming ``omega`` when the applied loads alone are
-    within the limit, a warning for a brief one)."""
+    within the limit, or ``omega_outer`` when the outer ring turns faster; a warning for a brief one)."""
     from .model.layout import D_PMAX
 
     diag = record.data.get("diag")
     if diag is None or len(diag) == 0:
         return
-    check_run_pressures(diag[:, :, :, D_PMAX], record.data["t"], "omega")
+    sc = record.scenario
+    faster = "omega_outer" if abs(sc.omega_outer) > abs(sc.omega) else "omega"  # the speed to reduce
+    check_run_pressures(diag[:, :, :, D_PMAX], record.data["t"], faster)
 
 
 def with_bearing_defaults(bearing: BallBearing, scenario: Scenario, lubricant=None):
@@ -204,9 +209,10 @@ def quasistatic_start(bearing, scenario: Scenario, lubricant: Lubricant | None =
     scenario, lubricant = with_bearing_defaults(b, scenario, lubricant)
     if scenario.Pd is not None:
         b = b.with_clearance(scenario.Pd)
-    omega0 = scenario.omega_at(0.0)
-    cage, why = _quasistatic_start_cage(b, resolve_cage(scenario, b), omega0)
-    sol = solve_quasistatic(b, Fr=scenario.Fr, Fa=scenario.Fa, omega=omega0, control=scenario.control,
+    omega0, outer0 = scenario.omega_at(0.0), scenario.omega_outer_at(0.0)
+    cage, why = _quasistatic_start_cage(b, resolve_cage(scenario, b), omega0 - outer0)
+    sol = solve_quasistatic(b, Fr=scenario.Fr, Fa=scenario.Fa, omega=omega0, omega_outer=outer0,
+                            control=scenario.control,
                             traction=dynamic_traction_model(scenario), lubricant=lubricant, ring_growth=scenario.ring_growth,
                             temperatures=scenario.temperatures, fixed={"tilt_x": 0.0, "tilt_y": 0.0},
                             hertz_method=scenario.hertz, n_strips=scenario.n_strips, n_across=scenario.n_across,
@@ -217,9 +223,10 @@ def quasistatic_start(bearing, scenario: Scenario, lubricant: Lubricant | None =
     return start
 
 
-def _quasistatic_start_cage(bearing, scenario: Scenario, omega0: float):
+def _quasistatic_start_cage(bearing, scenario: Scenario, relative_speed: float):
     """(keyword arguments of the quasi-static solve, what they mean) for the cage of a quasi-static start:
-    the rigid cage of a scene with one where the quasi-static solver takes it, else none."""
+    the rigid cage of a scene with one where the quasi-static solver takes it, else none; ``relative_speed``
+    the rings' relative speed at t = 0 [rad/s]."""
     if scenario.cage != "rigid":
         return {}, f"cageless quasi-static solution (the scene's cage: {scenario.cage})"
     from .data.cages import estimated_cage
@@ -229,8 +236,8 @@ def _quasistatic_start_cage(bearing, scenario: Scenario, omega0: float):
         return {}, "cageless quasi-static solution (the pockets are unequally spaced, which it cannot represent)"
     if scenario.control == "min-energy":
         return {}, "cageless quasi-static solution (control='min-energy' chooses each ball's orbital speed)"
-    if omega0 == 0.0:
-        return {}, "cageless quasi-static solution (the rings at rest at t = 0: no cage speed to balance)"
+    if relative_speed == 0.0:
+        return {}, "cageless quasi-static solution (the rings turn together at t = 0: no cage speed to balance)"
     return {"cage": "rigid", "rigid_cage": rc}, "quasi-static solution with the rigid cage"
 
 

@@ -1,12 +1,12 @@
 """Step helpers shared by the dynamic engines' compiled loops (the reference engine's velocity Verlet and RK4,
-the reduced engine): the inner ring's pose and force in the reference scene, the copy of a state into the
+the reduced engine): the rings' poses and the inner ring's force in the reference scene, the copy of a state into the
 sample buffers, and the finiteness checks."""
 from __future__ import annotations
 
 import math
 
 from .._jit import kernel
-from .layout import P_AXIAL_FREE, P_FA, P_FR, P_NDEF, P_T_DOWN, P_T_STEADY, P_T_UP, P_W_MAX, R_ANGLE
+from .layout import P_AXIAL_FREE, P_FA, P_FR, P_NDEF, P_T_DOWN, P_T_STEADY, P_T_UP, P_W_MAX, P_W_OUTER, R_ANGLE
 from .motion import omega_profile, spin_angle
 
 __all__ = ["set_inner_ring", "inner_ring_force", "store_sample", "finite", "finite_ring"]
@@ -14,16 +14,23 @@ __all__ = ["set_inner_ring", "inner_ring_force", "store_sample", "finite", "fini
 
 @kernel(inline="always")
 def set_inner_ring(t, p, ring, rings, defect_path):
-    """The reference scene (both dynamic engines): the inner ring translates (state ``ring``: position,
-    velocity) and spins at the protocol speed; the outer ring stays fixed.
-    Its rotation matrix stays the identity; with defects in the scene its
-    spin angle (the protocol's integral) goes to ``R_ANGLE`` (compiled only
-    with a ``defect_path``, :func:`~exudyn_bearing.model.contact.forces`)."""
+    """The reference scene's rings at time t (both dynamic engines): the inner ring translates (state
+    ``ring``: position, velocity) and spins at the protocol speed omega(t); the outer ring stays in place
+    and spins about the bearing axis (z) at the protocol's outer speed (``P_W_OUTER`` times the same ramp
+    factor, 0 by default). The kernel takes either ring's surface velocity from its angular velocity
+    (``model.contact._surface_kinematics``, the outer contacts' slip, traction, spin and entrainment), its
+    centrifugal growth from its spin and the drive power from both rings' torques
+    (``model.contact._drive_power``). The rotation matrices stay the identity; with defects in the scene the
+    spin angles (the protocol's integrals) go to ``R_ANGLE`` (compiled only with a ``defect_path``,
+    :func:`~exudyn_bearing.model.contact.forces`). The name keeps the engines' call sites; the outer
+    ring's spin is set here, in one place for both engines."""
     for d in range(6):
         rings[0, d] = ring[d]
     rings[0, 17] = omega_profile(t, p[P_W_MAX], p[P_T_UP], p[P_T_STEADY], p[P_T_DOWN])
+    rings[1, 17] = omega_profile(t, p[P_W_OUTER], p[P_T_UP], p[P_T_STEADY], p[P_T_DOWN])
     if defect_path is not None and p[P_NDEF] > 0.0:
         rings[0, R_ANGLE] = spin_angle(t, p[P_W_MAX], p[P_T_UP], p[P_T_STEADY], p[P_T_DOWN])
+        rings[1, R_ANGLE] = spin_angle(t, p[P_W_OUTER], p[P_T_UP], p[P_T_STEADY], p[P_T_DOWN])
 
 
 @kernel(inline="always")

@@ -45,11 +45,12 @@ def initial_state(bearing: BallBearing, scenario, start: dict | None = None) -> 
         raise InputError("initial: the quasi-static start needs the quasi-static solution; exudyn_bearing.simulate "
                          "and CreateBallBearing compute it, the engines take it as start=")
     z = b.n_balls
-    w0 = s.omega_at(0.0)
-    # the inner groove as the run sees it at t = 0 (grown with the ring's speed), so that the start has
-    # no extra overlap to shed
-    sol = static_equilibrium(start_geometry(b, s), s.Fr, s.Fa, hertz_method=s.hertz)
-    rho_o, z_o = b.outer_groove_center
+    w0, w0_o = s.omega_at(0.0), s.omega_outer_at(0.0)
+    # the grooves as the run sees them at t = 0 (grown with the rings' speeds), so that the start has
+    # no extra overlap to shed; the balls placed in the grown outer groove
+    g = start_geometry(b, s)
+    sol = static_equilibrium(g, s.Fr, s.Fa, hertz_method=s.hertz)
+    rho_o, z_o = g.outer_groove_center
     a0 = b.free_contact_angle
     xb = np.zeros((z, 3))
     for j in range(z):
@@ -68,9 +69,9 @@ def initial_state(bearing: BallBearing, scenario, start: dict | None = None) -> 
     vc = np.zeros((z, 3))
     ring = np.zeros(6)
     ring[:3] = sol.displacement
-    if s.initial == "analytic" and w0 != 0.0:
-        wc = float(kinematics.cage_speed(w0, 0.0, b.ball_radius, b.pitch_radius, a0))
-        wr = float(kinematics.ball_spin_relative(w0, 0.0, b.ball_radius, b.pitch_radius, a0))
+    if s.initial == "analytic" and (w0 != 0.0 or w0_o != 0.0):
+        wc = float(kinematics.cage_speed(w0, w0_o, b.ball_radius, b.pitch_radius, a0))
+        wr = float(kinematics.ball_spin_relative(w0, w0_o, b.ball_radius, b.pitch_radius, a0))
         for j in range(z):
             vb[j] = (-wc * xb[j, 1], wc * xb[j, 0], 0.0)
             c, sn = math.cos(sol.psi[j]), math.sin(sol.psi[j])

@@ -96,6 +96,7 @@ P_W_MAX = _entry("omega", "rad/s", "inner-ring speed of the steady phase")
 P_T_UP = _entry("t_ramp_up", "s", "duration of the start-up ramp")
 P_T_STEADY = _entry("t_steady", "s", "duration of the steady phase (1e300: never ends)")
 P_T_DOWN = _entry("t_ramp_down", "s", "duration of the slow-down ramp")
+P_W_OUTER = _entry("omega_outer", "rad/s", "outer-ring speed of the steady phase (same protocol as omega)")
 # -- secondary contacts ----------------------------------------------------
 P_K_BZ = _entry("k_ball_cage", "N/m^1.5", "Hertz constant of a ball / cage-ball contact")
 P_K_BB = _entry("k_ball_ball", "N/m^1.5", "Hertz constant of a ball / ball contact (no cage)")
@@ -222,7 +223,7 @@ GUIDE_BALL, GUIDE_INNER, GUIDE_OUTER = 0, 1, 2
 #: z, the third column), angular velocity (3) [rad/s], and the angle [rad]
 #: the ring has turned about its axis beyond its rotation matrix: the
 #: integrated prescribed spin of a ring whose matrix does not turn (the
-#: reference engine's inner ring, a point-mass ring of the Exudyn element);
+#: reference engine's rings, a point-mass ring of the Exudyn element);
 #: 0 for a ring whose matrix carries its rotation. Ring-frame azimuths (of
 #: race defects) are measured in the matrix's frame minus this angle; only
 #: the defect code reads it.

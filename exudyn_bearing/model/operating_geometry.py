@@ -127,12 +127,13 @@ def operating_geometry(bearing: BallBearing, omega_inner=0.0, omega_outer=0.0, r
 
 def start_geometry(bearing: BallBearing, scenario) -> BallBearing:
     """The bearing as a dynamic run sees it at t = 0: with ``scenario.ring_growth``
-    the inner raceway grown with the ring's start speed (the engines' growth
-    coefficient times omega^2, :func:`operating_geometry`), so that the analytic
+    the raceways grown with the rings' start speeds (the engines' growth
+    coefficients times omega^2, :func:`operating_geometry`: the inner raceway
+    with ``omega``, the outer one with ``omega_outer``), so that the analytic
     start and the a-priori stable step use the loads the run starts with."""
-    w0 = scenario.omega_at(0.0)
-    if not scenario.ring_growth or w0 == 0.0:
+    w0, w0_o = scenario.omega_at(0.0), scenario.omega_outer_at(0.0)
+    if not scenario.ring_growth or (w0 == 0.0 and w0_o == 0.0):
         return bearing
-    u = operating_geometry(bearing, omega_inner=w0).inner_ring_growth
-    return bearing.replace(inner_race_radius=bearing.inner_race_radius + u)
-
+    geom = operating_geometry(bearing, omega_inner=w0, omega_outer=w0_o)
+    return bearing.replace(inner_race_radius=bearing.inner_race_radius + geom.inner_ring_growth,
+                           outer_race_radius=bearing.outer_race_radius + geom.outer_ring_growth)

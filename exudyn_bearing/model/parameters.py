@@ -69,6 +69,7 @@ def scene_parameters(bearing: BallBearing, scenario: Scenario, lubricant: Lubric
     p[L.P_FR] = s.Fr
     p[L.P_FA] = s.Fa
     p[L.P_W_MAX] = s.omega
+    p[L.P_W_OUTER] = s.omega_outer
     p[L.P_T_UP] = s.t_ramp_up
     p[L.P_T_STEADY] = s.t_steady if math.isfinite(s.t_steady) else 1e300
     p[L.P_T_DOWN] = s.t_ramp_down

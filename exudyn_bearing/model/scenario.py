@@ -27,7 +27,8 @@ from .motion import omega_profile
 
 __all__ = ["Scenario", "FRICTION_MODELS", "INTEGRATORS", "INTEGRATOR_SOLVERS", "MULTI_EVALUATION_SOLVERS",
            "TRACTION_LEVELS", "INITIAL_STATES", "CONTROLS", "history_friction_error", "ellipse_rolling_floor",
-           "rolling_speed_floor", "DEFAULT_REGULARIZING_SPEED"]
+           "rolling_speed_floor", "DEFAULT_REGULARIZING_SPEED", "OUTER_RING_ENGINES", "OUTER_RING_REFUSALS",
+           "engine_speed_error"]
 
 #: Tangential force models: Cundall-Strack spring with Coulomb cap (contact
 #: history), regularised Coulomb on the slip velocity (history-free), none.
@@ -113,8 +114,17 @@ class Scenario:
         Radial load on the inner ring along +x and axial load along +z [N]
         (default 0, as in every entry point: docs/defaults.md).
     omega : float
-        Inner-ring speed [rad/s] of the steady phase (outer ring fixed;
-        default 0: a run at rest; the DEM papers' case is Fr=3000, omega=500).
+        Inner-ring speed [rad/s] of the steady phase (default 0: a run at
+        rest; the DEM papers' case is Fr=3000, omega=500).
+    omega_outer : float
+        Outer-ring speed [rad/s] of the steady phase about the bearing axis
+        (default 0: the outer ring fixed), under the same protocol as
+        ``omega`` (the same ramp factor); positive in the sense of ``omega``.
+        The outer ring turns in place (it does not translate); its surface
+        speed enters the outer contacts (slip, traction, spin, film
+        entrainment) and its torque the drive power (docs/theory/dynamics.md).
+        The reference engine takes it; the Exudyn and reduced engines refuse a
+        nonzero value by name (:func:`engine_speed_error`).
     t_end : float
         Simulated time [s].
     t_ramp_up, t_steady, t_ramp_down : float
@@ -286,6 +296,7 @@ class Scenario:
     Fr: float = 0.0
     Fa: float = 0.0
     omega: float = 0.0
+    omega_outer: float = 0.0
     t_end: float = 0.05
     t_ramp_up: float = 0.0
     t_steady: float = math.inf
@@ -329,7 +340,7 @@ class Scenario:
 
     def __post_init__(self):
         # numbers as plain floats (numpy scalars are numbers; strings and booleans are not)
-        for name in ("Fr", "Fa", "omega", "t_end", "t_ramp_up", "t_ramp_down", "mu_dry",
+        for name in ("Fr", "Fa", "omega", "omega_outer", "t_end", "t_ramp_up", "t_ramp_down", "mu_dry",
                      "regularizing_speed", "guide_clearance", "dt", "sample_dt", "tangential_stiffness_ratio"):
             v = check_number(name, getattr(self, name))
             if not math.isfinite(v):
@@ -507,6 +518,12 @@ class Scenario:
         kernels' :func:`~exudyn_bearing.model.motion.omega_profile`)."""
         return float(omega_profile(float(t), *self._profile()))
 
+    def omega_outer_at(self, t):
+        """Prescribed outer-ring speed [rad/s] at time t: ``omega_outer`` times the protocol's ramp factor
+        (:func:`~exudyn_bearing.model.motion.omega_profile` of ``omega_outer``, as the kernels' outer ring)."""
+        _w, up, steady, down = self._profile()
+        return float(omega_profile(float(t), float(self.omega_outer), up, steady, down))
+
     def speed_function(self):
         """omega(t) [rad/s] of the protocol as a closure over its numbers: the values of
         :meth:`omega_at`, without its attribute look-ups and conversions at every call (about half
@@ -544,6 +561,30 @@ class Scenario:
         return cls(Fr=Fr, omega=1.0, **kw)
 
 
+#: Dynamic engines that spin the outer ring at ``Scenario.omega_outer`` (the ring poses of
+#: :func:`~exudyn_bearing.model.engine_steps.set_inner_ring`).
+OUTER_RING_ENGINES = ("reference",)
+#: Why an engine refuses a turning outer ring (``omega_outer`` != 0).
+OUTER_RING_REFUSALS = {
+    "exudyn": "its outer ring is the ground of the Exudyn scene (rotate the outer-ring body of your own Exudyn "
+              "model with CreateBallBearing instead)",
+    "reduced": "its linearly implicit step does not yet close the energy balance with the outer ring turning (a "
+               "drive-power error proportional to the step)",
+}
+
+
+def engine_speed_error(scenario: Scenario, engine: str) -> InputError | None:
+    """The InputError naming ``omega_outer`` when ``engine`` does not spin the outer ring and the scenario
+    asks for it (nonzero ``omega_outer``), saying why and which engine takes it; else None. Never ignored
+    silently."""
+    if scenario.omega_outer == 0.0 or engine in OUTER_RING_ENGINES:
+        return None
+    why = OUTER_RING_REFUSALS.get(engine, "it holds the outer ring fixed")
+    return InputError(f"omega_outer: the {engine} engine cannot take omega_outer = {scenario.omega_outer:g} rad/s: "
+                      f"{why}; the {' and '.join(OUTER_RING_ENGINES)} engine takes it (engine='reference', "
+                      "simulate --engine reference)")
+
+
 #: Least rolling speed of the ellipse traction law as a fraction of the kinematic inner rolling speed at the
 #: scenario's speed: a steady run, whose loaded contacts roll at about that speed, keeps its slide-to-roll ratios.
 ELLIPSE_ROLLING_FLOOR_FRACTION = 0.5
@@ -566,6 +607,6 @@ def rolling_speed_floor(bearing, omega, omega_outer=0.0, regularizing_speed=DEFA
 
 def ellipse_rolling_floor(bearing, scenario: Scenario) -> float:
     """:func:`rolling_speed_floor` of a scenario (kernel ``P_VREG``, ``model.contact._ellipse_traction``):
-    its ``regularizing_speed`` at most half the kinematic inner rolling speed at its ``omega`` (the outer
-    ring at rest)."""
-    return rolling_speed_floor(bearing, scenario.omega, 0.0, scenario.regularizing_speed)
+    its ``regularizing_speed`` at most half the kinematic inner rolling speed at its ``omega`` and
+    ``omega_outer``."""
+    return rolling_speed_floor(bearing, scenario.omega, scenario.omega_outer, scenario.regularizing_speed)

@@ -244,7 +244,8 @@ def stable_step(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant |
     b = bearing if scenario.Pd is None else bearing.with_clearance(scenario.Pd)
     lub = default_lubricant(b) if lubricant is None else lubricant
     mb = b.ball_mass
-    wc = float(kinematics.cage_speed(scenario.omega, 0.0, b.ball_radius, b.pitch_radius, b.free_contact_angle))
+    wc = float(kinematics.cage_speed(scenario.omega, scenario.omega_outer, b.ball_radius, b.pitch_radius,
+                                     b.free_contact_angle))
     q_cf = float(kinematics.centrifugal_force(mb, b.pitch_radius, wc))
     sol = _static_solution(b, scenario)
     q_static = 0.0 if sol is None else float(sol.q.max())
@@ -294,7 +295,8 @@ LAND_DESIGN_ECCENTRICITY = 0.9
 def land_film_step(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant, eccentricity: float) -> float:
     """Explicit stable step [s] of a land-guided rigid cage on its film at the eccentricity ratio eps: the
     cage mass m_c on the film's radial stiffness k = (mu R L^3 omega_c / c^3) 2 eps (1 + eps^2) / (1 - eps^2)^3
-    (the derivative of Ocvirk's radial force at the kinematic cage speed) and its squeeze damping
+    (the derivative of Ocvirk's radial force at the kinematic cage speed, plus the outer ring's speed for an
+    outer-land guided cage) and its squeeze damping
     C = (pi/2) (mu R L^3 / c^3) (1 + 2 eps^2) / (1 - eps^2)^(5/2) (docs/theory/cage.md#land-film), by
     :func:`explicit_step_factor` at zeta = C / (2 sqrt(k m_c)). inf for a ball-guided cage, and with
     ``cage_damping='implicit'``, which takes the land's force linearly implicit (stiffness and damping:
@@ -306,7 +308,11 @@ def land_film_step(bearing: BallBearing, scenario: Scenario, lubricant: Lubrican
         return math.inf
     b = bearing
     e = min(max(float(eccentricity), 1e-3), 1.0 - 1e-9)
-    wc = abs(float(kinematics.cage_speed(scenario.omega, 0.0, b.ball_radius, b.pitch_radius, b.free_contact_angle)))
+    wc = float(kinematics.cage_speed(scenario.omega, scenario.omega_outer, b.ball_radius, b.pitch_radius,
+                                     b.free_contact_angle))
+    if rc.guidance == "outer":  # the film's surfaces turn together: cage and a rotating outer ring (the kernel's)
+        wc += scenario.omega_outer
+    wc = abs(wc)
     sc = lubricant.viscosity * rc.guide_radius * rc.land_width ** 3 / rc.land_clearance ** 3
     k = sc * wc * 2.0 * e * (1.0 + e * e) / (1.0 - e * e) ** 3
     c = 0.5 * math.pi * sc * (1.0 + 2.0 * e * e) / (1.0 - e * e) ** 2.5
@@ -411,7 +417,7 @@ def ellipse_traction_damping(bearing: BallBearing, scenario: Scenario, lubricant
 
     b = bearing
     a0 = b.free_contact_angle
-    u_i, _u_o = kinematics.rolling_speeds(scenario.omega, 0.0, b.ball_radius, b.pitch_radius, a0)
+    u_i, _u_o = kinematics.rolling_speeds(scenario.omega, scenario.omega_outer, b.ball_radius, b.pitch_radius, a0)
     u = max(float(u_i), ellipse_rolling_floor(b, scenario))
     em = material_reduced_modulus(b.material)
     rx, ry = raceway_radii(b.ball_radius, b.inner_groove_radius, b.pitch_radius - b.ball_radius * math.cos(a0), a0,
@@ -536,7 +542,8 @@ def ring_contact_stiffness(bearing: BallBearing, scenario: Scenario, race: str =
         q = np.full(b.n_balls, 10.0)
     ki, ko, _kn = race_stiffness(b, b.free_contact_angle, scenario.hertz)
     if race == "outer":
-        wc = float(kinematics.cage_speed(scenario.omega, 0.0, b.ball_radius, b.pitch_radius, b.free_contact_angle))
+        wc = float(kinematics.cage_speed(scenario.omega, scenario.omega_outer, b.ball_radius, b.pitch_radius,
+                                         b.free_contact_angle))
         q = q + float(kinematics.centrifugal_force(b.ball_mass, b.pitch_radius, wc))
     return float(np.sum(hertz.tangent_stiffness(ki if race == "inner" else ko, q)))
 

@@ -38,10 +38,10 @@ def spin_axis_angles(data) -> np.ndarray:
     return np.arctan2(-sigma * w_r, sigma * w_z)
 
 
-def contact_summary(data, window: slice, omega: float, bearing) -> dict:
+def contact_summary(data, window: slice, omega: float, bearing, omega_outer: float = 0.0) -> dict:
     """Contact kinematics over the samples ``window`` of a run's arrays (keys
-    and units in :data:`CONTACT_SUMMARY_UNITS`); ``omega`` the inner-ring
-    speed [rad/s] for the kinematic references. Unloaded contacts are left
+    and units in :data:`CONTACT_SUMMARY_UNITS`); ``omega``, ``omega_outer`` the inner- and outer-ring
+    speeds [rad/s] for the kinematic references (:mod:`exudyn_bearing.physics.kinematics`). Unloaded contacts are left
     out of the means; a quantity with no loaded contact is None."""
     diag = data["diag"][window]
     loaded = diag[..., D_LOAD] > 0.0
@@ -64,8 +64,8 @@ def contact_summary(data, window: slice, omega: float, bearing) -> dict:
     out["beta"] = float(np.degrees(np.mean(beta))) if beta.size else None
     angles = [out[k] for k in ("alpha_inner", "alpha_outer") if out[k] is not None]
     alpha = np.radians(np.mean(angles)) if angles else bearing.free_contact_angle
-    out["kinematic_cage_speed"] = float(kinematics.cage_speed(omega, 0.0, bearing.ball_radius, bearing.pitch_radius,
+    out["kinematic_cage_speed"] = float(kinematics.cage_speed(omega, omega_outer, bearing.ball_radius, bearing.pitch_radius,
                                                               alpha))
-    out["kinematic_ball_spin"] = float(kinematics.ball_spin_absolute(omega, 0.0, bearing.ball_radius,
+    out["kinematic_ball_spin"] = float(kinematics.ball_spin_absolute(omega, omega_outer, bearing.ball_radius,
                                                                      bearing.pitch_radius, alpha))
     return out

@@ -162,10 +162,10 @@ def plot_run(run, png) -> Path:
     a.plot(t, omega, label="inner ring omega")
     a.plot(t, spin, label="ball |omega| (mean)")
     a.plot(t, cage, label="cage speed")
-    if s.omega > 0:
+    if s.omega > 0 or s.omega_outer != 0:
         from ..physics import kinematics
 
-        a.axhline(float(kinematics.ball_spin_absolute(s.omega, 0.0, b.ball_radius, b.pitch_radius,
+        a.axhline(float(kinematics.ball_spin_absolute(s.omega, s.omega_outer, b.ball_radius, b.pitch_radius,
                                                       b.free_contact_angle)),
                   color="k", ls=":", lw=0.8, label="kinematic ball spin")
     a.set_xlabel("t [s]")
@@ -229,7 +229,8 @@ def plot_speeds(run, png, ball=0) -> Path:
     spin = run.ball_spin_series()
     omega = run.global_series("omega")
     cage = run.cage_speed_series()
-    w_kin = float(kinematics.ball_spin_absolute(s.omega, 0.0, b.ball_radius, b.pitch_radius, b.free_contact_angle))
+    w_kin = float(kinematics.ball_spin_absolute(s.omega, s.omega_outer, b.ball_radius, b.pitch_radius,
+                                                b.free_contact_angle))
     fig, ax = plt.subplots(figsize=(7, 4.2))
     ax.plot(t, omega, label="shaft (inner ring)")
     ax.plot(t, spin[:, ball], label=f"ball {ball} |omega|")

@@ -132,7 +132,7 @@ POINT_STEP_DEPENDENT = ("friction_torque", "friction_power", "dissipation", "dis
 
 #: Unit of every scalar summary entry (speeds are angular speeds in rad/s).
 SUMMARY_UNITS = {
-    "Fr": "N", "Fa": "N", "Pd": "m", "omega": "rad/s", "q_max_inner": "N", "q_max_outer": "N",
+    "Fr": "N", "Fa": "N", "Pd": "m", "omega": "rad/s", "omega_outer": "rad/s", "q_max_inner": "N", "q_max_outer": "N",
     "q_max_inner_mean": "N", "q_max_outer_mean": "N", "cage_speed": "rad/s", "ball_spin": "rad/s",
     "lambda_outer_psi0": "-", "lambda_inner_psi0": "-", "regime_fraction": "-", "srr_mean": "-",
     "ring_displacement": "m", "friction_torque": GLOBAL_UNITS["ring_torque"],
@@ -316,6 +316,19 @@ class Results:
         cage = self.scenario.cage == "torus" and self.bearing.has_cage
         return self.orbital_speed("cage" if cage else "balls").mean(axis=1)
 
+    def omega_outer_series(self) -> np.ndarray:
+        """Outer-ring speed (n,) [rad/s] at the sample times: the scenario's prescribed ``omega_outer`` under
+        its protocol (:meth:`~exudyn_bearing.model.scenario.Scenario.omega_outer_at`, the engines' outer ring;
+        zeros for a fixed outer ring)."""
+        if self.scenario.omega_outer == 0.0:
+            return np.zeros(len(self.t))
+        return np.array([self.scenario.omega_outer_at(t) for t in self.t], float)
+
+    def relative_speed_series(self) -> np.ndarray:
+        """Inner-ring speed relative to the outer ring, omega - omega_outer (n,) [rad/s]: the speed that
+        rolls the balls and scales the losses (the recorded inner-ring speed minus :meth:`omega_outer_series`)."""
+        return self.global_series("omega") - self.omega_outer_series()
+
     def ball_spin_series(self) -> np.ndarray:
         """|omega| of every ball (n, Z) [rad/s]."""
         return np.linalg.norm(self.data["wb"], axis=-1)
@@ -387,12 +400,13 @@ class Results:
         src["kinetic_energy_change"] = ("kinetic_energy (engine field)" if self.has_global("kinetic_energy") else
                                         "from the sampled ball and cage-ball velocities")
         out = energy_balance(dur, drive, loads, diss, float(ke[i0]), float(ke[i1]))
-        floor = energy_floor(self._loss_floor(), np.mean(self.global_series("omega")[w]))
+        floor = energy_floor(self._loss_floor(), np.mean(self.relative_speed_series()[w]))
         if out["energy_residual"] is None:
             src["energy_residual"] = "no drive power or a window of one sample: no residual"
         elif abs(out["drive_power"]) < floor:
             src["energy_residual"] = (f"drive power below the loss floor {floor:.3g} W (LOSS_FLOOR_MU (|Fr| + |Fa|) r_p "
-                                      f"max(omega, 1 rad/s)): the residual compares noise and means little")
+                                      f"max(|omega - omega_outer|, 1 rad/s)): the residual compares noise and "
+                                      "means little")
         else:
             src["energy_residual"] = "(drive_power - dissipation - kinetic_energy_change / window length) / drive_power"
         out["energy_source"] = src
@@ -420,7 +434,7 @@ class Results:
         if self.has_global("dissipated_work") and dur > 0.0:
             g = self.global_series("dissipated_work")
             recorded = float(g[w.stop - 1] - g[w.start]) / dur
-        floor = energy_floor(self._loss_floor(), np.mean(self.global_series("omega")[w]))
+        floor = energy_floor(self._loss_floor(), np.mean(self.relative_speed_series()[w]))
         check = energy_check(energy["drive_power"], comp, energy["kinetic_energy_change"], dur, recorded, floor)
         return {"power_loss": comp, "power_loss_total": check["power_loss_total"],
                 "not_modelled": (self.losses_lists()[1] + list(self.cage_not_modelled())
@@ -479,7 +493,7 @@ class Results:
             load = diag[:, :, race, DIAG_FIELDS.index("load")]
             if np.any(load > 0.0):
                 q[f"q_max_{tag}"] = (load.max(axis=1), "relative", abs(float(np.mean(load.max(axis=1)))))
-        omega_ref = abs(self.scenario.omega)
+        omega_ref = max(abs(self.scenario.omega), abs(self.scenario.omega_outer))
         for name, x in (("cage_speed", self.cage_speed_series()[w]), ("ball_spin", self.ball_spin_series()[w].mean(1))):
             q[name] = (x, "relative", max(abs(float(np.mean(x))), SPEED_FLOOR * omega_ref, 1e-300))
         for race, tag in ((0, "inner"), (1, "outer")):
@@ -493,7 +507,7 @@ class Results:
             for k, axis in enumerate("xyz"):
                 q[f"ring_displacement.{axis}"] = (ring[:, k], "relative", norm)
         torque_floor = self._loss_floor()
-        omega = self.global_series("omega")[w]
+        omega = self.relative_speed_series()[w]
         for name, x, floor in (("friction_torque", -self.global_series("ring_torque")[w], torque_floor),
                                ("dissipation", self.dissipation_series()[w],
                                 torque_floor * abs(float(np.mean(omega))))):
@@ -627,6 +641,7 @@ class Results:
         frac = {name: float(np.sum(reg == code)) / n_loaded for code, name in enumerate(REGIME_NAMES)}
         srr = np.stack([self.contact("srr", "inner")[w], self.contact("srr", "outer")[w]])
         omega = float(np.mean(self.global_series("omega")[w]))
+        omega_outer = float(np.mean(self.omega_outer_series()[w]))
         level = self.scenario.traction_level
 
         def nanmean(x):
@@ -644,6 +659,7 @@ class Results:
             "window": window,
             "steady": steady,
             "omega": omega,
+            "omega_outer": omega_outer,
             "q_max_inner": q_i,
             "q_max_outer": q_o,
             "q_max_method": {"inner": method_i, "outer": method_o},
@@ -678,7 +694,7 @@ class Results:
             "losses_not_modelled": self.losses_lists()[1],
         }
         # the whole loss: the modelled components plus the quasi-static estimate of the others (.whole_loss)
-        out.update(whole_loss(self, out["power_loss"], out["power_loss_total"], omega))
+        out.update(whole_loss(self, out["power_loss"], out["power_loss_total"], omega, omega_outer))
         converged = self.friction_outputs_converged()
         out["friction_outputs_converged"] = converged
         out["not_converged"] = [] if converged else list(POINT_STEP_DEPENDENT)
@@ -687,7 +703,7 @@ class Results:
             if self.scenario.rolling_resistance:
                 out["note"] += ("; the rolling resistance (hysteresis and EHL rolling) acts as a moment pair "
                                 "(Scenario.rolling_resistance)")
-        out.update(contact_summary(self.data, w, omega, b))
+        out.update(contact_summary(self.data, w, omega, b, omega_outer))
         if self.scenario.cage == "rigid":
             out.update(rigid_cage_summary(self.data, w, self.model_parameters(), out["cage_speed"],
                                           out.get("kinematic_cage_speed")))

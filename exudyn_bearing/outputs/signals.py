@@ -331,16 +331,17 @@ def run_defect_frequencies(results, fraction=0.5) -> dict:
     """Defect frequencies [Hz] of a run (keys ``ftf``, ``bpfo``, ``bpfi``,
     ``bsf``, ``2bsf``, ``shaft``): Harris & Kotzalas' kinematics
     (:func:`exudyn_bearing.physics.kinematics.defect_frequencies`) at the
-    run's mean inner-ring speed and its operating contact angle, the mean
+    run's mean inner- and outer-ring speeds and its operating contact angle, the mean
     contact angle of the loaded outer contacts over the last ``fraction``
     of the samples (the free contact angle if none is loaded)."""
     b = results.bearing
     w = results.window(fraction)
     omega = float(np.mean(results.global_series("omega")[w]))
+    omega_o = float(np.mean(results.omega_outer_series()[w]))
     load = results.contact("load", "outer")[w]
     angle = results.contact("contact_angle", "outer")[w]
     alpha = float(np.mean(angle[load > 0.0])) if np.any(load > 0.0) else b.free_contact_angle
-    f = kinematics.defect_frequencies(omega, 0.0, b.n_balls, b.ball_radius, b.pitch_radius, alpha)
+    f = kinematics.defect_frequencies(omega, omega_o, b.n_balls, b.ball_radius, b.pitch_radius, alpha)
     f["2bsf"] = 2.0 * f["bsf"]
     f["shaft"] = omega / (2.0 * math.pi)
     f["contact_angle"] = alpha

@@ -35,27 +35,27 @@ WHOLE_LOSS_DESCRIPTIONS = {
                             "power_losses at the scenario's loads and the window's mean speed); traction_rolling "
                             "at the point level: the quasi-static traction dissipation (sliding, spin, curvature "
                             "over the ellipse) minus the run's contact traction, at least 0",
-    "friction_torque_whole": "power_loss_whole / |omega|: the torque the driven ring needs for the whole loss, "
-                             "the other ring at rest (as the quasi-static friction_torque_total; the run's "
+    "friction_torque_whole": "power_loss_whole / |omega - omega_outer|: the torque the driven ring needs for the "
+                             "whole loss (as the quasi-static friction_torque_total; the run's "
                              "friction_torque is the ring torque of the modelled losses only)",
-    "friction_torque_estimated": "sum of power_loss_estimated / |omega|",
+    "friction_torque_estimated": "sum of power_loss_estimated / |omega - omega_outer|",
 }
 #: Loss sources neither the dynamic engines nor the quasi-static model represent.
 NOT_ESTIMATED = ("seal friction (open bearing)", "cage windage", "churning in an oil bath (no bath level given)")
 
 
-def estimate_losses(bearing, lubricant, Fr, Fa, omega, *, traction=None, ring_growth=True, temperatures=None,
+def estimate_losses(bearing, lubricant, Fr, Fa, omega, *, omega_outer=0.0, traction=None, ring_growth=True, temperatures=None,
                     hertz="exact", n_strips=None, n_across=None, traction_regularizing_srr=None,
                     hysteresis_loss_factor=None, oil_volume_fraction=0.0, cage_guidance=None) -> dict:
     """``power_losses`` of the quasi-static solution of ``bearing`` under (Fr, Fa) [N] at ``omega``
-    [rad/s], tilt held (the dynamic engines' inner ring translates only); None keywords take the
+    (and the outer ring at ``omega_outer``) [rad/s], tilt held (the dynamic engines' inner ring translates only); None keywords take the
     solvers' defaults."""
     from ..solvers.quasistatic import solve_quasistatic
     from ..solvers.quasistatic.losses import power_losses
 
     kw = {k: v for k, v in (("n_strips", n_strips), ("n_across", n_across),
                             ("traction_regularizing_srr", traction_regularizing_srr)) if v is not None}
-    sol = solve_quasistatic(bearing, Fr=Fr, Fa=Fa, omega=omega, traction=traction, lubricant=lubricant,
+    sol = solve_quasistatic(bearing, Fr=Fr, Fa=Fa, omega=omega, omega_outer=omega_outer, traction=traction, lubricant=lubricant,
                             ring_growth=ring_growth, temperatures=temperatures, fixed={"tilt_x": 0.0, "tilt_y": 0.0},
                             hertz_method=hertz, stiffness=False, resolution_check=False,
                             # an estimate of the parts a dynamic run does not model, beside that run: the balls'
@@ -66,17 +66,19 @@ def estimate_losses(bearing, lubricant, Fr, Fa, omega, *, traction=None, ring_gr
                         cage_guidance=cage_guidance, **lkw)
 
 
-def quasistatic_estimate(results, omega: float) -> dict:
-    """:func:`estimate_losses` at the run's operating point (the scenario's Fr, Fa, the speed ``omega``,
+def quasistatic_estimate(results, omega: float, omega_outer: float = 0.0) -> dict:
+    """:func:`estimate_losses` at the run's operating point (the scenario's Fr, Fa, the speeds ``omega``,
+    ``omega_outer``,
     its lubricant, traction model, growth, temperatures and loss options), cached on ``results`` by
     operating point."""
     sc = results.scenario
-    key = (float(sc.Fr), float(sc.Fa), round(float(omega), 9))
+    key = (float(sc.Fr), float(sc.Fa), round(float(omega), 9), round(float(omega_outer), 9))
     cache = results.__dict__.setdefault("_quasistatic_estimates", {})
     if key not in cache:
         b = results.bearing if sc.Pd is None else results.bearing.with_clearance(sc.Pd)
         guidance = "none" if (sc.cage in (False, "none") or not b.has_cage) else None
-        cache[key] = estimate_losses(b, results.lubricant, sc.Fr, sc.Fa, omega, traction=sc.traction,
+        cache[key] = estimate_losses(b, results.lubricant, sc.Fr, sc.Fa, omega, omega_outer=omega_outer,
+                                     traction=sc.traction,
                                      ring_growth=sc.ring_growth, temperatures=sc.temperatures, hertz=sc.hertz,
                                      n_strips=sc.n_strips, n_across=sc.n_across,
                                      traction_regularizing_srr=sc.traction_regularizing_srr,
@@ -107,20 +109,23 @@ def _estimated_components(sc, power_loss: dict, qs: dict) -> dict:
     return out
 
 
-def whole_loss(results, power_loss: dict, power_loss_total, omega: float) -> dict:
+def whole_loss(results, power_loss: dict, power_loss_total, omega: float, omega_outer: float = 0.0) -> dict:
     """The keys :data:`WHOLE_LOSS_KEYS` of a dynamic summary: the run's modelled ``power_loss``
     (its total ``power_loss_total``) plus the quasi-static estimate
-    (:func:`quasistatic_estimate` at the window's mean speed ``omega``) of each loss it leaves out.
+    (:func:`quasistatic_estimate` at the window's mean speeds ``omega``, ``omega_outer``) of each loss it
+    leaves out; the torques divide by the relative speed |omega - omega_outer|.
     An operating point the quasi-static solver refuses gives None for the whole loss and the
     reason in the basis."""
     sc = results.scenario
     modelled = [k for k, v in power_loss.items() if v is not None]
     point = {"Fr": float(sc.Fr), "Fa": float(sc.Fa), "omega": float(omega)}
+    if omega_outer != 0.0:
+        point["omega_outer"] = float(omega_outer)
     basis = {"modelled": modelled, "estimated": {}, "not_estimated": list(NOT_ESTIMATED), "operating_point": point,
              "source": "solvers.quasistatic.losses.power_losses of solve_quasistatic at the scenario's Fr, Fa and "
                        "the window's mean omega (tilt held, the run's lubricant and traction model)"}
     try:
-        qs = quasistatic_estimate(results, omega)
+        qs = quasistatic_estimate(results, omega, omega_outer)
     except (InputError, ValueError, ArithmeticError) as err:
         basis["error"] = f"no quasi-static estimate at this operating point: {err}"
         return {"power_loss_whole": None, "power_loss_whole_basis": basis, "power_loss_estimated": None,
@@ -130,7 +135,7 @@ def whole_loss(results, power_loss: dict, power_loss_total, omega: float) -> dic
     basis["estimated"] = {k: text for k, (_, text) in est.items()}
     s = float(sum(estimated.values()))
     whole = None if power_loss_total is None else float(power_loss_total) + s
-    dw = abs(omega)
+    dw = abs(omega - omega_outer)
     return {"power_loss_whole": whole, "power_loss_whole_basis": basis, "power_loss_estimated": estimated,
             "friction_torque_whole": None if whole is None else (whole / dw if dw > 0.0 else 0.0),
             "friction_torque_estimated": s / dw if dw > 0.0 else 0.0}
@@ -142,6 +147,7 @@ def basis_text(basis: dict) -> str:
         return basis["error"]
     est = ", ".join(basis["estimated"]) or "nothing"
     op = basis["operating_point"]
+    outer = f", omega_outer {op['omega_outer']:.4g} rad/s" if "omega_outer" in op else ""
     return (f"modelled: {', '.join(basis['modelled'])}; estimated (quasi-static at Fr {op['Fr']:g} N, Fa "
-            f"{op['Fa']:g} N, omega {op['omega']:.4g} rad/s): {est}; not estimated: "
+            f"{op['Fa']:g} N, omega {op['omega']:.4g} rad/s{outer}): {est}; not estimated: "
             f"{'; '.join(basis['not_estimated'])}")

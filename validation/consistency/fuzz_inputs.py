@@ -264,6 +264,14 @@ CASES = [
     Case("s34_quasistatic_light_balls_flagged", "flag", "inertia",
          cli=_qs("7208", "--Fr", "3000", "--Fa", "3000", "--omega", "500", "--control", "equilibrium", "--cage",
                  "rigid")),
+    # outer-ring rotation of the dynamic engines (Scenario.omega_outer): a non-finite speed, an engine that refuses it
+    Case("o34_scenario_nan_omega_outer", "refuse", "omega_outer",
+         api="report(lambda: eb.Scenario(Fr=3000.0, omega=0.0, omega_outer=float('nan')))"),
+    Case("o34_simulate_inf_omega_outer", "refuse", "omega-outer",
+         cli=("simulate", "6208", "--Fr", "3000", "--omega", "0", "--omega-outer", "inf", "--no-progress")),
+    Case("o34_reduced_refuses_omega_outer", "refuse", "omega_outer",
+         cli=(*_SIM, "--engine", "reduced", "--cage", "none", "--traction-level", "ellipse", "--dt", "2e-5",
+              "--omega-outer", "100")),
 ]
 
 

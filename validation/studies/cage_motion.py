@@ -13,13 +13,15 @@ damping, --t-end long, summaries over the last quarter.
 (e) Unequal pocket spacing: the 6208 under F_r = 3000 N at 500 rad/s with its estimated ball-guided cage
     (spherical pockets), equal pockets and a once-per-revolution spacing error of 0.4 of the pocket clearance
     (``RigidCage.pocket_spacing_error``), --t-end-spacing long at 2 us: the strongest lines of the cage centre's
-    whirl spectrum over the last half (frequency over the cage speed; + in the cage's direction of rotation).
+    whirl spectrum over the last half (frequency over the cage speed; + in the cage's direction of rotation);
+    with the inner ring turning at 500 rad/s and, the same settings otherwise, with the outer ring turning at
+    500 rad/s and the inner ring at rest (``Scenario.omega_outer``; --spacing-rings chooses).
 (d) High speed: Gupta's ACBB-120 at 25,000 rpm under 22,240 N thrust (its oil and EHL traction, the estimated
     outer-land brass cage, its default cage, 2 us, ellipse traction from the quasi-static start, --t-end-hs),
     balanced and with an unbalance U = 2e-6 kg m (U omega_c^2 about 2.8 N): orbit, whirl ratio, class, land loss.
 
     python validation/studies/cage_motion.py [--t-end 0.2] [--t-end-hs 0.06] [--t-end-spacing 1.2] [--only a b c d e]
-        [--out validation/out/cage_motion]
+        [--spacing-rings inner outer] [--out validation/out/cage_motion]
 
 Writes cage_motion.json, cage_motion_orbits.png and cage_motion_orbits.npz into --out.
 """
@@ -70,16 +72,44 @@ def run_high_speed(t_end, unbalance=0.0):
     return {k: s.get(k) for k in KEYS + ("steady",)}, rec
 
 
-def whirl_lines(rec, cage_speed, n=5):
-    """The ``n`` strongest lines of the cage centre's whirl over the last half of ``rec``: (frequency over the
-    cage speed, + in the cage's direction of rotation; amplitude over the strongest), from the FFT of
-    x + i y about its mean (Hann window; the frequency resolution is 2 pi / the window's length)."""
+def whirl_spectrum(rec, cage_speed):
+    """(f, a) of the cage centre's whirl over the last half of ``rec``: angular frequency [rad/s], + in the
+    cage's direction of rotation, and amplitude, from the FFT of x + i y about its mean (Hann window; the
+    frequency resolution is 2 pi / the window's length)."""
     t = rec.data["t"]
     w = t >= 0.5 * t[-1]
     xy = rec.data["xc"][w, 0, :2]
     zc = (xy[:, 0] - xy[:, 0].mean()) + 1j * (xy[:, 1] - xy[:, 1].mean())
     f = np.fft.fftfreq(zc.size, d=t[1] - t[0]) * 2.0 * np.pi * np.sign(cage_speed)
-    a = np.abs(np.fft.fft(zc * np.hanning(zc.size)))
+    return f, np.abs(np.fft.fft(zc * np.hanning(zc.size)))
+
+
+#: Band of the faster whirls (:func:`faster_whirls`): above FASTER_FROM and up to FASTER_UPTO times the cage speed.
+FASTER_FROM, FASTER_UPTO = 1.05, 4.0
+
+
+def faster_whirls(rec, cage_speed):
+    """The strongest line of the cage centre's whirl faster than the ball set, FASTER_FROM to FASTER_UPTO times the
+    cage speed and more than 3 bins from the strongest line, in the cage's direction of rotation ("+") and
+    against it ("-"): (frequency over the cage speed, amplitude over the strongest line of the spectrum) each.
+    Nogi et al. 2018 (from its abstract): unequal pocket spacing adds a faster whirl, in the cage's direction
+    for inner-ring rotation and against it for outer-ring rotation."""
+    f, a = whirl_spectrum(rec, cage_speed)
+    r = f / abs(cage_speed)
+    # a line within 3 bins of the strongest is its window's skirt, not a whirl of its own (as in whirl_lines)
+    apart = np.abs(f - f[int(np.argmax(a))]) > 3.0 * abs(f[1] - f[0])
+    out = {}
+    for sign, key in ((1.0, "+"), (-1.0, "-")):
+        band = (sign * r > FASTER_FROM) & (sign * r <= FASTER_UPTO) & apart
+        i = int(np.argmax(np.where(band, a, -1.0)))
+        out[key] = (float(r[i]), float(a[i] / a.max()))
+    return out
+
+
+def whirl_lines(rec, cage_speed, n=5):
+    """The ``n`` strongest lines of the cage centre's whirl over the last half of ``rec`` (:func:`whirl_spectrum`):
+    (frequency over the cage speed, + in the cage's direction of rotation; amplitude over the strongest)."""
+    f, a = whirl_spectrum(rec, cage_speed)
     picked = []
     for i in np.argsort(a)[::-1]:
         if all(abs(f[i] - f[k]) > 3.0 * abs(f[1] - f[0]) for k in picked):
@@ -90,11 +120,13 @@ def whirl_lines(rec, cage_speed, n=5):
         float(abs(f[1] - f[0]) / abs(cage_speed))
 
 
-def run_spacing(t_end, error):
-    """(e): the 6208's ball-guided cage with a pocket spacing error ``error`` [m]."""
+def run_spacing(t_end, error, ring="inner"):
+    """(e): the 6208's ball-guided cage with a pocket spacing error ``error`` [m], the ``ring`` ("inner" or
+    "outer") turning at 500 rad/s, the other at rest."""
     b = eb.catalog["6208"]
     cage = dataclasses.replace(estimated_cage(b, guidance="ball"), pocket_spacing_error=error)
-    sc = eb.Scenario(Fr=3000.0, omega=500.0, t_end=t_end, dt=2e-6, sample_dt=2e-5, rigid_cage=cage,
+    speeds = {"omega": 500.0} if ring == "inner" else {"omega": 0.0, "omega_outer": 500.0}
+    sc = eb.Scenario(Fr=3000.0, **speeds, t_end=t_end, dt=2e-6, sample_dt=2e-5, rigid_cage=cage,
                      cage_damping="implicit", friction="regularized")
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", eb.SteadyStateWarning)
@@ -110,6 +142,8 @@ def main(argv=None):
     ap.add_argument("--t-end-hs", type=float, default=0.06, help="run length of the high-speed runs (d) [s]")
     ap.add_argument("--t-end-spacing", type=float, default=1.2, help="run length of the spacing runs (e) [s]")
     ap.add_argument("--only", nargs="+", choices=("a", "b", "c", "d", "e"), default=["a", "b", "c", "d", "e"])
+    ap.add_argument("--spacing-rings", nargs="+", choices=("inner", "outer"), default=["inner", "outer"],
+                    help="the turning ring of the spacing runs (e)")
     ap.add_argument("--out", default=str(ROOT / "validation" / "out" / "cage_motion"))
     args = ap.parse_args(argv)
     out = Path(args.out)
@@ -159,16 +193,25 @@ def main(argv=None):
               f"{s['cage_speed']:.1f} rad/s, steady {s['steady']['steady']}", flush=True)
 
     clearance = estimated_cage(eb.catalog["6208"], guidance="ball").pocket_clearance
-    for name, e in (("equal", 0.0), ("unequal_0.4", 0.4 * clearance)) if "e" in args.only else ():
+    cases = [(ring, name, e) for ring in args.spacing_rings for name, e in (("equal", 0.0),
+                                                                          ("unequal_0.4", 0.4 * clearance))]
+    for ring, name, e in cases if "e" in args.only else ():
         if name == "equal":
-            print(f"(e) 6208 ball-guided cage, 3000 N, 500 rad/s, {args.t_end_spacing:g} s: pocket spacing")
-        s, rec = run_spacing(args.t_end_spacing, e)
+            print(f"(e) 6208 ball-guided cage, 3000 N, {ring} ring at 500 rad/s, {args.t_end_spacing:g} s: pocket "
+                  "spacing")
+        s, rec = run_spacing(args.t_end_spacing, e, ring)
         lines, resolution = whirl_lines(rec, s["cage_speed"])
-        report[f"e_{name}"] = {**s, "whirl_lines": lines, "resolution": resolution, "pocket_spacing_error": e}
-        orbits[f"e_{name}"] = rec
+        faster = faster_whirls(rec, s["cage_speed"])
+        key = f"e_{name}" if ring == "inner" else f"e_{name}_outer_ring"  # the inner ring's keys as before
+        report[key] = {**s, "whirl_lines": lines, "resolution": resolution, "pocket_spacing_error": e,
+                       "turning_ring": ring, "faster_whirls": faster}
+        orbits[key] = rec
         print(f"    {name:12s} {s['cage_motion']:9s} orbit/clearance {s['cage_orbit_ratio']:.3f} pocket max "
               f"{s['pocket_force_max']:.1f} N; whirl lines (f / cage speed: amplitude, resolution "
               f"{resolution:.3f}): " + ", ".join(f"{fq:+.3f}: {amp:.2f}" for fq, amp in lines), flush=True)
+        print(f"    {'':12s} strongest faster whirl ({FASTER_FROM:g}-{FASTER_UPTO:g} times the cage speed): "
+              + ", ".join(f"{'with' if k == '+' else 'against'} the cage {fq:+.3f}: {amp:.3f}"
+                          for k, (fq, amp) in faster.items()), flush=True)
 
     cols = max(1, min(4, len(orbits)))
     rows = max(1, -(-len(orbits) // cols))

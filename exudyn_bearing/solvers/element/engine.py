@@ -14,7 +14,7 @@ from ...data import InputError, Lubricant, load_bearing
 from ...model.initial_state import initial_state, ring_mass_estimate
 from ...model.memory import ESTIMATE_AFTER_S, wall_time_message
 from ...model.record import RunInterrupted
-from ...model.scenario import INTEGRATOR_SOLVERS, Scenario
+from ...model.scenario import INTEGRATOR_SOLVERS, Scenario, engine_speed_error
 from ...model.stability import SimulationError, stable_step
 from .console import filter_exudyn_notes
 from .element import BallBearingElement
@@ -68,6 +68,9 @@ class ExudynEngine:
 
     def __init__(self, bearing, scenario: Scenario, lubricant: Lubricant | None = None, mode: str = "bodies",
                  sub_steps: int = 1, start: dict | None = None):
+        err = engine_speed_error(scenario, self.name)  # its outer ring is the ground: omega_outer refused by name
+        if err is not None:
+            raise err
         import exudyn as exu
         from exudyn.itemInterface import (LoadForceVector, MarkerBodyRigid, MarkerNodePosition, NodePoint,
                                           ObjectGround, ObjectMassPoint)

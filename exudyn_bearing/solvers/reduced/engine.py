@@ -21,7 +21,7 @@ from ...model.layout import HIST_N, NDIAG, NGLOBAL
 from ...model.motion import ring_poses
 from ...model.parameters import scene_parameters
 from ...model.record import RunInterrupted, RunRecord, sample_buffers
-from ...model.scenario import Scenario, resolve_cage
+from ...model.scenario import Scenario, engine_speed_error, resolve_cage
 from ...model.stability import SimulationError
 from ...physics import hertz
 from .stepper import N_CAGE, N_CORR, N_WORK, W_CORR, W_EVALS, W_ITER, W_ITER_MAX, W_REFRESH, W_UNCONVERGED, run_reduced
@@ -101,7 +101,7 @@ class ReducedEngine:
         b = load_bearing(bearing)
         if scenario.Pd is not None:
             b = b.with_clearance(scenario.Pd)
-        err = reduced_support_error(scenario, b)
+        err = reduced_support_error(scenario, b) or engine_speed_error(scenario, self.name)
         if err is not None:
             raise err
         announce_compilation(forces, run_reduced)
