@@ -82,7 +82,7 @@ def step_parts(bearing, scenario):
 
 
 def _us(x):
-    return "-" if x is None or not np.isfinite(x) else f"{1e6 * x:.3g}"
+    return "-" if x is None or not np.isfinite(x) else f"{1e6 * x:.4g}"
 
 
 def step_line(parts):
@@ -176,9 +176,14 @@ def main(argv=None):
     print(f"    rigid cage at {args.rigid_dt * 1e6:g} us within 1 s per simulated second: "
           f"{'yes' if med[rigid] <= 1.0 else 'no'} ({med[rigid]:.3g} s; integrating "
           f"{'yes' if med_engine[rigid] <= 1.0 else 'no'}, {med_engine[rigid]:.3g} s)")
+    # the table of docs/theory/dynamics.md#stable-step: both cages with either cage damping (no runs)
+    for name, sc in (("torus, implicit cage damping", eb.Scenario(**sc7, dt=0.5e-6, cage_damping="implicit")),
+                     ("rigid, explicit cage damping", eb.Scenario(**sc7, dt=args.rigid_dt, cage="rigid"))):
+        parts[name] = step_parts(b7, sc)
+    report["c_7208"]["stable_steps"] = parts
     print("    stable-step estimates and their parts [us]:")
-    for name in variants:
-        print(f"    {name:12s} {step_line(parts[name])}")
+    for name in parts:
+        print(f"    {name:30s} {step_line(parts[name])}")
 
     # (d) step convergence of the rigid cage
     conv_keys = ("q_max_inner", "cage_speed", "ball_spin", "cage_power_pocket", "cage_power_land",
