@@ -271,9 +271,10 @@ def _half_film_integrals(eps, c0, s0):
     -c0, -s0) and the rational cos(2 atan A) = (1 - A^2)/(1 + A^2), sin(2 atan A) = 2 A/(1 + A^2); the span
     g1 - g0 = pi + 2 (atan A1 - atan A0), the difference of the arc tangents taken as one
     atan2(A1 - A0, 1 + A0 A1): one arc tangent and no sine or cosine, where the angles themselves took
-    eleven library calls (a fifth of the 7208 rigid cage's step with the implicit land, whose solve takes the film five
-    times; ``python validation/studies/rigid_cage.py --profile``). Equal to the angle form to round-off
-    [T: tests/test_short_bearing_force.py]. Scalars (compiled)."""
+    thirteen trigonometric calls with the start's atan2 (the implicit land of the rigid cage takes the film
+    five times a step: about a tenth of the 7208's step went there; ``python validation/studies/rigid_cage.py
+    --profile``). Equal to the angle form to round-off [T: tests/test_short_bearing_force.py]. Scalars
+    (compiled)."""
     s = 1.0 - eps * eps
     k = math.sqrt((1.0 + eps) / (1.0 - eps))
     a0 = (k - 1.0) * s0 / (1.0 + c0 + k * (1.0 - c0))
