@@ -20,7 +20,6 @@
     point level's Cundall-Strack spring is itself not converged in the step, so its runs would hide the
     cage's convergence): loads, cage speed, pocket and land losses.
 (e) The orbit of the cage centre of (b) and (c) in a plot, with its data.
-
 (f) With --profile instead: where the time of the rigid cage's 7208 step at --rigid-dt goes. On a state
     advanced 10 ms from the analytic start, the compiled contact kernel is timed with stages switched off
     through the parameter vector (the same compiled code): the ball / raceway contacts alone (no cage), the
@@ -28,10 +27,15 @@
     extra evaluations of the film for its Jacobians); and the whole velocity-Verlet step, whose excess over
     the frozen kernel is the integration's own work and the per-contact caches' misses of the moving state
     (their rates printed). Thread CPU time, medians of --repeat rounds (at least 5), ns per step.
+(g) With --compare-dt DT [DT ...]: the rigid cage's 7208 run of (c) (its last run) against runs at those steps,
+    equally long: the relative differences of the loads, cage and ball speeds, dissipation and cage losses over
+    the summary's window, and each run's energy balance (the summary's energy_check: residual, closes within
+    1 %), which tell whether a larger step keeps the run's results (0.5 % and a closed balance).
 
     python validation/studies/rigid_cage.py [--t-end 0.1] [--repeat 3] [--cost-t-end T] [--rigid-dt 5e-6]
                                             [--out validation/out/rigid_cage]
     python validation/studies/rigid_cage.py --profile [--rigid-dt 5e-6] [--repeat 7]
+    python validation/studies/rigid_cage.py --cost-t-end 0.3 --compare-dt 6e-6 7e-6
 
 Writes rigid_cage.json, rigid_cage_orbit.png and rigid_cage_orbit.npz into --out.
 """
@@ -99,6 +103,8 @@ def main(argv=None):
                     help="simulated time of the timed 7208 runs of (c) [s] (default: --t-end)")
     ap.add_argument("--rigid-dt", type=float, default=5e-6, help="step of the rigid cage's 7208 runs (c), (f) [s]")
     ap.add_argument("--profile", action="store_true", help="only (f): where the rigid cage's step time goes")
+    ap.add_argument("--compare-dt", type=float, nargs="*", default=(),
+                    help="(g): steps [s] whose rigid-cage 7208 runs are compared with the one of (c)")
     ap.add_argument("--out", default=str(ROOT / "validation" / "out" / "rigid_cage"))
     args = ap.parse_args(argv)
     if args.profile:
@@ -184,6 +190,32 @@ def main(argv=None):
     print("    stable-step estimates and their parts [us]:")
     for name in parts:
         print(f"    {name:30s} {step_line(parts[name])}")
+
+    # (g) the rigid cage's 7208 run at other steps against the one at --rigid-dt
+    if args.compare_dt:
+        ref = summaries[rigid]
+        g_keys = ("q_max_inner", "q_max_outer", "cage_speed", "ball_spin", "dissipation", "cage_power_pocket",
+                  "cage_power_land", "pocket_force_mean")
+        g = {}
+        print(f"(g) 7208 rigid cage, {t_cost:g} s: runs at other steps / the one at {args.rigid_dt * 1e6:g} us - 1, "
+              "and the energy balance over the summary's window:")
+        print(f"    {args.rigid_dt * 1e6:g} us: energy residual {100 * ref['energy_check']['residual']:+.2f} % "
+              f"({'closes' if ref['energy_check']['passed'] else 'does not close'} within 1 %)")
+        for dt in args.compare_dt:
+            s_dt = run(b7, variants[rigid].replace(dt=dt), fresh=True)[1]
+            rel = {k: s_dt[k] / ref[k] - 1.0 for k in g_keys}
+            ok = all(abs(rel[k]) <= 5e-3 for k in g_keys) and bool(s_dt["energy_check"]["passed"])
+            g[f"{dt * 1e6:g}us"] = {"relative_difference": rel, **pick(s_dt, g_keys),
+                                   "energy_residual_relative": s_dt["energy_check"]["residual"],
+                                   "energy_closes": bool(s_dt["energy_check"]["passed"]),
+                                   "within_0.5_percent_and_closed": ok}
+            print(f"    {dt * 1e6:g} us: " + ", ".join(f"{k} {100 * v:+.2f} %" for k, v in rel.items())
+                  + f"; energy residual {100 * s_dt['energy_check']['residual']:+.2f} % "
+                  f"({'closes' if s_dt['energy_check']['passed'] else 'does not close'} within 1 %); "
+                  f"{'keeps' if ok else 'does not keep'} the results within 0.5 %", flush=True)
+        report["g_7208_rigid_step_comparison"] = {"reference_dt_s": args.rigid_dt, "t_end_s": t_cost,
+                                                  "reference_energy_residual_relative": ref["energy_check"]["residual"],
+                                                  "steps": g}
 
     # (d) step convergence of the rigid cage
     conv_keys = ("q_max_inner", "cage_speed", "ball_spin", "cage_power_pocket", "cage_power_land",
