@@ -383,6 +383,14 @@ def report_section(run):
               f"{'stays within' if c['rigid_at_most_1s_per_simulated_second'] else 'exceeds'} 1 s per simulated "
               "second in this run. Step convergence of the rigid cage (regularised friction, 5 us implicit against "
               "1 us): " + ", ".join(f"{k} {pct(v, 2)}" for k, v in d["relative_difference"].items()) + ".", ""]
+    g = r.get("g_7208_rigid_step_comparison")
+    if g:
+        lines += [f"The rigid cage's 7208 run at other steps against the one at {g['reference_dt_s'] * 1e6:g} us "
+                  f"(energy residual {pct(g['reference_energy_residual_relative'], 2)}): "
+                  + "; ".join(f"{dt}: Q_max {pct(v['relative_difference']['q_max_inner'], 2)}, cage speed "
+                              f"{pct(v['relative_difference']['cage_speed'], 2)}, pocket loss "
+                              f"{pct(v['relative_difference']['cage_power_pocket'], 2)}, energy residual "
+                              f"{pct(v['energy_residual_relative'], 2)}" for dt, v in g["steps"].items()) + ".", ""]
     lines += run.figure("rigid_cage/rigid_cage_orbit.png", "The orbits of the cage centre of (b) and (c).")
     return "\n".join(lines)
 
