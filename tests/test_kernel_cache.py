@@ -2,7 +2,8 @@
 (``model.contact._ln_anchored``, ``_exp_anchored``, ``_film_hd_anchored``; cache columns of
 ``model.layout``): ln(1 + r) and exp(d) by their Taylor series about a cached anchor give the direct
 relations (``math.log``, ``math.exp``, ``physics.ehl.film_hd_ln_g_k``) to round-off, within the reach
-and out of it, from a zero cache and along drifting sequences, and the kernel gives the same forces
+and out of it, from a zero cache and along drifting sequences, so do the Hertz constants re-evaluated from
+their anchors (``_hertz_constants``: ln a_r, k, exp(-0.68 k)), and the kernel gives the same forces
 from the anchors as from the direct relations (an empty cache, whose anchors all miss); a cache without
 the geometry columns is refused."""
 import math
@@ -11,9 +12,11 @@ import numpy as np
 import pytest
 
 from exudyn_bearing.model import layout as L
-from exudyn_bearing.model.contact import (EXP_REACH, LN_REACH, _exp_anchored, _film_hd_anchored, _ln_anchored,
-                                          scene_loss_path, scene_paths)
+from exudyn_bearing.model.contact import (EXP_REACH, LN_REACH, _exp_anchored, _film_hd_anchored, _hertz_constants,
+                                          _ln_anchored, scene_loss_path, scene_paths)
 from exudyn_bearing.model.motion import ring_poses
+from exudyn_bearing.physics import hertz
+from exudyn_bearing.physics.hertz import _kfe_fast
 from exudyn_bearing.physics.ehl import _film_hd_ln_g_k, film_hd_ellipticity_factor, film_thickness_hamrock_dowson
 from exudyn_bearing.solvers.reference.engine import ReferenceEngine
 from exudyn_bearing.solvers.reference.integrators import evaluate
@@ -101,6 +104,38 @@ def test_film_from_the_anchors_equals_the_hamrock_dowson_relation():
     hz = _fresh()
     assert _film_hd_anchored(hz, 0, 0, 0.0, 1000.0, 7.61e-3, E_PRIME, ETA, ln_g) == 0.0
     assert _film_hd_anchored(hz, 0, 0, 5.0, 0.0, 7.61e-3, E_PRIME, ETA, ln_g) == 0.0
+
+
+def test_the_hertz_constants_from_the_anchors_equal_the_table_and_the_film_factor():
+    # R_y/R_x of one contact drifting step by step (relative steps of 1e-4, as a contact angle under a
+    # combined load, and jumps, so that the anchors of ln a_r, k and exp(-0.68 k) are hit, missed and
+    # moved), for either orientation of the ellipse: k, F, E and the film's ellipticity factor against the
+    # table's relation with the library's log and exp (hertz._kfe_fast) and ehl.film_hd_ellipticity_factor,
+    # to FILM_REL (ln a_r's round-off times d(ln k)/d(ln a_r) reaches k; a wrong series term or anchor
+    # would show at 1e-6 and above); a drift within the 1e-6 of the cache returns the cached constants
+    table = hertz.exact_table()
+    p = np.zeros(L.N_PARAMS)
+    p[L.P_HERTZ] = hertz.EXACT
+    rng = np.random.default_rng(11)
+    for rx, ry in ((7.61e-3, 7.29 * 7.61e-3), (0.35, 4.2e-3), (1e-2, 1e-2)):
+        hz = _fresh()
+        hits = 0
+        for step in range(2000):
+            f = 1.0 + (0.2 if step % 400 == 399 else 1e-4) * rng.standard_normal()
+            ry *= f
+            before = hz[0, 0, L.HZ_LN_RATIO:L.HZ_EXP_FILM + 2].copy()
+            ratio = hz[0, 0, L.HZ_RATIO]
+            kappa, ell_f, ell_e = _hertz_constants(p, table, hz, 0, 0, rx, ry)
+            if hz[0, 0, L.HZ_RATIO] == ratio:  # within the cache's 1e-6: the cached constants
+                assert (kappa, ell_f, ell_e) == (hz[0, 0, L.HZ_K], hz[0, 0, L.HZ_F], hz[0, 0, L.HZ_E])
+                continue
+            hits += np.array_equal(before, hz[0, 0, L.HZ_LN_RATIO:L.HZ_EXP_FILM + 2])
+            k0, f0, e0 = _kfe_fast(rx, ry, hertz.EXACT, table)
+            assert (kappa, ell_f, ell_e) == pytest.approx((k0, f0, e0), rel=FILM_REL), step
+            assert hz[0, 0, L.HZ_FILM_K] == pytest.approx(film_hd_ellipticity_factor(k0), rel=FILM_REL), step
+        assert hits > 1500  # the steady drift runs on the anchors
+        cached = _hertz_constants(p, table, hz, 0, 0, rx, ry * (1.0 + 5e-7))
+        assert cached == (hz[0, 0, L.HZ_K], hz[0, 0, L.HZ_F], hz[0, 0, L.HZ_E])
 
 
 @pytest.mark.parametrize("film", ["hd", "mk"])

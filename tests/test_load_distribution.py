@@ -172,3 +172,24 @@ def test_lubrication_map_6208_500_rad_s(b6208):
     assert np.all(r["lambda_inner"][loaded] < lam_out)
     # unloaded contacts carry no film
     assert np.all(np.isnan(r["lambda_inner"][~loaded])) and np.all(r["regime_inner"][~loaded] == -1)
+
+
+def test_a_repeated_equilibrium_is_the_same_and_each_caller_gets_its_own_arrays():
+    # static_equilibrium keeps its last solutions by their inputs (one simulate call solved the same one three
+    # times): a repeat gives the same numbers, and what one caller does to its arrays does not reach the next
+    from exudyn_bearing import catalog
+
+    b = catalog["7208"]
+    ld._SOLVED.clear()
+    first = ld.static_equilibrium(b, 3000.0, 3000.0)
+    q = first.q.copy()
+    first.q[:] = -1.0
+    first.extra["x"] = 1
+    again = ld.static_equilibrium(b, 3000.0, 3000.0)
+    assert np.array_equal(again.q, q) and again.extra == {}
+    ld._SOLVED.clear()
+    fresh = ld.static_equilibrium(b, 3000.0, 3000.0)
+    for name in ("q", "contact_angle", "overlap_inner", "overlap_outer", "displacement", "reaction_moment"):
+        assert np.array_equal(getattr(fresh, name), getattr(again, name)), name
+    other = ld.static_equilibrium(b, 2000.0, 3000.0)  # other inputs: their own solve
+    assert other.q.max() < q.max()

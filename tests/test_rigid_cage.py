@@ -165,6 +165,29 @@ def test_a_ball_pressed_into_its_pocket_gets_the_hertz_force_and_the_cage_the_re
     assert out["glob"][L.G_POCKET_POWER] == pytest.approx(0.0, abs=1e-12)  # at rest: nothing dissipated
 
 
+@pytest.mark.parametrize("spacing", [0.0, 0.4 * 0.25e-3])
+def test_every_pocket_sits_at_its_angle_for_any_cage_angle(spacing):
+    """The kernel turns the pockets' directions pocket after pocket (the pitch's rotation, and the unequal
+    spacing's) instead of taking cos and sin of every pocket's angle: every ball pressed delta into its
+    pocket at the angle theta + 2 pi j / Z + (e / r_p) sin(2 pi j / Z), for a cage angle theta off the
+    ball positions' zero, gets the Hertz force of delta (a pocket off its angle by more than round-off would
+    change delta = 2 um by more than 1e-9 of it)."""
+    b = eb.catalog["6208"]
+    eng = _engine(_cage(b, pocket_spacing_error=spacing))
+    p, z = eng.params, b.n_balls
+    theta = 0.7
+    xb, vb, wb, xc, vc = _balls_on_pitch_circle(eng)
+    xc[1, 0] = theta
+    delta = 2e-6
+    turn = math.asin((p[L.P_POCKET_GAP] + delta) / b.pitch_radius)
+    for j in range(z):
+        psi = 2.0 * math.pi * j / z
+        a = theta + psi + p[L.P_POCKET_SPACING] * math.sin(psi) + (turn if j % 2 == 0 else -turn)
+        xb[j] = (b.pitch_radius * math.cos(a), b.pitch_radius * math.sin(a), 0.0)
+    out = _forces(eng, xb, vb, wb, xc, vc)
+    assert out["cage_load"][:, 0] == pytest.approx(np.full(z, p[L.P_K_POCKET] * delta ** 1.5), rel=1e-9)
+
+
 def test_pocket_friction_opposes_the_sliding_and_dissipates_mu_f_times_the_slip():
     cage = _cage(eb.catalog["6208"], pocket_friction=0.2)
     eng = _engine(cage)

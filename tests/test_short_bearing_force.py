@@ -50,12 +50,19 @@ def test_pure_squeeze_force(eps):
 
 @pytest.mark.parametrize("eps, rate, whirl, w", [(0.3, 40.0, -100.0, 400.0), (0.8, -5.0, 150.0, 300.0),
                                                  (0.6, 200.0, 0.0, 10.0), (0.95, -0.3, 900.0, 250.0),
-                                                 (0.0, 10.0, 0.0, 100.0)])
+                                                 (0.0, 10.0, 0.0, 100.0), (0.5, -30.0, 0.0, 200.0),
+                                                 (0.7, 30.0, 300.0, 200.0), (0.9, 0.0, 250.0, 100.0),
+                                                 (0.4, 0.0, 50.0, 100.0)])
 def test_general_motion_against_quadrature(eps, rate, whirl, w):
     # any squeeze and whirl: the half film where the pressure is positive moves round; the closed form's
     # limits must follow it (whirl above half the surface speed turns the wedge force round)
+    # (the cases cover the four sign quadrants of the wedge a = eps (omega_sum/2 - phi') and squeeze b = -eps',
+    # which place the film's start theta0 in each quadrant, and a = b = 0: no pressure)
     fr, ft = short_bearing_force(eps, rate, whirl, w, MU, R, L, C)
     qr, qt = quadrature(eps, rate, whirl, w)
+    if rate == 0.0 and whirl == 0.5 * w:
+        assert (fr, ft) == (0.0, 0.0) and max(abs(qr), abs(qt)) == 0.0
+        return
     scale = max(abs(qr), abs(qt))
     assert fr == pytest.approx(qr, abs=2e-6 * scale)
     assert ft == pytest.approx(qt, abs=2e-6 * scale)

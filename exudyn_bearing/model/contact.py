@@ -80,13 +80,15 @@ from ..physics.damping import (_damping_critical, _damping_fluid, _damping_hyste
 from ..data.traction import N_TRACTION_PARAMS
 from ..physics.contact_slip import _contact_traction
 from ..physics.defects import _spall_drop_k
-from ..physics.ehl import (HAMROCK_DOWSON, _film_central_hd, _film_hd_ellipticity_factor, _film_thickness_ln_g_k,
-                           film_groups, film_hd_exponent, film_hd_from_exponent)
+from ..physics.ehl import (HAMROCK_DOWSON, HD_ELLIPTICITY_DECAY, _film_central_hd, _film_hd_ellipticity_factor,
+                           _film_thickness_ln_g_k, film_groups, film_hd_exponent, film_hd_from_exponent)
 from ..physics.traction import EHL as TRACTION_EHL
 from ..physics.friction import (_implicit_tangential_stiffness, _regularized_coulomb, _sphere_tangential_mass,
                                 friction_coefficient)
 from ..physics.geometry import _groove_geometry, _raceway_radii_cos
-from ..physics.hertz import _curvature_sum_radius, _kfe_fast, _semi_axes, _semi_axes_overlap, _stiffness
+from ..physics.hertz import EXACT as HERTZ_EXACT
+from ..physics.hertz import (_axes_ratio, _curvature_sum_radius, _kfe_fast, _kfe_table_ln, _semi_axes,
+                             _semi_axes_overlap, _stiffness)
 from ..physics.losses import _ehl_rolling_force, _hysteresis_rolling_force, ball_drag_force
 from ..physics.pocket_film import _pocket_film
 from ..physics.short_bearing import _short_bearing_xy
@@ -95,7 +97,8 @@ from .layout import (POCKET_ESCAPE, G_CAGE_LOAD_POWER, G_LAND_ECC, G_LAND_FX, G_
                      P_CAGE_HALF_SECTION, P_POCKET_ETA, P_POCKET_FILM, P_POCKET_FILM_FLOOR, P_POCKET_FILM_HHAT,
                      P_POCKET_FILM_RX, P_POCKET_GAP, P_POCKET_SHAPE, P_POCKET_SPACING, P_POCKET_VREG, P_RIGID, P_GX, P_GY, P_GZ,
                      P_UNBALANCE)
-from .layout import HZ_E, HZ_EXP, HZ_F, HZ_FILM_K, HZ_GEO, HZ_K, HZ_LN_U, HZ_LN_W, HZ_N, HZ_RATIO
+from .layout import (HZ_E, HZ_EXP, HZ_EXP_FILM, HZ_EXP_K, HZ_F, HZ_FILM_K, HZ_GEO, HZ_K, HZ_LN_RATIO, HZ_LN_U, HZ_LN_W,
+                     HZ_N, HZ_RATIO)
 from .layout import (D_ROLLRES, G_DRAG_POWER, G_EHL_POWER, G_HYST_POWER, P_ALPHA_H, P_DRAG, P_ETA_MIX, P_RHO_MIX,
                      P_ROLLRES)
 from .layout import (D_POWER, D_ROLL, D_SPIN, D_SPIN_MOMENT, P_GROWTH_I, P_GROWTH_O, P_N_ACROSS, P_N_STRIPS,
@@ -151,14 +154,28 @@ def _hertz_constants(p, table, hz, j, race, rx, ry):
     """k, F, E of contact (j, race) (hertz.py), re-evaluated only when R_y/R_x
     moved by more than 1e-6 (relative) since the last evaluation (cache ``hz``).
     The test |R_y/R_x - a| > 1e-6 R_y/R_x is taken times R_x > 0, without the
-    division (which then runs only on a miss)."""
+    division (which then runs only on a miss). A contact whose angle changes
+    (a combined load) misses at almost every step; at the exact level the
+    re-evaluation then takes ln a_r, k = exp(ln k) and the film's
+    exp(-0.68 k) from the contact's anchors (:func:`_ln_anchored`,
+    :func:`_exp_anchored`; equal to ``hertz._kfe_tabulated`` and
+    ``ehl.film_hd_ellipticity_factor`` to round-off), not from the C
+    library's log and exp (the three were about a sixth of the 7208 rigid cage's step,
+    ``python validation/studies/rigid_cage.py --profile``)."""
     if abs(ry - hz[j, race, HZ_RATIO] * rx) > 1e-6 * ry:
-        kappa, ell_f, ell_e = _kfe_fast(rx, ry, int(p[P_HERTZ]), table)
+        method = int(p[P_HERTZ])
+        if method == HERTZ_EXACT:
+            lk, ell_f, ell_e = _kfe_table_ln(_ln_anchored(_axes_ratio(rx, ry), hz, j, race, HZ_LN_RATIO), table)
+            kappa = _exp_anchored(lk, hz, j, race, HZ_EXP_K)
+            film_k = 1.0 - _exp_anchored(-HD_ELLIPTICITY_DECAY * kappa, hz, j, race, HZ_EXP_FILM)
+        else:
+            kappa, ell_f, ell_e = _kfe_fast(rx, ry, method, table)
+            film_k = _film_hd_ellipticity_factor(kappa)
         hz[j, race, HZ_RATIO] = ry / rx
         hz[j, race, HZ_K] = kappa
         hz[j, race, HZ_F] = ell_f
         hz[j, race, HZ_E] = ell_e
-        hz[j, race, HZ_FILM_K] = _film_hd_ellipticity_factor(kappa)
+        hz[j, race, HZ_FILM_K] = film_k
         return kappa, ell_f, ell_e
     return hz[j, race, HZ_K], hz[j, race, HZ_F], hz[j, race, HZ_E]
 
@@ -931,12 +948,22 @@ def _rigid_cage(p, xb, vb, wb, xc, vc, rings, fb, tb, fc, fr, glob, cage_load, w
     half_section = p[P_CAGE_HALF_SECTION]
     film = p[P_POCKET_FILM] > 0.5
     film_floor = p[P_POCKET_FILM_FLOOR]
+    # the pockets' directions (cos, sin) of phi_j = theta + j pitch (+ spacing sin(j pitch)) by turning the cage's
+    # direction (cos theta, sin theta) by the pitch's rotation pocket after pocket (equal to the direct
+    # cos(phi_j), sin(phi_j) to round-off, about j ulp): four transcendental calls per evaluation instead of three
+    # per pocket, which were a tenth of the rigid cage's step (python validation/studies/rigid_cage.py --profile)
+    c_th, s_th = math.cos(xc[1, 0]), math.sin(xc[1, 0])
+    c_p, s_p = math.cos(pitch), math.sin(pitch)
+    c_j, s_j = 1.0, 0.0  # cos, sin of j pitch
     for j in range(z):
         if want:
             cage_load[j, 0] = 0.0
             cage_load[j, 1] = 0.0
-        phi = xc[1, 0] + j * pitch + spacing * math.sin(j * pitch)
-        co, si = math.cos(phi), math.sin(phi)
+        co, si = c_th * c_j - s_th * s_j, s_th * c_j + c_th * s_j
+        if spacing != 0.0:  # unequal spacing: turned further by spacing sin(j pitch)
+            c_s, s_s = math.cos(spacing * s_j), math.sin(spacing * s_j)
+            co, si = co * c_s - si * s_s, si * c_s + co * s_s
+        c_j, s_j = c_j * c_p - s_j * s_p, s_j * c_p + c_j * s_p
         dx = xb[j, 0] - (cx + rp * co)
         dy = xb[j, 1] - (cy + rp * si)
         dz = xb[j, 2] - cz

@@ -251,12 +251,17 @@ HIST_N = 4
 #: on the contact's geometry of the current evaluation, which ``model.contact.forces`` computes for all
 #: contacts before their forces (``model.contact._race_geometry``: the ball centre relative to the ring,
 #: world (3) and ring frame (2), the ring's rotated flag, the overlap, the local normal (3), cos and sin
-#: of the contact angle, the contact radius). All zero: nothing cached (every entry is re-evaluated
+#: of the contact angle, the contact radius); then (``HZ_LN_RATIO``, ``HZ_EXP_K``, ``HZ_EXP_FILM``) the
+#: anchors of the Hertz constants' re-evaluation at the exact level: 1/a_0 and ln a_0 of R_y/R_x,
+#: (ln k)_0 and k_0, and -0.68 k_0 and exp(-0.68 k_0) of the film's ellipticity factor (a re-evaluation
+#: takes ln a_r, k and that factor from them to round-off instead of the C library's log and exp).
+#: All zero: nothing cached (every entry is re-evaluated
 #: at its first use). Every caller allocates all HZ_N columns: the kernel refuses a narrower cache
 #: (it returns NaN, which every caller stops on).
 HZ_RATIO, HZ_K, HZ_F, HZ_E, HZ_FILM_K, HZ_LN_U, HZ_LN_W, HZ_EXP, HZ_GEO = 0, 1, 2, 3, 4, 5, 7, 9, 11
+HZ_LN_RATIO, HZ_EXP_K, HZ_EXP_FILM = 24, 26, 28
 #: Width of the per-contact cache ``hz``.
-HZ_N = 24
+HZ_N = 30
 
 # -- diagnostics ---------------------------------------------------------------
 #: Fields of the per-contact diagnostics, in order.

@@ -105,9 +105,13 @@ def film_hd_ln_g(u_r, load, r_x, kappa, e_prime, eta, ln_g):
     return film_hd_ln_g_k(u_r, load, r_x, film_hd_ellipticity_factor(kappa), e_prime, eta, ln_g)
 
 
+#: The decay rate 0.68 of the Hamrock-Dowson film's ellipticity factor 1 - exp(-0.68 k).
+HD_ELLIPTICITY_DECAY = 0.68
+
+
 def film_hd_ellipticity_factor(kappa):
     """The ellipticity factor 1 - exp(-0.68 k) of :func:`film_thickness_hamrock_dowson` [-]."""
-    return 1.0 - np.exp(-0.68 * kappa)
+    return 1.0 - np.exp(-HD_ELLIPTICITY_DECAY * kappa)
 
 
 def film_hd_ln_g_k(u_r, load, r_x, factor_k, e_prime, eta, ln_g):

@@ -236,10 +236,12 @@ _EXACT_TABLE = None
 
 
 @kernel
-def _kfe_tabulated(ratio, table):
-    """(k, F, E) for a_r = R_y/R_x >= 1 by linear interpolation of :func:`exact_table`."""
+def _kfe_table_ln(ln_ratio, table):
+    """(ln k, F, E) at ln a_r (a_r = R_y/R_x >= 1) by linear interpolation of :func:`exact_table`: the
+    table's part of :func:`_kfe_tabulated`, for a caller that has ln a_r and takes exp(ln k) itself (the
+    contact kernel, from its per-contact anchors)."""
     n = table.shape[1]
-    x = math.log(ratio) / _TABLE_LNMAX * (n - 1)
+    x = ln_ratio / _TABLE_LNMAX * (n - 1)
     if x >= n - 1:
         x = n - 1.000001
     i = int(x)
@@ -247,13 +249,26 @@ def _kfe_tabulated(ratio, table):
     lk = table[0, i] + w * (table[0, i + 1] - table[0, i])
     f = table[1, i] + w * (table[1, i + 1] - table[1, i])
     e = table[2, i] + w * (table[2, i + 1] - table[2, i])
+    return lk, f, e
+
+
+@kernel
+def _kfe_tabulated(ratio, table):
+    """(k, F, E) for a_r = R_y/R_x >= 1 by linear interpolation of :func:`exact_table`."""
+    lk, f, e = _kfe_table_ln(math.log(ratio), table)
     return math.exp(lk), f, e
+
+
+@kernel
+def _axes_ratio(r_x, r_y):
+    """a_r = R_y/R_x or R_x/R_y, whichever is >= 1 (the argument of the k, F, E relations)."""
+    return r_y / r_x if r_y >= r_x else r_x / r_y
 
 
 @kernel
 def _kfe_fast(r_x, r_y, method, table):
     """Kernel version of :func:`_kfe`: the exact level from the table."""
-    ratio = r_y / r_x if r_y >= r_x else r_x / r_y
+    ratio = _axes_ratio(r_x, r_y)
     if method == EXACT:
         return _kfe_tabulated(ratio, table)
     elif method == HAMROCK_BREWE:
@@ -264,7 +279,7 @@ def _kfe_fast(r_x, r_y, method, table):
 @kernel
 def _kfe(r_x, r_y, method):
     """(k, F, E) with k = major/minor >= 1, for either orientation."""
-    ratio = r_y / r_x if r_y >= r_x else r_x / r_y
+    ratio = _axes_ratio(r_x, r_y)
     if method == EXACT:
         return _kfe_exact(ratio)
     elif method == HAMROCK_BREWE:

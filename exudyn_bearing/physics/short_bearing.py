@@ -260,24 +260,36 @@ def film_coefficients(eccentricity, load, clearance, omega, printed_prefactor=Fa
 
 
 @kernel(inline="always")
-def _half_film_integrals(eps, theta0):
+def _half_film_integrals(eps, c0, s0):
     """The integrals I_sc, I_cc, I_ss of sin cos, cos^2, sin^2 over (1 - eps cos theta)^3 for theta from theta0
-    to theta0 + pi, in closed form by Sommerfeld's substitution cos theta = (eps + cos g)/(1 + eps cos g)
-    (tan(g/2) = sqrt((1+eps)/(1-eps)) tan(theta/2); Hamrock et al. [6]_ ch. 8): the integrands turn into
-    sin g (cos g + eps)/(1-eps^2)^2, (cos g + eps)^2/(1-eps^2)^(5/2) and sin^2 g/(1-eps^2)^(3/2). The map is
-    taken continuous in theta: g = theta + 2 atan((k-1) sin theta / (1 + cos theta + k (1 - cos theta))),
-    k = sqrt((1+eps)/(1-eps)). Scalars (compiled)."""
+    to theta0 + pi (given by c0 = cos theta0, s0 = sin theta0), in closed form by Sommerfeld's substitution
+    cos theta = (eps + cos g)/(1 + eps cos g) (tan(g/2) = sqrt((1+eps)/(1-eps)) tan(theta/2); Hamrock et
+    al. [6]_ ch. 8): the integrands turn into sin g (cos g + eps)/(1-eps^2)^2, (cos g + eps)^2/(1-eps^2)^(5/2)
+    and sin^2 g/(1-eps^2)^(3/2). The map is taken continuous in theta: g = theta + 2 atan(A),
+    A = (k-1) sin theta / (1 + cos theta + k (1 - cos theta)), k = sqrt((1+eps)/(1-eps)) (the denominator
+    is at least 2). The ends' sines and cosines follow from those of theta0 (cos and sin of theta0 + pi are
+    -c0, -s0) and the rational cos(2 atan A) = (1 - A^2)/(1 + A^2), sin(2 atan A) = 2 A/(1 + A^2); the span
+    g1 - g0 = pi + 2 (atan A1 - atan A0), the difference of the arc tangents taken as one
+    atan2(A1 - A0, 1 + A0 A1): one arc tangent and no sine or cosine, where the angles themselves took
+    thirteen trigonometric calls with the start's atan2 (the implicit land of the rigid cage takes the film
+    five times a step: about a tenth of the 7208's step went there; ``python validation/studies/rigid_cage.py
+    --profile``). Equal to the angle form to round-off [T: tests/test_short_bearing_force.py]. Scalars
+    (compiled)."""
     s = 1.0 - eps * eps
     k = math.sqrt((1.0 + eps) / (1.0 - eps))
-    t1 = theta0 + math.pi
-    c0, c1 = math.cos(theta0), math.cos(t1)
-    g0 = theta0 + 2.0 * math.atan((k - 1.0) * math.sin(theta0) / (1.0 + c0 + k * (1.0 - c0)))
-    g1 = t1 + 2.0 * math.atan((k - 1.0) * math.sin(t1) / (1.0 + c1 + k * (1.0 - c1)))
-    s0, s1 = math.sin(g0), math.sin(g1)
-    i_sc = (0.5 * (s1 * s1 - s0 * s0) - eps * (math.cos(g1) - math.cos(g0))) / (s * s)
-    i_cc = ((0.5 + eps * eps) * (g1 - g0) + 0.25 * (math.sin(2.0 * g1) - math.sin(2.0 * g0))
-            + 2.0 * eps * (s1 - s0)) / (s * s * math.sqrt(s))
-    i_ss = (0.5 * (g1 - g0) - 0.25 * (math.sin(2.0 * g1) - math.sin(2.0 * g0))) / (s * math.sqrt(s))
+    a0 = (k - 1.0) * s0 / (1.0 + c0 + k * (1.0 - c0))
+    a1 = -(k - 1.0) * s0 / (1.0 - c0 + k * (1.0 + c0))
+    q0, q1 = 1.0 / (1.0 + a0 * a0), 1.0 / (1.0 + a1 * a1)
+    cc0, ss0 = (1.0 - a0 * a0) * q0, 2.0 * a0 * q0  # cos, sin of 2 atan(A0)
+    cc1, ss1 = (1.0 - a1 * a1) * q1, 2.0 * a1 * q1
+    sg0, cg0 = s0 * cc0 + c0 * ss0, c0 * cc0 - s0 * ss0  # sin, cos of g0 = theta0 + 2 atan(A0)
+    sg1, cg1 = -(s0 * cc1 + c0 * ss1), -(c0 * cc1 - s0 * ss1)  # of g1 = theta0 + pi + 2 atan(A1)
+    span = math.pi + 2.0 * math.atan2(a1 - a0, 1.0 + a0 * a1)  # g1 - g0
+    d2 = 2.0 * (sg1 * cg1 - sg0 * cg0)  # sin(2 g1) - sin(2 g0)
+    rs = math.sqrt(s)
+    i_sc = (0.5 * (sg1 * sg1 - sg0 * sg0) - eps * (cg1 - cg0)) / (s * s)
+    i_cc = ((0.5 + eps * eps) * span + 0.25 * d2 + 2.0 * eps * (sg1 - sg0)) / (s * s * rs)
+    i_ss = (0.5 * span - 0.25 * d2) / (s * rs)
     return i_sc, i_cc, i_ss
 
 
@@ -286,8 +298,12 @@ def _short_bearing_polar(eps, eps_rate, whirl, omega_sum, scale):
     """(F_r, F_t) of :func:`short_bearing_force` for scalars, ``scale`` = mu R L^3 / c^2 (compiled; no checks)."""
     a = eps * (0.5 * omega_sum - whirl)
     b = -eps_rate
-    # B = a sin + b cos = M cos(theta - theta_m), theta_m = atan2(a, b): negative on (theta_m + pi/2, + 3 pi/2)
-    i_sc, i_cc, i_ss = _half_film_integrals(eps, math.atan2(a, b) + 0.5 * math.pi)
+    # B = a sin + b cos = M cos(theta - theta_m), theta_m = atan2(a, b): negative on (theta_m + pi/2, + 3 pi/2),
+    # whose start theta0 has cos theta0 = -sin theta_m = -a / M, sin theta0 = cos theta_m = b / M
+    m = math.sqrt(a * a + b * b)
+    if m == 0.0:  # no squeeze and no wedge: no pressure
+        return 0.0, 0.0
+    i_sc, i_cc, i_ss = _half_film_integrals(eps, -a / m, b / m)
     return scale * (a * i_sc + b * i_cc), scale * (a * i_ss + b * i_sc)
 
 

@@ -19,6 +19,13 @@ relative +-1, 2, 3, 5, 7 and 10 x 1e-15 (``--perturbations``): the
 round-off floor, the differences a
 reordering of floating-point operations makes in this scene).
 
+``--scene 7208-rigid`` times instead the 7208 under F_r = F_a = 3000 N at
+500 rad/s with its estimated rigid cage (outer-land-guided, implicit cage
+damping) at 5 us, the scene of ``validation/studies/rigid_cage.py`` (c)
+(its JSON: ``bench_kernel_ab_7208_rigid.json``). That run is chaotic: a
+change of the last bits grows to the percent within 0.1 s, so its
+round-off floor is of the size of the summary's own scatter.
+
 With ``--cold N`` it measures instead the cold start of both versions: the
 ``profile_reference.py --compile`` job (import, then the README's main job
 for 2 ms, which compiles the kernels) in a fresh process with an empty numba
@@ -29,6 +36,7 @@ import + first run.
 Usage::
 
     python validation/performance/bench_kernel_ab.py [--baseline e61f1e5] [--rounds 9] [--t-end 0.2] [--out validation/out]
+    python validation/performance/bench_kernel_ab.py --scene 7208-rigid --baseline f79cc7f [--rounds 9] [--t-end 0.2]
     python validation/performance/bench_kernel_ab.py --cold 3
 
 Writes ``bench_kernel_ab.json`` into the output folder.
@@ -61,6 +69,10 @@ BASELINE_REV = "e61f1e5"
 SETTINGS = {"implicit spring, dt 8 us": {"dt": 8e-6, "tangential": "implicit"},
             "explicit spring, dt 5 us": {"dt": 5e-6, "tangential": "explicit"}}
 SUMMARY_KEYS = (*KEYS, "friction_power", "friction_torque", "ball_spin")
+#: the scenes: (bearing, scenario, settings)
+SCENES = {"6208": ("6208", SCENE, SETTINGS),
+          "7208-rigid": ("7208", dict(Fr=3000.0, Fa=3000.0, omega=500.0, cage="rigid", cage_damping="implicit",
+                                      initial="analytic"), {"rigid cage, dt 5 us": {"dt": 5e-6}})}
 #: relative moves of F_r whose summary differences from the unmoved baseline make the round-off floor: the last
 #: bits of the input (1e-15 is about 5 units of the last place), both signs, up to 1e-14
 PERTURBATIONS = tuple(s * k * 1e-15 for k in (1, 2, 3, 5, 7, 10) for s in (1.0, -1.0))
@@ -71,10 +83,11 @@ def _moves(n):
     return f"{n} relative amounts (+- {eps[0]:.0e} ... {eps[-1]:.0e})"
 
 
-def run(pkg, t_end, kw):
-    sc = pkg.Scenario(t_end=t_end, sample_dt=1e-3, **dict(SCENE, **kw))
+def run(pkg, t_end, kw, scene="6208"):
+    bearing, base, _settings = SCENES[scene]
+    sc = pkg.Scenario(t_end=t_end, sample_dt=1e-3, **dict(base, **kw))
     engine = importlib.import_module(pkg.__name__ + ".solvers.reference").ReferenceEngine
-    return pkg.Results(engine("6208", sc).run(progress=False))
+    return pkg.Results(engine(bearing, sc).run(progress=False))
 
 
 def cold_starts(baseline, out, n):
@@ -123,8 +136,10 @@ def main(argv=None):
                     metavar=f"1..{len(PERTURBATIONS)}",
                     help="moves of F_r that make the round-off floor (default all: +-1, 2, 3, 5, 7, 10 x 1e-15)")
     ap.add_argument("--cold", type=int, default=0, help="measure N cold starts of each version instead")
+    ap.add_argument("--scene", choices=sorted(SCENES), default="6208", help="the scene (module docstring)")
     ap.add_argument("--out", default=str(HERE.parent / "out"))
     args = ap.parse_args(argv)
+    _bearing, scene, settings = SCENES[args.scene]
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     if args.cold:
@@ -134,22 +149,24 @@ def main(argv=None):
         return
     base = import_baseline(args.baseline, out)
     pkgs = {"baseline": base, "new": eb}
-    report = {"baseline": args.baseline, "t_end": args.t_end, "rounds": args.rounds, "scene": SCENE, "settings": {},
+    report = {"baseline": args.baseline, "t_end": args.t_end, "rounds": args.rounds, "scene": scene, "settings": {},
               "machine": dict(cpu_count=os.cpu_count(), python=sys.version.split()[0]),
               "date": time.strftime("%Y-%m-%d %H:%M")}
-    print(f"6208, Fr = 3000 N, 500 rad/s, cage + lubrication + tangential history, analytic start, "
-          f"T = {args.t_end} s per run; baseline {args.baseline} and this code in one process, {args.rounds} "
+    what = ("6208, Fr = 3000 N, 500 rad/s, cage + lubrication + tangential history, analytic start" if args.scene == "6208"
+            else "7208, Fr = Fa = 3000 N, 500 rad/s, estimated rigid cage (implicit cage damping), lubrication + "
+                 "tangential history, analytic start")
+    print(f"{what}, T = {args.t_end} s per run; baseline {args.baseline} and this code in one process, {args.rounds} "
           "interleaved rounds (baseline, new, new again as control, rotating order)")
     print(f"{'setting':28s} {'baseline':>9s} {'new':>9s} {'new/base':>9s} {'new/new':>8s}  "
           "(wall s per simulated s: medians; ratios: medians of the per-round ratios)")
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         for pkg in pkgs.values():
-            for kw in SETTINGS.values():
-                run(pkg, 2e-3, kw)  # compile / load the caches
-        for label, kw in SETTINGS.items():
+            for kw in settings.values():
+                run(pkg, 2e-3, kw, args.scene)  # compile / load the caches
+        for label, kw in settings.items():
             def one(name, kw=kw):
-                res = run(pkgs["baseline" if name == "baseline" else "new"], args.t_end, kw)
+                res = run(pkgs["baseline" if name == "baseline" else "new"], args.t_end, kw, args.scene)
                 return res.record.wall_s / args.t_end, res
 
             walls, med, ratio, control, last = interleaved_ab(one, args.rounds)
@@ -162,7 +179,7 @@ def main(argv=None):
             # round-off floor: the baseline again with F_r moved by its last bits (the largest of the moves)
             floor = dict.fromkeys(SUMMARY_KEYS, 0.0)
             for eps in PERTURBATIONS[:args.perturbations]:
-                sp = run(base, args.t_end, dict(kw, Fr=SCENE["Fr"] * (1.0 + eps))).summary()
+                sp = run(base, args.t_end, dict(kw, Fr=scene["Fr"] * (1.0 + eps)), args.scene).summary()
                 floor = {k: max(floor[k], _rel(float(sp[k]), float(sb[k]))) for k in SUMMARY_KEYS}
             equal = all(r["equal"] for r in arrays.values())
             report["settings"][label] = dict(kw, walls=walls, median=med, ratio=ratio, control=control,
@@ -177,8 +194,9 @@ def main(argv=None):
                   "baseline: the round-off floor): "
                   + ", ".join(f"{k} {v:.1e} [{floor[k]:.1e}]" for k, v in rel.items()))
             print("  beyond the round-off floor: " + (", ".join(beyond) if beyond else "none"))
-    (out / "bench_kernel_ab.json").write_text(json.dumps(to_jsonable(report), indent=2))
-    print(f"written {out / 'bench_kernel_ab.json'}")
+    name = "bench_kernel_ab.json" if args.scene == "6208" else f"bench_kernel_ab_{args.scene.replace('-', '_')}.json"
+    (out / name).write_text(json.dumps(to_jsonable(report), indent=2))
+    print(f"written {out / name}")
 
 
 def report_section(run):
