@@ -10,7 +10,7 @@ from .data import BallBearing, InputError, Lubricant, default_traction, load_bea
 from .model.load_range import check_load_range, check_run_pressures
 from .model.memory import check_sample_memory
 from .model.record import RunInterrupted
-from .model.scenario import Scenario
+from .model.scenario import Scenario, fixed_step_error
 from .outputs.results import Results
 from .solvers.element import BallBearingElement as _ElementBase
 from .solvers.element.element import element_scenario
@@ -81,6 +81,10 @@ def simulate(bearing, scenario: Scenario | None = None, engine: str = "reference
         from .solvers.reduced.engine import reduced_support_error
 
         err = reduced_support_error(scenario, bearing)
+        if err is not None:
+            raise err
+    else:  # the step error control is the reduced engine's; the others take a fixed step
+        err = fixed_step_error(scenario, engine)
         if err is not None:
             raise err
     check_sample_memory(bearing, scenario)  # before any work: the sampled series must fit in memory
