@@ -31,7 +31,7 @@ import numpy as np
 
 from ..._jit import kernel
 from ...model.contact import _rigid_cage, accumulate_energy, forces
-from ...model.layout import HZ_GEO, NGLOBAL, P_IB, P_IC, P_MAX_OVERLAP, P_MB, P_MC, P_MR, P_RB, P_RP
+from ...model.layout import G_DISS_WORK, G_DRIVE_WORK, HZ_GEO, NGLOBAL, P_IB, P_IC, P_MAX_OVERLAP, P_MB, P_MC, P_MR, P_RB, P_RP
 from ...model.engine_steps import finite, finite_ring, inner_ring_force, set_inner_ring, store_sample
 
 __all__ = ["reduced_evaluate", "run_reduced", "N_WORK", "N_CAGE", "N_CORR", "N_ADAPT", "state_count"]
@@ -83,6 +83,10 @@ N_ADAPT = 15
 FAC_MAX = 2.0
 FAC_MIN = 0.2
 SAFETY = 0.9
+#: The least growth the control takes (smaller ones keep the step; the threshold of CVODE's BDF, Hindmarsh et
+#: al. 2005): a step that changes at every step for a few per cent changes the variable-step BDF2's
+#: coefficients at every step.
+FAC_GROW = 1.5
 
 
 def state_count(z):
@@ -806,6 +810,7 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
     keep_xc = np.zeros((2, 3))
     keep_vc = np.zeros((2, 3))
     keep_cp = np.zeros(nc)
+    glob_n = np.zeros(NGLOBAL)
     t_now = t0
     hs = dt  # the step that reached the state at t_n (the centres' rate (q_n - q_{n-1}) / hs)
     h = dt
@@ -830,8 +835,9 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
         land = False
         sample_here = False
         if adaptive:
-            # the step: the proposal, at most the largest, landing on the next sample time (or t_end); a
-            # remainder under two steps is halved, so that no step is cut to a sliver
+            # the step: the proposal, at most the largest, landing on the next sample time (or t_end) in equal
+            # steps (a step may stretch to 1 / SAFETY of the proposal to land), so that the steps stay constant
+            # between samples where the proposal does
             t_samp = (adapt[A_KSAMP] + 1.0) * adapt[A_SDT]
             t_end = adapt[A_TEND]
             if t_now >= t_end - 1e-9 * adapt[A_SDT]:
@@ -843,11 +849,12 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
                 sample_here = False
             h = min(h, adapt[A_HMAX])
             rem = target - t_now
-            if rem <= h * (1.0 + 1e-9):
+            n_left = math.ceil(rem / min(h / SAFETY, adapt[A_HMAX]) - 1e-9)
+            if n_left <= 1:
                 h = rem
                 land = True
-            elif rem < 2.0 * h:
-                h = 0.5 * rem
+            else:
+                h = rem / n_left
             t = t_now
             t1 = target if land else t_now + h
             ratio = h / hs
@@ -871,6 +878,8 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
                     keep_vc[r, k] = vc[r, k]
             for k in range(nc):
                 keep_cp[k] = cage_prev[k]
+            for k in range(NGLOBAL):
+                glob_n[k] = glob[k]  # the powers of the committed evaluation at t_n
         else:
             t = t0 + step * dt
             t1 = t0 + (step + 1) * dt
@@ -1201,6 +1210,8 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
                 fac = FAC_MAX
             else:
                 fac = min(FAC_MAX, max(FAC_MIN, SAFETY * err ** (-1.0 / 3.0)))
+                if 1.0 < fac < FAC_GROW:  # small growths left out (CVODE's threshold): steps that stay put
+                    fac = 1.0
             if rejected > 0 and fac > 1.0:
                 fac = 1.0
             rejected = 0
@@ -1212,7 +1223,18 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
             adapt[A_T] = t_now
             adapt[A_HPREV] = hs
             adapt[A_H] = h
-        accumulate_energy(glob, hs if adaptive else dt)
+        if adaptive:
+            # the energy integrals by the trapezoidal rule over the step: the steps follow the motion (short where
+            # a ball enters the load zone), so the fixed step's rectangle at the step's end would weight the
+            # powers by where the steps fall
+            accumulate_energy(glob, 0.5 * hs)
+            glob_n[G_DRIVE_WORK] = glob[G_DRIVE_WORK]
+            glob_n[G_DISS_WORK] = glob[G_DISS_WORK]
+            accumulate_energy(glob_n, 0.5 * hs)
+            glob[G_DRIVE_WORK] = glob_n[G_DRIVE_WORK]
+            glob[G_DISS_WORK] = glob_n[G_DISS_WORK]
+        else:
+            accumulate_energy(glob, dt)
         if adaptive:
             want = sample_here and land and n_samp < s_t.shape[0]
             if sample_here and land:
