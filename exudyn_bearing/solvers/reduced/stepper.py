@@ -830,6 +830,7 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
     step = 0
     force_jac = False
     rejected = 0  # rejections at the present t_n
+    h_prop = h
     while step < n_steps:
         ratio = 1.0
         land = False
@@ -848,6 +849,7 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
                 target = t_end
                 sample_here = False
             h = min(h, adapt[A_HMAX])
+            h_prop = h
             rem = target - t_now
             n_left = math.ceil(rem / min(h / SAFETY, adapt[A_HMAX]) - 1e-9)
             if n_left <= 1:
@@ -1150,7 +1152,7 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
             if not math.isfinite(err):
                 err = 1e300
             if err > 1.0:
-                if h <= adapt[A_HMIN] * (1.0 + 1e-9):
+                if min(h, h_prop) <= adapt[A_HMIN] * (1.0 + 1e-9):
                     adapt[A_T] = t_now
                     adapt[A_ERR] = err
                     return step, n_samp, 3
