@@ -290,3 +290,20 @@ def test_step_control_stops_naming_the_tolerance_at_its_least_step():
     sc = eb.Scenario(Fr=3000.0, omega=500.0, t_end=2e-3, dt=2e-5, tolerance=1e-9, **COMMON)
     with pytest.raises(SimulationError, match=r"^tolerance: .* least size 1e-07 s"):
         eb.simulate("6208", sc, engine="reduced")
+
+
+def test_simulate_command_takes_the_tolerance(capsys):
+    # --tolerance: the reduced engine's step control (the steps in the printed summary); the default engine
+    # (reference) refuses it naming it
+    from exudyn_bearing.cli import main
+
+    args = ["simulate", "6208", "--Fr", "3000", "--omega", "500", "--t-end", "2e-3", "--dt", "2e-5", "--cage", "none",
+            "--traction-level", "ellipse", "--tolerance", "1e-5"]
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        assert main(args + ["--engine", "reduced"]) == 0
+    import re
+
+    assert re.search(r"\nstep_control +tolerance 1e-05: \d+ steps, \d+ rejected", capsys.readouterr().out)
+    assert main(args) == 2
+    assert "error: tolerance: the reference engine takes the fixed step" in capsys.readouterr().err

@@ -73,8 +73,8 @@ class ExudynEngine:
                                           ObjectGround, ObjectMassPoint)
 
         self.exu = exu
-        if (err := fixed_step_error(scenario, "exudyn")) is not None:  # its step is fixed
-            raise err
+        if scenario.tolerance is not None:  # its step is fixed: the step error control is the reduced engine's
+            raise fixed_step_error(scenario, "exudyn")
         b = load_bearing(bearing)
         if scenario.Pd is not None:
             b = b.with_clearance(scenario.Pd)
