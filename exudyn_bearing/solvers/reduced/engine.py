@@ -99,7 +99,8 @@ def _orbital(wb, phi):
 
 class ReducedEngine:
     """The reduced engine for one bearing, lubricant and scenario (``Scenario.dt`` its step, typically
-    10-50 us; the scenario's ``integrator`` names the reference engine's scheme and is not used).
+    10-50 us, or with ``Scenario.tolerance`` its first step, the steps then chosen by the step error control,
+    docs/theory/reduced.md; the scenario's ``integrator`` names the reference engine's scheme and is not used).
 
     Parameters as :class:`~exudyn_bearing.solvers.reference.ReferenceEngine`; a scenario asking for what the
     engine does not model raises InputError naming it (:func:`reduced_support_error`).
