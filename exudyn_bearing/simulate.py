@@ -106,7 +106,7 @@ def simulate(bearing, scenario: Scenario | None = None, engine: str = "reference
         elif engine == "reduced":
             from .solvers.reduced import ReducedEngine
 
-            if scenario.dt < 5e-6:  # allowed, but it is the reference engine's step at a higher cost
+            if scenario.dt < 5e-6 and scenario.tolerance is None:  # allowed, but the reference engine's step
                 warnings.warn(f"dt: {scenario.dt:g} s is a step of the reference engine; the reduced engine's steps "
                               "are 1e-5 to 1e-4 s (docs/theory/reduced.md), and at this one it costs more than the "
                               "reference engine", UserWarning, stacklevel=2)
