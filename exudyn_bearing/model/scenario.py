@@ -252,7 +252,7 @@ class Scenario:
         angular velocities, the inner ring's and the rigid cage's, as
         surface speeds) stays below ``tolerance`` times the inner ring's
         speed at the pitch radius; ``dt`` is then the first step, the steps
-        lie between 1 us and min(1e-4 s, ``sample_dt``) and land on the
+        lie between 0.1 us and min(1e-4 s, ``sample_dt``) and land on the
         sample times. A number in (0, 1); None (default): the fixed step
         ``dt``. The other engines have fixed steps and refuse it.
     sample_dt : float
