@@ -10,7 +10,7 @@ from .data import BallBearing, InputError, Lubricant, default_traction, load_bea
 from .model.load_range import check_load_range, check_run_pressures
 from .model.memory import check_sample_memory
 from .model.record import RunInterrupted
-from .model.scenario import Scenario, engine_speed_error
+from .model.scenario import Scenario, engine_speed_error, fixed_step_error
 from .outputs.results import Results
 from .solvers.element import BallBearingElement as _ElementBase
 from .solvers.element.element import element_scenario
@@ -86,6 +86,10 @@ def simulate(bearing, scenario: Scenario | None = None, engine: str = "reference
         err = reduced_support_error(scenario, bearing)
         if err is not None:
             raise err
+    else:  # the step error control is the reduced engine's; the others take a fixed step
+        err = fixed_step_error(scenario, engine)
+        if err is not None:
+            raise err
     check_sample_memory(bearing, scenario)  # before any work: the sampled series must fit in memory
     # the applied loads within the elastic contact model before the engines (and their compilation) start
     check_load_range(bearing if scenario.Pd is None else bearing.with_clearance(scenario.Pd), scenario.Fr,
@@ -105,7 +109,7 @@ def simulate(bearing, scenario: Scenario | None = None, engine: str = "reference
         elif engine == "reduced":
             from .solvers.reduced import ReducedEngine
 
-            if scenario.dt < 5e-6:  # allowed, but it is the reference engine's step at a higher cost
+            if scenario.dt < 5e-6 and scenario.tolerance is None:  # allowed, but the reference engine's step
                 warnings.warn(f"dt: {scenario.dt:g} s is a step of the reference engine; the reduced engine's steps "
                               "are 1e-5 to 1e-4 s (docs/theory/reduced.md), and at this one it costs more than the "
                               "reference engine", UserWarning, stacklevel=2)

@@ -220,3 +220,90 @@ def test_a_reference_engine_step_is_said():
     sc = eb.Scenario(Fr=3000.0, omega=500.0, t_end=1e-5, dt=2e-6, sample_dt=1e-5, **COMMON_NO_SAMPLE)
     with pytest.warns(UserWarning, match=r"^dt: 2e-06 s is a step of the reference engine"):
         eb.simulate("6208", sc, engine="reduced")
+
+
+# the step error control (Scenario.tolerance; docs/theory/reduced.md, "Step error control"): 6208 radial, 10 ms from
+# the analytic start at a first step of 5 us, against the fixed step of 2.5 us (its own step error far below the
+# tolerances' errors: the local error is third order in the step)
+STEP_FIELDS = dict(Fr=3000.0, omega=500.0, t_end=0.01, **COMMON)
+
+
+@pytest.fixture(scope="module")
+def step_runs():
+    def run(**kw):
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            return eb.simulate("6208", eb.Scenario(**STEP_FIELDS, **kw), engine="reduced")
+
+    return {"fine": run(dt=2.5e-6), 1e-5: run(dt=5e-6, tolerance=1e-5), 1e-6: run(dt=5e-6, tolerance=1e-6)}
+
+
+def test_tighter_tolerance_takes_more_steps_and_errs_less(step_runs):
+    fine = step_runs["fine"]
+
+    def error(res):  # the balls' orbital speeds at every sample against the fine run's, and the ring's position
+        assert np.allclose(res.t, fine.t, rtol=0.0, atol=1e-12)  # the samples at the same times
+        speed = np.max(np.abs(res.cage_speed_series() - fine.cage_speed_series()))
+        ring = np.max(np.abs(res.data["ring"][:, :3] - fine.data["ring"][:, :3]))
+        return speed, ring
+
+    loose, tight = step_runs[1e-5], step_runs[1e-6]
+    assert tight.steps > loose.steps
+    (s1, r1), (s2, r2) = error(loose), error(tight)
+    assert s2 < s1 and r2 < r1, (s1, s2, r1, r2)
+
+
+def test_step_control_summary(step_runs):
+    for tol in (1e-5, 1e-6):
+        res = step_runs[tol]
+        work = res.summary(fraction=0.5)["reduced_work"]
+        sizes = res.record.step_sizes
+        assert work["tolerance"] == tol and len(sizes) == res.steps
+        assert abs(np.sum(sizes) - STEP_FIELDS["t_end"]) <= 1e-12  # the steps taken make up the run
+        assert work["dt_min"] == np.min(sizes) and work["dt_max"] == np.max(sizes)
+        assert work["dt_min"] <= work["dt_median"] <= work["dt_max"] <= COMMON["sample_dt"] * (1 + 1e-9)
+        assert work["dt_min"] >= eb.solvers.reduced.engine.MIN_STEP
+        assert work["steps_rejected"] >= 0 and 0 <= work["restarts"] <= work["steps_rejected"]
+        assert "step_control" in str(res.summary(fraction=0.5))
+    # the fixed step: its dt, nothing rejected, no step sizes kept
+    work = step_runs["fine"].summary(fraction=0.5)["reduced_work"]
+    assert work["tolerance"] is None and work["steps_rejected"] == 0 and work["dt_min"] == work["dt_max"] == 2.5e-6
+
+
+@pytest.mark.parametrize("tol", [0.0, -1e-5, float("nan"), float("inf"), 1.0, True, "1e-5"])
+def test_bad_tolerance_is_refused_by_name(tol):
+    with pytest.raises(InputError, match="^tolerance:"):
+        eb.Scenario(Fr=3000.0, omega=500.0, dt=2e-5, tolerance=tol, **COMMON)
+
+
+@pytest.mark.parametrize("engine", ["reference", "exudyn"])
+def test_fixed_step_engines_refuse_a_tolerance_by_name(engine):
+    sc = eb.Scenario(Fr=3000.0, omega=500.0, t_end=2e-4, dt=2e-6, tolerance=1e-5, **COMMON)
+    with pytest.raises(InputError, match=f"^tolerance: the {engine} engine takes the fixed step"):
+        eb.simulate("6208", sc, engine=engine)
+
+
+def test_step_control_stops_naming_the_tolerance_at_its_least_step():
+    # a tolerance far below what the start off the speeds' balance allows at the least step: a clear error
+    from exudyn_bearing.model.stability import SimulationError
+
+    sc = eb.Scenario(Fr=3000.0, omega=500.0, t_end=2e-3, dt=2e-5, tolerance=1e-9, **COMMON)
+    with pytest.raises(SimulationError, match=r"^tolerance: .* least size 1e-07 s"):
+        eb.simulate("6208", sc, engine="reduced")
+
+
+def test_simulate_command_takes_the_tolerance(capsys):
+    # --tolerance: the reduced engine's step control (the steps in the printed summary); the default engine
+    # (reference) refuses it naming it
+    from exudyn_bearing.cli import main
+
+    args = ["simulate", "6208", "--Fr", "3000", "--omega", "500", "--t-end", "2e-3", "--dt", "2e-5", "--cage", "none",
+            "--traction-level", "ellipse", "--tolerance", "1e-5"]
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        assert main(args + ["--engine", "reduced"]) == 0
+    import re
+
+    assert re.search(r"\nstep_control +tolerance 1e-05: \d+ steps, \d+ rejected", capsys.readouterr().out)
+    assert main(args) == 2
+    assert "error: tolerance: the reference engine takes the fixed step" in capsys.readouterr().err

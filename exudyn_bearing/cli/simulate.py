@@ -49,7 +49,11 @@ def add_parser(sub):
     p.add_argument("--ramp", type=finite_float, nargs=3, metavar=("UP", "STEADY", "DOWN"),
                    help="speed protocol [s]: ramp-up, steady and slow-down durations (from rest; "
                         "default: none, the run starts at speed)")
-    p.add_argument("--dt", type=finite_float, default=1e-6, help="time step [s]")
+    p.add_argument("--dt", type=finite_float, default=1e-6, help="time step [s] (with --tolerance: the first step)")
+    p.add_argument("--tolerance", type=finite_float, default=None,
+                   help="the reduced engine's step error control: each step's local error of the speeds below "
+                        "TOLERANCE times the inner ring's speed at the pitch radius (e.g. 1e-5; "
+                        "docs/theory/reduced.md); default: the fixed step --dt")
     p.add_argument("--sample-dt", type=finite_float, default=1e-4, help="output interval [s]")
     p.add_argument("--integrator", choices=("verlet", "rk4"), default="verlet",
                    help="explicit integrator (rk4 needs a history-free --friction)")
@@ -113,6 +117,7 @@ def scenario_from_args(args) -> Scenario:
                          "--Fr 3000 --omega 500; --omega 0 for a run at rest)")
     omega_outer = args.omega_outer if args.rpm_outer is None else args.rpm_outer * RPM_TO_RAD_S
     kw = dict(Fr=args.Fr, Fa=args.Fa, omega=omega, omega_outer=omega_outer, Pd=args.Pd, dt=args.dt,
+              tolerance=args.tolerance,
               sample_dt=args.sample_dt, integrator=args.integrator, friction=args.friction,
               tangential=args.tangential, cage_damping=args.cage_damping, hertz=args.hertz, film=args.film,
               cage=args.cage, pocket_film=args.pocket_film,

@@ -26,9 +26,9 @@ from .layout import MAX_DEFECTS
 from .motion import omega_profile
 
 __all__ = ["Scenario", "FRICTION_MODELS", "INTEGRATORS", "INTEGRATOR_SOLVERS", "MULTI_EVALUATION_SOLVERS",
-           "TRACTION_LEVELS", "INITIAL_STATES", "CONTROLS", "history_friction_error", "ellipse_rolling_floor",
-           "rolling_speed_floor", "DEFAULT_REGULARIZING_SPEED", "OUTER_RING_ENGINES", "OUTER_RING_REFUSALS",
-           "engine_speed_error"]
+           "TRACTION_LEVELS", "INITIAL_STATES", "CONTROLS", "history_friction_error", "fixed_step_error",
+           "ellipse_rolling_floor", "rolling_speed_floor", "DEFAULT_REGULARIZING_SPEED", "OUTER_RING_ENGINES",
+           "OUTER_RING_REFUSALS", "engine_speed_error"]
 
 #: Tangential force models: Cundall-Strack spring with Coulomb cap (contact
 #: history), regularised Coulomb on the slip velocity (history-free), none.
@@ -48,6 +48,16 @@ INTEGRATORS = ("verlet", "rk4")
 INTEGRATOR_SOLVERS = {"verlet": "VelocityVerlet", "rk4": "RK44"}
 #: Exudyn's explicit solvers that evaluate the forces more than once per step (stages, rejected adaptive steps).
 MULTI_EVALUATION_SOLVERS = ("ExplicitMidpoint", "RK33", "RK44", "RK67", "ODE23", "DOPRI5", "DVERK6")
+
+
+def fixed_step_error(scenario, engine: str):
+    """The InputError of a ``scenario`` with a ``tolerance`` (the reduced engine's step error control) given to
+    ``engine``, whose step is fixed (the reference engine, the Exudyn engine); None without a tolerance."""
+    if scenario.tolerance is None:
+        return None
+    return InputError(f"tolerance: the {engine} engine takes the fixed step dt ({scenario.dt:g} s) and has no step "
+                      "error control; the tolerance is the reduced engine's (engine='reduced', --engine reduced), or "
+                      "give dt alone")
 
 
 def history_friction_error(friction: str, solver: str, parameter: str = "solverType"):
@@ -257,7 +267,18 @@ class Scenario:
         Kinematic hypothesis of the quasi-static start.
     integrator : {"verlet", "rk4"}
     dt : float
-        Time step [s] (default 1 us, the DEM papers' step).
+        Time step [s] (default 1 us, the DEM papers' step); with
+        ``tolerance``, the first step.
+    tolerance : float or None
+        The reduced engine's step error control (docs/theory/reduced.md,
+        "Step error control"): the steps are chosen so that each step's
+        estimated local error of every speed (the balls' orbital speeds and
+        angular velocities, the inner ring's and the rigid cage's, as
+        surface speeds) stays below ``tolerance`` times the inner ring's
+        speed at the pitch radius; ``dt`` is then the first step, the steps
+        lie between 0.1 us and min(1e-4 s, ``sample_dt``) and land on the
+        sample times. A number in (0, 1); None (default): the fixed step
+        ``dt``. The other engines have fixed steps and refuse it.
     sample_dt : float
         Output interval [s].
     defects : tuple of Defect (or dicts of their fields), or one of them
@@ -330,6 +351,7 @@ class Scenario:
     control: str = "auto"
     integrator: str = "verlet"
     dt: float = 1e-6
+    tolerance: float | None = None
     sample_dt: float = 1e-4
     defects: tuple = ()
     signal_dt: float | None = None
@@ -391,6 +413,13 @@ class Scenario:
         if self.dt > 1e-4:  # first: a huge dt is the mistake, not the sample interval below it
             raise InputError(f"dt: {self.dt:g} s is far above any stable step of a Hertz contact (at most 1e-4 s; "
                              "typical 1e-6 to 8e-6 s; the reduced engine's 1e-5 to 1e-4 s)")
+        if self.tolerance is not None:
+            tol = self.tolerance
+            if isinstance(tol, bool) or not isinstance(tol, (int, float)) or not math.isfinite(tol) \
+                    or not 0.0 < tol < 1.0:
+                raise InputError(f"tolerance: the reduced engine's local error per step, relative, must be a number "
+                                 f"in (0, 1) (e.g. 1e-4), or None for the fixed step dt; got {tol!r}")
+            object.__setattr__(self, "tolerance", float(tol))
         if self.sample_dt < self.dt:
             raise InputError(f"sample_dt: must be >= dt ({self.dt}), got {self.sample_dt}")
         if self.t_end < self.sample_dt:

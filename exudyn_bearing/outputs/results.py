@@ -186,7 +186,9 @@ SUMMARY_DESCRIPTIONS = {
     "not_converged": "summary keys whose values are not converged in the step (see friction_outputs_converged)",
     "reduced_work": "the reduced engine's work over the whole run: Newton iterations of the balls' force balance per "
                     "step (mean, most), force evaluations per step, steps whose balance did not converge within "
-                    "its iteration limit (the run went on from the last iterate), steps that retook the Jacobians",
+                    "its iteration limit (the run went on from the last iterate), steps that retook the Jacobians; "
+                    "its step error control (Scenario.tolerance; None: the fixed step dt): the steps rejected, the "
+                    "restarts, the least, median and largest step taken [s] (the steps taken: steps)",
     **WHOLE_LOSS_DESCRIPTIONS,
 }
 

@@ -76,6 +76,11 @@ def summary_rows(summary, t_end=None):
     if t_end is not None and "t_end" in summary and not math.isclose(summary["t_end"], t_end, rel_tol=1e-9):
         rows = [(k, f"{t_end:g} s (last sample at {summary['t_end']:.6g} s)", None) if k == "t_end" else r
                 for r in rows for k in (r[0],)]
+    work = summary.get("reduced_work") or {}
+    if work.get("tolerance") is not None:  # the reduced engine's step error control: the steps it took
+        rows.append(("step_control", f"tolerance {work['tolerance']:g}: {summary.get('steps')} steps, "
+                                     f"{work['steps_rejected']} rejected, {work['restarts']} restarts; dt min / median "
+                                     f"/ max {work['dt_min']:.3g} / {work['dt_median']:.3g} / {work['dt_max']:.3g} s"))
     rows += [(f"power_loss.{k}", v, "W") for k, v in summary["power_loss"].items()]
     rows.append(("q_max_method", ", ".join(f"{race}: {m}" for race, m in summary["q_max_method"].items())))
     rows += [(f"energy_source.{k}", v) for k, v in summary["energy_source"].items()]

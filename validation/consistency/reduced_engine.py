@@ -27,10 +27,12 @@ whose name contains one of its words (the run-up with "run-up"); ``--jac-every``
 how long the reduced engine keeps its Jacobians (:data:`exudyn_bearing.solvers.reduced.engine.JAC_EVERY`,
 ``RING_EVERY``: fewer force evaluations per step, at the accuracy the printout shows). In the cases compared
 with the quasi-static equilibrium the reference engine also runs once at 1 and 0.5 us, untimed (its difference
-from the equilibrium shrinks with its step: its step error).
+from the equilibrium shrinks with its step: its step error). ``--tolerance`` adds runs of the reduced engine
+under its step error control (``Scenario.tolerance``, first step 20 us; docs/theory/reduced.md, "Step error
+control"), one per tolerance, with the steps they took.
 
     python validation/consistency/reduced_engine.py [--repeats 3] [--dt 2e-5 4e-5 1e-4] [--quick] [--case ACBB]
-        [--jac-every 2] [--ring-every 1]
+        [--jac-every 2] [--ring-every 1] [--tolerance 1e-5 1e-6]
 """
 from __future__ import annotations
 
@@ -41,6 +43,7 @@ import warnings
 import numpy as np
 
 import exudyn_bearing as eb
+from exudyn_bearing.model.stability import SimulationError
 from exudyn_bearing.simulate import quasistatic_start
 from exudyn_bearing.solvers.reduced import engine as reduced
 
@@ -72,12 +75,14 @@ ANGLE_CRITERIA = {"alpha_inner": 0.1, "alpha_outer": 0.1}
 #: (the cage's first revolution ends near 40 ms; the check starts a quarter into the ramp).
 RUNUP_TOL = 0.02
 RUNUP_FROM = 0.005
+#: The first step of the runs under the step error control [s].
+ADAPTIVE_FIRST_DT = 2e-5
 KEYS = ("q_max_inner", "q_max_outer", "alpha_inner", "alpha_outer", "cage_speed", "dissipation", "drive_power",
         "energy_residual")
 
 
-def run(bearing, fields, t_end, engine, dt):
-    sc = eb.Scenario(**{**COMMON, **fields}, t_end=t_end, dt=dt)
+def run(bearing, fields, t_end, engine, dt, tolerance=None):
+    sc = eb.Scenario(**{**COMMON, **fields}, t_end=t_end, dt=dt, tolerance=tolerance)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         res = eb.simulate(bearing, sc, engine=engine)
@@ -118,7 +123,24 @@ def differences(s, ref, failed, what, check=True):
     return parts
 
 
-def runup(dts, repeats):
+def runs_of(dts, tolerances):
+    """(engine, dt, tolerance, tag) of the runs of a case: the reference engine, the reduced engine at each step,
+    then under its step control at each tolerance (first step ADAPTIVE_FIRST_DT)."""
+    return ([("reference", REFERENCE_DT, None, f"reference dt={REFERENCE_DT:g}")]
+            + [("reduced", d, None, f"reduced dt={d:g}") for d in dts]
+            + [("reduced", ADAPTIVE_FIRST_DT, t, f"reduced tol={t:g}") for t in tolerances])
+
+
+def steps_text(res):
+    """The steps a run under the step control took (empty for a fixed step)."""
+    w = getattr(res.record, "reduced_stats", None)
+    if not w or w.get("tolerance") is None:
+        return ""
+    return (f"  steps {res.steps} (rejected {w['steps_rejected']}, restarts {w['restarts']}; dt min / median / max "
+            f"{w['dt_min'] * 1e6:.3g} / {w['dt_median'] * 1e6:.3g} / {w['dt_max'] * 1e6:.3g} us)")
+
+
+def runup(dts, repeats, tolerances=()):
     """The 6208 under 3000 N thrust run up from rest to 500 rad/s in 20 ms (the DEM papers' ramp; no cage, every
     ball loaded alike, so the balls do not collide): the balls' mean orbital speed of each reduced run against
     the reference engine's at every sample from RUNUP_FROM on (interpolated to the reference's sample times);
@@ -129,29 +151,37 @@ def runup(dts, repeats):
     fields = dict(Fr=0.0, Fa=3000.0, cage="none", traction_level="ellipse", t_steady=0.02, t_ramp_down=0.0,
                   sample_dt=5e-4)
     runs = {}
-    for engine, dt in [("reference", REFERENCE_DT)] + [("reduced", d) for d in dts]:
+    for engine, dt, tol, tag in runs_of(dts, tolerances):
         walls = []
-        for _ in range(repeats):
-            with warnings.catch_warnings():
-                warnings.simplefilter("ignore")
-                res = eb.simulate("6208", eb.Scenario.papers_protocol(**fields, dt=dt), engine=engine)
-            walls.append(res.wall_s / float(res.t[-1]))
-        runs[(engine, dt)] = (res.t, res.cage_speed_series(), statistics.median(walls))
-    t, ref, ref_wall = runs[("reference", REFERENCE_DT)]
+        try:
+            for _ in range(repeats):
+                with warnings.catch_warnings():
+                    warnings.simplefilter("ignore")
+                    res = eb.simulate("6208", eb.Scenario.papers_protocol(**fields, dt=dt, tolerance=tol),
+                                      engine=engine)
+                walls.append(res.wall_s / float(res.t[-1]))
+        except SimulationError as exc:  # a tolerance the step control cannot hold: said, the others go on
+            if tol is None:
+                raise
+            print(f"{tag:>22}: stopped: {exc}")
+            failed.append(f"run-up {tag} stopped")
+            continue
+        runs[tag] = (res.t, res.cage_speed_series(), statistics.median(walls), steps_text(res))
+    t, ref, ref_wall, _ = runs[f"reference dt={REFERENCE_DT:g}"]
     late = t >= RUNUP_FROM
-    for (engine, dt), (t2, speed, wall) in runs.items():
-        if engine == "reference":
-            print(f"{'reference dt=' + format(dt, 'g'):>22}: wall/simulated s {wall:.3g}")
+    for tag, (t2, speed, wall, steps) in runs.items():
+        if tag.startswith("reference"):
+            print(f"{tag:>22}: wall/simulated s {wall:.3g}")
             continue
         rel = (np.interp(t, t2, speed) - ref) / ref
         worst = float(np.max(np.abs(rel[late])))
         ok = worst <= RUNUP_TOL
         if not ok:
-            failed.append(f"run-up reduced dt={dt:g}")
+            failed.append(f"run-up {tag}")
         k = int(np.argmax(np.abs(rel) * late))
-        print(f"{'reduced dt=' + format(dt, 'g'):>22}: largest |difference| {100 * worst:.3f} % at {1e3 * t[k]:.1f} ms "
+        print(f"{tag:>22}: largest |difference| {100 * worst:.3f} % at {1e3 * t[k]:.1f} ms "
               f"({'ok' if ok else 'FAILS'} {100 * RUNUP_TOL:g} %)  wall/simulated s {wall:.3g} "
-              f"(reference/reduced {ref_wall / wall:.3g})")
+              f"(reference/reduced {ref_wall / wall:.3g}){steps}")
     return failed
 
 
@@ -164,6 +194,8 @@ def main(argv=None):
                     help=f"the reduced engine's JAC_EVERY (steps a Jacobian is kept; default {reduced.JAC_EVERY})")
     ap.add_argument("--ring-every", type=int, default=None,
                     help=f"the reduced engine's RING_EVERY (default {reduced.RING_EVERY})")
+    ap.add_argument("--tolerance", type=float, nargs="+", default=[],
+                    help="also the reduced engine under its step error control at these tolerances")
     ap.add_argument("--case", nargs="+", default=None,
                     help="run only the cases whose name contains one of these words ('run-up': the transient)")
     args = ap.parse_args(argv)
@@ -184,12 +216,18 @@ def main(argv=None):
         print(f"\n== {name}, {t_end:g} s simulated, summary over the second half")
         rows = {}
         walls = {}
-        for engine, dt in [("reference", REFERENCE_DT)] + [("reduced", d) for d in args.dt]:
-            tag = f"{engine} dt={dt:g}"
+        for engine, dt, tol, tag in runs_of(args.dt, args.tolerance):
             times = []
-            for _ in range(repeats):
-                res, s = run(bearing, fields, t_end, engine, dt)
-                times.append(res.wall_s / t_end)
+            try:
+                for _ in range(repeats):
+                    res, s = run(bearing, fields, t_end, engine, dt, tol)
+                    times.append(res.wall_s / t_end)
+            except SimulationError as exc:  # a tolerance the step control cannot hold: said, the others go on
+                if tol is None:
+                    raise
+                print(f"{tag:>22}: stopped: {exc}")
+                failed.append(f"{name} {tag} stopped")
+                continue
             rows[tag] = s
             walls[tag] = statistics.median(times)
             stats = getattr(res.record, "reduced_stats", None)
@@ -197,7 +235,7 @@ def main(argv=None):
                     f"{stats['newton_per_step']:.3g} (most {stats['newton_max']}, unconverged steps "
                     f"{stats['unconverged_steps']})") if stats else ""
             print(f"{tag:>22}: " + "  ".join(f"{k} {s[k]:.6g}" for k in KEYS)
-                  + f"  steps {s['steps']}  wall/simulated s {walls[tag]:.3g}{work}")
+                  + f"  steps {s['steps']}  wall/simulated s {walls[tag]:.3g}{work}{steps_text(res)}")
         ref_tag = f"reference dt={REFERENCE_DT:g}"
         ref = rows[ref_tag]
         for tag, s in rows.items():
@@ -219,7 +257,7 @@ def main(argv=None):
                                     check=tag.startswith("reduced"))
                 print(f"{tag:>22} - quasi-static: " + "  ".join(parts))
     if chosen("run-up"):
-        failed += runup(args.dt, repeats)
+        failed += runup(args.dt, repeats, args.tolerance)
     print("\nall criteria hold" if not failed else "\nFAILS: " + "; ".join(failed))
     return 1 if failed else 0
 

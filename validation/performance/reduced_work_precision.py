@@ -10,8 +10,11 @@ Wall: the integration's wall time per simulated second (the compiled kernels loa
 median of --repeat runs, every run in this session. Where an engine's error stays put as its step shrinks,
 the rest is not step error: for the reduced engine the reduction's own difference from the resolved
 dynamics (the contact vibration left out), for the reference engine the fine reference's own step error.
+``--tolerance`` adds runs of the reduced engine under its step error control (``Scenario.tolerance``, first
+step 20 us; docs/theory/reduced.md, "Step error control"), one per tolerance, with the steps they took (rejected,
+least / median / largest step).
 
-    python validation/performance/reduced_work_precision.py [--repeat 3]
+    python validation/performance/reduced_work_precision.py [--repeat 3] [--tolerance 1e-5 3e-6 1e-6]
 
 Writes reduced_work_precision.png/.csv (wall, errors per engine and step) and reduced_work_precision.json into
 validation/out/.
@@ -36,19 +39,24 @@ FINE = ("reference", 5e-7)
 RUNS = [("reference", h) for h in (1e-6, 2e-6, 4e-6, 8e-6)] + [("reduced", h) for h in (1e-5, 2e-5, 4e-5, 1e-4)]
 #: summary keys whose relative error is measured (dissipation first: the figure's left panel)
 KEYS = ("dissipation", "q_max_inner", "cage_speed", "drive_power")
+#: The first step of the runs under the step error control [s].
+ADAPTIVE_FIRST_DT = 2e-5
 
 
-def run(engine, dt):
-    """One run: (summary over the second half, wall time per simulated second)."""
+def run(engine, dt, tolerance=None):
+    """One run: (summary over the second half, wall time per simulated second); ``tolerance`` the reduced
+    engine's step error control (dt its first step)."""
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        res = eb.simulate("6208", eb.Scenario(**FIELDS, t_end=T_END, dt=dt), engine=engine)
+        res = eb.simulate("6208", eb.Scenario(**FIELDS, t_end=T_END, dt=dt, tolerance=tolerance), engine=engine)
         return res.summary(fraction=0.5), res.wall_s / T_END
 
 
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--repeat", type=int, default=3, help="timed runs per engine and step (median)")
+    ap.add_argument("--tolerance", type=float, nargs="+", default=[],
+                    help="also the reduced engine under its step error control at these tolerances")
     args = ap.parse_args(argv)
     OUT.mkdir(exist_ok=True)
     print(f"6208, Fr {FIELDS['Fr']:g} N, {FIELDS['omega']:g} rad/s, no cage, ellipse traction, {T_END:g} s, summary "
@@ -58,21 +66,31 @@ def main(argv=None):
     print(f"  fine reference {FINE[1] * 1e6:g} us: " + "  ".join(f"{k} {fine[k]:.7g}" for k in KEYS)
           + f"  wall/simulated s {fine_wall:.3g}")
     rows = []
-    for engine, dt in RUNS:
+    for engine, dt, tol in [(e, h, None) for e, h in RUNS] + [("reduced", ADAPTIVE_FIRST_DT, t) for t in args.tolerance]:
         walls, s = [], None
+        name = f"{dt * 1e6:5g} us" if tol is None else f"tolerance {tol:g}"
         try:
             for _ in range(max(1, args.repeat)):
-                s, w = run(engine, dt)
+                s, w = run(engine, dt, tol)
                 walls.append(w)
         except (SimulationError, InputError) as e:
-            print(f"  {engine:9s} {dt * 1e6:5g} us: left out ({type(e).__name__}: {str(e)[:120]})")
+            print(f"  {engine:9s} {name}: left out ({type(e).__name__}: {str(e)[:120]})")
             continue
         err = {k: abs(s[k] / fine[k] - 1.0) for k in KEYS}
         wall = statistics.median(walls)
-        rows.append({"engine": engine, "dt": dt, "wall_per_s": wall, **{f"err_{k}": v for k, v in err.items()},
-                     **{k: s[k] for k in KEYS}})
-        print(f"  {engine:9s} {dt * 1e6:5g} us: wall/simulated s {wall:7.3g}  errors: "
-              + "  ".join(f"{k} {100 * err[k]:.3g} %" for k in KEYS))
+        row = {"engine": engine if tol is None else "reduced, step control", "dt": dt, "tolerance": tol,
+               "wall_per_s": wall, "steps": s["steps"], **{f"err_{k}": v for k, v in err.items()},
+               **{k: s[k] for k in KEYS}}
+        steps = ""
+        if tol is not None:
+            w_ = s["reduced_work"]
+            row.update({k: w_[k] for k in ("steps_rejected", "restarts", "dt_min", "dt_median", "dt_max")})
+            steps = (f"  steps {s['steps']} (rejected {w_['steps_rejected']}, restarts {w_['restarts']}; dt min / "
+                     f"median / max {w_['dt_min'] * 1e6:.3g} / {w_['dt_median'] * 1e6:.3g} / "
+                     f"{w_['dt_max'] * 1e6:.3g} us)")
+        rows.append(row)
+        print(f"  {engine:9s} {name}: wall/simulated s {wall:7.3g}  errors: "
+              + "  ".join(f"{k} {100 * err[k]:.3g} %" for k in KEYS) + steps)
     for engine in ("reference", "reduced"):
         sel = [r for r in rows if r["engine"] == engine]
         if sel:
@@ -83,12 +101,15 @@ def main(argv=None):
     plt = pyplot()
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.6))
     for ax, key, name in zip(axes, ("dissipation", "q_max_inner"), ("dissipation", "Q_max, inner race")):
-        for engine, mark in (("reference", "o"), ("reduced", "s")):
+        for engine, mark in (("reference", "o"), ("reduced", "s"), ("reduced, step control", "^")):
             sel = [r for r in rows if r["engine"] == engine]
+            if not sel:
+                continue
             ax.loglog([r["wall_per_s"] for r in sel], [max(r[f"err_{key}"], 1e-9) for r in sel], marker=mark,
-                      label=f"{engine} engine")
+                      label=f"{engine} engine" if engine != "reduced, step control" else "reduced engine, tolerance")
             for r in sel:
-                ax.annotate(f"{r['dt'] * 1e6:g} us", (r["wall_per_s"], max(r[f"err_{key}"], 1e-9)), fontsize=7,
+                label = f"{r['dt'] * 1e6:g} us" if r["tolerance"] is None else f"tol {r['tolerance']:g}"
+                ax.annotate(label, (r["wall_per_s"], max(r[f"err_{key}"], 1e-9)), fontsize=7,
                             xytext=(3, 3), textcoords="offset points")
         ax.set_xlabel("wall time per simulated second [s] (median)")
         ax.set_ylabel(f"relative error of the {name}")
@@ -96,14 +117,17 @@ def main(argv=None):
         ax.legend(fontsize=8)
     fig.suptitle(f"6208, {FIELDS['Fr']:g} N radial, {FIELDS['omega']:g} rad/s, no cage, traction over the ellipse: "
                  f"steady state against the reference engine at {FINE[1] * 1e6:g} us", fontsize=9)
-    cols = {"engine": [0 if r["engine"] == "reference" else 1 for r in rows], "dt_s": [r["dt"] for r in rows],
+    codes = {"reference": 0, "reduced": 1, "reduced, step control": 2}
+    cols = {"engine": [codes[r["engine"]] for r in rows], "dt_s": [r["dt"] for r in rows],
+            "tolerance": [r["tolerance"] or 0.0 for r in rows], "steps": [r["steps"] for r in rows],
             "wall_per_simulated_s": [r["wall_per_s"] for r in rows]}
     cols.update({f"err_{k}": [r[f"err_{k}"] for r in rows] for k in KEYS})
     save_figure(fig, OUT / "reduced_work_precision.png", cols)
     report = {"fine": {"engine": FINE[0], "dt": FINE[1], "wall_per_s": fine_wall, **{k: fine[k] for k in KEYS}},
               "runs": rows, "repeat": args.repeat, "t_end": T_END, "fields": FIELDS}
     (OUT / "reduced_work_precision.json").write_text(json.dumps(report, indent=1, default=float))
-    print(f"written {OUT / 'reduced_work_precision.png'} (.csv: engine 0 reference, 1 reduced) and .json")
+    print(f"written {OUT / 'reduced_work_precision.png'} (.csv: engine 0 reference, 1 reduced, 2 reduced under the "
+          f"step control; tolerance 0: the fixed step) and .json")
     return report
 
 

@@ -14,7 +14,7 @@ from ...data import InputError, Lubricant, load_bearing
 from ...model.initial_state import initial_state, ring_mass_estimate
 from ...model.memory import ESTIMATE_AFTER_S, wall_time_message
 from ...model.record import RunInterrupted
-from ...model.scenario import INTEGRATOR_SOLVERS, Scenario, engine_speed_error
+from ...model.scenario import INTEGRATOR_SOLVERS, Scenario, engine_speed_error, fixed_step_error
 from ...model.stability import SimulationError, stable_step
 from .console import filter_exudyn_notes
 from .element import BallBearingElement
@@ -76,6 +76,8 @@ class ExudynEngine:
                                           ObjectGround, ObjectMassPoint)
 
         self.exu = exu
+        if scenario.tolerance is not None:  # its step is fixed: the step error control is the reduced engine's
+            raise fixed_step_error(scenario, "exudyn")
         b = load_bearing(bearing)
         if scenario.Pd is not None:
             b = b.with_clearance(scenario.Pd)

@@ -31,10 +31,10 @@ import numpy as np
 
 from ..._jit import kernel
 from ...model.contact import _rigid_cage, accumulate_energy, forces
-from ...model.layout import HZ_GEO, NGLOBAL, P_IB, P_IC, P_MAX_OVERLAP, P_MB, P_MC, P_MR, P_RB, P_RP
+from ...model.layout import G_DISS_WORK, G_DRIVE_WORK, HZ_GEO, NGLOBAL, P_IB, P_IC, P_MAX_OVERLAP, P_MB, P_MC, P_MR, P_RB, P_RP
 from ...model.engine_steps import finite, finite_ring, inner_ring_force, set_inner_ring, store_sample
 
-__all__ = ["reduced_evaluate", "run_reduced", "N_WORK", "N_CAGE", "N_CORR"]
+__all__ = ["reduced_evaluate", "run_reduced", "N_WORK", "N_CAGE", "N_CORR", "N_ADAPT", "state_count"]
 
 #: Slots of the run's work vector ``work`` (floats kept across calls): the step's Newton iterations in total,
 #: the Newton iterations of the worst step, the force evaluations in total, the steps whose force balance did
@@ -66,6 +66,65 @@ N_CORR = 4
 CORR_TOL = 1e-6
 #: Orbital-angle perturbation [rad] of the forces' dependence on the ball's place in the load zone.
 H_ANGLE = 1e-7
+
+#: Entries of the step error control's vector ``adapt`` (kept across calls; its tolerance 0: the fixed step):
+#: the time reached [s], the next step proposed [s], the steps that reached the last two states [s], the
+#: tolerance [-], the least and the largest step [s], the run's end and the sample interval [s], the speed scale
+#: [m/s], the steps rejected, the states kept in ``ys`` (at most three), the samples taken, the largest error
+#: of an accepted step (or of the step that stopped the run) in units of the tolerance, the restarts (a second
+#: rejection at the same time: the BDF2 restarted with a linearly implicit Euler step, the history dropped).
+N_ADAPT = 15
+(A_T, A_H, A_HPREV, A_HPREV2, A_TOL, A_HMIN, A_HMAX, A_TEND, A_SDT, A_U, A_NREJ, A_NHIST, A_KSAMP,
+ A_ERR, A_NRESTART) = range(15)
+#: Step factor limits of the error control: a step grows at most FAC_MAX times (below the 1 + sqrt(2) of the
+#: variable-step BDF2's zero stability, Grigorieff 1983; Hairer, Norsett & Wanner I, Sect. III.5) and shrinks at
+#: most to FAC_MIN of itself; SAFETY the usual factor on the step the estimate asks for (Hairer, Norsett &
+#: Wanner I, Sect. II.4).
+FAC_MAX = 2.0
+FAC_MIN = 0.2
+SAFETY = 0.9
+#: The least growth the control takes (smaller ones keep the step; the threshold of CVODE's BDF, Hindmarsh et
+#: al. 2005): a step that changes at every step for a few per cent changes the variable-step BDF2's
+#: coefficients at every step.
+FAC_GROW = 1.5
+
+
+def state_count(z):
+    """Entries of the error control's state vector for ``z`` balls (:func:`_state_vector`)."""
+    return 5 * z + 6 + N_CAGE
+
+
+@kernel(inline="always")
+def _state_vector(phi, om, wo, ring, xc, vc, out):
+    """The integrated state as one vector: per ball (phi, om, w_o) at 5 j, the inner ring's (x, v) at 5 Z, the
+    rigid cage's state (:data:`N_CAGE`) at 5 Z + 6 (zeros without the cage)."""
+    z = om.shape[0]
+    for j in range(z):
+        out[5 * j] = phi[j]
+        out[5 * j + 1] = om[j]
+        for k in range(3):
+            out[5 * j + 2 + k] = wo[j, k]
+    for k in range(6):
+        out[5 * z + k] = ring[k]
+    for k in range(N_CAGE):
+        out[5 * z + 6 + k] = _cage_get(xc, vc, k)
+
+
+@kernel(inline="always")
+def _speed_scales(p, z, out):
+    """Weights of the state vector's entries in the error norm: the speeds as surface speeds (the orbital speeds
+    and the cage's angular speed times the pitch radius, the balls' angular velocities times their radius, the
+    ring's and the cage's velocities as they are) and 0 for the positions and angles."""
+    for i in range(out.shape[0]):
+        out[i] = 0.0
+    for j in range(z):
+        out[5 * j + 1] = p[P_RP]
+        for k in range(3):
+            out[5 * j + 2 + k] = p[P_RB]
+    for k in range(3):
+        out[5 * z + 3 + k] = 1.0
+        out[5 * z + 6 + 4 + k] = 1.0
+    out[5 * z + 6 + 7] = p[P_RP]
 
 
 @kernel(internal=True)
@@ -362,6 +421,67 @@ def _arrow_step(jphi, jb, acc0, phi, om, wo, prev, jbc, jcb, jcc, ac0, xc, vc, c
 
 
 @kernel(internal=True)
+def _filter_estimate(est, z, jphi, jb, jbc, jcb, jcc, j6, ring_free, cage_free, gam, h, a5, d5, a6, d6, b5, ya, xa, dca,
+                     rca, a8, f_phi, f_om, f_wo, f_xc, f_vc, prev, cage_prev, acc0, ac0, resb, resc):
+    """The error estimate ``est`` (the state vector's layout, :func:`_state_vector`) replaced by
+    (I - gam h J)^-1 est with the step's Jacobians: per ball (its 5 x 5 block), the ring (its 6 x 6, ``j6``),
+    or with the rigid cage the balls and the cage together through :func:`_arrow_step`'s correction (right-hand
+    side -resb, -resc on a zero state). Returns False where a matrix is singular."""
+    g = gam * h
+    if cage_free:
+        for j in range(z):
+            f_phi[j] = 0.0
+            f_om[j] = 0.0
+            for k in range(5):
+                resb[j, k] = -est[5 * j + k]
+            for k in range(3):
+                f_wo[j, k] = 0.0
+        for r in range(f_xc.shape[0]):
+            for k in range(3):
+                f_xc[r, k] = 0.0
+                f_vc[r, k] = 0.0
+        for k in range(N_CAGE):
+            resc[k] = -est[5 * z + 6 + k]
+        if not _arrow_step(jphi, jb, acc0, f_phi, f_om, f_wo, prev, jbc, jcb, jcc, ac0, f_xc, f_vc, cage_prev, gam, h,
+                           True, a5, b5, d5, ya, xa, dca, rca, a8, True, resb, resc):
+            return False
+        for j in range(z):
+            est[5 * j] = f_phi[j]
+            est[5 * j + 1] = f_om[j]
+            for k in range(3):
+                est[5 * j + 2 + k] = f_wo[j, k]
+        for k in range(N_CAGE):
+            est[5 * z + 6 + k] = _cage_get(f_xc, f_vc, k)
+    else:
+        for j in range(z):
+            for i in range(5):
+                for k in range(5):
+                    a5[i, k] = 0.0
+                a5[i, i] = 1.0
+                d5[i] = est[5 * j + i]
+            a5[0, 1] -= g
+            for i in range(4):
+                a5[1 + i, 0] -= g * jphi[j, i]
+                for k in range(4):
+                    a5[1 + i, 1 + k] -= g * jb[j, i, k]
+            if not _solve_small(a5, d5, 5):
+                return False
+            for i in range(5):
+                est[5 * j + i] = d5[i]
+    if ring_free:
+        for i in range(6):
+            for k in range(6):
+                a6[i, k] = -g * j6[i, k]
+            a6[i, i] += 1.0
+            d6[i] = est[5 * z + i]
+        if not _solve_small(a6, d6, 6):
+            return False
+        for i in range(6):
+            est[5 * z + i] = d6[i]
+    return True
+
+
+@kernel(internal=True)
 def _step_residual(phi, om, wo, prev, prev2, acc, xc, vc, cage_prev, cage_prev2, ac, gam, dt, resb, resc, rp, rb):
     """Residuals of the step equations of :func:`_arrow_step` at the state reached, ``resb`` (Z, 5) and
     ``resc`` (8): (y - y_n) - (1 - gam) (y_n - y_{n-1}) - gam dt f(y), f the committed evaluation there
@@ -564,7 +684,7 @@ def _speed_jacobians(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, x
 def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb, tb,
                 fc, fr, fring, glob, diag, cage_load, tol, max_iter, sample_every, step0, s_t, s_glob, s_diag,
                 s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring, work, ring_free, jac_every, jac_tol, ring_every, prev, ring_prev,
-                cage_free, cage_prev, n_corr, defect_path=True, ellipse_path=True, loss_path=True):
+                cage_free, cage_prev, n_corr, adapt, ys, h_log, defect_path=True, ellipse_path=True, loss_path=True):
     """``n_steps`` steps of the reduced engine from t0 (module docstring; docs/theory/reduced.md).
 
     Each step from t_n: (1) the forces at t_n (the balls on their balance of the last step); the Jacobians of
@@ -666,11 +786,105 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
     # the first step's Jacobians of the force balance; from a start off the balance (the analytic start, a
     # quasi-static start under another hypothesis than the dynamics') the iteration converges linearly from afar
     # and may take more than max_iter: START_ITER times as many here
-    it, ok, worst = _balance(t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb, tb,
-                             fc, fr, fring, glob, diag, cage_load, res, acc, g, r0, done, tol, START_ITER * max_iter,
-                             work, want_yes, defect_path, ellipse_path, loss_path)
-    for step in range(n_steps):
-        t = t0 + step * dt
+    # the step error control (``adapt``, :data:`N_ADAPT`; its tolerance 0: the fixed step dt): the time reached,
+    # the step proposed, the two steps before, and the speeds of the last three accepted states in ``ys``
+    adaptive = adapt[A_TOL] > 0.0
+    nv = ys.shape[1]
+    y_new = np.zeros(nv)
+    est = np.zeros(nv)
+    wgt = np.zeros(nv)
+    _speed_scales(p, z, wgt)
+    f_phi = np.zeros(z)
+    f_om = np.zeros(z)
+    f_wo = np.zeros((z, 3))
+    f_xc = np.zeros_like(xc)
+    f_vc = np.zeros_like(vc)
+    keep_phi = np.zeros(z)
+    keep_om = np.zeros(z)
+    keep_wo = np.zeros((z, 3))
+    keep_q2 = np.zeros((z, 2))
+    keep_qo = np.zeros((z, 2))
+    keep_prev = np.zeros((z, 5))
+    keep_ring = np.zeros(6)
+    keep_rp = np.zeros(6)
+    keep_xc = np.zeros((2, 3))
+    keep_vc = np.zeros((2, 3))
+    keep_cp = np.zeros(nc)
+    glob_n = np.zeros(NGLOBAL)
+    t_now = t0
+    hs = dt  # the step that reached the state at t_n (the centres' rate (q_n - q_{n-1}) / hs)
+    h = dt
+    if adaptive:
+        t_now = adapt[A_T]
+        hs = adapt[A_HPREV]
+        h = adapt[A_H]
+        if adapt[A_NHIST] < 0.5:
+            _state_vector(phi, om, wo, ring, xc, vc, ys[0])
+            adapt[A_NHIST] = 1.0
+    # the first step's Jacobians of the force balance; from a start off the balance (the analytic start, a
+    # quasi-static start under another hypothesis than the dynamics') the iteration converges linearly from afar
+    # and may take more than max_iter: START_ITER times as many here
+    it, ok, worst = _balance(t_now, hs, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb,
+                             tb, fc, fr, fring, glob, diag, cage_load, res, acc, g, r0, done, tol,
+                             START_ITER * max_iter, work, want_yes, defect_path, ellipse_path, loss_path)
+    step = 0
+    force_jac = False
+    rejected = 0  # rejections at the present t_n
+    h_prop = h
+    while step < n_steps:
+        ratio = 1.0
+        land = False
+        sample_here = False
+        if adaptive:
+            # the step: the proposal, at most the largest, landing on the next sample time (or t_end) in equal
+            # steps (a step may stretch to 1 / SAFETY of the proposal to land), so that the steps stay constant
+            # between samples where the proposal does
+            t_samp = (adapt[A_KSAMP] + 1.0) * adapt[A_SDT]
+            t_end = adapt[A_TEND]
+            if t_now >= t_end - 1e-9 * adapt[A_SDT]:
+                break
+            target = t_samp
+            sample_here = True
+            if t_samp > t_end + 1e-9 * adapt[A_SDT]:
+                target = t_end
+                sample_here = False
+            h = min(h, adapt[A_HMAX])
+            h_prop = h
+            rem = target - t_now
+            n_left = math.ceil(rem / min(h / SAFETY, adapt[A_HMAX]) - 1e-9)
+            if n_left <= 1:
+                h = rem
+                land = True
+            else:
+                h = rem / n_left
+            t = t_now
+            t1 = target if land else t_now + h
+            ratio = h / hs
+            # save the state at t_n (a rejected step goes back to it)
+            for j in range(z):
+                keep_phi[j] = phi[j]
+                keep_om[j] = om[j]
+                for k in range(3):
+                    keep_wo[j, k] = wo[j, k]
+                for k in range(2):
+                    keep_q2[j, k] = q[j, k]
+                    keep_qo[j, k] = q_old[j, k]
+                for k in range(5):
+                    keep_prev[j, k] = prev[j, k]
+            for k in range(6):
+                keep_ring[k] = ring[k]
+                keep_rp[k] = ring_prev[k]
+            for r in range(2):
+                for k in range(3):
+                    keep_xc[r, k] = xc[r, k]
+                    keep_vc[r, k] = vc[r, k]
+            for k in range(nc):
+                keep_cp[k] = cage_prev[k]
+            for k in range(NGLOBAL):
+                glob_n[k] = glob[k]  # the powers of the committed evaluation at t_n
+        else:
+            t = t0 + step * dt
+            t1 = t0 + (step + 1) * dt
         # (1) the committed forces at t_n are those of the last balance (acc, fb, fring)
         for j in range(z):
             for k in range(4):
@@ -696,7 +910,8 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
                 big = load_ref[j]
             if abs(pj - load_ref[j]) > moved:
                 moved = abs(pj - load_ref[j])
-        refresh = since >= jac_every or moved > jac_tol * big or step == 0
+        refresh = since >= jac_every or moved > jac_tol * big or step == 0 or force_jac
+        force_jac = False
         # the rigid cage: a pocket contact that closed or opened since the last step retakes the Jacobians (the
         # pockets' shares at t_n, sh0, serve the Jacobians below)
         pockets = cage_free
@@ -713,7 +928,7 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
             work[W_REFRESH] += 1.0
             for j in range(z):
                 load_ref[j] = proxy[j]
-            _speed_jacobians(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings,
+            _speed_jacobians(t, hs, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings,
                              hist, hz, fb, tb, fc, fr, fring, glob, diag, cage_load, res, acc, acc0, ac0,
                              sh0, sh1, ac1, fbp, tbp, fcp, frp, globp, clp, jphi, jb, jcb, jbc, jcc, h_om,
                              h_w, h_cage, pockets, want_no, work, defect_path, ellipse_path, loss_path)
@@ -723,7 +938,7 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
             if ring_free and (n_ref - 1) % ring_every == 0:
                 for k in range(3):
                     ring[k] += H_POS
-                    reduced_evaluate(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb,
+                    reduced_evaluate(t, hs, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb,
                                      tb, fc, fr, fring, glob, diag, cage_load, want_no, res, acc, defect_path,
                                      ellipse_path, loss_path)
                     work[W_EVALS] += 1.0
@@ -734,7 +949,7 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
                         for i in range(3):
                             bmat[j, i, k] = (fb[j, i] - fb0[j, i]) / H_POS
                     ring[3 + k] += h_v
-                    reduced_evaluate(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb,
+                    reduced_evaluate(t, hs, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb,
                                      tb, fc, fr, fring, glob, diag, cage_load, want_no, res, acc, defect_path,
                                      ellipse_path, loss_path)
                     work[W_EVALS] += 1.0
@@ -743,7 +958,7 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
                         cr[i, k] = (fring[i] - fring0[i]) / h_v
                 # K += sum_j B_j E_j (-(G_j - k_min I)^-1) E_j^T B_j: dF_ring/dx_b = B_j = dF_b/dx_ring (the contact
                 # force depends on x_b - x_ring; the ring takes its reaction), the balls' q re-solved
-                k_min = mb / (dt * dt)
+                k_min = mb / (h * h)
                 for j in range(z):
                     c = math.cos(phi[j])
                     s = math.sin(phi[j])
@@ -773,13 +988,28 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
         # D = y_n - y_{n-1}, f there taken as f_n + J D), linearly implicit Euler at the first
         bdf2 = work[W_HAVE_PREV] > 0.5
         gam = 2.0 / 3.0 if bdf2 else 1.0
+        if bdf2 and ratio != 1.0:
+            # the variable-step BDF2 (step ratio w = h_n / h_{n-1}): y_{n+1} - y_n - w (1 - gam) (y_n - y_{n-1}) =
+            # gam h_n f(y_{n+1}), gam = (1 + w) / (1 + 2 w), from the extrapolation y_n + w (y_n - y_{n-1}): the
+            # constant-step code with y_{n-1} replaced by y_n - w (y_n - y_{n-1}) (docs/theory/reduced.md)
+            gam = (1.0 + ratio) / (1.0 + 2.0 * ratio)
+            for j in range(z):
+                prev[j, 0] = phi[j] - ratio * (phi[j] - prev[j, 0])
+                prev[j, 1] = om[j] - ratio * (om[j] - prev[j, 1])
+                for k in range(3):
+                    prev[j, 2 + k] = wo[j, k] - ratio * (wo[j, k] - prev[j, 2 + k])
+            for k in range(6):
+                ring_prev[k] = ring[k] - ratio * (ring[k] - ring_prev[k])
+            for k in range(nc):
+                y_k = _cage_get(xc, vc, k)
+                cage_prev[k] = y_k - ratio * (y_k - cage_prev[k])
         if cage_free:
             for j in range(z):
                 for i in range(5):
                     prev2[j, i] = prev[j, i]
             for i in range(nc):
                 cage_prev2[i] = cage_prev[i]
-            if not _arrow_step(jphi, jb, acc0, phi, om, wo, prev, jbc, jcb, jcc, ac0, xc, vc, cage_prev, gam, dt,
+            if not _arrow_step(jphi, jb, acc0, phi, om, wo, prev, jbc, jcb, jcc, ac0, xc, vc, cage_prev, gam, h,
                                bdf2, a5, b5, d5, ya, xa, dca, rca, a8, False, resb, resc):
                 return step, n_samp, 1
         for j in range(z):
@@ -800,7 +1030,7 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
             b5[0] = om[j]
             for i in range(4):
                 b5[1 + i] = acc0[j, i]
-            if not _implicit_step(j5, b5, y5, prev[j], 5, gam, dt, bdf2, a5, d5):
+            if not _implicit_step(j5, b5, y5, prev[j], 5, gam, h, bdf2, a5, d5):
                 return step, n_samp, 1
             phi[j] = y5[0]
             om[j] = y5[1]
@@ -817,17 +1047,19 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
                     j6[3 + i, 3 + k] = cr[i, k] / mr
                 b6[i] = ring[3 + i]
                 b6[3 + i] = fring0[i] / mr
-            if not _implicit_step(j6, b6, ring, ring_prev, 6, gam, dt, bdf2, a6, d6):
+            if not _implicit_step(j6, b6, ring, ring_prev, 6, gam, h, bdf2, a6, d6):
                 return step, n_samp, 1
         work[W_HAVE_PREV] = 1.0
         # (5) the balls' force balance at t_{n+1}, warm started by extrapolation
         for j in range(z):
             for c in range(2):
                 q_n[j, c] = q[j, c]
-                q[j, c] = 2.0 * q[j, c] - q_old[j, c]
+                if ratio == 1.0:
+                    q[j, c] = 2.0 * q[j, c] - q_old[j, c]
+                else:
+                    q[j, c] = q[j, c] + ratio * (q[j, c] - q_old[j, c])
                 q_old[j, c] = q_n[j, c]
-        t1 = t0 + (step + 1) * dt
-        it, ok, worst = _balance(t1, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb,
+        it, ok, worst = _balance(t1, h, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb,
                                  tb, fc, fr, fring, glob, diag, cage_load, res, acc, g, r0, done, tol, max_iter, work,
                                  want_yes, defect_path, ellipse_path, loss_path)
         # the rigid cage: where a pocket contact closed or opened over the step, Newton corrections of the step's
@@ -843,7 +1075,7 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
                 last = 1e300
                 for _c in range(n_corr + 1):
                     _cage_accelerations(p, fc, ac1)
-                    size = _step_residual(phi, om, wo, prev, prev2, acc, xc, vc, cage_prev, cage_prev2, ac1, gam, dt,
+                    size = _step_residual(phi, om, wo, prev, prev2, acc, xc, vc, cage_prev, cage_prev2, ac1, gam, h,
                                           resb, resc, p[P_RP], p[P_RB])
                     if size > last:  # the correction did not serve: back to the state before it
                         for j in range(z):
@@ -855,7 +1087,7 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
                             q[j, 1] = keep_q[j, 1]
                         for i in range(nc):
                             _cage_add(xc, vc, i, keep_c[i] - _cage_get(xc, vc, i))
-                        it, ok, worst = _balance(t1, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc,
+                        it, ok, worst = _balance(t1, h, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc,
                                                  rings, hist, hz, fb, tb, fc, fr, fring, glob, diag, cage_load, res,
                                                  acc, g, r0, done, tol, max_iter, work, want_no, defect_path,
                                                  ellipse_path, loss_path)
@@ -880,21 +1112,140 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
                     for i in range(4):
                         ac_b[i] = ac1[i]
                     _pocket_shares(p, xb, vb, wb, xc, vc, rings, fbp, tbp, fcp, frp, globp, clp, sh_b)
-                    _speed_jacobians(t1, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist,
+                    _speed_jacobians(t1, h, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist,
                                      hz, fb, tb, fc, fr, fring, glob, diag, cage_load, res, acc, acc_b, ac_b, sh_b,
                                      sh1, ac1, fbp, tbp, fcp, frp, globp, clp, jphi, jb, jcb, jbc, jcc, h_om, h_w,
                                      h_cage, True, want_no, work, defect_path, ellipse_path, loss_path)
                     if not _arrow_step(jphi, jb, acc0, phi, om, wo, prev, jbc, jcb, jcc, ac0, xc, vc, cage_prev, gam,
-                                       dt, bdf2, a5, b5, d5, ya, xa, dca, rca, a8, True, resb, resc):
+                                       h, bdf2, a5, b5, d5, ya, xa, dca, rca, a8, True, resb, resc):
                         return step, n_samp, 1
                     work[W_CORR] += 1.0
-                    it, ok, worst = _balance(t1, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings,
+                    it, ok, worst = _balance(t1, h, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings,
                                              hist, hz, fb, tb, fc, fr, fring, glob, diag, cage_load, res, acc, g, r0,
                                              done, tol, max_iter, work, want_no, defect_path, ellipse_path, loss_path)
-        accumulate_energy(glob, dt)
-        want = (step0 + step + 1) % sample_every == 0 and n_samp < s_t.shape[0]
+        if adaptive:
+            # the local error of the step (docs/theory/reduced.md): gam h_n^2 (h_n + h_{n-1}) times the third
+            # divided difference of the state over the last four states, filtered by the step's matrix
+            # (I - gam h J)^-1 (Shampine's filter: a stiff mode's share damped as the step damps it), its speeds
+            # against tolerance x speed scale
+            _state_vector(phi, om, wo, ring, xc, vc, y_new)
+            err = 0.0
+            estimated = adapt[A_NHIST] > 2.5
+            if estimated:
+                h1 = hs
+                h2 = adapt[A_HPREV2]
+                for i in range(nv):
+                    d1a = (y_new[i] - ys[0, i]) / h
+                    d1b = (ys[0, i] - ys[1, i]) / h1
+                    d1c = (ys[1, i] - ys[2, i]) / h2
+                    d3 = ((d1a - d1b) / (h + h1) - (d1b - d1c) / (h1 + h2)) / (h + h1 + h2)
+                    est[i] = gam * h * h * (h + h1) * d3
+                if not _filter_estimate(est, z, jphi, jb, jbc, jcb, jcc, j6, ring_free, cage_free, gam, h, a5, d5, a6,
+                                        d6, b5, ya, xa, dca, rca, a8, f_phi, f_om, f_wo, f_xc, f_vc, prev, cage_prev,
+                                        acc0, ac0, resb, resc):
+                    err = 1e300
+                for i in range(nv):
+                    e = abs(est[i]) * wgt[i]
+                    if e > err:
+                        err = e
+                err /= adapt[A_TOL] * adapt[A_U]
+            if not math.isfinite(err):
+                err = 1e300
+            if err > 1.0:
+                if min(h, h_prop) <= adapt[A_HMIN] * (1.0 + 1e-9):
+                    adapt[A_T] = t_now
+                    adapt[A_ERR] = err
+                    return step, n_samp, 3
+                # rejected: back to t_n, its forces evaluated again (the committed evaluation of the last step),
+                # a smaller step with the Jacobians retaken at t_n
+                adapt[A_NREJ] += 1.0
+                for j in range(z):
+                    phi[j] = keep_phi[j]
+                    om[j] = keep_om[j]
+                    for k in range(3):
+                        wo[j, k] = keep_wo[j, k]
+                    for k in range(2):
+                        q[j, k] = keep_q2[j, k]
+                        q_old[j, k] = keep_qo[j, k]
+                    for k in range(5):
+                        prev[j, k] = keep_prev[j, k]
+                for k in range(6):
+                    ring[k] = keep_ring[k]
+                    ring_prev[k] = keep_rp[k]
+                for r in range(2):
+                    for k in range(3):
+                        xc[r, k] = keep_xc[r, k]
+                        vc[r, k] = keep_vc[r, k]
+                for k in range(nc):
+                    cage_prev[k] = keep_cp[k]
+                reduced_evaluate(t, hs, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb,
+                                 tb, fc, fr, fring, glob, diag, cage_load, want_no, res, acc, defect_path,
+                                 ellipse_path, loss_path)
+                work[W_EVALS] += 1.0
+                h = max(adapt[A_HMIN], h * max(FAC_MIN, SAFETY * err ** (-1.0 / 3.0)))
+                force_jac = True
+                rejected += 1
+                if rejected >= 2:
+                    # a smaller step did not bring the estimate under the tolerance: the history the estimate
+                    # and the BDF2 take is not smooth on the scale of the step (a start off the balance of the
+                    # speeds, an impact); restart from t_n: a linearly implicit Euler step, then BDF2, the
+                    # estimate again from the fourth state on
+                    work[W_HAVE_PREV] = 0.0
+                    adapt[A_NHIST] = 1.0
+                    adapt[A_NRESTART] += 1.0
+                    rejected = 0
+                continue
+            # accepted: the speeds' history, the step's size, the next step's proposal (no growth right after a
+            # rejection)
+            for i in range(nv):
+                ys[2, i] = ys[1, i]
+                ys[1, i] = ys[0, i]
+                ys[0, i] = y_new[i]
+            if adapt[A_NHIST] < 2.5:
+                adapt[A_NHIST] += 1.0
+            adapt[A_HPREV2] = hs
+            if step < h_log.shape[0]:
+                h_log[step] = h
+            if not estimated:  # no estimate yet (the first two steps): the first step dt kept
+                fac = 1.0
+            elif err <= 0.0:
+                fac = FAC_MAX
+            else:
+                fac = min(FAC_MAX, max(FAC_MIN, SAFETY * err ** (-1.0 / 3.0)))
+                if 1.0 < fac < FAC_GROW:  # small growths left out (CVODE's threshold): steps that stay put
+                    fac = 1.0
+            if rejected > 0 and fac > 1.0:
+                fac = 1.0
+            rejected = 0
+            if err > adapt[A_ERR]:
+                adapt[A_ERR] = err
+            hs = h
+            h = h * fac
+            t_now = t1
+            adapt[A_T] = t_now
+            adapt[A_HPREV] = hs
+            adapt[A_H] = h
+        if adaptive:
+            # the energy integrals by the trapezoidal rule over the step: the steps follow the motion (short where
+            # a ball enters the load zone), so the fixed step's rectangle at the step's end would weight the
+            # powers by where the steps fall
+            accumulate_energy(glob, 0.5 * hs)
+            glob_n[G_DRIVE_WORK] = glob[G_DRIVE_WORK]
+            glob_n[G_DISS_WORK] = glob[G_DISS_WORK]
+            accumulate_energy(glob_n, 0.5 * hs)
+            glob[G_DRIVE_WORK] = glob_n[G_DRIVE_WORK]
+            glob[G_DISS_WORK] = glob_n[G_DISS_WORK]
+        else:
+            accumulate_energy(glob, dt)
+        if adaptive:
+            want = sample_here and land and n_samp < s_t.shape[0]
+            if sample_here and land:
+                adapt[A_KSAMP] += 1.0
+        else:
+            want = (step0 + step + 1) % sample_every == 0 and n_samp < s_t.shape[0]
         if want:
-            reduced_evaluate(t1, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb, tb,
+            h_sample = hs if adaptive else h
+            reduced_evaluate(t1, h_sample, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb, tb,
                              fc, fr, fring, glob, diag, cage_load, want_yes, res, acc, defect_path, ellipse_path,
                              loss_path)
             work[W_EVALS] += 1.0
@@ -903,8 +1254,9 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
             n_samp += 1
             if not (finite(xb) and finite(vb) and finite(wb) and finite_ring(ring) and finite(xc) and finite(vc)):
                 return step + 1, n_samp, 1
+        step += 1
         if worst > p[P_MAX_OVERLAP] or not math.isfinite(worst):
-            return step + 1, n_samp, 2
+            return step, n_samp, 2
     if not (finite(q) and finite(wo) and finite_ring(ring) and finite(xc) and finite(vc)):
-        return n_steps, n_samp, 1
-    return n_steps, n_samp, 0
+        return step, n_samp, 1
+    return step, n_samp, 0

@@ -23,7 +23,7 @@ from ...model.memory import ESTIMATE_AFTER_S, wall_time_message
 from ...model.motion import ring_poses
 from ...model.parameters import scene_parameters
 from ...model.record import RunInterrupted, RunRecord, sample_buffers
-from ...model.scenario import Scenario, resolve_cage
+from ...model.scenario import Scenario, fixed_step_error, resolve_cage
 from ...model.stability import SimulationError, StepSizeWarning, cage_load_check, land_step_check, runaway_error, stable_step, step_warning
 from ...physics import hertz
 from ...physics.contact_slip import DEFAULT_N_ACROSS, DEFAULT_N_STRIPS
@@ -61,6 +61,8 @@ class ReferenceEngine:
     name = "reference"
 
     def __init__(self, bearing, scenario: Scenario, lubricant: Lubricant | None = None, start: dict | None = None):
+        if scenario.tolerance is not None:  # its step is fixed: the step error control is the reduced engine's
+            raise fixed_step_error(scenario, "reference")
         announce_compilation(forces, run_verlet if scenario.integrator == "verlet" else run_rk4)
         b = load_bearing(bearing)
         if scenario.Pd is not None:
