@@ -155,4 +155,7 @@ def test_the_exudyn_engine_hands_every_scenario_field_to_the_element():
 
     src = inspect.getsource(element_engine.ExudynEngine)
     unread = {f.name for f in dataclasses.fields(s) if f"s.{f.name}" not in src and f"scenario.{f.name}" not in src}
-    assert unread == {"t_ramp_up", "t_steady", "t_ramp_down"} and "s.speed_function()" in src
+    # omega_outer: the Exudyn engine's outer ring is the ground, so it refuses a turning outer ring by name
+    # (model.scenario.engine_speed_error; tests/test_outer_ring.py) rather than reading the field
+    assert unread == {"t_ramp_up", "t_steady", "t_ramp_down", "omega_outer"} and "s.speed_function()" in src
+    assert "engine_speed_error(" in src

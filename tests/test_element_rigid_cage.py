@@ -260,23 +260,3 @@ def test_a_model_turned_about_the_axis_reports_the_same_cage(mode):
     assert np.abs(b["xc"][:, 0] - a["xc"][:, 0]).max() < 1e-12
     assert b["diag"][..., L.D_LOAD] == pytest.approx(a["diag"][..., L.D_LOAD], rel=1e-6, abs=1e-6)
 
-
-def test_every_model_switch_of_a_scene_reaches_the_element():
-    # the Exudyn engine builds the element from the scene's fields by name: a field it forgot would run the
-    # element with that field's default (as the pocket film did), so the element's own scene must equal the
-    # given one in everything but the run's protocol and solver, which the Exudyn engine keeps
-    import dataclasses
-
-    from exudyn_bearing.solvers.element.engine import ExudynEngine
-
-    scene = eb.Scenario(Fr=3000.0, omega=500.0, t_end=0.001, dt=4e-6, sample_dt=2e-4, cage="rigid", rigid_cage=CAGE,
-                        gravity=(0.0, -9.81, 0.0), cage_damping="implicit", pocket_film=True, friction="regularized",
-                        regularizing_speed=0.2, mu_dry=0.12, rolling_resistance=True, ball_drag=True,
-                        oil_volume_fraction=0.02, hysteresis_loss_factor=0.01, tangential_stiffness_ratio=0.8,
-                        traction_level="ellipse", traction="coulomb_0.1", n_strips=12, n_across=3, ring_growth=False,
-                        hertz="hamrock_brewe")
-    element = ExudynEngine(B, scene, mode="fast").element.scenario
-    own = {"t_end", "t_ramp_up", "t_steady", "t_ramp_down", "ring_mass", "integrator", "Pd"}
-    differ = [f.name for f in dataclasses.fields(scene)
-              if f.name not in own and getattr(element, f.name) != getattr(scene, f.name)]
-    assert differ == []

@@ -272,6 +272,20 @@ CASES = [
     Case("o34_reduced_refuses_omega_outer", "refuse", "omega_outer",
          cli=(*_SIM, "--engine", "reduced", "--cage", "none", "--traction-level", "ellipse", "--dt", "2e-5",
               "--omega-outer", "100")),
+    # the rigid cage's pocket film: on a scene whose cage is the torus, without oil, not a bool
+    Case("p34_pocket_film_on_the_torus_cage", "refuse", "pocket_film",
+         cli=("simulate", "6208", "--Fr", "3000", "--omega", "500", "--t-end", "0.001", "--pocket-film",
+              "--no-progress")),
+    Case("p34_pocket_film_without_oil", "refuse", "pocket_film",
+         api="report(lambda: eb.Scenario(Fr=3000.0, omega=500.0, cage='rigid', lubrication=False, pocket_film=True))"),
+    Case("p34_pocket_film_not_a_bool", "refuse", "pocket_film",
+         api="report(lambda: eb.Scenario(Fr=3000.0, omega=500.0, cage='rigid', pocket_film='yes'))"),
+    # the reduced engine's step control: a tolerance out of range, and one the reference engine does not take
+    Case("t37_tolerance_negative", "refuse", "tolerance",
+         api="report(lambda: eb.Scenario(Fr=3000.0, omega=500.0, tolerance=-1e-3))"),
+    Case("t37_reference_refuses_tolerance", "refuse", "tolerance",
+         cli=("simulate", "6208", "--Fr", "3000", "--omega", "500", "--t-end", "0.001", "--tolerance", "1e-4",
+              "--no-progress")),
 ]
 
 
