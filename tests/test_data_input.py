@@ -116,7 +116,7 @@ def test_dataclasses_check_types_on_construction():
         Material(youngs_modulus="210e9")
     with pytest.raises(InputError, match=r"^viscosity: expected a number"):
         Lubricant(viscosity="0.04")
-    with pytest.raises(InputError, match=r"^cage: must be one of torus, rigid, none, auto \(True: torus, False: none\), got 'no'"):
+    with pytest.raises(InputError, match=r"^cage: must be one of torus, rigid, none, auto \(True: torus, False or None: none\), got 'no'"):
         eb.Scenario(Fr=3000.0, omega=500.0, cage="no")
     with pytest.raises(InputError, match=r"^lubrication: must be True or False, got 1"):
         eb.Scenario(Fr=3000.0, omega=500.0, lubrication=1)

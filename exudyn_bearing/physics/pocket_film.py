@@ -56,7 +56,7 @@ def isoviscous_rigid_film_constant(radius_ratio):
     Examples
     --------
     >>> round(float(isoviscous_rigid_film_constant(1.0)), 2)   # a sphere on a plane
-    140.1
+    140.11
     """
     a = np.asarray(radius_ratio, float)
     lam = 1.0 / (1.0 + 2.0 / (3.0 * a))
