@@ -104,9 +104,11 @@ def test_pocket_film_run_closes_its_energy_balance_and_says_what_it_leaves_out(f
     assert abs(wet["energy_residual"]) < 2e-3
     assert any("pocket film's viscous shear" in x for x in wet["not_modelled"])
     assert any("Scenario(pocket_film=True)" in x for x in dry["not_modelled"])
-    # the ball loads and the cage speed are the races' business: the film moves them little
-    assert wet["q_max_inner"] == pytest.approx(dry["q_max_inner"], rel=0.01)
+    # the cage speed is the races' business: the film moves it little (0.14 % over 0.2 s,
+    # validation/studies/pocket_film.py); the Q_max read at psi = 0 moves with the phase of the cage's irregular
+    # whirl (1.1 % over 0.2 s there), so it is held to the whirl's scale, not to the film's
     assert wet["cage_speed"] == pytest.approx(dry["cage_speed"], rel=0.005)
+    assert wet["q_max_inner"] == pytest.approx(dry["q_max_inner"], rel=0.03)
 
 
 def test_the_element_and_the_command_line_take_the_pocket_film(capsys, tmp_path):

@@ -6,16 +6,21 @@ reference engine:
 
 * the 6208 radial case (F_r = 3000 N, 500 rad/s) with its estimated outer-land brass cage, 2 us, point
   traction (the scene's defaults), from the analytic start, --t-end;
-* the 7208 at F_r = F_a = 3000 N, 500 rad/s, its estimated rigid cage, the scene's defaults (point traction
-  with the Cundall-Strack spring), implicit cage damping, from the analytic start, at --dt-7208 (5 us, the
-  step of validation/studies/rigid_cage.py's cost comparison), --t-end.
+* the 7208 at F_r = F_a = 3000 N, 500 rad/s, its estimated rigid cage, point traction with the regularised
+  friction (the point level's Cundall-Strack spring is not converged in the step on this case), implicit cage
+  damping, from the analytic start, at --dt-7208 (default 1 us, the fine step of
+  validation/studies/rigid_cage.py's step convergence), --t-end;
+* with --energy-steps, the 7208 scene of validation/studies/rigid_cage.py's cost comparison (the scene's
+  defaults, the Cundall-Strack spring) at 5, 2.5 and 1.25 us, dry and with the film: the energy residual,
+  the pocket loss and the dissipation at each step (how the film's explicit force converges in the step).
 
 Printed per run (summary over the second half of the run, named): the stable step, the pocket film's own
 stable step (``model.stability.pocket_film_step``, inf when dry), the
 pocket force (largest and time mean), the pocket and land losses, the dissipation, the cage speed, the cage
 motion's class and orbit, the energy residual, and the wall time. Writes pocket_film.json into --out.
 
-    python validation/studies/pocket_film.py [--t-end 0.2] [--dt-7208 5e-6] [--out validation/out/pocket_film]
+    python validation/studies/pocket_film.py [--t-end 0.2] [--dt-7208 1e-6] [--energy-steps]
+        [--out validation/out/pocket_film]
 """
 from __future__ import annotations
 
@@ -38,7 +43,8 @@ def scenes(t_end, dt_7208):
     return {
         "6208 radial, Fr 3000 N, 500 rad/s, 2 us": ("6208", dict(Fr=3000.0, omega=500.0, dt=2e-6)),
         f"7208 Fr = Fa = 3000 N, 500 rad/s, {dt_7208 * 1e6:g} us": (
-            "7208", dict(Fr=3000.0, Fa=3000.0, omega=500.0, dt=dt_7208, cage_damping="implicit")),
+            "7208", dict(Fr=3000.0, Fa=3000.0, omega=500.0, dt=dt_7208, cage_damping="implicit",
+                         friction="regularized")),
     }
 
 
@@ -61,7 +67,8 @@ def run(bearing, fields, t_end, film):
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--t-end", type=float, default=0.2)
-    ap.add_argument("--dt-7208", type=float, default=5e-6)
+    ap.add_argument("--dt-7208", type=float, default=1e-6)
+    ap.add_argument("--energy-steps", action="store_true", help="also the 7208's energy residual against the step")
     ap.add_argument("--out", type=Path, default=ROOT / "validation" / "out" / "pocket_film")
     a = ap.parse_args(argv)
     a.out.mkdir(parents=True, exist_ok=True)
@@ -74,6 +81,16 @@ def main(argv=None):
             for k in KEYS:
                 print(f"    {k:18s} {r[k]}")
             print(f"    {'wall_s':18s} {r['wall_s']:.1f}", flush=True)
+    if a.energy_steps:
+        print("7208, the scene's defaults (Cundall-Strack spring), implicit cage damping: energy residual, pocket "
+              "loss [W], dissipation [W] against the step")
+        for dt in (5e-6, 2.5e-6, 1.25e-6):
+            for film in (False, True):
+                fields = dict(Fr=3000.0, Fa=3000.0, omega=500.0, dt=dt, cage_damping="implicit")
+                r = run("7208", fields, a.t_end, film)
+                rows[f"7208 energy, {dt * 1e6:g} us, {'pocket film' if film else 'dry pockets'}"] = r
+                print(f"    {dt * 1e6:5.3g} us {'film' if film else 'dry '}  energy residual {r['energy_residual']:+.2e}  "
+                      f"pocket {r['cage_power_pocket']:.4g}  dissipation {r['dissipation']:.4g}", flush=True)
     (a.out / "pocket_film.json").write_text(json.dumps(rows, indent=1, default=str))
     print(f"wrote {a.out / 'pocket_film.json'}")
 
