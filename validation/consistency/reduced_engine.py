@@ -61,6 +61,9 @@ CASES = {
     # in both engines, so 0.5 s, the summary over the second half averaging the whirl
     "6208 radial, rigid cage (Fr 3000 N, 500 rad/s)": ("6208", dict(Fr=3000.0, omega=500.0, cage="rigid"), 0.5,
                                                        False),
+    # the same with the pockets' oil film (Scenario.pocket_film): the film's forces through the shared kernel, 0.2 s
+    "6208 radial, rigid cage, pocket film (Fr 3000 N, 500 rad/s)": ("6208", dict(Fr=3000.0, omega=500.0, cage="rigid",
+                                                                             pocket_film=True), 0.2, False),
     # the caged 7208 under combined load (the rigid cage's check case): its lightly loaded balls leave and
     # re-enter the load zone, from the caged quasi-static equilibrium, 0.1 s
     "7208 combined, rigid cage (Fr = Fa = 3000 N, 500 rad/s)": ("7208", dict(Fr=3000.0, Fa=3000.0, omega=500.0,
