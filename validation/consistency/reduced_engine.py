@@ -142,6 +142,24 @@ def runs_of(dts, tolerances, reference_dt=REFERENCE_DT):
             + [("reduced", ADAPTIVE_FIRST_DT, t, f"reduced tol={t:g}") for t in tolerances])
 
 
+def repeated(call, repeats, tol, tag, failed, what):
+    """(the last result, its summary, the median wall time per simulated second) of ``repeats`` runs of
+    ``call`` (returning (result, summary)); None when the step control stops at a tolerance it cannot hold:
+    said, appended to ``failed`` as ``what`` and ``tag``, and the other runs go on (a fixed step re-raises)."""
+    walls = []
+    try:
+        for _ in range(repeats):
+            res, summary = call()
+            walls.append(res.wall_s / float(res.t[-1]))
+    except SimulationError as exc:
+        if tol is None:
+            raise
+        print(f"{tag:>22}: stopped: {exc}")
+        failed.append(f"{what} {tag} stopped")
+        return None
+    return res, summary, statistics.median(walls)
+
+
 def steps_text(res):
     """The steps a run under the step control took (empty for a fixed step)."""
     w = getattr(res.record, "reduced_stats", None)
@@ -163,21 +181,16 @@ def runup(dts, repeats, tolerances=()):
                   sample_dt=5e-4)
     runs = {}
     for engine, dt, tol, tag in runs_of(dts, tolerances):
-        walls = []
-        try:
-            for _ in range(repeats):
-                with warnings.catch_warnings():
-                    warnings.simplefilter("ignore")
-                    res = eb.simulate("6208", eb.Scenario.papers_protocol(**fields, dt=dt, tolerance=tol),
-                                      engine=engine)
-                walls.append(res.wall_s / float(res.t[-1]))
-        except SimulationError as exc:  # a tolerance the step control cannot hold: said, the others go on
-            if tol is None:
-                raise
-            print(f"{tag:>22}: stopped: {exc}")
-            failed.append(f"run-up {tag} stopped")
+        def one():
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")
+                res = eb.simulate("6208", eb.Scenario.papers_protocol(**fields, dt=dt, tolerance=tol), engine=engine)
+            return res, None
+        done = repeated(one, repeats, tol, tag, failed, "run-up")
+        if done is None:
             continue
-        runs[tag] = (res.t, res.cage_speed_series(), statistics.median(walls), steps_text(res))
+        res, _, wall = done
+        runs[tag] = (res.t, res.cage_speed_series(), wall, steps_text(res))
     t, ref, ref_wall, _ = runs[f"reference dt={REFERENCE_DT:g}"]
     late = t >= RUNUP_FROM
     for tag, (t2, speed, wall, steps) in runs.items():
@@ -229,19 +242,11 @@ def main(argv=None):
         walls = {}
         reference_dt = CASE_REFERENCE_DT.get(name, REFERENCE_DT)
         for engine, dt, tol, tag in runs_of(args.dt, args.tolerance, reference_dt):
-            times = []
-            try:
-                for _ in range(repeats):
-                    res, s = run(bearing, fields, t_end, engine, dt, tol)
-                    times.append(res.wall_s / t_end)
-            except SimulationError as exc:  # a tolerance the step control cannot hold: said, the others go on
-                if tol is None:
-                    raise
-                print(f"{tag:>22}: stopped: {exc}")
-                failed.append(f"{name} {tag} stopped")
+            done = repeated(lambda: run(bearing, fields, t_end, engine, dt, tol), repeats, tol, tag, failed, name)
+            if done is None:
                 continue
+            res, s, walls[tag] = done
             rows[tag] = s
-            walls[tag] = statistics.median(times)
             stats = getattr(res.record, "reduced_stats", None)
             work = (f"  force evaluations/step {stats['evaluations_per_step']:.3g}  Newton iterations/step "
                     f"{stats['newton_per_step']:.3g} (most {stats['newton_max']}, unconverged steps "

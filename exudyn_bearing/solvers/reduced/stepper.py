@@ -680,6 +680,33 @@ def _speed_jacobians(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, x
                         jcb[j, i, 0] -= (sh1[j, i] - sh0[j, i]) / h_cage[3]
 
 
+@kernel(inline="always")
+def _copy_step_state(phi, om, wo, q, q_old, prev, ring, ring_prev, xc, vc, cage_prev,
+                     d_phi, d_om, d_wo, d_q, d_q_old, d_prev, d_ring, d_ring_prev, d_xc, d_vc, d_cage_prev):
+    """Copy the integrated state at t_n (the balls' angles, speeds, force-balance unknowns and BDF history, the
+    ring's, the cage's) into the ``d_`` arrays: the step control keeps it before a step and restores it when
+    the step is rejected."""
+    for j in range(phi.shape[0]):
+        d_phi[j] = phi[j]
+        d_om[j] = om[j]
+        for k in range(wo.shape[1]):
+            d_wo[j, k] = wo[j, k]
+        for k in range(q.shape[1]):
+            d_q[j, k] = q[j, k]
+            d_q_old[j, k] = q_old[j, k]
+        for k in range(prev.shape[1]):
+            d_prev[j, k] = prev[j, k]
+    for k in range(ring.shape[0]):
+        d_ring[k] = ring[k]
+        d_ring_prev[k] = ring_prev[k]
+    for r in range(2):
+        for k in range(3):
+            d_xc[r, k] = xc[r, k]
+            d_vc[r, k] = vc[r, k]
+    for k in range(cage_prev.shape[0]):
+        d_cage_prev[k] = cage_prev[k]
+
+
 @kernel
 def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb, tb,
                 fc, fr, fring, glob, diag, cage_load, tol, max_iter, sample_every, step0, s_t, s_glob, s_diag,
@@ -861,25 +888,9 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
             t1 = target if land else t_now + h
             ratio = h / hs
             # save the state at t_n (a rejected step goes back to it)
-            for j in range(z):
-                keep_phi[j] = phi[j]
-                keep_om[j] = om[j]
-                for k in range(3):
-                    keep_wo[j, k] = wo[j, k]
-                for k in range(2):
-                    keep_q2[j, k] = q[j, k]
-                    keep_qo[j, k] = q_old[j, k]
-                for k in range(5):
-                    keep_prev[j, k] = prev[j, k]
-            for k in range(6):
-                keep_ring[k] = ring[k]
-                keep_rp[k] = ring_prev[k]
-            for r in range(2):
-                for k in range(3):
-                    keep_xc[r, k] = xc[r, k]
-                    keep_vc[r, k] = vc[r, k]
-            for k in range(nc):
-                keep_cp[k] = cage_prev[k]
+            _copy_step_state(phi, om, wo, q, q_old, prev, ring, ring_prev, xc, vc, cage_prev,
+                             keep_phi, keep_om, keep_wo, keep_q2, keep_qo, keep_prev, keep_ring, keep_rp, keep_xc,
+                             keep_vc, keep_cp)
             for k in range(NGLOBAL):
                 glob_n[k] = glob[k]  # the powers of the committed evaluation at t_n
         else:
@@ -1159,25 +1170,9 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
                 # rejected: back to t_n, its forces evaluated again (the committed evaluation of the last step),
                 # a smaller step with the Jacobians retaken at t_n
                 adapt[A_NREJ] += 1.0
-                for j in range(z):
-                    phi[j] = keep_phi[j]
-                    om[j] = keep_om[j]
-                    for k in range(3):
-                        wo[j, k] = keep_wo[j, k]
-                    for k in range(2):
-                        q[j, k] = keep_q2[j, k]
-                        q_old[j, k] = keep_qo[j, k]
-                    for k in range(5):
-                        prev[j, k] = keep_prev[j, k]
-                for k in range(6):
-                    ring[k] = keep_ring[k]
-                    ring_prev[k] = keep_rp[k]
-                for r in range(2):
-                    for k in range(3):
-                        xc[r, k] = keep_xc[r, k]
-                        vc[r, k] = keep_vc[r, k]
-                for k in range(nc):
-                    cage_prev[k] = keep_cp[k]
+                _copy_step_state(keep_phi, keep_om, keep_wo, keep_q2, keep_qo, keep_prev, keep_ring, keep_rp,
+                                 keep_xc, keep_vc, keep_cp, phi, om, wo, q, q_old, prev, ring, ring_prev, xc, vc,
+                                 cage_prev)
                 reduced_evaluate(t, hs, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb,
                                  tb, fc, fr, fring, glob, diag, cage_load, want_no, res, acc, defect_path,
                                  ellipse_path, loss_path)
