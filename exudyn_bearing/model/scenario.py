@@ -595,8 +595,8 @@ class Scenario:
 OUTER_RING_ENGINES = ("reference",)
 #: Why an engine refuses a turning outer ring (``omega_outer`` != 0).
 OUTER_RING_REFUSALS = {
-    "exudyn": "its outer ring is the ground of the Exudyn scene (rotate the outer-ring body of your own Exudyn "
-              "model with CreateBallBearing instead)",
+    "exudyn": "its outer ring is the ground of the Exudyn scene, and the element reports the balls and the cage "
+              "in the outer ring's frame, whose summaries take that ring as fixed",
     "reduced": "its linearly implicit step does not yet close the energy balance with the outer ring turning (a "
                "drive-power error proportional to the step)",
 }
