@@ -104,6 +104,7 @@ def test_pocket_film_run_closes_its_energy_balance_and_says_what_it_leaves_out(f
     assert abs(wet["energy_residual"]) < 2e-3
     assert any("pocket film's viscous shear" in x for x in wet["not_modelled"])
     assert any("Scenario(pocket_film=True)" in x for x in dry["not_modelled"])
+    assert wet["pocket_film"] is True and dry["pocket_film"] is False  # the summary says which it ran
     # the cage speed is the races' business: the film moves it little (0.14 % over 0.2 s,
     # validation/studies/pocket_film.py); the Q_max read at psi = 0 moves with the phase of the cage's irregular
     # whirl (1.1 % over 0.2 s there), so it is held to the whirl's scale, not to the film's
@@ -111,6 +112,7 @@ def test_pocket_film_run_closes_its_energy_balance_and_says_what_it_leaves_out(f
     assert wet["q_max_inner"] == pytest.approx(dry["q_max_inner"], rel=0.03)
 
 
+@pytest.mark.filterwarnings("ignore::exudyn_bearing.SteadyStateWarning")  # a 2 ms run: its window is short
 def test_the_element_and_the_command_line_take_the_pocket_film(capsys, tmp_path):
     from exudyn_bearing.cli import main
     from exudyn_bearing.solvers.element.element import element_scenario

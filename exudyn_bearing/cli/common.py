@@ -113,12 +113,13 @@ def add_load_arguments(p):
 
 
 def add_speed_arguments(p, default: float | None = None, what: str = ""):
-    """``--omega RAD_S`` or ``--rpm RPM`` (one of them): the inner-ring speed,
-    outer ring fixed; read it in rad/s with :func:`omega_from_args`."""
+    """``--omega RAD_S`` or ``--rpm RPM`` (one of them): the inner-ring speed (the outer ring's is
+    ``--omega-outer`` where a command takes it); read it in rad/s with :func:`omega_from_args`."""
     g = p.add_mutually_exclusive_group()
     tail = f" (default: {default:g} rad/s)" if default is not None else (f" (default: {what})" if what else "")
     g.add_argument("--omega", type=finite_float, metavar="RAD_S",
-                   help=f"inner-ring speed [rad/s], outer ring fixed{tail}")
+                   help=f"inner-ring speed [rad/s] (the outer ring's: --omega-outer where the command takes it, "
+                        f"else fixed){tail}")
     g.add_argument("--rpm", type=finite_float, metavar="RPM",
                    help="inner-ring speed [rev/min] instead of --omega (omega = rpm * 2 pi / 60)")
     p.set_defaults(omega_default=default)

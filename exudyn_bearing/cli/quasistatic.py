@@ -40,8 +40,8 @@ def add_parser(sub):
     # the rigid cage (solve_quasistatic cage=, docs/theory/quasistatic.md#the-rigid-cage)
     p.add_argument("--cage", choices=("none", "rigid"), default="none",
                    help="none: each ball its own orbital speed; rigid: the bearing's estimated rigid cage "
-                        "(estimated_cage): balls at the cage speed, pocket forces, land film (race control or "
-                        "--control equilibrium)")
+                        "(estimated_cage): balls at the cage speed within their pocket play, pocket forces, land "
+                        "film (race control or --control equilibrium)")
     add_traction_argument(p)
     add_lubricant_argument(p, "lubricant for the films: ")
     add_ring_growth_argument(p)

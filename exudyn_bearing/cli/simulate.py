@@ -53,7 +53,8 @@ def add_parser(sub):
     p.add_argument("--tolerance", type=finite_float, default=None,
                    help="the reduced engine's step error control: each step's local error of the speeds below "
                         "TOLERANCE times the inner ring's speed at the pitch radius (e.g. 1e-5; "
-                        "docs/theory/reduced.md); default: the fixed step --dt")
+                        "docs/theory/reduced.md); default: the fixed step --dt. Its drive power needs 1e-6 or "
+                        "below, and a start or ramp from rest stops at the least step: use the fixed --dt there")
     p.add_argument("--sample-dt", type=finite_float, default=1e-4, help="output interval [s]")
     p.add_argument("--integrator", choices=("verlet", "rk4"), default="verlet",
                    help="explicit integrator (rk4 needs a history-free --friction)")

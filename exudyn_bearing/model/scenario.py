@@ -264,7 +264,8 @@ class Scenario:
         angles, orbital and ball angular velocities by ``control``; with the
         rigid cage, the solution with that cage: balls at the cage's speed).
     control : {"auto", "outer", "inner", "min-energy", "equilibrium"}
-        Kinematic hypothesis of the quasi-static start.
+        Kinematic hypothesis of the quasi-static start (``initial="quasistatic"``;
+        another value with another start is refused, not silently unused).
     integrator : {"verlet", "rk4"}
     dt : float
         Time step [s] (default 1 us, the DEM papers' step); with
@@ -400,8 +401,8 @@ class Scenario:
         object.__setattr__(self, "pocket_film", check_bool("pocket_film", self.pocket_film))
         if self.pocket_film and self.cage not in ("rigid", "auto"):
             raise InputError(f"pocket_film: the film between ball and pocket is the rigid cage's (cage='rigid'), "
-                             f"and the scene has cage={self.cage!r} (cage='auto' means the torus cage on a bearing "
-                             f"with cage balls: set cage='rigid')")
+                             f"and the scene has cage={self.cage!r} (with cage='auto' a bearing with cage balls takes "
+                             f"the torus cage): set cage='rigid'")
         if self.pocket_film and not self.lubrication:
             raise InputError("pocket_film: needs an oil (lubrication=True); without it the pockets are dry")
         for name in ("Fr", "Fa", "t_ramp_up", "t_ramp_down", "mu_dry"):
@@ -462,6 +463,10 @@ class Scenario:
             raise InputError(f"initial: must be one of {', '.join(INITIAL_STATES)}, got {self.initial!r}")
         if self.control not in CONTROLS:
             raise InputError(f"control: must be one of {', '.join(CONTROLS)}, got {self.control!r}")
+        if self.control != "auto" and self.initial != "quasistatic":  # not silently unused
+            raise InputError(f"control: {self.control!r} chooses the kinematics of the quasi-static start "
+                             f"(initial='quasistatic'), and the scene starts from {self.initial!r}: set "
+                             f"initial='quasistatic' (command line: --initial quasistatic) or leave control at 'auto'")
         if self.traction_level not in TRACTION_LEVELS:
             raise InputError(f"traction_level: must be one of {', '.join(TRACTION_LEVELS)}, got "
                              f"{self.traction_level!r}")

@@ -24,7 +24,8 @@ CAGE_SUMMARY_UNITS = {
     "pocket_force_mean": "N (time mean of the normal forces of all pockets, per ball)",
     "land_force_mean": "N (time mean of the magnitude of the land's force on the cage)",
     "land_eccentricity_max": "- (largest offset of the cage from the land over the land clearance)",
-    "cage_power_pocket": "W (time mean: friction and damping of the ball / pocket contacts)",
+    "cage_power_pocket": "W (time mean: friction and damping of the ball / pocket contacts, and the work of the "
+                         "pocket film's forces with pocket_film)",
     "cage_power_land": "W (time mean: land film and contact)",
     "cage_motion": "centred, circling or irregular (docs/theory/cage.md#cage-motion)",
     "cage_orbit_ratio": "- (mean distance of the cage centre from its mean position over the land clearance, or "

@@ -196,8 +196,10 @@ def plot_run(run, png) -> Path:
     label_regime_lines(ax[1, 0])
     cax = fig.add_axes([0.92, 0.07, 0.015, 0.33])
     fig.colorbar(sc, cax=cax, label="t [s]")
-    fig.suptitle(f"{b.name}: Fr = {s.Fr:g} N, Fa = {s.Fa:g} N, omega = {s.omega:g} rad/s, "
-                 f"{run.engine} engine, {s.integrator}, dt = {s.dt:g} s")
+    outer = getattr(s, "omega_outer", 0.0)
+    fig.suptitle(f"{b.name}: Fr = {s.Fr:g} N, Fa = {s.Fa:g} N, omega = {s.omega:g} rad/s"
+                 + (f", omega_outer = {outer:g} rad/s" if outer else "")
+                 + f", {run.engine} engine, {s.integrator}, dt = {s.dt:g} s")
     save_figure(fig, png, {"t_s": t, "omega_rad_s": omega, "cage_speed_rad_s": cage, "ball_spin_mean_rad_s": spin,
                            "q_max_inner_N": q_in, "q_max_outer_N": q_out}, layout=False)
     return png

@@ -688,6 +688,7 @@ class Results:
             "hertz": self.scenario.hertz,
             "film": self.scenario.film,
             "cage": self.scenario.cage if (self.scenario.cage != "torus" or b.has_cage) else "none",
+            "pocket_film": bool(getattr(self.scenario, "pocket_film", False)),
             "lubrication": self.scenario.lubrication,
             "lubricant": self.lubricant.name,
             "traction_model": self.traction_model_name(),

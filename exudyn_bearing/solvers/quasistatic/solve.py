@@ -122,12 +122,15 @@ def _check_fixed(fixed, b, moments=(0.0, 0.0)):
 
 
 def _interference_cause(b, w_i, w_o, ring_growth, fit, temperatures, limit):
-    """The input that alone closes the clearance beyond ``limit`` (fit, temperatures), else the speed."""
+    """The input that alone closes the clearance beyond ``limit`` (fit, temperatures), else the speed: the
+    inner ring's (``omega``) where its growth alone does it, else the outer ring's (``omega_outer``)."""
     if fit > 0.0 and operating_geometry(b, 0.0, 0.0, False, fit, None).operating_clearance < limit:
         return "fit"
     if temperatures and operating_geometry(b, 0.0, 0.0, False, 0.0, temperatures).operating_clearance < limit:
         return "temperatures"
-    return "omega" if w_i != 0.0 or w_o == 0.0 else "omega_outer"
+    if w_o == 0.0 or operating_geometry(b, w_i, 0.0, ring_growth, 0.0, None).operating_clearance < limit:
+        return "omega"
+    return "omega_outer"
 
 
 #: Largest operating interference accepted, -P_d,op / 2 over the ball radius: the balls no longer fit

@@ -242,7 +242,8 @@ class ReducedEngine:
                     raise SimulationError(
                         f"tolerance: the reduced engine's step error control rejected a step of the least size "
                         f"{adapt[_st.A_HMIN]:.3g} s at t = {reached():.6g} s (its error {adapt[_st.A_ERR]:.3g} "
-                        f"times tolerance = {s.tolerance:g}); a looser tolerance, or the reference engine")
+                        f"times tolerance = {s.tolerance:g}); a looser tolerance, the fixed step (no tolerance: "
+                        f"dt = {s.dt:g} s), or the reference engine")
                 if status != 0:
                     what = ("non-finite state" if status == 1 else
                             "runaway overlap (above 5 % of the ball radius, at a ball / race, ball / ball or "
