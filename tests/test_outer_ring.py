@@ -189,3 +189,21 @@ def test_outer_ring_start_up_and_full_stop_from_rest():
     assert np.all(spin[-1][held] < 0.05 * spin[k].mean())
     # the phases' outer-ring speed: the summary's mean over the steady phase's second half
     assert r.summary(t_window=(0.015, 0.02))["omega_outer"] == pytest.approx(W, rel=1e-12)
+
+
+def test_quasistatic_takes_the_outer_speed_in_rpm_as_simulate_does(capsys):
+    # one pair of options for the outer ring's speed on both commands (cli.common.add_outer_speed_arguments)
+    import json
+    import math
+
+    from exudyn_bearing.cli import main
+
+    out = []
+    for flag, value in (("--omega-outer", "300"), ("--rpm-outer", repr(300.0 * 30.0 / math.pi))):
+        assert main(["quasistatic", "6208", "--Fr", "3000", "--omega", "0", flag, value, "--json"]) == 0
+        out.append(json.loads(capsys.readouterr().out))
+    assert out[0]["omega_outer"] == pytest.approx(300.0, rel=1e-12)
+    assert out[1]["omega_outer"] == pytest.approx(out[0]["omega_outer"], rel=1e-12)
+    with pytest.raises(SystemExit) as exc:  # argparse: the two are exclusive
+        main(["quasistatic", "6208", "--Fr", "3000", "--omega-outer", "1", "--rpm-outer", "1"])
+    assert exc.value.code == 2

@@ -15,7 +15,7 @@ from ..solvers.quasistatic.ring import DOF_NAMES
 
 __all__ = ["Parser", "HelpFormatter", "finite_float", "print_table", "BEARING_HELP", "add_bearing_argument",
            "bearing_from_args", "bearing_spec_from_args", "add_load_arguments", "add_speed_arguments",
-           "omega_from_args", "add_lubricant_argument", "lubricant_from_args", "RPM_TO_RAD_S", "add_traction_argument",
+           "omega_from_args", "add_outer_speed_arguments", "omega_outer_from_args", "add_lubricant_argument", "lubricant_from_args", "RPM_TO_RAD_S", "add_traction_argument",
            "traction_from_args", "add_ring_growth_argument", "RING_GROWTH", "add_hold_arguments", "parse_fixed",
            "fixed_from_args", "explained", "solver_header", "format_value", "add_strip_arguments"]
 
@@ -130,6 +130,21 @@ def omega_from_args(args):
     if args.rpm is not None:
         return args.rpm * RPM_TO_RAD_S
     return args.omega if args.omega is not None else args.omega_default
+
+
+def add_outer_speed_arguments(p, what=""):
+    """``--omega-outer RAD_S`` or ``--rpm-outer RPM`` (one of them, default 0: the outer ring fixed); read it in
+    rad/s with :func:`omega_outer_from_args`. ``what``: a note for the help (the protocol it follows)."""
+    g = p.add_mutually_exclusive_group()
+    g.add_argument("--omega-outer", type=finite_float, default=0.0, metavar="RAD_S",
+                   help=f"outer-ring speed [rad/s]{what} (default 0: fixed)")
+    g.add_argument("--rpm-outer", type=finite_float, metavar="RPM",
+                   help="outer-ring speed [rev/min] instead of --omega-outer")
+
+
+def omega_outer_from_args(args) -> float:
+    """Outer-ring speed [rad/s] from --omega-outer or --rpm-outer."""
+    return args.omega_outer if args.rpm_outer is None else args.rpm_outer * RPM_TO_RAD_S
 
 
 def _count_in(hi: int):

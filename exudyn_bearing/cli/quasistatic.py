@@ -17,7 +17,7 @@ from ..solvers.quasistatic.kinematics import CONTROLS
 from .common import (add_strip_arguments, add_bearing_argument, add_hold_arguments, add_lubricant_argument, add_load_arguments,
                      add_ring_growth_argument, add_traction_argument, bearing_from_args, explained, finite_float,
                      fixed_from_args, format_value, lubricant_from_args, omega_from_args, solver_header,
-                     traction_from_args)
+                     traction_from_args, add_outer_speed_arguments, omega_outer_from_args)
 from .pair import add_pair_arguments, pair_requested, run_pair
 from ..solvers.quasistatic.losses import LOSS_COMPONENTS
 from ..solvers.quasistatic.thermal import solve_thermal
@@ -34,7 +34,7 @@ def add_parser(sub):
     speed.add_argument("--omega", type=finite_float, help="inner-ring speed [rad/s] (default 0)")
     speed.add_argument("--rpm", type=finite_float, help="inner-ring speed [1/min]")
     p.set_defaults(omega_default=0.0)  # omega_from_args: at rest without --omega / --rpm (docs/defaults.md)
-    p.add_argument("--omega-outer", type=finite_float, default=0.0, help="outer-ring speed [rad/s] (default fixed)")
+    add_outer_speed_arguments(p)
     p.add_argument("--control", choices=CONTROLS, default="auto",
                    help="ball kinematics: race control (outer, inner, auto = Jones' criterion) or min-energy (Gupta)")
     # the rigid cage (solve_quasistatic cage=, docs/theory/quasistatic.md#the-rigid-cage)
@@ -69,6 +69,7 @@ def add_parser(sub):
 
 
 def run(args):
+    args.omega_outer = omega_outer_from_args(args)  # --omega-outer or --rpm-outer, in rad/s from here on
     if pair_requested(args):  # a bearing pair (cli/pair.py)
         return run_pair(args, "quasistatic", rating=rating_options(args), warn_speed=warn_speed)
     b = bearing_from_args(args)

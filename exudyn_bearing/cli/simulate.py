@@ -15,7 +15,7 @@ from ..physics.hertz import METHODS
 from ..simulate import ENGINES, simulate
 from .common import (add_strip_arguments, add_bearing_argument, add_lubricant_argument, add_ring_growth_argument, add_speed_arguments,
                      add_traction_argument, bearing_from_args, finite_float, lubricant_from_args,
-                     omega_from_args, print_table, RPM_TO_RAD_S)
+                     omega_from_args, print_table, add_outer_speed_arguments, omega_outer_from_args)
 
 #: Simulated time [s] without --t-end and --ramp.
 DEFAULT_T_END = 0.02
@@ -37,12 +37,7 @@ def add_parser(sub):
     p.add_argument("--Pd", type=finite_float, help="diametral clearance [m] (negative: preload, e.g. -12.6e-6); "
                                                     "default: the bearing's own")
     add_speed_arguments(p, what="none: a dynamic run needs a speed (--omega 0: at rest)")
-    outer = p.add_mutually_exclusive_group()
-    outer.add_argument("--omega-outer", type=finite_float, default=0.0, metavar="RAD_S",
-                       help="outer-ring speed [rad/s] under the same --ramp protocol (default 0: fixed; "
-                            "the reference engine)")
-    outer.add_argument("--rpm-outer", type=finite_float, metavar="RPM",
-                       help="outer-ring speed [rev/min] instead of --omega-outer")
+    add_outer_speed_arguments(p, " under the same --ramp protocol (the reference engine)")
     add_lubricant_argument(p)
     p.add_argument("--t-end", type=finite_float,
                    help=f"simulated time [s] (default: the sum of the --ramp durations, else {DEFAULT_T_END:g})")
@@ -116,8 +111,7 @@ def scenario_from_args(args) -> Scenario:
     if omega is None:  # no default speed (docs/defaults.md): a run needs one, the README's example is 500 rad/s
         raise InputError("omega: simulate needs a speed: give --omega RAD_S or --rpm RPM (the README's example: "
                          "--Fr 3000 --omega 500; --omega 0 for a run at rest)")
-    omega_outer = args.omega_outer if args.rpm_outer is None else args.rpm_outer * RPM_TO_RAD_S
-    kw = dict(Fr=args.Fr, Fa=args.Fa, omega=omega, omega_outer=omega_outer, Pd=args.Pd, dt=args.dt,
+    kw = dict(Fr=args.Fr, Fa=args.Fa, omega=omega, omega_outer=omega_outer_from_args(args), Pd=args.Pd, dt=args.dt,
               tolerance=args.tolerance,
               sample_dt=args.sample_dt, integrator=args.integrator, friction=args.friction,
               tangential=args.tangential, cage_damping=args.cage_damping, hertz=args.hertz, film=args.film,

@@ -384,6 +384,15 @@ def pocket_film_step(bearing: BallBearing, scenario: Scenario, lubricant: Lubric
     return explicit_step_factor(zeta, scenario.integrator, scenario.cage_damping) / math.sqrt(k / m)
 
 
+def _below(limit: float, dt: float) -> str:
+    """"LIMIT s < dt = DT s" with as many digits as it takes for the two to read apart (3 to 6)."""
+    for digits in (3, 4, 5, 6):
+        a, b = f"{limit:.{digits}g}", f"{dt:.{digits}g}"
+        if a != b:
+            break
+    return f"{a} s < dt = {b} s"
+
+
 def land_step_check(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant | None, eccentricity: float,
                     dt: float) -> str | None:
     """A warning text when the land film at the largest eccentricity a run reached has a stable step
@@ -397,7 +406,7 @@ def land_step_check(bearing: BallBearing, scenario: Scenario, lubricant: Lubrica
     if dt <= limit:
         return None
     return (f"dt: the rigid cage reached a land eccentricity of {eccentricity:.3g}, where the land film's stable "
-            f"step is {limit:.3g} s < dt = {dt:.3g} s; the cage's motion and land force of this run are unreliable: "
+            f"step is {_below(limit, dt)}; the cage's motion and land force of this run are unreliable: "
             "reduce dt or use cage_damping='implicit'")
 
 
@@ -521,7 +530,7 @@ def cage_load_check(bearing: BallBearing, scenario: Scenario, lubricant: Lubrica
         return None
     kind = "ball / pocket" if scenario.cage == "rigid" else "ball / cage-ball"
     return (f"dt: the {kind} contacts reached {max_cage_load:.3g} N, where their stable step is "
-            f"{limit:.3g} s < dt = {dt:.3g} s; the cage loads of this run are unreliable (they chatter at about "
+            f"{_below(limit, dt)}; the cage loads of this run are unreliable (they chatter at about "
             "twice their value), ball loads and speeds usually are not affected: reduce dt")
 
 

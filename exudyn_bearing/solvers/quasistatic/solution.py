@@ -253,7 +253,8 @@ class QuasiStaticSolution:
         lines = [
             f"{self.bearing_name}: Fr = {self.loads[0]:g} N (x), Fy = {self.loads[1]:g} N, Fa = {self.loads[2]:g} N, "
             f"Mx = {self.loads[3]:g} N m, My = {self.loads[4]:g} N m, omega = {self.omega:g} rad/s, "
-            f"control {self.control}, traction {self.traction}",
+            + (f"omega_outer = {self.omega_outer:g} rad/s, " if self.omega_outer else "")
+            + f"control {self.control}, traction {self.traction}",
             f"delta_x = {self.displacement[0] * 1e6:.3f} um, delta_y = {self.displacement[1] * 1e6:.3f} um, "
             f"delta_a = {self.displacement[2] * 1e6:.3f} um, tilt_x = {self.displacement[3] * 1e3:.4f} mrad, "
             f"tilt_y = {self.displacement[4] * 1e3:.4f} mrad",
