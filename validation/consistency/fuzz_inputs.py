@@ -280,6 +280,10 @@ CASES = [
          api="report(lambda: eb.Scenario(Fr=3000.0, omega=500.0, cage='rigid', lubrication=False, pocket_film=True))"),
     Case("p34_pocket_film_not_a_bool", "refuse", "pocket_film",
          api="report(lambda: eb.Scenario(Fr=3000.0, omega=500.0, cage='rigid', pocket_film='yes'))"),
+    # a start's kinematic hypothesis given without the quasi-static start it chooses
+    Case("c34_control_without_quasistatic_start", "refuse", "control",
+         cli=("simulate", "6208", "--Fr", "3000", "--omega", "500", "--t-end", "0.001", "--control", "equilibrium",
+              "--no-progress")),
     # the reduced engine's step control: a tolerance out of range, and one the reference engine does not take
     Case("t37_tolerance_negative", "refuse", "tolerance",
          api="report(lambda: eb.Scenario(Fr=3000.0, omega=500.0, tolerance=-1e-3))"),
