@@ -2,6 +2,7 @@
 ring at the protocol's outer speed; the balls then orbit at the kinematic cage speed of a turning outer ring, the
 drive power is the outer ring's, the energy balance closes, the quasi-static solver agrees; the Exudyn and reduced
 engines refuse it by name."""
+import math
 import warnings
 
 import numpy as np
@@ -207,3 +208,24 @@ def test_quasistatic_takes_the_outer_speed_in_rpm_as_simulate_does(capsys):
     with pytest.raises(SystemExit) as exc:  # argparse: the two are exclusive
         main(["quasistatic", "6208", "--Fr", "3000", "--omega-outer", "1", "--rpm-outer", "1"])
     assert exc.value.code == 2
+
+
+def test_info_takes_the_outer_ring_speed(capsys):
+    # the defect frequencies depend on the rings' relative speed: the same with either ring turning; the cage
+    # frequency is f_o (1 + gamma) / 2 with the outer ring turning against f_i (1 - gamma) / 2 with the inner
+    import json
+
+    from exudyn_bearing.cli import main
+
+    out = {}
+    for name, args in (("inner", ["--rpm", "1797"]), ("outer", ["--rpm", "0", "--rpm-outer", "1797"])):
+        assert main(["info", "6205", *args, "--json"]) == 0
+        out[name] = json.loads(capsys.readouterr().out)
+    for k in ("bpfo", "bpfi", "bsf"):
+        assert out["outer"][k] == pytest.approx(out["inner"][k], rel=1e-12), k
+    f = 1797.0 / 60.0
+    b = eb.catalog["6205"]
+    gamma = 2.0 * b.ball_radius * math.cos(b.free_contact_angle) / (2.0 * b.pitch_radius)
+    assert out["inner"]["ftf"] == pytest.approx(f * (1.0 - gamma) / 2.0, rel=1e-12)
+    assert out["outer"]["ftf"] == pytest.approx(f * (1.0 + gamma) / 2.0, rel=1e-12)
+    assert main(["info", "6205", "--rpm-outer", "1797"]) == 2   # the inner ring's speed is needed too

@@ -13,7 +13,8 @@ from ..physics.hertz import METHODS
 from ..physics.rating_life import RATING_UNITS, rating_life
 from ..solvers.analytic import bearing_info
 from ..solvers.quasistatic.solve import check_operating_fit
-from .common import (BEARING_HELP, RING_GROWTH, add_speed_arguments, bearing_from_args, omega_from_args,
+from .common import (BEARING_HELP, RING_GROWTH, add_outer_speed_arguments, add_speed_arguments, bearing_from_args,
+                     omega_from_args, omega_outer_from_args,
                      print_table)
 from .static import warn_speed
 
@@ -37,6 +38,7 @@ def add_parser(sub):
                    help="print the catalogue, one bearing a line: name, type, d x D x B [mm], Z x D_w [mm], "
                         "contact angle [deg], data-sheet or estimated geometry")
     add_speed_arguments(p, what="none: geometry and Hertz constants only")
+    add_outer_speed_arguments(p, " of the kinematics and defect frequencies (with --omega or --rpm)")
     p.add_argument("--hertz", choices=METHODS, default="exact", help="Hertz fidelity level")
     p.add_argument("--json", action="store_true", help="print JSON (with a units map) instead of a table")
 
@@ -72,11 +74,13 @@ def run(args):
     if args.bearing is None:
         raise InputError("bearing: missing; give a BEARING (catalogue name or JSON file) or --list")
     b = bearing_from_args(args)
-    omega = omega_from_args(args)
+    omega, omega_outer = omega_from_args(args), omega_outer_from_args(args)
+    if omega is None and omega_outer:
+        raise InputError("omega: --omega-outer / --rpm-outer need the inner ring's speed too (--omega 0: at rest)")
     if omega is not None:  # the speed limit of quasistatic: the rings grown by the speed must hold the balls
-        check_operating_fit(b, omega, ring_growth=RING_GROWTH)
-        warn_speed(b, omega)
-    info = bearing_info(b, omega, args.hertz)
+        check_operating_fit(b, omega, omega_outer, ring_growth=RING_GROWTH)
+        warn_speed(b, omega, omega_outer)
+    info = bearing_info(b, omega, args.hertz, omega_outer=omega_outer)
     ratings = rating_life(b, (0.0, 0.0), warn=False).to_dict()
     info.update({k: ratings[k] for k in RATING_KEYS})
     info["estimated"] = list(b.estimated)

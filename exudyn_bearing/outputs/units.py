@@ -16,7 +16,7 @@ _LENGTHS = ("ball_radius", "inner_race_radius", "outer_race_radius", "inner_groo
 INFO_UNITS = dict({k: "m" for k in _LENGTHS}, n_balls="-", inner_conformity="-", outer_conformity="-",
                   conformity_sum="-", free_contact_angle_deg="deg", ball_mass="kg", e_prime="Pa",
                   K_inner="N/m^1.5", K_outer="N/m^1.5", K_n="N/m^1.5", kappa_inner="-", kappa_outer="-",
-                  omega="rad/s", cage_speed="rad/s", ball_spin="rad/s", ball_spin_relative="rad/s",
+                  omega="rad/s", omega_outer="rad/s", cage_speed="rad/s", ball_spin="rad/s", ball_spin_relative="rad/s",
                   rolling_speed="m/s", ftf="Hz", bpfo="Hz", bpfi="Hz", bsf="Hz")
 
 #: Regime codes of the per-contact arrays and their names (-1: unloaded contact).

@@ -27,7 +27,7 @@ def _check_speed(name, value):
     return v
 
 
-def bearing_info(bearing: BallBearing | str, omega=None, hertz_method="exact") -> dict:
+def bearing_info(bearing: BallBearing | str, omega=None, hertz_method="exact", omega_outer=0.0) -> dict:
     """Geometry, derived values, Hertz constants and (at speed) kinematics.
 
     Parameters
@@ -35,7 +35,9 @@ def bearing_info(bearing: BallBearing | str, omega=None, hertz_method="exact") -
     bearing : BallBearing or str
         Geometry (catalogue name or JSON file, :func:`~exudyn_bearing.data.load_bearing`).
     omega : float, optional
-        Inner-ring speed [rad/s], outer ring fixed.
+        Inner-ring speed [rad/s]; with it the kinematics.
+    omega_outer : float
+        Outer-ring speed [rad/s] of the kinematics (default 0: fixed).
     hertz_method : str
         Hertz fidelity level for ``K_inner``, ``K_outer``.
 
@@ -88,16 +90,18 @@ def bearing_info(bearing: BallBearing | str, omega=None, hertz_method="exact") -
     }
     if omega is not None:
         w = _check_speed("omega", omega)
-        args = (w, 0.0, b.ball_radius, b.pitch_radius, alpha)
+        w_o = _check_speed("omega_outer", omega_outer)
+        args = (w, w_o, b.ball_radius, b.pitch_radius, alpha)
         u_i, _u_o = kinematics.rolling_speeds(*args)
         info.update({
             "omega": w,
+            "omega_outer": w_o,
             "cage_speed": float(kinematics.cage_speed(*args)),
             "ball_spin": float(kinematics.ball_spin_absolute(*args)),
             "ball_spin_relative": float(kinematics.ball_spin_relative(*args)),
             "rolling_speed": float(u_i),
         })
-        info.update(kinematics.defect_frequencies(w, 0.0, b.n_balls, b.ball_radius, b.pitch_radius, alpha))
+        info.update(kinematics.defect_frequencies(w, w_o, b.n_balls, b.ball_radius, b.pitch_radius, alpha))
     return info
 
 
