@@ -200,7 +200,10 @@ def plot_run(run, png) -> Path:
     fig.suptitle(f"{b.name}: Fr = {s.Fr:g} N, Fa = {s.Fa:g} N, omega = {s.omega:g} rad/s"
                  + (f", omega_outer = {outer:g} rad/s" if outer else "")
                  + f", {run.engine} engine, {s.integrator}, dt = {s.dt:g} s")
-    save_figure(fig, png, {"t_s": t, "omega_rad_s": omega, "cage_speed_rad_s": cage, "ball_spin_mean_rad_s": spin,
+    columns = {"t_s": t, "omega_rad_s": omega}
+    if outer:  # the outer ring's speed beside the inner's when it turns
+        columns["omega_outer_rad_s"] = np.array([s.omega_outer_at(x) for x in t])
+    save_figure(fig, png, {**columns, "cage_speed_rad_s": cage, "ball_spin_mean_rad_s": spin,
                            "q_max_inner_N": q_in, "q_max_outer_N": q_out}, layout=False)
     return png
 

@@ -594,6 +594,8 @@ class Results:
             out[name] = {"t0": float(a), "t1": float(min(b, t[-1])), "omega": float(np.mean(omega[sel])),
                          "cage_speed": float(np.mean(cage[sel])), "ball_spin": float(np.mean(spin[sel])),
                          "q_max_inner": float(load_i[sel].max()), "q_max_outer": float(load_o[sel].max())}
+            if getattr(self.scenario, "omega_outer", 0.0):  # the outer ring's mean speed in the phase, when it turns
+                out[name]["omega_outer"] = float(np.mean([self.scenario.omega_outer_at(x) for x in t[sel]]))
         return out
 
     def summary(self, fraction: float | None = None, t_window=None) -> Summary:

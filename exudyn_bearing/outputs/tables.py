@@ -93,7 +93,8 @@ def summary_rows(summary, t_end=None):
     rows = [(r[0], _not_converged(r[1], r[2] if len(r) > 2 else None)) if r[0] in marked and r[1] is not None else r
             for r in rows]
     for name, ph in summary.get("phases", {}).items():
-        rows.append((f"phase {name}", f"{ph['t0']:.4g} - {ph['t1']:.4g} s: omega {ph['omega']:.4g} rad/s, cage "
+        outer = f", omega_outer {ph['omega_outer']:.4g} rad/s" if "omega_outer" in ph else ""
+        rows.append((f"phase {name}", f"{ph['t0']:.4g} - {ph['t1']:.4g} s: omega {ph['omega']:.4g} rad/s{outer}, cage "
                                       f"{ph['cage_speed']:.4g} rad/s, ball spin {ph['ball_spin']:.4g} rad/s, "
                                       f"q_max inner/outer {ph['q_max_inner']:.0f}/{ph['q_max_outer']:.0f} N"))
     return rows
