@@ -330,3 +330,21 @@ def test_cage_loads_above_their_stable_step_are_flagged():
     with pytest.warns(StepSizeWarning, match="cage-ball contacts reached"):
         eb.simulate("6208", sc.replace(dt=5e-6))
     assert np.isfinite(fine.data["cage_load"]).all()
+
+
+def test_a_hold_without_ramp_down_ends_at_speed():
+    # a protocol ramp up + hold, no slow-down: its last instant is still held (the run's last sample was taken
+    # after an instantaneous stop: a summary of a 500 rad/s hold read 450 rad/s over a 10-sample window); the
+    # rest after it, and a protocol with a slow-down, are unchanged
+    from exudyn_bearing.model.motion import omega_profile
+
+    t_end = 0.002 + 0.002
+    assert omega_profile(t_end, 500.0, 0.002, 0.002, 0.0) == 500.0
+    assert omega_profile(t_end + 1e-7, 500.0, 0.002, 0.002, 0.0) == 0.0
+    assert omega_profile(t_end, 500.0, 0.002, 0.002, 0.001) == 500.0
+    assert omega_profile(t_end + 0.001, 500.0, 0.002, 0.002, 0.001) == 0.0
+    sc = eb.Scenario(Fr=3000.0, omega=500.0, t_ramp_up=0.002, t_steady=0.002, t_end=t_end, dt=2e-6)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", eb.SteadyStateWarning)
+        run = eb.simulate("6208", sc, progress=False)
+    assert run.global_series("omega")[-1] == 500.0

@@ -11,18 +11,25 @@ import numpy as np
 from .._jit import kernel
 from .layout import RING_N
 
-__all__ = ["omega_profile", "spin_angle", "kick_drift", "ring_poses", "rotate_frame"]
+__all__ = ["omega_profile", "spin_angle", "kick_drift", "ring_poses", "rotate_frame", "HOLD_END_TOLERANCE"]
+
+#: :func:`omega_profile` without a ramp down: a time within this share of the hold's end (t_up + t_steady) is
+#: still held (the round-off of the engines' accumulated times; 1e-9 of a 10 s protocol is 1e-8 s, below the
+#: least step 1e-7 s).
+HOLD_END_TOLERANCE = 1e-9
 
 
 @kernel
 def omega_profile(t, w_max, t_up, t_steady, t_down):
-    """Inner-ring speed of the protocol: ramp up, hold, ramp down, rest [rad/s]."""
+    """Inner-ring speed of the protocol: ramp up, hold, ramp down, rest [rad/s]. Without a ramp down the hold
+    includes its end (within HOLD_END_TOLERANCE of it, far below any step): a run that ends there ends at speed,
+    and its last sample is not taken after an instantaneous stop."""
     if t < 0.0:
         return 0.0
     if t < t_up:
         return w_max * t / t_up
     t = t - t_up
-    if t < t_steady:
+    if t < t_steady or (t_down == 0.0 and t <= t_steady + HOLD_END_TOLERANCE * (t_up + t_steady)):
         return w_max
     t = t - t_steady
     if t < t_down:

@@ -141,7 +141,8 @@ class Scenario:
         Speed protocol [s]: linear ramp 0 -> omega over ``t_ramp_up``, hold
         for ``t_steady``, linear ramp to 0 over ``t_ramp_down``, then rest.
         ``t_ramp_up = 0`` starts at omega; ``t_steady = inf`` (default) never
-        slows down.
+        slows down; without a ramp down the hold includes its end, so a run
+        ending there ends at speed (the rest begins after it).
     Pd : float or None
         Diametral clearance override [m] (None: the bearing's own).
     cage : {"auto", "torus", "rigid", "none"} or bool
