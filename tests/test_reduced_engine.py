@@ -126,6 +126,8 @@ def test_rigid_cage_steady_state_equals_the_reference_engine():
         res = eb.simulate("6208", eb.Scenario(**fields, dt=2e-5), engine="reduced")
         red = res.summary(fraction=0.75)
     assert red["engine"] == "reduced" and red["steps"] == 10000
+    # the summary names the integrator each engine ran, not the scenario's unused velocity-Verlet default
+    assert red["integrator"].startswith("linearly implicit BDF2") and ref["integrator"] == "verlet"
     for s in (ref, red):
         s["dissipation_contacts"] = s["dissipation"] - s["cage_power_pocket"] - s["cage_power_land"]
     criteria = {**{k: v for k, v in CRITERIA.items() if k != "dissipation"},

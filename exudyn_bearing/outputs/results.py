@@ -105,6 +105,9 @@ CHURNING_NOT_MODELLED = "churning in an oil bath (the drag through the oil-air m
 DYNAMIC_NOT_MODELLED = ("cage land friction (the cage balls' guide contact is frictionless)",
                         "seal friction (open bearing)")
 #: What an engine leaves out beyond its losses (``not_modelled`` of its summaries).
+#: The integrator an engine runs whatever ``Scenario.integrator`` says (the summary's ``integrator``): the reduced
+#: engine's own step (docs/theory/reduced.md); the others take the scenario's.
+ENGINE_INTEGRATORS = {"reduced": "linearly implicit BDF2 (reduced engine)"}
 ENGINE_NOT_MODELLED = {
     "reduced": ("the ball / race contact vibration (reduced engine: the ball centres sit on their normal force "
                 "balance; no impacts at the contact's frequency, so defect signals stay with the reference engine)",),
@@ -685,7 +688,7 @@ class Results:
             "t_end": float(self.t[-1]),
             "wall_s": self.wall_s,
             "stable_dt": self.stable_dt,
-            "integrator": self.scenario.integrator,
+            "integrator": ENGINE_INTEGRATORS.get(self.engine, self.scenario.integrator),
             "friction": self.scenario.friction,
             "hertz": self.scenario.hertz,
             "film": self.scenario.film,
