@@ -90,7 +90,7 @@ from ..physics.hertz import EXACT as HERTZ_EXACT
 from ..physics.hertz import (_axes_ratio, _curvature_sum_radius, _kfe_fast, _kfe_table_ln, _semi_axes,
                              _semi_axes_overlap, _stiffness)
 from ..physics.losses import _ehl_rolling_force, _hysteresis_rolling_force, ball_drag_force
-from ..physics.pocket_film import _pocket_film
+from ..physics.pocket_film import _hydrodynamic_film_load, _squeeze_film_damping
 from ..physics.short_bearing import _short_bearing_xy
 from .layout import (POCKET_ESCAPE, G_CAGE_LOAD_POWER, G_LAND_ECC, G_LAND_FX, G_LAND_FY, G_LAND_POWER, G_POCKET_POWER, P_GUIDANCE, P_IC, P_K_LAND,
                      P_K_POCKET, P_LAND_C, P_LAND_EPS, P_LAND_ETA, P_LAND_L, P_LAND_R, P_MC, P_MU_POCKET,
@@ -892,8 +892,8 @@ def _pocket_film_force(p, xb, vb, j, cx, cy, ux, uy, uz, wc, nx, ny, nz, sx, sy,
     far = h + 2.0 * gap
     if far < floor:
         far = floor
-    w1, c1 = _pocket_film(eta, u, r_x, h_hat, rb, near, ddot)
-    w2, c2 = _pocket_film(eta, u, r_x, h_hat, rb, far, -ddot)
+    w1, c1 = _hydrodynamic_film_load(eta, u, r_x, h_hat, near), _squeeze_film_damping(eta, rb, near)
+    w2, c2 = _hydrodynamic_film_load(eta, u, r_x, h_hat, far), _squeeze_film_damping(eta, rb, far)
     if tau > 0.0:
         c1 = _implicit_damping(c1, m_eff, tau)
         c2 = _implicit_damping(c2, m_eff, tau)

@@ -43,8 +43,8 @@ import numpy as np
 
 from .._jit import kernel
 
-__all__ = ["isoviscous_rigid_film_constant", "hydrodynamic_film_force", "squeeze_film_force",
-           "squeeze_film_damping", "pocket_film_radii"]
+__all__ = ["isoviscous_rigid_film_constant", "hydrodynamic_film_load", "hydrodynamic_film_force",
+           "squeeze_film_force", "squeeze_film_damping", "pocket_film_radii"]
 
 
 def isoviscous_rigid_film_constant(radius_ratio):
@@ -63,20 +63,25 @@ def isoviscous_rigid_film_constant(radius_ratio):
     return 128.0 * a * lam * lam * (0.131 * np.arctan(0.5 * a) + 1.683) ** 2
 
 
-def hydrodynamic_film_force(viscosity, entraining_speed, r_x, radius_ratio, film_thickness):
+def hydrodynamic_film_load(viscosity, entraining_speed, r_x, h_hat, film_thickness):
     """w = eta |u| R_x sqrt(H_hat R_x / h) [N]: the load a rigid isoviscous film of minimum thickness h [m]
     carries at the entraining speed u [m/s] (the mean of the surfaces' speeds), R_x [m] the radius along u,
-    ``radius_ratio`` R_y / R_x (:func:`isoviscous_rigid_film_constant`; Brewe, Hamrock & Taylor [1]_ solved
-    for the load). ``viscosity`` eta [Pa s]."""
-    h_hat = isoviscous_rigid_film_constant(radius_ratio)
-    h = np.asarray(film_thickness, float)
-    return viscosity * np.abs(entraining_speed) * r_x * np.sqrt(h_hat * r_x / h)
+    ``h_hat`` the film constant H_hat of :func:`isoviscous_rigid_film_constant` (Brewe, Hamrock & Taylor [1]_
+    solved for the load). ``viscosity`` eta [Pa s]. Scalars or arrays (also compiled: ``_hydrodynamic_film_load``)."""
+    return viscosity * np.abs(entraining_speed) * r_x * np.sqrt(h_hat * r_x / film_thickness)
+
+
+def hydrodynamic_film_force(viscosity, entraining_speed, r_x, radius_ratio, film_thickness):
+    """:func:`hydrodynamic_film_load` [N] for the radius ratio ``radius_ratio`` = R_y / R_x."""
+    return hydrodynamic_film_load(viscosity, entraining_speed, r_x, isoviscous_rigid_film_constant(radius_ratio),
+                                  np.asarray(film_thickness, float))
 
 
 def squeeze_film_damping(viscosity, radius, film_thickness):
     """C = 6 pi eta R^2 / h [N s/m]: the squeeze film's force per approach speed of a sphere of radius R [m]
-    at the gap h [m] from a plane (Brenner's lubrication limit [3]_); ``viscosity`` eta [Pa s]."""
-    return 6.0 * math.pi * viscosity * np.asarray(radius, float) ** 2 / np.asarray(film_thickness, float)
+    at the gap h [m] from a plane (Brenner's lubrication limit [3]_); ``viscosity`` eta [Pa s]. Scalars or
+    arrays (also compiled: ``_squeeze_film_damping``)."""
+    return 6.0 * math.pi * viscosity * radius * radius / film_thickness
 
 
 def squeeze_film_force(viscosity, radius, film_thickness, approach_speed):
@@ -97,8 +102,5 @@ def pocket_film_radii(ball_radius, pocket_clearance, cylindrical):
     return conform, 1.0
 
 
-@kernel(no_runtime=True, inline="always")
-def _pocket_film(eta, u, r_x, h_hat, r_sq, h, v):
-    """(hydrodynamic force [N], squeeze damping C [N s/m]) of the pocket's film at the gap h > 0 and the
-    entraining speed u (the module's relations in scalar form; the squeeze force is C max(v, 0))."""
-    return eta * abs(u) * r_x * math.sqrt(h_hat * r_x / h), 6.0 * math.pi * eta * r_sq * r_sq / h
+_hydrodynamic_film_load = kernel(hydrodynamic_film_load, no_runtime=True, inline="always")
+_squeeze_film_damping = kernel(squeeze_film_damping, no_runtime=True, inline="always")
