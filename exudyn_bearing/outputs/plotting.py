@@ -196,7 +196,7 @@ def plot_run(run, png) -> Path:
     label_regime_lines(ax[1, 0])
     cax = fig.add_axes([0.92, 0.07, 0.015, 0.33])
     fig.colorbar(sc, cax=cax, label="t [s]")
-    outer = getattr(s, "omega_outer", 0.0)
+    outer = s.omega_outer
     fig.suptitle(f"{b.name}: Fr = {s.Fr:g} N, Fa = {s.Fa:g} N, omega = {s.omega:g} rad/s"
                  + (f", omega_outer = {outer:g} rad/s" if outer else "")
                  + f", {run.engine} engine, {s.integrator}, dt = {s.dt:g} s")

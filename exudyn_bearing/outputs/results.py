@@ -452,7 +452,7 @@ class Results:
         (:data:`~.cage_summary.CAGE_LOSSES_NOT_MODELLED`, or ``CAGE_LOSSES_NOT_MODELLED_FILM`` with the pocket
         film) and the seals for the rigid cage."""
         if self.scenario.cage == "rigid":
-            own = CAGE_LOSSES_NOT_MODELLED_FILM if getattr(self.scenario, "pocket_film", False) else CAGE_LOSSES_NOT_MODELLED
+            own = CAGE_LOSSES_NOT_MODELLED_FILM if self.scenario.pocket_film else CAGE_LOSSES_NOT_MODELLED
             return own + DYNAMIC_NOT_MODELLED[1:]
         return DYNAMIC_NOT_MODELLED
 
@@ -597,7 +597,7 @@ class Results:
             out[name] = {"t0": float(a), "t1": float(min(b, t[-1])), "omega": float(np.mean(omega[sel])),
                          "cage_speed": float(np.mean(cage[sel])), "ball_spin": float(np.mean(spin[sel])),
                          "q_max_inner": float(load_i[sel].max()), "q_max_outer": float(load_o[sel].max())}
-            if getattr(self.scenario, "omega_outer", 0.0):  # the outer ring's mean speed in the phase, when it turns
+            if self.scenario.omega_outer:  # the outer ring's mean speed in the phase, when it turns
                 out[name]["omega_outer"] = float(np.mean([self.scenario.omega_outer_at(x) for x in t[sel]]))
         return out
 
@@ -693,7 +693,7 @@ class Results:
             "hertz": self.scenario.hertz,
             "film": self.scenario.film,
             "cage": self.scenario.cage if (self.scenario.cage != "torus" or b.has_cage) else "none",
-            "pocket_film": bool(getattr(self.scenario, "pocket_film", False)),
+            "pocket_film": self.scenario.pocket_film,
             "lubrication": self.scenario.lubrication,
             "lubricant": self.lubricant.name,
             "traction_model": self.traction_model_name(),
