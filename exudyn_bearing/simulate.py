@@ -238,9 +238,7 @@ def _quasistatic_start_cage(bearing, scenario: Scenario, relative_speed: float):
     the rings' relative speed at t = 0 [rad/s]."""
     if scenario.cage != "rigid":
         return {}, f"cageless quasi-static solution (the scene's cage: {scenario.cage})"
-    from .data.cages import estimated_cage
-
-    rc = scenario.rigid_cage if scenario.rigid_cage is not None else estimated_cage(bearing)
+    rc = scenario.rigid_cage_of(bearing)
     if rc.pocket_spacing_error != 0.0:
         return {}, "cageless quasi-static solution (the pockets are unequally spaced, which it cannot represent)"
     if scenario.control == "min-energy":

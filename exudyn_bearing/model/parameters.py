@@ -8,7 +8,7 @@ import math
 import numpy as np
 
 from ..data import BallBearing, InputError, Lubricant, get_traction_model
-from ..data.cages import GUIDANCES, POCKET_SHAPES, estimated_cage
+from ..data.cages import GUIDANCES, POCKET_SHAPES
 from ..data.traction import regularized
 from ..physics import hertz
 from ..physics.contact_slip import deformed_contact_radius
@@ -96,7 +96,7 @@ def _set_rigid_cage(p, b, s, lub):
     """The rigid cage's entries (docs/theory/cage.md): mass and inertia, pocket and land; its geometry
     ``s.rigid_cage`` or the bearing's estimated cage. The cage balls' mass entry P_MZ becomes m_c (the
     integrators' common 1/m_c of the cage rows)."""
-    rc = s.rigid_cage if s.rigid_cage is not None else estimated_cage(b)
+    rc = s.rigid_cage_of(b)
     rc.check_fits(b)
     mc, ic = rc.mass(b), rc.polar_inertia(b)
     p[L.P_RIGID] = 1.0

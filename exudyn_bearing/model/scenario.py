@@ -13,7 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..data import InputError, get_traction_model
-from ..data.cages import RigidCage
+from ..data.cages import RigidCage, estimated_cage
 from ..data.errors import check_bool, check_keys, check_number, check_temperatures, check_unused
 from ..data.defects import Defect, as_defect
 from ..data.traction import DEFAULT_REGULARIZING_SRR
@@ -558,6 +558,11 @@ class Scenario:
         (:func:`~exudyn_bearing.model.motion.omega_profile` of ``omega_outer``, as the kernels' outer ring)."""
         _w, up, steady, down = self._profile()
         return float(omega_profile(float(t), float(self.omega_outer), up, steady, down))
+
+    def rigid_cage_of(self, bearing) -> RigidCage:
+        """The rigid cage's geometry of this scene on ``bearing``: ``rigid_cage``, or the bearing's estimated cage
+        (:func:`~exudyn_bearing.data.cages.estimated_cage`) when None."""
+        return self.rigid_cage if self.rigid_cage is not None else estimated_cage(bearing)
 
     def speed_function(self):
         """omega(t) [rad/s] of the protocol as a closure over its numbers: the values of

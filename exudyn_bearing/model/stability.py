@@ -301,9 +301,7 @@ def land_film_step(bearing: BallBearing, scenario: Scenario, lubricant: Lubrican
     :func:`explicit_step_factor` at zeta = C / (2 sqrt(k m_c)). inf for a ball-guided cage, and with
     ``cage_damping='implicit'``, which takes the land's force linearly implicit (stiffness and damping:
     no step limit of its linearisation)."""
-    from ..data.cages import estimated_cage
-
-    rc = scenario.rigid_cage if scenario.rigid_cage is not None else estimated_cage(bearing)
+    rc = scenario.rigid_cage_of(bearing)
     if rc.guidance == "ball" or scenario.cage_damping == "implicit":
         return math.inf
     b = bearing
@@ -331,9 +329,7 @@ def rigid_cage_step(b: BallBearing, scenario: Scenario, lub: Lubricant, q: float
     pocket contact (the reduced mass of ball and cage on the tangent Hertz stiffness at the pocket load:
     ``cage_load`` or :func:`expected_cage_load` of the ball load ``q``) and the land film
     (:func:`land_film_step` at ``land_eccentricity``, default :data:`LAND_DESIGN_ECCENTRICITY`)."""
-    from ..data.cages import estimated_cage
-
-    rc = scenario.rigid_cage if scenario.rigid_cage is not None else estimated_cage(b)
+    rc = scenario.rigid_cage_of(b)
     e_pocket = hertz.reduced_modulus(b.material.youngs_modulus, b.material.poisson_ratio, rc.material.youngs_modulus,
                                      rc.material.poisson_ratio)
     kp = float(hertz.ball_in_pocket_stiffness(b.ball_radius, rc.pocket_clearance, rc.pocket_shape == "cylindrical",
@@ -365,11 +361,10 @@ def pocket_film_step(bearing: BallBearing, scenario: Scenario, lubricant: Lubric
     ``cage_damping='implicit'`` the squeeze is backward Euler and only the stiffness limits the step."""
     if not scenario.pocket_film:
         return math.inf
-    from ..data.cages import estimated_cage
     from ..physics import pocket_film as pf
 
     b = bearing
-    rc = scenario.rigid_cage if scenario.rigid_cage is not None else estimated_cage(b)
+    rc = scenario.rigid_cage_of(b)
     h = lubricant.composite_roughness
     r_x, alpha_r = pf.pocket_film_radii(b.ball_radius, rc.pocket_clearance, rc.pocket_shape == "cylindrical")
     spin = abs(float(kinematics.ball_spin_relative(scenario.omega, 0.0, b.ball_radius, b.pitch_radius,

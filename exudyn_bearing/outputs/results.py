@@ -34,7 +34,6 @@ from ..model.parameters import scene_parameters
 from ..model.record import RunRecord
 from ..model.scenario import Scenario
 from ..physics.damping import REGIME_NAMES
-from ..data.cages import estimated_cage
 from .cage_summary import (CAGE_LOSSES_NOT_MODELLED, CAGE_LOSSES_NOT_MODELLED_FILM, CAGE_SUMMARY_UNITS,
                            rigid_cage_summary)
 from .contact_summary import CONTACT_SUMMARY_UNITS, contact_summary
@@ -716,7 +715,7 @@ class Results:
             out.update(rigid_cage_summary(self.data, w, self.model_parameters(), out["cage_speed"],
                                           out.get("kinematic_cage_speed")))
             # the cage the run took (the scenario's, else the bearing's estimated one): its estimated fields
-            out["rigid_cage_estimated"] = list((self.scenario.rigid_cage or estimated_cage(b)).estimated)
+            out["rigid_cage_estimated"] = list(self.scenario.rigid_cage_of(b).estimated)
         if self.has_protocol():
             out["phases"] = self._phase_summaries()
         work = getattr(self.record, "reduced_stats", None)

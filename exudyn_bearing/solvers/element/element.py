@@ -125,7 +125,6 @@ import numpy as np
 
 from ..._jit import announce_compilation
 from ...data import InputError, Lubricant, default_traction, load_bearing, load_lubricant
-from ...data.cages import estimated_cage
 from ...data.errors import check_finite, check_positive
 from ...data.traction import DEFAULT_REGULARIZING_SRR
 from ...model import layout as L
@@ -310,7 +309,7 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
                              "cage=False")
         self.rigid = self.scenario.cage == "rigid"
         # the kernel's rigid cage (model.parameters): the scenario's, or the bearing's estimated one
-        self._cage_geometry = (self.scenario.rigid_cage or estimated_cage(b)) if self.rigid else None
+        self._cage_geometry = self.scenario.rigid_cage_of(b) if self.rigid else None
         self.params = scene_parameters(b, self.scenario, self.lubricant)
         self.table = hertz.exact_table()
         self.stable = stable_step(b, self.scenario, self.lubricant)
