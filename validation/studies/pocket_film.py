@@ -39,7 +39,7 @@ KEYS = ("stable_dt", "pocket_film_step", "pocket_force_max", "pocket_force_mean"
         "cage_speed", "cage_motion", "cage_orbit_ratio", "q_max_inner", "energy_residual")
 
 
-def scenes(t_end, dt_7208):
+def scenes(dt_7208):
     return {
         "6208 radial, Fr 3000 N, 500 rad/s, 2 us": ("6208", dict(Fr=3000.0, omega=500.0, dt=2e-6)),
         f"7208 Fr = Fa = 3000 N, 500 rad/s, {dt_7208 * 1e6:g} us": (
@@ -73,7 +73,7 @@ def main(argv=None):
     a = ap.parse_args(argv)
     a.out.mkdir(parents=True, exist_ok=True)
     rows = {}
-    for name, (bearing, fields) in scenes(a.t_end, a.dt_7208).items():
+    for name, (bearing, fields) in scenes(a.dt_7208).items():
         for film in (False, True):
             label = f"{name}, {'pocket film' if film else 'dry pockets'}"
             rows[label] = r = run(bearing, fields, a.t_end, film)
