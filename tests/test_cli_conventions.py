@@ -205,3 +205,14 @@ def test_readme_command_1_is_what_ci_runs_and_parses():
     args = _parser().parse_args(argv)
     assert args.bearing == "6208" and args.t_end is None  # the protocol sets the run length
     assert scenario_from_args(args).t_end == pytest.approx(0.3)
+
+
+def test_help_lists_the_exit_statuses_main_returns(capsys):
+    from exudyn_bearing.cli import EXIT_STATUSES
+
+    assert exit_code(["--help"]) == 0
+    text = " ".join(capsys.readouterr().out.split())
+    for status, meaning in EXIT_STATUSES.items():
+        assert f"{status} {meaning}" in text
+    # the documented bad-input status is the one returned
+    assert exit_code(["static", "6208", "--lubricant", "olive-oil"]) == 2

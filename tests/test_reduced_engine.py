@@ -272,7 +272,7 @@ def test_step_control_summary(step_runs):
     assert work["tolerance"] is None and work["steps_rejected"] == 0 and work["dt_min"] == work["dt_max"] == 2.5e-6
 
 
-@pytest.mark.parametrize("tol", [0.0, -1e-5, float("nan"), float("inf"), 1.0, True, "1e-5"])
+@pytest.mark.parametrize("tol", [0.0, -1e-5, float("nan"), float("inf"), 1.0, True, "1e-5", 1e-30, 9e-10])
 def test_bad_tolerance_is_refused_by_name(tol):
     with pytest.raises(InputError, match="^tolerance:"):
         eb.Scenario(Fr=3000.0, omega=500.0, dt=2e-5, tolerance=tol, **COMMON)
@@ -283,6 +283,12 @@ def test_fixed_step_engines_refuse_a_tolerance_by_name(engine):
     sc = eb.Scenario(Fr=3000.0, omega=500.0, t_end=2e-4, dt=2e-6, tolerance=1e-5, **COMMON)
     with pytest.raises(InputError, match=f"^tolerance: the {engine} engine takes the fixed step"):
         eb.simulate("6208", sc, engine=engine)
+
+
+def test_first_step_below_the_least_step_is_refused_naming_dt():
+    sc = eb.Scenario(Fr=3000.0, omega=500.0, t_end=2e-4, dt=5e-8, tolerance=1e-5, **COMMON)
+    with pytest.raises(InputError, match=r"^dt: with a tolerance, dt is the first step .* least step 1e-07 s"):
+        eb.simulate("6208", sc, engine="reduced")
 
 
 def test_step_control_stops_naming_the_tolerance_at_its_least_step():

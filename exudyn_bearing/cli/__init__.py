@@ -59,6 +59,10 @@ DESCRIPTION = ("Rolling-element ball bearings: data sheet (info), load distribut
                "zero speed (static), quasi-static equilibrium at speed (quasistatic), dynamic simulation ball by "
                "ball (simulate), linear vibration models (vibration). BEARING is a catalogue name or a JSON file; "
                "'exudyn-bearing COMMAND --help' lists a command's options.")
+#: The exit statuses of :func:`main` (``exudyn-bearing --help`` lists them).
+EXIT_STATUSES = {0: "done", 2: "bad input or an unreadable file (the message names the parameter)",
+                 3: "a run that failed (SimulationError: what was written is named)", 130: "stopped by Ctrl-C"}
+EPILOG = "exit status: " + "; ".join(f"{k} {v}" for k, v in EXIT_STATUSES.items())
 
 #: Sub-commands: name -> module (of this package) with ``add_parser(subparsers)`` and ``run(args)``.
 COMMANDS = {"info": ".info", "static": ".static", "quasistatic": ".quasistatic", "simulate": ".simulate",
@@ -75,7 +79,7 @@ def _parser(argv=None) -> Parser:
     sub-command only (its options and help are the same; the others' modules stay unimported)."""
     from .. import __version__
 
-    p = Parser(prog="exudyn-bearing", description=DESCRIPTION)
+    p = Parser(prog="exudyn-bearing", description=DESCRIPTION, epilog=EPILOG)
     p.add_argument("--version", action="version", version=f"exudyn-bearing {__version__}", default=None,
                    help="print the version and exit")
     sub = p.add_subparsers(dest="command", required=True, parser_class=Parser, metavar="COMMAND",

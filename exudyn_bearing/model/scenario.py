@@ -40,6 +40,10 @@ INITIAL_STATES = ("analytic", "rest", "quasistatic")
 #: Default ``Scenario.regularizing_speed`` [m/s]: the slip speed of regularised friction and the least
 #: rolling speed of the ellipse traction law at start-up (:func:`rolling_speed_floor`).
 DEFAULT_REGULARIZING_SPEED = 0.1
+#: The least ``tolerance`` of the reduced engine's step control: below it the error estimate's own round-off
+#: (about 2e-9 of the speed scale at the least step, 1e-7 s; measured on the 6208 radial case, where tolerances
+#: 1e-10 and 1e-13 both stopped at an error of 2.04e-9) leaves no step that meets it.
+TOLERANCE_MIN = 1e-9
 #: Kinematic hypotheses of the quasi-static start (those of the quasi-static solver).
 CONTROLS = ("auto", "outer", "inner", "min-energy", "equilibrium")
 #: Time integrators of the reference engine.
@@ -279,7 +283,8 @@ class Scenario:
         surface speeds) stays below ``tolerance`` times the inner ring's
         speed at the pitch radius; ``dt`` is then the first step, the steps
         lie between 0.1 us and min(1e-4 s, ``sample_dt``) and land on the
-        sample times. A number in (0, 1); None (default): the fixed step
+        sample times. A number in [1e-9, 1) (below 1e-9 no step meets it:
+        the error estimate's round-off floor); None (default): the fixed step
         ``dt``. The other engines have fixed steps and refuse it.
     sample_dt : float
         Output interval [s].
@@ -421,6 +426,11 @@ class Scenario:
                     or not 0.0 < tol < 1.0:
                 raise InputError(f"tolerance: the reduced engine's local error per step, relative, must be a number "
                                  f"in (0, 1) (e.g. 1e-4), or None for the fixed step dt; got {tol!r}")
+            if tol < TOLERANCE_MIN:
+                raise InputError(f"tolerance: {tol:g} is below {TOLERANCE_MIN:g}, the round-off floor of the step "
+                                 "control's error estimate (about 2e-9 of the speed scale at the least step, 1e-7 s, "
+                                 "on the 6208): no step could meet it; 1e-6 resolves the drive power "
+                                 "(docs/theory/reduced.md)")
             object.__setattr__(self, "tolerance", float(tol))
         if self.sample_dt < self.dt:
             raise InputError(f"sample_dt: must be >= dt ({self.dt}), got {self.sample_dt}")

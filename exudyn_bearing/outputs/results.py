@@ -40,8 +40,8 @@ from .contact_summary import CONTACT_SUMMARY_UNITS, contact_summary
 from .jsonio import to_jsonable
 from .whole_loss import WHOLE_LOSS_DESCRIPTIONS, WHOLE_LOSS_KEYS, WHOLE_LOSS_UNITS, whole_loss
 from .tables import NOT_CONVERGED_MARK, Summary
-from .window_checks import (LOSS_FLOOR_MU, sample_window, SPEED_FLOOR, SteadyStateWarning, energy_balance, energy_check,
-                            energy_floor, q_max_at_psi0, steadiness)
+from .window_checks import (LOSS_FLOOR_MU, sample_window, SPEED_FLOOR, SteadyStateWarning,
+                            energy_balance, energy_check, energy_floor, q_max_at_psi0, steadiness)
 
 __all__ = ["Results", "SUMMARY_KEYS", "SUMMARY_UNITS", "SUMMARY_DESCRIPTIONS", "PHASE_NAMES", "LOSSES_MODELLED",
            "LOSSES_NOT_MODELLED", "DYNAMIC_LOSS_COMPONENTS", "DYNAMIC_NOT_MODELLED", "DYNAMIC_SWITCHED_LOSSES",
@@ -137,7 +137,7 @@ SUMMARY_UNITS = {
     "Fr": "N", "Fa": "N", "Pd": "m", "omega": "rad/s", "omega_outer": "rad/s", "q_max_inner": "N", "q_max_outer": "N",
     "q_max_inner_mean": "N", "q_max_outer_mean": "N", "cage_speed": "rad/s", "ball_spin": "rad/s",
     "lambda_outer_psi0": "-", "lambda_inner_psi0": "-", "regime_fraction": "-", "srr_mean": "-",
-    "ring_displacement": "m", "friction_torque": GLOBAL_UNITS["ring_torque"],
+    "ring_displacement": "m", "friction_torque": GLOBAL_UNITS["ring_torque"] + " (inner ring)",
     "friction_power": GLOBAL_UNITS["friction_power"], **CONTACT_SUMMARY_UNITS, "steps": "-", "dt": "s", "t_end": "s", "wall_s": "s", "stable_dt": "s",
     "window.t0": "s", "window.t1": "s", "drive_power": "W", "load_power": "W", "dissipation": "W",
     "kinetic_energy_change": "J", "energy_residual": "-", "power_loss": "W per component",
@@ -150,8 +150,9 @@ SUMMARY_DESCRIPTIONS = {
     "q_max_inner": "load of the ball at psi = 0 over the window, inner race (q_max_method: how it was obtained)",
     "q_max_outer": "load of the ball at psi = 0 over the window, outer race (q_max_method: how it was obtained)",
     "friction_torque": "torque that drives the inner ring about its axis, time mean: minus the torque of the balls "
-                       "on the ring; positive when the ring must be driven; the modelled losses only (the whole "
-                       "torque is friction_torque_whole)",
+                       "on the ring; positive when the ring must be driven, negative when it must be held back (the "
+                       "inner ring when only the outer ring is driven); the modelled losses only (the driven "
+                       "ring's whole torque, always >= 0, is friction_torque_whole)",
     "friction_power": "frictional (tangential) power of all ball / raceway contacts, time mean; at the point level "
                       "it includes the rate of the energy stored in the tangential springs",
     "dissipation_inner": "frictional power of the inner contacts of all balls, time mean (a part of friction_power)",
@@ -484,11 +485,13 @@ class Results:
         Each series is first averaged over the passage period of the balls,
         2 pi / (Z |cage speed|) (the outer ring at rest). Quantities: the
         per-sample largest ball load of each race (q_max_*),
-        cage speed, mean ball spin, mean contact angle of each race over the
-        loaded contacts, the ring displacement (judged against the norm of
-        its mean), friction torque and dissipation (judged against at least
-        ``LOSS_FLOOR_MU (|Fr| + |Fa|) r_p`` and that times omega; judged only
-        when their mean is above that floor). A window
+        cage speed and mean ball spin (judged against at least SPEED_FLOOR of
+        the rings' speed and regularizing_speed / r_p), mean contact angle of
+        each race over the loaded contacts, the ring displacement (judged
+        against the norm of its mean), friction torque and dissipation (judged
+        against at least ``LOSS_FLOOR_MU (|Fr| + |Fa|) r_p`` and that times
+        max(|omega|, ENERGY_FLOOR_OMEGA), the energy check's floor; judged
+        only when their mean is above that floor). A window
         over the start-up or slow-down ramp is not steady by definition."""
         t = self.t[w]
         diag = self.data["diag"][w]
@@ -497,9 +500,13 @@ class Results:
             load = diag[:, :, race, DIAG_FIELDS.index("load")]
             if np.any(load > 0.0):
                 q[f"q_max_{tag}"] = (load.max(axis=1), "relative", abs(float(np.mean(load.max(axis=1)))))
+        # speeds are judged against at least SPEED_FLOOR of the rings' speed and the speed whose surface speed at
+        # the pitch radius is the regularising speed (slower motion is inside the friction's regularisation, not
+        # resolved): at rest the settling leaves speeds of 1e-11 to 1e-3 rad/s whose drift is no unsteadiness
         omega_ref = max(abs(self.scenario.omega), abs(self.scenario.omega_outer))
+        speed_floor = max(SPEED_FLOOR * omega_ref, self.scenario.regularizing_speed / self.bearing.pitch_radius)
         for name, x in (("cage_speed", self.cage_speed_series()[w]), ("ball_spin", self.ball_spin_series()[w].mean(1))):
-            q[name] = (x, "relative", max(abs(float(np.mean(x))), SPEED_FLOOR * omega_ref, 1e-300))
+            q[name] = (x, "relative", max(abs(float(np.mean(x))), speed_floor))
         for race, tag in ((0, "inner"), (1, "outer")):
             loaded = diag[:, :, race, DIAG_FIELDS.index("load")] > 0.0
             ang = np.where(loaded, diag[:, :, race, DIAG_FIELDS.index("contact_angle")], 0.0).sum(axis=1)
@@ -514,7 +521,7 @@ class Results:
         omega = self.relative_speed_series()[w]
         for name, x, floor in (("friction_torque", -self.global_series("ring_torque")[w], torque_floor),
                                ("dissipation", self.dissipation_series()[w],
-                                torque_floor * abs(float(np.mean(omega))))):
+                                energy_floor(torque_floor, float(np.mean(omega))))):
             mean = abs(float(np.mean(x)))
             if max(mean, floor) > 0.0:
                 below = f"mean below the loss floor {floor:.3g} {SUMMARY_UNITS[name]}" if mean < floor else None
@@ -688,7 +695,8 @@ class Results:
             "wall_s": self.wall_s,
             "stable_dt": self.stable_dt,
             "integrator": ENGINE_INTEGRATORS.get(self.engine, self.scenario.integrator),
-            "friction": self.scenario.friction,
+            # the point level's tangential model; over the ellipse the traction law replaces it (not used)
+            "friction": self.scenario.friction if level == "point" else "not used (traction_level 'ellipse')",
             "hertz": self.scenario.hertz,
             "film": self.scenario.film,
             "cage": self.scenario.cage if (self.scenario.cage != "torus" or b.has_cage) else "none",

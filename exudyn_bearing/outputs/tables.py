@@ -89,6 +89,11 @@ def summary_rows(summary, t_end=None):
     if "note" in summary:
         rows.append(("note", summary["note"]))
     rows += [(f"regime_fraction.{k}", v) for k, v in summary["regime_fraction"].items()]
+    check = summary.get("energy_check") or {}
+    if check.get("passed") is None and check.get("reason") and summary.get("energy_residual") is not None:
+        # a residual the energy check did not judge (a drive power below the loss floor: noise) says so on its row
+        rows = [(r[0], f"{r[1]:.6g} (not judged: {check['reason'].removesuffix(': not judged')}; "
+                       f"energy_source.energy_residual)") if r[0] == "energy_residual" else r for r in rows]
     marked = set(summary.get("not_converged", ()))  # step noise (the point level's friction outputs): said on the row
     rows = [(r[0], _not_converged(r[1], r[2] if len(r) > 2 else None)) if r[0] in marked and r[1] is not None else r
             for r in rows]

@@ -23,7 +23,8 @@ __all__ = ["WHOLE_LOSS_DESCRIPTIONS", "WHOLE_LOSS_KEYS", "WHOLE_LOSS_UNITS", "ba
 WHOLE_LOSS_KEYS = ("power_loss_whole", "power_loss_whole_basis", "power_loss_estimated", "friction_torque_whole",
                    "friction_torque_estimated")
 WHOLE_LOSS_UNITS = {"power_loss_whole": "W", "power_loss_whole_basis": "text", "power_loss_estimated":
-                    "W per component", "friction_torque_whole": "N m", "friction_torque_estimated": "N m"}
+                    "W per component", "friction_torque_whole": "N m (driven ring)",
+                    "friction_torque_estimated": "N m (driven ring)"}
 WHOLE_LOSS_DESCRIPTIONS = {
     "power_loss_whole": "the bearing's whole power loss: power_loss_total (the components the run models) plus "
                         "power_loss_estimated (the quasi-static estimate of each loss it leaves out); "

@@ -182,8 +182,10 @@ def steadiness(t, quantities: dict, ramp: str | None = None, period: float | Non
         "measure": (f"each series averaged over the ball-passage period (passage_period, s); drift: least-squares "
                     f"slope times the window length; oscillation: std of the means of "
                     f"{STEADY_BLOCKS} blocks of the detrended series; both over the scale of the quantity (its "
-                    f"mean; the norm of the mean ring displacement; a loss below {LOSS_FLOOR_MU:g} (|Fr| + |Fa|) "
-                    f"r_p [N m] (times omega [W]) is measured against that floor and not judged), angles in deg"),
+                    f"mean, a speed's at least {SPEED_FLOOR:g} of the rings' speed and regularizing_speed / r_p; "
+                    f"the norm of the mean ring displacement; a loss below {LOSS_FLOOR_MU:g} (|Fr| + |Fa|) "
+                    f"r_p [N m] (times max(|omega|, {ENERGY_FLOOR_OMEGA:g} rad/s) [W]) is measured against that floor "
+                    f"and not judged), angles in deg"),
     }
 
 

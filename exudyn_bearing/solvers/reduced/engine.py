@@ -82,6 +82,9 @@ def reduced_support_error(scenario: Scenario, bearing) -> InputError | None:
     if s.defects:
         problems.append(("defects", "the reduced engine leaves out the ball / race contact vibration, so defect "
                                     "impacts and their signals stay with the reference engine"))
+    if s.tolerance is not None and s.dt < MIN_STEP:
+        problems.append(("dt", f"with a tolerance, dt is the first step and must be at least the step control's "
+                               f"least step {MIN_STEP:g} s (got {s.dt:g} s)"))
     if s.signal_dt is not None:
         problems.append(("signal_dt", "the condition-monitoring signals (contact vibration) are recorded by the "
                                       "reference engine only"))

@@ -1,0 +1,40 @@
+"""Summary rows that must not mislead: the steady-state verdict at rest, the point friction model's row at the
+ellipse level, and which ring each friction torque belongs to."""
+import warnings
+
+import pytest
+
+import exudyn_bearing as eb
+from exudyn_bearing.outputs.window_checks import SteadyStateWarning
+
+
+@pytest.fixture(scope="module")
+def at_rest():
+    sc = eb.Scenario(Fr=3000.0, omega=0.0, t_end=4e-3, dt=2e-6, sample_dt=5e-5, cage="none")
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", SteadyStateWarning)  # the settling speeds at rest are no unsteadiness
+        res = eb.simulate("6208", sc)
+        return res.summary()
+
+
+def test_a_ring_at_rest_is_steady_although_its_speeds_are_settling_noise(at_rest):
+    st = at_rest["steady"]
+    assert st["steady"], st["reason"]
+    # the speeds are tiny, not zero: the verdict comes from the floor, not from exact rest
+    assert 0.0 < abs(at_rest["ball_spin"]) < 1.0
+
+
+def test_the_point_friction_model_is_not_named_at_the_ellipse_level(at_rest):
+    assert at_rest["friction"] == "history"  # the point level (the default) uses it
+    sc = eb.Scenario(Fr=3000.0, omega=500.0, t_end=4e-4, dt=2e-6, sample_dt=1e-4, cage="none",
+                     traction_level="ellipse")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        s = eb.simulate("6208", sc).summary()
+    assert s["friction"].startswith("not used")
+
+
+def test_each_friction_torque_says_its_ring(at_rest):
+    assert "inner ring" in at_rest["units"]["friction_torque"]
+    assert "driven ring" in at_rest["units"]["friction_torque_whole"]
+    assert "held back" in at_rest["descriptions"]["friction_torque"]
