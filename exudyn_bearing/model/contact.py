@@ -90,7 +90,7 @@ from ..physics.hertz import EXACT as HERTZ_EXACT
 from ..physics.hertz import (_axes_ratio, _curvature_sum_radius, _kfe_fast, _kfe_table_ln, _semi_axes,
                              _semi_axes_overlap, _stiffness)
 from ..physics.losses import _ehl_rolling_force, _hysteresis_rolling_force, ball_drag_force
-from ..physics.pocket_film import _hydrodynamic_film_load, _squeeze_film_damping
+from ..physics.pocket_film import _hydrodynamic_film_load, _sphere_wall_shear, _squeeze_film_damping
 from ..physics.short_bearing import _short_bearing_xy
 from .layout import (POCKET_ESCAPE, G_CAGE_LOAD_POWER, G_LAND_ECC, G_LAND_FX, G_LAND_FY, G_LAND_POWER, G_POCKET_POWER, P_GUIDANCE, P_IC, P_K_LAND,
                      P_K_POCKET, P_LAND_C, P_LAND_EPS, P_LAND_ETA, P_LAND_L, P_LAND_R, P_MC, P_MU_POCKET,
@@ -905,6 +905,29 @@ def _pocket_film_force(p, xb, vb, j, cx, cy, ux, uy, uz, wc, nx, ny, nz, sx, sy,
     return f
 
 
+@kernel(inline="always")
+def _pocket_film_shear(p, xb, vb, wb, j, cx, cy, ux, uy, uz, wc, nx, ny, nz, h, floor):
+    """The film's shear force and moment (about the ball's centre) on ball j in its pocket (docs/theory/cage.md,
+    "Pocket oil film"): :func:`~exudyn_bearing.physics.pocket_film.sphere_wall_shear` at the near wall (normal
+    n, gap ``h``) and at the far wall (normal -n, gap h + 2 c_p), each at least ``floor``, for the ball's
+    velocity and angular velocity relative to the cage (the wall's point under the ball's centre moves with
+    the cage's translation and spin). Returns the force (3), the moment (3) and the power it dissipates [W]."""
+    eta, rb = p[P_POCKET_ETA], p[P_RB]
+    qx = vb[j, 0] - (ux - wc * (xb[j, 1] - cy))
+    qy = vb[j, 1] - (uy + wc * (xb[j, 0] - cx))
+    qz = vb[j, 2] - uz
+    ox, oy, oz = wb[j, 0], wb[j, 1], wb[j, 2] - wc
+    near = h if h > floor else floor
+    far = h + 2.0 * p[P_POCKET_GAP]
+    if far < floor:
+        far = floor
+    f1x, f1y, f1z, m1x, m1y, m1z = _sphere_wall_shear(eta, rb, near, nx, ny, nz, qx, qy, qz, ox, oy, oz)
+    f2x, f2y, f2z, m2x, m2y, m2z = _sphere_wall_shear(eta, rb, far, -nx, -ny, -nz, qx, qy, qz, ox, oy, oz)
+    fx, fy, fz, mx, my, mz = f1x + f2x, f1y + f2y, f1z + f2z, m1x + m2x, m1y + m2y, m1z + m2z
+    # dissipated: minus the power of the pair (ball and cage) on the relative motion
+    return fx, fy, fz, mx, my, mz, -(fx * qx + fy * qy + fz * qz + mx * ox + my * oy + mz * oz)
+
+
 @kernel(no_runtime=True, internal=True)
 def _rigid_cage(p, xb, vb, wb, xc, vc, rings, fb, tb, fc, fr, glob, cage_load, want):
     """The rigid cage (docs/theory/cage.md): ball j in pocket j, and the cage on its land.
@@ -1008,26 +1031,33 @@ def _rigid_cage(p, xb, vb, wb, xc, vc, rings, fb, tb, fc, fr, glob, cage_load, w
         if slip > 0.0 and f > 0.0:
             ft = _regularized_coulomb(slip, f, mu, vreg) / slip
             tx, ty, tz = -ft * sx, -ft * sy, -ft * sz
+        # the film's shear (near wall along n, far wall along -n), as force and moment about the ball's centre
+        shx = shy = shz = smx = smy = smz = sh_power = 0.0
         if film:
             f += _pocket_film_force(p, xb, vb, j, cx, cy, ux, uy, uz, wc, nx, ny, nz, sx, sy, sz, -delta, ddot,
                                     m_eff, tau, film_floor)
-        gx, gy, gz = tx - f * nx, ty - f * ny, tz - f * nz  # the pocket's force on the ball
-        fb[j, 0] += gx
-        fb[j, 1] += gy
-        fb[j, 2] += gz
+            shx, shy, shz, smx, smy, smz, sh_power = _pocket_film_shear(p, xb, vb, wb, j, cx, cy, ux, uy, uz, wc,
+                                                                        nx, ny, nz, -delta, film_floor)
+        gx, gy, gz = tx - f * nx, ty - f * ny, tz - f * nz  # the pocket's force on the ball, at the contact point
+        fb[j, 0] += gx + shx
+        fb[j, 1] += gy + shy
+        fb[j, 2] += gz + shz
         mx, my, mz = _cross(rb * nx, rb * ny, rb * nz, tx, ty, tz)
-        tb[j, 0] += mx
-        tb[j, 1] += my
-        tb[j, 2] += mz
-        fcx -= gx
-        fcy -= gy
-        fcz -= gz
-        tcz -= px * gy - py * gx
-        # dissipated: the normal damping's work and the friction's (minus the pair's power on the sliding)
-        pocket_power += (f - f_el) * ddot - (tx * vrx + ty * vry + tz * vrz)
+        tb[j, 0] += mx + smx
+        tb[j, 1] += my + smy
+        tb[j, 2] += mz + smz
+        fcx -= gx + shx
+        fcy -= gy + shy
+        fcz -= gz + shz
+        # the cage's moment about its axis: the contact force at the contact point, the shear's force at the
+        # ball's centre with its moment there
+        tcz -= px * gy - py * gx + (xb[j, 0] - cx) * shy - (xb[j, 1] - cy) * shx + smz
+        # dissipated: the normal damping's work, the friction's (minus the pair's power on the sliding) and the
+        # shear's (minus its power on the ball's motion relative to the cage)
+        pocket_power += (f - f_el) * ddot - (tx * vrx + ty * vry + tz * vrz) + sh_power
         if want:
             cage_load[j, 0] = abs(f)  # a net film force may point either way
-            cage_load[j, 1] = math.sqrt(tx * tx + ty * ty + tz * tz)
+            cage_load[j, 1] = math.sqrt((tx + shx) ** 2 + (ty + shy) ** 2 + (tz + shz) ** 2)
     land_power = 0.0
     flx, fly, t_sh, ecc = 0.0, 0.0, 0.0, 0.0
     if p[P_GUIDANCE] > 0.5:

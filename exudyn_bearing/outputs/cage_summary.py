@@ -71,10 +71,12 @@ def cage_motion(t, xy, clearance, cage_speed) -> dict:
 CAGE_LOSSES_NOT_MODELLED = ("cage windage and the oil's churning by the cage",
                             "the pocket's oil film (the ball / pocket contact is dry Hertz with Coulomb friction; "
                             "Scenario(pocket_film=True) adds the film's normal forces)")
-#: The same with ``Scenario(pocket_film=True)``: the film's normal forces are modelled, its shear is not.
+#: The same with ``Scenario(pocket_film=True)``: the film's normal forces and its shear are modelled, for a
+#: flooded pocket and a sphere facing a plane wall (physics/pocket_film.py).
 CAGE_LOSSES_NOT_MODELLED_FILM = ("cage windage and the oil's churning by the cage",
-                                 "the pocket film's viscous shear (the pocket friction mu_c acts where the ball "
-                                 "touches the wall; the film's hydrodynamic and squeeze forces are modelled)")
+                                 "a starved pocket (the pocket film is taken flooded at both walls) and the wall's "
+                                 "conformity (the film's forces and shear are a sphere's facing a plane: a lower "
+                                 "bound); the film's moment on the ball's rotation about the wall's normal")
 
 
 def whirl(t, xy, cage_speed):
