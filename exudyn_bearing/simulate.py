@@ -377,7 +377,7 @@ def _create_reduced_level(mbs, bearing, markerInnerRing, markerOuterRing, option
     (:func:`~exudyn_bearing.solvers.reduced.engine.reduced_support_error`) naming the option."""
     from .solvers.element.element import rename_option_error
     from .solvers.reduced.engine import MAX_STEP, reduced_support_error
-    from .solvers.reduced.level import TILT_WARNING, ReducedBearing
+    from .solvers.reduced.level import TILT_WARNING, ReducedBearing, check_reduced_step
 
     for key in options:
         if key not in REDUCED_OPTIONS:
@@ -386,7 +386,7 @@ def _create_reduced_level(mbs, bearing, markerInnerRing, markerOuterRing, option
     own = {k: o.pop(k) for k in ("reducedStep", "tiltWarning", "show", "loadAngle") if k in o}
     lubricant = o.pop("lubricant", None)
     b = load_bearing(bearing)
-    step = own.get("reducedStep")
+    step = check_reduced_step(own.get("reducedStep"))
     scenario = element_scenario(b, stepSize=MAX_STEP if step is None else step, **o)
     scenario, lub = with_bearing_defaults(b, scenario, lubricant)
     err = reduced_support_error(scenario, b) or engine_speed_error(scenario, "reduced")

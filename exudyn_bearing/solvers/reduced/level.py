@@ -62,6 +62,18 @@ TILT_WARNING = 1e-4
 LAG_FORCE_WARNING = 0.01
 
 
+def check_reduced_step(value):
+    """``reducedStep`` [s]: None (one reduced step per Exudyn step, at most MAX_STEP) or a positive step up to
+    MAX_STEP, the largest step the reduced engine's checks ran; else InputError naming it."""
+    if value is None:
+        return None
+    value = check_positive("reducedStep", value)
+    if value > MAX_STEP:
+        raise InputError(f"reducedStep: {value:g} s is above the largest step the reduced engine's checks ran, "
+                         f"{MAX_STEP:g} s (docs/theory/reduced.md)")
+    return value
+
+
 class ReducedBearing:
     """The reduced level between two ring markers (module docstring). Built by
     :func:`exudyn_bearing.CreateBallBearing` with ``model="reduced"`` from a validated ``scenario`` (the ball
@@ -87,10 +99,7 @@ class ReducedBearing:
             raise InputError(f"markerOuterRing: marker {markerOuterRing} is also markerInnerRing")
         self.loadAngle = check_load_angle(loadAngle)
         #: the largest reduced-engine step [s] (None: one step per Exudyn step, at most MAX_STEP)
-        self.reducedStep = None if reducedStep is None else check_positive("reducedStep", reducedStep)
-        if self.reducedStep is not None and self.reducedStep > MAX_STEP:
-            raise InputError(f"reducedStep: {self.reducedStep:g} s is above the largest step the reduced engine's "
-                             f"checks ran, {MAX_STEP:g} s (docs/theory/reduced.md)")
+        self.reducedStep = check_reduced_step(reducedStep)
         self.tiltWarning = check_positive("tiltWarning", tiltWarning)
         self.engine = eng = ReducedEngine(load_bearing(bearing), scenario, lubricant, start=start)
         self.bearing, self.scenario, self.lubricant = eng.bearing, eng.scenario, eng.lubricant
@@ -190,7 +199,7 @@ class ReducedBearing:
         self._chunks = []
         self._buf = None
         self._k_buf = 0
-        self._next_sample = t
+        self._next_sample = t + self.sampleInterval
         self._sample_w = []
         self._warned = set()
         self._wall = 0.0
@@ -341,7 +350,7 @@ class ReducedBearing:
         dt = h / k
         if self._h_last is not None and abs(dt - self._h_last / max(1, self._k_last)) > 1e-9 * dt:
             self.engine.work[_st.W_HAVE_PREV] = 0.0  # another step size: the BDF2 history restarts (Euler step)
-        sample = t >= self._next_sample - 1e-12
+        sample = t >= self._next_sample - 1e-6 * self.sampleInterval
         buf, rows = self._sample_rows(sample)
         t0 = time.perf_counter()
         eng = self.engine
@@ -369,7 +378,9 @@ class ReducedBearing:
         if ns:
             self._k_buf += ns
             self._sample_w.append(self._w_z)
-            self._next_sample = t + self.sampleInterval - 1e-12 * self.sampleInterval
+            # the next sample on the grid t_start + k sampleInterval (the reduced engine's sample times)
+            k_next = math.floor((t - self._t_start) / self.sampleInterval + 1e-6) + 1
+            self._next_sample = self._t_start + k_next * self.sampleInterval
             loads = self.diag[:, :, D_LOAD]
             self._qmax = [float(loads[:, 0].max()), float(loads[:, 1].max())]
         return True
