@@ -187,7 +187,7 @@ class ReducedBearing:
         # the centres on their balance at the start's ring pose (a start from another hypothesis, the analytic
         # one, is not on it): the evaluations' centre rates (q - q_n) / h then start from rest
         self.ring_trial[:] = self.ring
-        frozen_ring_force(t, self.scenario.dt, self.p_trial, self.engine.table, self.phi, self.om, self.wo,
+        frozen_ring_force(t, MAX_STEP, self.p_trial, self.engine.table, self.phi, self.om, self.wo,
                           self.q_trial, self.q, self.ring_trial, self.xc, self.vc, self.rings_trial, self.hist,
                           self.hz_trial, self.g, BALANCE_TOL, _st.START_ITER * MAX_ITER, True, self.work_trial,
                           self.out6, *self._paths)
@@ -291,7 +291,11 @@ class ReducedBearing:
         if self._h_last is not None and h < 0.5 * self._h_last:
             h = self._h_last  # an evaluation at the slow states' own time (the start's accelerations)
         elif h <= 0.0:
-            h = self.scenario.dt
+            # the start's initial accelerations (t at the slow states' own time, q_trial = q_n: no centre rate): the
+            # step enters only the rule of balls without contact (m_b / dt^2); MAX_STEP as the start's balance.
+            # A reducedStep of 20 us here instead gave Exudyn's GeneralizedAlpha initial accelerations from which
+            # its first 100 us step failed and the step stayed at a quarter (development run)
+            h = MAX_STEP
         it, ok, worst = frozen_ring_force(t, h, self.p_trial, self.engine.table, self.phi, self.om, self.wo,
                                           self.q_trial, self.q, r, self.xc, self.vc, self.rings_trial, self.hist,
                                           self.hz_trial, self.g, BALANCE_TOL, MAX_ITER, self.fresh, self.work_trial,
