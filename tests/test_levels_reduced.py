@@ -24,6 +24,7 @@ import exudyn_bearing as eb  # noqa: E402
 from exudyn_bearing.model.layout import G_DRIVE_WORK, P_MR  # noqa: E402
 from exudyn_bearing.simulate import UNCONVERGED_SHARE  # noqa: E402
 from exudyn_bearing.solvers.reduced import ReducedEngine  # noqa: E402
+from exudyn_bearing.solvers.reduced.level import LAG_FORCE_WARNING  # noqa: E402
 
 FR, OMEGA, T_END, STEP = 3000.0, 500.0, 0.03, 2e-5
 CRITERIA = {"q_max_inner": 0.005, "q_max_outer": 0.005, "cage_speed": 0.002, "dissipation": 0.01}
@@ -141,7 +142,7 @@ def test_sensors_read_the_level(runs):
     assert np.max(q_in[late, 1]) == pytest.approx(runs["level"]["q_max_inner"], rel=0.01)
     # the balls' force on the inner ring carries the shaft's load
     assert np.mean(force[late, 1]) == pytest.approx(-FR, rel=1e-3)
-    assert br.lagForceMax < 0.01 and br.lagForceStart is not None
+    assert br.lagForceMax < LAG_FORCE_WARNING and br.lagForceStart is not None
 
 
 @pytest.mark.parametrize("options, name", [
@@ -173,15 +174,16 @@ def test_tilt_warning_names_the_tilt():
 
 
 def test_lag_check_warns_naming_the_step(runs):
-    # check_lag: the force the step used against the force with the slow states advanced; a 5 % difference after
-    # the first step warns naming stepSize (the first step is the start's own relaxation, kept apart)
+    # check_lag: the force the step used against the force with the slow states advanced; a 10 % difference after
+    # the first step warns naming stepSize (above LAG_FORCE_WARNING; the first step is the start's own relaxation,
+    # kept apart)
     br = runs["br"]
     keep = (br.lagForceStart, br.lagForceMax, set(br._warned), br._used.copy())
     try:
         br._warned.discard("lag")
-        br._used[:3] = 1.05 * br.fr[0, :3]
+        br._used[:3] = 1.1 * br.fr[0, :3]
         with pytest.warns(UserWarning, match="^stepSize: "):
             br.check_lag(1.0)
-        assert br.lagForceMax == pytest.approx(0.05, rel=1e-9)
+        assert br.lagForceMax == pytest.approx(0.1, rel=1e-9) and br.lagForceMax > LAG_FORCE_WARNING
     finally:
         br.lagForceStart, br.lagForceMax, br._warned, br._used[:] = keep[0], keep[1], keep[2], keep[3]

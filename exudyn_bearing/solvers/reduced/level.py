@@ -58,8 +58,10 @@ __all__ = ["ReducedBearing", "TILT_WARNING", "LAG_FORCE_WARNING"]
 TILT_WARNING = 1e-4
 #: The lag's share of the ring force (:meth:`ReducedBearing.check_lag`: the force Exudyn's step used, with the slow
 #: states of the step's start, against the force at the same ring pose with the slow states advanced) above which
-#: the level warns (once per run) that the slow states' lag of one step is not small.
-LAG_FORCE_WARNING = 0.01
+#: the level warns (once per run) that the slow states' lag of one step is not small. On the 6208 radial (3000 N,
+#: 500 rad/s) the largest share after the start was 0.76 % at 20 us, 2.5 % at 100 us and at 200 us with the steady
+#: state within the criteria of issue 37 (validation/consistency/reduced_level.py); 5 % is twice the largest seen.
+LAG_FORCE_WARNING = 0.05
 
 
 def check_reduced_step(value):
