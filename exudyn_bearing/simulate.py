@@ -291,9 +291,14 @@ def CreateBallBearing(mbs, bearing: BallBearing | str, markerInnerRing, markerOu
     """Add a lubricated DEM ball bearing between two ring markers of ``mbs``.
 
     ``model`` picks the level: ``"balls"`` (default, the DEM element below),
-    ``"quasistatic"`` (5-DOF force element from the quasi-static ball
-    equilibrium, no ball DOFs) or ``"linear"`` (speed-dependent 5x5 stiffness
-    and damping about the operating point ``initialLoad``); the last two are
+    ``"reduced"`` (the reduced engine's balls and rigid cage advanced after
+    each Exudyn step, the ball centres on their force balance inside Exudyn's
+    Newton: :mod:`exudyn_bearing.solvers.reduced.level`, options
+    ``REDUCED_OPTIONS``, ``results()`` the engines' Results,
+    docs/theory/levels.md#reduced-level), ``"quasistatic"`` (5-DOF force
+    element from the quasi-static ball equilibrium, no ball DOFs) or
+    ``"linear"`` (speed-dependent 5x5 stiffness and damping about the
+    operating point ``initialLoad``); the last two are
     :mod:`exudyn_bearing.solvers.quasistatic.levels` (docs/howto/rotor.md,
     docs/theory/levels.md) and take ``lubricant``, ``initialLoad``, ``loadAngle``, ``initialOmega``,
     ``ringGrowth``, ``temperatures``, ``hertzModel``, ``sampleInterval``,
