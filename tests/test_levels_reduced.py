@@ -187,3 +187,26 @@ def test_lag_check_warns_naming_the_step(runs):
         assert br.lagForceMax == pytest.approx(0.1, rel=1e-9) and br.lagForceMax > LAG_FORCE_WARNING
     finally:
         br.lagForceStart, br.lagForceMax, br._warned, br._used[:] = keep[0], keep[1], keep[2], keep[3]
+
+
+def test_load_angle_turns_the_scene():
+    # the same radial load along -y with loadAngle = -pi/2: the start turned about z (balls, ring), the same ball
+    # loads and speeds as along +x (the summary measures psi from the record's load angle), the ring along -y
+    m = ring_mass()
+    out = {}
+    for angle, load in ((0.0, (FR, 0.0, 0.0)), (-0.5 * np.pi, (0.0, -FR, 0.0))):
+        sc, mbs, node, m_b, m_g = shaft(m, load=load)
+        br = eb.CreateBallBearing(mbs, "6208", m_b, m_g, model="reduced", initialLoad=(FR, 0.0),
+                                  initialOmega=OMEGA, cage="none", loadAngle=angle)
+        mbs.SetNodeParameter(node, "initialCoordinates", list(br.initialCoordinates))
+        mbs.Assemble()
+        ss = br.SimulationSettings(0.005, stepSize=STEP)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            mbs.SolveDynamic(ss, solverType=ss.timeIntegration.solverType)
+            out[angle] = (br.initialCoordinates, br.results().summary(t_window=(0.0025, 0.005)))
+    (c0, s0), (c1, s1) = out[0.0], out[-0.5 * np.pi]
+    assert c1[1] == pytest.approx(-c0[0], rel=1e-12) and abs(c1[0]) < 1e-9 * c0[0]
+    for key in ("q_max_inner", "q_max_outer", "cage_speed", "dissipation"):
+        assert s1[key] == pytest.approx(s0[key], rel=1e-6), key
+    assert s1["ring_displacement"][1] == pytest.approx(-s0["ring_displacement"][0], rel=1e-6)
