@@ -114,18 +114,7 @@ def simulate(bearing, scenario: Scenario | None = None, engine: str = "reference
                               "are 1e-5 to 1e-4 s (docs/theory/reduced.md), and at this one it costs more than the "
                               "reference engine", UserWarning, stacklevel=2)
             record = ReducedEngine(bearing, scenario, lubricant, start=start).run(progress=progress)
-            bad = record.reduced_stats["unconverged_steps"]
-            if bad:  # said, not hidden: the balance of these steps went on from its last iterate
-                share = bad / max(record.steps, 1)
-                consequence = ("" if share <= UNCONVERGED_SHARE else
-                               f" That is {100 * share:.3g} % of the steps, more than {100 * UNCONVERGED_SHARE:g} %: "
-                               "the run's loads, speeds and losses are not reliable; run it at a smaller dt (half "
-                               "the step: the difference tells) or in the reference engine.")
-                warnings.warn(f"reduced engine: the balls' force balance did not converge within its iteration "
-                              f"limit in {bad} of {record.steps} steps (the run went on from the last iterate; "
-                              "where a ball leaves the load zone and its contact opens, or at a pocket impact); the "
-                              "summary's reduced_work counts them (--json on the command line); the reference "
-                              "engine has no such balance." + consequence, UserWarning, stacklevel=2)
+            warn_unconverged(record)
         else:
             from .solvers.element.engine import ExudynEngine
 
@@ -136,6 +125,25 @@ def simulate(bearing, scenario: Scenario | None = None, engine: str = "reference
         raise
     check_record_pressures(record)
     return Results(record)
+
+
+def warn_unconverged(record) -> None:
+    """Warn when steps of a reduced-engine run (the engine's or the reduced level's) ended their force balance at
+    its iteration limit: said, not hidden (the balance of these steps went on from its last iterate); above
+    UNCONVERGED_SHARE of the steps the run's results are called unreliable."""
+    bad = record.reduced_stats["unconverged_steps"]
+    if not bad:
+        return
+    share = bad / max(record.steps, 1)
+    consequence = ("" if share <= UNCONVERGED_SHARE else
+                   f" That is {100 * share:.3g} % of the steps, more than {100 * UNCONVERGED_SHARE:g} %: "
+                   "the run's loads, speeds and losses are not reliable; run it at a smaller dt (half "
+                   "the step: the difference tells) or in the reference engine.")
+    warnings.warn(f"reduced engine: the balls' force balance did not converge within its iteration "
+                  f"limit in {bad} of {record.steps} steps (the run went on from the last iterate; "
+                  "where a ball leaves the load zone and its contact opens, or at a pocket impact); the "
+                  "summary's reduced_work counts them (--json on the command line); the reference "
+                  "engine has no such balance." + consequence, UserWarning, stacklevel=3)
 
 
 def check_record_pressures(record) -> None:
@@ -415,6 +423,7 @@ def _with_run_results(level_class):
             elastic limit raise InputError (:func:`check_record_pressures`)."""
             record = self.record()
             check_record_pressures(record)
+            warn_unconverged(record)
             return Results(record)
 
         _LEVEL_CLASSES[level_class] = type(level_class.__name__, (level_class,),

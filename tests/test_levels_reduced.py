@@ -107,7 +107,7 @@ def test_friction_torque_reaches_the_rotor(runs):
     # 1 kg m^2) loses over the second half of the run is the drive work the level's record counts there (the
     # torque times the ring speed, integrated with the slow states; the rotor took it with them one step behind)
     # within 1 % (the first half holds the start, whose first step's frozen tractions are those of the quasi-static
-    # start: they make a force 2.7 % off the one after the step, see lagForceStart)
+    # start: they make a force about 2 % off the one after the step, see lagForceStart)
     br, mbs = runs["br"], runs["mbs"]
     w = mbs.GetSensorStoredData(runs["speed"])
     t0, t1 = T_END / 2, T_END

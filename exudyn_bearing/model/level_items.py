@@ -10,7 +10,7 @@ from ..data import InputError
 from ..data.errors import check_finite
 from .solver_types import unstable_solver_error
 
-__all__ = ["NEWTON_RELATIVE_TOLERANCE", "load_pair", "rigid_marker", "check_solver", "sensor_function"]
+__all__ = ["NEWTON_RELATIVE_TOLERANCE", "check_solver", "load_pair", "rigid_marker", "sensor_function"]
 
 #: Newton's relative tolerance in the levels' ``SimulationSettings`` (Exudyn's default: 1e-8)
 NEWTON_RELATIVE_TOLERANCE = 1e-4

@@ -32,7 +32,13 @@ import warnings
 from pathlib import Path
 
 import exudyn as exu
-from exudyn.itemInterface import LoadForceVector, MarkerBodyRigid, NodeRigidBodyRxyz, ObjectGround, ObjectRigidBody
+from exudyn.itemInterface import (
+    LoadForceVector,
+    MarkerBodyRigid,
+    NodeRigidBodyRxyz,
+    ObjectGround,
+    ObjectRigidBody,
+)
 
 import exudyn_bearing as eb
 from exudyn_bearing.model.layout import P_MR
@@ -40,7 +46,8 @@ from exudyn_bearing.simulate import quasistatic_start
 from exudyn_bearing.solvers.reduced import ReducedEngine
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from levels_checks import ROOT, shaft as test_shaft  # noqa: E402
+from levels_checks import ROOT  # noqa: E402
+from levels_checks import shaft as test_shaft
 
 FR, OMEGA = 3000.0, 500.0
 KEYS = ("q_max_inner", "q_max_outer", "cage_speed", "dissipation")
@@ -107,6 +114,7 @@ def check_engines(out):
             s = br.results().summary(t_window=window)
             rows[label] = {**pick(s), "wall_s": wall, "lag_force_max": br.lagForceMax,
                            "lag_force_mean": br.lagForceMean, "lag_force_start": br.lagForceStart,
+                           "slip_time": br.slip_time(), "evaluations_per_step": br.evaluations / s["steps"] * 1.0,
                            "unconverged_steps": s["reduced_work"]["unconverged_steps"], "steps": s["steps"]}
         ref = rows["reference engine 2 us"]
         print(f"\n(a) 6208, F_r = {FR:g} N, {OMEGA:g} rad/s, cage {cage!r}, {t_end:g} s, window {window[0]:g}-"
@@ -122,6 +130,10 @@ def check_engines(out):
                    else " " * 15)
             print(f"    {label:42s} " + " ".join(f"{100 * d[k]:+8.3f}%" for k in KEYS)
                   + f" {100 * row['energy_residual']:+8.3f}% {lag} {'yes' if ok else 'NO':>7s}")
+        for label, row in rows.items():
+            if "lag_force_start" in row:
+                print(f"    {label:42s} lag at the first step {100 * row['lag_force_start']:.3f} %, slip relaxation "
+                      f"time {row['slip_time'] * 1e6:.3g} us, unconverged balance steps {row['unconverged_steps']}")
         red = rows["reduced engine 20 us"]
         lv = rows["level, Exudyn 20 us"]
         d = {k: (lv[k] - red[k]) / abs(red[k]) for k in KEYS}

@@ -39,8 +39,25 @@ import numpy as np
 
 from ...data import InputError, load_bearing
 from ...data.errors import check_positive
-from ...model.layout import D_LOAD, HIST_N, NDIAG, NGLOBAL, P_FA, P_FR, P_T_DOWN, P_T_STEADY, P_T_UP, P_W_MAX, P_W_OUTER
-from ...model.level_items import NEWTON_RELATIVE_TOLERANCE, check_solver, rigid_marker, sensor_function
+from ...model.layout import (
+    D_LOAD,
+    HIST_N,
+    NDIAG,
+    NGLOBAL,
+    P_FA,
+    P_FR,
+    P_T_DOWN,
+    P_T_STEADY,
+    P_T_UP,
+    P_W_MAX,
+    P_W_OUTER,
+)
+from ...model.level_items import (
+    NEWTON_RELATIVE_TOLERANCE,
+    check_solver,
+    rigid_marker,
+    sensor_function,
+)
 from ...model.load_angle import check_load_angle, load_rotation
 from ...model.motion import ring_poses
 from ...model.record import RunRecord
@@ -50,7 +67,7 @@ from . import stepper as _st
 from .coupled import frozen_ring_force
 from .engine import BALANCE_TOL, MAX_ITER, MAX_STEP, ReducedEngine
 
-__all__ = ["ReducedBearing", "TILT_WARNING", "LAG_FORCE_WARNING"]
+__all__ = ["LAG_FORCE_WARNING", "TILT_WARNING", "ReducedBearing"]
 
 #: Relative tilt [rad] of the inner ring above which the level warns (once per run) that it leaves the tilt out:
 #: 1e-4 rad tilts the inner groove by 1e-4 x the pitch radius across the bearing (3.1 um on the 6208 at the
@@ -436,9 +453,8 @@ class ReducedBearing:
         lag = float(np.linalg.norm(self._used[:3] - new)) / size
         if self.lagForceStart is None:
             # the first step: the start (a quasi-static state, race-control kinematics) is not on the dynamics'
-            # balance of the speeds, whose slips relax within it (on the 6208 radial: the frozen start's
-            # tractions made a ring force 2.7 % off the one after the step, 0.17 % at the second step); kept
-            # apart, not warned
+            # balance of the speeds, whose slips relax within it (on the 6208 radial, 1.9 % at 20 us to
+            # 3.2 % at 500 us, validation/consistency/reduced_level.py); kept apart, not warned
             self.lagForceStart = lag
             return
         self._lag_sum += lag

@@ -24,9 +24,6 @@ import numpy as np
 from ...._jit import kernel
 from ....data import InputError, Lubricant, load_bearing, load_lubricant
 from ....data.errors import check_finite, check_positive
-from ....model.load_angle import LOAD_ANGLE_RANGE, check_load_angle, load_rotation  # noqa: F401 (re-exported)
-from ....model.load_range import MAX_CONTACT_PRESSURE, check_load_range
-from ....model.solver_types import IMPLICIT_SOLVERS, settings_solver
 from ....model.level_items import (  # noqa: F401 (shared with the reduced level; re-exported)
     NEWTON_RELATIVE_TOLERANCE,
     _load_pair,
@@ -34,12 +31,15 @@ from ....model.level_items import (  # noqa: F401 (shared with the reduced level
     check_solver,
     rigid_marker,
 )
+from ....model.load_angle import LOAD_ANGLE_RANGE, check_load_angle, load_rotation  # noqa: F401 (re-exported)
+from ....model.load_range import MAX_CONTACT_PRESSURE, check_load_range
+from ....model.solver_types import IMPLICIT_SOLVERS, settings_solver
 from ....physics import kinematics as _kin
 from ...quasistatic.solve import solve_quasistatic
 
 asarray = np.asarray
 
-__all__ = ["IMPLICIT_SOLVERS", "LEVEL_OPTIONS", "LevelBearing", "WS_HEADER"]
+__all__ = ["IMPLICIT_SOLVERS", "LEVEL_OPTIONS", "WS_HEADER", "LevelBearing"]
 
 #: Options every level takes (the ball element's names).
 LEVEL_OPTIONS = ("lubricant", "initialLoad", "loadAngle", "initialOmega", "ringGrowth", "temperatures", "hertzModel",
@@ -267,7 +267,10 @@ class LevelBearing:
 
     def _add_object(self, mbs, show):
         """The Exudyn object of the bearing (default: the connector between the ring markers); its number."""
-        from exudyn.itemInterface import ObjectConnectorRigidBodySpringDamper, VObjectConnectorRigidBodySpringDamper
+        from exudyn.itemInterface import (
+            ObjectConnectorRigidBodySpringDamper,
+            VObjectConnectorRigidBodySpringDamper,
+        )
 
         inner, outer = self.markers
         kw = self._connector_parameters()
