@@ -210,3 +210,23 @@ def test_load_angle_turns_the_scene():
     for key in ("q_max_inner", "q_max_outer", "cage_speed", "dissipation"):
         assert s1[key] == pytest.approx(s0[key], rel=1e-6), key
     assert s1["ring_displacement"][1] == pytest.approx(-s0["ring_displacement"][0], rel=1e-6)
+
+
+def test_post_step_function_is_shared_and_keeps_the_users():
+    # one PostStepUserFunction for the reduced levels of an mbs, after a post-step function the user set before:
+    # two bearings (a shaft on two 6208, half the load each) both advance at every step, the user's function too
+    sc, mbs, node, m_b, m_g = shaft(2.0 * ring_mass(), load=(2.0 * FR, 0.0, 0.0))
+    seen = []
+    mbs.SetPostStepUserFunction(lambda mbs_, t: seen.append(t) or True)
+    levels = [eb.CreateBallBearing(mbs, "6208", m_b, m_g, model="reduced", initialLoad=(FR, 0.0),
+                                   initialOmega=OMEGA, cage="none") for _ in range(2)]
+    mbs.SetNodeParameter(node, "initialCoordinates", list(levels[0].initialCoordinates))
+    mbs.Assemble()
+    ss = levels[0].SimulationSettings(5 * STEP, stepSize=STEP)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        mbs.SolveDynamic(ss, solverType=ss.timeIntegration.solverType)
+    # Exudyn calls it at the start too (t = 0, where the levels have nothing to advance)
+    assert seen == pytest.approx([k * STEP for k in range(6)]) and [lv.steps for lv in levels] == [5, 5]
+    # each carries half the shaft's load
+    assert levels[0].fr[0, 0] == pytest.approx(-FR, rel=0.01) and levels[1].fr[0, 0] == pytest.approx(-FR, rel=0.01)

@@ -506,7 +506,9 @@ def _register_post_step(mbs, level):
             user = mbs.GetPostStepUserFunction()
         except Exception:  # noqa: BLE001 - none set
             user = None
-        if user == 0:
+        if isinstance(user, dict):  # Exudyn 1.13: {"function": f, "type": "Python"}
+            user = user.get("function")
+        if not callable(user):  # 0: none set
             user = None
         entry = _POST_STEP[key] = {"mbs": mbs, "levels": [], "user": user}
 
