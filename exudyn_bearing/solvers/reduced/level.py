@@ -70,8 +70,8 @@ from .engine import BALANCE_TOL, MAX_ITER, MAX_STEP, ReducedEngine
 __all__ = ["LAG_FORCE_WARNING", "TILT_WARNING", "ReducedBearing"]
 
 #: Relative tilt [rad] of the inner ring above which the level warns (once per run) that it leaves the tilt out:
-#: 1e-4 rad tilts the inner groove by 1e-4 x the pitch radius across the bearing (3.1 um on the 6208 at the
-#: ball-set edge), a third of the 6208's ball overlaps under 3000 N (about 10 um).
+#: 1e-4 rad moves the inner groove axially by 1e-4 x the pitch radius at the ball set's edge (3.0 um on the 6208,
+#: an eighth of the 24.7 um its inner ring moves under 3000 N, docs/theory/levels.md).
 TILT_WARNING = 1e-4
 #: The lag's share of the ring force (:meth:`ReducedBearing.check_lag`: the force Exudyn's step used, with the slow
 #: states of the step's start, against the force at the same ring pose with the slow states advanced) above which
