@@ -59,6 +59,8 @@ BEHAVIOUR = {
                                                                "fixed={})"},
     "solve_pair (API)": {"tilt": "free with spacing (held without)"},
     "power_losses (API)": {"ball_drag": True, "rolling_resistance": True},
+    "level reduced (CreateBallBearing)": {"tilt": "held (the reduced engine's inner ring translates only; a "
+                                                  "relative tilt above tiltWarning warns)"},
 }
 
 #: The reason of the 3-DOF vibration model's operating point.
@@ -66,8 +68,16 @@ ELHAD = ("the 3-DOF model's source case, El Had et al. (2014)'s SKF 6004 at 500 
          "clearance, which it reproduces (docs/theory/vibration.md); a linear model about zero load has no Hertz "
          "stiffness")
 
+#: The reason of the reduced level's defaults (cage, traction level, start).
+REDUCED_LEVEL = ("the reduced engine takes neither the torus cage nor the Cundall-Strack spring of the point level "
+                 "(its refusals, reduced_support_error), and its level is for the balls' skidding and the cage in a "
+                 "rotor: the rigid cage, the traction over the ellipse and the quasi-static start, from which the "
+                 "rotor starts on the bearing's equilibrium as at the other levels (docs/theory/levels.md)")
+
 #: Quantities two entry points may default differently, with the reason (quantity -> {entry point: reason}).
 ALLOWED_DIFFERENCES = {
+    "traction_level": {"level reduced (CreateBallBearing)": REDUCED_LEVEL},
+    "initial": {"level reduced (CreateBallBearing)": REDUCED_LEVEL},
     "t_end": {"Scenario": "the Python API's run length (0.05 s: the DEM papers' runs); simulate on the CLI runs "
                           "0.02 s without --t-end or --ramp (cli.simulate.DEFAULT_T_END) for a first look in "
                           "seconds"},
@@ -75,7 +85,8 @@ ALLOWED_DIFFERENCES = {
                                   "output); run_sweep, called from Python, shows it by default"},
     "cage": {"quasistatic (CLI)": "the quasi-static solver has no torus of cage balls: 'none' (each ball its own "
                                   "orbital speed, solve_quasistatic(cage=None)) or its rigid cage",
-             "solve_quasistatic (API)": "as the quasistatic command"},
+             "solve_quasistatic (API)": "as the quasistatic command",
+             "level reduced (CreateBallBearing)": REDUCED_LEVEL},
     "tilt": {"levels quasistatic, linear (CreateBallBearing)": "a level is a force element between the user's "
              "markers: the node's tilt is a DOF of the user's model, so the operating point it starts from is "
              "the free-tilt equilibrium (docs/theory/levels.md)",
@@ -253,12 +264,25 @@ def collect() -> dict:
             **{f"{k} (quasistatic)": v for k, v in _signature_defaults(QuasiStaticBearing.__init__,
                                                                         skip=("self", "args")).items()}},
         "pair level (CreateBallBearing, arrangement=)": _signature_defaults(PairBearing.__init__),
+        "level reduced (CreateBallBearing)": _reduced_level_defaults(BallBearingElement),
     }
     for name, opts in _cli_defaults().items():
         out[f"{name} (CLI)"] = opts
     for entry, behaviour in BEHAVIOUR.items():
         out[entry] = {**out[entry], **{f"{q} (no parameter)": v for q, v in behaviour.items()}}
     return out
+
+
+def _reduced_level_defaults(element) -> dict:
+    """The reduced level's options (simulate.REDUCED_OPTIONS): the ball element's defaults, the level's own
+    (simulate.REDUCED_DEFAULTS) where they differ, and those of its constructor (reducedStep, tiltWarning)."""
+    from .simulate import REDUCED_DEFAULTS, REDUCED_OPTIONS
+    from .solvers.reduced.level import ReducedBearing
+
+    own = _signature_defaults(ReducedBearing.__init__, skip=("self", "mbs", "bearing", "markerInnerRing",
+                                                              "markerOuterRing", "scenario", "lubricant", "start"))
+    base = {**_signature_defaults(element.__init__), **REDUCED_DEFAULTS, **own}
+    return {k: v for k, v in base.items() if k in REDUCED_OPTIONS}
 
 
 def _tilt(value):

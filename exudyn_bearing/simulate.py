@@ -114,18 +114,7 @@ def simulate(bearing, scenario: Scenario | None = None, engine: str = "reference
                               "are 1e-5 to 1e-4 s (docs/theory/reduced.md), and at this one it costs more than the "
                               "reference engine", UserWarning, stacklevel=2)
             record = ReducedEngine(bearing, scenario, lubricant, start=start).run(progress=progress)
-            bad = record.reduced_stats["unconverged_steps"]
-            if bad:  # said, not hidden: the balance of these steps went on from its last iterate
-                share = bad / max(record.steps, 1)
-                consequence = ("" if share <= UNCONVERGED_SHARE else
-                               f" That is {100 * share:.3g} % of the steps, more than {100 * UNCONVERGED_SHARE:g} %: "
-                               "the run's loads, speeds and losses are not reliable; run it at a smaller dt (half "
-                               "the step: the difference tells) or in the reference engine.")
-                warnings.warn(f"reduced engine: the balls' force balance did not converge within its iteration "
-                              f"limit in {bad} of {record.steps} steps (the run went on from the last iterate; "
-                              "where a ball leaves the load zone and its contact opens, or at a pocket impact); the "
-                              "summary's reduced_work counts them (--json on the command line); the reference "
-                              "engine has no such balance." + consequence, UserWarning, stacklevel=2)
+            warn_unconverged(record)
         else:
             from .solvers.element.engine import ExudynEngine
 
@@ -136,6 +125,25 @@ def simulate(bearing, scenario: Scenario | None = None, engine: str = "reference
         raise
     check_record_pressures(record)
     return Results(record)
+
+
+def warn_unconverged(record) -> None:
+    """Warn when steps of a reduced-engine run (the engine's or the reduced level's) ended their force balance at
+    its iteration limit: said, not hidden (the balance of these steps went on from its last iterate); above
+    UNCONVERGED_SHARE of the steps the run's results are called unreliable."""
+    bad = record.reduced_stats["unconverged_steps"]
+    if not bad:
+        return
+    share = bad / max(record.steps, 1)
+    consequence = ("" if share <= UNCONVERGED_SHARE else
+                   f" That is {100 * share:.3g} % of the steps, more than {100 * UNCONVERGED_SHARE:g} %: "
+                   "the run's loads, speeds and losses are not reliable; run it at a smaller dt (half "
+                   "the step: the difference tells) or in the reference engine.")
+    warnings.warn(f"reduced engine: the balls' force balance did not converge within its iteration "
+                  f"limit in {bad} of {record.steps} steps (the run went on from the last iterate; "
+                  "where a ball leaves the load zone and its contact opens, or at a pocket impact); the "
+                  "summary's reduced_work counts them (--json on the command line); the reference "
+                  "engine has no such balance." + consequence, UserWarning, stacklevel=3)
 
 
 def check_record_pressures(record) -> None:
@@ -272,7 +280,18 @@ class BallBearingElement(_ElementBase):
 UNCONVERGED_SHARE = 0.01
 
 #: Bearing levels of :func:`CreateBallBearing` (``model=``).
-MODELS = ("balls", "quasistatic", "linear")
+MODELS = ("balls", "quasistatic", "linear", "reduced")
+#: Options of ``model="reduced"`` (:mod:`exudyn_bearing.solvers.reduced.level`): the levels' common ones, the
+#: ball element's physics options the reduced engine takes, and its own ``reducedStep`` (the largest step of the
+#: slow states [s]; None: one per Exudyn step) and ``tiltWarning`` [rad].
+REDUCED_OPTIONS = ("lubricant", "initialLoad", "loadAngle", "initialOmega", "ringGrowth", "temperatures", "hertzModel",
+                   "sampleInterval", "show", "cage", "rigidCage", "pocketFilm", "lubrication", "friction", "film",
+                   "guideClearance", "muDry", "regularizingSpeed", "tractionLevel", "traction", "nStrips", "nAcross",
+                   "tractionRegularizingSrr", "control", "initial", "rollingResistance", "ballDrag",
+                   "oilVolumeFraction", "hysteresisLossFactor", "cageDamping", "reducedStep", "tiltWarning")
+#: Defaults of ``model="reduced"`` where they differ from the ball element's: the rigid cage, the traction over
+#: the contact ellipse (the reduced engine takes no Cundall-Strack spring) and the quasi-static start.
+REDUCED_DEFAULTS = {"cage": "rigid", "tractionLevel": "ellipse", "initial": "quasistatic"}
 
 
 def CreateBallBearing(mbs, bearing: BallBearing | str, markerInnerRing, markerOuterRing, model="balls",
@@ -280,9 +299,14 @@ def CreateBallBearing(mbs, bearing: BallBearing | str, markerInnerRing, markerOu
     """Add a lubricated DEM ball bearing between two ring markers of ``mbs``.
 
     ``model`` picks the level: ``"balls"`` (default, the DEM element below),
-    ``"quasistatic"`` (5-DOF force element from the quasi-static ball
-    equilibrium, no ball DOFs) or ``"linear"`` (speed-dependent 5x5 stiffness
-    and damping about the operating point ``initialLoad``); the last two are
+    ``"reduced"`` (the reduced engine's balls and rigid cage advanced after
+    each Exudyn step, the ball centres on their force balance inside Exudyn's
+    Newton: :mod:`exudyn_bearing.solvers.reduced.level`, options
+    ``REDUCED_OPTIONS``, ``results()`` the engines' Results,
+    docs/theory/levels.md#reduced-level), ``"quasistatic"`` (5-DOF force
+    element from the quasi-static ball equilibrium, no ball DOFs) or
+    ``"linear"`` (speed-dependent 5x5 stiffness and damping about the
+    operating point ``initialLoad``); the last two are
     :mod:`exudyn_bearing.solvers.quasistatic.levels` (docs/howto/rotor.md,
     docs/theory/levels.md) and take ``lubricant``, ``initialLoad``, ``loadAngle``, ``initialOmega``,
     ``ringGrowth``, ``temperatures``, ``hertzModel``, ``sampleInterval``,
@@ -339,6 +363,8 @@ def _create_level(mbs, bearing, markerInnerRing, markerOuterRing, model, options
     """The ``"quasistatic"`` and ``"linear"`` levels of :func:`CreateBallBearing`."""
     if model not in MODELS:
         raise InputError(f"model: must be one of {', '.join(MODELS)}, got {model!r}")
+    if model == "reduced":
+        return _create_reduced_level(mbs, bearing, markerInnerRing, markerOuterRing, options)
     if "arrangement" in options:  # a bearing pair (solvers/quasistatic/levels/pair.py)
         from .solvers.quasistatic.levels.pair import create_pair_level
 
@@ -355,6 +381,55 @@ def _create_level(mbs, bearing, markerInnerRing, markerOuterRing, model, options
             raise InputError(f"{key}: not an option of model={model!r} (valid: {', '.join(allowed)})")
     cls = _with_results(QuasiStaticBearing if model == "quasistatic" else LinearBearing)
     return cls(mbs, bearing, markerInnerRing, markerOuterRing, **options)
+
+
+def _create_reduced_level(mbs, bearing, markerInnerRing, markerOuterRing, options):
+    """``model="reduced"`` of :func:`CreateBallBearing` (:mod:`exudyn_bearing.solvers.reduced.level`): the ball
+    element's options (``REDUCED_OPTIONS``, defaults ``REDUCED_DEFAULTS``) make the scene's Scenario, validated as
+    the element validates them; what the reduced engine does not take is refused by its own message
+    (:func:`~exudyn_bearing.solvers.reduced.engine.reduced_support_error`) naming the option."""
+    from .solvers.element.element import rename_option_error
+    from .solvers.reduced.engine import MAX_STEP, reduced_support_error
+    from .solvers.reduced.level import TILT_WARNING, ReducedBearing, check_reduced_step
+
+    for key in options:
+        if key not in REDUCED_OPTIONS:
+            raise InputError(f"{key}: not an option of model='reduced' (valid: {', '.join(REDUCED_OPTIONS)})")
+    o = {**REDUCED_DEFAULTS, **options}
+    own = {k: o.pop(k) for k in ("reducedStep", "tiltWarning", "show", "loadAngle") if k in o}
+    lubricant = o.pop("lubricant", None)
+    b = load_bearing(bearing)
+    step = check_reduced_step(own.get("reducedStep"))
+    scenario = element_scenario(b, stepSize=MAX_STEP if step is None else step, **o)
+    scenario, lub = with_bearing_defaults(b, scenario, lubricant)
+    err = reduced_support_error(scenario, b) or engine_speed_error(scenario, "reduced")
+    if err is not None:
+        raise rename_option_error(err)
+    check_load_range(b, scenario.Fr, scenario.Fa, scenario.hertz, names=("initialLoad", "initialLoad", "bearing"))
+    start = quasistatic_start(b, scenario, lub) if scenario.initial == "quasistatic" else None
+    cls = _with_run_results(ReducedBearing)
+    return cls(mbs, b, markerInnerRing, markerOuterRing, scenario, lub, start=start,
+               loadAngle=own.get("loadAngle", 0.0), reducedStep=step,
+               tiltWarning=own.get("tiltWarning", TILT_WARNING), show=own.get("show", False))
+
+
+def _with_run_results(level_class):
+    """``level_class`` with ``results()``: its ``record()`` as :class:`~exudyn_bearing.outputs.results.Results`,
+    as the ball element's (the reduced level samples the reduced engine's state)."""
+    if level_class not in _LEVEL_CLASSES:
+        def results(self) -> Results:
+            """The sampled series of the run as Results (the ball element's: per-ball loads, ball and cage speeds,
+            dissipation, energy balance, ``summary()`` over a window); sustained contact pressures above the
+            elastic limit raise InputError (:func:`check_record_pressures`)."""
+            record = self.record()
+            check_record_pressures(record)
+            warn_unconverged(record)
+            return Results(record)
+
+        _LEVEL_CLASSES[level_class] = type(level_class.__name__, (level_class,),
+                                           {"results": results, "__doc__": level_class.__doc__,
+                                            "__module__": level_class.__module__})
+    return _LEVEL_CLASSES[level_class]
 
 
 _LEVEL_CLASSES = {}

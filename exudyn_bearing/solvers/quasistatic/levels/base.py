@@ -24,15 +24,22 @@ import numpy as np
 from ...._jit import kernel
 from ....data import InputError, Lubricant, load_bearing, load_lubricant
 from ....data.errors import check_finite, check_positive
+from ....model.level_items import (  # noqa: F401 (shared with the reduced level; re-exported)
+    NEWTON_RELATIVE_TOLERANCE,
+    _load_pair,
+    _sensor_function,
+    check_solver,
+    rigid_marker,
+)
 from ....model.load_angle import LOAD_ANGLE_RANGE, check_load_angle, load_rotation  # noqa: F401 (re-exported)
 from ....model.load_range import MAX_CONTACT_PRESSURE, check_load_range
-from ....model.solver_types import IMPLICIT_SOLVERS, settings_solver, unstable_solver_error
+from ....model.solver_types import IMPLICIT_SOLVERS, settings_solver
 from ....physics import kinematics as _kin
 from ...quasistatic.solve import solve_quasistatic
 
 asarray = np.asarray
 
-__all__ = ["IMPLICIT_SOLVERS", "LEVEL_OPTIONS", "LevelBearing", "WS_HEADER"]
+__all__ = ["IMPLICIT_SOLVERS", "LEVEL_OPTIONS", "WS_HEADER", "LevelBearing"]
 
 #: Options every level takes (the ball element's names).
 LEVEL_OPTIONS = ("lubricant", "initialLoad", "loadAngle", "initialOmega", "ringGrowth", "temperatures", "hertzModel",
@@ -44,48 +51,6 @@ OPERATING_TILT = {"free": {}, "held": {"tilt_x": 0.0, "tilt_y": 0.0}}
 #: Default speeds [rad/s] of the coefficient table (damping, linear level): up to the larger of 1000 rad/s and
 #: 1.5 times the initial speed.
 DEFAULT_SPEEDS = (0.0, 100.0, 250.0, 500.0, 750.0, 1000.0)
-def _load_pair(load):
-    """(Fr, Fa) [N] of ``initialLoad``: a pair or a radial load."""
-    if isinstance(load, (int, float, np.integer, np.floating)) and not isinstance(load, bool):
-        pair = [load, 0.0]
-    else:
-        try:
-            pair = list(load)
-        except TypeError:
-            pair = []
-        if len(pair) != 2:
-            raise InputError(f"initialLoad: expected (Fr, Fa) [N] or a radial load Fr, got {load!r}")
-    fr, fa = (check_finite("initialLoad", x) for x in pair)
-    if fr < 0.0 or fa < 0.0:
-        raise InputError(f"initialLoad: Fr and Fa must be >= 0 (+x radial, +z axial on the inner ring), got {load!r}")
-    return fr, fa
-
-
-def rigid_marker(mbs, marker, name):
-    """The marker number if it is a rigid-body marker (position and orientation), else InputError."""
-    try:
-        m = mbs.GetMarker(int(marker))
-    except Exception:  # noqa: BLE001 - Exudyn raises its own types for a bad index
-        raise InputError(f"{name}: {marker!r} is not a marker of this mbs") from None
-    if m["markerType"] not in ("BodyRigid", "NodeRigid"):
-        raise InputError(f"{name}: the {m['markerType']} marker has no orientation; the bearing levels connect two "
-                         "rigid-body markers (MarkerBodyRigid or MarkerNodeRigid; ground: MarkerBodyRigid on "
-                         "ObjectGround)")
-    return int(marker)
-
-
-def check_solver(solver):
-    """InputError for a ``solver`` (a name) the levels cannot run with: UNSTABLE_SOLVERS (..model.solver_types),
-    which the bearing's stiffness drives unstable (the linear level at 1e-4 s ran away to forces of 1e50 N)."""
-    err = unstable_solver_error(solver, "the rings on the bearing's stiffness",
-                                "GeneralizedAlpha (recommended), TrapezoidalIndex2, RK44 or VelocityVerlet")
-    if err is not None:
-        raise err
-
-
-def _sensor_function(value):
-    """An Exudyn SensorUserFunction returning ``value()``."""
-    return lambda mbs, t, sensorNumbers, factors, configuration: value()
 
 
 def entry_point(dispatcher, args):
@@ -101,8 +66,6 @@ def entry_point(dispatcher, args):
         return dispatcher
 
 
-#: Newton's relative tolerance in :meth:`LevelBearing.SimulationSettings` (Exudyn's default: 1e-8)
-NEWTON_RELATIVE_TOLERANCE = 1e-4
 #: Calls from Exudyn into the levels' Python (user functions of every level in this process; [count]): the
 #: benchmarks' calls per step (validation/performance/bench_qs_rotor.py)
 python_calls = [0]
@@ -304,7 +267,10 @@ class LevelBearing:
 
     def _add_object(self, mbs, show):
         """The Exudyn object of the bearing (default: the connector between the ring markers); its number."""
-        from exudyn.itemInterface import ObjectConnectorRigidBodySpringDamper, VObjectConnectorRigidBodySpringDamper
+        from exudyn.itemInterface import (
+            ObjectConnectorRigidBodySpringDamper,
+            VObjectConnectorRigidBodySpringDamper,
+        )
 
         inner, outer = self.markers
         kw = self._connector_parameters()
