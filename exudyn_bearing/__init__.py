@@ -23,7 +23,7 @@ if TYPE_CHECKING:  # the public names, imported on first use by __getattr__ belo
     from .model.coefficients import BearingCoefficients
     from .model.scenario import Scenario
     from .model.stability import SimulationError, StepSizeWarning
-    from .outputs.results import Results, SteadyStateWarning
+    from .outputs.results import EnergyBalanceWarning, Results, SteadyStateWarning
     from .simulate import CreateBallBearing, simulate
     from .solvers.element.console import filter_exudyn_notes
     from .solvers.quasistatic import QuasiStaticSolution, bearing_coefficients, solve_quasistatic
@@ -44,7 +44,7 @@ _PUBLIC = {
     ".model.coefficients": ("BearingCoefficients",),
     ".model.scenario": ("Scenario",),
     ".model.stability": ("SimulationError", "StepSizeWarning"),
-    ".outputs.results": ("Results", "SteadyStateWarning"),
+    ".outputs.results": ("EnergyBalanceWarning", "Results", "SteadyStateWarning"),
     ".simulate": ("CreateBallBearing", "simulate"),
     ".solvers.element.console": ("filter_exudyn_notes",),
     ".solvers.quasistatic": ("QuasiStaticSolution", "bearing_coefficients", "solve_quasistatic"),
@@ -62,7 +62,7 @@ _SUBMODULES = ("cli", "data", "datasets", "model", "outputs", "physics", "solver
 __version__ = "0.1.0"
 
 __all__ = ["CreateBallBearing", "filter_exudyn_notes", "BallBearing", "Defect", "InputError", "Lubricant", "Material",
-           "Results", "Scenario", "SimulationError", "SteadyStateWarning", "StepSizeWarning", "catalog", "get_bearing", "load_bearing",
+           "EnergyBalanceWarning", "Results", "Scenario", "SimulationError", "SteadyStateWarning", "StepSizeWarning", "catalog", "get_bearing", "load_bearing",
            "load_lubricant", "lubricants", "materials", "simulate", "solve_quasistatic", "QuasiStaticSolution",
            "bearing_coefficients", "BearingCoefficients", "solve_thermal", "ThermalSolution", "LinearValidityWarning",
            "TractionResolutionWarning", "BallInertiaWarning", "RatingLife", "rating_life", "solve_pair", "PairSolution",

@@ -38,3 +38,32 @@ def test_each_friction_torque_says_its_ring(at_rest):
     assert "inner ring" in at_rest["units"]["friction_torque"]
     assert "driven ring" in at_rest["units"]["friction_torque_whole"]
     assert "held back" in at_rest["descriptions"]["friction_torque"]
+
+
+@pytest.mark.filterwarnings("ignore::exudyn_bearing.SteadyStateWarning")  # a 2 ms run: its window is short
+def test_a_failed_energy_check_is_said_on_its_row_and_warned(monkeypatch):
+    from exudyn_bearing.outputs import results as res_mod
+    from exudyn_bearing.outputs.tables import summary_rows
+
+    sc = eb.Scenario(Fr=3000.0, omega=500.0, t_end=2e-3, dt=2e-6, sample_dt=5e-5, cage="none")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        run = eb.simulate("6208", sc)
+    real = res_mod.energy_check
+
+    def failing(*args, **kwargs):  # the run's own check, with its verdict turned to a failure
+        out = dict(real(*args, **kwargs))
+        out.update(passed=False, residual=-0.05, statement="drive_power = ...: FAILS (residual -5 %, tolerance 1 %)")
+        return out
+
+    monkeypatch.setattr(res_mod, "energy_check", failing)
+    with pytest.warns(eb.EnergyBalanceWarning, match="FAILS"):
+        s = run.summary()
+    row = next(r[1] for r in summary_rows(s) if r[0] == "energy_residual")
+    assert "energy check FAILS" in row and "-5 %" in row
+    monkeypatch.setattr(res_mod, "energy_check", real)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", eb.EnergyBalanceWarning)  # a passing or unjudged check does not warn
+        warnings.simplefilter("ignore", SteadyStateWarning)
+        s = run.summary()
+    assert s["energy_check"]["passed"] is not False

@@ -40,10 +40,10 @@ from .contact_summary import CONTACT_SUMMARY_UNITS, contact_summary
 from .jsonio import to_jsonable
 from .whole_loss import WHOLE_LOSS_DESCRIPTIONS, WHOLE_LOSS_KEYS, WHOLE_LOSS_UNITS, whole_loss
 from .tables import NOT_CONVERGED_MARK, Summary
-from .window_checks import (LOSS_FLOOR_MU, sample_window, SPEED_FLOOR, SteadyStateWarning,
+from .window_checks import (LOSS_FLOOR_MU, EnergyBalanceWarning, sample_window, SPEED_FLOOR, SteadyStateWarning,
                             energy_balance, energy_check, energy_floor, q_max_at_psi0, steadiness)
 
-__all__ = ["Results", "SUMMARY_KEYS", "SUMMARY_UNITS", "SUMMARY_DESCRIPTIONS", "PHASE_NAMES", "LOSSES_MODELLED",
+__all__ = ["Results", "EnergyBalanceWarning", "SUMMARY_KEYS", "SUMMARY_UNITS", "SUMMARY_DESCRIPTIONS", "PHASE_NAMES", "LOSSES_MODELLED",
            "LOSSES_NOT_MODELLED", "DYNAMIC_LOSS_COMPONENTS", "DYNAMIC_NOT_MODELLED", "DYNAMIC_SWITCHED_LOSSES",
            "SteadyStateWarning", "POINT_STEP_DEPENDENT", "NOT_CONVERGED_MARK",
            "protocol_phases"]
@@ -734,6 +734,11 @@ class Results:
         for key in out["not_converged"]:
             text = out["descriptions"].get(key.split(".")[0], "")
             out["descriptions"][key] = f"({NOT_CONVERGED_MARK}) {text}".rstrip()
+        check = out["energy_check"]
+        if check["passed"] is False:  # an invariant of every run: said, not only stored
+            warnings.warn(f"summary window {window['t0']:.6g} - {window['t1']:.6g} s of the {self.engine} run: "
+                          f"{check['statement']} (summary['energy_check']; a smaller step or tolerance, or a "
+                          f"steady window)", EnergyBalanceWarning, stacklevel=2)
         if not steady["steady"]:
             reasons = steady["reason"].split("; ")
             more = f"; and {len(reasons) - 3} more (summary['steady'])" if len(reasons) > 3 else ""

@@ -90,10 +90,18 @@ def summary_rows(summary, t_end=None):
         rows.append(("note", summary["note"]))
     rows += [(f"regime_fraction.{k}", v) for k, v in summary["regime_fraction"].items()]
     check = summary.get("energy_check") or {}
-    if check.get("passed") is None and check.get("reason") and summary.get("energy_residual") is not None:
-        # a residual the energy check did not judge (a drive power below the loss floor: noise) says so on its row
-        rows = [(r[0], f"{r[1]:.6g} (not judged: {check['reason'].removesuffix(': not judged')}; "
-                       f"energy_source.energy_residual)") if r[0] == "energy_residual" else r for r in rows]
+    if summary.get("energy_residual") is not None and check:
+        # the energy check's verdict on the residual's row: not judged (a drive power below the loss floor: noise),
+        # or a failure (the check's residual is of the sum of the reported losses)
+        if check.get("passed") is None and check.get("reason"):
+            note = f"not judged: {check['reason'].removesuffix(': not judged')}; energy_source.energy_residual"
+        elif check.get("passed") is False:
+            note = (f"energy check FAILS: residual of the reported losses {100 * check['residual']:.3g} %, "
+                    f"tolerance {100 * check['tolerance']:g} %; energy_check")
+        else:
+            note = None
+        if note:
+            rows = [(r[0], f"{r[1]:.6g} ({note})") if r[0] == "energy_residual" else r for r in rows]
     marked = set(summary.get("not_converged", ()))  # step noise (the point level's friction outputs): said on the row
     rows = [(r[0], _not_converged(r[1], r[2] if len(r) > 2 else None)) if r[0] in marked and r[1] is not None else r
             for r in rows]

@@ -17,7 +17,7 @@ from ..physics.losses import LOSS_FLOOR_MU  # noqa: F401 (the summaries' loss fl
 __all__ = ["sample_window", "STEADY_BLOCKS", "MIN_STEADY_SAMPLES", "DRIFT_REL", "OSCILLATION_REL", "DRIFT_DEG", "OSCILLATION_DEG",
            "LOSS_DRIFT_REL", "LOSS_OSCILLATION_REL", "LOSS_FLOOR_MU", "SPEED_FLOOR", "PSI0_TOLERANCE",
            "STEADY_THRESHOLDS", "SteadyStateWarning", "drift_and_oscillation", "passage_average", "steadiness", "q_max_at_psi0",
-           "energy_balance", "ENERGY_TOLERANCE", "ENERGY_FLOOR_OMEGA", "energy_check", "energy_floor"]
+           "energy_balance", "EnergyBalanceWarning", "ENERGY_TOLERANCE", "ENERGY_FLOOR_OMEGA", "energy_check", "energy_floor"]
 
 #: Blocks the window is cut into for the oscillation measure: the standard
 #: deviation of the block means (after removing the linear trend) shows a
@@ -90,6 +90,11 @@ STEADY_THRESHOLDS = {
 
 class SteadyStateWarning(UserWarning):
     """The window of a dynamic summary is not steady."""
+
+
+class EnergyBalanceWarning(UserWarning):
+    """The energy check of a dynamic summary's window fails: the drive power is not the sum of the reported
+    losses and the rate of change of the kinetic energy (:func:`energy_check`)."""
 
 
 def drift_and_oscillation(t, x, blocks: int = STEADY_BLOCKS, length: float | None = None) -> tuple[float, float]:
