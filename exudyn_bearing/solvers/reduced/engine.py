@@ -25,7 +25,8 @@ from ...model.scenario import Scenario, engine_speed_error, resolve_cage
 from ...model.stability import SimulationError
 from ...physics import hertz
 from . import stepper as _st
-from .stepper import N_CAGE, N_CORR, N_WORK, W_CORR, W_EVALS, W_ITER, W_ITER_MAX, W_REFRESH, W_UNCONVERGED, run_reduced
+from .stepper import (N_CAGE, N_CORR, N_WORK, W_CORR, W_EVALS, W_ITER, W_ITER_MAX, W_JAC, W_REFRESH, W_UNCONVERGED,
+                      run_reduced)
 
 __all__ = ["ReducedEngine", "reduced_support_error", "BALANCE_TOL", "MAX_ITER", "CHUNK_STEPS", "MIN_STEP", "MAX_STEP"]
 
@@ -277,7 +278,8 @@ class ReducedEngine:
 
     def stats(self, steps: int, sizes=None) -> dict:
         """Work of the run: Newton iterations of the force balance per step (mean, worst), force evaluations
-        per step (the rejected steps' included), steps whose balance did not converge within MAX_ITER; the
+        per step (the rejected steps' included), steps whose balance did not converge within MAX_ITER, the
+        steps that retook the speeds' Jacobians and the balance's Jacobians taken; the
         step control: the tolerance (None: the fixed step), the steps rejected, the least, median and largest
         step taken [s] (``sizes``, the steps taken; the fixed step's dt without the tolerance)."""
         w = self.work
@@ -287,7 +289,8 @@ class ReducedEngine:
             sizes = np.full(1, s.dt)
         return {"newton_per_step": float(w[W_ITER]) / n, "newton_max": int(w[W_ITER_MAX]),
                 "evaluations_per_step": float(w[W_EVALS]) / n, "unconverged_steps": int(w[W_UNCONVERGED]),
-                "jacobian_steps": int(w[W_REFRESH]), "pocket_corrections": int(w[W_CORR]),
+                "jacobian_steps": int(w[W_REFRESH]), "balance_jacobians": int(w[W_JAC]),
+                "pocket_corrections": int(w[W_CORR]),
                 "tolerance": s.tolerance, "steps_rejected": int(self._adapt[_st.A_NREJ]),
                 "restarts": int(self._adapt[_st.A_NRESTART]),
                 "dt_min": float(np.min(sizes)), "dt_median": float(np.median(sizes)),
