@@ -1129,7 +1129,9 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
                 else:
                     q[j, c] = q[j, c] + ratio * (q[j, c] - q_old[j, c])
                 q_old[j, c] = q_n[j, c]
-        # a step that ends on a sample takes the kernel's diagnostics in the balance's committed evaluation
+        # a step that ends on a sample takes the kernel's diagnostics in the balance's committed evaluation; the
+        # balance's Jacobians are retaken with the speeds' (else kept: the balance retakes them where an iteration
+        # gains less than SHRINK)
         if adaptive:
             sample_due = sample_here and land and n_samp < s_t.shape[0]
         else:
@@ -1137,7 +1139,7 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
         sampled = sample_due
         it, ok, worst = _balance_sampled(t1, h, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist,
                                          hz, fb, tb, fc, fr, fring, glob, diag, cage_load, res, acc, g, r0, done, tol,
-                                         max_iter, work, want_yes, sample_due, defect_path, ellipse_path, loss_path)
+                                         max_iter, work, refresh, sample_due, defect_path, ellipse_path, loss_path)
         # the rigid cage: where a pocket contact closed or opened over the step, Newton corrections of the step's
         # equations at the state reached (the same matrix), each followed by the balls' balance
         if cage_free and n_corr > 0:
