@@ -28,7 +28,7 @@ from _bench import interleaved_ab  # noqa: E402  (validation/performance/ is on 
 from bench_defects import import_baseline  # noqa: E402
 from reduced_engine import CASES, COMMON  # noqa: E402
 
-#: The code before issue 37's changes to the reduced engine's cost.
+#: The code before the changes to the reduced engine's cost (Jacobians' age, the balance's iterations).
 BASELINE_REV = "7a33c62"
 #: (label, case name in reduced_engine.CASES, step [s], simulated time [s] or None for the case's)
 RUNS = [("6208 radial, 20 us", "6208 radial (Fr 3000 N, 500 rad/s)", 2e-5, None),
