@@ -756,8 +756,10 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
     """``n_steps`` steps of the reduced engine from t0 (module docstring; docs/theory/reduced.md).
 
     Each step from t_n: (1) the forces at t_n (the balls on their balance of the last step); the Jacobians of
-    (2) and (3) are retaken at a chunk's first step, after ``jac_every`` steps, and where a ball's load proxy
-    (the overlaps^1.5 of its contacts) moved by more than ``jac_tol`` of the largest ball's since, else kept;
+    (2) and (3) are retaken at a chunk's first step, after ``jac_every`` steps, where a ball's load proxy
+    (the overlaps^1.5 of its contacts) moved by more than ``jac_tol`` of its own since (at least
+    :data:`LOAD_FLOOR` of the largest ball's), and where a ball's speeds moved by more than :data:`SPEED_TOL`
+    of its orbital surface speed, else kept (the ring's at every ``ring_every``-th retaking);
     (2) the per-ball Jacobian of (om', w') in (phi, om, w) by differences, one evaluation per component with
     every ball perturbed at once (phi: the ball's place in the load zone, whose geometry the step would otherwise take
     one step late); (3) with ``ring_free``, the inner ring's 3 x 3 stiffness K, condensed over the balls'
@@ -766,7 +768,9 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
     2/3 dt f(y_{n+1}) from the extrapolation 2 y_n - y_{n-1}, with f there f_n + J (y_n - y_{n-1}) (no force
     evaluation beyond the step's), linearly implicit Euler where the state before is not yet kept (``prev``
     (Z, 5), ``ring_prev`` (6), flag in ``work``); (5) the balls' force balance at t_{n+1} (:func:`_balance`),
-    warm started by the extrapolation 2 q_n - q_{n-1}. With ``cage_free`` (the rigid cage) the cage's state
+    warm started by the extrapolation 2 q_n - q_{n-1}, its Jacobians retaken with those of (2) and else kept
+    (:func:`_balance_sampled`; a step that ends on a sample takes the diagnostics in its evaluations). With
+    ``cage_free`` (the rigid cage) the cage's state
     (:data:`N_CAGE`, in the cage rows of ``xc``, ``vc``; ``cage_prev`` its value one step earlier) is advanced
     with the balls in one arrow-shaped linearly implicit step (:func:`_arrow_step`), its Jacobians by
     differences at (2) (:func:`_speed_jacobians`): every ball's acceleration and the cage's in the cage's 8
