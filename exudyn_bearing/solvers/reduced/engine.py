@@ -25,7 +25,8 @@ from ...model.scenario import Scenario, engine_speed_error, resolve_cage
 from ...model.stability import SimulationError
 from ...physics import hertz
 from . import stepper as _st
-from .stepper import N_CAGE, N_CORR, N_WORK, W_CORR, W_EVALS, W_ITER, W_ITER_MAX, W_REFRESH, W_UNCONVERGED, run_reduced
+from .stepper import (N_CAGE, N_CORR, N_WORK, W_CORR, W_EVALS, W_ITER, W_ITER_MAX, W_JAC, W_REFRESH, W_UNCONVERGED,
+                      run_reduced)
 
 __all__ = ["ReducedEngine", "reduced_support_error", "BALANCE_TOL", "MAX_ITER", "CHUNK_STEPS", "MIN_STEP", "MAX_STEP"]
 
@@ -36,14 +37,19 @@ BALANCE_TOL = 1e-12
 #: ``reduced.unconverged_steps`` and goes on from the last iterate); the balance at a run's start, from a state
 #: that may be far off it, takes up to :data:`~exudyn_bearing.solvers.reduced.stepper.START_ITER` times as many.
 MAX_ITER = 12
-#: Steps over which the Jacobians of the ball speeds and of the ring are kept at most.
-JAC_EVERY = 2
-#: Change of a ball's load proxy (its overlaps^1.5), relative to the largest ball's, that retakes the Jacobians
-#: before JAC_EVERY steps (a ball entering or leaving the load zone).
+#: Steps over which the Jacobians of the ball speeds and of the ring are kept at most: in a steady state
+#: with every ball loaded alike (the 6208 under thrust, the ACBB-120) nothing else retakes them, so this sets
+#: the cost (docs/theory/reduced.md, "The step").
+JAC_EVERY = 8
+#: Change of a ball's load proxy (its overlaps^1.5), relative to its own at the last retaking (at least
+#: :data:`~exudyn_bearing.solvers.reduced.stepper.LOAD_FLOOR` of the largest ball's), that retakes the Jacobians
+#: before JAC_EVERY steps (a ball passing through the load zone, entering or leaving it); a change of a ball's
+#: speeds by :data:`~exudyn_bearing.solvers.reduced.stepper.SPEED_TOL` of its orbital surface speed also
+#: retakes them (a run-up).
 JAC_TOL = 0.1
 #: The ring's Jacobians are retaken at every RING_EVERY-th retaking of the balls' (the ring's stiffness moves
-#: little as the balls pass).
-RING_EVERY = 1
+#: little as the balls pass: the 6208 radial's Q_max moved by 0.001 % at 100 us with 2 against 1).
+RING_EVERY = 2
 #: Steps of a chunk (the progress line's and Ctrl-C's granularity).
 CHUNK_STEPS = 2000
 
@@ -275,7 +281,8 @@ class ReducedEngine:
 
     def stats(self, steps: int, sizes=None) -> dict:
         """Work of the run: Newton iterations of the force balance per step (mean, worst), force evaluations
-        per step (the rejected steps' included), steps whose balance did not converge within MAX_ITER; the
+        per step (the rejected steps' included), steps whose balance did not converge within MAX_ITER, the
+        steps that retook the speeds' Jacobians and the balance's Jacobians taken; the
         step control: the tolerance (None: the fixed step), the steps rejected, the least, median and largest
         step taken [s] (``sizes``, the steps taken; the fixed step's dt without the tolerance)."""
         w = self.work
@@ -285,7 +292,8 @@ class ReducedEngine:
             sizes = np.full(1, s.dt)
         return {"newton_per_step": float(w[W_ITER]) / n, "newton_max": int(w[W_ITER_MAX]),
                 "evaluations_per_step": float(w[W_EVALS]) / n, "unconverged_steps": int(w[W_UNCONVERGED]),
-                "jacobian_steps": int(w[W_REFRESH]), "pocket_corrections": int(w[W_CORR]),
+                "jacobian_steps": int(w[W_REFRESH]), "balance_jacobians": int(w[W_JAC]),
+                "pocket_corrections": int(w[W_CORR]),
                 "tolerance": s.tolerance, "steps_rejected": int(self._adapt[_st.A_NREJ]),
                 "restarts": int(self._adapt[_st.A_NRESTART]),
                 "dt_min": float(np.min(sizes)), "dt_median": float(np.median(sizes)),

@@ -31,7 +31,8 @@ import numpy as np
 
 from ..._jit import kernel
 from ...model.contact import _rigid_cage, accumulate_energy, forces
-from ...model.layout import G_DISS_WORK, G_DRIVE_WORK, HZ_GEO, NGLOBAL, P_IB, P_IC, P_MAX_OVERLAP, P_MB, P_MC, P_MR, P_RB, P_RP
+from ...model.layout import (G_DISS_WORK, G_DRIVE_WORK, HZ_GEO, NGLOBAL, P_IB, P_IC, P_MAX_OVERLAP, P_MB, P_MC, P_MR,
+                             P_RB, P_RP, P_VREG)
 from ...model.engine_steps import finite, finite_ring, inner_ring_force, set_inner_ring, store_sample
 
 __all__ = ["reduced_evaluate", "run_reduced", "N_WORK", "N_CAGE", "N_CORR", "N_ADAPT", "state_count"]
@@ -64,6 +65,18 @@ N_CORR = 4
 #: The corrections stop once the step equations' largest speed residual is below CORR_TOL [m/s] (a surface
 #: speed), or when a correction made it larger (that correction is undone).
 CORR_TOL = 1e-6
+#: The balance's modified Newton iteration retakes its Jacobians where a ball's residual did not shrink by at
+#: least this factor over an iteration (two evaluations, every ball at once): with the Jacobian of the state the
+#: iteration is quadratic, and an iteration that gains less than a factor of ten costs more evaluations to the
+#: balance's tolerance than retaking them. Where a kept Jacobian no longer holds (a rigid cage's pocket contact
+#: changing the stiffness of a ball's soft direction, along its grooves, within the step), the iteration
+#: converged linearly at 0.2-0.5 per iteration and stopped at its limit.
+SHRINK = 0.1
+#: The load proxy's change that retakes the Jacobians (``jac_tol``) is relative to the ball's own proxy at the
+#: last retaking, at least LOAD_FLOOR times the largest ball's.
+LOAD_FLOOR = 0.1
+#: The speeds' change that retakes the Jacobians: SPEED_TOL of the ball's orbital surface speed.
+SPEED_TOL = 0.005
 #: Orbital-angle perturbation [rad] of the forces' dependence on the ball's place in the load zone.
 H_ANGLE = 1e-7
 
@@ -515,6 +528,16 @@ def _step_residual(phi, om, wo, prev, prev2, acc, xc, vc, cage_prev, cage_prev2,
 def _balance(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb, tb, fc, fr, fring,
              glob, diag, cage_load, res, acc, g, r0, done, tol, max_iter, work, fresh, defect_path, ellipse_path,
              loss_path):
+    """The balls' normal force balance (:func:`_balance_sampled` without the sample's diagnostics)."""
+    return _balance_sampled(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb, tb,
+                            fc, fr, fring, glob, diag, cage_load, res, acc, g, r0, done, tol, max_iter, work, fresh,
+                            False, defect_path, ellipse_path, loss_path)
+
+
+@kernel(internal=True)
+def _balance_sampled(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb, tb, fc, fr,
+                     fring, glob, diag, cage_load, res, acc, g, r0, done, tol, max_iter, work, fresh, want,
+                     defect_path, ellipse_path, loss_path):
     """Solve the normal force balance of every ball for q (warm start: q on entry) by Newton's method with
     the per-ball 2 x 2 Jacobians ``g`` (Z, 2, 2) of dR/dq, taken by differences (one evaluation per
     component, every ball perturbed at once: balls couple only through the rings, held here) at the first
@@ -522,8 +545,15 @@ def _balance(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, r
     of a ball not yet converged grew (modified Newton). Where G is not negative definite (a ball without
     contact, or whose contact is just closing) the iteration adds m_b / dt^2 to the stiffness it inverts, so
     that a ball whose contacts are all open moves by its force from rest over one step, dq = R dt^2 / m_b,
-    and then stays put for the step (the rule of docs/theory/reduced.md); a loaded ball converges to its
-    balance (|dq| < ``tol``). Leaves the forces of the final q evaluated (the step's committed evaluation).
+    and then stays put for the step (the rule of docs/theory/reduced.md); a loaded ball has converged where
+    the correction its residual asks for is below ``tol`` [m], and that correction is left out (its centre
+    stays where it was evaluated): an iteration in which every ball converged and none moved (and which took
+    no Jacobian) ends the balance on the evaluation just made, without evaluating the forces once more. Left
+    out rather than applied without an evaluation, so that the committed evaluation is at the state: the next
+    step's Jacobians are differences about it (a development run that applied them moved the 6208 radial's
+    drive power at 100 us by -4 %, its jphi taken about a state 1e-12 m off its committed evaluation). Leaves
+    the forces of the final q evaluated (the step's committed evaluation; with ``want`` with the kernel's
+    diagnostics for a sample, every iteration's evaluation taking them, as any may be the last).
     Returns (iterations, converged, worst overlap ratio)."""
     z = phi.shape[0]
     k_min = p[P_MB] / (dt * dt)
@@ -535,19 +565,21 @@ def _balance(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, r
     need_jac = fresh
     while True:
         worst = reduced_evaluate(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz,
-                                 fb, tb, fc, fr, fring, glob, diag, cage_load, False, res, acc, defect_path,
+                                 fb, tb, fc, fr, fring, glob, diag, cage_load, want, res, acc, defect_path,
                                  ellipse_path, loss_path)
         work[W_EVALS] += 1.0
         if converged or it >= max_iter or not math.isfinite(worst):
             break
         for j in range(z):
             if it > 0 and done[j] < 0.5 and (res[j, 0] * res[j, 0] + res[j, 1] * res[j, 1]
-                                             > r0[j, 0] * r0[j, 0] + r0[j, 1] * r0[j, 1]):
+                                             > SHRINK * SHRINK * (r0[j, 0] * r0[j, 0] + r0[j, 1] * r0[j, 1])):
                 need_jac = True  # a kept Jacobian that no longer serves
             r0[j, 0] = res[j, 0]
             r0[j, 1] = res[j, 1]
+        clean = True  # the arrays hold the evaluation at the present q (no perturbed evaluation since)
         if need_jac:
             need_jac = False
+            clean = False
             work[W_JAC] += 1.0
             for c in range(2):
                 for j in range(z):
@@ -562,6 +594,7 @@ def _balance(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, r
                     g[j, 1, c] = (res[j, 1] - r0[j, 1]) / H_POS
         it += 1
         converged = True
+        moved = False
         for j in range(z):
             if done[j] > 0.5:
                 continue
@@ -579,17 +612,25 @@ def _balance(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, r
             d0 = -(a22 * r0[j, 0] - a12 * r0[j, 1]) / det
             d1 = -(a11 * r0[j, 1] - a21 * r0[j, 0]) / det
             size = math.sqrt(d0 * d0 + d1 * d1)
+            # hz[.., HZ_GEO + 6]: the overlaps of the last evaluation (after a Jacobian, of q perturbed by H_POS)
+            open_contacts = hz[j, 0, HZ_GEO + 6] <= 0.0 and hz[j, 1, HZ_GEO + 6] <= 0.0
+            if size < tol and not open_contacts:
+                # converged: the correction below tol is left out, so that the evaluation just made is at the
+                # state (the Jacobians of the next step are differences about it)
+                done[j] = 1.0
+                continue
             if size > STEP_MAX:  # a trust region: the linearisation holds over a fraction of the overlaps
                 d0 *= STEP_MAX / size
                 d1 *= STEP_MAX / size
             q[j, 0] += d0
             q[j, 1] += d1
-            open_contacts = hz[j, 0, HZ_GEO + 6] <= 0.0 and hz[j, 1, HZ_GEO + 6] <= 0.0
-            if open_contacts or math.sqrt(d0 * d0 + d1 * d1) < tol:
-                done[j] = 1.0  # converged, or free: moved once from rest, then held for the step
+            moved = True
+            if open_contacts:
+                done[j] = 1.0  # free: moved once from rest, then held for the step
             else:
                 converged = False
-    # hz[.., HZ_GEO + 6] above is the overlap of the evaluation at the q before the update
+        if converged and not moved and clean:
+            break  # the evaluation at the present q is the committed one
     work[W_ITER] += it
     if it > work[W_ITER_MAX]:
         work[W_ITER_MAX] = it
@@ -715,8 +756,10 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
     """``n_steps`` steps of the reduced engine from t0 (module docstring; docs/theory/reduced.md).
 
     Each step from t_n: (1) the forces at t_n (the balls on their balance of the last step); the Jacobians of
-    (2) and (3) are retaken at a chunk's first step, after ``jac_every`` steps, and where a ball's load proxy
-    (the overlaps^1.5 of its contacts) moved by more than ``jac_tol`` of the largest ball's since, else kept;
+    (2) and (3) are retaken at a chunk's first step, after ``jac_every`` steps, where a ball's load proxy
+    (the overlaps^1.5 of its contacts) moved by more than ``jac_tol`` of its own since (at least
+    :data:`LOAD_FLOOR` of the largest ball's), and where a ball's speeds moved by more than :data:`SPEED_TOL`
+    of its orbital surface speed, else kept (the ring's at every ``ring_every``-th retaking);
     (2) the per-ball Jacobian of (om', w') in (phi, om, w) by differences, one evaluation per component with
     every ball perturbed at once (phi: the ball's place in the load zone, whose geometry the step would otherwise take
     one step late); (3) with ``ring_free``, the inner ring's 3 x 3 stiffness K, condensed over the balls'
@@ -725,7 +768,9 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
     2/3 dt f(y_{n+1}) from the extrapolation 2 y_n - y_{n-1}, with f there f_n + J (y_n - y_{n-1}) (no force
     evaluation beyond the step's), linearly implicit Euler where the state before is not yet kept (``prev``
     (Z, 5), ``ring_prev`` (6), flag in ``work``); (5) the balls' force balance at t_{n+1} (:func:`_balance`),
-    warm started by the extrapolation 2 q_n - q_{n-1}. With ``cage_free`` (the rigid cage) the cage's state
+    warm started by the extrapolation 2 q_n - q_{n-1}, its Jacobians retaken with those of (2) and else kept
+    (:func:`_balance_sampled`; a step that ends on a sample takes the diagnostics in its evaluations). With
+    ``cage_free`` (the rigid cage) the cage's state
     (:data:`N_CAGE`, in the cage rows of ``xc``, ``vc``; ``cage_prev`` its value one step earlier) is advanced
     with the balls in one arrow-shaped linearly implicit step (:func:`_arrow_step`), its Jacobians by
     differences at (2) (:func:`_speed_jacobians`): every ball's acceleration and the cage's in the cage's 8
@@ -756,6 +801,7 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
     q_n = np.zeros((z, 2))
     proxy = np.zeros(z)
     load_ref = np.zeros(z)
+    spd_ref = np.zeros((z, 4))
     since = 0
     n_ref = 0
     a5 = np.zeros((5, 5))
@@ -907,7 +953,8 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
         if cage_free:
             _cage_accelerations(p, fc, ac0)
         # the Jacobians of steps (2), (3): kept for up to jac_every steps, retaken sooner where a ball's load
-        # proxy (overlaps^1.5 of both contacts) moved by more than jac_tol of the largest one
+        # proxy (overlaps^1.5 of both contacts) moved by more than jac_tol of its own at the last retaking (at
+        # least LOAD_FLOOR of the largest ball's)
         big = 0.0
         moved = 0.0
         for j in range(z):
@@ -919,9 +966,22 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
             proxy[j] = pj
             if load_ref[j] > big:
                 big = load_ref[j]
-            if abs(pj - load_ref[j]) > moved:
-                moved = abs(pj - load_ref[j])
-        refresh = since >= jac_every or moved > jac_tol * big or step == 0 or force_jac
+        for j in range(z):
+            change = abs(proxy[j] - load_ref[j])
+            scale = max(load_ref[j], LOAD_FLOOR * big)
+            if change > 0.0:
+                moved = max(moved, change / scale if scale > 0.0 else math.inf)
+        # and where a ball's speeds (orbital speed at the pitch radius, angular velocity at the ball's surface)
+        # moved by more than SPEED_TOL of its orbital surface speed (at least the regularising speed) since: the
+        # traction's slopes follow the rolling speed (a run-up)
+        sped = 0.0
+        for j in range(z):
+            u = max(abs(spd_ref[j, 0]) * p[P_RP], p[P_VREG])
+            du = abs(om[j] - spd_ref[j, 0]) * p[P_RP]
+            for k in range(3):
+                du = max(du, abs(wo[j, k] - spd_ref[j, 1 + k]) * p[P_RB])
+            sped = max(sped, du / u)
+        refresh = (since >= jac_every or moved > jac_tol or sped > SPEED_TOL or step == 0 or force_jac)
         force_jac = False
         # the rigid cage: a pocket contact that closed or opened since the last step retakes the Jacobians (the
         # pockets' shares at t_n, sh0, serve the Jacobians below)
@@ -939,6 +999,9 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
             work[W_REFRESH] += 1.0
             for j in range(z):
                 load_ref[j] = proxy[j]
+                spd_ref[j, 0] = om[j]
+                for k in range(3):
+                    spd_ref[j, 1 + k] = wo[j, k]
             _speed_jacobians(t, hs, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings,
                              hist, hz, fb, tb, fc, fr, fring, glob, diag, cage_load, res, acc, acc0, ac0,
                              sh0, sh1, ac1, fbp, tbp, fcp, frp, globp, clp, jphi, jb, jcb, jbc, jcc, h_om,
@@ -1070,9 +1133,17 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
                 else:
                     q[j, c] = q[j, c] + ratio * (q[j, c] - q_old[j, c])
                 q_old[j, c] = q_n[j, c]
-        it, ok, worst = _balance(t1, h, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb,
-                                 tb, fc, fr, fring, glob, diag, cage_load, res, acc, g, r0, done, tol, max_iter, work,
-                                 want_yes, defect_path, ellipse_path, loss_path)
+        # a step that ends on a sample takes the kernel's diagnostics in the balance's committed evaluation; the
+        # balance's Jacobians are retaken with the speeds' (else kept: the balance retakes them where an iteration
+        # gains less than SHRINK)
+        if adaptive:
+            sample_due = sample_here and land and n_samp < s_t.shape[0]
+        else:
+            sample_due = (step0 + step + 1) % sample_every == 0 and n_samp < s_t.shape[0]
+        sampled = sample_due
+        it, ok, worst = _balance_sampled(t1, h, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist,
+                                         hz, fb, tb, fc, fr, fring, glob, diag, cage_load, res, acc, g, r0, done, tol,
+                                         max_iter, work, refresh, sample_due, defect_path, ellipse_path, loss_path)
         # the rigid cage: where a pocket contact closed or opened over the step, Newton corrections of the step's
         # equations at the state reached (the same matrix), each followed by the balls' balance
         if cage_free and n_corr > 0:
@@ -1083,6 +1154,7 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
                 if touch != pocket_on[j]:
                     changed = True
             if changed:
+                sampled = False  # the corrections' balances evaluate without the diagnostics
                 last = 1e300
                 for _c in range(n_corr + 1):
                     _cage_accelerations(p, fc, ac1)
@@ -1232,18 +1304,15 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
             glob[G_DISS_WORK] = glob_n[G_DISS_WORK]
         else:
             accumulate_energy(glob, dt)
-        if adaptive:
-            want = sample_here and land and n_samp < s_t.shape[0]
-            if sample_here and land:
-                adapt[A_KSAMP] += 1.0
-        else:
-            want = (step0 + step + 1) % sample_every == 0 and n_samp < s_t.shape[0]
-        if want:
-            h_sample = hs if adaptive else h
-            reduced_evaluate(t1, h_sample, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb, tb,
-                             fc, fr, fring, glob, diag, cage_load, want_yes, res, acc, defect_path, ellipse_path,
-                             loss_path)
-            work[W_EVALS] += 1.0
+        if adaptive and sample_here and land:
+            adapt[A_KSAMP] += 1.0
+        if sample_due:
+            if not sampled:  # the state's forces with the diagnostics (the balance's committed evaluation had none)
+                h_sample = hs if adaptive else h
+                reduced_evaluate(t1, h_sample, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist,
+                                 hz, fb, tb, fc, fr, fring, glob, diag, cage_load, want_yes, res, acc, defect_path,
+                                 ellipse_path, loss_path)
+                work[W_EVALS] += 1.0
             store_sample(n_samp, t1, glob, diag, cage_load, xb, vb, wb, xc, vc, ring,
                    s_t, s_glob, s_diag, s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring)
             n_samp += 1
