@@ -67,6 +67,13 @@ from . import stepper as _st
 from .coupled import frozen_ring_force
 from .engine import BALANCE_TOL, MAX_ITER, MAX_STEP, ReducedEngine
 
+#: The balance's tolerance [m] inside Exudyn's Newton iteration: the balance leaves out a centre's last correction
+#: below its tolerance (stepper._balance_sampled), so the ring force it returns carries up to K tol of the
+#: balance's history (the kept Jacobians); Exudyn differentiates the connector numerically over perturbations of
+#: about 1e-9 m, where BALANCE_TOL's K tol (1e-4 to 1e-3 N) spoilt its Newton (step reductions) and made a turned
+#: scene differ by 1e-5 (tests/test_levels_reduced.py). A thousandth of it keeps that share below 1e-6.
+LEVEL_BALANCE_TOL = 1e-3 * BALANCE_TOL
+
 __all__ = ["LAG_FORCE_WARNING", "TILT_WARNING", "ReducedBearing"]
 
 #: Relative tilt [rad] of the inner ring above which the level warns (once per run) that it leaves the tilt out:
@@ -317,8 +324,8 @@ class ReducedBearing:
             h = MAX_STEP
         it, ok, worst = frozen_ring_force(t, h, self.p_trial, self.engine.table, self.phi, self.om, self.wo,
                                           self.q_trial, self.q, r, self.xc, self.vc, self.rings_trial, self.hist,
-                                          self.hz_trial, self.g, BALANCE_TOL, MAX_ITER, self.fresh, self.work_trial,
-                                          self.out6, self._paths[0], self._paths[1], self._paths[2])
+                                          self.hz_trial, self.g, LEVEL_BALANCE_TOL, MAX_ITER, self.fresh,
+                                          self.work_trial, self.out6, self._paths[0], self._paths[1], self._paths[2])
         self.fresh = False
         self.evaluations += 1
         self._used[:] = self.out6
