@@ -216,3 +216,20 @@ def test_help_lists_the_exit_statuses_main_returns(capsys):
         assert f"{status} {meaning}" in text
     # the documented bad-input status is the one returned
     assert exit_code(["static", "6208", "--lubricant", "olive-oil"]) == 2
+
+
+@pytest.mark.parametrize("kind", ["file", "unwritable"])
+def test_a_bad_out_folder_is_refused_before_the_run(kind, tmp_path, capsys, monkeypatch):
+    # the run used to go first and was lost when its folder could not be written (exit 2, no summary)
+    import importlib
+
+    def no_run(*args, **kwargs):
+        raise AssertionError("simulated before --out was checked")
+
+    monkeypatch.setattr(importlib.import_module("exudyn_bearing.cli.simulate"), "simulate", no_run)
+    out = tmp_path / "taken.json"
+    out.write_text("{}")
+    target = out if kind == "file" else out / "below"  # a folder under a file cannot be made
+    assert exit_code(["simulate", "6208", "--Fr", "3000", "--omega", "500", "--t-end", "0.002", "--out",
+                      str(target)]) == 2
+    assert "--out: " in capsys.readouterr().err

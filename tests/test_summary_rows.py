@@ -67,3 +67,20 @@ def test_a_failed_energy_check_is_said_on_its_row_and_warned(monkeypatch):
         warnings.simplefilter("ignore", SteadyStateWarning)
         s = run.summary()
     assert s["energy_check"]["passed"] is not False
+
+
+@pytest.mark.filterwarnings("ignore::exudyn_bearing.SteadyStateWarning")  # 2 ms runs: their windows are short
+def test_what_is_not_modelled_follows_the_cage_and_reaches_the_table():
+    from exudyn_bearing.outputs.tables import summary_rows
+
+    def summary(**kw):
+        sc = eb.Scenario(Fr=3000.0, omega=500.0, t_end=2e-3, dt=2e-6, sample_dt=5e-5, **kw)
+        return eb.simulate("6208", sc).summary()
+
+    torus, none, film = summary(cage="torus"), summary(cage="none"), summary(cage="rigid", pocket_film=True)
+    assert any(x.startswith("cage pocket friction") for x in torus["not_modelled"])  # frictionless cage balls
+    assert not any("cage pocket" in x for x in none["not_modelled"])                # no cage, no pocket
+    assert any(x.startswith("the pockets' oil film") for x in film["losses_modelled"])
+    assert any("a starved pocket" in x for x in film["not_modelled"])
+    row = next(r[1] for r in summary_rows(film) if r[0] == "not_modelled")          # in the printed table too
+    assert "a starved pocket" in row

@@ -143,9 +143,27 @@ def _save_partial(results, out):
     return str(out)
 
 
+def _check_out(out):
+    """The --out folder, made before the run (a run is not lost to a folder it cannot write): an InputError
+    naming --out when it is a file or cannot be made or written."""
+    path = Path(out)
+    if path.exists() and not path.is_dir():
+        raise InputError(f"--out: {out} is a file, not a folder (the run writes run.npz, run.json, run.png and "
+                         "run.csv into it)")
+    try:
+        path.mkdir(parents=True, exist_ok=True)
+        probe = path / ".exudyn_bearing_write_check"
+        probe.write_text("")
+        probe.unlink()
+    except OSError as exc:
+        raise InputError(f"--out: cannot write into {out} ({exc.strerror or exc})") from None
+
+
 def run(args):
     sc = scenario_from_args(args)
     b = bearing_from_args(args)
+    if args.out:
+        _check_out(args.out)
     try:
         run = simulate(b, sc, engine=args.engine, lubricant=lubricant_from_args(args, b), progress=args.progress)
     except RunInterrupted as exc:  # Ctrl-C: --out keeps the samples so far; the caller prints one line

@@ -25,7 +25,7 @@ CAGE_SUMMARY_UNITS = {
     "land_force_mean": "N (time mean of the magnitude of the land's force on the cage)",
     "land_eccentricity_max": "- (largest offset of the cage from the land over the land clearance)",
     "cage_power_pocket": "W (time mean: friction and damping of the ball / pocket contacts, and the work of the "
-                         "pocket film's forces with pocket_film)",
+                         "pocket film's forces and its shear with pocket_film)",
     "cage_power_land": "W (time mean: land film and contact)",
     "cage_motion": "centred, circling or irregular (docs/theory/cage.md#cage-motion)",
     "cage_orbit_ratio": "- (mean distance of the cage centre from its mean position over the land clearance, or "
@@ -70,7 +70,7 @@ def cage_motion(t, xy, clearance, cage_speed) -> dict:
 #: Cage losses the rigid cage leaves out (part of ``not_modelled``).
 CAGE_LOSSES_NOT_MODELLED = ("cage windage and the oil's churning by the cage",
                             "the pocket's oil film (the ball / pocket contact is dry Hertz with Coulomb friction; "
-                            "Scenario(pocket_film=True) adds the film's normal forces)")
+                            "Scenario(pocket_film=True) adds the film's forces and its shear)")
 #: The same with ``Scenario(pocket_film=True)``: the film's normal forces and its shear are modelled, for a
 #: flooded pocket and a sphere facing a plane wall (physics/pocket_film.py).
 CAGE_LOSSES_NOT_MODELLED_FILM = ("cage windage and the oil's churning by the cage",

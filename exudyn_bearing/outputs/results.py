@@ -73,6 +73,9 @@ _POCKET = ("cage pocket friction (the ball / cage-ball contacts are frictionless
 #: What ``losses_modelled`` adds with the rigid cage.
 RIGID_CAGE_LOSSES = ("rigid cage: Coulomb friction and normal damping of the ball / pocket contacts, the land's "
                      "film (short-bearing pressure and shear) and contact")
+#: What ``losses_modelled`` adds with the pockets' oil film (Scenario.pocket_film).
+POCKET_FILM_LOSSES = ("the pockets' oil film: the work of its hydrodynamic and squeeze forces and its shear "
+                      "(flooded, sphere on plane; physics/pocket_film.py)")
 #: Losses each traction level leaves out.
 LOSSES_NOT_MODELLED = {
     "point": ("rolling losses: curvature (Heathcote) slip", "spin (pivoting) friction", "EHL rolling resistance",
@@ -474,6 +477,10 @@ class Results:
         if self.scenario.cage == "rigid":  # the pockets' friction and the land are the rigid cage's
             not_modelled.remove(_POCKET)
             modelled.append(RIGID_CAGE_LOSSES)
+            if self.scenario.pocket_film:
+                modelled.append(POCKET_FILM_LOSSES)
+        elif self.scenario.cage == "none" or not self.bearing.has_cage:  # no cage: no pocket to leave out
+            not_modelled.remove(_POCKET)
         return modelled, not_modelled
 
     def _loss_floor(self) -> float:
@@ -525,6 +532,9 @@ class Results:
             mean = abs(float(np.mean(x)))
             if max(mean, floor) > 0.0:
                 below = f"mean below the loss floor {floor:.3g} {SUMMARY_UNITS[name]}" if mean < floor else None
+                if below is None and name in POINT_STEP_DEPENDENT and not self.friction_outputs_converged():
+                    below = ("step noise of the point level's Cundall-Strack spring (not converged: "
+                             "friction_outputs_converged)")
                 q[name] = (x, "loss", max(mean, floor), below)
         ramps = [p for p in ("start-up", "slow-down") if p in window["phase"].split(", ")]
         cage = abs(float(np.mean(q["cage_speed"][0])))

@@ -86,6 +86,8 @@ def summary_rows(summary, t_end=None):
     rows += [(f"energy_source.{k}", v) for k, v in summary["energy_source"].items()]
     rows += [("losses_modelled", "; ".join(summary["losses_modelled"])),
              ("losses_not_modelled", "; ".join(summary["losses_not_modelled"]))]
+    if summary.get("not_modelled"):  # everything the run leaves out (the losses above, the cage's, the engine's)
+        rows.append(("not_modelled", "; ".join(summary["not_modelled"])))
     if "note" in summary:
         rows.append(("note", summary["note"]))
     rows += [(f"regime_fraction.{k}", v) for k, v in summary["regime_fraction"].items()]

@@ -442,7 +442,10 @@ def lubricant_viscosity(bearing, temperature=None, lubricant=None):
     entry, t_name = _entry_and_temperature(bearing, lubricant)
     if entry is None:
         raise InputError(f"lubricant: {getattr(lubricant, 'name', lubricant) or bearing.lubricant!r} has no entry "
-                         f"with temperature for kappa; use one of {', '.join(lubricants_temperature)}")
+                         f"with temperature for kappa; the lubricants with temperature are "
+                         f"{', '.join(lubricants_temperature)}: the catalogue's MIL-L-23699_492K is one of them at "
+                         f"492 K, and any of them at a temperature T comes from Python as "
+                         f"exudyn_bearing.physics.lubricant_properties.lubricant_at(name, T)")
     if temperature is not None:
         t = entry.check_temperature(check_temperature("temperature", temperature))
         how = f"{entry.name} at the given {t:.2f} K"

@@ -93,8 +93,9 @@ def check_ball_inertia(sol, bearing, tolerance=INERTIA_TOLERANCE, warn=True) -> 
         warnings.warn(BallInertiaWarning(
             f"the balls cannot follow the quasi-static kinematics along the orbit: changing each ball's angular "
             f"velocity and orbital speed from one position to the next by sliding costs about {power:.3g} W, "
-            f"{100 * share:.3g} % of the solution's losses ({lost:.4g} W: its ball / race contacts "
-            f"{sol.dissipation_total:.4g} W and its cage {sol.cage_power:.4g} W; the largest step from ball {ball} at "
+            f"{100 * share:.3g} % of the solution's traction and cage losses ({lost:.4g} W: its ball / race "
+            f"contacts' traction {sol.dissipation_total:.4g} W and its cage {sol.cage_power:.4g} W, without the "
+            f"rolling losses of its power loss; the largest step from ball {ball} at "
             f"psi = {math.degrees(float(sol.balls['psi'][ball])):.1f} deg), more than {100 * tolerance:g} %: "
             "the balls' inertia matters (lightly loaded balls entering and leaving the load zone), which the "
             "quasi-static solution leaves out; its losses may be low. Run the case dynamically "

@@ -273,8 +273,9 @@ class QuasiStaticSolution:
         if self.inertia_check is not None:
             c = self.inertia_check
             lines.append(f"quasi-static hypothesis (the balls' inertia along the orbit): their changes of speed from one position to the next "
-                         f"cost about {c['power']:.3g} W sliding, {100 * c['share']:.3g} % of the losses "
-                         f"({c['dissipation']:.4g} W, contacts and cage; limit {100 * c['tolerance']:g} %): "
+                         f"cost about {c['power']:.3g} W sliding, {100 * c['share']:.3g} % of the traction and "
+                         f"cage losses ({c['dissipation']:.4g} W, the contacts' traction and the cage; the power "
+                         f"loss adds the rolling losses; limit {100 * c['tolerance']:g} %): "
                          + ("holds" if c["valid"] else
                             "OUTSIDE it (the balls' inertia matters; run the case dynamically)"))
         for name, why in self.held.items():
