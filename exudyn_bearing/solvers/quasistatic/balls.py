@@ -52,9 +52,12 @@ BALL_FIELDS = ("c_r", "c_z", "q_o", "q_i", "delta_o", "delta_i", "no_r", "no_z",
                "converged")
 (B_CR, B_CZ, B_QO, B_QI, B_DO, B_DI, B_NOR, B_NOZ, B_NIR, B_NIZ, B_KO, B_KI, B_OK) = range(len(BALL_FIELDS))
 NB = len(BALL_FIELDS)
+#: Length of a ball's warm start (:func:`_ball_equilibrium`): the last solution's centre (c_r, c_z), its kind,
+#: the inner groove centre it was solved for (p_r, p_z) and the centre's sensitivity dc/dp (2x2, row-major)
+WARM_START = 9
 #: ``table`` and ``start`` of :func:`_ring_forces` for direct Hertz constants and cold starts
 _DIRECT = np.empty((3, 0))
-_COLD = np.empty((0, 3))
+_COLD = np.empty((0, WARM_START))
 
 
 @kernel(no_runtime=True)
@@ -95,12 +98,13 @@ def _ball_equilibrium(pir, piz, por, poz, rci, rco, rb, m_w2, fto, fti, e_prime,
 
     The cold start: the ball on the groove-centre line, the overlap split by the contact stiffnesses (kind 1),
     or, without overlap there but with a centrifugal force, against the outer groove (kind 2).
-    ``start`` (3,) or empty: the warm start, the shift of the last solution from a reference point of its kind
-    (kind 1: the middle of the overlap on the groove-centre line; kind 2: the outer groove's bottom) and the
-    kind (0: none). With the same kind as now, Newton starts from the reference point plus that shift, and
-    from a failed warm start over cold. The solution is the same from either start within Newton's
-    tolerance (it converges on the residual); the warm start saves iterations and the cold start's Hertz
-    constants when the ring pose moved little since the last call."""
+    ``start`` (WARM_START,) or empty: the warm start, the last solution's centre c_0, its kind (0: none), the
+    inner groove centre p_0 it was solved for and the centre's sensitivity S = dc/dp = A^-1 A_i there
+    (:func:`_ball_sensitivity`). With the same kind as now, Newton starts from the first-order prediction
+    c_0 + S (p - p_0), and from a failed warm start over cold. The solution is the same from either start
+    within Newton's tolerance (it converges on the residual); the warm start saves iterations and the cold
+    start's Hertz constants when the ring pose moved little since the last call (the prediction's error is of
+    the second order in the groove centre's move, about one Newton iteration fewer than from c_0 itself)."""
     lo0 = rco - rb
     li0 = rci - rb
     dr = pir - por
@@ -111,12 +115,8 @@ def _ball_equilibrium(pir, piz, por, poz, rci, rco, rb, m_w2, fto, fti, e_prime,
     total = dist - lo0 - li0
     if total > 0.0:
         kind = 1.0
-        ref_r = por + (lo0 + 0.5 * total) * er
-        ref_z = poz + (lo0 + 0.5 * total) * ez
     elif m_w2 > 0.0:
         kind = 2.0
-        ref_r = por + lo0
-        ref_z = poz
     else:  # unloaded, nothing presses it: middle of the gap on the line
         ko, ki = _contact_constants(por, rco, rb, rci, er, -er, e_prime, method, table)
         for k in range(NB):
@@ -132,13 +132,15 @@ def _ball_equilibrium(pir, piz, por, poz, rci, rco, rb, m_w2, fto, fti, e_prime,
         out[B_KO] = ko
         out[B_KI] = ki
         out[B_OK] = 1.0
-        if start.size == 3:
+        if start.size == WARM_START:
             start[2] = 0.0
         return
-    warm = start.size == 3 and start[2] == kind
+    warm = start.size == WARM_START and start[2] == kind
     if warm:
-        _ball_newton(ref_r + start[0], ref_z + start[1], pir, piz, por, poz, rci, rco, rb, m_w2, fto, fti, e_prime,
-                     method, table, -1.0, out)
+        ep_r = pir - start[3]
+        ep_z = piz - start[4]
+        _ball_newton(start[0] + start[5] * ep_r + start[6] * ep_z, start[1] + start[7] * ep_r + start[8] * ep_z,
+                     pir, piz, por, poz, rci, rco, rb, m_w2, fto, fti, e_prime, method, table, -1.0, out)
     if not warm or out[B_OK] != 1.0:
         ko, ki = _contact_constants(por, rco, rb, rci, er, -er, e_prime, method, table)
         if kind == 1.0:
@@ -153,10 +155,60 @@ def _ball_equilibrium(pir, piz, por, poz, rci, rco, rb, m_w2, fto, fti, e_prime,
             cz = poz
         scale = 1e-9 * (ko + ki) * (1e-6 * rb) ** 1.5 + 1e-300
         _ball_newton(cr, cz, pir, piz, por, poz, rci, rco, rb, m_w2, fto, fti, e_prime, method, table, scale, out)
-    if start.size == 3:
-        start[0] = out[B_CR] - ref_r
-        start[1] = out[B_CZ] - ref_z
+    if start.size == WARM_START:
+        start[0] = out[B_CR]
+        start[1] = out[B_CZ]
         start[2] = kind if out[B_OK] == 1.0 else 0.0
+        start[3] = pir
+        start[4] = piz
+        start[5], start[6], start[7], start[8] = _ball_sensitivity(out, rci, rco, rb, m_w2, fto, fti)
+
+
+@kernel(inline="always")
+def _mul(a, b):
+    """Product of two 2x2 matrices (row-major 4-tuples)."""
+    return (a[0] * b[0] + a[1] * b[2], a[0] * b[1] + a[1] * b[3], a[2] * b[0] + a[3] * b[2], a[2] * b[1] + a[3] * b[3])
+
+
+@kernel(inline="always")
+def _contact_jacobians(nr, nz, q, k_t, length, f_t, c_n):
+    """A = dF/dc and B = dF/dc' (row-major 4-tuples) of one contact's force on the ball, F = -Q n + F_t t
+    (:mod:`.damping`: A = -k_t n n^T - (Q/L)(I - n n^T) + (F_t/L) R (I - n n^T), B = -C_n n n^T; the terms of
+    :func:`_ball_newton`'s Jacobian)."""
+    p11, p12, p22 = 1.0 - nr * nr, -nr * nz, 1.0 - nz * nz  # I - n n^T
+    g = q / length
+    t = f_t / length  # (F_t/L) R (I - n n^T), R = [[0, 1], [-1, 0]]
+    a = (-k_t * nr * nr - g * p11 + t * p12, -k_t * nr * nz - g * p12 + t * p22,
+         -k_t * nr * nz - g * p12 - t * p11, -k_t * nz * nz - g * p22 - t * p12)
+    b = (-c_n * nr * nr, -c_n * nr * nz, -c_n * nr * nz, -c_n * nz * nz)
+    return a, b
+
+
+@kernel(inline="always")
+def _condense(a_o, a_i, m_w2):
+    """(A^-1, A^-1 A_i) of a ball (row-major 4-tuples): A = A_o + A_i + diag(m omega_m^2, 0) the Jacobian of the
+    forces on the ball, A^-1 A_i = dc/dp its centre's move per move of the inner groove centre (equilibrium
+    A dc - A_i dp = 0); zeros where A is singular."""
+    a = (a_o[0] + a_i[0] + m_w2, a_o[1] + a_i[1], a_o[2] + a_i[2], a_o[3] + a_i[3])
+    det = a[0] * a[3] - a[1] * a[2]
+    if det == 0.0:
+        return (0.0, 0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 0.0)
+    ainv = (a[3] / det, -a[1] / det, -a[2] / det, a[0] / det)
+    return ainv, _mul(ainv, a_i)
+
+
+@kernel(no_runtime=True)
+def _ball_sensitivity(out, rci, rco, rb, m_w2, fto, fti):
+    """dc/dp (row-major 4-tuple) of a solved ball (``out``: its BALL_FIELDS): :func:`_condense` with the contacts'
+    Jacobians at the solution (:func:`_contact_jacobians`; an open contact only its traction's term, as in the
+    residual of :func:`_ball_newton`)."""
+    do = out[B_DO]
+    di = out[B_DI]
+    kto = 1.5 * out[B_KO] * math.sqrt(do) if do > 0.0 else 0.0
+    kti = 1.5 * out[B_KI] * math.sqrt(di) if di > 0.0 else 0.0
+    a_o = _contact_jacobians(out[B_NOR], out[B_NOZ], out[B_QO], kto, rco - rb + do, fto, 0.0)[0]
+    a_i = _contact_jacobians(out[B_NIR], out[B_NIZ], out[B_QI], kti, rci - rb + di, fti, 0.0)[0]
+    return _condense(a_o, a_i, m_w2)[1]
 
 
 @kernel(no_runtime=True)
@@ -249,8 +301,8 @@ def _ring_forces(u, psi, rho_i, z_i, rho_o, z_o, rci, rco, rb, m_w2, fto, fti, e
                  gen):
     """All balls for the ring pose u (5,); per-ball results into ``balls`` (Z, NB),
     generalized force of the balls on the ring into ``gen`` (5,). ``table``: Hertz constants
-    (:func:`_hertz_constant`; shape (3, 0): direct); ``start`` (Z, 3): the balls' warm starts
-    (:func:`_ball_equilibrium`; shape (0, 3): cold starts)."""
+    (:func:`_hertz_constant`; shape (3, 0): direct); ``start`` (Z, WARM_START): the balls' warm starts
+    (:func:`_ball_equilibrium`; shape (0, WARM_START): cold starts)."""
     for k in range(5):
         gen[k] = 0.0
     warm = start.shape[0] == psi.size

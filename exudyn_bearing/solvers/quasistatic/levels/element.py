@@ -50,7 +50,7 @@ from ....data import MAX_FREE_CONTACT_ANGLE, load_lubricant
 from ....data.errors import check_finite
 from ....model.operating_geometry import operating_geometry
 from ....physics import hertz as _hz
-from ..balls import B_NIR, B_NIZ, B_QI, B_QO, NB, _ring_forces
+from ..balls import B_NIR, B_NIZ, B_QI, B_QO, NB, WARM_START, _ring_forces
 from ..damping import ring_damping_force
 from .base import (SAMPLE_HEADER, WS_CAGE, WS_FORCE, WS_HEADER, WS_OUT, WS_POSE, WS_QMAX, LevelBearing,
                    entry_point, sample_header)
@@ -329,7 +329,7 @@ class QuasiStaticBearing(LevelBearing):
         self._gen = ws[_GEN:_GEN + 5]
         self._damp = ws[_DAMP:_DAMP + 5]
         self._balls = np.zeros((z, NB))
-        self._start = np.zeros((z, 3))  # the balls' warm starts (balls._ball_equilibrium)
+        self._start = np.zeros((z, WARM_START))  # the balls' warm starts (balls._ball_equilibrium)
         self._hz_table = _hz.exact_table()
         self._e_prime = ws[_EPRIME] = _hz.material_reduced_modulus(b.material)
         # the contact damping law's parameters: the lubricant solve_quasistatic takes (None: the bearing's)
