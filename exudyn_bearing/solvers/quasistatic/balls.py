@@ -48,13 +48,16 @@ from ...physics.geometry import _raceway_radii_cos
 __all__ = ["BALL_FIELDS", "ring_forces"]
 
 #: Columns of the per-ball result array of :func:`ring_forces`.
+#: (k_o, k_i: the Hertz constants of the closed contacts, 0 for an open one, whose constant enters no force.)
 BALL_FIELDS = ("c_r", "c_z", "q_o", "q_i", "delta_o", "delta_i", "no_r", "no_z", "ni_r", "ni_z", "k_o", "k_i",
                "converged")
 (B_CR, B_CZ, B_QO, B_QI, B_DO, B_DI, B_NOR, B_NOZ, B_NIR, B_NIZ, B_KO, B_KI, B_OK) = range(len(BALL_FIELDS))
 NB = len(BALL_FIELDS)
 #: Length of a ball's warm start (:func:`_ball_equilibrium`): the last solution's centre (c_r, c_z), its kind,
-#: the inner groove centre it was solved for (p_r, p_z) and the centre's sensitivity dc/dp (2x2, row-major)
-WARM_START = 9
+#: the inner groove centre it was solved for (p_r, p_z), the centre's sensitivity dc/dp (2x2, row-major), whether
+#: Newton's residual test passed at that centre (1) or its last step was below its floor (0), and what the outer
+#: contact's solution depends on besides the centre: m omega^2, F_to, F_ti, the outer groove (rho_o, z_o), R_co, R_b
+WARM_START = 17
 #: ``table`` and ``start`` of :func:`_ring_forces` for direct Hertz constants and cold starts
 _DIRECT = np.empty((3, 0))
 _COLD = np.empty((0, WARM_START))
@@ -85,11 +88,13 @@ def _contact_radii(por, rco, rb, rci, nor, nir):
 
 
 @kernel(no_runtime=True)
-def _contact_constants(por, rco, rb, rci, nor, nir, e_prime, method, table):
+def _contact_constants(por, rco, rb, rci, nor, nir, e_prime, method, table, outer=True, inner=True):
     """Hertz constants K_o, K_i [N/m^1.5] at the contact angles given by the normals (:func:`_contact_radii`);
-    ``table``: see :func:`_hertz_constant`."""
+    ``table``: see :func:`_hertz_constant`; ``outer``, ``inner`` False: that contact's is not computed (0)."""
     rxo, ryo, rxi, ryi = _contact_radii(por, rco, rb, rci, nor, nir)
-    return _hertz_constant(rxo, ryo, e_prime, method, table), _hertz_constant(rxi, ryi, e_prime, method, table)
+    ko = _hertz_constant(rxo, ryo, e_prime, method, table) if outer else 0.0
+    ki = _hertz_constant(rxi, ryi, e_prime, method, table) if inner else 0.0
+    return ko, ki
 
 
 @kernel(no_runtime=True)
@@ -118,7 +123,6 @@ def _ball_equilibrium(pir, piz, por, poz, rci, rco, rb, m_w2, fto, fti, e_prime,
     elif m_w2 > 0.0:
         kind = 2.0
     else:  # unloaded, nothing presses it: middle of the gap on the line
-        ko, ki = _contact_constants(por, rco, rb, rci, er, -er, e_prime, method, table)
         for k in range(NB):
             out[k] = 0.0
         out[B_CR] = por + (lo0 + 0.5 * total) * er
@@ -129,18 +133,20 @@ def _ball_equilibrium(pir, piz, por, poz, rci, rco, rb, m_w2, fto, fti, e_prime,
         out[B_NOZ] = ez
         out[B_NIR] = -er
         out[B_NIZ] = -ez
-        out[B_KO] = ko
-        out[B_KI] = ki
         out[B_OK] = 1.0
         if start.size == WARM_START:
             start[2] = 0.0
         return
     warm = start.size == WARM_START and start[2] == kind
+    exact = 0.0
+    if warm and _still_free(pir, piz, li0, por, poz, rco, rb, m_w2, fto, fti, out, start):
+        return
     if warm:
         ep_r = pir - start[3]
         ep_z = piz - start[4]
-        _ball_newton(start[0] + start[5] * ep_r + start[6] * ep_z, start[1] + start[7] * ep_r + start[8] * ep_z,
-                     pir, piz, por, poz, rci, rco, rb, m_w2, fto, fti, e_prime, method, table, -1.0, out)
+        exact = _ball_newton(start[0] + start[5] * ep_r + start[6] * ep_z,
+                             start[1] + start[7] * ep_r + start[8] * ep_z, pir, piz, por, poz, rci, rco, rb, m_w2,
+                             fto, fti, e_prime, method, table, -1.0, out)
     if not warm or out[B_OK] != 1.0:
         ko, ki = _contact_constants(por, rco, rb, rci, er, -er, e_prime, method, table)
         if kind == 1.0:
@@ -154,7 +160,8 @@ def _ball_equilibrium(pir, piz, por, poz, rci, rco, rb, m_w2, fto, fti, e_prime,
             cr = por + lo0 + d_o
             cz = poz
         scale = 1e-9 * (ko + ki) * (1e-6 * rb) ** 1.5 + 1e-300
-        _ball_newton(cr, cz, pir, piz, por, poz, rci, rco, rb, m_w2, fto, fti, e_prime, method, table, scale, out)
+        exact = _ball_newton(cr, cz, pir, piz, por, poz, rci, rco, rb, m_w2, fto, fti, e_prime, method, table, scale,
+                             out)
     if start.size == WARM_START:
         start[0] = out[B_CR]
         start[1] = out[B_CZ]
@@ -162,6 +169,41 @@ def _ball_equilibrium(pir, piz, por, poz, rci, rco, rb, m_w2, fto, fti, e_prime,
         start[3] = pir
         start[4] = piz
         start[5], start[6], start[7], start[8] = _ball_sensitivity(out, rci, rco, rb, m_w2, fto, fti)
+        start[9] = exact
+        start[10] = m_w2
+        start[11] = fto
+        start[12] = fti
+        start[13] = por
+        start[14] = poz
+        start[15] = rco
+        start[16] = rb
+
+
+@kernel(no_runtime=True)
+def _still_free(pir, piz, li0, por, poz, rco, rb, m_w2, fto, fti, out, start):
+    """A ball's last solution (``out``, warm start ``start`` of :func:`_ball_equilibrium`) is its solution again
+    when its inner contact was open and stays open at the new inner groove centre (pir, piz), no traction acts at
+    it (F_ti = 0, then and now: its direction would move), and the rest of the residual of :func:`_ball_newton`
+    is unchanged (the same m omega^2, F_to, outer groove, R_co and R_b, and Newton's residual test passed at that
+    centre): then the forces on the ball, its centre and the outer contact are those of the last solution (the
+    same residual, the same test), and only the open inner contact's normal and gap move. Writes those and the
+    warm start's groove centre; returns whether it applied (a ball outside the load zone, held by its
+    centrifugal force, costs no Hertz constant and no iteration)."""
+    if not (start[9] == 1.0 and fti == 0.0 and start[12] == 0.0 and out[B_QI] == 0.0 and out[B_OK] == 1.0
+            and out[B_CR] == start[0] and out[B_CZ] == start[1] and m_w2 == start[10] and fto == start[11]
+            and por == start[13] and poz == start[14] and rco == start[15] and rb == start[16]):
+        return False
+    br = start[0] - pir
+    bz = start[1] - piz
+    li = math.sqrt(br * br + bz * bz)
+    if li - li0 > 0.0:
+        return False
+    out[B_NIR] = br / li
+    out[B_NIZ] = bz / li
+    out[B_DI] = li - li0
+    start[3] = pir
+    start[4] = piz
+    return True
 
 
 @kernel(inline="always")
@@ -214,7 +256,8 @@ def _ball_sensitivity(out, rci, rco, rb, m_w2, fto, fti):
 @kernel(no_runtime=True)
 def _ball_newton(cr, cz, pir, piz, por, poz, rci, rco, rb, m_w2, fto, fti, e_prime, method, table, scale, out):
     """Newton's method for one ball's centre (cr, cz) from the given start (:func:`_ball_equilibrium`); ``scale``
-    [N]: the residual's absolute floor (< 0: from the Hertz constants at the start)."""
+    [N]: the residual's absolute floor (< 0: from the Hertz constants at the start). Returns 1.0 if the residual
+    test passed at the centre written (0.0: the last step was below its floor, or no convergence)."""
     lo0 = rco - rb
     li0 = rci - rb
     ok = 0.0
@@ -223,6 +266,7 @@ def _ball_newton(cr, cz, pir, piz, por, poz, rci, rco, rb, m_w2, fto, fti, e_pri
     nor = noz = nir = niz = 0.0
     do = di = 0.0
     ko = ki = 0.0
+    exact = 0.0
     for it in range(80):
         # outer contact
         ar = cr - por
@@ -240,9 +284,11 @@ def _ball_newton(cr, cz, pir, piz, por, poz, rci, rco, rb, m_w2, fto, fti, e_pri
         di = li - li0
         # Hertz constants at the current contact angles (stale ones would make the converged state
         # depend on the iteration history)
-        ko, ki = _contact_constants(por, rco, rb, rci, nor, nir, e_prime, method, table)
         if scale < 0.0:
+            ko, ki = _contact_constants(por, rco, rb, rci, nor, nir, e_prime, method, table)
             scale = 1e-9 * (ko + ki) * (1e-6 * rb) ** 1.5 + 1e-300
+        else:  # an open contact's constant enters no force
+            ko, ki = _contact_constants(por, rco, rb, rci, nor, nir, e_prime, method, table, do > 0.0, di > 0.0)
         qo = ko * do * math.sqrt(do) if do > 0.0 else 0.0
         qi = ki * di * math.sqrt(di) if di > 0.0 else 0.0
         kqo = 1.5 * ko * math.sqrt(do) if do > 0.0 else 0.0
@@ -252,6 +298,7 @@ def _ball_newton(cr, cz, pir, piz, por, poz, rci, rco, rb, m_w2, fto, fti, e_pri
         rz = -qo * noz - qi * niz - fto * nor - fti * nir
         if abs(rr) + abs(rz) <= 1e-13 * (qo + qi + m_w2 * cr + abs(fto) + abs(fti)) + scale:
             ok = 1.0
+            exact = 1.0
             break
         # Jacobian d(residual)/dc
         go = qo / lo
@@ -291,9 +338,10 @@ def _ball_newton(cr, cz, pir, piz, por, poz, rci, rco, rb, m_w2, fto, fti, e_pri
     out[B_NOZ] = noz
     out[B_NIR] = nir
     out[B_NIZ] = niz
-    out[B_KO] = ko
-    out[B_KI] = ki
+    out[B_KO] = ko if do > 0.0 else 0.0
+    out[B_KI] = ki if di > 0.0 else 0.0
     out[B_OK] = ok
+    return exact
 
 
 @kernel(no_runtime=True)
