@@ -275,6 +275,9 @@ class NodeGroup:
         self.kernel = None
         self._calls = None  # (bearings, force call, its arguments after gen, Jacobian call): made on first use
         n = 6 * len(self.nodes)
+        self._sys = mbs.sys
+        self._run = None  # the dynamic solver and time of the last force call (:meth:`_force`)
+        self._t_last = None
         self._gen = np.zeros(n)
         self._jac = np.zeros((n, n))
         self.object = mbs.AddObject(ObjectGenericODE2(
@@ -314,6 +317,16 @@ class NodeGroup:
         q = np.asarray(q, float)
         q_t = np.asarray(q_t, float)
         bs, kern, args, _ = self._compiled_calls()
+        solver = self._sys.get("dynamicSolver")
+        if t == self._t_last and solver is self._run:
+            # Newton's next evaluation of the same step: nothing starts over, nothing is sampled
+            # (LevelBearing._begin and _end do nothing but count it)
+            for b in bs:
+                b._evaluations += 1
+            if kern(q, q_t, gen, *args):
+                for b in bs:
+                    b._node_after(q, q_t, gen)
+            return gen
         for b in bs:
             b._node_before(t, q, q_t)
         if kern(q, q_t, gen, *args):
@@ -323,6 +336,8 @@ class NodeGroup:
             if t >= b._next_sample - 1e-12:
                 b._end(t)
             b._mats_ready = True
+        self._t_last = t
+        self._run = solver
         return gen
 
     def _jacobian(self, mbs, t, itemNumber, q, q_t, fODE2, fODE2_t):
