@@ -18,7 +18,8 @@ theta_y) and relative spin w_z against the outer ring (:mod:`.base`):
   when the speed squared moved by more than 2 % plus (10 rad/s)^2: about 1 %
   of the speed); the exact Hertz constants from the tabulated exact solution
   (:func:`exudyn_bearing.physics.hertz.exact_table`) and each ball's Newton
-  iteration started from its last solution (:func:`..balls._ball_equilibrium`);
+  iteration started from its last solution moved to first order with its inner groove centre, a ball outside
+  the load zone kept without an iteration while its inner contact stays open (:func:`..balls._ball_equilibrium`);
 * the damping force -C u' of the balls in their current state
   (:func:`..damping.ring_damping_force`): each loaded ball's normal contact
   damping (hysteretic, squeeze film, switched by Lambda: the contact law of
@@ -182,15 +183,18 @@ def node_level_forces(q, qt, nws, method, ws, table, start, balls, gen):
 
 
 @kernel(no_runtime=True)
-def group_level_forces(q, qt, gen, table, methods, nwss, wss, starts, ballss):
-    """:func:`node_level_forces` for each bearing of a node group (the tuples: their arguments), ``gen`` their
-    summed generalized force: one compiled call per evaluation for all. Each bearing's largest ball load goes to
+def group_level_forces(qq, gen, table, methods, nwss, wss, starts, ballss):
+    """:func:`node_level_forces` for each bearing of a node group (the tuples: their arguments; ``qq``: the
+    object's coordinates q and then their rates q_t, each of the length of ``gen``), ``gen`` their summed
+    generalized force: one compiled call per evaluation for all. Each bearing's largest ball load goes to
     its node work array (N_QMAX). Returns True where a bearing needs the steps after the kernel
     (:meth:`QuasiStaticBearing._node_after`): its relative speed left the band of its grooves' last update
     (N_BAND), a ball load is beyond its limit (N_QLIMIT) or not a number, or a loaded contact sits beyond
     MAX_FREE_CONTACT_ANGLE."""
     for k in range(gen.size):
         gen[k] = 0.0
+    q = qq[:gen.size]
+    qt = qq[gen.size:]
     more = False
     for i in range(len(nwss)):
         nws = nwss[i]
