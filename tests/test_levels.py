@@ -225,28 +225,27 @@ def test_free_ball_keeps_its_last_solution_where_a_cold_start_finds_it():
     # warm start returns its last solution without a Newton iteration (balls._still_free) when the inner groove
     # centre moved but the contact stays open; a cold start at the new centre finds the same ball (centre, outer
     # load and normal within Newton's tolerance) and the same open inner contact's normal and gap
-    from exudyn_bearing.solvers.quasistatic.balls import (B_CR, B_CZ, B_DI, B_NIR, B_NIZ, B_NOR, B_QI, B_QO, NB,
-                                                          WARM_START, _ball_equilibrium)
+    from exudyn_bearing.solvers.quasistatic import balls as bl
 
     g, rest = _ball_scene()
-    start = np.zeros(WARM_START)
-    out = np.zeros(NB)
-
-    _ball_equilibrium(g.rho_i - 10e-6, g.z_i, *rest, out, start)
-    assert out[B_QI] == 0.0 and out[B_QO] > 0.0 and start[9] == 1.0  # free, converged on the residual
+    start = np.zeros(bl.WARM_START)
+    out = np.zeros(bl.NB)
+    bl._ball_equilibrium(g.rho_i - 10e-6, g.z_i, *rest, out, start)
+    assert out[bl.B_QI] == 0.0 and out[bl.B_QO] > 0.0 and start[9] == 1.0  # free, converged on the residual
     first = out.copy()
-    _ball_equilibrium(g.rho_i - 12e-6, g.z_i + 3e-6, *rest, out, start)  # the ring moved, the gap stays open
-    assert out[B_CR] == first[B_CR] and out[B_CZ] == first[B_CZ] and out[B_QO] == first[B_QO]  # kept
+    bl._ball_equilibrium(g.rho_i - 12e-6, g.z_i + 3e-6, *rest, out, start)  # the ring moved, the gap stays open
+    for k in (bl.B_CR, bl.B_CZ, bl.B_QO):  # kept
+        assert out[k] == first[k]
     assert start[3] == g.rho_i - 12e-6  # the warm start follows the groove centre
     cold = _solve_ball(g.rho_i - 12e-6, g.z_i + 3e-6, rest)
-    assert cold[B_QI] == 0.0
-    for k in (B_CR, B_CZ):
+    assert cold[bl.B_QI] == 0.0
+    for k in (bl.B_CR, bl.B_CZ):
         assert abs(out[k] - cold[k]) <= 1e-12 * g.r_b
-    assert out[B_QO] == pytest.approx(cold[B_QO], rel=1e-9)
-    for k in (B_NIR, B_NIZ, B_NOR):
+    assert out[bl.B_QO] == pytest.approx(cold[bl.B_QO], rel=1e-9)
+    for k in (bl.B_NIR, bl.B_NIZ, bl.B_NOR):
         assert abs(out[k] - cold[k]) <= 1e-9
-    assert abs(out[B_DI] - cold[B_DI]) <= 1e-12 * g.r_b
-    assert out[B_DI] < 0.0
+    assert abs(out[bl.B_DI] - cold[bl.B_DI]) <= 1e-12 * g.r_b
+    assert out[bl.B_DI] < 0.0
 
 
 def test_tabulated_hertz_constant_is_the_direct_one():

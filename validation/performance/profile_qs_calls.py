@@ -4,11 +4,11 @@ costs without Exudyn's step around it.
 One run of the 2.5 kg shaft on two 6208 under 6000 N at 500 rad/s (validation/consistency/levels_damping.py) at
 the quasi-static level, node formulation, GeneralizedAlpha at 1e-4 s, records the arguments of every force and
 Jacobian call Exudyn makes (as Exudyn hands them: q and q_t as lists); the calls are then made again in the
-same order (the bearings start over at the run's first time, as a new run does), and each kind alone. Printed: the thread CPU time (not disturbed by
-another process taking the core; the smallest and the median of ``--repeat``) per force call (both bearings,
-the samples included), per Jacobian call, per bearing for the node kernel called alone (the single-bearing path,
-``_node_kernel``), for a Python function that only returns an array (the floor of a call from Python), and for
-all of a step's calls; then the generalized force and the Jacobian of the last recorded call (to compare two
+same order (the bearings start over at the run's first time, as a new run does), and each kind alone. Printed:
+the thread CPU time (not disturbed by another process taking the core; the smallest and the median of
+``--repeat``) per force call (both bearings, the samples included), per Jacobian call, per bearing for the node
+kernel called alone (the single-bearing path, ``_node_kernel``), for a Python function that only returns an
+array (the floor of a call from Python), and for all of a step's calls; then the generalized force and the Jacobian of the last recorded call (to compare two
 versions of the code: the same forces to the last digit printed).
 
     python validation/performance/profile_qs_calls.py [--t-end 0.05] [--repeat 15]
