@@ -152,7 +152,7 @@ def test_level_forces_are_the_quasistatic_solvers(clearance, load, omega):
     # (direct exact Hertz, cold starts) for the same balls: the table's error, <= 1e-7 on k, F and E
     # (physics.hertz.exact_table), enters K = pi k E' sqrt(2 E R / (9 F^3)) at most 1e-7 (1 + 1/2 + 3/2) = 3e-7
     # and the forces through the ball equilibrium likewise; 1e-6 leaves a factor 3. Zero rates: no damping force.
-    from exudyn_bearing.solvers.quasistatic.balls import ring_forces
+    from exudyn_bearing.solvers.quasistatic.balls import B_NIR, B_NIZ, B_QI, ring_forces
 
     br, calls = _level_and_poses(eb.catalog["6208"].with_clearance(clearance), load, omega)
     for d, r, v, w in calls:
@@ -161,6 +161,9 @@ def test_level_forces_are_the_quasistatic_solvers(clearance, load, omega):
                                   br._fti.copy(), br._e_prime, br._method)
         scale = np.abs(gen[:3]).max()
         assert np.abs(br._force - gen).max() <= 1e-6 * scale
+        # the largest loaded inner contact angle the level checks (element.level_forces ranks without atan2)
+        loaded = br._balls[:, B_QI] > 0.0
+        assert br._qmax[2] == np.abs(np.arctan2(-br._balls[loaded, B_NIZ], -br._balls[loaded, B_NIR])).max()
 
 
 @pytest.mark.parametrize("clearance, load, omega", [(0.0, FR, 500.0), (20e-6, 500.0, 3000.0)])

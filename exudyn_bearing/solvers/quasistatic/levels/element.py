@@ -147,11 +147,21 @@ def level_forces(d0, d1, d2, r0, r1, r2, v0, v1, v2, w0, w1, w2, method, ws, tab
     q_in = 0.0
     q_out = 0.0
     alpha = 0.0
+    steep = -1.0
+    j_steep = 0
     for j in range(z):
         q_in = max(q_in, balls[j, B_QI])
         q_out = max(q_out, balls[j, B_QO])
-        if balls[j, B_QI] > 0.0:  # contact angle from the groove bottom, inner race
-            alpha = max(alpha, abs(math.atan2(-balls[j, B_NIZ], -balls[j, B_NIR])))
+        if balls[j, B_QI] > 0.0:  # contact angle from the groove bottom, inner race: |atan2(-n_z, -n_r)|
+            # ranked by 1 - x / (|x| + |y|) (x = -n_r, y = -n_z), which grows with |atan2(y, x)| over [0, pi]:
+            # one atan2 for the largest
+            x = -balls[j, B_NIR]
+            key = 1.0 - x / (abs(x) + abs(balls[j, B_NIZ]))
+            if key > steep:
+                steep = key
+                j_steep = j
+    if steep >= 0.0:
+        alpha = abs(math.atan2(-balls[j_steep, B_NIZ], -balls[j_steep, B_NIR]))
     ws[WS_QMAX] = q_in
     ws[WS_QMAX + 1] = q_out
     ws[WS_QMAX + 2] = alpha

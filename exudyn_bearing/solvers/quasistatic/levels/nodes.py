@@ -238,8 +238,9 @@ def node_jacobian(nws, f2, f2t, jac):
         m[6 * r + 3] += f2 * mats[25 + 5 * r + 4] * w2
         m[6 * r + 5] = f2t * (-mats[25 + 5 * r + 3] * conn[4] + mats[25 + 5 * r + 4] * conn[3])
     for i in range(2):
-        _b_matrix(nws[N_STATES:N_STATES + _NS], nws[N_STATES + _NS * i:N_STATES + _NS * (i + 1)],
-                  1.0 if i == 1 else -1.0, bs[36 * i:36 * (i + 1)])
+        if int(nws[N_OFFS + i]) >= 0:  # a ring on ground has no coordinates, and no B_i
+            _b_matrix(nws[N_STATES:N_STATES + _NS], nws[N_STATES + _NS * i:N_STATES + _NS * (i + 1)],
+                      1.0 if i == 1 else -1.0, bs[36 * i:36 * (i + 1)])
     for i in range(2):
         oi = int(nws[N_OFFS + i])
         if oi < 0:
