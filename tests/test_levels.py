@@ -152,7 +152,7 @@ def test_level_forces_are_the_quasistatic_solvers(clearance, load, omega):
     # (direct exact Hertz, cold starts) for the same balls: the table's error, <= 1e-7 on k, F and E
     # (physics.hertz.exact_table), enters K = pi k E' sqrt(2 E R / (9 F^3)) at most 1e-7 (1 + 1/2 + 3/2) = 3e-7
     # and the forces through the ball equilibrium likewise; 1e-6 leaves a factor 3. Zero rates: no damping force.
-    from exudyn_bearing.solvers.quasistatic.balls import ring_forces
+    from exudyn_bearing.solvers.quasistatic.balls import B_NIR, B_NIZ, B_QI, ring_forces
 
     br, calls = _level_and_poses(eb.catalog["6208"].with_clearance(clearance), load, omega)
     for d, r, v, w in calls:
@@ -161,6 +161,9 @@ def test_level_forces_are_the_quasistatic_solvers(clearance, load, omega):
                                   br._fti.copy(), br._e_prime, br._method)
         scale = np.abs(gen[:3]).max()
         assert np.abs(br._force - gen).max() <= 1e-6 * scale
+        # the largest loaded inner contact angle the level checks (element.level_forces ranks without atan2)
+        loaded = br._balls[:, B_QI] > 0.0
+        assert br._qmax[2] == np.abs(np.arctan2(-br._balls[loaded, B_NIZ], -br._balls[loaded, B_NIR])).max()
 
 
 @pytest.mark.parametrize("clearance, load, omega", [(0.0, FR, 500.0), (20e-6, 500.0, 3000.0)])
@@ -176,6 +179,76 @@ def test_warm_started_balls_give_the_cold_started_forces(clearance, load, omega)
         br._start[:] = 0.0
         br._evaluate(d, r, v, w)  # the same spin angle again: the cage has not moved
         assert np.abs(br._force - warm).max() <= 1e-9 * np.abs(warm[:3]).max()
+
+
+def _ball_scene(omega=500.0):
+    """One 6208 ball's grooves at ``omega`` (grown rings), its m omega_c^2 and a gyroscopic traction at the outer
+    race, the Hertz table: the arguments of balls._ball_equilibrium after the inner groove centre."""
+    from exudyn_bearing.model.operating_geometry import operating_geometry
+    from exudyn_bearing.physics import hertz
+
+    b = eb.catalog["6208"]
+    g = operating_geometry(b, omega, 0.0, True, 0.0, None)
+    m_w2 = b.ball_mass * (0.4 * omega) ** 2
+    return g, (g.rho_o, g.z_o, g.r_ci, g.r_co, g.r_b, m_w2, -0.3, 0.0,
+               hertz.material_reduced_modulus(b.material), hertz.method_code("exact"), hertz.exact_table())
+
+
+def _solve_ball(pir, piz, rest, start=None):
+    from exudyn_bearing.solvers.quasistatic.balls import NB, _ball_equilibrium
+
+    out = np.zeros(NB)
+    _ball_equilibrium(pir, piz, *rest, out, np.zeros(0) if start is None else start)
+    return out
+
+
+def test_ball_warm_start_sensitivity_is_the_solutions_derivative():
+    # the warm start's prediction dc/dp = A^-1 A_i (balls._ball_sensitivity) against central differences of
+    # cold-started solutions, for a loaded ball with a contact angle: it leaves out the Hertz constants' change
+    # with the contact angle, as the condensation does (damping.py: 2e-5 to 5e-4 of the largest entry with
+    # contact angles, tests/test_stiffness.py); 2e-3 of the largest entry
+    from exudyn_bearing.solvers.quasistatic.balls import B_CR, B_CZ, B_QI, WARM_START
+
+    g, rest = _ball_scene()
+    pir, piz = g.rho_i + 25e-6, g.z_i + 40e-6
+    start = np.zeros(WARM_START)
+    assert _solve_ball(pir, piz, rest, start)[B_QI] > 100.0  # loaded
+    sens = start[5:9].reshape(2, 2)
+    h = 1e-8
+    fd = np.empty((2, 2))
+    for k, (dr, dz) in enumerate(((h, 0.0), (0.0, h))):
+        hi, lo = _solve_ball(pir + dr, piz + dz, rest), _solve_ball(pir - dr, piz - dz, rest)
+        fd[:, k] = [(hi[B_CR] - lo[B_CR]) / (2 * h), (hi[B_CZ] - lo[B_CZ]) / (2 * h)]
+    assert 0.2 < abs(fd[0, 0]) < 0.8  # the ball follows the ring by part of its move (stated scale of the check)
+    assert np.abs(sens - fd).max() <= 2e-3 * np.abs(fd).max()
+
+
+def test_free_ball_keeps_its_last_solution_where_a_cold_start_finds_it():
+    # a ball outside the load zone (inner contact open, held by its centrifugal force at the outer race): the
+    # warm start returns its last solution without a Newton iteration (balls._still_free) when the inner groove
+    # centre moved but the contact stays open; a cold start at the new centre finds the same ball (centre, outer
+    # load and normal within Newton's tolerance) and the same open inner contact's normal and gap
+    from exudyn_bearing.solvers.quasistatic import balls as bl
+
+    g, rest = _ball_scene()
+    start = np.zeros(bl.WARM_START)
+    out = np.zeros(bl.NB)
+    bl._ball_equilibrium(g.rho_i - 10e-6, g.z_i, *rest, out, start)
+    assert out[bl.B_QI] == 0.0 and out[bl.B_QO] > 0.0 and start[9] == 1.0  # free, converged on the residual
+    first = out.copy()
+    bl._ball_equilibrium(g.rho_i - 12e-6, g.z_i + 3e-6, *rest, out, start)  # the ring moved, the gap stays open
+    for k in (bl.B_CR, bl.B_CZ, bl.B_QO):  # kept
+        assert out[k] == first[k]
+    assert start[3] == g.rho_i - 12e-6  # the warm start follows the groove centre
+    cold = _solve_ball(g.rho_i - 12e-6, g.z_i + 3e-6, rest)
+    assert cold[bl.B_QI] == 0.0
+    for k in (bl.B_CR, bl.B_CZ):
+        assert abs(out[k] - cold[k]) <= 1e-12 * g.r_b
+    assert out[bl.B_QO] == pytest.approx(cold[bl.B_QO], rel=1e-9)
+    for k in (bl.B_NIR, bl.B_NIZ, bl.B_NOR):
+        assert abs(out[k] - cold[k]) <= 1e-9
+    assert abs(out[bl.B_DI] - cold[bl.B_DI]) <= 1e-12 * g.r_b
+    assert out[bl.B_DI] < 0.0
 
 
 def test_tabulated_hertz_constant_is_the_direct_one():

@@ -3,12 +3,12 @@ costs without Exudyn's step around it.
 
 One run of the 2.5 kg shaft on two 6208 under 6000 N at 500 rad/s (validation/consistency/levels_damping.py) at
 the quasi-static level, node formulation, GeneralizedAlpha at 1e-4 s, records the arguments of every force and
-Jacobian call Exudyn makes; the calls are then made again in the same order (the bearings start over at the
-run's first time, as a new run does), and each kind alone. Printed: the thread CPU time (not disturbed by
-another process taking the core; the smallest and the median of ``--repeat``) per force call (both bearings,
-the samples included), per Jacobian call, per bearing for the node kernel called alone (the single-bearing path,
-``_node_kernel``), for a Python function that only returns an array (the floor of a call from Python), and for
-all of a step's calls; then the generalized force and the Jacobian of the last recorded call (to compare two
+Jacobian call Exudyn makes (as Exudyn hands them: q and q_t as lists); the calls are then made again in the
+same order (the bearings start over at the run's first time, as a new run does), and each kind alone. Printed:
+the thread CPU time (not disturbed by another process taking the core; the smallest and the median of
+``--repeat``) per force call (both bearings, the samples included), per Jacobian call, per bearing for the node
+kernel called alone (the single-bearing path, ``_node_kernel``), for a Python function that only returns an
+array (the floor of a call from Python), and for all of a step's calls; then the generalized force and the Jacobian of the last recorded call (to compare two
 versions of the code: the same forces to the last digit printed).
 
     python validation/performance/profile_qs_calls.py [--t-end 0.05] [--repeat 15]
@@ -40,12 +40,13 @@ def record(t_end):
     calls = []
     force, jacobian = group._force, group._jacobian
 
+    # the arguments as Exudyn hands them (lists: their conversion is part of a call's cost)
     def rec_force(mbs_, t, item, q, q_t):
-        calls.append(("f", t, np.array(q, float), np.array(q_t, float)))
+        calls.append(("f", t, list(q), list(q_t)))
         return force(mbs_, t, item, q, q_t)
 
     def rec_jacobian(mbs_, t, item, q, q_t, f, f_t):
-        calls.append(("j", t, np.array(q, float), np.array(q_t, float), f, f_t))
+        calls.append(("j", t, list(q), list(q_t), f, f_t))
         return jacobian(mbs_, t, item, q, q_t, f, f_t)
 
     mbs.SetObjectParameter(group.object, "forceUserFunction", rec_force)
@@ -83,11 +84,13 @@ def main(argv=None):
         for c in jacobians:
             group._jacobian(mbs, c[1], group.object, *c[2:])
 
+    arrays = [(np.array(c[2], float), np.array(c[3], float)) for c in forces]
+
     def node_kernels():
         gen = np.zeros_like(group._gen)
-        for c in forces:
+        for q, q_t in arrays:
             for b in bearings:
-                b._node_kernel(c[2], c[3], *b._node_args, gen)
+                b._node_kernel(q, q_t, *b._node_args, gen)
 
     def floor():
         gen = np.zeros_like(group._gen)

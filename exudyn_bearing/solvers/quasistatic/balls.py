@@ -48,13 +48,19 @@ from ...physics.geometry import _raceway_radii_cos
 __all__ = ["BALL_FIELDS", "ring_forces"]
 
 #: Columns of the per-ball result array of :func:`ring_forces`.
+#: (k_o, k_i: the Hertz constants of the closed contacts, 0 for an open one, whose constant enters no force.)
 BALL_FIELDS = ("c_r", "c_z", "q_o", "q_i", "delta_o", "delta_i", "no_r", "no_z", "ni_r", "ni_z", "k_o", "k_i",
                "converged")
 (B_CR, B_CZ, B_QO, B_QI, B_DO, B_DI, B_NOR, B_NOZ, B_NIR, B_NIZ, B_KO, B_KI, B_OK) = range(len(BALL_FIELDS))
 NB = len(BALL_FIELDS)
+#: Length of a ball's warm start (:func:`_ball_equilibrium`): the last solution's centre (c_r, c_z), its kind,
+#: the inner groove centre it was solved for (p_r, p_z), the centre's sensitivity dc/dp (2x2, row-major), whether
+#: Newton's residual test passed at that centre (1) or its last step was below its floor (0), and what the outer
+#: contact's solution depends on besides the centre: m omega^2, F_to, F_ti, the outer groove (rho_o, z_o), R_co, R_b
+WARM_START = 17
 #: ``table`` and ``start`` of :func:`_ring_forces` for direct Hertz constants and cold starts
 _DIRECT = np.empty((3, 0))
-_COLD = np.empty((0, 3))
+_COLD = np.empty((0, WARM_START))
 
 
 @kernel(no_runtime=True)
@@ -82,11 +88,13 @@ def _contact_radii(por, rco, rb, rci, nor, nir):
 
 
 @kernel(no_runtime=True)
-def _contact_constants(por, rco, rb, rci, nor, nir, e_prime, method, table):
+def _contact_constants(por, rco, rb, rci, nor, nir, e_prime, method, table, outer=True, inner=True):
     """Hertz constants K_o, K_i [N/m^1.5] at the contact angles given by the normals (:func:`_contact_radii`);
-    ``table``: see :func:`_hertz_constant`."""
+    ``table``: see :func:`_hertz_constant`; ``outer``, ``inner`` False: that contact's is not computed (0)."""
     rxo, ryo, rxi, ryi = _contact_radii(por, rco, rb, rci, nor, nir)
-    return _hertz_constant(rxo, ryo, e_prime, method, table), _hertz_constant(rxi, ryi, e_prime, method, table)
+    ko = _hertz_constant(rxo, ryo, e_prime, method, table) if outer else 0.0
+    ki = _hertz_constant(rxi, ryi, e_prime, method, table) if inner else 0.0
+    return ko, ki
 
 
 @kernel(no_runtime=True)
@@ -95,12 +103,13 @@ def _ball_equilibrium(pir, piz, por, poz, rci, rco, rb, m_w2, fto, fti, e_prime,
 
     The cold start: the ball on the groove-centre line, the overlap split by the contact stiffnesses (kind 1),
     or, without overlap there but with a centrifugal force, against the outer groove (kind 2).
-    ``start`` (3,) or empty: the warm start, the shift of the last solution from a reference point of its kind
-    (kind 1: the middle of the overlap on the groove-centre line; kind 2: the outer groove's bottom) and the
-    kind (0: none). With the same kind as now, Newton starts from the reference point plus that shift, and
-    from a failed warm start over cold. The solution is the same from either start within Newton's
-    tolerance (it converges on the residual); the warm start saves iterations and the cold start's Hertz
-    constants when the ring pose moved little since the last call."""
+    ``start`` (WARM_START,) or empty: the warm start, the last solution's centre c_0, its kind (0: none), the
+    inner groove centre p_0 it was solved for and the centre's sensitivity S = dc/dp = A^-1 A_i there
+    (:func:`_ball_sensitivity`). With the same kind as now, Newton starts from the first-order prediction
+    c_0 + S (p - p_0), and from a failed warm start over cold. The solution is the same from either start
+    within Newton's tolerance (it converges on the residual); the warm start saves iterations and the cold
+    start's Hertz constants when the ring pose moved little since the last call (the prediction's error is of
+    the second order in the groove centre's move, about one Newton iteration fewer than from c_0 itself)."""
     lo0 = rco - rb
     li0 = rci - rb
     dr = pir - por
@@ -111,14 +120,9 @@ def _ball_equilibrium(pir, piz, por, poz, rci, rco, rb, m_w2, fto, fti, e_prime,
     total = dist - lo0 - li0
     if total > 0.0:
         kind = 1.0
-        ref_r = por + (lo0 + 0.5 * total) * er
-        ref_z = poz + (lo0 + 0.5 * total) * ez
     elif m_w2 > 0.0:
         kind = 2.0
-        ref_r = por + lo0
-        ref_z = poz
     else:  # unloaded, nothing presses it: middle of the gap on the line
-        ko, ki = _contact_constants(por, rco, rb, rci, er, -er, e_prime, method, table)
         for k in range(NB):
             out[k] = 0.0
         out[B_CR] = por + (lo0 + 0.5 * total) * er
@@ -129,16 +133,20 @@ def _ball_equilibrium(pir, piz, por, poz, rci, rco, rb, m_w2, fto, fti, e_prime,
         out[B_NOZ] = ez
         out[B_NIR] = -er
         out[B_NIZ] = -ez
-        out[B_KO] = ko
-        out[B_KI] = ki
         out[B_OK] = 1.0
-        if start.size == 3:
+        if start.size == WARM_START:
             start[2] = 0.0
         return
-    warm = start.size == 3 and start[2] == kind
+    warm = start.size == WARM_START and start[2] == kind
+    exact = 0.0
+    if warm and _still_free(pir, piz, li0, por, poz, rco, rb, m_w2, fto, fti, out, start):
+        return
     if warm:
-        _ball_newton(ref_r + start[0], ref_z + start[1], pir, piz, por, poz, rci, rco, rb, m_w2, fto, fti, e_prime,
-                     method, table, -1.0, out)
+        ep_r = pir - start[3]
+        ep_z = piz - start[4]
+        exact = _ball_newton(start[0] + start[5] * ep_r + start[6] * ep_z,
+                             start[1] + start[7] * ep_r + start[8] * ep_z, pir, piz, por, poz, rci, rco, rb, m_w2,
+                             fto, fti, e_prime, method, table, -1.0, out)
     if not warm or out[B_OK] != 1.0:
         ko, ki = _contact_constants(por, rco, rb, rci, er, -er, e_prime, method, table)
         if kind == 1.0:
@@ -152,17 +160,104 @@ def _ball_equilibrium(pir, piz, por, poz, rci, rco, rb, m_w2, fto, fti, e_prime,
             cr = por + lo0 + d_o
             cz = poz
         scale = 1e-9 * (ko + ki) * (1e-6 * rb) ** 1.5 + 1e-300
-        _ball_newton(cr, cz, pir, piz, por, poz, rci, rco, rb, m_w2, fto, fti, e_prime, method, table, scale, out)
-    if start.size == 3:
-        start[0] = out[B_CR] - ref_r
-        start[1] = out[B_CZ] - ref_z
+        exact = _ball_newton(cr, cz, pir, piz, por, poz, rci, rco, rb, m_w2, fto, fti, e_prime, method, table, scale,
+                             out)
+    if start.size == WARM_START:
+        start[0] = out[B_CR]
+        start[1] = out[B_CZ]
         start[2] = kind if out[B_OK] == 1.0 else 0.0
+        start[3] = pir
+        start[4] = piz
+        start[5], start[6], start[7], start[8] = _ball_sensitivity(out, rci, rco, rb, m_w2, fto, fti)
+        start[9] = exact
+        start[10] = m_w2
+        start[11] = fto
+        start[12] = fti
+        start[13] = por
+        start[14] = poz
+        start[15] = rco
+        start[16] = rb
+
+
+@kernel(no_runtime=True)
+def _still_free(pir, piz, li0, por, poz, rco, rb, m_w2, fto, fti, out, start):
+    """A ball's last solution (``out``, warm start ``start`` of :func:`_ball_equilibrium`) is its solution again
+    when its inner contact was open and stays open at the new inner groove centre (pir, piz), no traction acts at
+    it (F_ti = 0, then and now: its direction would move), and the rest of the residual of :func:`_ball_newton`
+    is unchanged (the same m omega^2, F_to, outer groove, R_co and R_b, and Newton's residual test passed at that
+    centre): then the forces on the ball, its centre and the outer contact are those of the last solution (the
+    same residual, the same test), and only the open inner contact's normal and gap move. Writes those and the
+    warm start's groove centre; returns whether it applied (a ball outside the load zone, held by its
+    centrifugal force, costs no Hertz constant and no iteration)."""
+    if not (start[9] == 1.0 and fti == 0.0 and start[12] == 0.0 and out[B_QI] == 0.0 and out[B_OK] == 1.0
+            and out[B_CR] == start[0] and out[B_CZ] == start[1] and m_w2 == start[10] and fto == start[11]
+            and por == start[13] and poz == start[14] and rco == start[15] and rb == start[16]):
+        return False
+    br = start[0] - pir
+    bz = start[1] - piz
+    li = math.sqrt(br * br + bz * bz)
+    if li - li0 > 0.0:
+        return False
+    out[B_NIR] = br / li
+    out[B_NIZ] = bz / li
+    out[B_DI] = li - li0
+    start[3] = pir
+    start[4] = piz
+    return True
+
+
+@kernel(inline="always")
+def _mul(a, b):
+    """Product of two 2x2 matrices (row-major 4-tuples)."""
+    return (a[0] * b[0] + a[1] * b[2], a[0] * b[1] + a[1] * b[3], a[2] * b[0] + a[3] * b[2], a[2] * b[1] + a[3] * b[3])
+
+
+@kernel(inline="always")
+def _contact_jacobians(nr, nz, q, k_t, length, f_t, c_n):
+    """A = dF/dc and B = dF/dc' (row-major 4-tuples) of one contact's force on the ball, F = -Q n + F_t t
+    (:mod:`.damping`: A = -k_t n n^T - (Q/L)(I - n n^T) + (F_t/L) R (I - n n^T), B = -C_n n n^T; the terms of
+    :func:`_ball_newton`'s Jacobian)."""
+    p11, p12, p22 = 1.0 - nr * nr, -nr * nz, 1.0 - nz * nz  # I - n n^T
+    g = q / length
+    t = f_t / length  # (F_t/L) R (I - n n^T), R = [[0, 1], [-1, 0]]
+    a = (-k_t * nr * nr - g * p11 + t * p12, -k_t * nr * nz - g * p12 + t * p22,
+         -k_t * nr * nz - g * p12 - t * p11, -k_t * nz * nz - g * p22 - t * p12)
+    b = (-c_n * nr * nr, -c_n * nr * nz, -c_n * nr * nz, -c_n * nz * nz)
+    return a, b
+
+
+@kernel(inline="always")
+def _condense(a_o, a_i, m_w2):
+    """(A^-1, A^-1 A_i) of a ball (row-major 4-tuples): A = A_o + A_i + diag(m omega_m^2, 0) the Jacobian of the
+    forces on the ball, A^-1 A_i = dc/dp its centre's move per move of the inner groove centre (equilibrium
+    A dc - A_i dp = 0); zeros where A is singular."""
+    a = (a_o[0] + a_i[0] + m_w2, a_o[1] + a_i[1], a_o[2] + a_i[2], a_o[3] + a_i[3])
+    det = a[0] * a[3] - a[1] * a[2]
+    if det == 0.0:
+        return (0.0, 0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 0.0)
+    ainv = (a[3] / det, -a[1] / det, -a[2] / det, a[0] / det)
+    return ainv, _mul(ainv, a_i)
+
+
+@kernel(no_runtime=True)
+def _ball_sensitivity(out, rci, rco, rb, m_w2, fto, fti):
+    """dc/dp (row-major 4-tuple) of a solved ball (``out``: its BALL_FIELDS): :func:`_condense` with the contacts'
+    Jacobians at the solution (:func:`_contact_jacobians`; an open contact only its traction's term, as in the
+    residual of :func:`_ball_newton`)."""
+    do = out[B_DO]
+    di = out[B_DI]
+    kto = 1.5 * out[B_KO] * math.sqrt(do) if do > 0.0 else 0.0
+    kti = 1.5 * out[B_KI] * math.sqrt(di) if di > 0.0 else 0.0
+    a_o = _contact_jacobians(out[B_NOR], out[B_NOZ], out[B_QO], kto, rco - rb + do, fto, 0.0)[0]
+    a_i = _contact_jacobians(out[B_NIR], out[B_NIZ], out[B_QI], kti, rci - rb + di, fti, 0.0)[0]
+    return _condense(a_o, a_i, m_w2)[1]
 
 
 @kernel(no_runtime=True)
 def _ball_newton(cr, cz, pir, piz, por, poz, rci, rco, rb, m_w2, fto, fti, e_prime, method, table, scale, out):
     """Newton's method for one ball's centre (cr, cz) from the given start (:func:`_ball_equilibrium`); ``scale``
-    [N]: the residual's absolute floor (< 0: from the Hertz constants at the start)."""
+    [N]: the residual's absolute floor (< 0: from the Hertz constants at the start). Returns 1.0 if the residual
+    test passed at the centre written (0.0: the last step was below its floor, or no convergence)."""
     lo0 = rco - rb
     li0 = rci - rb
     ok = 0.0
@@ -171,6 +266,7 @@ def _ball_newton(cr, cz, pir, piz, por, poz, rci, rco, rb, m_w2, fto, fti, e_pri
     nor = noz = nir = niz = 0.0
     do = di = 0.0
     ko = ki = 0.0
+    exact = 0.0
     for it in range(80):
         # outer contact
         ar = cr - por
@@ -188,9 +284,11 @@ def _ball_newton(cr, cz, pir, piz, por, poz, rci, rco, rb, m_w2, fto, fti, e_pri
         di = li - li0
         # Hertz constants at the current contact angles (stale ones would make the converged state
         # depend on the iteration history)
-        ko, ki = _contact_constants(por, rco, rb, rci, nor, nir, e_prime, method, table)
         if scale < 0.0:
+            ko, ki = _contact_constants(por, rco, rb, rci, nor, nir, e_prime, method, table)
             scale = 1e-9 * (ko + ki) * (1e-6 * rb) ** 1.5 + 1e-300
+        else:  # an open contact's constant enters no force
+            ko, ki = _contact_constants(por, rco, rb, rci, nor, nir, e_prime, method, table, do > 0.0, di > 0.0)
         qo = ko * do * math.sqrt(do) if do > 0.0 else 0.0
         qi = ki * di * math.sqrt(di) if di > 0.0 else 0.0
         kqo = 1.5 * ko * math.sqrt(do) if do > 0.0 else 0.0
@@ -200,6 +298,7 @@ def _ball_newton(cr, cz, pir, piz, por, poz, rci, rco, rb, m_w2, fto, fti, e_pri
         rz = -qo * noz - qi * niz - fto * nor - fti * nir
         if abs(rr) + abs(rz) <= 1e-13 * (qo + qi + m_w2 * cr + abs(fto) + abs(fti)) + scale:
             ok = 1.0
+            exact = 1.0
             break
         # Jacobian d(residual)/dc
         go = qo / lo
@@ -239,9 +338,10 @@ def _ball_newton(cr, cz, pir, piz, por, poz, rci, rco, rb, m_w2, fto, fti, e_pri
     out[B_NOZ] = noz
     out[B_NIR] = nir
     out[B_NIZ] = niz
-    out[B_KO] = ko
-    out[B_KI] = ki
+    out[B_KO] = ko if do > 0.0 else 0.0
+    out[B_KI] = ki if di > 0.0 else 0.0
     out[B_OK] = ok
+    return exact
 
 
 @kernel(no_runtime=True)
@@ -249,8 +349,8 @@ def _ring_forces(u, psi, rho_i, z_i, rho_o, z_o, rci, rco, rb, m_w2, fto, fti, e
                  gen):
     """All balls for the ring pose u (5,); per-ball results into ``balls`` (Z, NB),
     generalized force of the balls on the ring into ``gen`` (5,). ``table``: Hertz constants
-    (:func:`_hertz_constant`; shape (3, 0): direct); ``start`` (Z, 3): the balls' warm starts
-    (:func:`_ball_equilibrium`; shape (0, 3): cold starts)."""
+    (:func:`_hertz_constant`; shape (3, 0): direct); ``start`` (Z, WARM_START): the balls' warm starts
+    (:func:`_ball_equilibrium`; shape (0, WARM_START): cold starts)."""
     for k in range(5):
         gen[k] = 0.0
     warm = start.shape[0] == psi.size

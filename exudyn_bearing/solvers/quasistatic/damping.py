@@ -73,7 +73,8 @@ from ..._jit import kernel
 from ...physics.damping import _damping_fluid, _damping_hysteretic, damping_coefficient, lubrication_regime
 from ...physics.ehl import _film_hd_ln_g
 from ...physics.hertz import _curvature_sum_radius, _kfe_fast, _semi_axes_overlap
-from .balls import B_CR, B_CZ, B_DI, B_DO, B_KI, B_KO, B_NIR, B_NIZ, B_NOR, B_NOZ, B_QI, B_QO, _contact_radii
+from .balls import (B_CR, B_CZ, B_DI, B_DO, B_KI, B_KO, B_NIR, B_NIZ, B_NOR, B_NOZ, B_QI, B_QO, _condense,
+                    _contact_jacobians, _contact_radii, _mul)
 
 __all__ = ["CONTACT_DAMPING_FIELDS", "contact_damping", "ring_jacobian", "condensed_matrices", "normal_damping",
            "ball_condensation", "ring_damping_force"]
@@ -154,24 +155,6 @@ def ring_jacobian(psi, rho_i, z_i):
                      [0.0, 0.0, 1.0, rho_i * s, -rho_i * c]])
 
 
-@kernel(inline="always")
-def _mul(a, b):
-    """Product of two 2x2 matrices (row-major 4-tuples)."""
-    return (a[0] * b[0] + a[1] * b[2], a[0] * b[1] + a[1] * b[3], a[2] * b[0] + a[3] * b[2], a[2] * b[1] + a[3] * b[3])
-
-
-@kernel(inline="always")
-def _contact_jacobians(nr, nz, q, k_t, length, f_t, c_n):
-    """A = dF/dc and B = dF/dc' (row-major 4-tuples) of one contact's force on the ball (module docstring)."""
-    p11, p12, p22 = 1.0 - nr * nr, -nr * nz, 1.0 - nz * nz  # I - n n^T
-    g = q / length
-    t = f_t / length  # (F_t/L) R (I - n n^T), R = [[0, 1], [-1, 0]]
-    a = (-k_t * nr * nr - g * p11 + t * p12, -k_t * nr * nz - g * p12 + t * p22,
-         -k_t * nr * nz - g * p12 - t * p11, -k_t * nz * nz - g * p22 - t * p12)
-    b = (-c_n * nr * nr, -c_n * nr * nz, -c_n * nr * nz, -c_n * nz * nz)
-    return a, b
-
-
 @kernel(no_runtime=True)
 def ball_condensation(no_r, no_z, q_o, k_to, l_o, f_to, c_o, ni_r, ni_z, q_i, k_ti, l_i, f_ti, c_i, m_w2):
     """Dynamic stiffness of one ball between the rings, D(0) and D'(0) (module docstring; row-major 4-tuples).
@@ -181,11 +164,8 @@ def ball_condensation(no_r, no_z, q_o, k_to, l_o, f_to, c_o, ni_r, ni_z, q_i, k_
     damping C_n [N s/m]; m_w2 = m omega_m^2 [N/m]. An open outer contact: Q_o = k_to = C_o = F_to = 0."""
     a_o, b_o = _contact_jacobians(no_r, no_z, q_o, k_to, l_o, f_to, c_o)
     a_i, b_i = _contact_jacobians(ni_r, ni_z, q_i, k_ti, l_i, f_ti, c_i)
-    a = (a_o[0] + a_i[0] + m_w2, a_o[1] + a_i[1], a_o[2] + a_i[2], a_o[3] + a_i[3])
     b = (b_o[0] + b_i[0], b_o[1] + b_i[1], b_o[2] + b_i[2], b_o[3] + b_i[3])
-    det = a[0] * a[3] - a[1] * a[2]
-    ainv = (a[3] / det, -a[1] / det, -a[2] / det, a[0] / det)
-    x = _mul(ainv, a_i)
+    ainv, x = _condense(a_o, a_i, m_w2)
     xmi = (x[0] - 1.0, x[1], x[2], x[3] - 1.0)
     d0 = _mul(a_i, xmi)
     bx = _mul(b, x)

@@ -18,7 +18,8 @@ theta_y) and relative spin w_z against the outer ring (:mod:`.base`):
   when the speed squared moved by more than 2 % plus (10 rad/s)^2: about 1 %
   of the speed); the exact Hertz constants from the tabulated exact solution
   (:func:`exudyn_bearing.physics.hertz.exact_table`) and each ball's Newton
-  iteration started from its last solution (:func:`..balls._ball_equilibrium`);
+  iteration started from its last solution moved to first order with its inner groove centre, a ball outside
+  the load zone kept without an iteration while its inner contact stays open (:func:`..balls._ball_equilibrium`);
 * the damping force -C u' of the balls in their current state
   (:func:`..damping.ring_damping_force`): each loaded ball's normal contact
   damping (hysteretic, squeeze film, switched by Lambda: the contact law of
@@ -50,7 +51,7 @@ from ....data import MAX_FREE_CONTACT_ANGLE, load_lubricant
 from ....data.errors import check_finite
 from ....model.operating_geometry import operating_geometry
 from ....physics import hertz as _hz
-from ..balls import B_NIR, B_NIZ, B_QI, B_QO, NB, _ring_forces
+from ..balls import B_NIR, B_NIZ, B_QI, B_QO, NB, WARM_START, _ring_forces
 from ..damping import ring_damping_force
 from .base import (SAMPLE_HEADER, WS_CAGE, WS_FORCE, WS_HEADER, WS_OUT, WS_POSE, WS_QMAX, LevelBearing,
                    entry_point, sample_header)
@@ -146,11 +147,21 @@ def level_forces(d0, d1, d2, r0, r1, r2, v0, v1, v2, w0, w1, w2, method, ws, tab
     q_in = 0.0
     q_out = 0.0
     alpha = 0.0
+    steep = -1.0
+    j_steep = 0
     for j in range(z):
         q_in = max(q_in, balls[j, B_QI])
         q_out = max(q_out, balls[j, B_QO])
-        if balls[j, B_QI] > 0.0:  # contact angle from the groove bottom, inner race
-            alpha = max(alpha, abs(math.atan2(-balls[j, B_NIZ], -balls[j, B_NIR])))
+        if balls[j, B_QI] > 0.0:  # contact angle from the groove bottom, inner race: |atan2(-n_z, -n_r)|
+            # ranked by 1 - x / (|x| + |y|) (x = -n_r, y = -n_z), which grows with |atan2(y, x)| over [0, pi]:
+            # one atan2 for the largest
+            x = -balls[j, B_NIR]
+            key = 1.0 - x / (abs(x) + abs(balls[j, B_NIZ]))
+            if key > steep:
+                steep = key
+                j_steep = j
+    if steep >= 0.0:
+        alpha = abs(math.atan2(-balls[j_steep, B_NIZ], -balls[j_steep, B_NIR]))
     ws[WS_QMAX] = q_in
     ws[WS_QMAX + 1] = q_out
     ws[WS_QMAX + 2] = alpha
@@ -182,15 +193,18 @@ def node_level_forces(q, qt, nws, method, ws, table, start, balls, gen):
 
 
 @kernel(no_runtime=True)
-def group_level_forces(q, qt, gen, table, methods, nwss, wss, starts, ballss):
-    """:func:`node_level_forces` for each bearing of a node group (the tuples: their arguments), ``gen`` their
-    summed generalized force: one compiled call per evaluation for all. Each bearing's largest ball load goes to
+def group_level_forces(qq, gen, table, methods, nwss, wss, starts, ballss):
+    """:func:`node_level_forces` for each bearing of a node group (the tuples: their arguments; ``qq``: the
+    object's coordinates q and then their rates q_t, each of the length of ``gen``), ``gen`` their summed
+    generalized force: one compiled call per evaluation for all. Each bearing's largest ball load goes to
     its node work array (N_QMAX). Returns True where a bearing needs the steps after the kernel
     (:meth:`QuasiStaticBearing._node_after`): its relative speed left the band of its grooves' last update
     (N_BAND), a ball load is beyond its limit (N_QLIMIT) or not a number, or a loaded contact sits beyond
     MAX_FREE_CONTACT_ANGLE."""
     for k in range(gen.size):
         gen[k] = 0.0
+    q = qq[:gen.size]
+    qt = qq[gen.size:]
     more = False
     for i in range(len(nwss)):
         nws = nwss[i]
@@ -329,7 +343,7 @@ class QuasiStaticBearing(LevelBearing):
         self._gen = ws[_GEN:_GEN + 5]
         self._damp = ws[_DAMP:_DAMP + 5]
         self._balls = np.zeros((z, NB))
-        self._start = np.zeros((z, 3))  # the balls' warm starts (balls._ball_equilibrium)
+        self._start = np.zeros((z, WARM_START))  # the balls' warm starts (balls._ball_equilibrium)
         self._hz_table = _hz.exact_table()
         self._e_prime = ws[_EPRIME] = _hz.material_reduced_modulus(b.material)
         # the contact damping law's parameters: the lubricant solve_quasistatic takes (None: the bearing's)
