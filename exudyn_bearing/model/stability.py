@@ -149,6 +149,9 @@ class StableStep:
     cage_damping: str = "explicit"
     #: the scene's cage model (Scenario.cage): "torus", "rigid" or "none"
     cage_kind: str = "torus"
+    #: the scene's traction level (Scenario.traction_level): the "friction" limit is the regularised point friction
+    #: at "point", the low-slip slope of the traction law over the ellipse at "ellipse"
+    traction_level: str = "point"
 
     @property
     def cage_blow_up(self) -> float:
@@ -284,7 +287,7 @@ def stable_step(bearing: BallBearing, scenario: Scenario, lubricant: Lubricant |
     parts = {"normal": dt_n, "tangential": dt_t, "friction": dt_f, "cage": dt_c}
     name = min(parts, key=parts.get)
     return StableStep(STABILITY_SAFETY * parts[name], dt_n, dt_t, dt_f, dt_c, name, load_c, basis,
-                      scenario.cage_damping, scenario.cage)
+                      scenario.cage_damping, scenario.cage, scenario.traction_level)
 
 
 #: Eccentricity ratio of the land film at which the a-priori stable step of a land-guided rigid cage is taken
@@ -452,7 +455,8 @@ def step_warning(label: str, dt: float, stable: StableStep) -> str | None:
     limits = {k: STABILITY_SAFETY * getattr(stable, k) for k in ("normal", "tangential", "friction", "cage")}
     over = [k for k, v in limits.items() if dt > v]
     names = {"normal": "normal contacts of the balls", "tangential": "explicit tangential (Cundall-Strack) springs",
-             "friction": "regularised friction",
+             "friction": ("regularised friction" if stable.traction_level == "point" else
+                          "traction over the ellipse (its low-slip slope, the traction model's)"),
              "cage": ("rigid cage's pocket and land contacts" if stable.cage_kind == "rigid" else
                       "ball / cage-ball contacts")}
     extra = {k: "" for k in names}
@@ -467,7 +471,8 @@ def step_warning(label: str, dt: float, stable: StableStep) -> str | None:
             "normal contacts" if k == "normal" else f"cage contacts, dt >= {stable.cage_blow_up:g} times their limit"
             for k in blow) + "). "
     if "tangential" in over or "friction" in over:
-        text += ("The friction forces may chatter at their Coulomb cap: slip and frictional power wrong"
+        text += (("The friction forces may chatter at their Coulomb cap" if stable.traction_level == "point" else
+                  "The tractions may chatter about their low-slip slope") + ": slip and frictional power wrong"
                  + (" (tangential='implicit' lifts the springs' limit)" if "tangential" in over else "") + ". ")
     if "cage" in over and "cage" not in blow:
         text += ("The cage loads may chatter at about twice their value (ball loads and speeds are not "
