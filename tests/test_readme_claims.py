@@ -90,21 +90,21 @@ CLAIMS = [
      "| element body mode, VelocityVerlet 5 us | 3.54 |", "python validation/performance/bench_element.py --ga"),
     ("| 3.54 (body mode), 2.15 (fast mode, one sub-step), VelocityVerlet at 5 us |",
      "| element fast mode, 1 x 5 us sub-step | 2.15 |", "python validation/performance/bench_element.py --ga"),
-    ("| 0.159 (exact Hertz), 0.160 (`hertzModel=\"hamrock_brewe\"`); 0.221 with `formulation=\"connector\"` |",
-     "quasistatic, exact Hertz GeneralizedAlpha 1.0e-04 0.050 0.159", "python validation/performance/bench_levels.py --repeat 3"),
-    ("| 0.159 (exact Hertz), 0.160 (`hertzModel=\"hamrock_brewe\"`); 0.221 with `formulation=\"connector\"` |",
-     "quasistatic, hamrock_brewe GeneralizedAlpha 1.0e-04 0.050 0.160", "python validation/performance/bench_levels.py --repeat 3"),
-    ("| 0.159 (exact Hertz), 0.160 (`hertzModel=\"hamrock_brewe\"`); 0.221 with `formulation=\"connector\"` |",
-     "quasistatic, exact Hertz, connector GeneralizedAlpha 1.0e-04 0.050 0.221", "python validation/performance/bench_levels.py --repeat 3"),
-    ("takes 0.5 s of wall time at the\nquasi-static level with exact Hertz and 0.6 s with Hamrock-Brewe, 0.9 s with",
-     "quasistatic, exact Hertz 0.5 s wall", "python validation/performance/bench_levels.py --repeat 3"),
-    ("takes 0.5 s of wall time at the\nquasi-static level with exact Hertz and 0.6 s with Hamrock-Brewe, 0.9 s with",
-     "quasistatic, hamrock_brewe 0.6 s wall", "python validation/performance/bench_levels.py --repeat 3"),
-    ("takes 0.5 s of wall time at the\nquasi-static level with exact Hertz and 0.6 s with Hamrock-Brewe, 0.9 s with",
-     "quasistatic, exact Hertz, connector 0.9 s wall", "python validation/performance/bench_levels.py --repeat 3"),
-    ("quasi-static level with exact Hertz cost 45.3\ntimes less than the ball element's body mode and 10.7 times less than its",
-     "quasistatic, exact Hertz 45.3 x body mode, 10.7 x fast mode", "python validation/performance/bench_levels.py --repeat 3"),
-    ("the linear level with its speed table 76.4\nand 18.1 times less", "linear, speed table 76.4 x body mode, 18.1 x fast mode",
+    ("| 0.233 (exact Hertz), 0.220 (`hertzModel=\"hamrock_brewe\"`); 0.282 with `formulation=\"connector\"` |",
+     "quasistatic, exact Hertz GeneralizedAlpha 1.0e-04 0.050 0.233", "python validation/performance/bench_levels.py --repeat 3"),
+    ("| 0.233 (exact Hertz), 0.220 (`hertzModel=\"hamrock_brewe\"`); 0.282 with `formulation=\"connector\"` |",
+     "quasistatic, hamrock_brewe GeneralizedAlpha 1.0e-04 0.050 0.220", "python validation/performance/bench_levels.py --repeat 3"),
+    ("| 0.233 (exact Hertz), 0.220 (`hertzModel=\"hamrock_brewe\"`); 0.282 with `formulation=\"connector\"` |",
+     "quasistatic, exact Hertz, connector GeneralizedAlpha 1.0e-04 0.050 0.282", "python validation/performance/bench_levels.py --repeat 3"),
+    ("takes 0.8 s of wall time at the\nquasi-static level with exact Hertz and 0.8 s with Hamrock-Brewe, 1.6 s with",
+     "quasistatic, exact Hertz 0.8 s wall", "python validation/performance/bench_levels.py --repeat 3"),
+    ("takes 0.8 s of wall time at the\nquasi-static level with exact Hertz and 0.8 s with Hamrock-Brewe, 1.6 s with",
+     "quasistatic, hamrock_brewe 0.8 s wall", "python validation/performance/bench_levels.py --repeat 3"),
+    ("takes 0.8 s of wall time at the\nquasi-static level with exact Hertz and 0.8 s with Hamrock-Brewe, 1.6 s with",
+     "quasistatic, exact Hertz, connector 1.6 s wall", "python validation/performance/bench_levels.py --repeat 3"),
+    ("quasi-static level with exact Hertz cost 42.9\ntimes less than the ball element's body mode and 10.4 times less than its",
+     "quasistatic, exact Hertz 42.9 x body mode, 10.4 x fast mode", "python validation/performance/bench_levels.py --repeat 3"),
+    ("the linear level with its speed table 77.3\nand 18.7 times less", "linear, speed table 77.3 x body mode, 18.7 x fast mode",
      "python validation/performance/bench_levels.py --repeat 3"),
     ("balls body mode 2 us 3.7e-5 (77.0 s per simulated s)",
      "balls (bodies), VelocityVerlet 2e-06 s wall 1.54 s ( 77.0 s per simulated s), error 3.65e-05",
@@ -114,29 +114,29 @@ CLAIMS = [
     ("a warm-started sweep of 20 speeds in 2.96 s", "(warm started): median 2.96 s", "python validation/performance/bench_thermal.py"),
     ("at dt = 5.21 us takes 0.59-0.69 s wall", "| outer | 0.692 s |", "python validation/performance/bench_defects.py"),
     ("at dt = 5.21 us takes 0.59-0.69 s wall", "| ball | 0.594 s |", "python validation/performance/bench_defects.py"),
-    ("| 0.094 (speed table), 0.032 (one speed: Exudyn's own connector) |",
-     "linear, speed table GeneralizedAlpha 1.0e-04 0.050 0.094", "python validation/performance/bench_levels.py --repeat 3"),
-    ("| 0.094 (speed table), 0.032 (one speed: Exudyn's own connector) |",
-     "linear, one speed (Exudyn connector) GeneralizedAlpha 1.0e-04 0.050 0.032", "python validation/performance/bench_levels.py --repeat 3"),
+    ("| 0.129 (speed table), 0.038 (one speed: Exudyn's own connector) |",
+     "linear, speed table GeneralizedAlpha 1.0e-04 0.050 0.129", "python validation/performance/bench_levels.py --repeat 3"),
+    ("| 0.129 (speed table), 0.038 (one speed: Exudyn's own connector) |",
+     "linear, one speed (Exudyn connector) GeneralizedAlpha 1.0e-04 0.050 0.038", "python validation/performance/bench_levels.py --repeat 3"),
     # the bearing levels in a rotor (docs/howto/rotor.md)
-    ("and 0.5 s at the linear level", "linear, speed table 0.5 s wall, final speed 986 rad/s", "python validation/performance/bench_levels.py --repeat 3"),
-    ("The compiled call for the nine balls takes 1.8 us at the operating pose\n  instead of 31.0 us",
-     "the compiled kernel 1.8 us (with direct exact Hertz constants and cold-started balls 31.0 us)", "python validation/performance/bench_levels.py --repeat 3"),
-    ("3.54 instead of 5.30 evaluations per\n  step on the test shaft", "relative tolerance 1e-08: x 7.39e-07 nm "
-     "(6.9e-06 % of the step halving's), y 1.69e-05 nm (1e-05 %), 5.30 evaluations per step, 1 Jacobian(s)", "python validation/performance/bench_levels.py --repeat 3"),
+    ("and 0.7 s at the linear level", "linear, speed table 0.7 s wall, final speed 986 rad/s", "python validation/performance/bench_levels.py --repeat 3"),
+    ("The compiled call for the nine balls takes 2.3 us at the operating pose\n  instead of 35.7 us",
+     "the compiled kernel 2.3 us (with direct exact Hertz constants and cold-started balls 35.7 us)", "python validation/performance/bench_levels.py --repeat 3"),
+    ("3.54 instead of 5.30 evaluations per\n  step on the test shaft", "relative tolerance 1e-08: x 7.29e-07 nm "
+     "(6.8e-06 % of the step halving's), y 1.68e-05 nm (1e-05 %), 5.30 evaluations per step, 1 Jacobian(s)", "python validation/performance/bench_levels.py --repeat 3"),
     ("3.54 instead of 5.30 evaluations per\n  step on the test shaft", "y 0.0816 nm (0.05 %), 3.54 evaluations per step, 1 Jacobian(s)",
      "python validation/performance/bench_levels.py --repeat 3"),
-    ("and 4.7 instead of 8.0 in the run-up", "quasistatic, exact Hertz, connector 0.9 s wall, final speed 986 rad/s, 4.70 "
+    ("and 5.1 instead of 8.0 in the run-up", "quasistatic, exact Hertz, connector 1.6 s wall, final speed 986 rad/s, 5.07 "
      "evaluations per step and bearing", "python validation/performance/bench_levels.py --repeat 3"),
     ("The shaft's\n  motion changes by at most 0.05 % (test shaft) and 0.44 % (20 um\n  clearance, 500 N)",
      "relative tolerance 0.0001: x 2.88 nm (0.44 % of the step halving's)", "python validation/performance/bench_levels.py --repeat 3"),
     # the node formulation (docs/howto/rotor.md; bench_levels.py, bench_qs_rotor.py)
     ("2.01\n  evaluations per step on the test shaft, as the linear level's 2.03",
-     "quasistatic, exact Hertz GeneralizedAlpha 1.0e-04 0.050 0.159 2.01", "python validation/performance/bench_levels.py --repeat 3"),
+     "quasistatic, exact Hertz GeneralizedAlpha 1.0e-04 0.050 0.233 2.01", "python validation/performance/bench_levels.py --repeat 3"),
     ("2.01\n  evaluations per step on the test shaft, as the linear level's 2.03",
-     "linear, speed table GeneralizedAlpha 1.0e-04 0.050 0.094 2.03", "python validation/performance/bench_levels.py --repeat 3"),
-    ("and 2.97 instead of 4.70 per bearing in the run-up", "quasistatic, exact Hertz 0.5 s wall, final speed 986 rad/s, "
-     "2.97 evaluations per step and bearing", "python validation/performance/bench_levels.py --repeat 3"),
+     "linear, speed table GeneralizedAlpha 1.0e-04 0.050 0.129 2.03", "python validation/performance/bench_levels.py --repeat 3"),
+    ("and 2.96 instead of 5.07 per bearing in the run-up", "quasistatic, exact Hertz 0.8 s wall, final speed 986 rad/s, "
+     "2.96 evaluations per step and bearing", "python validation/performance/bench_levels.py --repeat 3"),
     ("at the tolerance\n  1e-4 the motion moves by 0.022 % (test shaft) and 0.16 % (20 um\n  clearance)",
      "relative tolerance 0.0001: x 0.0023 nm (0.022 % of the step halving's), y 0.0209 nm (0.013 %), 2.01 evaluations "
      "per step, 500 Jacobian(s)", "python validation/performance/bench_levels.py --repeat 3"),
@@ -170,12 +170,12 @@ CLAIMS = [
      "python validation/performance/bench_qs_rotor.py --repeat 7"),
     ("a call for both\n  bearings takes 9.58 us with Exudyn's step shared out", "node 0.306 1.33 3.19 2.19 1.19 2000 30.6 9.58",
      "python validation/performance/bench_qs_rotor.py --repeat 7"),
-    ("Exudyn's call of a user function that only returns\n  zeros costs 1.6 us; the connector's user function takes 2.5 us (1.8 us\n  of it the compiled call)",
-     "a user function returning zeros adds 1.6 us per call (Exudyn's Python boundary) the level's user function "
-     "(connector formulation) 2.5 us per call at its operating pose, of which _evaluate 2.1 us and the compiled kernel "
-     "1.8 us", "python validation/performance/bench_levels.py --repeat 3"),
-    ("the node formulation's force call 3.0 us for\n  one bearing and its Jacobian call 0.4 us",
-     "node formulation: the object's force call 3.0 us (kernel included), its Jacobian call 0.4 us",
+    ("Exudyn's call of a user function that only returns\n  zeros costs 2.4 us; the connector's user function takes 3.2 us (2.3 us\n  of it the compiled call)",
+     "a user function returning zeros adds 2.4 us per call (Exudyn's Python boundary) the level's user function "
+     "(connector formulation) 3.2 us per call at its operating pose, of which _evaluate 2.7 us and the compiled kernel "
+     "2.3 us", "python validation/performance/bench_levels.py --repeat 3"),
+    ("the node formulation's force call 3.6 us for\n  one bearing and its Jacobian call 0.5 us",
+     "node formulation: the object's force call 3.6 us (kernel included), its Jacobian call 0.5 us",
      "python validation/performance/bench_levels.py --repeat 3"),
     # the quasi-static level's cost (docs/theory/levels.md, "Cost")
     ("| connector | 0.551 | 2.40 | 7.26 | 3.63 | 2.62 | 55.1 | 7.60 |", "connector 0.551 2.40 7.26 3.63 2.62 1 55.1 7.60",
@@ -184,17 +184,17 @@ CLAIMS = [
      "python validation/performance/bench_qs_rotor.py --repeat 7"),
     ("The two runs end 0.023 nm apart in x (of 24.7 um)", "node 0.306 1.33 3.19 2.19 1.19 2000 30.6 9.58 24.70213 -0.023",
      "python validation/performance/bench_qs_rotor.py --repeat 7"),
-    ("2.5 us\n  for the connector's user function, 1.8 us of it the compiled call for\n  the nine balls (31.0 us",
-     "(connector formulation) 2.5 us per call at its operating pose, of which _evaluate 2.1 us and the compiled kernel "
-     "1.8 us (with direct exact Hertz constants and cold-started balls 31.0 us)", "python validation/performance/bench_levels.py --repeat 3"),
-    ("Exudyn's own call of a user function that only returns zeros costs\n  1.6 us, and its step with its own connector 2.0 us",
-     "Exudyn step with its own connector 2.0 us; a user function returning zeros adds 1.6 us per call",
+    ("3.2 us\n  for the connector's user function, 2.3 us of it the compiled call for\n  the nine balls (35.7 us",
+     "(connector formulation) 3.2 us per call at its operating pose, of which _evaluate 2.7 us and the compiled kernel "
+     "2.3 us (with direct exact Hertz constants and cold-started balls 35.7 us)", "python validation/performance/bench_levels.py --repeat 3"),
+    ("Exudyn's own call of a user function that only returns zeros costs\n  2.4 us, and its step with its own connector 2.2 us",
+     "Exudyn step with its own connector 2.2 us; a user function returning zeros adds 2.4 us per call",
      "python validation/performance/bench_levels.py --repeat 3"),
     ("| | | 1e-4 | 0.022 % | 0.013 % | 2.01 |", "x 0.0023 nm (0.022 % of the step halving's), y 0.0209 nm (0.013 %), 2.01 "
      "evaluations per step", "python validation/performance/bench_levels.py --repeat 3"),
     ("| | | 1e-4 | 0.15 % | 0.16 % | 2.16 |", "x 1 nm (0.15 % of the step halving's), y 4.2 nm (0.16 %), 2.16 "
      "evaluations per step", "python validation/performance/bench_levels.py --repeat 3"),
-    ("| | | 1e-4 | 0.44 % | 0.3 % | 3.21 |", "x 2.88 nm (0.44 % of the step halving's), y 8.02 nm (0.3 %), 3.21 "
+    ("| | | 1e-4 | 0.44 % | 0.3 % | 3.21 |", "x 2.88 nm (0.44 % of the step halving's), y 8.01 nm (0.3 %), 3.21 "
      "evaluations per step", "python validation/performance/bench_levels.py --repeat 3"),
     ("The ball element is 0.023 % off\n  under radial load", "balls x = 24.811 um (+0.023 %)", "python validation/consistency/levels_checks.py"),
     ("Under the combined load it is 1.40 % off in x", "balls x = 26.454 um (-1.401 %), axial 110.121 um (-0.209 %), "
