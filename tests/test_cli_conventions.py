@@ -77,6 +77,7 @@ def test_rpm_beside_omega(capsys):
     assert "not allowed with" in capsys.readouterr().err
 
 
+@pytest.mark.filterwarnings("ignore::exudyn_bearing.data.LubricantDefaultsWarning")  # a viscosity-only file
 def test_lubricant_option_takes_a_name_or_a_file(tmp_path, capsys):
     base = run_json(capsys, "static", "6208", "--Fr", "3000", "--omega", "500", "--json")
     named = run_json(capsys, "static", "6208", "--Fr", "3000", "--omega", "500", "--lubricant", "guessasma2018", "--json")

@@ -135,3 +135,23 @@ def test_numpy_numbers_are_numbers():
     sc = eb.Scenario(Fr=np.int64(3000), omega=np.float32(500.0), cage=np.bool_(True), dt=np.float64(4e-6))
     assert sc.Fr == 3000.0 and type(sc.Fr) is float and sc.cage == "torus"
     assert eb.Scenario(omega=500.0, Fr=np.int64(3000)) == eb.Scenario(omega=500.0, Fr=3000.0)
+
+
+def test_a_lubricant_file_needs_its_viscosity_and_names_what_it_takes_from_the_papers_oil(tmp_path):
+    from exudyn_bearing.data import LubricantDefaultsWarning
+
+    empty = tmp_path / "empty.json"
+    empty.write_text("{}")
+    with pytest.raises(InputError, match=r"^viscosity: the lubricant 'empty' gives no viscosity"):
+        load_lubricant(str(empty))
+    with pytest.warns(LubricantDefaultsWarning, match=r"pressure_viscosity = 2.3e-08.* not given") as caught:
+        lub = load_lubricant({"name": "x", "viscosity": 0.02, "roughness_race": 2e-7})
+    assert "roughness_race" not in str(caught[0].message)  # what was given is not named
+    assert lub.viscosity == 0.02 and lub.pressure_viscosity == eb.lubricants["guessasma2018"].pressure_viscosity
+    import dataclasses
+    import warnings
+
+    full = dict(dataclasses.asdict(eb.lubricants["guessasma2018"]), name="full")
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", LubricantDefaultsWarning)  # a complete lubricant: no warning
+        load_lubricant(full)

@@ -169,6 +169,7 @@ def test_pocket_film_shear_dissipates_at_least_what_centred_balls_would(film_run
 
 
 @pytest.mark.filterwarnings("ignore::exudyn_bearing.SteadyStateWarning")  # a 2 ms run: its window is short
+@pytest.mark.filterwarnings("ignore::exudyn_bearing.EnergyBalanceWarning")  # a 2 ms run
 def test_the_element_and_the_command_line_take_the_pocket_film(capsys, tmp_path):
     from exudyn_bearing.cli import main
     from exudyn_bearing.solvers.element.element import element_scenario

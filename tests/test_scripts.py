@@ -33,8 +33,9 @@ def test_papers_scenario_script(tmp_path, capsys, load_script):
     assert "steady phase: cage" in capsys.readouterr().out
 
 
-# a short run: its summary window is not steady, as expected
+# a short run: its summary window is not steady, nor its energy balance closed, as expected
 @pytest.mark.filterwarnings("ignore::exudyn_bearing.SteadyStateWarning")
+@pytest.mark.filterwarnings("ignore::exudyn_bearing.EnergyBalanceWarning")
 def test_rotor_scenario_script(tmp_path, capsys, load_script):
     mod = load_script("scenarios/rotor_two_6208.py")
     # a short run to 30 rad/s (the speed limiter takes the last 1 % in about 25 ms)
@@ -52,8 +53,9 @@ def test_rotor_scenario_script(tmp_path, capsys, load_script):
     assert "full clearance" not in mod.__doc__
 
 
-# a short run: its summary window is not steady, as expected
+# a short run: its summary window is not steady, nor its energy balance closed, as expected
 @pytest.mark.filterwarnings("ignore::exudyn_bearing.SteadyStateWarning")
+@pytest.mark.filterwarnings("ignore::exudyn_bearing.EnergyBalanceWarning")
 @pytest.mark.filterwarnings("ignore::exudyn_bearing.BallInertiaWarning")  # expected: lightly loaded balls
 def test_7208_scenario_script(tmp_path, capsys, load_script):
     mod = load_script("scenarios/bearing_7208.py")

@@ -14,11 +14,11 @@ from .catalog import (catalog, default_lubricant, default_traction, get_bearing,
                       lubricants, materials, traction_models)
 from .defects import Defect
 from .errors import InputError
-from .lubricants import Lubricant
+from .lubricants import Lubricant, LubricantDefaultsWarning
 from .materials import Material
 from .traction import PARAMETER_NAMES as TRACTION_PARAMETERS, TRACTION_KINDS, TractionModel
 
-__all__ = ["InputError", "Material", "Lubricant", "BallBearing", "catalog", "materials", "lubricants",
+__all__ = ["InputError", "Material", "Lubricant", "LubricantDefaultsWarning", "BallBearing", "catalog", "materials", "lubricants",
            "get_bearing", "load_bearing", "load_lubricant", "default_lubricant", "default_traction",
            "TractionModel", "TRACTION_KINDS", "TRACTION_PARAMETERS", "traction_models", "get_traction_model", "MAX_FREE_CONTACT_ANGLE", "MAX_PRELOAD_INTERFERENCE",
            "Defect"]

@@ -38,6 +38,7 @@ from __future__ import annotations
 
 import dataclasses
 import json
+import warnings
 import math
 from importlib import resources
 from pathlib import Path
@@ -45,7 +46,7 @@ from typing import Mapping
 
 from .bearings import BallBearing, free_contact_angle_from_degrees
 from .errors import InputError, check_keys, lookup
-from .lubricants import Lubricant
+from .lubricants import Lubricant, LubricantDefaultsWarning
 from .materials import Material
 from .series import SERIES_SUFFIX, designation_dimensions, is_series_name, series_bearing, series_entry, series_names
 from .traction import TractionModel
@@ -106,10 +107,27 @@ def _material_from_dict(name: str, d) -> Material:
     return Material(**dict({"name": name}, **d))
 
 
+#: The values a lubricant file or dict leaves out are the papers' oil's (Lubricant's defaults); these are named
+#: when left out (what sets the film and the friction), the others (name, source) are not.
+_LUBRICANT_PHYSICAL = tuple(k for k in _LUBRICANT_KEYS if k not in ("name", "source"))
+
+
 def _lubricant_from_dict(name: str, d) -> Lubricant:
+    """A Lubricant from a file's or a dict's values: the viscosity is needed (a lubricant without it is no
+    lubricant), the other values left out are the papers' oil's, named in a :class:`LubricantDefaultsWarning`."""
     if not isinstance(d, Mapping):
         raise InputError(f"lubricant: expected an object of lubricant parameters, got {d!r}")
     check_keys("lubricant parameter", d, _LUBRICANT_KEYS)
+    if "viscosity" not in d:
+        raise InputError(f"viscosity: the lubricant {name!r} gives no viscosity [Pa s] (its values: "
+                         f"{', '.join(d) or 'none'}); a lubricant needs at least its viscosity at the operating "
+                         "temperature")
+    missing = [k for k in _LUBRICANT_PHYSICAL if k not in d]
+    if missing:
+        base = Lubricant()
+        warnings.warn(LubricantDefaultsWarning(
+            f"lubricant {name!r}: {', '.join(f'{k} = {getattr(base, k):g}' for k in missing)} not given, taken from "
+            f"the papers' oil ({base.name}, docs/theory/lubrication.md)"), stacklevel=3)
     return Lubricant(**dict({"name": name}, **d))
 
 

@@ -7,7 +7,12 @@ from dataclasses import dataclass
 from .errors import (LENGTH_MISTAKES, InputError, check_finite, check_nonnegative, check_plausible, check_positive,
                      check_text)
 
-__all__ = ["Lubricant", "MIN_COMPOSITE_ROUGHNESS", "PLAUSIBLE"]
+__all__ = ["Lubricant", "LubricantDefaultsWarning", "MIN_COMPOSITE_ROUGHNESS", "PLAUSIBLE"]
+
+
+class LubricantDefaultsWarning(UserWarning):
+    """A lubricant read from a file or dict that leaves out some of its values: those are the papers' oil's
+    (the defaults of :class:`Lubricant`, guessasma2018), named in the warning."""
 
 #: Plausible ranges of a lubricant's values and the unit mistakes they catch:
 #: (field, low, high, unit, rule, mistakes). Viscosities of bearing oils at

@@ -768,6 +768,7 @@ class Results:
                             **self.data)
         with warnings.catch_warnings():  # the summary's own call has warned; the file holds its "steady" entry
             warnings.simplefilter("ignore", SteadyStateWarning)
+            warnings.simplefilter("ignore", EnergyBalanceWarning)
             summary = self.summary()
         summary["meta"] = {"bearing": self.bearing.to_dict(), "load_angle": getattr(self.record, "load_angle", 0.0),
                            "scenario": dataclasses.asdict(self.scenario),

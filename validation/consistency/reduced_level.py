@@ -6,7 +6,7 @@
     against the reference engine (2 us) and the reduced engine standalone (its step) on the same scene, without
     cage (0.05 s, window the second half) and with the bearing's rigid cage (0.2 s, window 0.05-0.2 s, the reduced
     engine's test window), for Exudyn steps of 20 us (one reduced step each), 100 us (one reduced step of
-    100 us, or five of 20 us: ``reducedStep=2e-5``), 200 and 500 us (reduced steps of 20 us); the criteria of issue 37: loads 0.5 %, orbital speed 0.2 %,
+    100 us, or five of 20 us: ``reducedStep=2e-5``), 200 and 500 us (reduced steps of 20 us); the reduced engine's criteria (docs/theory/reduced.md): loads 0.5 %, orbital speed 0.2 %,
     dissipation 1 %; the lag check of the level (``lagForceMax``: the largest share of the ring force that the
     slow states' lag of one step changed, after the first step).
 (b) A 2.5 kg shaft (the mass of validation/consistency/levels_checks.py's test shaft, a polar inertia of 1 kg m^2
