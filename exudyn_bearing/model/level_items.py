@@ -10,10 +10,42 @@ from ..data import InputError
 from ..data.errors import check_finite
 from .solver_types import unstable_solver_error
 
-__all__ = ["NEWTON_RELATIVE_TOLERANCE", "check_solver", "load_pair", "rigid_marker", "sensor_function"]
+__all__ = ["NEWTON_RELATIVE_TOLERANCE", "check_solver", "load_pair", "level_settings", "rigid_marker",
+           "sensor_function"]
 
 #: Newton's relative tolerance in the levels' ``SimulationSettings`` (Exudyn's default: 1e-8)
 NEWTON_RELATIVE_TOLERANCE = 1e-4
+
+
+def level_settings(endTime, stepSize, solverType, sample_interval):
+    """A level's fixed-step ``exudyn.SimulationSettings``: ``solverType`` (a name or an
+    ``exudyn.DynamicSolverType``; one that does not integrate the levels is refused, :func:`check_solver`),
+    ``endTime`` / ``stepSize`` steps, no solution file, sensors written every ``sample_interval``, Newton's
+    absolute tolerance 1e-8 and relative tolerance NEWTON_RELATIVE_TOLERANCE (docs/theory/levels.md)."""
+    import exudyn as exu
+
+    from ..data.errors import check_positive
+
+    name = solverType if isinstance(solverType, str) else getattr(solverType, "name", str(solverType))
+    if not isinstance(getattr(exu.DynamicSolverType, name, None), exu.DynamicSolverType):
+        raise InputError(f"solverType: {solverType!r} is not an exudyn.DynamicSolverType")
+    check_solver(name)
+    h = check_positive("stepSize", stepSize)
+    ss = exu.SimulationSettings()
+    ss.timeIntegration.endTime = check_positive("endTime", endTime)
+    ss.timeIntegration.numberOfSteps = max(1, round(endTime / h))
+    ss.timeIntegration.verboseMode = 0
+    ss.timeIntegration.solverType = getattr(exu.DynamicSolverType, name)
+    # Newton's default absolute tolerance (1e-10) lies below the round-off of the ball equilibrium's forces
+    # near a static equilibrium, where the Newton iterations then stall and the step is cut again and again
+    ss.timeIntegration.newton.absoluteTolerance = 1e-8
+    # modified Newton keeps one Jacobian, which the turning ball set makes stale; 1e-4 instead of the
+    # default 1e-8 saves about two evaluations per step, and the motion it changes is below 0.5 % of what
+    # halving the step changes (validation/performance/bench_levels.py; docs/theory/levels.md, "Cost")
+    ss.timeIntegration.newton.relativeTolerance = NEWTON_RELATIVE_TOLERANCE
+    ss.solution.file.write = False
+    ss.solution.sensors.writePeriod = sample_interval
+    return ss
 
 
 def load_pair(load):

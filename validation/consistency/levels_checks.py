@@ -66,6 +66,20 @@ def shaft(load, omega=0.0, damper=True, start=None, moment=None):
     return sc, mbs, node, m_b, m_g, pos
 
 
+def solve_timed(mbs, ss, write_period=1e-3):
+    """Assemble ``mbs``, write its sensors every ``write_period`` [s] (None: as ``ss`` says) and solve it with
+    the settings ``ss`` (Exudyn's notes filtered, the package's warnings silenced: the scripts print their own
+    checks); the wall time of the solve [s]."""
+    mbs.Assemble()
+    if write_period is not None:
+        ss.solution.sensors.writePeriod = write_period
+    t0 = time.perf_counter()
+    with eb.filter_exudyn_notes(), warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        mbs.SolveDynamic(ss, solverType=ss.timeIntegration.solverType)
+    return time.perf_counter() - t0
+
+
 def check_static(out):
     rows, res = [], {}
     for fr, fa in ((FR, 0.0), (FR, FA)):

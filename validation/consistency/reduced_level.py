@@ -48,6 +48,7 @@ from exudyn_bearing.solvers.reduced import ReducedEngine
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from levels_checks import ROOT  # noqa: E402
 from levels_checks import shaft as test_shaft
+from levels_checks import solve_timed
 
 FR, OMEGA = 3000.0, 500.0
 KEYS = ("q_max_inner", "q_max_outer", "cage_speed", "dissipation")
@@ -81,13 +82,7 @@ def ring_shaft(mass, izz=1.0):
 
 def solve(mbs, br, node, t_end, step):
     mbs.SetNodeParameter(node, "initialCoordinates", [*br.initialCoordinates[:3], 0.0, 0.0, 0.0])
-    mbs.Assemble()
-    ss = br.SimulationSettings(t_end, stepSize=step)
-    t0 = time.perf_counter()
-    with eb.filter_exudyn_notes(), warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        mbs.SolveDynamic(ss, solverType=ss.timeIntegration.solverType)
-    return time.perf_counter() - t0
+    return solve_timed(mbs, br.SimulationSettings(t_end, stepSize=step), write_period=None)
 
 
 def pick(s):
@@ -202,14 +197,9 @@ def bench(repeat):
                                           initialOmega=OMEGA, sampleInterval=1e-3, **opts)
                 mbs.SetNodeParameter(node, "initialCoordinates", [*br.initialCoordinates[:3], 0.0, 0.0, 0.0])
                 ss = br.SimulationSettings(t_end, stepSize=step, solverType=solver)
-            mbs.Assemble()
-            ss.solution.sensors.writePeriod = 1e-3
-            t0 = time.perf_counter()
-            with eb.filter_exudyn_notes(), warnings.catch_warnings():
-                warnings.simplefilter("ignore")
-                mbs.SolveDynamic(ss, solverType=ss.timeIntegration.solverType)
+            wall = solve_timed(mbs, ss)
             if k:  # the first run compiles
-                walls.append((time.perf_counter() - t0) / t_end)
+                walls.append(wall / t_end)
         res[label] = {"wall_per_sim_s": statistics.median(walls), "runs": walls, "step": step, "t_end": t_end}
         print(f"    {label:48s} {res[label]['wall_per_sim_s']:8.2f} s per simulated second "
               f"(runs {', '.join(f'{w:.2f}' for w in walls)})")

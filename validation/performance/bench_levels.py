@@ -39,7 +39,7 @@ import exudyn_bearing as eb
 from exudyn_bearing.simulate import quasistatic_start
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "consistency"))  # levels_checks.py, peer_builtin.py
-from levels_checks import ROOT, load_rotor_scenario, shaft  # noqa: E402
+from levels_checks import ROOT, load_rotor_scenario, shaft, solve_timed  # noqa: E402
 
 FR, OMEGA = 3000.0, 500.0
 
@@ -74,13 +74,7 @@ def one_bearing(model, options, solver, h, t_end):
                                       sampleInterval=1e-3, **options)
             mbs.SetNodeParameter(node, "initialCoordinates", [*br.initialRingDisplacement, 0.0])
             ss = br.SimulationSettings(t_end, stepSize=h, solverType=solver)
-        mbs.Assemble()
-        ss.solution.sensors.writePeriod = 1e-3
-        t0 = time.perf_counter()
-        with eb.filter_exudyn_notes(), warnings.catch_warnings():
-            warnings.simplefilter("ignore")
-            mbs.SolveDynamic(ss, solverType=ss.timeIntegration.solverType)
-        run.solve = time.perf_counter() - t0
+        run.solve = solve_timed(mbs, ss)
         run.evaluations = (br.samples()["evaluations"] / round(t_end / h)
                            if model != "balls" and options.get("coefficientSpeeds") is None else None)
     return run

@@ -53,8 +53,8 @@ from ...model.layout import (
     P_W_OUTER,
 )
 from ...model.level_items import (
-    NEWTON_RELATIVE_TOLERANCE,
     check_solver,
+    level_settings,
     rigid_marker,
     sensor_function,
 )
@@ -277,23 +277,7 @@ class ReducedBearing:
         """Fixed-step settings (default: GeneralizedAlpha at 2e-5 s, a step of the reduced engine's checks), no
         solution file, sensors written every sample interval, Newton's absolute tolerance 1e-8 and relative
         tolerance NEWTON_RELATIVE_TOLERANCE, as the other levels (docs/theory/levels.md)."""
-        import exudyn as exu
-
-        name = solverType if isinstance(solverType, str) else getattr(solverType, "name", str(solverType))
-        if not isinstance(getattr(exu.DynamicSolverType, name, None), exu.DynamicSolverType):
-            raise InputError(f"solverType: {solverType!r} is not an exudyn.DynamicSolverType")
-        check_solver(name)
-        h = check_positive("stepSize", stepSize)
-        ss = exu.SimulationSettings()
-        ss.timeIntegration.endTime = check_positive("endTime", endTime)
-        ss.timeIntegration.numberOfSteps = max(1, round(endTime / h))
-        ss.timeIntegration.verboseMode = 0
-        ss.timeIntegration.solverType = getattr(exu.DynamicSolverType, name)
-        ss.timeIntegration.newton.absoluteTolerance = 1e-8
-        ss.timeIntegration.newton.relativeTolerance = NEWTON_RELATIVE_TOLERANCE
-        ss.solution.file.write = False
-        ss.solution.sensors.writePeriod = self.sampleInterval
-        return ss
+        return level_settings(endTime, stepSize, solverType, self.sampleInterval)
 
     # -- evaluation (inside Newton) ---------------------------------------------------------------------------------
     def _begin(self, t):

@@ -29,6 +29,7 @@ from ....model.level_items import (  # noqa: F401 (shared with the reduced level
     _load_pair,
     _sensor_function,
     check_solver,
+    level_settings,
     rigid_marker,
 )
 from ....model.load_angle import LOAD_ANGLE_RANGE, check_load_angle, load_rotation  # noqa: F401 (re-exported)
@@ -343,28 +344,7 @@ class LevelBearing:
         """Fixed-step settings (default: GeneralizedAlpha at 1e-4 s), no solution file, sensors written every
         sample interval, Newton's absolute tolerance 1e-8 and relative tolerance NEWTON_RELATIVE_TOLERANCE
         (docs/theory/levels.md)."""
-        import exudyn as exu
-
-        name = solverType if isinstance(solverType, str) else getattr(solverType, "name", str(solverType))
-        if not isinstance(getattr(exu.DynamicSolverType, name, None), exu.DynamicSolverType):
-            raise InputError(f"solverType: {solverType!r} is not an exudyn.DynamicSolverType")
-        check_solver(name)
-        h = check_positive("stepSize", stepSize)
-        ss = exu.SimulationSettings()
-        ss.timeIntegration.endTime = check_positive("endTime", endTime)
-        ss.timeIntegration.numberOfSteps = max(1, round(endTime / h))
-        ss.timeIntegration.verboseMode = 0
-        ss.timeIntegration.solverType = getattr(exu.DynamicSolverType, name)
-        # Newton's default absolute tolerance (1e-10) lies below the round-off of the ball equilibrium's forces
-        # near a static equilibrium, where the Newton iterations then stall and the step is cut again and again
-        ss.timeIntegration.newton.absoluteTolerance = 1e-8
-        # modified Newton keeps one Jacobian, which the turning ball set makes stale; 1e-4 instead of the
-        # default 1e-8 saves about two evaluations per step, and the motion it changes is below 0.5 % of what
-        # halving the step changes (validation/performance/bench_levels.py; docs/theory/levels.md, "Cost")
-        ss.timeIntegration.newton.relativeTolerance = NEWTON_RELATIVE_TOLERANCE
-        ss.solution.file.write = False
-        ss.solution.sensors.writePeriod = self.sampleInterval
-        return ss
+        return level_settings(endTime, stepSize, solverType, self.sampleInterval)
 
     def samples(self) -> dict:
         """The sampled series: ``t``, ``displacement`` (n, 5) (inner ring against the outer ring, outer-ring
