@@ -290,6 +290,19 @@ CASES = [
     Case("t37_reference_refuses_tolerance", "refuse", "tolerance",
          cli=("simulate", "6208", "--Fr", "3000", "--omega", "500", "--t-end", "0.001", "--tolerance", "1e-4",
               "--no-progress")),
+    # a tolerance below what the step control can meet, a first step below its least step, a lubricant without
+    # its viscosity, an --out that is a file: refused before the run, by name
+    Case("u38_tolerance_below_floor", "refuse", "tolerance",
+         api="report(lambda: eb.Scenario(Fr=3000.0, omega=500.0, tolerance=1e-9))"),
+    Case("u38_first_step_below_least", "refuse", "dt",
+         cli=("simulate", "6208", "--Fr", "3000", "--omega", "500", "--engine", "reduced", "--cage", "none",
+              "--traction-level", "ellipse", "--dt", "1e-8", "--tolerance", "1e-5", "--t-end", "0.001",
+              "--no-progress")),
+    Case("u38_lubricant_without_viscosity", "refuse", "viscosity",
+         api="report(lambda: eb.load_lubricant({'name': 'x', 'pressure_viscosity': 2e-8}))"),
+    Case("u38_out_is_a_file", "refuse", "--out",
+         cli=("simulate", "6208", "--Fr", "3000", "--omega", "500", "--t-end", "0.001", "--no-progress", "--out",
+              "README.md")),
 ]
 
 
