@@ -155,6 +155,7 @@ def test_element_options_take_a_lubricant_name_and_one_defect():
     assert eb.load_lubricant("MIL-L-23699_492K") is eb.lubricants["MIL-L-23699_492K"]
 
 
+@pytest.mark.filterwarnings("ignore::exudyn_bearing.data.LubricantDefaultsWarning")  # a viscosity-only lubricant
 def test_sweep_specs_go_through_one_check():
     from exudyn_bearing.simulate import spec_inputs
     kw = spec_inputs({"bearing": "6208", "scenario": {"Fr": 3000.0}, "lubricant": "MIL-L-23699_492K"})
