@@ -22,6 +22,7 @@ def test_a_ring_at_rest_is_steady_although_its_speeds_are_settling_noise(at_rest
     assert st["steady"], st["reason"]
     # the speeds are tiny, not zero: the verdict comes from the floor, not from exact rest
     assert 0.0 < abs(at_rest["ball_spin"]) < 1.0
+    assert at_rest["srr_mean"] is None  # nothing rolls: no slide-to-roll ratio of two noises
 
 
 def test_the_point_friction_model_is_not_named_at_the_ellipse_level(at_rest):

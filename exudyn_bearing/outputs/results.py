@@ -150,6 +150,8 @@ SUMMARY_UNITS = {
 #: What the loss and energy keys of the summary mean (docs/theory/dynamics.md,
 #: "Losses and the energy balance"); every summary carries it as ``descriptions``.
 SUMMARY_DESCRIPTIONS = {
+    "srr_mean": "mean slide-to-roll ratio of the loaded contacts that roll (rolling speed at least the scenario's "
+                "regularizing_speed) over the window; None (n/a) when none rolls, as at rest",
     "q_max_inner": "load of the ball at psi = 0 over the window, inner race (q_max_method: how it was obtained)",
     "q_max_outer": "load of the ball at psi = 0 over the window, outer race (q_max_method: how it was obtained)",
     "friction_torque": "torque that drives the inner ring about its axis, time mean: minus the torque of the balls "
@@ -663,6 +665,10 @@ class Results:
         n_loaded = max(int(loaded.sum()), 1)
         frac = {name: float(np.sum(reg == code)) / n_loaded for code, name in enumerate(REGIME_NAMES)}
         srr = np.stack([self.contact("srr", "inner")[w], self.contact("srr", "outer")[w]])
+        # the slide-to-roll ratio of contacts that roll: a rolling speed below the regularising speed (at rest, a
+        # ball leaving the load zone at rest) makes the ratio of two noises
+        rolling = loaded & (np.stack([self.contact("u_r", "inner")[w], self.contact("u_r", "outer")[w]])
+                            >= self.scenario.regularizing_speed)
         omega = float(np.mean(self.global_series("omega")[w]))
         omega_outer = float(np.mean(self.omega_outer_series()[w]))
         level = self.scenario.traction_level
@@ -693,7 +699,7 @@ class Results:
             "lambda_outer_psi0": nanmean(lam_o),
             "lambda_inner_psi0": nanmean(lam_i),
             "regime_fraction": frac,
-            "srr_mean": float(np.mean(srr[loaded])) if loaded.any() else None,
+            "srr_mean": float(np.mean(srr[rolling])) if rolling.any() else None,
             "ring_displacement": [float(x) for x in np.mean(self.data["ring"][w, :3], axis=0)],
             "friction_torque": -float(np.mean(self.global_series("ring_torque")[w])),
             "friction_power": float(np.mean(self.global_series("friction_power")[w])),
