@@ -215,6 +215,9 @@ def test_help_lists_the_exit_statuses_main_returns(capsys):
     text = " ".join(capsys.readouterr().out.split())
     for status, meaning in EXIT_STATUSES.items():
         assert f"{status} {meaning}" in text
+    for command in ("simulate", "quasistatic"):  # and every command's help
+        assert exit_code([command, "--help"]) == 0
+        assert "exit status: 0 done" in " ".join(capsys.readouterr().out.split())
     # the documented bad-input status is the one returned
     assert exit_code(["static", "6208", "--lubricant", "olive-oil"]) == 2
 

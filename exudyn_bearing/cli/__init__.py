@@ -87,6 +87,8 @@ def _parser(argv=None) -> Parser:
     names = [argv[0]] if argv and argv[0] in COMMANDS else COMMANDS
     for name in names:
         command_module(name).add_parser(sub)
+    for command in sub.choices.values():  # every command's --help ends with the exit statuses
+        command.epilog = EPILOG
     return p
 
 
