@@ -871,27 +871,30 @@ def _land_force(p, ex, ey, evx, evy, omega_sum):
 
 
 @kernel(no_runtime=True, inline="always")
-def _pocket_film_force(p, xb, vb, j, cx, cy, ux, uy, uz, wc, nx, ny, nz, sx, sy, sz, h, ddot, m_eff, tau, floor):
-    """The net force [N] of ball j's pocket film along -n (off the wall the ball approaches: docs/theory/cage.md,
-    "Pocket oil film"): the film at the near wall (gap ``h``, at least ``floor``) less the film at the opposite
-    wall (gap h + 2 c_p), each hydrodynamic (the entraining speed: half the ball's sliding ``s`` on the wall
-    less the contact point's own speed in the cage, the ball centre's across n) plus squeeze (approach speed
-    ``ddot`` toward the near wall, -ddot toward the far one; backward-Euler over ``tau`` with implicit cage
-    damping). Net zero for a centred, still ball; continuous as the ball crosses the pocket's centre."""
-    gap = p[P_POCKET_GAP]
+def _pocket_film_gaps(p, h, floor):
+    """(near, far) [m]: the pocket film's gaps at the wall the ball approaches (``h``) and at the opposite wall
+    (h + 2 c_p), each at least ``floor`` (the composite roughness)."""
+    near = h if h > floor else floor
+    far = h + 2.0 * p[P_POCKET_GAP]
+    if far < floor:
+        far = floor
+    return near, far
+
+
+@kernel(inline="always")
+def _pocket_film_force(p, qx, qy, qz, nx, ny, nz, sx, sy, sz, near, far, ddot, m_eff, tau):
+    """The net force [N] of a ball's pocket film along -n (off the wall the ball approaches: docs/theory/cage.md,
+    "Pocket oil film"): the film at the near wall (gap ``near``) less the film at the opposite wall (gap
+    ``far``; :func:`_pocket_film_gaps`), each hydrodynamic (the entraining speed: half the ball's sliding ``s``
+    on the wall less the contact point's own speed in the cage, the ball centre's velocity ``q`` relative to
+    the cage across n) plus squeeze (approach speed ``ddot`` toward the near wall, -ddot toward the far one;
+    backward-Euler over ``tau`` with implicit cage damping). Net zero for a centred, still ball; continuous as
+    the ball crosses the pocket's centre."""
     rb = p[P_RB]
-    # the ball centre's velocity in the cage frame, across n: the contact point's own speed
-    qx = vb[j, 0] - (ux - wc * (xb[j, 1] - cy))
-    qy = vb[j, 1] - (uy + wc * (xb[j, 0] - cx))
-    qz = vb[j, 2] - uz
     qn = qx * nx + qy * ny + qz * nz
     ue_x, ue_y, ue_z = 0.5 * sx - (qx - qn * nx), 0.5 * sy - (qy - qn * ny), 0.5 * sz - (qz - qn * nz)
     u = math.sqrt(ue_x * ue_x + ue_y * ue_y + ue_z * ue_z)
     eta, r_x, h_hat = p[P_POCKET_ETA], p[P_POCKET_FILM_RX], p[P_POCKET_FILM_HHAT]
-    near = h if h > floor else floor
-    far = h + 2.0 * gap
-    if far < floor:
-        far = floor
     w1, c1 = _hydrodynamic_film_load(eta, u, r_x, h_hat, near), _squeeze_film_damping(eta, rb, near)
     w2, c2 = _hydrodynamic_film_load(eta, u, r_x, h_hat, far), _squeeze_film_damping(eta, rb, far)
     if tau > 0.0:
@@ -906,21 +909,14 @@ def _pocket_film_force(p, xb, vb, j, cx, cy, ux, uy, uz, wc, nx, ny, nz, sx, sy,
 
 
 @kernel(inline="always")
-def _pocket_film_shear(p, xb, vb, wb, j, cx, cy, ux, uy, uz, wc, nx, ny, nz, h, floor):
-    """The film's shear force and moment (about the ball's centre) on ball j in its pocket (docs/theory/cage.md,
+def _pocket_film_shear(p, qx, qy, qz, ox, oy, oz, nx, ny, nz, near, far):
+    """The film's shear force and moment (about the ball's centre) on a ball in its pocket (docs/theory/cage.md,
     "Pocket oil film"): :func:`~exudyn_bearing.physics.pocket_film.sphere_wall_shear` at the near wall (normal
-    n, gap ``h``) and at the far wall (normal -n, gap h + 2 c_p), each at least ``floor``, for the ball's
-    velocity and angular velocity relative to the cage (the wall's point under the ball's centre moves with
-    the cage's translation and spin). Returns the force (3), the moment (3) and the power it dissipates [W]."""
+    n, gap ``near``) and at the far wall (normal -n, gap ``far``; :func:`_pocket_film_gaps`), for the ball's
+    velocity ``q`` and angular velocity ``o`` relative to the cage (the wall's point under the ball's centre
+    moves with the cage's translation and spin). Returns the force (3), the moment (3) and the power it
+    dissipates [W]."""
     eta, rb = p[P_POCKET_ETA], p[P_RB]
-    qx = vb[j, 0] - (ux - wc * (xb[j, 1] - cy))
-    qy = vb[j, 1] - (uy + wc * (xb[j, 0] - cx))
-    qz = vb[j, 2] - uz
-    ox, oy, oz = wb[j, 0], wb[j, 1], wb[j, 2] - wc
-    near = h if h > floor else floor
-    far = h + 2.0 * p[P_POCKET_GAP]
-    if far < floor:
-        far = floor
     f1x, f1y, f1z, m1x, m1y, m1z = _sphere_wall_shear(eta, rb, near, nx, ny, nz, qx, qy, qz, ox, oy, oz)
     f2x, f2y, f2z, m2x, m2y, m2z = _sphere_wall_shear(eta, rb, far, -nx, -ny, -nz, qx, qy, qz, ox, oy, oz)
     fx, fy, fz, mx, my, mz = f1x + f2x, f1y + f2y, f1z + f2z, m1x + m2x, m1y + m2y, m1z + m2z
@@ -1034,10 +1030,14 @@ def _rigid_cage(p, xb, vb, wb, xc, vc, rings, fb, tb, fc, fr, glob, cage_load, w
         # the film's shear (near wall along n, far wall along -n), as force and moment about the ball's centre
         shx = shy = shz = smx = smy = smz = sh_power = 0.0
         if film:
-            f += _pocket_film_force(p, xb, vb, j, cx, cy, ux, uy, uz, wc, nx, ny, nz, sx, sy, sz, -delta, ddot,
-                                    m_eff, tau, film_floor)
-            shx, shy, shz, smx, smy, smz, sh_power = _pocket_film_shear(p, xb, vb, wb, j, cx, cy, ux, uy, uz, wc,
-                                                                        nx, ny, nz, -delta, film_floor)
+            # the ball centre's velocity and angular velocity relative to the cage, and the two films' gaps
+            qx = vb[j, 0] - (ux - wc * (xb[j, 1] - cy))
+            qy = vb[j, 1] - (uy + wc * (xb[j, 0] - cx))
+            qz = vb[j, 2] - uz
+            near, far = _pocket_film_gaps(p, -delta, film_floor)
+            f += _pocket_film_force(p, qx, qy, qz, nx, ny, nz, sx, sy, sz, near, far, ddot, m_eff, tau)
+            shx, shy, shz, smx, smy, smz, sh_power = _pocket_film_shear(p, qx, qy, qz, wb[j, 0], wb[j, 1],
+                                                                        wb[j, 2] - wc, nx, ny, nz, near, far)
         gx, gy, gz = tx - f * nx, ty - f * ny, tz - f * nz  # the pocket's force on the ball, at the contact point
         fb[j, 0] += gx + shx
         fb[j, 1] += gy + shy
