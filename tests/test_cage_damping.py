@@ -121,17 +121,17 @@ def test_a_start_up_at_7_us_with_implicit_cage_damping_keeps_the_resolved_loads(
 
 def test_the_implicit_damping_dissipates_what_it_takes(resolved):
     # the engine counts the applied damping force's power as dissipation, so the drive work of the whole
-    # start-up = dissipated work + kinetic energy of the balls and cage balls, as with the explicit damping.
-    # Taken as the median over the run's last 11 samples (1 ms): a sample that falls into a cage impact
-    # sees kinetic energy stored in the contact's elastic energy, which the balance leaves out
-    # (docs/theory/dynamics.md, "Losses and the energy balance")
-    col = {k: GLOBAL_FIELDS.index(k) for k in ("drive_work", "dissipated_work", "kinetic_energy")}
+    # start-up = dissipated work + kinetic energy of the balls and cage balls + the elastic energy stored in
+    # the contacts, as with the explicit damping, at each of the run's last 11 samples (1 ms): a sample that
+    # falls into a cage impact holds part of the energy in the contact (docs/theory/dynamics.md, "Losses and
+    # the energy balance")
+    col = {k: GLOBAL_FIELDS.index(k) for k in ("drive_work", "dissipated_work", "kinetic_energy", "contact_energy")}
     for run in (resolved, _start_up(7e-6, "implicit")):
         g = run.data["glob"][-11:] - run.data["glob"][0]
         drive = g[:, col["drive_work"]]
         assert drive.min() > 0.0
-        rel = (drive - g[:, col["dissipated_work"]] - g[:, col["kinetic_energy"]]) / drive
-        assert abs(np.median(rel)) < 0.01
+        rel = (drive - g[:, col["dissipated_work"]] - g[:, col["kinetic_energy"]] - g[:, col["contact_energy"]]) / drive
+        assert np.abs(rel).max() < 0.01
 
 
 def _evaluate_with_cage_ball(xc_row):

@@ -105,7 +105,7 @@ from .layout import (D_POWER, D_ROLL, D_SPIN, D_SPIN_MOMENT, P_GROWTH_I, P_GROWT
                      P_RD_I, P_RD_O, P_TRACTION_CODE, P_TRACTION_LEVEL, P_TRACTION_PARAMS)
 from .layout import (D_A, D_ANGLE, D_B, D_DEFECT, D_FRICTION, D_HMIN, D_LAMBDA, D_LOAD, D_MU, D_OVERLAP, D_PMAX,
                      D_REGIME, D_SLIP, D_SRR, D_UR, DEF_BALL, DEF_N, DF_ACROSS, DF_BALL, DF_DEPTH, DF_DIR, DF_EDGE,
-                     G_DAMP_POWER, G_DISS_WORK, G_DRIVE_POWER, G_DRIVE_WORK, G_KINETIC, P_IB,
+                     G_CONTACT_ENERGY, G_DAMP_POWER, G_DISS_WORK, G_DRIVE_POWER, G_DRIVE_WORK, G_KINETIC, P_IB,
                      DF_HL, DF_HW, DF_POS, DF_RACE, FRIC_HISTORY, H_E1, H_E2, P_DEF0, P_NDEF, R_ANGLE, FRIC_REGULARIZED, G_OMEGA, G_OUTER_FX, G_OUTER_FY,
                      G_OUTER_FZ, G_OUTER_TORQUE, G_POWER, G_RING_FX, G_RING_FY, G_RING_FZ, G_RING_TORQUE, G_WORST,
                      P_ALPHA_E, P_CAGE, P_CAGE_TAU, P_DT, P_EPRIME, P_ETA, P_FILM, P_FRIC, P_HERTZ, P_K_BB, P_K_BZ,
@@ -242,6 +242,14 @@ def _normal_law(p, delta, kappa, ell_f, ell_e, rr):
     kst = _stiffness(kappa, ell_f, ell_e, rr, p[P_EPRIME])
     sq = math.sqrt(delta)
     return kst * delta * sq, 1.5 * kst * sq, _damping_hysteretic(kst, delta, p[P_ALPHA_E])
+
+
+@kernel(inline="always")
+def _hertz_energy(f_el, delta):
+    """Elastic energy [J] stored in a Hertz contact of overlap ``delta`` [m] carrying the elastic force
+    ``f_el`` = K delta^1.5 [N]: the integral of K d^1.5 over d from 0 to delta, K delta^2.5 / 2.5 =
+    0.4 f_el delta (Johnson, Contact Mechanics, 1985, sec. 4.2; docs/theory/contact.md)."""
+    return 0.4 * f_el * delta
 
 
 @kernel(inline="always")
@@ -628,7 +636,8 @@ def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist,
     the ring (fr); writes the spring to ``hist_out`` and, with ``want``, the
     diagnostics. Returns (overlap / R_b, frictional power [W], dissipation of
     the normal damping [W], of the EHL rolling and of the hysteresis rolling
-    resistance [W]); zeros when the contact is open. ``ln_g`` = ln(xi E');
+    resistance [W], the elastic energy stored in the contact [J]: the
+    integral of the elastic load over the overlap); zeros when the contact is open. ``ln_g`` = ln(xi E');
     ``defect_path``, ``ellipse_path``, ``loss_path``: None compiles the contact
     without the defect drop, the ellipse traction or the rolling resistance
     (:func:`forces`)."""
@@ -648,7 +657,7 @@ def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist,
             delta -= drop
     if delta <= 0.0:
         _open_contact(hist_out, diag, j, race, delta, ca, sa, drop, want)
-        return 0.0, 0.0, 0.0, 0.0, 0.0
+        return 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
     # contact normal in the world frame, n = A n_local
     if rotated:
         nx = rings[race, 6] * nlx + rings[race, 7] * nly + rings[race, 8] * nlz
@@ -767,7 +776,9 @@ def _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out, dt_hist,
         diag[j, race, D_SPIN_MOMENT] = m_z
         diag[j, race, D_ROLLRES] = p_ehl + p_hyst
     # dissipation of the normal damping: the applied normal force beyond the elastic one times the approach rate
-    return delta / rb, power, (f_n - q_el) * ddot, p_ehl, p_hyst
+    # the elastic energy: Hertz's 0.4 Q delta, or the power law's Q delta / (n + 1)
+    stored = q_el * delta / (1.0 + p[P_LAW_N]) if p[P_LAW] > 0.5 else _hertz_energy(q_el, delta)
+    return delta / rb, power, (f_n - q_el) * ddot, p_ehl, p_hyst, stored
 
 
 @kernel(inline="always")
@@ -776,14 +787,14 @@ def _pair_contact(ia, ib, xb, vb, fb, px_, pv_, pf_, r_sum, k_pair, m_pair, tau)
     without cage): frictionless Hertz with critical damping, taken implicit
     over the step ``tau`` (:func:`_implicit_damping`; 0: explicit); adds the
     force to fb[ia] and its reaction to pf_[ib]; returns the contact force
-    [N], the dissipation of its damping [W] and its overlap [m] (for the
-    runaway measure of :func:`forces`)."""
+    [N], the dissipation of its damping [W], its overlap [m] (for the
+    runaway measure of :func:`forces`) and its elastic energy [J]."""
     dx = xb[ia, 0] - px_[ib, 0]
     dy = xb[ia, 1] - px_[ib, 1]
     dz = xb[ia, 2] - px_[ib, 2]
     d2 = dx * dx + dy * dy + dz * dz
     if not (d2 < r_sum * r_sum and d2 > 0.0):
-        return 0.0, 0.0, 0.0
+        return 0.0, 0.0, 0.0, 0.0
     dist = math.sqrt(d2)
     delta = r_sum - dist
     inv = 1.0 / dist
@@ -803,7 +814,7 @@ def _pair_contact(ia, ib, xb, vb, fb, px_, pv_, pf_, r_sum, k_pair, m_pair, tau)
     pf_[ib, 0] -= f * nx
     pf_[ib, 1] -= f * ny
     pf_[ib, 2] -= f * nz
-    return f, (f - f_el) * ddot, delta
+    return f, (f - f_el) * ddot, delta, _hertz_energy(f_el, delta)
 
 
 @kernel(inline="always")
@@ -812,17 +823,17 @@ def _guide_contact(k, p, xc, vc, rings, fc, fr):
     centre circle r_p in the ring's radial plane, tube radius R_z + guide
     clearance; frictionless Hertz, R_eq = R_z, critical damping. Adds the
     force to fc[k] and its reaction to fr[1]; returns the dissipation of its
-    damping [W] and the overlap [m] (for the runaway measure of :func:`forces`;
-    NaN for a non-finite cage ball)."""
+    damping [W], the overlap [m] (for the runaway measure of :func:`forces`;
+    NaN for a non-finite cage ball) and its elastic energy [J]."""
     rz = p[P_RZ]
     free = p[P_RGUIDE] - rz
     dxw, dyw, dzw, cx, cy, cz, _rot = _ring_frame(rings, 1, xc[k, 0], xc[k, 1], xc[k, 2])
     dr = math.sqrt(cx * cx + cy * cy) - p[P_RP]
     if dr * dr + cz * cz <= free * free:  # False for a non-finite cage ball: its NaN reaches the ratio
-        return 0.0, 0.0
+        return 0.0, 0.0, 0.0
     delta, nlx, nly, nlz, _ca, _sa, _rc = _groove_geometry(cx, cy, cz, p[P_RP], 0.0, p[P_RGUIDE], rz, False)
     if delta <= 0.0:
-        return 0.0, 0.0
+        return 0.0, 0.0, 0.0
     nx = rings[1, 6] * nlx + rings[1, 7] * nly + rings[1, 8] * nlz
     ny = rings[1, 9] * nlx + rings[1, 10] * nly + rings[1, 11] * nlz
     nz = rings[1, 12] * nlx + rings[1, 13] * nly + rings[1, 14] * nlz
@@ -847,8 +858,8 @@ def _guide_contact(k, p, xc, vc, rings, fc, fr):
         fr[1, 3] += mx_
         fr[1, 4] += my_
         fr[1, 5] += mz_
-        return (f - f_el) * vn, delta
-    return 0.0, delta
+        return (f - f_el) * vn, delta, _hertz_energy(f_el, delta)
+    return 0.0, delta, _hertz_energy(f_el, delta)
 
 
 @kernel(inline="always")
@@ -944,7 +955,7 @@ def _rigid_cage(p, xb, vb, wb, xc, vc, rings, fb, tb, fc, fr, glob, cage_load, w
     (fb, tb), to the cage (``fc[0]`` the force, ``fc[1, 0]`` the moment about the axis times m_c / I_c, so
     that the integrators' common 1/m_c turns it into the angular acceleration) and to the guiding ring
     (fr). Returns the largest overlap of a pocket over R_b (for the runaway measure) and writes the
-    dissipation of pockets and land to ``glob``."""
+    dissipation of pockets and land and the elastic energy of their contacts to ``glob``."""
     z = xb.shape[0]
     rb = p[P_RB]
     rp = p[P_RP]
@@ -961,6 +972,7 @@ def _rigid_cage(p, xb, vb, wb, xc, vc, rings, fb, tb, fc, fr, glob, cage_load, w
     cyl = p[P_POCKET_SHAPE] < 0.5
     fcx, fcy, fcz, tcz = 0.0, 0.0, 0.0, 0.0
     pocket_power = 0.0
+    stored = 0.0  # the elastic energy of the pocket and land contacts [J]
     worst = 0.0
     pitch = 2.0 * math.pi / z
     spacing = p[P_POCKET_SPACING]
@@ -1021,6 +1033,7 @@ def _rigid_cage(p, xb, vb, wb, xc, vc, rings, fb, tb, fc, fr, glob, cage_load, w
             f = f_el + c * ddot
             if f < 0.0:
                 f = 0.0
+            stored += _hertz_energy(f_el, delta)
         sx, sy, sz = vrx - ddot * nx, vry - ddot * ny, vrz - ddot * nz
         slip = math.sqrt(sx * sx + sy * sy + sz * sz)
         tx, ty, tz = 0.0, 0.0, 0.0
@@ -1104,6 +1117,7 @@ def _rigid_cage(p, xb, vb, wb, xc, vc, rings, fb, tb, fc, fr, glob, cage_load, w
         land_power = -(flx * evx + fly * evy) - t_sh * (wc - w_r) + exf * w_r
         if pen > 0.0:
             land_power -= pen * (ex * evx + ey * evy) / e
+            stored += 0.5 * pen * (e - eps_c * cl)  # the linear land contact's k (e - eps_c c)^2 / 2
     # gravity and the unbalance's centrifugal force U omega_c^2 along the cage's angle 0 (its angular
     # acceleration's share, U omega_c', is left out), at the cage's centre; their power counts as drive
     un = p[P_UNBALANCE] * wc * wc
@@ -1117,6 +1131,7 @@ def _rigid_cage(p, xb, vb, wb, xc, vc, rings, fb, tb, fc, fr, glob, cage_load, w
     fc[1, 0] = (tcz + t_sh) * mc / p[P_IC]
     glob[G_POCKET_POWER] = pocket_power
     glob[G_LAND_POWER] = land_power
+    glob[G_CONTACT_ENERGY] = stored
     if want:
         glob[G_LAND_FX] = flx
         glob[G_LAND_FY] = fly
@@ -1219,6 +1234,7 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb,
     ehl_sum = 0.0
     hyst_sum = 0.0
     drag_sum = 0.0
+    stored_sum = 0.0  # the elastic energy of the contacts [J]
     ln_g = math.log(p[P_XI] * p[P_EPRIME]) if p[P_LUB] > 0.5 else 0.0  # the film's ln G, a scene constant
     if hz.shape[2] < HZ_N:
         return np.nan  # a cache without the geometry columns (the callers allocate HZ_N)
@@ -1247,7 +1263,7 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb,
             if defects:
                 _turn_ball_frame(p, hist, hist_out, dt_hist, wb, j)
         for race in range(2):
-            ratio, power, damp, p_ehl, p_hyst = _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out,
+            ratio, power, damp, p_ehl, p_hyst, stored = _race_contact(j, race, p, table, xb, vb, wb, rings, hist, hist_out,
                                                               dt_hist, hz, fb, tb, fr, diag, want, ln_g, defect_path,
                                                               ellipse_path, loss_path)
             if ratio > worst or ratio != ratio:  # a NaN state is the worst: the engines stop on it
@@ -1256,10 +1272,12 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb,
             damp_sum += damp
             ehl_sum += p_ehl
             hyst_sum += p_hyst
+            stored_sum += stored
     if p[P_RIGID] > 0.5:  # the rigid cage: pockets and land
         ratio = _rigid_cage(p, xb, vb, wb, xc, vc, rings, fb, tb, fc, fr, glob, cage_load, want)
         if ratio > p[P_MAX_OVERLAP] or ratio != ratio:
             worst = ratio
+        stored_sum += glob[G_CONTACT_ENERGY]
     else:
         # ball / cage-ball contacts (two per cage ball) or, without cage, ball / ball
         cage = p[P_CAGE] > 0.5
@@ -1285,8 +1303,10 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb,
             for m in range(n_pair):
                 ia = k if m == 0 else k2          # ball
                 ib = k if cage else k2            # cage ball k, or the next ball
-                f, damp, overlap = _pair_contact(ia, ib, xb, vb, fb, px_, pv_, pf_, r_sum, k_pair, m_pair, tau)
+                f, damp, overlap, stored = _pair_contact(ia, ib, xb, vb, fb, px_, pv_, pf_, r_sum, k_pair, m_pair,
+                                                         tau)
                 damp_sum += damp
+                stored_sum += stored
                 if overlap > cage_overlap:
                     cage_overlap = overlap
                 if want:
@@ -1294,8 +1314,9 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb,
             if want and not cage:
                 cage_load[k, 1] = 0.0
             if cage:
-                damp, overlap = _guide_contact(k, p, xc, vc, rings, fc, fr)
+                damp, overlap, stored = _guide_contact(k, p, xc, vc, rings, fc, fr)
                 damp_sum += damp
+                stored_sum += stored
                 if overlap > cage_overlap or overlap != overlap:  # NaN: a non-finite cage ball (stays the worst)
                     cage_overlap = overlap
         # a runaway (or non-finite) cage contact stops the engines like a ball contact
@@ -1316,6 +1337,7 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb,
     if want:
         _global_diagnostics(rings, fr, power_sum, worst, glob)
         glob[G_KINETIC] = _kinetic_energy(p, vb, wb, vc)
+    glob[G_CONTACT_ENERGY] = stored_sum
     return worst
 
 

@@ -299,8 +299,8 @@ NDIAG = len(DIAG_FIELDS)
 #: hysteresis_power + drag_power), accumulated by the engine
 #: at every step; ``kinetic_energy`` of the balls (translation and rotation)
 #: and cage balls (translation) in the world frame. Over a window,
-#: drive_work = dissipated_work + kinetic_energy change + the change of the
-#: energy stored in the contacts (elastic overlap, tangential springs).
+#: drive_work = dissipated_work + kinetic_energy change + contact_energy
+#: change (the tangential springs' energy is part of friction_power).
 #: ``ehl_rolling_power``, ``hysteresis_power``: the dissipation of the
 #: rolling-resistance moment pairs, split by their two sources;
 #: ``drag_power``: that of the ball drag (0 when switched off; both part of
@@ -312,7 +312,12 @@ NDIAG = len(DIAG_FIELDS)
 #: ``land_eccentricity`` the cage centre's offset from the land over the land
 #: clearance (beyond ``land_crush_eccentricity`` the film is crushed),
 #: ``cage_load_power`` the power of gravity and the unbalance force on the
-#: rigid cage (part of ``drive_power``). The rigid
+#: rigid cage (part of ``drive_power``); ``contact_energy`` the elastic
+#: energy stored in the normal contacts (ball / race, ball / cage ball, cage
+#: ball / guide, ball / pocket and the land contact: the integral of the
+#: elastic force over the overlap), whose change over a window belongs in the
+#: balance beside the kinetic energy's (a transient that unloads the contacts
+#: turns it into kinetic energy). The rigid
 #: cage's state rides in the cage-ball arrays: ``xc[0]`` its centre,
 #: ``xc[1, 0]`` its angle, ``vc[0]`` and ``vc[1, 0]`` their rates, the other
 #: rows zero; its kinetic energy counts in ``kinetic_energy``.
@@ -320,17 +325,17 @@ GLOBAL_FIELDS = ("omega", "ring_fx", "ring_fy", "ring_fz", "ring_torque", "frict
                  "max_overlap_ratio", "outer_fx", "outer_fy", "outer_fz", "outer_torque", "damping_power",
                  "drive_power", "drive_work", "dissipated_work", "kinetic_energy", "ehl_rolling_power",
                  "hysteresis_power", "drag_power", "pocket_power", "land_power", "land_fx", "land_fy", "land_eccentricity",
-                 "cage_load_power")
+                 "cage_load_power", "contact_energy")
 (G_OMEGA, G_RING_FX, G_RING_FY, G_RING_FZ, G_RING_TORQUE, G_POWER, G_WORST, G_OUTER_FX, G_OUTER_FY,
  G_OUTER_FZ, G_OUTER_TORQUE, G_DAMP_POWER, G_DRIVE_POWER, G_DRIVE_WORK, G_DISS_WORK,
  G_KINETIC, G_EHL_POWER, G_HYST_POWER, G_DRAG_POWER, G_POCKET_POWER, G_LAND_POWER, G_LAND_FX,
- G_LAND_FY, G_LAND_ECC, G_CAGE_LOAD_POWER) = range(len(GLOBAL_FIELDS))
+ G_LAND_FY, G_LAND_ECC, G_CAGE_LOAD_POWER, G_CONTACT_ENERGY) = range(len(GLOBAL_FIELDS))
 GLOBAL_UNITS = {"omega": "rad/s", "ring_fx": "N", "ring_fy": "N", "ring_fz": "N", "ring_torque": "N m",
                 "friction_power": "W", "max_overlap_ratio": "-", "outer_fx": "N", "outer_fy": "N", "outer_fz": "N",
                 "outer_torque": "N m", "damping_power": "W", "drive_power": "W", "drive_work": "J",
                 "dissipated_work": "J", "kinetic_energy": "J", "ehl_rolling_power": "W", "hysteresis_power": "W",
                 "drag_power": "W", "pocket_power": "W", "land_power": "W", "land_fx": "N", "land_fy": "N", "land_eccentricity": "-",
-                "cage_load_power": "W"}
+                "cage_load_power": "W", "contact_energy": "J"}
 NGLOBAL = len(GLOBAL_FIELDS)
 
 # -- condition-monitoring signals --------------------------------------------

@@ -53,7 +53,7 @@ SUMMARY_KEYS = ("q_max_inner", "q_max_outer", "q_max_method", "q_max_inner_mean"
                 "ball_spin", "lambda_outer_psi0", "lambda_inner_psi0", "regime_fraction", "window", "steady",
                 "friction_torque", "friction_power", "friction_outputs_converged", "not_converged",
                 "drive_power", "load_power", "dissipation",
-                "kinetic_energy_change", "energy_residual", "energy_source", "power_loss", "power_loss_total",
+                "kinetic_energy_change", "contact_energy_change", "energy_residual", "energy_source", "power_loss", "power_loss_total",
                 *WHOLE_LOSS_KEYS, "not_modelled", "energy_check", "lubricant", "traction_model",
                 "traction_level", "losses_modelled", "losses_not_modelled", "steps", "dt", "wall_s", "units",
                 "descriptions")
@@ -143,7 +143,8 @@ SUMMARY_UNITS = {
     "ring_displacement": "m", "friction_torque": GLOBAL_UNITS["ring_torque"] + " (inner ring)",
     "friction_power": GLOBAL_UNITS["friction_power"], **CONTACT_SUMMARY_UNITS, "steps": "-", "dt": "s", "t_end": "s", "wall_s": "s", "stable_dt": "s",
     "window.t0": "s", "window.t1": "s", "drive_power": "W", "load_power": "W", "dissipation": "W",
-    "kinetic_energy_change": "J", "energy_residual": "-", "power_loss": "W per component",
+    "kinetic_energy_change": "J", "contact_energy_change": "J", "energy_residual": "-",
+    "power_loss": "W per component",
     "power_loss_total": "W", "not_modelled": "text", "energy_check": "W, - (residual), text",
     "friction_outputs_converged": "-", "not_converged": "summary keys", "reduced_work": "-", **WHOLE_LOSS_UNITS}
 
@@ -173,8 +174,11 @@ SUMMARY_DESCRIPTIONS = {
                    "(energy_source says which terms were available)",
     "kinetic_energy_change": "kinetic energy of balls and cage balls (translation and rotation) at the window's end "
                              "minus that at its start",
-    "energy_residual": "(drive_power - dissipation - kinetic_energy_change / window length) / drive_power; the "
-                       "elastic energy stored in the contacts is not counted (it returns in a steady window)",
+    "contact_energy_change": "elastic energy stored in the normal contacts (ball / race, cage contacts) at the "
+                             "window's end minus that at its start (the engine's contact_energy; None for a record "
+                             "without it): a transient that unloads the contacts turns it into kinetic energy",
+    "energy_residual": "(drive_power - dissipation - (kinetic_energy_change + contact_energy_change) / window "
+                       "length) / drive_power",
     "power_loss": "mean power of each modelled loss over the window: contact_traction_inner, contact_traction_outer "
                   "(tangential power of the ball / raceway contacts per race, time mean of the sampled per-contact "
                   "dissipation), contact_damping (normal damping of all contacts, time mean of the sampled "
@@ -184,7 +188,8 @@ SUMMARY_DESCRIPTIONS = {
     "power_loss_total": "modelled components only: sum of the power_loss components [W] (the sampled split of the "
                         "engine's dissipation); the whole loss is power_loss_whole",
     "not_modelled": "loss sources the dynamic engines leave out at this traction level",
-    "energy_check": "drive_power = sum of power_loss + kinetic_energy_change / window length within 1 % of "
+    "energy_check": "drive_power = sum of power_loss + (kinetic_energy_change + contact_energy_change) / window "
+                    "length within 1 % of "
                     "drive_power (residual, passed; split_error: the sampled components against the engine's "
                     "cumulative dissipated_work)",
     "steady": "drift and oscillation of the reported quantities over the window against the thresholds named in it",
@@ -409,7 +414,15 @@ class Results:
         ke = self.kinetic_energy_series()
         src["kinetic_energy_change"] = ("kinetic_energy (engine field)" if self.has_global("kinetic_energy") else
                                         "from the sampled ball and cage-ball velocities")
-        out = energy_balance(dur, drive, loads, diss, float(ke[i0]), float(ke[i1]))
+        stored = None
+        if self.has_global("contact_energy"):
+            g = self.global_series("contact_energy")
+            stored = float(g[i1] - g[i0])
+            src["contact_energy_change"] = ("contact_energy (engine field: the elastic energy of the normal "
+                                            "contacts), end minus start")
+        else:
+            src["contact_energy_change"] = "not recorded by this run (a record from before the field): left out"
+        out = energy_balance(dur, drive, loads, diss, float(ke[i0]), float(ke[i1]), stored)
         floor = energy_floor(self._loss_floor(), np.mean(self.relative_speed_series()[w]))
         if out["energy_residual"] is None:
             src["energy_residual"] = "no drive power or a window of one sample: no residual"
@@ -418,7 +431,8 @@ class Results:
                                       f"max(|omega - omega_outer|, 1 rad/s)): the residual compares noise and "
                                       "means little")
         else:
-            src["energy_residual"] = "(drive_power - dissipation - kinetic_energy_change / window length) / drive_power"
+            src["energy_residual"] = ("(drive_power - dissipation - (kinetic_energy_change + contact_energy_change) "
+                                      "/ window length) / drive_power")
         out["energy_source"] = src
         return out
 
@@ -445,7 +459,8 @@ class Results:
             g = self.global_series("dissipated_work")
             recorded = float(g[w.stop - 1] - g[w.start]) / dur
         floor = energy_floor(self._loss_floor(), np.mean(self.relative_speed_series()[w]))
-        check = energy_check(energy["drive_power"], comp, energy["kinetic_energy_change"], dur, recorded, floor)
+        check = energy_check(energy["drive_power"], comp, energy["kinetic_energy_change"], dur, recorded, floor,
+                             contact_energy_change=energy["contact_energy_change"])
         return {"power_loss": comp, "power_loss_total": check["power_loss_total"],
                 "not_modelled": (self.losses_lists()[1] + list(self.cage_not_modelled())
                                  + list(ENGINE_NOT_MODELLED.get(self.engine, ()))),

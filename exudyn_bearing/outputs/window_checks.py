@@ -237,24 +237,28 @@ def q_max_at_psi0(psi, q, tolerance: float = PSI0_TOLERANCE) -> tuple[float | No
 
 
 def energy_balance(duration: float, drive: float, loads: float | None, dissipation: float, ke0: float,
-                   ke1: float) -> dict:
+                   ke1: float, stored_change: float | None = None) -> dict:
     """Energy balance of a window of ``duration`` [s]: ``drive`` the mean
     power that spins the inner ring [W], ``loads`` the mean net power of the
     applied loads through the ring's translation [W] (None: unknown, left
     out), ``dissipation`` the mean dissipated power [W], ``ke0``, ``ke1`` the
-    kinetic energy of balls and cage balls at the window's ends [J].
+    kinetic energy of balls and cage balls at the window's ends [J],
+    ``stored_change`` the change of the elastic energy stored in the contacts
+    over the window [J] (None: not recorded, left out).
 
     Returns drive_power (drive + loads), load_power, dissipation,
-    kinetic_energy_change (ke1 - ke0) and energy_residual = (drive_power -
-    dissipation - kinetic_energy_change / duration) / drive_power (None when
-    there is no drive power or no duration)."""
+    kinetic_energy_change (ke1 - ke0), contact_energy_change (``stored_change``)
+    and energy_residual = (drive_power - dissipation - (kinetic_energy_change
+    + contact_energy_change) / duration) / drive_power (None when there is no
+    drive power or no duration)."""
     p_in = drive + (loads or 0.0)
     dke = ke1 - ke0
     res = None
     if duration > 0.0 and p_in != 0.0 and math.isfinite(p_in):
-        res = (p_in - dissipation - dke / duration) / p_in
+        res = (p_in - dissipation - (dke + (stored_change or 0.0)) / duration) / p_in
     return {"drive_power": float(p_in), "load_power": None if loads is None else float(loads),
             "dissipation": float(dissipation), "kinetic_energy_change": float(dke),
+            "contact_energy_change": None if stored_change is None else float(stored_change),
             "energy_residual": None if res is None else float(res)}
 
 
@@ -266,9 +270,10 @@ def energy_floor(loss_floor_torque: float, omega_mean: float) -> float:
 
 def energy_check(drive_power: float, losses: dict, kinetic_energy_change: float, duration: float,
                  recorded_dissipation: float | None = None, floor: float = 0.0,
-                 tolerance: float = ENERGY_TOLERANCE) -> dict:
+                 tolerance: float = ENERGY_TOLERANCE, contact_energy_change: float | None = None) -> dict:
     """Does the drive power of a window equal the sum of its reported losses plus the rate of change of
-    the kinetic energy, within ``tolerance`` of the drive power?
+    the kinetic energy (and of the elastic energy stored in the contacts, ``contact_energy_change`` [J],
+    when recorded), within ``tolerance`` of the drive power?
 
     ``losses``: component name -> mean power [W] over the window (None: not available, left out and
     named); ``kinetic_energy_change`` [J] over ``duration`` [s]; ``recorded_dissipation`` [W]: the
@@ -277,17 +282,21 @@ def energy_check(drive_power: float, losses: dict, kinetic_energy_change: float,
     not part of the check); ``floor`` [W]: a drive power below it is not judged (noise).
 
     Returns {"statement", "components" (names summed), "missing" (names without data), "drive_power",
-    "power_loss_total", "kinetic_energy_rate", "residual" ((drive - losses - dKE/T) / drive),
-    "tolerance", "passed" (None when not judged), "split_error", "reason"}."""
+    "power_loss_total", "kinetic_energy_rate", "contact_energy_rate" (None when not recorded), "residual"
+    ((drive - losses - (dKE + dE_contact)/T) / drive), "tolerance", "passed" (None when not judged),
+    "split_error", "reason"}."""
     used = [k for k, v in losses.items() if v is not None]
     missing = [k for k, v in losses.items() if v is None]
     total = float(sum(losses[k] for k in used))
     rate = kinetic_energy_change / duration if duration > 0.0 else float("nan")
+    stored_rate = None
+    if contact_energy_change is not None:
+        stored_rate = contact_energy_change / duration if duration > 0.0 else float("nan")
     residual, passed, reason = None, None, None
     if not (duration > 0.0 and math.isfinite(drive_power) and drive_power != 0.0):
         reason = "no drive power or a window of one sample: not judged"
     else:
-        residual = float((drive_power - total - rate) / drive_power)
+        residual = float((drive_power - total - rate - (stored_rate or 0.0)) / drive_power)
         if abs(drive_power) < floor:
             reason = f"drive power {drive_power:.3g} W below the loss floor {floor:.3g} W: not judged"
         else:
@@ -298,9 +307,12 @@ def energy_check(drive_power: float, losses: dict, kinetic_energy_change: float,
     names = " + ".join(used) if used else "(no losses)"
     verdict = ("not judged" if passed is None else
                f"{'holds' if passed else 'FAILS'} (residual {100 * residual:.3g} %, tolerance {100 * tolerance:g} %)")
-    return {"statement": f"drive_power = {names} + kinetic_energy_change / window length: {verdict}",
+    change = ("kinetic_energy_change" if stored_rate is None else
+              "(kinetic_energy_change + contact_energy_change)")
+    return {"statement": f"drive_power = {names} + {change} / window length: {verdict}",
             "components": used, "missing": missing, "drive_power": float(drive_power), "power_loss_total": total,
-            "kinetic_energy_rate": float(rate), "residual": residual, "tolerance": tolerance, "passed": passed,
+            "kinetic_energy_rate": float(rate),
+            "contact_energy_rate": None if stored_rate is None else float(stored_rate), "residual": residual, "tolerance": tolerance, "passed": passed,
             "split_error": split, "reason": reason}
 
 
