@@ -77,6 +77,9 @@ NOT_MODELLED_RIGID_CAGE = ("rigid cage in the solver's balance: cage_pocket and 
 NOT_MODELLED_RIGID_CAGE_FILM = ("rigid cage in the solver's balance: cage_pocket and cage_land from its pocket forces, "
                                 "the pocket oil film (flooded, a sphere facing a plane wall) and the land film (no "
                                 "cage windage, weight or unbalance)")
+#: What the pocket film leaves out (``solve_quasistatic(..., pocket_film=True)``, as the dynamic engines' film).
+POCKET_FILM_NOT_MODELLED = ("the pocket oil film's rotation about the wall's normal, a starved pocket and the "
+                            "pocket's conformity (a flooded sphere facing a plane wall)")
 #: What ``not_modelled`` lists in every result.
 NOT_MODELLED_LIST = ("seal friction (open bearing)",
                      "cage windage (drag of the cage in the oil-air mixture)",
@@ -390,9 +393,7 @@ def power_losses(sol, bearing=None, lubricant=None, *, hysteresis_loss_factor=_l
            "cage_guidance": guidance, "power_loss_notes": notes, "cage_pocket_film": film_power,
            "not_modelled": list(NOT_MODELLED_LIST) if rigid is None else
            [x for x in NOT_MODELLED_LIST if not x.startswith("cage pocket loads")]
-           + (["the rigid cage's weight and unbalance", "the pocket oil film's rotation about the wall's normal, a "
-                                                          "starved pocket and the pocket's conformity (a flooded "
-                                                          "sphere facing a plane wall)"]
+           + (["the rigid cage's weight and unbalance", POCKET_FILM_NOT_MODELLED]
               if rigid.get("pocket_film") else ["the rigid cage's weight, unbalance and pocket oil film"])}
     return out
 
