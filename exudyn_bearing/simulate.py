@@ -253,6 +253,9 @@ def _quasistatic_start_cage(bearing, scenario: Scenario, relative_speed: float):
         return {}, "cageless quasi-static solution (control='min-energy' chooses each ball's orbital speed)"
     if relative_speed == 0.0:
         return {}, "cageless quasi-static solution (the rings turn together at t = 0: no cage speed to balance)"
+    if scenario.pocket_film:
+        return ({"cage": "rigid", "rigid_cage": rc, "pocket_film": True},
+                "quasi-static solution with the rigid cage and its pocket film")
     return {"cage": "rigid", "rigid_cage": rc}, "quasi-static solution with the rigid cage"
 
 

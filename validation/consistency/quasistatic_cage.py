@@ -13,8 +13,16 @@ Printed side by side: the dissipation (the quasi-static traction + pocket + land
 which also holds the contacts' normal damping), the cage speed, the cage losses by kind, the pocket and land
 forces, Q_max. The target: the two dissipations within 5 %.
 
+With ``--pocket-film`` instead the ball / pocket oil film (docs/theory/quasistatic.md#the-pocket-film): the
+6208 radial case (F_r = 3000 N, 500 rad/s, its estimated rigid cage, the scenario's oil), quasi-static
+(``solve_quasistatic(..., cage="rigid", pocket_film=...)``) and reference engine (``Scenario(...,
+pocket_film=...)``, the settings above, its quasi-static start with the film) each dry and with the film, at the
+first ``--dt``: the cage speed, the pocket loss (and the film's part), the land loss and the dissipation side by
+side, and the differences of the quasi-static solution with the film from the engine's.
+
     python validation/consistency/quasistatic_cage.py [--t-end 0.5] [--dt 1.5e-6 0.75e-6] [--case FR FA ...]
         [--out validation/out/quasistatic_cage]
+    python validation/consistency/quasistatic_cage.py --pocket-film [--t-end 0.2] [--dt 1.5e-6]
 """
 from __future__ import annotations
 
@@ -32,14 +40,16 @@ from exudyn_bearing.solvers.quasistatic.losses import power_losses
 
 ROOT = Path(__file__).resolve().parents[2]
 CASE = {"Fr": 3000.0, "Fa": 3000.0, "omega": 500.0}
+#: The pocket film's case (--pocket-film): the papers' 6208 radial case.
+FILM_CASE = {"Fr": 3000.0, "Fa": 0.0, "omega": 500.0}
 #: Azimuth bins of the per-azimuth comparison [deg].
 BINS = np.linspace(-180.0, 180.0, 13)
 
 
-def quasistatic(cage, case=CASE):
+def quasistatic(cage, case=CASE, bearing="7208", pocket_film=False):
     t0 = time.perf_counter()
-    s = solve_quasistatic("7208", case["Fr"], case["Fa"], omega=case["omega"], control="equilibrium", cage=cage,
-                          fixed={"tilt_x": 0.0, "tilt_y": 0.0}, stiffness=False)
+    s = solve_quasistatic(bearing, case["Fr"], case["Fa"], omega=case["omega"], control="equilibrium", cage=cage,
+                          fixed={"tilt_x": 0.0, "tilt_y": 0.0}, stiffness=False, pocket_film=pocket_film)
     wall = time.perf_counter() - t0
     pl = power_losses(s)["power_loss"]
     c = s.cage or {}
@@ -48,7 +58,8 @@ def quasistatic(cage, case=CASE):
           for race in ("inner", "outer")}
     return {"by_ball": by, "wall_s": wall, "dissipation": s.dissipation_total + pl["cage_pocket"] + pl["cage_land"],
             "dissipation_contacts": s.dissipation_total, "cage_power_pocket": pl["cage_pocket"],
-            "cage_power_land": pl["cage_land"], "cage_speed": c.get("speed", float(np.mean(s.kinematics[:, 0]))),
+            "cage_power_land": pl["cage_land"], "cage_power_pocket_film": power_losses(s)["cage_pocket_film"],
+            "cage_speed": c.get("speed", float(np.mean(s.kinematics[:, 0]))),
             "orbital_speed_min": float(np.min(s.kinematics[:, 0])), "orbital_speed_max": float(np.max(s.kinematics[:, 0])),
             "pocket_force_max": float(np.max(np.abs(s.balls.get("pocket_force", [0.0])))),
             "pocket_force_mean": float(np.mean(np.abs(s.balls.get("pocket_force", [0.0])))),
@@ -59,13 +70,13 @@ def quasistatic(cage, case=CASE):
             "inertia_power": (s.inertia_check or {}).get("power"), "inertia_share": (s.inertia_check or {}).get("share")}
 
 
-def dem(dt, t_end, case=CASE):
+def dem(dt, t_end, case=CASE, bearing="7208", pocket_film=False):
     sc = eb.Scenario(**case, cage="rigid", traction_level="ellipse", initial="quasistatic", control="equilibrium",
-                     cage_damping="implicit", dt=dt, t_end=t_end, sample_dt=1e-4)
+                     cage_damping="implicit", dt=dt, t_end=t_end, sample_dt=1e-4, pocket_film=pocket_film)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", eb.SteadyStateWarning)
         t0 = time.perf_counter()
-        rec = eb.simulate("7208", sc, progress=False)
+        rec = eb.simulate(bearing, sc, progress=False)
         wall = time.perf_counter() - t0
     s = rec.summary()
     keys = ("dissipation", "cage_speed", "cage_power_pocket", "cage_power_land", "pocket_force_max",
@@ -88,16 +99,55 @@ def dem(dt, t_end, case=CASE):
     return out
 
 
+def film_comparison(dt, t_end, out):
+    """--pocket-film: the 6208 radial case dry and with the pocket film, quasi-static and reference engine."""
+    report = {"case": FILM_CASE, "bearing": "6208", "t_end_s": t_end, "dt_s": dt}
+    for film in (False, True):
+        tag = "film" if film else "dry"
+        report[f"quasistatic_{tag}"] = quasistatic("rigid", FILM_CASE, "6208", film)
+        report[f"dem_{tag}"] = dem(dt, t_end, FILM_CASE, "6208", film)
+        print(f"DEM {tag} done ({report[f'dem_{tag}']['wall_s']:.0f} s wall)", flush=True)
+    cols = ("quasistatic_dry", "dem_dry", "quasistatic_film", "dem_film")
+    print(f"6208, F_r = 3000 N, 500 rad/s, estimated rigid cage, pockets dry and with the oil film; DEM at dt = "
+          f"{dt:g} s for {t_end:g} s, window " + ", ".join(f"{report[c]['window.t0']:.3g}-{report[c]['window.t1']:.3g} s"
+                                                          for c in ("dem_dry", "dem_film")))
+    rows = ("dissipation", "dissipation_contacts", "cage_power_pocket", "cage_power_pocket_film", "cage_power_land",
+            "cage_speed", "pocket_force_max", "pocket_force_mean", "q_max_inner", "energy_residual")
+    print(f"{'':24s}" + "".join(f"{c:>18s}" for c in cols))
+    for r in rows:
+        print(f"{r:24s}" + "".join(f"{report[c].get(r) if report[c].get(r) is not None else float('nan'):18.5g}"
+                                   for c in cols))
+    for tag in ("dry", "film"):
+        q, d = report[f"quasistatic_{tag}"], report[f"dem_{tag}"]
+        diff = {k: q[k] / d[k] - 1.0 for k in ("cage_speed", "cage_power_pocket", "cage_power_land", "dissipation")}
+        report[f"quasistatic_over_dem_minus_1_{tag}"] = diff
+        print(f"{tag}: quasi-static / DEM - 1: cage speed {100 * diff['cage_speed']:+.3f} %, pocket loss "
+              f"{100 * diff['cage_power_pocket']:+.1f} %, land loss {100 * diff['cage_power_land']:+.1f} %, "
+              f"dissipation {100 * diff['dissipation']:+.1f} %")
+    for src in ("quasistatic", "dem"):
+        print(f"the film's change (film - dry), {src}: pocket loss "
+              f"{report[f'{src}_film']['cage_power_pocket'] - report[f'{src}_dry']['cage_power_pocket']:+.3f} W, "
+              f"dissipation {report[f'{src}_film']['dissipation'] - report[f'{src}_dry']['dissipation']:+.3f} W, "
+              f"cage speed {report[f'{src}_film']['cage_speed'] - report[f'{src}_dry']['cage_speed']:+.4f} rad/s")
+    (out / "quasistatic_cage_film.json").write_text(json.dumps(report, indent=2, default=float))
+    print(f"wrote {out / 'quasistatic_cage_film.json'}")
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--t-end", type=float, default=0.5, help="simulated time of each DEM run [s]")
     ap.add_argument("--dt", type=float, nargs="+", default=[1.5e-6, 0.75e-6], help="DEM steps [s]")
     ap.add_argument("--case", type=float, nargs=2, action="append", metavar=("FR", "FA"),
                     help="a further load case [N] (repeatable), e.g. --case 0 3000 --case 3000 10000")
+    ap.add_argument("--pocket-film", action="store_true",
+                    help="instead: the 6208 radial case dry and with the pocket oil film, quasi-static and DEM at the "
+                         "first --dt")
     ap.add_argument("--out", default=str(ROOT / "validation" / "out" / "quasistatic_cage"))
     args = ap.parse_args(argv)
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
+    if args.pocket_film:
+        return film_comparison(args.dt[0], args.t_end, out)
     report = {"case": CASE, "t_end_s": args.t_end, "quasistatic_cageless": quasistatic(None),
               "quasistatic_rigid": quasistatic("rigid")}
     for dt in args.dt:

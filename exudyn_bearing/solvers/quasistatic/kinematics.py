@@ -236,7 +236,8 @@ def minimum_energy(geo, model, n_strips, n_across, start):
     return res.x * scale, check
 
 
-def traction_equilibrium(geo, model, n_strips, n_across, start, inertia, omega_m=None, pocket_friction=0.0):
+def traction_equilibrium(geo, model, n_strips, n_across, start, inertia, omega_m=None, pocket_friction=0.0,
+                         pocket_film=None):
     """Kinematics at which the traction of both contacts holds the ball in a
     steady orbit, without a kinematic hypothesis: (omega_m, w_r, w_z, v_t)
     with v_t = R_b w_psi the transverse slip of the ball's yaw (pivoting), from
@@ -266,7 +267,12 @@ def traction_equilibrium(geo, model, n_strips, n_across, start, inertia, omega_m
     Coulomb friction mu_c |Q_p| (``pocket_friction``) at the contact point R_b e_psi from the centre,
     against the ball's surface speed R_b |w| there (the ball's centre moves with its pocket), adds the
     moment -mu_c |Q_p| R_b w / |w| to the in-plane moments; (w_r, w_z) are solved. The check dict then
-    also has ``pocket_force`` [N]."""
+    also has ``pocket_force`` [N].
+
+    ``pocket_film`` (docs/theory/quasistatic.md#the-pocket-film): a callable (omega_m, w_r, w_z, Q_p) ->
+    (contact force [N], m_r, m_z [N m]) of the pocket's oil film (:class:`.pocket_film.PocketFilm`): its moment
+    on the ball joins the in-plane moments, and the friction acts on the contact force it leaves (with the
+    cage), or Q_p = 0 (a cageless ball floating in its pocket)."""
     start = np.asarray(start, float)
     scale = max(abs(start[0]), math.hypot(start[1], start[2]), 1e-12)
     rb = geo[G_RB]
@@ -316,11 +322,16 @@ def traction_equilibrium(geo, model, n_strips, n_across, start, inertia, omega_m
             m_r += -out[k, 6] * rb * nz - out[k, 8] * nr + out[k, 11] * nz
             m_z += out[k, 6] * rb * nr - out[k, 8] * nz - out[k, 11] * nr
         m_r += j_eff[0] * wm * v_t / rb          # = -(-J omega_m w_psi), w_psi = v_t / R_b
+        contact = abs(f_x)
+        if pocket_film is not None:  # the film's moment; the friction on the contact force it leaves
+            contact, film_r, film_z = pocket_film(wm, wr, wz, -f_x if caged else 0.0)
+            m_r += film_r
+            m_z += film_z
         if caged:  # the pocket force -f_x balances the tractions; its friction brakes the ball's spin
             w = math.hypot(wr, wz)
             if w > 0.0:
-                m_r -= pocket_friction * abs(f_x) * rb * wr / w
-                m_z -= pocket_friction * abs(f_x) * rb * wz / w
+                m_r -= pocket_friction * contact * rb * wr / w
+                m_z -= pocket_friction * contact * rb * wz / w
             return np.array([m_r / rb, m_z / rb]) / qref
         return np.array([f_x, m_r / rb, m_z / rb]) / qref
 

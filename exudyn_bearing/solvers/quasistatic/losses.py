@@ -73,6 +73,13 @@ NOT_MODELLED = {"seals": "not modelled", "cage": "modelled as cage_pocket and ca
 #: The cage's note for a solution with the rigid cage (``sol.cage``).
 NOT_MODELLED_RIGID_CAGE = ("rigid cage in the solver's balance: cage_pocket and cage_land from its pocket forces and "
                            "land film (no cage windage, weight or unbalance; the pocket's oil film not modelled)")
+#: The same with the pocket film (``solve_quasistatic(..., pocket_film=True)``).
+NOT_MODELLED_RIGID_CAGE_FILM = ("rigid cage in the solver's balance: cage_pocket and cage_land from its pocket forces, "
+                                "the pocket oil film (flooded, a sphere facing a plane wall) and the land film (no "
+                                "cage windage, weight or unbalance)")
+#: What the pocket film leaves out (``solve_quasistatic(..., pocket_film=True)``, as the dynamic engines' film).
+POCKET_FILM_NOT_MODELLED = ("the pocket oil film's rotation about the wall's normal, a starved pocket and the "
+                            "pocket's conformity (a flooded sphere facing a plane wall)")
 #: What ``not_modelled`` lists in every result.
 NOT_MODELLED_LIST = ("seal friction (open bearing)",
                      "cage windage (drag of the cage in the oil-air mixture)",
@@ -107,6 +114,8 @@ LOSS_UNITS = {
     "cage_land_torque": "N m (Petroff's torque of the cage on its land, 0 without land guidance; with the rigid "
                         "cage the land film's shear torque on the cage)",
     "cage_pocket_load": "N (normal load of each ball on its pocket; with the rigid cage |pocket_force|)",
+    "cage_pocket_film": "W (the rigid cage's pocket oil film shear, part of power_loss cage_pocket; 0 without "
+                        "the film)",
 }
 
 #: Density of the oil for the drag when the lubricant carries none [kg/m^3]
@@ -321,12 +330,21 @@ def power_losses(sol, bearing=None, lubricant=None, *, hysteresis_loss_factor=_l
         p_land = abs(t_land * rel)
     else:
         p_land = 0.0
+    film_power = 0.0
     if rigid is not None:
         q_c = np.abs(np.asarray(bl["pocket_force"], float))
         # the ball's spin while its pocket holds it (pocket_sliding_speed / R_b; ball_speed is the time mean of
         # held and free with the pocket play)
         w_held = np.asarray(bl["pocket_sliding_speed"], float) / r_b
-        pocket = np.atleast_1d(_ls.cage_pocket_friction_power(q_c, w_held, 2.0 * r_b, rigid["pocket_friction"]))
+        # the friction on the wall's contact force (the pocket force less what the pocket film's pressure
+        # carries), and the film's shear (zero without the film)
+        q_contact = np.abs(np.asarray(bl.get("pocket_contact_force", bl["pocket_force"]), float))
+        pocket = np.atleast_1d(_ls.cage_pocket_friction_power(q_contact, w_held, 2.0 * r_b,
+                                                              rigid["pocket_friction"]))
+        if rigid.get("pocket_film"):
+            film_ball = np.asarray(bl["pocket_film_power"], float)
+            film_power = float(np.sum(film_ball))
+            pocket = pocket + film_ball
     elif guidance == "none":
         q_c = np.zeros_like(drag)
         pocket = np.zeros_like(drag)
@@ -350,7 +368,10 @@ def power_losses(sol, bearing=None, lubricant=None, *, hysteresis_loss_factor=_l
                          "balls' frontal area, bath at rest (an upper value)" if oil_level > 0.0 else
                          "no oil bath (oil_level 0)")
     notes["cage_pocket"] = (f"rigid cage: mu_c = {rigid['pocket_friction']:g} on the pocket forces of the cage's "
-                            "balance in the solver" if rigid is not None else "no cage" if guidance == "none" else
+                            "balance in the solver" + (f" (on the part the pocket film's pressure leaves to the "
+                                                       f"contact), and the pocket film's shear {film_power:.4g} W "
+                                                       "(cage_pocket_film)" if rigid.get("pocket_film") else "")
+                            if rigid is not None else "no cage" if guidance == "none" else
                             f"mu_c = {float(cage_pocket_friction):g}; pocket loads from the balls' drag and the "
                             "cage's land torque (loaded balls drive the cage, the cage drives the unloaded balls)")
     notes["cage_land"] = (f"rigid cage, {guidance} guidance: the land film's shear torque at eccentricity "
@@ -360,7 +381,8 @@ def power_losses(sol, bearing=None, lubricant=None, *, hysteresis_loss_factor=_l
                           f"{guidance} guidance: Petroff's torque, land radius {land['radius']:.4g} m, width "
                           f"{land['width']:.4g} m, radial clearance {land['clearance']:.4g} m ({land['source']})"
                           if land else f"{guidance} guidance: no land friction")
-    cage_note = NOT_MODELLED["cage"] if rigid is None else NOT_MODELLED_RIGID_CAGE
+    cage_note = (NOT_MODELLED["cage"] if rigid is None else
+                 NOT_MODELLED_RIGID_CAGE_FILM if rigid.get("pocket_film") else NOT_MODELLED_RIGID_CAGE)
     out = {"power_loss": {**p, "cage": cage_note, "seals": NOT_MODELLED["seals"]},
            "power_loss_total": total,
            # no relative speed: every component is 0 (nothing moves relative to the rings or the mixture)
@@ -368,10 +390,11 @@ def power_losses(sol, bearing=None, lubricant=None, *, hysteresis_loss_factor=_l
            "power_loss_inner_ball": per["inner"][0] + per["inner"][1],
            "power_loss_outer_ball": per["outer"][0] + per["outer"][1],
            "drag_ball": drag, "churning_ball": churning, "cage_pocket_load": q_c, "cage_land_torque": t_land,
-           "cage_guidance": guidance, "power_loss_notes": notes,
+           "cage_guidance": guidance, "power_loss_notes": notes, "cage_pocket_film": film_power,
            "not_modelled": list(NOT_MODELLED_LIST) if rigid is None else
            [x for x in NOT_MODELLED_LIST if not x.startswith("cage pocket loads")]
-           + ["the rigid cage's weight, unbalance and pocket oil film"]}
+           + (["the rigid cage's weight and unbalance", POCKET_FILM_NOT_MODELLED]
+              if rigid.get("pocket_film") else ["the rigid cage's weight, unbalance and pocket oil film"])}
     return out
 
 

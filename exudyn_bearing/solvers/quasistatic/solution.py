@@ -56,7 +56,14 @@ UNITS = {
     "cage_speed": "rad/s (the rigid cage's and every ball's orbital speed)",
     "pocket_force": "N (pocket force on each ball along its orbit, positive pushing it forward; rigid cage)",
     "pocket_sliding_speed": "m/s (the ball's surface against its pocket at the contact point; rigid cage)",
-    "cage_power_pocket": "W (rigid cage: pocket friction, mu_c |Q_p| times the sliding speed)",
+    "cage_power_pocket": "W (rigid cage: pocket friction, mu_c |Q_p| times the sliding speed, and with the pocket "
+                         "film its shear, cage_power_pocket_film)",
+    "pocket_film": "bool (rigid cage: the ball / pocket oil film modelled, solve_quasistatic's pocket_film)",
+    "cage_power_pocket_film": "W (rigid cage with the pocket film: the film's shear, part of cage_power_pocket)",
+    "pocket_contact_force": "N (the part of pocket_force the pocket wall's contact carries, the rest the pocket "
+                            "film's pressure; rigid cage)",
+    "pocket_film_power": "W (each ball's pocket film shear; rigid cage)",
+    "pocket_film_gap": "m (the pocket film's gap at the wall a held ball presses on; rigid cage with the film)",
     "cage_power_land": "W (rigid cage: land shear torque times the cage's speed relative to its ring)",
     "cage_land_force": "N (net in-plane pocket force the land film carries)",
     "cage_land_eccentricity": "- (land film eccentricity ratio carrying cage_land_force)",
@@ -202,6 +209,8 @@ class QuasiStaticSolution:
             c = self.cage
             d.update({"cage_speed": c["speed"],
                       "cage_power_pocket": c["power_pocket"], "cage_power_land": c["power_land"],
+                      "pocket_film": bool(c.get("pocket_film", False)),
+                      "cage_power_pocket_film": float(c.get("power_pocket_film", 0.0)),
                       "cage_land_force": c["land_force"],
                       "cage_land_eccentricity": c["land_eccentricity"], "cage_torque_residual": c["torque_residual"],
                       "rigid_cage": _rigid_cage_dict(c["rigid_cage"])})
@@ -265,8 +274,10 @@ class QuasiStaticSolution:
         if self.cage is not None:
             c = self.cage
             lines.append(f"rigid cage ({c['guidance']}): speed {c['speed']:.6g} rad/s, pocket force max "
-                         f"{np.max(np.abs(self.balls['pocket_force'])):.4g} N, losses pocket {c['power_pocket']:.4g} W, "
-                         f"land {c['power_land']:.4g} W (land torque {c['land_torque']:.4g} N m, eccentricity "
+                         f"{np.max(np.abs(self.balls['pocket_force'])):.4g} N, losses pocket {c['power_pocket']:.4g} W "
+                         + (f"(of it the pocket film's shear {c['power_pocket_film']:.4g} W), " if c.get("pocket_film")
+                            else "(no pocket film), ")
+                         + f"land {c['power_land']:.4g} W (land torque {c['land_torque']:.4g} N m, eccentricity "
                          f"{c['land_eccentricity']:.3g})")
             lines.append("pocket force per ball [N] (+: pushes the ball forward): "
                          + " ".join(f"{q:.4g}" for q in self.balls["pocket_force"]))

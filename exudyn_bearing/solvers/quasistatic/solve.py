@@ -65,6 +65,7 @@ from ...model.scenario import cage_model as _cage_model
 from ...model.scenario import rolling_speed_floor as _rolling_floor
 from .damping import condensed_matrices, contact_damping
 from .inertia import ball_mass_inertia, check_ball_inertia
+from .pocket_film import PocketFilm
 from .ring import DOF_NAMES, LOAD_NAMES, RingProblem, solve_ring
 from .solution import QuasiStaticSolution
 from .stiffness import stiffness_matrix
@@ -193,7 +194,8 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
                       phase=0.0, n_strips=DEFAULT_N_STRIPS, n_across=DEFAULT_N_ACROSS,
                       traction_regularizing_srr=DEFAULT_REGULARIZING_SRR, rolling_speed_floor=None,
                       shoulder_angle=MAX_FREE_CONTACT_ANGLE, stiffness=True, start=None,
-                      resolution_check=True, cage=None, rigid_cage=None, inertia_check=True) -> QuasiStaticSolution:
+                      resolution_check=True, cage=None, rigid_cage=None, inertia_check=True,
+                      pocket_film=False) -> QuasiStaticSolution:
     """Quasi-static equilibrium of a ball bearing with free inner-ring DOFs, speed effects and kinematics.
 
     Parameters
@@ -285,6 +287,12 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
         :class:`~exudyn_bearing.solvers.quasistatic.inertia.BallInertiaWarning` when the
         slip power of their changes of speed from one ball position to the next exceeds
         1 % of the dissipation); its result is the solution's ``inertia_check``.
+    pocket_film : bool
+        The oil film between each ball and its rigid-cage pocket (docs/theory/quasistatic.md#the-pocket-film,
+        as the dynamic engines' ``Scenario(pocket_film=True)``; :mod:`.pocket_film`): its shear on the balls'
+        rotation relative to the cage enters the balls' and the cage's balances and the pocket loss, its
+        hydrodynamic pressure carries the pocket force where it can (the friction acts on the rest). Needs
+        ``cage="rigid"``; the film's oil is ``lubricant``.
 
     Returns
     -------
@@ -306,6 +314,10 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
     if control not in km.CONTROLS:
         raise InputError(f"control: must be one of {', '.join(km.CONTROLS)}, got {control!r}")
     rc = _check_cage(cage, rigid_cage, control, b)
+    pocket_film = check_bool("pocket_film", pocket_film)
+    if pocket_film and rc is None:
+        raise InputError("pocket_film: the film between ball and pocket is the rigid cage's (cage='rigid'), "
+                         "not for a cageless solution")
     srr = check_finite("traction_regularizing_srr", traction_regularizing_srr)
     if rolling_speed_floor is None:  # the dynamic engines' floor (one function for every solver)
         u_min = _rolling_floor(b, w_i, w_o)
@@ -345,6 +357,7 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
     check_load_estimate(b, fr, loads[2], hertz_method)
     what = f"F_r = {fr:g} N, F_a = {loads[2]:g} N at omega = {w_i:g} rad/s"
     geom = check_operating_fit(b, w_i, w_o, ring_growth, fit, temperatures)
+    film = PocketFilm.of(rc, lub, geom.r_b) if pocket_film else None
     e_prime = _hz.material_reduced_modulus(b.material)
     z = b.n_balls
     psi = phase + 2.0 * math.pi * np.arange(z) / z
@@ -457,7 +470,7 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
                             new[j, :3], checks[j] = km.minimum_energy(geo[j], model, n_strips, n_across, kin[j])
                 if rc is not None:
                     new, cage_info = _solve_cage(geo, loaded_all, controls.copy(), stage, kin, rc, model, n_strips,
-                                                 n_across, inertia, lub, w_i, w_o, psi)
+                                                 n_across, inertia, lub, w_i, w_o, psi, film)
                     controls[:] = cage_info["controls"]
                     if stage == "equilibrium":
                         checks = list(cage_info["checks"])
@@ -491,7 +504,7 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
                                      n_across, w_i, w_o, rd_o, rd_i, lub, e_prime, mass, inertia, controls, moving,
                                      prob.fto, prob.fti)
             _mix_ball_results(out, free_out, f)
-    cage_out = None if rc is None else _cage_result(rc, cage_info, out, moving, w_i)
+    cage_out = None if rc is None else _cage_result(rc, cage_info, out, moving, w_i, film)
     if control == "equilibrium" and moving and not np.any(controls == "equilibrium"):
         bad = next((j for j, c in enumerate(checks) if c is not None), 0)
         raise InputError(f"control: no ball reaches a traction equilibrium (ball {bad}: scaled residual "
@@ -934,12 +947,21 @@ def pocket_contact_fraction(u, psi, omega_c, radius, clearance, substeps=64):
     return out
 
 
-def _free_balls(geo, loaded, races, stage, kin, model, n_strips, n_across, inertia):
+def _free_balls(geo, loaded, races, stage, kin, model, n_strips, n_across, inertia, film=None):
     """Each ball's own kinematics without the cage (z x 4; NaN rows for a ball without them: no inner load, or
     a traction equilibrium that does not converge): the traction equilibrium of a cageless ball, or race
-    control by ``races[j]``."""
+    control by ``races[j]``. With the pocket ``film`` (a PocketFilm) the traction equilibrium has the moment of
+    the film of a ball floating centred in its pocket, its rotation taken relative to the cage at the balls'
+    present mean orbital speed (the cage's, once the iteration has converged)."""
     z = geo.shape[0]
     free = np.full((z, 4), np.nan)
+    moment = None
+    if film is not None and stage == "equilibrium":
+        omega_c = float(np.mean(kin[:, 0]))
+
+        def moment(wm, wr, wz, _q):
+            c = film.centred(wr, wz + wm - omega_c)
+            return 0.0, c["m_r"], c["m_z"]
     for j in range(z):
         if not loaded[j]:
             continue
@@ -947,7 +969,8 @@ def _free_balls(geo, loaded, races, stage, kin, model, n_strips, n_across, inert
         if same is not None:
             free[j] = free[same]
         elif stage == "equilibrium":
-            k, chk = km.traction_equilibrium(geo[j], model, n_strips, n_across, kin[j], inertia)
+            k, chk = km.traction_equilibrium(geo[j], model, n_strips, n_across, kin[j], inertia,
+                                             pocket_film=moment)
             if chk["converged"]:
                 free[j] = k
         else:
@@ -957,14 +980,22 @@ def _free_balls(geo, loaded, races, stage, kin, model, n_strips, n_across, inert
 
 
 def _caged_balls(omega_c, geo, loaded, races, stage, kin, rc, model, n_strips, n_across, inertia, lub, w_i, w_o,
-                 psi, free=None):
+                 psi, free=None, film=None):
     """Every ball at the cage speed ``omega_c`` (docs/theory/quasistatic.md#the-rigid-cage): its kinematics
     (race control at the cage speed by ``races[j]``, the traction equilibrium of its moments with the pocket
     force and its friction, or, without an inner load, rolling on the outer race), its pocket force
     Q_p = -(F_x,o + F_x,i) and the cage's torque: sum_j (-Q_p,j c_r,j + mu_c |Q_p,j| R_b w_z,j / |w_j|) + the
-    land's shear torque. Returns (kin, dict of the cage's quantities)."""
+    land's shear torque. With the pocket ``film`` (a PocketFilm; docs/theory/quasistatic.md#the-pocket-film)
+    the friction acts on the contact force the film's pressure leaves, and the film's shear adds its moment to
+    the balls' equilibrium and, reversed, the torque -M_z to the cage's. Returns (kin, dict of the cage's
+    quantities)."""
     z = geo.shape[0]
     mu_c = rc.pocket_friction
+    held_film = None
+    if film is not None:
+        def held_film(_wm, wr, wz, q):
+            st = film.held(q, wr, wz)
+            return st["contact_force"], st["m_r"], st["m_z"]
     new = kin.copy()
     q_p = np.zeros(z)
     checks = [None] * z
@@ -977,7 +1008,7 @@ def _caged_balls(omega_c, geo, loaded, races, stage, kin, rc, model, n_strips, n
         if stage == "equilibrium" and (geo[j, km.G_QO] > 0.0 or geo[j, km.G_QI] > 0.0):
             start = np.array([omega_c, kin[j, 1], kin[j, 2], kin[j, 3]])
             k, chk = km.traction_equilibrium(geo[j], model, n_strips, n_across, start, inertia, omega_m=omega_c,
-                                             pocket_friction=mu_c)
+                                             pocket_friction=mu_c, pocket_film=held_film)
             if chk["converged"]:
                 new[j], q_p[j], checks[j], used[j] = k, chk["pocket_force"], chk, "equilibrium"
                 continue
@@ -1006,10 +1037,18 @@ def _caged_balls(omega_c, geo, loaded, races, stage, kin, rc, model, n_strips, n
     wz_unit = np.divide(new[:, 2], w, out=np.zeros(z), where=w > 0.0)
     wr_unit = np.divide(new[:, 1], w, out=np.zeros(z), where=w > 0.0)
     t_normal = -q_p * cr
-    t_friction = mu_c * np.abs(q_p) * rb * wz_unit
+    q_contact = q_p                                    # the part of the pocket force the wall's contact carries
+    film_out = None
+    if film is not None:
+        q_contact, film_out = _pocket_film_state(film, new, q_held, f, omega_c, free)
+    t_friction = mu_c * np.abs(q_contact) * rb * wz_unit
     # the net in-plane force of the pockets on the cage: -Q_p e_psi and the friction's radial part
     s = -np.sign(q_p)                                  # side of the ball the wall touches, along e_psi
-    f_r = -mu_c * np.abs(q_p) * s * wz_unit            # radial friction on the cage
+    f_r = -mu_c * np.abs(q_contact) * s * wz_unit      # radial friction on the cage
+    t_film = 0.0
+    if film_out is not None:  # the film's shear: its moment about the axis and its radial force, reversed
+        f_r = f_r - film_out["f_r"]
+        t_film = -film_out["m_z"]
     fx = float(np.sum(q_p * np.sin(psi) + f_r * np.cos(psi)))
     fy = float(np.sum(-q_p * np.cos(psi) + f_r * np.sin(psi)))
     eps, t_land, crushed, w_ring = 0.0, 0.0, False, 0.0
@@ -1018,9 +1057,17 @@ def _caged_balls(omega_c, geo, loaded, races, stage, kin, rc, model, n_strips, n
         eps, t_land, crushed = _land_state(rc, lub, omega_c, w_ring, math.hypot(fx, fy))
     torque = float(np.sum(t_normal) + np.sum(t_friction) + t_land)
     scale = float(np.sum(np.abs(t_normal)) + np.sum(np.abs(t_friction)) + abs(t_land))
+    friction_power = np.atleast_1d(_ls.cage_pocket_friction_power(q_contact, w, 2.0 * rb, mu_c))
+    film_power = np.zeros(z)
+    if film_out is not None:
+        torque += float(np.sum(t_film))
+        scale += float(np.sum(np.abs(t_film)))
+        film_power = film_out["power"]
     sliding = rb * w
     return new, {"speed": float(omega_c), "pocket_force": q_p, "pocket_sliding_speed": sliding,
-                 "pocket_power_ball": np.atleast_1d(_ls.cage_pocket_friction_power(q_p, w, 2.0 * rb, mu_c)),
+                 "pocket_power_ball": friction_power + film_power, "pocket_film_power_ball": film_power,
+                 "pocket_contact_force": np.asarray(q_contact, float),
+                 "pocket_film_gap": None if film_out is None else film_out["gap"],
                  "land_torque": t_land,
                  "land_power": -t_land * (omega_c - w_ring), "land_eccentricity": eps, "land_crushed": crushed,
                  "land_force": math.hypot(fx, fy), "ring_speed": w_ring, "torque": torque,
@@ -1029,15 +1076,38 @@ def _caged_balls(omega_c, geo, loaded, races, stage, kin, rc, model, n_strips, n
                  "free_kinematics": None if free is None else np.where(np.isfinite(free), free, new)}
 
 
-def _solve_cage(geo, loaded, races, stage, kin, rc, model, n_strips, n_across, inertia, lub, w_i, w_o, psi):
+def _pocket_film_state(film, kin, q_held, f, omega_c, free):
+    """(contact force [N] per ball, dict of the film's time means per ball) of the pocket ``film`` (a
+    PocketFilm) at the cage speed ``omega_c``: a ball held on its wall the share ``f`` of the time (the pocket
+    play) with the pocket force ``q_held`` and the kinematics ``kin`` (w_r, w_z relative to the cage), floating
+    centred the rest with its own kinematics ``free`` (rotation relative to the cage: w_r, w_z + omega_m -
+    omega_c). The dict: f_r, m_z (the shear's radial force and axial moment on the ball), power [W] and the
+    held ball's near gap [m]."""
+    z = kin.shape[0]
+    contact, f_r, m_z, power, gap = (np.zeros(z) for _ in range(5))
+    for j in range(z):
+        h = film.held(q_held[j], kin[j, 1], kin[j, 2])
+        contact[j] = math.copysign(f[j] * h["contact_force"], q_held[j])
+        f_r[j], m_z[j], power[j], gap[j] = f[j] * h["f_r"], f[j] * h["m_z"], f[j] * h["power"], h["gap"]
+        if f[j] < 1.0:
+            c = film.centred(free[j, 1], free[j, 2] + free[j, 0] - omega_c)
+            f_r[j] += (1.0 - f[j]) * c["f_r"]
+            m_z[j] += (1.0 - f[j]) * c["m_z"]
+            power[j] += (1.0 - f[j]) * c["power"]
+    return contact, {"f_r": f_r, "m_z": m_z, "power": power, "gap": gap}
+
+
+def _solve_cage(geo, loaded, races, stage, kin, rc, model, n_strips, n_across, inertia, lub, w_i, w_o, psi,
+                film=None):
     """The cage speed that balances the cage's torque (:func:`_caged_balls`; brentq on a bracket widened from
-    the balls' present orbital speeds: the torque falls with the cage speed) and the balls at it."""
+    the balls' present orbital speeds: the torque falls with the cage speed) and the balls at it; ``film``
+    the pocket film (a PocketFilm) or None."""
     last = {}
-    free = _free_balls(geo, loaded, races, stage, kin, model, n_strips, n_across, inertia)
+    free = _free_balls(geo, loaded, races, stage, kin, model, n_strips, n_across, inertia, film)
 
     def torque(wc):
         k, info = _caged_balls(wc, geo, loaded, races, stage, last.get("kin", kin), rc, model, n_strips, n_across,
-                               inertia, lub, w_i, w_o, psi, free)
+                               inertia, lub, w_i, w_o, psi, free, film)
         last["kin"], last["info"], last["wc"] = k, info, wc
         return info["torque"]
 
@@ -1077,10 +1147,12 @@ def _solve_cage(geo, loaded, races, stage, kin, rc, model, n_strips, n_across, i
     return k, info
 
 
-def _cage_result(rc, info, out, moving, w_i):
+def _cage_result(rc, info, out, moving, w_i, film=None):
     """The solution's ``cage`` dict (and the per-ball ``pocket_force``, ``pocket_sliding_speed`` in ``out``):
     speed [rad/s], losses [W] by kind, land torque [N m], force [N] and eccentricity, the torque balance's
-    relative residual; a CageLandWarning when the land film is crushed."""
+    relative residual; a CageLandWarning when the land film is crushed. With the pocket ``film`` also the film's
+    part of the pocket loss (``power_pocket_film``, per ball ``pocket_film_power``), the contact force the film
+    leaves (``pocket_contact_force``) and the held balls' near gap (``pocket_film_gap``)."""
     z = out["psi"].size
     if not moving or info is None:  # the rings turn together: the cage with them, no pocket or land force
         info = {"speed": float(w_i), "pocket_force": np.zeros(z), "pocket_sliding_speed": np.zeros(z),
@@ -1091,6 +1163,12 @@ def _cage_result(rc, info, out, moving, w_i):
     out["pocket_sliding_speed"] = np.asarray(info["pocket_sliding_speed"], float).copy()
     out["pocket_force_held"] = np.asarray(info.get("pocket_force_held", info["pocket_force"]), float).copy()
     out["pocket_contact_fraction"] = np.asarray(info.get("pocket_contact_fraction", np.ones(z)), float).copy()
+    out["pocket_contact_force"] = np.asarray(info.get("pocket_contact_force", info["pocket_force"]), float).copy()
+    film_power = np.asarray(info.get("pocket_film_power_ball", np.zeros(z)), float)
+    out["pocket_film_power"] = film_power.copy()
+    if film is not None:
+        gap = info.get("pocket_film_gap")
+        out["pocket_film_gap"] = np.full(z, film.clearance) if gap is None else np.asarray(gap, float).copy()
     if info["land_crushed"]:
         warnings.warn(CageLandWarning(
             f"rigid_cage: the land film cannot carry the net pocket force {info['land_force']:.4g} N within the "
@@ -1100,6 +1178,7 @@ def _cage_result(rc, info, out, moving, w_i):
             "Scenario(cage='rigid'))) models the land contact"), stacklevel=3)
     return {"model": "rigid", "guidance": rc.guidance, "pocket_friction": rc.pocket_friction,
             "speed": info["speed"], "power_pocket": float(np.sum(info["pocket_power_ball"])),
+            "pocket_film": film is not None, "power_pocket_film": float(np.sum(film_power)),
             "power_land": float(info["land_power"]), "land_torque": float(info["land_torque"]),
             "land_force": float(info["land_force"]), "land_eccentricity": float(info["land_eccentricity"]),
             "land_crushed": bool(info["land_crushed"]), "torque_residual": float(info["torque_residual"]),
