@@ -204,3 +204,27 @@ def test_the_exudyn_element_has_the_same_pocket_film():
     assert a["pocket_force_max"] > 0.0
     for key in ("cage_speed", "q_max_inner", "pocket_force_max", "cage_power_pocket"):
         assert c[key] == pytest.approx(a[key], rel=1e-6), key
+
+
+def test_the_kernel_takes_the_far_gap_across_the_pocket():
+    # the walls are 2 c_p apart across the ball: a ball offset x from the pocket's centre has gaps c_p - x and
+    # c_p + x, so a centred ball turning in its pocket gets no net film force, and the force of an offset ball
+    # shrinks to zero as it returns to the centre (the kernel's far gap was h + 2 c_p: w(c_p) - w(3 c_p) there)
+    from exudyn_bearing.model import layout as L
+    from exudyn_bearing.model.contact import _pocket_film_force, _pocket_film_gaps
+    from exudyn_bearing.solvers.reference.engine import ReferenceEngine
+
+    eng = ReferenceEngine("6208", eb.Scenario(Fr=3000.0, omega=500.0, cage="rigid", pocket_film=True))
+    p = eng.params
+    cp = p[L.P_POCKET_GAP]
+    for x in (0.0, 0.3 * cp, 0.9 * cp):
+        near, far = _pocket_film_gaps(p, cp - x, 1e-9)
+        assert near == pytest.approx(cp - x, rel=1e-12) and far == pytest.approx(cp + x, rel=1e-12)
+
+    def force(x):  # a ball sliding 2 m/s on its walls, its centre still in the cage, offset x toward n = e_x
+        near, far = _pocket_film_gaps(p, cp - x, 1e-9)
+        return _pocket_film_force(p, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 2.0, 0.0, near, far, 0.0, 1e-3, 0.0)
+
+    assert force(0.3 * cp) > 0.0  # off the near wall
+    assert abs(force(0.0)) < 1e-12 * force(0.3 * cp)  # zero to round-off
+    assert abs(force(1e-4 * cp)) < 1e-3 * force(0.3 * cp)  # continuous through the centre

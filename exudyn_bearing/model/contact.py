@@ -883,10 +883,11 @@ def _land_force(p, ex, ey, evx, evy, omega_sum):
 
 @kernel(no_runtime=True, inline="always")
 def _pocket_film_gaps(p, h, floor):
-    """(near, far) [m]: the pocket film's gaps at the wall the ball approaches (``h``) and at the opposite wall
-    (h + 2 c_p), each at least ``floor`` (the composite roughness)."""
+    """(near, far) [m]: the pocket film's gaps at the wall the ball approaches (``h`` = c_p - offset) and at the
+    opposite wall (2 c_p - h = c_p + offset: the walls are 2 c_p apart across the ball), each at least ``floor``
+    (the composite roughness)."""
     near = h if h > floor else floor
-    far = h + 2.0 * p[P_POCKET_GAP]
+    far = 2.0 * p[P_POCKET_GAP] - h
     if far < floor:
         far = floor
     return near, far
