@@ -15,7 +15,7 @@ from exudyn_bearing.model.contact import scene_loss_path, scene_paths
 from exudyn_bearing.model.motion import ring_poses
 from exudyn_bearing.model.scenario import resolve_cage
 from exudyn_bearing.model.stability import land_step_check, stable_step
-from exudyn_bearing.outputs.cage_summary import whirl
+from exudyn_bearing.outputs.cage_summary import whirl, whirl_line
 from exudyn_bearing.physics.short_bearing import short_bearing_force_xy
 from exudyn_bearing.solvers.reference.engine import ReferenceEngine
 from exudyn_bearing.solvers.reference.integrators import evaluate
@@ -326,6 +326,53 @@ def test_whirl_of_a_circular_orbit():
     assert radius == pytest.approx(1e-5, rel=1e-6)
     assert ratio == pytest.approx(rate / cage, rel=1e-9)
     assert math.isnan(whirl(t, np.zeros((1001, 2)), cage)[1])
+
+
+def test_the_whirl_line_of_an_irregular_orbit():
+    # a forward whirl at 1.5 times the cage speed, 5 um, with a backward one at 0.3 times it, 3 um, and a slow
+    # wander of the centre: the mean turning rate is no frequency of either, the strongest line is the forward
+    # whirl's, within the resolution, with most of the power; uneven samples are refused (NaN)
+    t = np.linspace(0.0, 0.2, 10001)
+    cage = 200.0
+    z = 5e-6 * np.exp(1j * 1.5 * cage * t) + 3e-6 * np.exp(-1j * 0.3 * cage * t) + 2e-6 * np.sin(7.0 * t) * (1 + 1j)
+    xy = np.stack([z.real, z.imag], axis=1)
+    line, share, resolution = whirl_line(t, xy, cage)
+    assert resolution == pytest.approx(2.0 * math.pi / 0.2 / cage, rel=1e-3)
+    assert abs(line - 1.5) <= resolution
+    assert share > 0.5
+    # turning the cage the other way turns every sign: the line is then against the cage
+    assert whirl_line(t, xy, -cage)[0] == pytest.approx(-line)
+    uneven = t + 1e-4 * np.sin(t * 50.0) * (t > 0.1)
+    assert math.isnan(whirl_line(uneven, xy, cage)[0])
+
+
+def _summary_of_orbit(t, xy, cage):
+    """rigid_cage_summary of a made-up window: the cage centre at ``xy``, the 6208's outer-land cage."""
+    from exudyn_bearing.outputs.cage_summary import rigid_cage_summary
+
+    n = len(t)
+    xc = np.zeros((n, 9, 3))
+    xc[:, 0, :2] = xy
+    data = {"t": t, "xc": xc, "glob": np.zeros((n, L.NGLOBAL)), "cage_load": np.zeros((n, 9, 2))}
+    return rigid_cage_summary(data, slice(0, n), _engine().params, cage, cage)
+
+
+def test_the_summary_gives_a_whirl_ratio_only_for_a_circling_orbit():
+    # a circle of 30 um at 1.5 times the cage speed: circling, its mean turning rate is the line; the same with
+    # a backward whirl of 20 um and a jitter of 10 um (seeded) on top: irregular, no ratio (its mean turning rate
+    # is no frequency), the line still +1.5
+    t = np.linspace(0.0, 0.2, 10001)
+    cage = 200.0
+    fwd = 30e-6 * np.exp(1j * 1.5 * cage * t)
+    jitter = 10e-6 * np.random.default_rng(1).standard_normal((t.size, 2)) @ np.array([1.0, 1j])
+    for z, motion in ((fwd, "circling"), (fwd + 20e-6 * np.exp(-1j * 0.7 * cage * t) + jitter, "irregular")):
+        s = _summary_of_orbit(t, np.stack([z.real, z.imag], axis=1), cage)
+        assert s["cage_motion"] == motion
+        assert abs(s["cage_whirl_line"] - 1.5) <= s["cage_whirl_resolution"]
+        if motion == "circling":
+            assert s["cage_whirl_ratio"] == pytest.approx(1.5, rel=1e-2)  # 9.5 turns: the mean position is off
+        else:
+            assert s["cage_whirl_ratio"] is None
 
 
 def test_gravity_and_unbalance_act_on_the_cage_and_count_as_drive():

@@ -16,11 +16,18 @@ damping, --t-end long, summaries over the last quarter.
     whirl spectrum over the last half (frequency over the cage speed; + in the cage's direction of rotation);
     with the inner ring turning at 500 rad/s and, the same settings otherwise, with the outer ring turning at
     500 rad/s and the inner ring at rest (``Scenario.omega_outer``; --spacing-rings chooses).
+(f) The whirl line of an irregular orbit: the 6208 papers' radial case (F_r = 3000 N, the scene's defaults:
+    its estimated outer-land cage, point traction with the Cundall-Strack spring, no gravity), --t-end-whirl long,
+    at 300, 500 and 800 rad/s at 1 us and at 500 rad/s also at 2 and 0.5 us: the class, the orbit, the mean
+    turning rate over the cage speed (``outputs.cage_summary.whirl``, what ``cage_whirl_ratio`` is for a
+    circling orbit) and the strongest line of the whirl spectrum (``whirl_line``: frequency over the cage speed,
+    its share of the orbit's power, the resolution), beside (omega - omega_c) / omega_c.
 (d) High speed: Gupta's ACBB-120 at 25,000 rpm under 22,240 N thrust (its oil and EHL traction, the estimated
     outer-land brass cage, its default cage, 2 us, ellipse traction from the quasi-static start, --t-end-hs),
     balanced and with an unbalance U = 2e-6 kg m (U omega_c^2 about 2.8 N): orbit, whirl ratio, class, land loss.
 
-    python validation/studies/cage_motion.py [--t-end 0.2] [--t-end-hs 0.06] [--t-end-spacing 1.2] [--only a b c d e]
+    python validation/studies/cage_motion.py [--t-end 0.2] [--t-end-hs 0.06] [--t-end-spacing 1.2]
+        [--t-end-whirl 0.6] [--only a b c d e f]
         [--spacing-rings inner outer] [--out validation/out/cage_motion]
 
 Writes cage_motion.json, cage_motion_orbits.png and cage_motion_orbits.npz into --out.
@@ -38,12 +45,19 @@ import numpy as np
 import exudyn_bearing as eb
 from exudyn_bearing.data.cages import estimated_cage
 from exudyn_bearing.model import layout as L
+from exudyn_bearing.outputs.cage_summary import whirl, whirl_line
+from exudyn_bearing.outputs.cage_summary import whirl_spectrum as cage_whirl_spectrum
 from exudyn_bearing.outputs.plotting import pyplot, save_figure
 
 ROOT = Path(__file__).resolve().parents[2]
 KEYS = ("cage_speed", "cage_slip", "cage_motion", "cage_orbit_ratio", "cage_orbit_variation", "cage_centre_speed",
-        "cage_whirl_ratio", "cage_offset", "land_eccentricity_max", "pocket_force_max", "cage_power_pocket",
+        "cage_whirl_ratio", "cage_whirl_line", "cage_whirl_line_share", "cage_whirl_resolution", "cage_offset", "land_eccentricity_max", "pocket_force_max", "cage_power_pocket",
         "cage_power_land", "energy_residual")
+
+
+def s_keys(s):
+    """The summary ``s``'s values of :data:`KEYS`."""
+    return {k: s.get(k) for k in KEYS}
 
 
 def run(fr, omega, t_end, mu=0.1, unbalance=0.0):
@@ -73,15 +87,12 @@ def run_high_speed(t_end, unbalance=0.0):
 
 
 def whirl_spectrum(rec, cage_speed):
-    """(f, a) of the cage centre's whirl over the last half of ``rec``: angular frequency [rad/s], + in the
-    cage's direction of rotation, and amplitude, from the FFT of x + i y about its mean (Hann window; the
-    frequency resolution is 2 pi / the window's length)."""
+    """(f, a) of the cage centre's whirl over the last half of ``rec``
+    (:func:`exudyn_bearing.outputs.cage_summary.whirl_spectrum`): angular frequency [rad/s], + in the cage's
+    direction of rotation, and amplitude (Hann window; the resolution is 2 pi / the window's length)."""
     t = rec.data["t"]
     w = t >= 0.5 * t[-1]
-    xy = rec.data["xc"][w, 0, :2]
-    zc = (xy[:, 0] - xy[:, 0].mean()) + 1j * (xy[:, 1] - xy[:, 1].mean())
-    f = np.fft.fftfreq(zc.size, d=t[1] - t[0]) * 2.0 * np.pi * np.sign(cage_speed)
-    return f, np.abs(np.fft.fft(zc * np.hanning(zc.size)))
+    return cage_whirl_spectrum(t[w], rec.data["xc"][w, 0, :2], cage_speed)
 
 
 #: Band of the faster whirls (:func:`faster_whirls`): above FASTER_FROM and up to FASTER_UPTO times the cage speed.
@@ -141,7 +152,8 @@ def main(argv=None):
     ap.add_argument("--t-end", type=float, default=0.2)
     ap.add_argument("--t-end-hs", type=float, default=0.06, help="run length of the high-speed runs (d) [s]")
     ap.add_argument("--t-end-spacing", type=float, default=1.2, help="run length of the spacing runs (e) [s]")
-    ap.add_argument("--only", nargs="+", choices=("a", "b", "c", "d", "e"), default=["a", "b", "c", "d", "e"])
+    ap.add_argument("--t-end-whirl", type=float, default=0.6, help="run length of the whirl-line runs (f) [s]")
+    ap.add_argument("--only", nargs="+", choices=("a", "b", "c", "d", "e", "f"), default=["a", "b", "c", "d", "e", "f"])
     ap.add_argument("--spacing-rings", nargs="+", choices=("inner", "outer"), default=["inner", "outer"],
                     help="the turning ring of the spacing runs (e)")
     ap.add_argument("--out", default=str(ROOT / "validation" / "out" / "cage_motion"))
@@ -212,6 +224,26 @@ def main(argv=None):
         print(f"    {'':12s} strongest faster whirl ({FASTER_FROM:g}-{FASTER_UPTO:g} times the cage speed): "
               + ", ".join(f"{'with' if k == '+' else 'against'} the cage {fq:+.3f}: {amp:.3f}"
                           for k, (fq, amp) in faster.items()), flush=True)
+
+    if "f" in args.only:
+        print(f"(f) 6208 radial 3000 N, its estimated outer-land cage, the scene's defaults, {args.t_end_whirl:g} s, "
+              "window the last quarter: mean turning rate against the whirl spectrum's strongest line")
+        report["f_whirl_line"] = []
+    for omega, dt in ((300.0, 1e-6), (500.0, 2e-6), (500.0, 1e-6), (500.0, 0.5e-6), (800.0, 1e-6)) \
+            if "f" in args.only else ():
+        sc = eb.Scenario(Fr=3000.0, omega=omega, t_end=args.t_end_whirl, dt=dt, sample_dt=2e-5, cage="rigid")
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", eb.SteadyStateWarning)
+            rec = eb.simulate("6208", sc, progress=False)
+            s = rec.summary()
+        w = rec.t >= s["window"]["t0"]
+        cs = s["cage_speed"]
+        rate = whirl(rec.t[w], rec.data["xc"][w, 0, :2], cs)[1]
+        line, share, res = whirl_line(rec.t[w], rec.data["xc"][w, 0, :2], cs)
+        report["f_whirl_line"].append({"omega": omega, "dt": dt, "mean_turning_ratio": rate, **s_keys(s)})
+        print(f"    {omega:5g} rad/s {1e6 * dt:4g} us: cage {cs:6.1f} rad/s {s['cage_motion']:9s} orbit/clearance "
+              f"{s['cage_orbit_ratio']:.3f}; mean turning rate {rate:+.3f}, line {line:+.3f} (share {share:.2f}, "
+              f"resolution {res:.3f}); (omega - omega_c) / omega_c {(omega - cs) / cs:.3f}", flush=True)
 
     cols = max(1, min(4, len(orbits)))
     rows = max(1, -(-len(orbits) // cols))
