@@ -983,8 +983,8 @@ def _rigid_cage(p, xb, vb, wb, xc, vc, rings, fb, tb, fc, fr, glob, cage_load, w
     tau = p[P_CAGE_TAU]
     mc = p[P_MC]
     m_eff = p[P_MB] * mc / (p[P_MB] + mc)
-    # the bearing frame turned off the world (the element's bearing axis off the world z): the states and forces
-    # are turned; with the identity (the reference engine) they are used as they are
+    # the bearing frame turned off the world (in the element, an outer ring turned at t = 0): the states and forces
+    # are turned; with the identity (its diagonal exactly 1: the reference engine) they are used as they are
     turned = not (p[P_CAGE_FRAME] == 1.0 and p[P_CAGE_FRAME + 4] == 1.0 and p[P_CAGE_FRAME + 8] == 1.0)
     cx, cy, cz = _to_cage_frame(p, turned, xc[0, 0], xc[0, 1], xc[0, 2])
     ux, uy, uz = _to_cage_frame(p, turned, vc[0, 0], vc[0, 1], vc[0, 2])

@@ -64,7 +64,10 @@ NodeRigidBodyRxyz with an ObjectRigidBody, its tilts held by
 CoordinateConstraints) whose node joins the ball object with zero mass, so
 that the user function reads its state and returns its force and moment as
 for the balls; in the fast mode it is integrated with the balls in their
-sub-steps. The bearing axis must be the world z axis.
+sub-steps. The bearing axis may point anywhere (a shaft along the world x
+axis included): the cage moves in ``cageFrame``, the outer ring's frame at
+t = 0, where gravity (given in the world) acts and the samples report it
+(docs/theory/cage.md#in-the-exudyn-element).
 
 Defects and signals (both modes): ``defects`` (:class:`exudyn_bearing.data.Defect`
 objects or dicts) puts localized spalls into the contact model; an
@@ -245,9 +248,18 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
         connectors; its tilts are held by two CoordinateConstraints
         (``items["cageConstraints"]``). None otherwise (the fast mode
         integrates the cage inside the element; docs/theory/cage.md#in-the-exudyn-element).
+        The body turns about the bearing axis by its node's third angle (about
+        its local z), or by its first (about its local x) when the axis is the
+        world x axis (docs/theory/cage.md#in-the-exudyn-element).
+    cageFrame : ndarray (3, 3) or None
+        With ``cage="rigid"``: the rigid cage's bearing frame, its axes in the
+        columns (the third the bearing axis): the outer ring's frame at t = 0.
+        The cage moves in it, gravity acts in it (``scenario.gravity`` holds the
+        option's world gravity in its components) and the land force of the
+        samples (``glob``) is in it. None otherwise.
     sensors : dict
         Sensor numbers (``cageSpeed``: mean orbital speed of the cage balls, the rigid cage's spin about the
-        world z axis; ``qMaxInner``, ``qMaxOuter``,
+        bearing axis; ``qMaxInner``, ``qMaxOuter``,
         ``lambdaOuterPsi0``, ``innerRingForce``, ``outerRingForce``: force of
         the balls on the ring [N]), stored internally: use
         ``mbs.PlotSensor`` or ``mbs.GetSensorStoredData``.
@@ -270,8 +282,7 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
     world frame] the gravity the element applies on the rigid cage (give it
     here rather than as a load on ``cageBody``: the element's energy balance
     counts it as drive), ``pocketFilm`` the oil film between ball and pocket
-    (``Scenario.pocket_film``); with the rigid cage the bearing axis must be the
-    world z axis;
+    (``Scenario.pocket_film``);
     ``initialLoad`` is (Fr, Fa) [N] or a radial load Fr, its radial part along ``loadAngle`` [rad] from
     the outer ring's x axis (default 0, as the levels); an invalid option
     raises InputError naming it (``stepSize``, ``sampleInterval``,
@@ -415,7 +426,7 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
     def _outer_ring_turn(self, x_axis, omega):
         """(angle [rad], spin [rad/s]) of the outer ring about the bearing axis in the rigid cage's bearing frame
         (``cageFrame``): the angle from e1 of the ring's x axis ``x_axis`` (world), and its angular velocity
-        ``omega`` (world) along e3. With the world z axis as the bearing axis, its angle about z and omega_z."""
+        ``omega`` (world) along e3. The frame is the outer ring's at t = 0: its angle is 0 until it turns."""
         u = self.cageFrame.T @ np.asarray(x_axis, float)
         return math.atan2(u[1], u[0]), float(self.cageFrame[:, 2] @ np.asarray(omega, float))
 
