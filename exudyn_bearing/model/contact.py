@@ -1074,7 +1074,8 @@ def _rigid_cage(p, xb, vb, wb, xc, vc, rings, fb, tb, fc, fr, glob, cage_load, w
             shx, shy, shz, smx, smy, smz, sh_power = _pocket_film_shear(p, qx, qy, qz, bwx, bwy, bwz - wc,
                                                                         nx, ny, nz, near, far)
         gx, gy, gz = tx - f * nx, ty - f * ny, tz - f * nz  # the pocket's force on the ball, at the contact point
-        wx, wy, wz = _from_cage_frame(p, turned, gx + shx, gy + shy, gz + shz)  # the ball's force and moment in the world
+        # the ball's force and moment in the world
+        wx, wy, wz = _from_cage_frame(p, turned, gx + shx, gy + shy, gz + shz)
         fb[j, 0] += wx
         fb[j, 1] += wy
         fb[j, 2] += wz

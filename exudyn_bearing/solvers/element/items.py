@@ -161,9 +161,10 @@ class ItemsMixin:
         CoordinateConstraints to a ground node (Exudyn's explicit solvers eliminate such constraints): the four
         degrees of freedom of the reference engine's cage. Its angles at the cage angle 0 and the one that turns
         it about the bearing axis (the third, about its local z, or the first, about its local x, for the world
-        x axis) are :func:`~.kernels.cage_frame`'s and :func:`~.kernels.cage_spin`'s; the other two are held. The node also joins the element's ball object with
-        zero mass there, so that its coordinates and the cage's force and moment from the contact kernel take
-        the path of the balls'. Appends its six zero masses to ``mass``; returns [node]."""
+        x axis) are :func:`~.kernels.cage_frame`'s and :func:`~.kernels.cage_spin`'s; the other two are held,
+        with I_c about the turning axis. The node also joins the element's ball object with zero mass there, so
+        that its coordinates and the cage's force and moment from the contact kernel take the path of the
+        balls'. Appends its six zero masses to ``mass``; returns [node]."""
         from exudyn.itemInterface import (CoordinateConstraint, MarkerBodyRigid, MarkerNodeCoordinate,
                                           NodePointGround, NodeRigidBodyRxyz, ObjectRigidBody)
 
@@ -183,6 +184,7 @@ class ItemsMixin:
         ground = mbs.AddNode(NodePointGround())
         m_ground = mbs.AddMarker(MarkerNodeCoordinate(nodeNumber=ground, coordinate=0))
         self._cage_constraints = [mbs.AddObject(CoordinateConstraint(markerNumbers=[
-            m_ground, mbs.AddMarker(MarkerNodeCoordinate(nodeNumber=node, coordinate=c))])) for c in (3, 4, 5) if c != k]
+            m_ground, mbs.AddMarker(MarkerNodeCoordinate(nodeNumber=node, coordinate=c))]))
+            for c in (3, 4, 5) if c != k]
         mass += [0.0] * 6
         return [node]

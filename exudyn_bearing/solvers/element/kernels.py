@@ -8,7 +8,7 @@ forces of all these coordinates.
 Coordinate layout of the object: ball j owns coordinates 6j..6j+5 (position
 and an integrated global rotation vector whose rate is the angular velocity:
 exact Newton-Euler for a homogeneous sphere, whose orientation never enters
-the the cage balls, cage ball k owns 6(Z+k)..6(Z+k)+5. With the rigid cage (body
+the forces), cage ball k owns 6(Z+k)..6(Z+k)+5. With the rigid cage (body
 mode) its NodeRigidBodyRxyz owns 6Z..6Z+5 (centre, Tait-Bryan angles; the
 tilts held at their reference values by constraints), mapped to and from the contact kernel's
 cage rows (:mod:`exudyn_bearing.model.layout`: ``xc[0]`` the centre,
@@ -25,8 +25,8 @@ from numba.experimental import structref
 
 from ..._jit import kernel
 from ...model.contact import accumulate_energy, forces
-from ...model.layout import (NDIAG, NGLOBAL, NSIGNAL, P_CAGE, P_CAGE_ANGLE0, P_CAGE_FRAME, P_IB, P_IC, P_MB, P_MC, P_MZ, P_NDEF,
-                             P_RIGID, R_ANGLE, RING_N)
+from ...model.layout import (NDIAG, NGLOBAL, NSIGNAL, P_CAGE, P_CAGE_ANGLE0, P_CAGE_FRAME, P_IB, P_IC, P_MB, P_MC,
+                             P_MZ, P_NDEF, P_RIGID, R_ANGLE, RING_N)
 from ...model.motion import kick_drift
 from ...model.rigid_nodes import g_xyz as _g_xyz
 from ...model.rigid_nodes import rot_xyz as _rot_xyz
