@@ -96,7 +96,7 @@ from .layout import (POCKET_ESCAPE, G_CAGE_LOAD_POWER, G_LAND_ECC, G_LAND_FX, G_
                      P_K_POCKET, P_LAND_C, P_LAND_EPS, P_LAND_ETA, P_LAND_L, P_LAND_R, P_MC, P_MU_POCKET,
                      P_CAGE_HALF_SECTION, P_POCKET_ETA, P_POCKET_FILM, P_POCKET_FILM_FLOOR, P_POCKET_FILM_HHAT,
                      P_POCKET_FILM_RX, P_POCKET_GAP, P_POCKET_SHAPE, P_POCKET_SPACING, P_POCKET_VREG, P_RIGID, P_GX, P_GY, P_GZ,
-                     P_UNBALANCE)
+                     P_UNBALANCE, P_CAGE_FRAME)
 from .layout import (HZ_E, HZ_EXP, HZ_EXP_FILM, HZ_EXP_K, HZ_F, HZ_FILM_K, HZ_GEO, HZ_K, HZ_LN_RATIO, HZ_LN_U, HZ_LN_W,
                      HZ_N, HZ_RATIO)
 from .layout import (D_ROLLRES, G_DRAG_POWER, G_EHL_POWER, G_HYST_POWER, P_ALPHA_H, P_DRAG, P_ETA_MIX, P_RHO_MIX,
@@ -936,6 +936,28 @@ def _pocket_film_shear(p, qx, qy, qz, ox, oy, oz, nx, ny, nz, near, far):
     return fx, fy, fz, mx, my, mz, -(fx * qx + fy * qy + fz * qz + mx * ox + my * oy + mz * oz)
 
 
+@kernel(inline="always")
+def _to_cage_frame(p, turned, v0, v1, v2):
+    """The components of the world vector v in the rigid cage's bearing frame (``P_CAGE_FRAME``: B^T v); v
+    itself unless ``turned`` (the frame is the identity)."""
+    if not turned:
+        return v0, v1, v2
+    f = P_CAGE_FRAME
+    return (p[f] * v0 + p[f + 3] * v1 + p[f + 6] * v2, p[f + 1] * v0 + p[f + 4] * v1 + p[f + 7] * v2,
+            p[f + 2] * v0 + p[f + 5] * v1 + p[f + 8] * v2)
+
+
+@kernel(inline="always")
+def _from_cage_frame(p, turned, u0, u1, u2):
+    """The world vector of the components u in the rigid cage's bearing frame (``P_CAGE_FRAME``: B u); u itself
+    unless ``turned`` (the frame is the identity)."""
+    if not turned:
+        return u0, u1, u2
+    f = P_CAGE_FRAME
+    return (p[f] * u0 + p[f + 1] * u1 + p[f + 2] * u2, p[f + 3] * u0 + p[f + 4] * u1 + p[f + 5] * u2,
+            p[f + 6] * u0 + p[f + 7] * u1 + p[f + 8] * u2)
+
+
 @kernel(no_runtime=True, internal=True)
 def _rigid_cage(p, xb, vb, wb, xc, vc, rings, fb, tb, fc, fr, glob, cage_load, want):
     """The rigid cage (docs/theory/cage.md): ball j in pocket j, and the cage on its land.
@@ -956,7 +978,13 @@ def _rigid_cage(p, xb, vb, wb, xc, vc, rings, fb, tb, fc, fr, glob, cage_load, w
     (fb, tb), to the cage (``fc[0]`` the force, ``fc[1, 0]`` the moment about the axis times m_c / I_c, so
     that the integrators' common 1/m_c turns it into the angular acceleration) and to the guiding ring
     (fr). Returns the largest overlap of a pocket over R_b (for the runaway measure) and writes the
-    dissipation of pockets and land and the elastic energy of their contacts to ``glob``."""
+    dissipation of pockets and land and the elastic energy of their contacts to ``glob``.
+
+    The cage moves in its bearing frame (``P_CAGE_FRAME``, columns e1, e2, e3 in the world, e3 the bearing
+    axis; the identity in the reference engine): the balls' and rings' states and the cage's centre and
+    velocity (world vectors) are taken in its components, the cage's angle is about e3 from e1, gravity
+    (``P_GX`` to ``P_GZ``) is in it, and the forces and moments go back to the world (B u); the land's force
+    in ``glob`` stays in the frame. With the identity they are skipped."""
     z = xb.shape[0]
     rb = p[P_RB]
     rp = p[P_RP]
@@ -967,8 +995,11 @@ def _rigid_cage(p, xb, vb, wb, xc, vc, rings, fb, tb, fc, fr, glob, cage_load, w
     tau = p[P_CAGE_TAU]
     mc = p[P_MC]
     m_eff = p[P_MB] * mc / (p[P_MB] + mc)
-    cx, cy, cz = xc[0, 0], xc[0, 1], xc[0, 2]
-    ux, uy, uz = vc[0, 0], vc[0, 1], vc[0, 2]
+    # the bearing frame turned off the world (in the element, an outer ring turned at t = 0): the states and forces
+    # are turned; with the identity (its diagonal exactly 1: the reference engine) they are used as they are
+    turned = not (p[P_CAGE_FRAME] == 1.0 and p[P_CAGE_FRAME + 4] == 1.0 and p[P_CAGE_FRAME + 8] == 1.0)
+    cx, cy, cz = _to_cage_frame(p, turned, xc[0, 0], xc[0, 1], xc[0, 2])
+    ux, uy, uz = _to_cage_frame(p, turned, vc[0, 0], vc[0, 1], vc[0, 2])
     wc = vc[1, 0]
     cyl = p[P_POCKET_SHAPE] < 0.5
     fcx, fcy, fcz, tcz = 0.0, 0.0, 0.0, 0.0
@@ -996,9 +1027,13 @@ def _rigid_cage(p, xb, vb, wb, xc, vc, rings, fb, tb, fc, fr, glob, cage_load, w
             c_s, s_s = math.cos(spacing * s_j), math.sin(spacing * s_j)
             co, si = co * c_s - si * s_s, si * c_s + co * s_s
         c_j, s_j = c_j * c_p - s_j * s_p, s_j * c_p + c_j * s_p
-        dx = xb[j, 0] - (cx + rp * co)
-        dy = xb[j, 1] - (cy + rp * si)
-        dz = xb[j, 2] - cz
+        # the ball's position, velocity and angular velocity in the bearing frame
+        bx, by, bz = _to_cage_frame(p, turned, xb[j, 0], xb[j, 1], xb[j, 2])
+        bvx, bvy, bvz = _to_cage_frame(p, turned, vb[j, 0], vb[j, 1], vb[j, 2])
+        bwx, bwy, bwz = _to_cage_frame(p, turned, wb[j, 0], wb[j, 1], wb[j, 2])
+        dx = bx - (cx + rp * co)
+        dy = by - (cy + rp * si)
+        dz = bz - cz
         dr = dx * co + dy * si  # along the pocket's (radial) axis
         if abs(dr) > half_section:  # the ball's centre is outside the cage's section: it has left its pocket
             worst = POCKET_ESCAPE
@@ -1017,11 +1052,11 @@ def _rigid_cage(p, xb, vb, wb, xc, vc, rings, fb, tb, fc, fr, glob, cage_load, w
             worst = delta / rb
         nx, ny, nz = dx / dist, dy / dist, dz / dist
         # the contact point relative to the cage's centre, and the sliding velocity of ball against pocket there
-        px, py = xb[j, 0] + rb * nx - cx, xb[j, 1] + rb * ny - cy
-        ex, ey, ez = _cross(wb[j, 0], wb[j, 1], wb[j, 2], rb * nx, rb * ny, rb * nz)
-        vrx = vb[j, 0] + ex - (ux - wc * py)
-        vry = vb[j, 1] + ey - (uy + wc * px)
-        vrz = vb[j, 2] + ez - uz
+        px, py = bx + rb * nx - cx, by + rb * ny - cy
+        ex, ey, ez = _cross(bwx, bwy, bwz, rb * nx, rb * ny, rb * nz)
+        vrx = bvx + ex - (ux - wc * py)
+        vry = bvy + ey - (uy + wc * px)
+        vrz = bvz + ez - uz
         ddot = vrx * nx + vry * ny + vrz * nz
         f_el = 0.0
         f = 0.0
@@ -1045,27 +1080,30 @@ def _rigid_cage(p, xb, vb, wb, xc, vc, rings, fb, tb, fc, fr, glob, cage_load, w
         shx = shy = shz = smx = smy = smz = sh_power = 0.0
         if film:
             # the ball centre's velocity and angular velocity relative to the cage, and the two films' gaps
-            qx = vb[j, 0] - (ux - wc * (xb[j, 1] - cy))
-            qy = vb[j, 1] - (uy + wc * (xb[j, 0] - cx))
-            qz = vb[j, 2] - uz
+            qx = bvx - (ux - wc * (by - cy))
+            qy = bvy - (uy + wc * (bx - cx))
+            qz = bvz - uz
             near, far = _pocket_film_gaps(p, -delta, film_floor)
             f += _pocket_film_force(p, qx, qy, qz, nx, ny, nz, sx, sy, sz, near, far, ddot, m_eff, tau)
-            shx, shy, shz, smx, smy, smz, sh_power = _pocket_film_shear(p, qx, qy, qz, wb[j, 0], wb[j, 1],
-                                                                        wb[j, 2] - wc, nx, ny, nz, near, far)
+            shx, shy, shz, smx, smy, smz, sh_power = _pocket_film_shear(p, qx, qy, qz, bwx, bwy, bwz - wc,
+                                                                        nx, ny, nz, near, far)
         gx, gy, gz = tx - f * nx, ty - f * ny, tz - f * nz  # the pocket's force on the ball, at the contact point
-        fb[j, 0] += gx + shx
-        fb[j, 1] += gy + shy
-        fb[j, 2] += gz + shz
+        # the ball's force and moment in the world
+        wx, wy, wz = _from_cage_frame(p, turned, gx + shx, gy + shy, gz + shz)
+        fb[j, 0] += wx
+        fb[j, 1] += wy
+        fb[j, 2] += wz
         mx, my, mz = _cross(rb * nx, rb * ny, rb * nz, tx, ty, tz)
-        tb[j, 0] += mx + smx
-        tb[j, 1] += my + smy
-        tb[j, 2] += mz + smz
+        wx, wy, wz = _from_cage_frame(p, turned, mx + smx, my + smy, mz + smz)
+        tb[j, 0] += wx
+        tb[j, 1] += wy
+        tb[j, 2] += wz
         fcx -= gx + shx
         fcy -= gy + shy
         fcz -= gz + shz
         # the cage's moment about its axis: the contact force at the contact point, the shear's force at the
         # ball's centre with its moment there
-        tcz -= px * gy - py * gx + (xb[j, 0] - cx) * shy - (xb[j, 1] - cy) * shx + smz
+        tcz -= px * gy - py * gx + (bx - cx) * shy - (by - cy) * shx + smz
         # dissipated: the normal damping's work, the friction's (minus the pair's power on the sliding) and the
         # shear's (minus its power on the ball's motion relative to the cage)
         pocket_power += (f - f_el) * ddot - (tx * vrx + ty * vry + tz * vrz) + sh_power
@@ -1076,9 +1114,11 @@ def _rigid_cage(p, xb, vb, wb, xc, vc, rings, fb, tb, fc, fr, glob, cage_load, w
     flx, fly, t_sh, ecc = 0.0, 0.0, 0.0, 0.0
     if p[P_GUIDANCE] > 0.5:
         r = 0 if p[P_GUIDANCE] < 1.5 else 1
-        ex, ey = cx - rings[r, 0], cy - rings[r, 1]
-        evx, evy = ux - rings[r, 3], uy - rings[r, 4]
-        w_r = rings[r, 17]
+        rx, ry, _ = _to_cage_frame(p, turned, rings[r, 0], rings[r, 1], rings[r, 2])
+        rvx, rvy, _ = _to_cage_frame(p, turned, rings[r, 3], rings[r, 4], rings[r, 5])
+        ex, ey = cx - rx, cy - ry
+        evx, evy = ux - rvx, uy - rvy
+        w_r = _to_cage_frame(p, turned, rings[r, 15], rings[r, 16], rings[r, 17])[2]  # its spin about the bearing axis
         cl = p[P_LAND_C]
         eps_c = p[P_LAND_EPS]
         e = math.sqrt(ex * ex + ey * ey)
@@ -1111,9 +1151,14 @@ def _rigid_cage(p, xb, vb, wb, xc, vc, rings, fb, tb, fc, fr, glob, cage_load, w
                 / (cl * math.sqrt(1.0 - ee * ee)))
         # the ring takes -F and the moment that balances the pair's angular momentum: -T - (e x F)
         exf = ex * fly - ey * flx
-        fr[r, 0] -= flx
-        fr[r, 1] -= fly
-        fr[r, 5] -= t_sh + exf
+        wx, wy, wz = _from_cage_frame(p, turned, flx, fly, 0.0)
+        fr[r, 0] -= wx
+        fr[r, 1] -= wy
+        fr[r, 2] -= wz
+        wx, wy, wz = _from_cage_frame(p, turned, 0.0, 0.0, t_sh + exf)
+        fr[r, 3] -= wx
+        fr[r, 4] -= wy
+        fr[r, 5] -= wz
         # dissipated: minus the pair's power, less the rate of the land contact's elastic energy
         land_power = -(flx * evx + fly * evy) - t_sh * (wc - w_r) + exf * w_r
         if pen > 0.0:
@@ -1126,9 +1171,7 @@ def _rigid_cage(p, xb, vb, wb, xc, vc, rings, fb, tb, fc, fr, glob, cage_load, w
     gy = mc * p[P_GY] + un * math.sin(xc[1, 0])
     gz = mc * p[P_GZ]
     glob[G_CAGE_LOAD_POWER] = gx * ux + gy * uy + gz * uz
-    fc[0, 0] = fcx + flx + gx
-    fc[0, 1] = fcy + fly + gy
-    fc[0, 2] = fcz + gz
+    fc[0, 0], fc[0, 1], fc[0, 2] = _from_cage_frame(p, turned, fcx + flx + gx, fcy + fly + gy, fcz + gz)
     fc[1, 0] = (tcz + t_sh) * mc / p[P_IC]
     glob[G_POCKET_POWER] = pocket_power
     glob[G_LAND_POWER] = land_power

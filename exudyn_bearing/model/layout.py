@@ -181,9 +181,19 @@ P_LAND_ETA = _entry("land_viscosity", "Pa s", "dynamic viscosity of the land fil
 P_LAND_EPS = _entry("land_crush_eccentricity", "-", "eccentricity ratio beyond which the land film is crushed "
                     "(1 - composite roughness / c): the land contact's penalty takes over")
 P_K_LAND = _entry("k_land", "N/m", "stiffness of the crushed land contact (line contact over the land width)")
-P_GX = _entry("gravity_x", "m/s^2", "gravity on the rigid cage, x (outer-ring frame)")
+P_GX = _entry("gravity_x", "m/s^2", "gravity on the rigid cage, x (the cage's bearing frame, P_CAGE_FRAME)")
 P_GY = _entry("gravity_y", "m/s^2", "gravity on the rigid cage, y")
 P_GZ = _entry("gravity_z", "m/s^2", "gravity on the rigid cage, z (bearing axis)")
+#: The rigid cage's bearing frame: a rotation matrix (row-major, 9 entries) whose columns e1, e2, e3 are the frame's
+#: axes in the world, e3 the bearing axis. The cage's pockets, land, spin and gravity (P_GX..P_GZ) are taken in it:
+#: the identity in the reference engine (its world is the outer-ring frame), in the Exudyn element the outer ring's
+#: frame at t = 0 (solvers/element/kernels.cage_frame).
+P_CAGE_FRAME = _entry("cage_frame_0", "-", "rigid cage's bearing frame, row-major rotation matrix entry 0 (columns: "
+                      "its axes in the world, the third the bearing axis)")
+for _k in range(1, 9):
+    _entry(f"cage_frame_{_k}", "-", f"rigid cage's bearing frame, row-major rotation matrix entry {_k}")
+P_CAGE_ANGLE0 = _entry("cage_angle_offset", "rad", "Exudyn element, body mode: the rigid cage's angle in its bearing "
+                       "frame where its node's turning angle is 0 (solvers/element/kernels.cage_frame; 0 elsewhere)")
 P_UNBALANCE = _entry("cage_unbalance", "kg m", "unbalance U of the rigid cage (mass times the offset of its centre of "
                      "mass, along the cage's angle 0)")
 P_CAGE_HALF_SECTION = _entry("cage_half_section", "m", "half the radial section of the rigid cage, (R_o - R_i) / 2: a "

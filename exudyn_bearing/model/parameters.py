@@ -123,6 +123,7 @@ def _set_rigid_cage(p, b, s, lub):
         p[L.P_POCKET_FILM_FLOOR] = lub.composite_roughness
     p[L.P_GUIDANCE] = GUIDANCES.index(rc.guidance)
     p[L.P_GX], p[L.P_GY], p[L.P_GZ] = s.gravity
+    p[L.P_CAGE_FRAME:L.P_CAGE_FRAME + 9] = np.eye(3).ravel()  # the bearing axis the world z (the element sets its own)
     p[L.P_UNBALANCE] = rc.unbalance
     if rc.guidance != "ball":
         p[L.P_LAND_R] = rc.guide_radius

@@ -64,7 +64,10 @@ NodeRigidBodyRxyz with an ObjectRigidBody, its tilts held by
 CoordinateConstraints) whose node joins the ball object with zero mass, so
 that the user function reads its state and returns its force and moment as
 for the balls; in the fast mode it is integrated with the balls in their
-sub-steps. The bearing axis must be the world z axis.
+sub-steps. The bearing axis may point anywhere (a shaft along the world x
+axis included): the cage moves in ``cageFrame``, the outer ring's frame at
+t = 0, where gravity (given in the world) acts and the samples report it
+(docs/theory/cage.md#in-the-exudyn-element).
 
 Defects and signals (both modes): ``defects`` (:class:`exudyn_bearing.data.Defect`
 objects or dicts) puts localized spalls into the contact model; an
@@ -245,9 +248,18 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
         connectors; its tilts are held by two CoordinateConstraints
         (``items["cageConstraints"]``). None otherwise (the fast mode
         integrates the cage inside the element; docs/theory/cage.md#in-the-exudyn-element).
+        The body turns about the bearing axis by its node's third angle (about
+        its local z), or by its first (about its local x) when the axis is the
+        world x axis (docs/theory/cage.md#in-the-exudyn-element).
+    cageFrame : ndarray (3, 3) or None
+        With ``cage="rigid"``: the rigid cage's bearing frame, its axes in the
+        columns (the third the bearing axis): the outer ring's frame at t = 0.
+        The cage moves in it, gravity acts in it (``scenario.gravity`` holds the
+        option's world gravity in its components) and the land force of the
+        samples (``glob``) is in it. None otherwise.
     sensors : dict
         Sensor numbers (``cageSpeed``: mean orbital speed of the cage balls, the rigid cage's spin about the
-        world z axis; ``qMaxInner``, ``qMaxOuter``,
+        bearing axis; ``qMaxInner``, ``qMaxOuter``,
         ``lambdaOuterPsi0``, ``innerRingForce``, ``outerRingForce``: force of
         the balls on the ring [N]), stored internally: use
         ``mbs.PlotSensor`` or ``mbs.GetSensorStoredData``.
@@ -270,8 +282,7 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
     world frame] the gravity the element applies on the rigid cage (give it
     here rather than as a load on ``cageBody``: the element's energy balance
     counts it as drive), ``pocketFilm`` the oil film between ball and pocket
-    (``Scenario.pocket_film``); with the rigid cage the bearing axis must be the
-    world z axis;
+    (``Scenario.pocket_film``);
     ``initialLoad`` is (Fr, Fa) [N] or a radial load Fr, its radial part along ``loadAngle`` [rad] from
     the outer ring's x axis (default 0, as the levels); an invalid option
     raises InputError naming it (``stepSize``, ``sampleInterval``,
@@ -310,9 +321,7 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
         self.rigid = self.scenario.cage == "rigid"
         # the kernel's rigid cage (model.parameters): the scenario's, or the bearing's estimated one
         self._cage_geometry = self.scenario.rigid_cage_of(b) if self.rigid else None
-        self.params = scene_parameters(b, self.scenario, self.lubricant)
         self.table = hertz.exact_table()
-        self.stable = stable_step(b, self.scenario, self.lubricant)
         self.sampleInterval = float(sampleInterval)
         # rings
         self.rings_spec = [ring_from_marker(mbs, markerInnerRing, "Inner"),
@@ -330,10 +339,19 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
         if abs(float(axis_i @ axis_o)) < 1.0 - 1e-9:
             raise InputError("markerInnerRing: the ring axes (local z of both ring bodies) are not parallel "
                              f"(angle {math.degrees(math.acos(min(1.0, abs(float(axis_i @ axis_o))))):.3g} deg)")
-        if self.rigid and float(poses[1][1][2, 2]) < 1.0 - 1e-9:
-            raise InputError("markerOuterRing: the rigid cage moves in the world's x-y plane (its pockets, land and "
-                             "spin about the world z axis, as in the reference engine): the bearing axis, the "
-                             "outer ring body's local z, must be the world z axis")
+        #: the rigid cage's bearing frame (columns: its axes in the world, the third the bearing axis: the outer
+        #: ring's frame at t = 0; None without the rigid cage), its node's angles and the cage's angle where the
+        #: node's turning angle is 0 (kernels.cage_frame)
+        self.cageFrame, self._cage_angles, self._cage_offset = (EK.cage_frame(poses[1][1]) if self.rigid
+                                                                else (None, None, 0.0))
+        if self.rigid:  # gravity, given in the world, in the bearing frame the kernel takes it in
+            self.scenario = self.scenario.replace(gravity=tuple(float(g) for g in self.cageFrame.T
+                                                                @ np.asarray(self.scenario.gravity, float)))
+        self.params = scene_parameters(b, self.scenario, self.lubricant)
+        if self.rigid:
+            self.params[L.P_CAGE_FRAME:L.P_CAGE_FRAME + 9] = self.cageFrame.ravel()
+            self.params[L.P_CAGE_ANGLE0] = self._cage_offset
+        self.stable = stable_step(b, self.scenario, self.lubricant)
         xb, vb, wb, xc, vc = self._place_balls(poses)
         n_cage = b.n_balls if self.scenario.cage == "torus" else 0
         if mode not in ("bodies", "fast"):
@@ -395,14 +413,22 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
         xc = st["xc"] @ a_o.T + x_o
         vc = st["vc"] @ a_o.T + v_o + np.cross(w_o, xc - x_o)
         if self.scenario.cage == "rigid":
-            # the rigid cage's rows (model.layout): its centre as a point, its angle and spin about the world z
-            # axis (the bearing axis) offset by the outer ring's
+            # the rigid cage's rows (model.layout): its centre as a point, its angle and spin about the bearing
+            # axis in the bearing frame offset by the outer ring's
             xc[1:], vc[1:] = 0.0, 0.0
-            xc[1, 0] = st["xc"][1, 0] + math.atan2(a_o[1, 0], a_o[0, 0])
-            vc[1, 0] = st["vc"][1, 0] + w_o[2]
+            angle, spin = self._outer_ring_turn(a_o[:, 0], w_o)
+            xc[1, 0] = st["xc"][1, 0] + angle
+            vc[1, 0] = st["vc"][1, 0] + spin
         allowed = max(0.0, -0.5 * b.diametral_clearance) + 2.0 * max(float(st.get("max_overlap", 0.0)), 0.0) + 1e-7
         self._check_overlap(xb, poses, allowed)
         return xb, vb, wb, xc, vc
+
+    def _outer_ring_turn(self, x_axis, omega):
+        """(angle [rad], spin [rad/s]) of the outer ring about the bearing axis in the rigid cage's bearing frame
+        (``cageFrame``): the angle from e1 of the ring's x axis ``x_axis`` (world), and its angular velocity
+        ``omega`` (world) along e3. The frame is the outer ring's at t = 0: its angle is 0 until it turns."""
+        u = self.cageFrame.T @ np.asarray(x_axis, float)
+        return math.atan2(u[1], u[0]), float(self.cageFrame[:, 2] @ np.asarray(omega, float))
 
     @property
     def initialCoordinates(self):

@@ -61,8 +61,8 @@ class ItemsMixin:
                 ref[0][6 * j:6 * j + 3] = xb[j]
             for k in range(n_cage):
                 ref[0][6 * (z + k):6 * (z + k) + 3] = xc[k]
-            if rigid_node:  # the cage node's reference coordinates: its centre and the rotation about z
-                ref[0][6 * z:6 * z + 6] = (*xc[0], 0.0, 0.0, xc[1, 0])
+            if rigid_node:  # the cage node's reference coordinates: its centre and angles
+                ref[0][6 * z:6 * z + 6] = mbs.GetNode(rigid_node[0])["referenceCoordinates"]
         offsets = {}
         for r, (kind, node, local, fixed) in enumerate(self.rings_spec):
             self._ring_data[r, EK.RD_OFF] = -1
@@ -159,24 +159,32 @@ class ItemsMixin:
         with an ObjectRigidBody of the cage's mass m_c and inertia (I_c about the axis, the thin ring's
         I_c / 2 + m_c w^2 / 12 about the diameters, which the held tilts never use), its tilts held by two
         CoordinateConstraints to a ground node (Exudyn's explicit solvers eliminate such constraints): the four
-        degrees of freedom of the reference engine's cage. The node also joins the element's ball object with
-        zero mass there, so that its coordinates and the cage's force and moment from the contact kernel take
-        the path of the balls'. Appends its six zero masses to ``mass``; returns [node]."""
+        degrees of freedom of the reference engine's cage. Its angles at the cage angle 0 and the one that turns
+        it about the bearing axis (the third, about its local z, or the first, about its local x, for the world
+        x axis) are :func:`~.kernels.cage_frame`'s and :func:`~.kernels.cage_spin`'s; the other two are held,
+        with I_c about the turning axis. The node also joins the element's ball object with zero mass there, so
+        that its coordinates and the cage's force and moment from the contact kernel take the path of the
+        balls'. Appends its six zero masses to ``mass``; returns [node]."""
         from exudyn.itemInterface import (CoordinateConstraint, MarkerBodyRigid, MarkerNodeCoordinate,
                                           NodePointGround, NodeRigidBodyRxyz, ObjectRigidBody)
 
         p = self.params
         mc, ic = float(p[L.P_MC]), float(p[L.P_IC])
         it = 0.5 * ic + mc * self._cage_geometry.width ** 2 / 12.0
-        node = mbs.AddNode(NodeRigidBodyRxyz(referenceCoordinates=[*xc[0], 0.0, 0.0, float(xc[1, 0])],
-                                             initialCoordinates=[0.0] * 6,
-                                             initialVelocities=[*vc[0], 0.0, 0.0, float(vc[1, 0])]))
+        k, sign = EK.cage_spin(float(self.cageFrame[0, 2]))
+        angles, rates, inertia = list(self._cage_angles), [0.0] * 3, [it, it, it]
+        angles[k - 3] = sign * (float(xc[1, 0]) - self._cage_offset)
+        rates[k - 3] = sign * float(vc[1, 0])
+        inertia[k - 3] = ic
+        node = mbs.AddNode(NodeRigidBodyRxyz(referenceCoordinates=[*xc[0], *angles], initialCoordinates=[0.0] * 6,
+                                             initialVelocities=[*vc[0], *rates]))
         self.cageNode = node
-        self.cageBody = mbs.AddObject(ObjectRigidBody(mass=mc, inertia=[it, it, ic, 0.0, 0.0, 0.0], nodeNumber=node))
+        self.cageBody = mbs.AddObject(ObjectRigidBody(mass=mc, inertia=[*inertia, 0.0, 0.0, 0.0], nodeNumber=node))
         self.cageMarker = mbs.AddMarker(MarkerBodyRigid(bodyNumber=self.cageBody, localPosition=[0.0, 0.0, 0.0]))
         ground = mbs.AddNode(NodePointGround())
         m_ground = mbs.AddMarker(MarkerNodeCoordinate(nodeNumber=ground, coordinate=0))
         self._cage_constraints = [mbs.AddObject(CoordinateConstraint(markerNumbers=[
-            m_ground, mbs.AddMarker(MarkerNodeCoordinate(nodeNumber=node, coordinate=c))])) for c in (3, 4)]
+            m_ground, mbs.AddMarker(MarkerNodeCoordinate(nodeNumber=node, coordinate=c))]))
+            for c in (3, 4, 5) if c != k]
         mass += [0.0] * 6
         return [node]

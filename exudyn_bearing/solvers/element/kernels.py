@@ -10,9 +10,10 @@ and an integrated global rotation vector whose rate is the angular velocity:
 exact Newton-Euler for a homogeneous sphere, whose orientation never enters
 the forces), cage ball k owns 6(Z+k)..6(Z+k)+5. With the rigid cage (body
 mode) its NodeRigidBodyRxyz owns 6Z..6Z+5 (centre, Tait-Bryan angles; the
-tilts held at zero by constraints), mapped to and from the contact kernel's
+tilts held at their reference values by constraints), mapped to and from the contact kernel's
 cage rows (:mod:`exudyn_bearing.model.layout`: ``xc[0]`` the centre,
-``xc[1, 0]`` the angle about the axis, ``vc`` their rates).
+``xc[1, 0]`` the angle about the bearing axis in the cage's bearing frame, ``vc`` their rates;
+:func:`cage_frame`, :func:`cage_spin`).
 """
 from __future__ import annotations
 
@@ -24,8 +25,8 @@ from numba.experimental import structref
 
 from ..._jit import kernel
 from ...model.contact import accumulate_energy, forces
-from ...model.layout import (NDIAG, NGLOBAL, NSIGNAL, P_CAGE, P_IB, P_IC, P_MB, P_MC, P_MZ, P_NDEF, P_RIGID, R_ANGLE,
-                             RING_N)
+from ...model.layout import (NDIAG, NGLOBAL, NSIGNAL, P_CAGE, P_CAGE_ANGLE0, P_CAGE_FRAME, P_IB, P_IC, P_MB, P_MC,
+                             P_MZ, P_NDEF, P_RIGID, R_ANGLE, RING_N)
 from ...model.motion import kick_drift
 from ...model.rigid_nodes import g_xyz as _g_xyz
 from ...model.rigid_nodes import rot_xyz as _rot_xyz
@@ -36,6 +37,56 @@ from ...model.rigid_nodes import rot_xyz as _rot_xyz
 #: rigid-body node with a rotation vector and the local angular velocity as
 #: velocity coordinates (Exudyn's Lie-group node NodeRigidBodyRotVecLG).
 RING_FIXED, RING_POINT, RING_RXYZ, RING_ROTVEC = 0, 1, 2, 3
+
+#: How close (1 - |cos| of the angle) a bearing axis must be to the world's x axis for the rigid cage's node to turn
+#: by its first Tait-Bryan angle (:func:`cage_frame`): the tolerance of the element's check that the ring axes are
+#: parallel.
+AXIS_TOLERANCE = 1e-9
+
+
+def cage_frame(rotation):
+    """The rigid cage's bearing frame and its Exudyn node's angles, for the outer ring's rotation matrix
+    ``rotation`` at t = 0 (world; its third column the bearing axis u).
+
+    Returns (B, angles, offset): B (3, 3) the frame of the outer ring at t = 0, its axes e1, e2, e3 = u in its
+    columns (the contact kernel's ``P_CAGE_FRAME``, in which the cage moves and gravity is taken:
+    docs/theory/cage.md#in-the-exudyn-element); the NodeRigidBodyRxyz angles of the cage body whose node angle
+    :func:`cage_spin` turns it about u; and ``offset``, the cage's angle in B [rad] where that node angle is 0
+    (the kernel's cage angle is sign * node angle + offset, ``P_CAGE_ANGLE0``).
+
+    The node: in general R_x(a) R_y(b) R_z(c), whose (a, b) turn z onto u (u = (sin b, -sin a cos b,
+    cos a cos b): b = asin(u_x), a = atan2(-u_y, u_z)) and whose third angle c turns the body about its local
+    z, the axis. Within ``AXIS_TOLERANCE`` of the world's +-x axis (cos b = 0: Tait-Bryan xyz angles are
+    singular there, and so is Exudyn's mass matrix of the node) the axis is taken as +-x and the node's first
+    angle turns the body about the world x axis, its local x, from the frame (e_y, +-e_z, +-e_x). B is that
+    frame of the node at its turning angle 0, turned about u by the angle of the outer ring's x axis in it:
+    the identity for an outer ring not turned."""
+    a_o = np.asarray(rotation, float)
+    u = a_o[:, 2] / np.linalg.norm(a_o[:, 2])
+    if abs(u[0]) > 1.0 - AXIS_TOLERANCE:
+        s = 1.0 if u[0] > 0.0 else -1.0
+        b0, angles = np.array([[0.0, 0.0, s], [1.0, 0.0, 0.0], [0.0, s, 0.0]]), np.zeros(3)
+    else:
+        a, b = math.atan2(-u[1], u[2]), math.asin(u[0])
+        ca, sa, cb, sb = math.cos(a), math.sin(a), math.cos(b), math.sin(b)
+        rx = np.array([[1.0, 0.0, 0.0], [0.0, ca, -sa], [0.0, sa, ca]])
+        ry = np.array([[cb, 0.0, sb], [0.0, 1.0, 0.0], [-sb, 0.0, cb]])
+        b0, angles = rx @ ry, np.array([a, b, 0.0])
+    x = b0.T @ a_o[:, 0]
+    c0 = math.atan2(x[1], x[0])  # the outer ring's x axis in the node's frame
+    cc, sc = math.cos(c0), math.sin(c0)
+    return b0 @ np.array([[cc, -sc, 0.0], [sc, cc, 0.0], [0.0, 0.0, 1.0]]), angles, -c0
+
+
+@kernel
+def cage_spin(e3x):
+    """(Index among its 6 coordinates, sign) of the rigid cage node's angle that turns the cage about the
+    bearing axis, for the x component ``e3x`` of the bearing frame's e3 (:func:`cage_frame`): the first angle
+    (3, +-1) when the axis is the world's +-x axis (``e3x`` exactly +-1), else the third (5, 1). The cage's
+    angle about the axis is the sign times that coordinate."""
+    if e3x == 1.0 or e3x == -1.0:
+        return 3, e3x
+    return 5, 1.0
 
 
 @kernel
@@ -201,14 +252,19 @@ def element_rhs(q, q_t, ref, p, table, z, n_cage, ring_kind, ring_data, hist, hi
             vc[k, d] = q_t[b + d]
     rigid = p[P_RIGID] > 0.5
     g = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
-    if rigid:  # the rigid cage's node after the balls: centre, angle about the world z axis and their rates
+    e0, e1, e2 = p[P_CAGE_FRAME + 2], p[P_CAGE_FRAME + 5], p[P_CAGE_FRAME + 8]  # the bearing axis (cage_frame)
+    if rigid:  # the rigid cage's node after the balls: centre, angle about the bearing axis and their rates
         b = 6 * (z + n_cage)
         g = _g_xyz(ref[b + 3] + q[b + 3], ref[b + 4] + q[b + 4])
         for d in range(3):
             xc[0, d] = ref[b + d] + q[b + d]
             vc[0, d] = q_t[b + d]
-        xc[1, 0] = ref[b + 5] + q[b + 5]
-        vc[1, 0] = g[6] * q_t[b + 3] + g[7] * q_t[b + 4] + g[8] * q_t[b + 5]  # omega_z
+        k, sign = cage_spin(e0)
+        xc[1, 0] = sign * (ref[b + k] + q[b + k]) + p[P_CAGE_ANGLE0]
+        # the angular velocity G times the angle rates, about the axis
+        vc[1, 0] = (e0 * (g[0] * q_t[b + 3] + g[1] * q_t[b + 4] + g[2] * q_t[b + 5])
+                    + e1 * (g[3] * q_t[b + 3] + g[4] * q_t[b + 4] + g[5] * q_t[b + 5])
+                    + e2 * (g[6] * q_t[b + 3] + g[7] * q_t[b + 4] + g[8] * q_t[b + 5]))
     ring_poses_from(q, q_t, ref, ring_kind, ring_data, rings)
     worst = forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb, tb, fc, fr, glob,
                    diag, cage_load, want, defect_path, ellipse_path, loss_path)
@@ -225,7 +281,7 @@ def element_rhs(q, q_t, ref, p, table, z, n_cage, ring_kind, ring_data, hist, hi
         tz = fc[1, 0] * p[P_IC] / p[P_MC]
         for d in range(3):
             out[b + d] = fc[0, d]
-            out[b + 3 + d] = g[6 + d] * tz
+            out[b + 3 + d] = (g[d] * e0 + g[3 + d] * e1 + g[6 + d] * e2) * tz
     ring_generalized_forces(q, ref, ring_kind, ring_data, rings, fr, out)
     return worst
 

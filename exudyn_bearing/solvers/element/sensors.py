@@ -22,7 +22,7 @@ class SensorsMixin:
         from exudyn.itemInterface import SensorUserFunction
 
         self.sensors = {}
-        if self.rigid:  # the rigid cage's spin about the world z axis (its rows in _work: model.layout)
+        if self.rigid:  # the rigid cage's spin about the bearing axis (its rows in _work: model.layout)
             def cage_speed():
                 return [float(self._work[4, 1, 0])]
         else:
@@ -67,9 +67,10 @@ class SensorsMixin:
         if self.n_cage:
             data.append(gr.Spheres(points=list(w[3, :self.n_cage]), radii=b.cage_ball_radius,
                                    colors=[0.8, 0.6, 0.2, 1.0], nTiles=12))
-        if self.rigid:  # the rigid cage's section, a hollow cylinder about the world z axis (pockets not drawn)
+        if self.rigid:  # the rigid cage's section, a hollow cylinder about the bearing axis (pockets not drawn)
             rc = self._cage_geometry
-            data.append(gr.Cylinder(pAxis=list(w[3, 0] - [0.0, 0.0, 0.5 * rc.width]), vAxis=[0.0, 0.0, rc.width],
+            axis = self.cageFrame[:, 2]
+            data.append(gr.Cylinder(pAxis=list(w[3, 0] - 0.5 * rc.width * axis), vAxis=list(rc.width * axis),
                                     radius=rc.outer_radius, radiusInner=rc.inner_radius,
                                     color=[0.8, 0.6, 0.2, 0.5], nTiles=48))
         for r, ((rho, zg), rc) in enumerate(((b.inner_groove_center, b.inner_groove_radius),
@@ -85,12 +86,13 @@ class SensorsMixin:
         EK.sample_row(rings, self._work, self._glob, self._diag, self._cage_load, self._row)
         if self.rigid:
             # the rigid cage's angle and spin rows are no position and velocity: relative to the outer ring, as the
-            # reference engine's (its outer ring is the frame), the angle less the ring's about the z axis
+            # reference engine's (its outer ring is the frame), the angle and spin less the ring's about the bearing
+            # axis (in the bearing frame)
+            angle, spin = self._outer_ring_turn(rings[1, 6:15].reshape(3, 3)[:, 0], rings[1, 15:18])
             k = self._row_offsets["xc"] + 3
-            self._row[k:k + 3] = (self._work[3, 1, 0] - math.atan2(rings[1, 9], rings[1, 6]) - rings[1, L.R_ANGLE],
-                                  0.0, 0.0)
+            self._row[k:k + 3] = (self._work[3, 1, 0] - angle - rings[1, L.R_ANGLE], 0.0, 0.0)
             k = self._row_offsets["vc"] + 3
-            self._row[k:k + 3] = (self._work[4, 1, 0] - rings[1, 17], 0.0, 0.0)
+            self._row[k:k + 3] = (self._work[4, 1, 0] - spin, 0.0, 0.0)
         self._sample_t.append(t)
         self._sample_rows.append(self._row.copy())
 
