@@ -282,7 +282,7 @@ class QuasiStaticBearing(LevelBearing):
         self._node_args = (nws, self._method, self._ws, self._hz_table, self._start, self._balls)
         self._node_kernel = entry_point(node_level_forces, (q0, q0, *self._node_args, q0))
         group.kernel = group_level_forces
-        group.bearings.append(self)
+        group.add(self)
         return group.object
 
     def _node_evaluation(self, t, q, q_t, gen):
