@@ -306,7 +306,6 @@ class NodeGroup:
         """A bearing joins the group (its compiled calls are made again at the next call)."""
         self.bearings.append(bearing)
         self._calls = None
-        self._ready = False
 
     def _compiled_calls(self):
         """(bearings, the force kernel's entry point and its arguments after ``gen``, the Jacobian kernel's): one
@@ -318,6 +317,7 @@ class NodeGroup:
             qq = np.zeros(2 * self._gen.size)
             self._calls = (bs, entry_point(self.kernel, (qq, self._gen, *args)), args,
                            entry_point(group_jacobian, (args[2], 1.0, 1.0, self._jac)))
+            self._ready = False
         return self._calls
 
     def _force(self, mbs, t, itemNumber, q, q_t):
