@@ -320,3 +320,43 @@ def test_group_call_is_each_bearings_own_evaluation():
         assert np.allclose(a._balls, b._balls, rtol=1e-12, atol=0.0)
         assert np.allclose(a._mats, b._mats, rtol=1e-12, atol=1e-12 * np.abs(b._mats).max())
         assert a._qmax[0] == pytest.approx(b._qmax[0], rel=1e-12)
+
+
+def test_a_second_run_starts_over_and_repeats_the_first():
+    # the group's force call takes the next step of a run without the per-bearing steps before the kernel
+    # (LevelBearing._begin does nothing then but take the time and count); a second SolveDynamic on the same
+    # mbs is a new run, which must start over (restart, samples, warm starts, cage angle) and repeat the first
+    mbs, bearings, sensor, _ = rotor("node", t_end=3e-3)
+    first = [(b.samples(), b.restarts) for b in bearings]
+    pos = mbs.GetSensorStoredData(sensor)
+    ss = bearings[0].SimulationSettings(3e-3, stepSize=1e-4)
+    ss.solution.sensors.writePeriod = 1e-4
+    with eb.filter_exudyn_notes():
+        mbs.SolveDynamic(ss, solverType=ss.timeIntegration.solverType)
+    assert np.array_equal(mbs.GetSensorStoredData(sensor), pos)
+    for b, (smp, restarts) in zip(bearings, first):
+        assert b.restarts == restarts + 1
+        again = b.samples()
+        assert again["evaluations"] == smp["evaluations"] > 2 * len(smp["t"])
+        for key in ("t", "displacement", "force", "cage_angle", "ball_load_inner"):
+            assert np.array_equal(again[key], smp[key]), key
+
+
+@pytest.mark.parametrize("formulation", ["node", "connector"])
+def test_sensors_read_the_last_evaluation(formulation):
+    # the level's sensors (LevelBearing._add_items) at the run's last write: the force on the inner ring
+    # -A0 f and on the outer ring A0 f (A0 the joint frame's rotation the connector handed at the last sample;
+    # none in the node formulation), the pose, the cage speed and the largest ball loads of the last evaluation
+    mbs, bearings, _, _ = rotor(formulation, t_end=2e-3)
+    for b in bearings:
+        last = {k: mbs.GetSensorStoredData(s)[-1, 1:] for k, s in b.sensors.items()}
+        rot = np.eye(3) if b._rot0 is None else b._rot0
+        assert (b._rot0 is None) == (formulation == "node")
+        force = rot @ b._out[:3]
+        assert np.abs(force).max() > 1e3
+        assert np.array_equal(last["outerRingForce"], force)
+        assert np.array_equal(last["innerRingForce"], -force)
+        assert np.array_equal(last["ringDisplacement"], b._pose)
+        assert last["cageSpeed"][0] == b._cage[1] != 0.0
+        assert (last["qMaxInner"][0], last["qMaxOuter"][0]) == (b._qmax[0], b._qmax[1])
+        assert b._qmax[0] > 0.0

@@ -346,11 +346,12 @@ def _ball_newton(cr, cz, pir, piz, por, poz, rci, rco, rb, m_w2, fto, fti, e_pri
 
 @kernel(no_runtime=True)
 def _ring_forces(u, psi, rho_i, z_i, rho_o, z_o, rci, rco, rb, m_w2, fto, fti, e_prime, method, table, start, balls,
-                 gen):
+                 gen, cos_psi, sin_psi):
     """All balls for the ring pose u (5,); per-ball results into ``balls`` (Z, NB),
-    generalized force of the balls on the ring into ``gen`` (5,). ``table``: Hertz constants
-    (:func:`_hertz_constant`; shape (3, 0): direct); ``start`` (Z, WARM_START): the balls' warm starts
-    (:func:`_ball_equilibrium`; shape (0, WARM_START): cold starts)."""
+    generalized force of the balls on the ring into ``gen`` (5,), cos and sin of the balls' azimuths psi into
+    ``cos_psi``, ``sin_psi`` (Z,) (the damping's, :func:`.damping.ring_damping_force`, takes them from there).
+    ``table``: Hertz constants (:func:`_hertz_constant`; shape (3, 0): direct); ``start`` (Z, WARM_START): the
+    balls' warm starts (:func:`_ball_equilibrium`; shape (0, WARM_START): cold starts)."""
     for k in range(5):
         gen[k] = 0.0
     warm = start.shape[0] == psi.size
@@ -358,6 +359,8 @@ def _ring_forces(u, psi, rho_i, z_i, rho_o, z_o, rci, rco, rb, m_w2, fto, fti, e
     for j in range(psi.size):
         c = math.cos(psi[j])
         s = math.sin(psi[j])
+        cos_psi[j] = c
+        sin_psi[j] = s
         pir = rho_i + u[0] * c + u[1] * s + z_i * (u[4] * c - u[3] * s)
         piz = z_i + u[2] + rho_i * (u[3] * s - u[4] * c)
         _ball_equilibrium(pir, piz, rho_o, z_o, rci, rco, rb, m_w2[j], fto[j], fti[j], e_prime, method, table,
@@ -382,5 +385,5 @@ def ring_forces(u, psi, geom, m_w2, fto, fti, e_prime, method):
     balls = np.zeros((z, NB))
     gen = np.zeros(5)
     _ring_forces(np.asarray(u, float), psi, geom.rho_i, geom.z_i, geom.rho_o, geom.z_o, geom.r_ci, geom.r_co,
-                 geom.r_b, m_w2, fto, fti, e_prime, method, _DIRECT, _COLD, balls, gen)
+                 geom.r_b, m_w2, fto, fti, e_prime, method, _DIRECT, _COLD, balls, gen, np.empty(z), np.empty(z))
     return gen, balls

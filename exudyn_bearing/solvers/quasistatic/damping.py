@@ -235,16 +235,17 @@ def _state_damping(q, delta, k, r_x, r_y, u_r, r_ball, e_prime, method, table, a
 
 
 @kernel(no_runtime=True)
-def ring_damping_force(rates, psi, rho_i, z_i, rho_o, z_o, rci, rco, rb, balls, m_w2, fto, fti, w_orbit, w_ring,
-                       e_prime, method, table, alpha_e, eta, ln_g, sigma, lambda_mixed, lambda_full_film, out,
+def ring_damping_force(rates, cos_psi, sin_psi, rho_i, z_i, rho_o, z_o, rci, rco, rb, balls, m_w2, fto, fti, w_orbit,
+                       w_ring, e_prime, method, table, alpha_e, eta, ln_g, sigma, lambda_mixed, lambda_full_film, out,
                        mats):
     """Damping force of the balls on the inner ring at their current state, -C u' with C = sum_j J^T D'(0) J
     (module docstring), into ``out`` (5,) [N, N m]; with ``mats`` of size 50 also the ring's stiffness
     K = sum_j J^T D(0) J (row-major, mats[:25]) and damping C (mats[25:]) of the same condensation
     (:func:`condensed_matrices`' K and C at the balls' current state; size 0: not computed).
 
-    rates: u' (5,), the pose rates (the ring's velocity and tilt rates against the outer ring); psi (Z,), balls
-    (Z, NB), m_w2, fto, fti (Z,): the ball set as :func:`.balls._ring_forces` left it for the current pose; the
+    rates: u' (5,), the pose rates (the ring's velocity and tilt rates against the outer ring); cos_psi, sin_psi
+    (Z,) (cos and sin of the balls' azimuths psi), balls (Z, NB), m_w2, fto, fti (Z,): the ball set as
+    :func:`.balls._ring_forces` left it for the current pose; the
     grooves (rho_i, z_i, rho_o, z_o, R_ci, R_co, R_b) [m]; w_orbit, w_ring [rad/s]: the balls' orbital speed and
     the inner ring's speed against the outer ring, which give each contact's rolling speed |w_race - w_orbit| r
     (pure rolling at the contact centre, radius r = c_r + R_b n_r); e_prime, method, table: the Hertz constants'
@@ -258,7 +259,7 @@ def ring_damping_force(rates, psi, rho_i, z_i, rho_o, z_o, rci, rco, rb, balls, 
     if both:
         for k in range(50):
             mats[k] = 0.0
-    for j in range(psi.size):
+    for j in range(cos_psi.size):
         qi = balls[j, B_QI]
         if qi <= 0.0:
             continue
@@ -279,8 +280,8 @@ def ring_damping_force(rates, psi, rho_i, z_i, rho_o, z_o, rci, rco, rb, balls, 
             qo = co = kto = f_to = 0.0
         d0, d1 = ball_condensation(nor, noz, qo, kto, rco - rb + do, f_to, co, nir, niz, qi, kti, rci - rb + di,
                                    fti[j], ci, m_w2[j])
-        c = math.cos(psi[j])
-        s = math.sin(psi[j])
+        c = cos_psi[j]
+        s = sin_psi[j]
         if both:  # J^T D J, J the ring Jacobian of ring_jacobian
             jr = (c, s, 0.0, -z_i * s, z_i * c)
             jz = (0.0, 0.0, 1.0, rho_i * s, -rho_i * c)

@@ -148,7 +148,7 @@ class LevelBearing:
         self._pose = self._ws[WS_POSE:WS_POSE + 5]
         self._cage = self._ws[WS_CAGE:WS_CAGE + 2]
         self._qmax = self._ws[WS_QMAX:WS_QMAX + 3]
-        self._rot0 = np.eye(3)
+        self._rot0 = None  # the joint frame's rotation of the last sample (None: the identity, _ring_force)
         self._t_last = -math.inf
         self._t_start = -math.inf
         self.restarts = 0
@@ -255,16 +255,25 @@ class LevelBearing:
         self.object = self._add_object(mbs, show)
         self._sys = mbs.sys
         self._run = None
-        defs = {"innerRingForce": lambda: list(-self._rot0 @ self._out[:3]),
-                "outerRingForce": lambda: list(self._rot0 @ self._out[:3]),
-                "ringDisplacement": lambda: list(self._pose),
-                "cageSpeed": lambda: [float(self._cage[1])]}
+        # lists of Python floats (tolist; a list of NumPy scalars costs Exudyn a conversion per entry), the joint
+        # frame's rotation only where the connector handed one (Exudyn evaluates these at every sensor write)
+        defs = {"innerRingForce": lambda: (-self._ring_force()).tolist(),
+                "outerRingForce": lambda: self._ring_force().tolist(),
+                "ringDisplacement": self._pose.tolist,
+                "cageSpeed": self._cage[1:2].tolist}
         if self.ballLoads:
-            defs.update(qMaxInner=lambda: [float(self._qmax[0])], qMaxOuter=lambda: [float(self._qmax[1])])
+            defs.update(qMaxInner=self._qmax[0:1].tolist, qMaxOuter=self._qmax[1:2].tolist)
         self.sensors = {k: mbs.AddSensor(SensorUserFunction(
             sensorNumbers=[], factors=[], storeInternal=True, writeToFile=False,
             sensorUserFunction=_sensor_function(fn))) for k, fn in defs.items()}
         self.items = {"object": self.object, "sensors": dict(self.sensors)}
+
+    def _ring_force(self):
+        """The sensors' force on the outer ring, A0 f (-A0 f: on the inner ring), f the connector's force f_force of
+        the last evaluation and A0 the joint frame's rotation the connector handed at the last sample (None: none
+        handed, the identity: the node formulation's samples)."""
+        rot = self._rot0
+        return self._out[:3] if rot is None else rot @ self._out[:3]
 
     def _add_object(self, mbs, show):
         """The Exudyn object of the bearing (default: the connector between the ring markers); its number."""

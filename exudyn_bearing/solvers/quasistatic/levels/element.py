@@ -85,7 +85,8 @@ def _interp_row(speeds, table, w, out):
 # the quasi-static level's part of the work array (after the header WS_HEADER of .base): spin-angle state (3),
 # geometry (rho_i, z_i, rho_o, z_o, r_ci, r_co, r_b), constants (k_c, k_r, sin alpha_0, ball mass, ball inertia, E'),
 # the contact damping law's (alpha_e, eta, ln(xi E'), composite roughness, Lambda breakpoints), the balls'
-# generalized force (5), the pose rates (5), the damping force (5), then per ball psi, m omega_c^2, F_to, F_ti (Z each)
+# generalized force (5), the pose rates (5), the damping force (5), then per ball psi, m omega_c^2, F_to, F_ti,
+# cos psi, sin psi (Z each)
 _STATE = WS_HEADER
 _GEO = _STATE + 3
 _KC, _KR, _SIN_A0, _MASS, _INERTIA, _EPRIME = range(_GEO + 7, _GEO + 13)
@@ -112,6 +113,8 @@ def level_forces(d0, d1, d2, r0, r1, r2, v0, v1, v2, w0, w1, w2, method, ws, tab
     m_w2 = ws[_BALLS + z:_BALLS + 2 * z]
     fto = ws[_BALLS + 2 * z:_BALLS + 3 * z]
     fti = ws[_BALLS + 3 * z:_BALLS + 4 * z]
+    cos_psi = ws[_BALLS + 4 * z:_BALLS + 5 * z]
+    sin_psi = ws[_BALLS + 5 * z:_BALLS + 6 * z]
     gen = ws[_GEN:_GEN + 5]
     rates = ws[_RATES:_RATES + 5]
     damp = ws[_DAMP:_DAMP + 5]
@@ -135,15 +138,15 @@ def level_forces(d0, d1, d2, r0, r1, r2, v0, v1, v2, w0, w1, w2, method, ws, tab
     u[3] = r0
     u[4] = r1
     _ring_forces(u, psi, ws[_GEO], ws[_GEO + 1], ws[_GEO + 2], ws[_GEO + 3], ws[_GEO + 4], ws[_GEO + 5],
-                 ws[_GEO + 6], m_w2, fto, fti, ws[_EPRIME], method, table, start, balls, gen)
+                 ws[_GEO + 6], m_w2, fto, fti, ws[_EPRIME], method, table, start, balls, gen, cos_psi, sin_psi)
     rates[0] = v0
     rates[1] = v1
     rates[2] = v2
     rates[3] = w0 - w2 * r1
     rates[4] = w1 + w2 * r0
-    ring_damping_force(rates, psi, ws[_GEO], ws[_GEO + 1], ws[_GEO + 2], ws[_GEO + 3], ws[_GEO + 4], ws[_GEO + 5],
-                       ws[_GEO + 6], balls, m_w2, fto, fti, wc, w2, ws[_EPRIME], method, table, ws[_ALPHA_E],
-                       ws[_ETA], ws[_LN_G], ws[_SIGMA], ws[_L1], ws[_L3], damp, mats)
+    ring_damping_force(rates, cos_psi, sin_psi, ws[_GEO], ws[_GEO + 1], ws[_GEO + 2], ws[_GEO + 3], ws[_GEO + 4],
+                       ws[_GEO + 5], ws[_GEO + 6], balls, m_w2, fto, fti, wc, w2, ws[_EPRIME], method, table,
+                       ws[_ALPHA_E], ws[_ETA], ws[_LN_G], ws[_SIGMA], ws[_L1], ws[_L3], damp, mats)
     q_in = 0.0
     q_out = 0.0
     alpha = 0.0
@@ -282,7 +285,7 @@ class QuasiStaticBearing(LevelBearing):
         self._node_args = (nws, self._method, self._ws, self._hz_table, self._start, self._balls)
         self._node_kernel = entry_point(node_level_forces, (q0, q0, *self._node_args, q0))
         group.kernel = group_level_forces
-        group.bearings.append(self)
+        group.add(self)
         return group.object
 
     def _node_evaluation(self, t, q, q_t, gen):
@@ -330,7 +333,7 @@ class QuasiStaticBearing(LevelBearing):
         return ss
 
     def _workspace_size(self):
-        return _BALLS - WS_HEADER + 4 * self.bearing.n_balls
+        return _BALLS - WS_HEADER + 6 * self.bearing.n_balls
 
     def _setup(self):
         b = self.bearing

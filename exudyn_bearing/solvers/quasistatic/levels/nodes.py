@@ -31,6 +31,8 @@ times lever squared: about 1e-4 of the terms kept for the 6208 at 3000 N).
 """
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from ...._jit import kernel
@@ -45,6 +47,8 @@ __all__ = ["FORMULATIONS", "NodeGroup", "group_jacobian", "node_force", "node_fo
 FORMULATIONS = ("auto", "connector", "node")
 #: Key in ``mbs.variables``: node tuple -> the NodeGroup of the bearings between those nodes
 GROUP_REGISTRY = "exudyn_bearing.levelNodeGroups"
+#: NodeGroup's solver of its last force call before any (no solver is this object)
+_NO_RUN = object()
 #: ring state row: position (3), rotation matrix (9), velocity (3), global angular velocity (3), G (9), A l (3)
 _P, _A, _V, _W, _G, _O, _NS = 0, 3, 12, 15, 18, 27, 30
 #: a bearing's node work array (one array: each array argument of a compiled call costs its unboxing): per ring
@@ -275,10 +279,11 @@ class NodeGroup:
         self.bearings = []
         self.kernel = None
         self._calls = None  # (bearings, force call, its arguments after gen, Jacobian call): made on first use
+        self._ready = False  # whether every bearing has K and C of an evaluation (the Jacobian's)
         n = 6 * len(self.nodes)
         self._sys = mbs.sys
-        self._run = None  # the dynamic solver and time of the last force call (:meth:`_force`)
-        self._t_last = None
+        self._run = _NO_RUN  # the dynamic solver and time of the last force call (:meth:`_force`)
+        self._t_last = -math.inf
         self._gen = np.zeros(n)
         self._jac = np.zeros((n, n))
         self.object = mbs.AddObject(ObjectGenericODE2(
@@ -297,6 +302,11 @@ class NodeGroup:
     def offset(self, node):
         return -1 if node < 0 else 6 * self.nodes.index(node)
 
+    def add(self, bearing):
+        """A bearing joins the group (its compiled calls are made again at the next call)."""
+        self.bearings.append(bearing)
+        self._calls = None
+
     def _compiled_calls(self):
         """(bearings, the force kernel's entry point and its arguments after ``gen``, the Jacobian kernel's): one
         compiled call for the group's bearings (tuples of their arrays), made again when a bearing joined."""
@@ -307,6 +317,7 @@ class NodeGroup:
             qq = np.zeros(2 * self._gen.size)
             self._calls = (bs, entry_point(self.kernel, (qq, self._gen, *args)), args,
                            entry_point(group_jacobian, (args[2], 1.0, 1.0, self._jac)))
+            self._ready = False
         return self._calls
 
     def _force(self, mbs, t, itemNumber, q, q_t):
@@ -315,11 +326,15 @@ class NodeGroup:
         (:func:`.element.group_level_forces`), per bearing the steps after it where that call asks for them (the
         speed left the grooves' band, a ball load or contact angle beyond its limit), and the samples. Exudyn hands
         q and q_t as lists of floats: one conversion of both (about 0.5 us per conversion of a short list; twice
-        that with a dtype to check)."""
+        that with a dtype to check). The next step of the same run (a later time, the same solver) starts nothing
+        over: each bearing only takes the time and counts the evaluation (what LevelBearing._begin does then)."""
         python_calls[0] += 1
         gen = self._gen
         qq = np.array(q + q_t) if type(q) is list else np.concatenate((np.asarray(q, float), np.asarray(q_t, float)))
-        bs, kern, args, _ = self._compiled_calls()
+        calls = self._calls
+        if calls is None or len(calls[0]) != len(self.bearings):
+            calls = self._compiled_calls()
+        bs, kern, args, _ = calls
         solver = self._sys.get("dynamicSolver")
         n = gen.size
         if t == self._t_last and solver is self._run:
@@ -332,26 +347,38 @@ class NodeGroup:
                     b._node_after(qq[:n], qq[n:], gen)
             return gen
         q, q_t = qq[:n], qq[n:]
-        for b in bs:
-            b._node_before(t, q, q_t)
+        if solver is self._run and t > self._t_last:
+            for b in bs:
+                b._t_last = t
+                b._evaluations += 1
+        else:
+            for b in bs:
+                b._node_before(t, q, q_t)
         if kern(qq, gen, *args):
             for b in bs:
                 b._node_after(q, q_t, gen)
         for b in bs:
             if t >= b._next_sample - 1e-12:
                 b._end(t)
-            b._mats_ready = True
+        if not self._ready:
+            for b in bs:
+                b._mats_ready = True
+            self._ready = True
         self._t_last = t
         self._run = solver
         return gen
 
     def _jacobian(self, mbs, t, itemNumber, q, q_t, fODE2, fODE2_t):
         python_calls[0] += 1
-        bs, _, args, jac_kernel = self._compiled_calls()
-        for b in bs:
-            if not b._mats_ready:  # no evaluation yet: one at this state
-                b._node_evaluation(t, np.asarray(q, float), np.asarray(q_t, float), np.zeros_like(self._gen))
-        jac_kernel(args[2], float(fODE2), float(fODE2_t), self._jac)
+        calls = self._calls
+        if calls is None or len(calls[0]) != len(self.bearings):
+            calls = self._compiled_calls()
+        if not self._ready:
+            for b in calls[0]:
+                if not b._mats_ready:  # no evaluation yet: one at this state
+                    b._node_evaluation(t, np.asarray(q, float), np.asarray(q_t, float), np.zeros_like(self._gen))
+            self._ready = True
+        calls[3](calls[2][2], fODE2, fODE2_t, self._jac)
         return self._jac
 
 
