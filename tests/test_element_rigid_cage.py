@@ -275,6 +275,8 @@ def _axis_model(rot, mode):
                                    gravity=tuple(rot @ [0.0, -9.81, 0.0]), initialLoad=(3000.0, 0.0),
                                    initialOmega=500.0, stepSize=4e-6, cageDamping="implicit", sampleInterval=1e-4,
                                    mode=mode)
+    # the start the bearing offers the shaft's node is the placed one, in world components
+    np.testing.assert_allclose(bearing.initialCoordinates[:3], d0, rtol=0, atol=1e-12 * np.abs(d0).max())
     rec = _solve(mbs, bearing, 1.5e-3)
     out = {k: rec.data[k] for k in ("xc", "vc", "xb", "vb", "wb", "ring", "cage_load")}
     out["load"] = rec.data["diag"][..., L.D_LOAD]

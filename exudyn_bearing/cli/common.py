@@ -37,6 +37,13 @@ RPM_TO_RAD_S = 2.0 * math.pi / 60.0
 _NEGATIVE_NUMBER = re.compile(r"^-(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?$")
 
 
+#: Help of the quasi-static commands' --control (quasistatic, stiffness; simulate's quasi-static start says the
+#: same for its start).
+CONTROL_HELP = ("ball kinematics: race control (outer, inner, auto = Jones' criterion; the default), min-energy "
+                "(Gupta), or equilibrium (each ball on its own traction balance, no kinematic hypothesis; what the "
+                "dynamic engines settle to: docs/theory/quasistatic.md)")
+
+
 def finite_float(text):
     try:
         v = float(text)

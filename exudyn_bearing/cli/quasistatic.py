@@ -14,7 +14,7 @@ from ..outputs.plotting_quasistatic import plot_loads_angles, plot_slip
 from ..physics.hertz import METHODS
 from ..solvers.quasistatic import solve_quasistatic
 from ..solvers.quasistatic.kinematics import CONTROLS
-from .common import (add_strip_arguments, add_bearing_argument, add_hold_arguments, add_lubricant_argument, add_load_arguments,
+from .common import (CONTROL_HELP, add_strip_arguments, add_bearing_argument, add_hold_arguments, add_lubricant_argument, add_load_arguments,
                      add_ring_growth_argument, add_traction_argument, bearing_from_args, explained, finite_float,
                      fixed_from_args, format_value, lubricant_from_args, omega_from_args, solver_header,
                      traction_from_args, add_outer_speed_arguments, omega_outer_from_args)
@@ -36,7 +36,7 @@ def add_parser(sub):
     p.set_defaults(omega_default=0.0)  # omega_from_args: at rest without --omega / --rpm (docs/defaults.md)
     add_outer_speed_arguments(p)
     p.add_argument("--control", choices=CONTROLS, default="auto",
-                   help="ball kinematics: race control (outer, inner, auto = Jones' criterion) or min-energy (Gupta)")
+                   help=CONTROL_HELP)
     # the rigid cage (solve_quasistatic cage=, docs/theory/quasistatic.md#the-rigid-cage)
     p.add_argument("--cage", choices=("none", "rigid"), default="none",
                    help="none: each ball its own orbital speed; rigid: the bearing's estimated rigid cage "
@@ -207,20 +207,26 @@ def _still(s) -> str:
     return " (no relative speed of the rings: nothing rolls or slides, every loss and the torque are 0)"
 
 
+def _nonneg_zero(x, half_digit=0.00005):
+    """``x`` with a value that prints as zero at the column's digits (below ``half_digit`` in size) given as
+    +0.0, so that round-off prints no "-0.00"."""
+    return 0.0 if abs(x) < half_digit else x
+
+
 #: Columns of the ball table: (header, width, unit) and the value of ball j.
 _COLUMNS = (
     ("psi", "deg", 6, lambda bl, j: f"{math.degrees(bl['psi'][j]):.1f}"),
     ("Q_in", "N", 8, lambda bl, j: f"{bl['q_inner'][j]:.1f}"),
     ("Q_out", "N", 8, lambda bl, j: f"{bl['q_outer'][j]:.1f}"),
-    ("alpha_in", "deg", 8, lambda bl, j: f"{math.degrees(bl['alpha_inner'][j]):.2f}"),
-    ("alpha_out", "deg", 9, lambda bl, j: f"{math.degrees(bl['alpha_outer'][j]):.2f}"),
+    ("alpha_in", "deg", 8, lambda bl, j: f"{_nonneg_zero(math.degrees(bl['alpha_inner'][j]), 0.005):.2f}"),
+    ("alpha_out", "deg", 9, lambda bl, j: f"{_nonneg_zero(math.degrees(bl['alpha_outer'][j]), 0.005):.2f}"),
     ("pmax_in", "GPa", 7, lambda bl, j: f"{bl['p_max_inner'][j] / 1e9:.3f}"),
     ("pmax_out", "GPa", 8, lambda bl, j: f"{bl['p_max_outer'][j] / 1e9:.3f}"),
     ("w_orbit", "rad/s", 8, lambda bl, j: f"{bl['orbital_speed'][j]:.2f}"),
     ("w_ball", "rad/s", 8, lambda bl, j: f"{bl['ball_speed'][j]:.2f}"),
-    ("beta", "deg", 6, lambda bl, j: f"{math.degrees(bl['beta'][j]):.2f}"),
-    ("sr_in", "-", 7, lambda bl, j: f"{bl['spin_roll_inner'][j]:.4f}"),
-    ("sr_out", "-", 7, lambda bl, j: f"{bl['spin_roll_outer'][j]:.4f}"),
+    ("beta", "deg", 6, lambda bl, j: f"{_nonneg_zero(math.degrees(bl['beta'][j]), 0.005):.2f}"),
+    ("spin_in", "-", 7, lambda bl, j: f"{_nonneg_zero(bl['spin_roll_inner'][j]):.4f}"),
+    ("spin_out", "-", 8, lambda bl, j: f"{_nonneg_zero(bl['spin_roll_outer'][j]):.4f}"),
     ("P_in", "W", 8, lambda bl, j: f"{bl['dissipation_inner_ball'][j]:.3g}"),
     ("P_out", "W", 8, lambda bl, j: f"{bl['dissipation_outer_ball'][j]:.3g}"),
 )
@@ -228,10 +234,13 @@ _COLUMNS = (
 
 def print_ball_table(bl):
     """Per-ball table with a unit line under the header (w_orbit: orbital speed, w_ball: ball speed about its
-    own spin axis relative to the orbit frame, sr: spin-to-roll ratio, P: dissipation)."""
+    own spin axis relative to the orbit frame, spin: spin-to-roll ratio, P: dissipation)."""
     print(f"{'ball':>4} " + " ".join(f"{h:>{w}}" for h, _u, w, _f in _COLUMNS))
     print(f"{'':>4} " + " ".join(f"{'[' + u + ']':>{w}}" for _h, u, w, _f in _COLUMNS))
     for j in range(len(bl["psi"])):
         print(f"{j:>4} " + " ".join(f"{f(bl, j):>{w}}" for _h, _u, w, f in _COLUMNS))
     print("w_ball: the ball's spin about its own axis in the frame orbiting with the ball (the dynamic summaries' "
-          "ball_spin is taken in the fixed frame: w_ball - w_orbit for a radial bearing)")
+          "ball_spin is taken in the fixed frame: w_ball - w_orbit for a radial bearing); spin_in, spin_out: the "
+          "spin-to-roll ratio at the contact (spin about its normal over the rolling speed), not the "
+          "slide-to-roll ratio (--json: the slip across each ellipse, slip_inner, slip_outer [m/s] at the strips of "
+          "slip_y, and the rolling speeds u_roll_inner, u_roll_outer)")

@@ -8,7 +8,7 @@ from pathlib import Path
 
 from ..data import InputError
 from ..model.record import RunInterrupted
-from ..model.scenario import CONTROLS, INITIAL_STATES, TRACTION_LEVELS, Scenario
+from ..model.scenario import CONTROLS, INITIAL_STATES, TOLERANCE_MIN, TRACTION_LEVELS, Scenario
 from ..outputs.jsonio import to_jsonable
 from ..outputs.tables import summary_rows
 from ..physics.hertz import METHODS
@@ -47,7 +47,8 @@ def add_parser(sub):
     p.add_argument("--dt", type=finite_float, default=1e-6, help="time step [s] (with --tolerance: the first step)")
     p.add_argument("--tolerance", type=finite_float, default=None,
                    help="the reduced engine's step error control: each step's local error of the speeds below "
-                        "TOLERANCE times the inner ring's speed at the pitch radius (e.g. 1e-5; "
+                        "TOLERANCE times the inner ring's speed at the pitch radius (e.g. 1e-5, at least "
+                        f"{TOLERANCE_MIN:g}; "
                         "docs/theory/reduced.md); default: the fixed step --dt. Its drive power needs 1e-6 or "
                         "below, and a start or ramp from rest stops at the least step: use the fixed --dt there")
     p.add_argument("--sample-dt", type=finite_float, default=1e-4, help="output interval [s]")
@@ -67,11 +68,11 @@ def add_parser(sub):
                    help="cage model: the DEM papers' torus of cage balls, a rigid cage body with pockets "
                         "and a guiding land (both engines; geometry estimated from the ball diameter, "
                         "docs/theory/cage.md), or none; default auto: the torus where the bearing has cage balls "
-                        "(the papers' bearings), else the rigid cage (ACBB-120)")
+                        "(the papers' bearings), else the rigid cage (ACBB-120); a bare --cage is the torus")
     p.add_argument("--no-cage", dest="cage", action="store_const", const="none", help="the same as --cage none")
     p.add_argument("--pocket-film", action="store_true",
-                   help="the oil film between each ball and its rigid-cage pocket (hydrodynamic and squeeze forces; "
-                        "docs/theory/cage.md#pocket-oil-film); needs --cage rigid")
+                   help="the oil film between each ball and its rigid-cage pocket (hydrodynamic and squeeze forces "
+                        "and the film's viscous shear; docs/theory/cage.md#pocket-oil-film); needs --cage rigid")
     p.add_argument("--lubrication", action=argparse.BooleanOptionalAction, default=True,
                    help="Lambda-switched damping and friction on/off")
     p.add_argument("--initial", choices=INITIAL_STATES, default="analytic",

@@ -27,7 +27,7 @@ from ..outputs.plotting import save_figure
 from ..solvers.quasistatic import bearing_coefficients, solve_quasistatic
 from ..solvers.quasistatic.coefficients import DEFAULT_N_PHASES
 from ..solvers.quasistatic.kinematics import CONTROLS
-from .common import (add_bearing_argument, add_hold_arguments, add_lubricant_argument, add_load_arguments,
+from .common import (CONTROL_HELP, add_bearing_argument, add_hold_arguments, add_lubricant_argument, add_load_arguments,
                      add_ring_growth_argument, add_traction_argument, bearing_from_args, explained, finite_float,
                      fixed_from_args, lubricant_from_args, omega_from_args, solver_header, traction_from_args)
 from .pair import add_pair_arguments, pair_requested, run_pair
@@ -52,7 +52,7 @@ def add_parser(sub):
                    help="average over this many ball-set positions within one ball pitch (default "
                         f"{DEFAULT_N_PHASES}, as bearing_coefficients; 1: the balls at psi = 2 pi j / Z only)")
     p.add_argument("--control", choices=CONTROLS, default="auto",
-                   help="ball kinematics: race control (outer, inner, auto = Jones' criterion) or min-energy")
+                   help=CONTROL_HELP)
     add_traction_argument(p)
     add_lubricant_argument(p)
     add_ring_growth_argument(p)

@@ -78,6 +78,48 @@ def rigid_marker(mbs, marker, name):
     return int(marker)
 
 
+def marker_start_rotation(mbs, marker):
+    """World rotation matrix (3, 3) of the body or node a rigid marker sits on, at t = 0: ground's
+    ``referenceRotation``; a node's from its reference plus initial coordinates (Tait-Bryan angles of an Rxyz
+    node, the rotation vector of a rotation-vector node, Euler parameters); the identity for a node without
+    rotation (a point). What turns the bearings' outer-ring-frame quantities into world components
+    (``initialCoordinates``)."""
+    from exudyn.rigidBodyUtilities import (EulerParameters2RotationMatrix, RotationVector2RotationMatrix,
+                                           RotXYZ2RotationMatrix)
+
+    m = mbs.GetMarker(int(marker))
+    if "bodyNumber" in m:
+        obj = mbs.GetObject(m["bodyNumber"])
+        if obj["objectType"] == "Ground":
+            return np.asarray(obj.get("referenceRotation", np.eye(3)), float).reshape(3, 3)
+        if "nodeNumber" not in obj:
+            return np.eye(3)
+        node = obj["nodeNumber"]
+    else:
+        node = m["nodeNumber"]
+    n = mbs.GetNode(int(node))
+    q = np.asarray(n["referenceCoordinates"], float) + np.asarray(n.get("initialCoordinates", 0.0), float)
+    ntype = n["nodeType"]
+    if ntype == "RigidBodyRxyz":
+        return np.asarray(RotXYZ2RotationMatrix(q[3:6]), float)
+    if ntype == "RigidBodyEP":
+        return np.asarray(EulerParameters2RotationMatrix(q[3:7]), float)
+    if ntype.startswith("RigidBodyRotVec"):
+        return np.asarray(RotationVector2RotationMatrix(q[3:6]), float)
+    return np.eye(3)
+
+
+def world_initial_coordinates(rotation, pose):
+    """The 6 initial coordinates of an inner ring's rigid-body node in world components: the ring pose
+    ``pose`` (d_x, d_y, d_z, theta_x, theta_y) of the outer ring's frame turned by that frame's world
+    ``rotation`` (3, 3): the displacement R d, and the tilt as the small rotation R (theta_x, theta_y, 0) about
+    the world axes (the Tait-Bryan or rotation-vector increments of a node whose reference rotation is the
+    identity; a turned node takes its tilt in its own parameters)."""
+    r = np.asarray(rotation, float)
+    d = np.asarray(pose, float)
+    return np.array([*(r @ d[:3]), *(r @ np.array([d[3], d[4], 0.0]))])
+
+
 def check_solver(solver):
     """InputError for a ``solver`` (a name) the levels cannot run with: UNSTABLE_SOLVERS (..model.solver_types),
     which the bearing's stiffness drives unstable (the linear level at 1e-4 s ran away to forces of 1e50 N)."""

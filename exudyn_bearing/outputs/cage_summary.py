@@ -9,7 +9,7 @@ import numpy as np
 
 from ..model import layout as L
 
-__all__ = ["rigid_cage_summary", "whirl", "whirl_spectrum", "whirl_line", "cage_motion", "CAGE_SUMMARY_UNITS", "CAGE_LOSSES_NOT_MODELLED",
+__all__ = ["rigid_cage_summary", "whirl", "whirl_spectrum", "whirl_line", "WHIRL_LINE_MIN_BINS", "cage_motion", "CAGE_SUMMARY_UNITS", "CAGE_LOSSES_NOT_MODELLED",
            "CAGE_LOSSES_NOT_MODELLED_FILM",
            "CENTRED_ORBIT", "REGULAR_RADIUS_VARIATION", "REGULAR_DIRECTION_SHARE"]
 
@@ -21,7 +21,8 @@ CAGE_SUMMARY_UNITS = {
                         "for a circling orbit; None for a centred or irregular one, whose mean turning rate is no "
                         "frequency: see cage_whirl_line)",
     "cage_whirl_line": "- (frequency of the strongest line of the cage centre's whirl spectrum over the window, over "
-                       "the cage speed; + in the cage's direction of rotation)",
+                       "the cage speed; + in the cage's direction of rotation; None when the window holds fewer "
+                       "than WHIRL_LINE_MIN_BINS periods of it: not resolved from the orbit's mean)",
     "cage_whirl_line_share": "- (share of the orbit's power, about its mean position, in that line and its two "
                              "neighbouring bins)",
     "cage_whirl_resolution": "- (the spectrum's frequency resolution, 2 pi / window length, over the cage speed)",
@@ -43,6 +44,10 @@ CAGE_SUMMARY_UNITS = {
                             "(docs/theory/cage.md#estimated-geometry; info BEARING lists their values)",
 }
 
+#: :func:`whirl_line`: a line is reported when it lies at least this many bins from zero frequency (the window
+#: holds that many of its periods); nearer, the Hann window's main lobe about the removed mean (two bins wide)
+#: takes it, as in a window of a few cage revolutions.
+WHIRL_LINE_MIN_BINS = 3
 #: :func:`cage_motion`: an orbit whose mean radius is below this share of the clearance is ``centred``;
 CENTRED_ORBIT = 0.02
 #: a larger one is ``circling`` when its radius varies by less than this share of its mean
@@ -122,7 +127,9 @@ def whirl_line(t, xy, cage_speed):
     """(line [-], share [-], resolution [-]) of the cage centre's whirl (:func:`whirl_spectrum`): the frequency
     of its strongest line over the cage speed (+ in the cage's direction of rotation), the share of the
     spectrum's power in that bin and its two neighbours, and the bin width over the cage speed; NaNs when the
-    cage does not turn, the orbit is below 1e-12 m or the samples are too few or not equally spaced. Unlike the
+    cage does not turn, the orbit is below 1e-12 m or the samples are too few or not equally spaced, and a NaN
+    line (share and resolution kept) when the strongest line lies fewer than :data:`WHIRL_LINE_MIN_BINS` bins from
+    zero frequency. Unlike the
     mean turning rate of :func:`whirl`, the line stays where it is in an irregular orbit: on the 6208's
     land-guided cage (3000 N, 500 rad/s, last 0.15 s of 0.6 s) the mean rate was 0.86, 0.82 and 1.41 of the
     cage speed at steps of 2, 1 and 0.5 us, the line +1.49 at all three (docs/theory/cage.md#cage-motion)."""
@@ -137,7 +144,11 @@ def whirl_line(t, xy, cage_speed):
     power = a * a
     i = int(np.argmax(power))
     near = power[[(i - 1) % len(a), i, (i + 1) % len(a)]].sum()  # the FFT's bins wrap around
-    return float(f[i] / abs(cage_speed)), float(near / power.sum()), float(abs(f[1] - f[0]) / abs(cage_speed))
+    resolution = float(abs(f[1] - f[0]) / abs(cage_speed))
+    line = float(f[i] / abs(cage_speed))
+    if abs(line) < WHIRL_LINE_MIN_BINS * resolution * (1.0 - 1e-9):
+        line = math.nan
+    return line, float(near / power.sum()), resolution
 
 
 def rigid_cage_summary(data, w: slice, params, cage_speed: float, kinematic_cage_speed: float | None) -> dict:

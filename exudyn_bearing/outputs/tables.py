@@ -37,7 +37,7 @@ def format_table(rows) -> str:
     lines = []
     for r in rows:
         k, v = r[0], r[1]
-        unit = r[2] if len(r) > 2 and r[2] not in (None, "", "-") else ""
+        unit = r[2] if len(r) > 2 and r[2] not in (None, "") else ""  # "-": dimensionless, said
         v = format_value(v, unit)
         lines.append(f"{k:<{width}}  {v}{'  ' + unit if unit else ''}".rstrip())
     return "\n".join(lines)
@@ -73,6 +73,9 @@ def summary_rows(summary, t_end=None):
     rows += [(k, v, units.get(k)) if v is not None else
              (k, f"n/a (energy_source.{k})" if k in summary.get("energy_source", {}) else "n/a")
              for k, v in summary.items() if not isinstance(v, (dict, list)) and k not in ("window", "note", *first)]
+    # vectors of numbers (ring_displacement, cage_offset): their components on one row
+    rows += [(k, ", ".join(format_value(float(x), (units.get(k) or "").split(" ")[0]) for x in v), units.get(k))
+             for k, v in summary.items() if isinstance(v, list) and v and all(isinstance(x, (int, float)) for x in v)]
     if t_end is not None and "t_end" in summary and not math.isclose(summary["t_end"], t_end, rel_tol=1e-9):
         rows = [(k, f"{t_end:g} s (last sample at {summary['t_end']:.6g} s)", None) if k == "t_end" else r
                 for r in rows for k in (r[0],)]

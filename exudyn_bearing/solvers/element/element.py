@@ -133,6 +133,7 @@ from ...data.traction import DEFAULT_REGULARIZING_SRR
 from ...model import layout as L
 from ...model.contact import forces
 from ...model.initial_state import initial_state
+from ...model.level_items import world_initial_coordinates
 from ...model.load_angle import check_load_angle, load_rotation
 from ...model.motion import ring_poses
 from ...model.parameters import scene_parameters
@@ -335,6 +336,8 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
             raise InputError(f"markerOuterRing: on node {node_o}, the node of markerInnerRing; both rings on one "
                              "body would carry the bearing's forces on itself")
         poses = [initial_ring_pose(mbs, *spec) for spec in self.rings_spec]
+        #: the outer ring's world rotation at t = 0 (its frame is the engine's: initialCoordinates turns by it)
+        self._outer_rotation = np.asarray(poses[1][1], float)
         axis_i, axis_o = poses[0][1][:, 2], poses[1][1][:, 2]
         if abs(float(axis_i @ axis_o)) < 1.0 - 1e-9:
             raise InputError("markerInnerRing: the ring axes (local z of both ring bodies) are not parallel "
@@ -432,11 +435,13 @@ class BallBearingElement(ItemsMixin, UserFunctionsMixin, SensorsMixin, SignalsMi
 
     @property
     def initialCoordinates(self):
-        """The 6 initial coordinates of the inner ring's rigid-body node in the analytic initial state, for a
-        node at the outer ring's frame: displacement ``initialRingDisplacement`` [m] and rotation (0, 0, 0)
-        (any rotation parameters: the initial state has no tilt); the bearing levels' property has the same
-        meaning and length."""
-        return np.array([*self.initialRingDisplacement, 0.0, 0.0, 0.0])
+        """The 6 initial coordinates of the inner ring's rigid-body node in the analytic initial state, in
+        world components: the displacement ``initialRingDisplacement`` [m] (outer ring's frame) turned by the
+        outer ring's world rotation at t = 0, and rotation (0, 0, 0) (any rotation parameters: the initial
+        state has no tilt); for ``mbs.SetNodeParameter(node, "initialCoordinates", ...)`` of the shaft's node
+        (model.level_items.world_initial_coordinates). The bearing levels' property has the same meaning and
+        length."""
+        return world_initial_coordinates(self._outer_rotation, [*self.initialRingDisplacement, 0.0, 0.0])
 
     @property
     def ringStableStep(self):

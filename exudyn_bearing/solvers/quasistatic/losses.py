@@ -361,6 +361,8 @@ def power_losses(sol, bearing=None, lubricant=None, *, hysteresis_loss_factor=_l
     total = float(sum(p.values()))
     dw = abs(sol.omega - sol.omega_outer)
     notes = dict(NOT_MODELLED)
+    if rigid is not None:  # the cage is in the solver's balance: its note is the rigid cage's
+        notes["cage"] = NOT_MODELLED_RIGID_CAGE_FILM if rigid.get("pocket_film") else NOT_MODELLED_RIGID_CAGE
     notes["ehl_rolling"] = "isothermal, fully flooded (no inlet-shear heating or starvation reduction)"
     notes["drag"] = (f"balls orbiting through a mixture of oil volume fraction {float(oil_volume_fraction):g} "
                      f"(density {rho:.4g} kg/m^3)")

@@ -268,19 +268,23 @@ class QuasiStaticSolution:
             f"delta_a = {self.displacement[2] * 1e6:.3f} um, tilt_x = {self.displacement[3] * 1e3:.4f} mrad, "
             f"tilt_y = {self.displacement[4] * 1e3:.4f} mrad",
             f"inner ring growth {g['inner_ring_growth'] * 1e6:.2f} um, operating clearance "
-            f"{g['operating_clearance'] * 1e6:.2f} um, dissipation {self.dissipation_total:.4g} W "
-            f"(inner {self.dissipation_inner:.4g}, outer {self.dissipation_outer:.4g})",
+            f"{g['operating_clearance'] * 1e6:.2f} um, contact traction dissipation {self.dissipation_total:.4g} W "
+            f"(inner {self.dissipation_inner:.4g}, outer {self.dissipation_outer:.4g}"
+            + (f"; with the cage's pocket and land {self.dissipation_total + self.cage_power:.4g} W" if self.cage
+               is not None else "") + ")",
         ]
         if self.cage is not None:
             c = self.cage
-            lines.append(f"rigid cage ({c['guidance']}): speed {c['speed']:.6g} rad/s, pocket force max "
-                         f"{np.max(np.abs(self.balls['pocket_force'])):.4g} N, losses pocket {c['power_pocket']:.4g} W "
+            lines.append(f"rigid cage ({c['guidance']}): speed {c['speed']:.6g} rad/s, largest steady pocket force "
+                         f"{np.max(np.abs(self.balls['pocket_force'])):.4g} N (time mean per ball: the held force "
+                         "times its share of the time; the dynamic engines' pocket_force_max is the largest impact), "
+                         f"losses pocket {c['power_pocket']:.4g} W "
                          + (f"(of it the pocket film's shear {c['power_pocket_film']:.4g} W), " if c.get("pocket_film")
                             else "(no pocket film), ")
                          + f"land {c['power_land']:.4g} W (land torque {c['land_torque']:.4g} N m, eccentricity "
                          f"{c['land_eccentricity']:.3g})")
             lines.append("pocket force per ball [N] (+: pushes the ball forward): "
-                         + " ".join(f"{q:.4g}" for q in self.balls["pocket_force"]))
+                         + " ".join(f"{q + 0.0:.4g}" for q in self.balls["pocket_force"]))  # + 0.0: no "-0"
         if self.inertia_check is not None:
             c = self.inertia_check
             lines.append(f"quasi-static hypothesis (the balls' inertia along the orbit): their changes of speed from one position to the next "

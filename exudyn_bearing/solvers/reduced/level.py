@@ -55,8 +55,10 @@ from ...model.layout import (
 from ...model.level_items import (
     check_solver,
     level_settings,
+    marker_start_rotation,
     rigid_marker,
     sensor_function,
+    world_initial_coordinates,
 )
 from ...model.load_angle import check_load_angle, load_rotation
 from ...model.motion import ring_poses
@@ -123,6 +125,8 @@ class ReducedBearing:
                         rigid_marker(mbs, markerOuterRing, "markerOuterRing"))
         if self.markers[0] == self.markers[1]:
             raise InputError(f"markerOuterRing: marker {markerOuterRing} is also markerInnerRing")
+        #: the outer ring's world rotation at t = 0 (initialCoordinates turns its frame's pose by it)
+        self._outer_rotation = marker_start_rotation(mbs, self.markers[1])
         self.loadAngle = check_load_angle(loadAngle)
         #: the largest reduced-engine step [s] (None: one step per Exudyn step, at most MAX_STEP)
         self.reducedStep = check_reduced_step(reducedStep)
@@ -263,11 +267,12 @@ class ReducedBearing:
 
     @property
     def initialCoordinates(self):
-        """The 6 initial coordinates of the inner ring's rigid-body node at the start, for a node at the outer
-        ring's frame: displacement (d_x, d_y, d_z) [m] and rotation (0, 0, 0) (the reduced engine holds the tilt);
-        the other levels' property has the same meaning and length."""
-        d = self.initialRingDisplacement
-        return np.array([d[0], d[1], d[2], 0.0, 0.0, 0.0])
+        """The 6 initial coordinates of the inner ring's rigid-body node at the start, in world components: the
+        displacement (d_x, d_y, d_z) [m] of ``initialRingDisplacement`` (outer ring's frame) turned by the outer
+        ring's world rotation at t = 0, and rotation (0, 0, 0) (the reduced engine holds the tilt;
+        model.level_items.world_initial_coordinates); the other levels' property has the same meaning and
+        length."""
+        return world_initial_coordinates(self._outer_rotation, [*self.initialRingDisplacement[:3], 0.0, 0.0])
 
     def cage_speed(self):
         """The cage's speed [rad/s]: the rigid cage's, else the balls' mean orbital speed."""

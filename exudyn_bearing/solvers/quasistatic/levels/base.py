@@ -30,7 +30,9 @@ from ....model.level_items import (  # noqa: F401 (shared with the reduced level
     _sensor_function,
     check_solver,
     level_settings,
+    marker_start_rotation,
     rigid_marker,
+    world_initial_coordinates,
 )
 from ....model.load_angle import LOAD_ANGLE_RANGE, check_load_angle, load_rotation  # noqa: F401 (re-exported)
 from ....model.load_range import MAX_CONTACT_PRESSURE, check_load_range
@@ -119,6 +121,8 @@ class LevelBearing:
                         rigid_marker(mbs, markerOuterRing, "markerOuterRing"))
         if self.markers[0] == self.markers[1]:
             raise InputError(f"markerOuterRing: marker {markerOuterRing} is also markerInnerRing")
+        #: the outer ring's world rotation at t = 0 (initialCoordinates turns its frame's pose by it)
+        self._outer_rotation = marker_start_rotation(mbs, self.markers[1])
         if operatingTilt not in OPERATING_TILT:
             raise InputError(f"operatingTilt: must be one of {', '.join(map(repr, OPERATING_TILT))}, got "
                              f"{operatingTilt!r}")
@@ -187,12 +191,13 @@ class LevelBearing:
 
     @property
     def initialCoordinates(self):
-        """The 6 initial coordinates of the inner ring's rigid-body node at the operating point, for a node
-        at the outer ring's frame: displacement (d_x, d_y, d_z) [m] and rotation (theta_x, theta_y, 0) [rad]
-        (Tait-Bryan angles of a NodeRigidBodyRxyz; as small angles also the rotation vector of a
-        RotationRotationVector node); the ball element's property has the same meaning and length."""
-        d = self.initialRingDisplacement
-        return np.array([d[0], d[1], d[2], d[3], d[4], 0.0])
+        """The 6 initial coordinates of the inner ring's rigid-body node at the operating point, in world
+        components: the pose ``initialRingDisplacement`` (outer ring's frame) turned by the outer ring's world
+        rotation at t = 0, displacement [m] and the tilt as a small rotation about the world axes [rad]
+        (Tait-Bryan angles of a NodeRigidBodyRxyz, as small angles also the rotation vector of a
+        RotationRotationVector node, whose reference rotation is the identity; model.level_items.
+        world_initial_coordinates); the ball element's property has the same meaning and length."""
+        return world_initial_coordinates(self._outer_rotation, self.initialRingDisplacement)
 
     def rotation(self):
         """5x5 map from the quasi-static solver's axes (radial load along x) to the outer-ring frame, where the
