@@ -103,6 +103,8 @@ from .layout import (D_ROLLRES, G_DRAG_POWER, G_EHL_POWER, G_HYST_POWER, P_ALPHA
                      P_ROLLRES)
 from .layout import (D_POWER, D_ROLL, D_SPIN, D_SPIN_MOMENT, P_GROWTH_I, P_GROWTH_O, P_N_ACROSS, P_N_STRIPS,
                      P_RD_I, P_RD_O, P_TRACTION_CODE, P_TRACTION_LEVEL, P_TRACTION_PARAMS)
+from .layout import (G_POWER_INNER, G_W_DAMPING, G_W_DRAG, G_W_EHL, G_W_HYST, G_W_LAND, G_W_POCKET,
+                     G_W_TRACTION_INNER, G_W_TRACTION_OUTER)
 from .layout import (D_A, D_ANGLE, D_B, D_DEFECT, D_FRICTION, D_HMIN, D_LAMBDA, D_LOAD, D_MU, D_OVERLAP, D_PMAX,
                      D_REGIME, D_SLIP, D_SRR, D_UR, DEF_BALL, DEF_N, DF_ACROSS, DF_BALL, DF_DEPTH, DF_DIR, DF_EDGE,
                      G_CONTACT_ENERGY, G_DAMP_POWER, G_DISS_WORK, G_DRIVE_POWER, G_DRIVE_WORK, G_KINETIC, P_IB,
@@ -1279,6 +1281,7 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb,
     hyst_sum = 0.0
     drag_sum = 0.0
     stored_sum = 0.0  # the elastic energy of the contacts [J]
+    power_inner = 0.0  # the inner race's part of power_sum
     ln_g = math.log(p[P_XI] * p[P_EPRIME]) if p[P_LUB] > 0.5 else 0.0  # the film's ln G, a scene constant
     if hz.shape[2] < HZ_N:
         return np.nan  # a cache without the geometry columns (the callers allocate HZ_N)
@@ -1313,6 +1316,8 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb,
             if ratio > worst or ratio != ratio:  # a NaN state is the worst: the engines stop on it
                 worst = ratio
             power_sum += power
+            if race == 0:
+                power_inner += power
             damp_sum += damp
             ehl_sum += p_ehl
             hyst_sum += p_hyst
@@ -1374,6 +1379,7 @@ def forces(p, table, xb, vb, wb, xc, vc, rings, hist, hist_out, dt_hist, hz, fb,
     glob[G_HYST_POWER] = hyst_sum
     glob[G_DRAG_POWER] = drag_sum
     glob[G_POWER] = power_sum
+    glob[G_POWER_INNER] = power_inner
     glob[G_DAMP_POWER] = damp_sum
     glob[G_DRIVE_POWER] = _drive_power(rings, fr)
     if p[P_RIGID] > 0.5:
@@ -1407,3 +1413,12 @@ def accumulate_energy(glob, dt):
     glob[G_DISS_WORK] += (glob[G_POWER] + glob[G_DAMP_POWER]) * dt
     glob[G_DISS_WORK] += (glob[G_EHL_POWER] + glob[G_HYST_POWER] + glob[G_DRAG_POWER]) * dt
     glob[G_DISS_WORK] += (glob[G_POCKET_POWER] + glob[G_LAND_POWER]) * dt
+    # the same by component (their sum is the dissipated work)
+    glob[G_W_TRACTION_INNER] += glob[G_POWER_INNER] * dt
+    glob[G_W_TRACTION_OUTER] += (glob[G_POWER] - glob[G_POWER_INNER]) * dt
+    glob[G_W_DAMPING] += glob[G_DAMP_POWER] * dt
+    glob[G_W_EHL] += glob[G_EHL_POWER] * dt
+    glob[G_W_HYST] += glob[G_HYST_POWER] * dt
+    glob[G_W_DRAG] += glob[G_DRAG_POWER] * dt
+    glob[G_W_POCKET] += glob[G_POCKET_POWER] * dt
+    glob[G_W_LAND] += glob[G_LAND_POWER] * dt

@@ -331,21 +331,35 @@ NDIAG = len(DIAG_FIELDS)
 #: cage's state rides in the cage-ball arrays: ``xc[0]`` its centre,
 #: ``xc[1, 0]`` its angle, ``vc[0]`` and ``vc[1, 0]`` their rates, the other
 #: rows zero; its kinetic energy counts in ``kinetic_energy``.
+#: ``friction_power_inner`` the inner race's part of ``friction_power``; the
+#: ``*_work`` fields the integrals of the loss powers by component over the
+#: run (the traction per race, the normal damping, the rolling resistance's
+#: two parts, the drag, the pockets, the land; their sum is
+#: ``dissipated_work``), so that a window's losses by component are exact,
+#: not means of samples that may miss a pocket impact.
 GLOBAL_FIELDS = ("omega", "ring_fx", "ring_fy", "ring_fz", "ring_torque", "friction_power",
                  "max_overlap_ratio", "outer_fx", "outer_fy", "outer_fz", "outer_torque", "damping_power",
                  "drive_power", "drive_work", "dissipated_work", "kinetic_energy", "ehl_rolling_power",
                  "hysteresis_power", "drag_power", "pocket_power", "land_power", "land_fx", "land_fy", "land_eccentricity",
-                 "cage_load_power", "contact_energy")
+                 "cage_load_power", "contact_energy", "friction_power_inner", "traction_work_inner",
+                 "traction_work_outer", "damping_work", "ehl_rolling_work", "hysteresis_work", "drag_work",
+                 "pocket_work", "land_work")
 (G_OMEGA, G_RING_FX, G_RING_FY, G_RING_FZ, G_RING_TORQUE, G_POWER, G_WORST, G_OUTER_FX, G_OUTER_FY,
  G_OUTER_FZ, G_OUTER_TORQUE, G_DAMP_POWER, G_DRIVE_POWER, G_DRIVE_WORK, G_DISS_WORK,
  G_KINETIC, G_EHL_POWER, G_HYST_POWER, G_DRAG_POWER, G_POCKET_POWER, G_LAND_POWER, G_LAND_FX,
- G_LAND_FY, G_LAND_ECC, G_CAGE_LOAD_POWER, G_CONTACT_ENERGY) = range(len(GLOBAL_FIELDS))
+ G_LAND_FY, G_LAND_ECC, G_CAGE_LOAD_POWER, G_CONTACT_ENERGY, G_POWER_INNER, G_W_TRACTION_INNER,
+ G_W_TRACTION_OUTER, G_W_DAMPING, G_W_EHL, G_W_HYST, G_W_DRAG, G_W_POCKET, G_W_LAND) = range(len(GLOBAL_FIELDS))
+#: The run's cumulative works in ``glob`` (the engines carry them over a step's trial evaluations together).
+ENERGY_WORKS = (G_DRIVE_WORK, G_DISS_WORK, G_W_TRACTION_INNER, G_W_TRACTION_OUTER, G_W_DAMPING, G_W_EHL, G_W_HYST,
+                G_W_DRAG, G_W_POCKET, G_W_LAND)
 GLOBAL_UNITS = {"omega": "rad/s", "ring_fx": "N", "ring_fy": "N", "ring_fz": "N", "ring_torque": "N m",
                 "friction_power": "W", "max_overlap_ratio": "-", "outer_fx": "N", "outer_fy": "N", "outer_fz": "N",
                 "outer_torque": "N m", "damping_power": "W", "drive_power": "W", "drive_work": "J",
                 "dissipated_work": "J", "kinetic_energy": "J", "ehl_rolling_power": "W", "hysteresis_power": "W",
                 "drag_power": "W", "pocket_power": "W", "land_power": "W", "land_fx": "N", "land_fy": "N", "land_eccentricity": "-",
-                "cage_load_power": "W", "contact_energy": "J"}
+                "cage_load_power": "W", "contact_energy": "J", "friction_power_inner": "W",
+                "traction_work_inner": "J", "traction_work_outer": "J", "damping_work": "J", "ehl_rolling_work": "J",
+                "hysteresis_work": "J", "drag_work": "J", "pocket_work": "J", "land_work": "J"}
 NGLOBAL = len(GLOBAL_FIELDS)
 
 # -- condition-monitoring signals --------------------------------------------

@@ -179,19 +179,20 @@ SUMMARY_DESCRIPTIONS = {
                              "without it): a transient that unloads the contacts turns it into kinetic energy",
     "energy_residual": "(drive_power - dissipation - (kinetic_energy_change + contact_energy_change) / window "
                        "length) / drive_power",
-    "power_loss": "mean power of each modelled loss over the window: contact_traction_inner, contact_traction_outer "
-                  "(tangential power of the ball / raceway contacts per race, time mean of the sampled per-contact "
-                  "dissipation), contact_damping (normal damping of all contacts, time mean of the sampled "
-                  "damping_power; None when not recorded); with Scenario.rolling_resistance also ehl_rolling and "
-                  "hysteresis (the rolling-resistance moment pairs), with Scenario.ball_drag also drag (the ball "
-                  "drag): time means of the engine's ehl_rolling_power, hysteresis_power, drag_power",
-    "power_loss_total": "modelled components only: sum of the power_loss components [W] (the sampled split of the "
-                        "engine's dissipation); the whole loss is power_loss_whole",
+    "power_loss": "mean power of each modelled loss over the window, from the engine's work of that loss (every "
+                  "step, end minus start over the window length; a record without the works: the time means of "
+                  "the sampled powers): contact_traction_inner, contact_traction_outer (tangential power of the "
+                  "ball / raceway contacts per race), contact_damping (normal damping of all contacts); with "
+                  "Scenario.rolling_resistance also ehl_rolling and hysteresis (the rolling-resistance moment "
+                  "pairs), with Scenario.ball_drag also drag (the ball drag); with the rigid cage cage_pocket and "
+                  "cage_land",
+    "power_loss_total": "modelled components only: sum of the power_loss components [W] (the split of the engine's "
+                        "dissipation); the whole loss is power_loss_whole",
     "not_modelled": "loss sources the dynamic engines leave out at this traction level",
     "energy_check": "drive_power = sum of power_loss + (kinetic_energy_change + contact_energy_change) / window "
                     "length within 1 % of "
-                    "drive_power (residual, passed; split_error: the sampled components against the engine's "
-                    "cumulative dissipated_work)",
+                    "drive_power (residual, passed; split_error: the components against the engine's "
+                    "cumulative dissipated_work, round-off when the run recorded the works by loss)",
     "steady": "drift and oscillation of the reported quantities over the window against the thresholds named in it",
     "friction_outputs_converged": "False at the point level with friction='history': its friction and damping "
                                   "outputs (listed under not_converged) are step noise that falls about in "
@@ -441,19 +442,30 @@ class Results:
         the recorded series), their total, what is not modelled, and the energy check of the window
         (:func:`~.window_checks.energy_check`) against the drive power and kinetic energy change of
         ``energy`` (:meth:`energy`)."""
-        diag = self.data["diag"][w]
-        comp = {f"contact_traction_{tag}": float(np.mean(np.sum(diag[:, :, race, L.D_POWER], axis=1)))
-                for race, tag in ((0, "inner"), (1, "outer"))}
-        comp["contact_damping"] = (float(np.mean(self.global_series("damping_power")[w]))
-                                   if self.has_global("damping_power") else None)
-        for name, (switch, field, _off, _on) in DYNAMIC_SWITCHED_LOSSES.items():
-            if getattr(self.scenario, switch):
-                comp[name] = float(np.mean(self.global_series(field)[w])) if self.has_global(field) else None
-        if self.scenario.cage == "rigid":
-            comp["cage_pocket"] = float(np.mean(self.global_series("pocket_power")[w]))
-            comp["cage_land"] = float(np.mean(self.global_series("land_power")[w]))
         t = self.t[w]
         dur = float(t[-1] - t[0])
+
+        def loss(work, power):
+            """The window's mean of a loss [W]: its engine work, end minus start over the window length, when
+            recorded (every step counted); else the time mean of its sampled power (None: neither)."""
+            if self.has_global(work) and dur > 0.0:
+                g = self.global_series(work)
+                return float(g[w.stop - 1] - g[w.start]) / dur
+            return float(np.mean(self.global_series(power)[w])) if self.has_global(power) else None
+
+        diag = self.data["diag"][w]
+        comp = {}
+        for race, tag in ((0, "inner"), (1, "outer")):
+            exact = loss(f"traction_work_{tag}", "")
+            comp[f"contact_traction_{tag}"] = (exact if exact is not None else
+                                               float(np.mean(np.sum(diag[:, :, race, L.D_POWER], axis=1))))
+        comp["contact_damping"] = loss("damping_work", "damping_power")
+        for name, (switch, field, _off, _on) in DYNAMIC_SWITCHED_LOSSES.items():
+            if getattr(self.scenario, switch):
+                comp[name] = loss(field.replace("_power", "_work"), field)
+        if self.scenario.cage == "rigid":
+            comp["cage_pocket"] = loss("pocket_work", "pocket_power")
+            comp["cage_land"] = loss("land_work", "land_power")
         recorded = None
         if self.has_global("dissipated_work") and dur > 0.0:
             g = self.global_series("dissipated_work")
@@ -694,6 +706,8 @@ class Results:
 
         steady = self.steadiness(w, window)
         energy = self.energy(w)
+        losses = self.power_loss(w, energy)
+        loss = losses["power_loss"]  # the window's losses by component: every other mean of a loss is one of them
         out = {
             "engine": self.engine,
             "bearing": b.name,
@@ -717,9 +731,9 @@ class Results:
             "srr_mean": float(np.mean(srr[rolling])) if rolling.any() else None,
             "ring_displacement": [float(x) for x in np.mean(self.data["ring"][w, :3], axis=0)],
             "friction_torque": -float(np.mean(self.global_series("ring_torque")[w])),
-            "friction_power": float(np.mean(self.global_series("friction_power")[w])),
+            "friction_power": loss["contact_traction_inner"] + loss["contact_traction_outer"],
             **energy,
-            **self.power_loss(w, energy),
+            **losses,
             "steps": self.steps,
             "dt": self.scenario.dt,
             "t_end": float(self.t[-1]),
@@ -750,9 +764,11 @@ class Results:
                 out["note"] += ("; the rolling resistance (hysteresis and EHL rolling) acts as a moment pair "
                                 "(Scenario.rolling_resistance)")
         out.update(contact_summary(self.data, w, omega, b, omega_outer))
+        out["dissipation_inner"], out["dissipation_outer"] = loss["contact_traction_inner"], loss["contact_traction_outer"]
         if self.scenario.cage == "rigid":
             out.update(rigid_cage_summary(self.data, w, self.model_parameters(), out["cage_speed"],
                                           out.get("kinematic_cage_speed")))
+            out["cage_power_pocket"], out["cage_power_land"] = loss["cage_pocket"], loss["cage_land"]
             # the cage the run took (the scenario's, else the bearing's estimated one): its estimated fields
             out["rigid_cage_estimated"] = list(self.scenario.rigid_cage_of(b).estimated)
         if self.has_protocol():

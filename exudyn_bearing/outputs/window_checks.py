@@ -278,8 +278,8 @@ def energy_check(drive_power: float, losses: dict, kinetic_energy_change: float,
     ``losses``: component name -> mean power [W] over the window (None: not available, left out and
     named); ``kinetic_energy_change`` [J] over ``duration`` [s]; ``recorded_dissipation`` [W]: the
     engine's own total dissipation of the window (its cumulative ``dissipated_work``), against which
-    the sum of the sampled components is compared (``split_error``: the sampling error of the split,
-    not part of the check); ``floor`` [W]: a drive power below it is not judged (noise).
+    the sum of the components is compared (``split_error``: round-off for components from the engines'
+    works by loss, the sampling error of the split for time means of samples; not part of the check); ``floor`` [W]: a drive power below it is not judged (noise).
 
     Returns {"statement", "components" (names summed), "missing" (names without data), "drive_power",
     "power_loss_total", "kinetic_energy_rate", "contact_energy_rate" (None when not recorded), "residual"

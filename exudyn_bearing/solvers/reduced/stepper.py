@@ -31,7 +31,7 @@ import numpy as np
 
 from ..._jit import kernel
 from ...model.contact import _rigid_cage, accumulate_energy, forces
-from ...model.layout import (G_DISS_WORK, G_DRIVE_WORK, HZ_GEO, NGLOBAL, P_IB, P_IC, P_MAX_OVERLAP, P_MB, P_MC, P_MR,
+from ...model.layout import (ENERGY_WORKS, HZ_GEO, NGLOBAL, P_IB, P_IC, P_MAX_OVERLAP, P_MB, P_MC, P_MR,
                              P_RB, P_RP, P_VREG)
 from ...model.engine_steps import finite, finite_ring, inner_ring_force, set_inner_ring, store_sample
 
@@ -1297,11 +1297,11 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
             # a ball enters the load zone), so the fixed step's rectangle at the step's end would weight the
             # powers by where the steps fall
             accumulate_energy(glob, 0.5 * hs)
-            glob_n[G_DRIVE_WORK] = glob[G_DRIVE_WORK]
-            glob_n[G_DISS_WORK] = glob[G_DISS_WORK]
+            for k in ENERGY_WORKS:
+                glob_n[k] = glob[k]
             accumulate_energy(glob_n, 0.5 * hs)
-            glob[G_DRIVE_WORK] = glob_n[G_DRIVE_WORK]
-            glob[G_DISS_WORK] = glob_n[G_DISS_WORK]
+            for k in ENERGY_WORKS:
+                glob[k] = glob_n[k]
         else:
             accumulate_energy(glob, dt)
         if adaptive and sample_here and land:
