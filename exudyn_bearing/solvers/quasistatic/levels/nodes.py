@@ -358,7 +358,7 @@ class NodeGroup:
             for b in bs:
                 b._node_after(q, q_t, gen)
         for b in bs:
-            if t >= b._next_sample - 1e-12:
+            if b._pending is not None or t >= b._next_sample - 1e-12:  # b._sampling(t), without the call
                 b._end(t)
         if not self._ready:
             for b in bs:
