@@ -10,8 +10,11 @@ State (outer-ring frame = world frame, the bearing axis z):
   vector turns and the step's frozen Jacobian would resist its turning); ``wb`` its world-frame value for
   the kernel;
 * ``q`` (Z, 2): the centre's radius r and axial position z [m], solved from the normal force balance
-  ``R_j(q) = (f_j . e_r + m_b r om_j^2, f_j . e_z) = 0`` (f_j the contact kernel's force on ball j, the
-  centrifugal force m_b r om^2 the balance's inertia term); ``q_old`` its value one step earlier;
+  ``R_j(q) = (f_j . e_r + m_b r om_j^2, f_j . e_z) - m_b q_j'' = 0`` (f_j the contact kernel's force on ball j,
+  m_b r om^2 the centrifugal force, m_b q'' the centre's radial and axial inertia as the backward difference
+  ((q - q_old) / dt - qd) / dt, ``qd`` (Z, 2) the rate at the step's start: the implicit Euler step of the
+  centre's normal motion, which is the balance where the contacts hold the centre and a body of its mass where
+  they do not, docs/theory/reduced.md, "A lightly loaded ball"); ``q_old`` its value one step earlier;
 * ``ring`` (6,): inner-ring position and velocity (it translates; its spin follows the protocol, as in the
   reference engine, :func:`~exudyn_bearing.model.engine_steps.set_inner_ring`);
 * with the rigid cage, its centre, angle and their rates in the cage rows of ``xc``, ``vc``
@@ -40,10 +43,11 @@ __all__ = ["reduced_evaluate", "run_reduced", "N_WORK", "N_CAGE", "N_CORR", "N_A
 #: Slots of the run's work vector ``work`` (floats kept across calls): the step's Newton iterations in total,
 #: the Newton iterations of the worst step, the force evaluations in total, the steps whose force balance did
 #: not converge within ``max_iter``, the balance Jacobians taken, the steps that took the speeds' and the ring's
-#: Jacobians, 1 once the state of the step before is kept (``prev``, ``ring_prev``: the BDF2 step), and the
-#: Newton corrections of steps where a pocket contact closed or opened (the rigid cage).
+#: Jacobians, 1 once the state of the step before is kept (``prev``, ``ring_prev``: the BDF2 step), the
+#: Newton corrections of steps where a pocket contact closed or opened (the rigid cage), and 1 once a step has
+#: set the centres' rates ``qd`` (the inertia of their balance).
 N_WORK = 9
-W_ITER, W_ITER_MAX, W_EVALS, W_UNCONVERGED, W_JAC, W_REFRESH, W_HAVE_PREV, W_CORR, W_HAVE_RATE = 0, 1, 2, 3, 4, 5, 6, 7, 8
+W_ITER, W_ITER_MAX, W_EVALS, W_UNCONVERGED, W_JAC, W_REFRESH, W_HAVE_PREV, W_CORR, W_HAVE_RATE = range(9)
 #: Surface-speed perturbation [m/s] of the finite-difference Jacobian of the ball speeds (the traction's
 #: low-slip slope is resolved down to slips far below the regularising speeds, 1e-3 m/s and more).
 H_SPEED = 1e-6
@@ -553,10 +557,15 @@ def _balance_sampled(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, x
     the per-ball 2 x 2 Jacobians ``g`` (Z, 2, 2) of dR/dq, taken by differences (one evaluation per
     component, every ball perturbed at once: balls couple only through the rings, held here) at the first
     iteration when ``fresh``, else kept from an earlier step, and retaken at an iteration where the residual
-    of a ball not yet converged grew (modified Newton). Where G is not negative definite (a ball without
-    contact, or whose contact is just closing) the iteration adds m_b / dt^2 to the stiffness it inverts, so
-    that a ball whose contacts are all open moves by its force from rest over one step, dq = R dt^2 / m_b,
-    and then stays put for the step (the rule of docs/theory/reduced.md); a loaded ball has converged where
+    of a ball not yet converged did not shrink by SHRINK (modified Newton). With ``inertia`` 1 the balance
+    carries the centres' radial and axial inertia against their rates ``qref`` (Z, 2) [m/s] at the step's start
+    (:func:`_add_inertia`; ``g`` keeps the contacts' stiffness alone and the iteration inverts G - m_b / dt^2):
+    a ball that its contacts hold less stiffly than m_b / dt^2 (a lightly loaded ball, one with a contact open)
+    moves as a body of its mass, and one whose contacts are all open flies on with its rate under its force (one
+    correction: its residual is linear) and then stays put for the step (the rule of docs/theory/reduced.md, "A
+    lightly loaded ball"); with ``inertia`` 0 (a run's start, the level's frozen balance) the balance alone, and
+    where G is not negative definite the iteration adds m_b / dt^2 to the stiffness it inverts (a ball without
+    contact moves by its force from rest over one step, dq = R dt^2 / m_b). A loaded ball has converged where
     the correction its residual asks for is below ``tol`` [m], and that correction is left out (its centre
     stays where it was evaluated): an iteration in which every ball converged and none moved (and which took
     no Jacobian) ends the balance on the evaluation just made, without evaluating the forces once more. Left
@@ -785,7 +794,9 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
     (phi, om, w_o) and of the ring's (x, v): one Newton step of y_{n+1} - 4/3 y_n + 1/3 y_{n-1} =
     2/3 dt f(y_{n+1}) from the extrapolation 2 y_n - y_{n-1}, with f there f_n + J (y_n - y_{n-1}) (no force
     evaluation beyond the step's), linearly implicit Euler where the state before is not yet kept (``prev``
-    (Z, 5), ``ring_prev`` (6), flag in ``work``); (5) the balls' force balance at t_{n+1} (:func:`_balance`),
+    (Z, 5), ``ring_prev`` (6), flag in ``work``); (5) the balls' force balance at t_{n+1} (:func:`_balance`)
+    with the centres' inertia against their rates at t_n (kept in ``qd`` (Z, 2) [m/s], which a later call's first
+    balance re-solving the last step's takes again; the run's first balance and first step start from rest),
     warm started by the extrapolation 2 q_n - q_{n-1}, its Jacobians retaken with those of (2) and else kept
     (:func:`_balance_sampled`; a step that ends on a sample takes the diagnostics in its evaluations). With
     ``cage_free`` (the rigid cage) the cage's state
