@@ -42,9 +42,10 @@ def frozen_ring_force(t, dt, p, table, phi, om, wo, q, q_old, ring, xc, vc, ring
     acc = np.zeros((z, 4))
     r0 = np.zeros((z, 2))
     done = np.zeros(z)
+    qref = np.zeros((z, 2))
     it, ok, worst = _balance(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb, tb,
                              fc, fr, fring, glob, diag, cage_load, res, acc, g, r0, done, tol, max_iter, work, fresh,
-                             defect_path, ellipse_path, loss_path)
+                             qref, 0.0, defect_path, ellipse_path, loss_path)
     for k in range(6):
         out[k] = fr[0, k]
     return it, ok, worst

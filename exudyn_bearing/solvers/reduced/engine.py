@@ -188,6 +188,7 @@ class ReducedEngine:
         phi, om, wo, q, ring, hz = st["phi"], st["om"], st["wo"], st["q"], st["ring"], st["hz"]
         wb = np.zeros((z, 3))
         q_old = q.copy()
+        qd = np.zeros((z, 2))  # the centres' radial and axial rates at the last balance's start (their inertia)
         prev, ring_prev = np.zeros((z, 5)), np.zeros(6)  # the state of the step before (BDF2)
         xb, vb = np.zeros((z, 3)), np.zeros((z, 3))
         cage_free = self.scenario.cage == "rigid"
@@ -218,11 +219,11 @@ class ReducedEngine:
                                done, buf["t"][sl], buf["glob"][sl], buf["diag"][sl], buf["cage_load"][sl],
                                buf["xb"][sl], buf["vb"][sl], buf["wb"][sl], buf["xc"][sl], buf["vc"][sl],
                                buf["ring"][sl], work, True, self.jac_every, self.jac_tol, self.ring_every, prev,
-                               ring_prev, cage_free, cage_prev, self.n_corr, adapt, ys, h_log,
+                               ring_prev, cage_free, cage_prev, self.n_corr, adapt, ys, h_log, qd,
                                defect_path, ellipse_path, loss_path)
 
         # compile (or load from the cache) before the clock starts: zero steps on copies of the state
-        kept = (phi, om, wo, q, q_old, ring, hz, glob, work, prev, ring_prev, xc, vc, cage_prev, adapt, ys)
+        kept = (phi, om, wo, q, q_old, ring, hz, glob, work, prev, ring_prev, xc, vc, cage_prev, adapt, ys, qd)
         saved = [a.copy() for a in kept]
         call(0, 0, 0)
         for a, b in zip(kept, saved):

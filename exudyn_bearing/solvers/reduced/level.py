@@ -177,6 +177,7 @@ class ReducedBearing:
         self.phi, self.om, self.wo = st["phi"].copy(), st["om"].copy(), st["wo"].copy()
         self.q = st["q"].copy()
         self.q_old = self.q.copy()
+        self.qd = np.zeros((z, 2))  # the centres' rates at the last balance's start (run_reduced: their inertia)
         self.ring = st["ring"].copy()
         self.hz = st["hz"].copy()
         if self.cage_free:
@@ -380,7 +381,7 @@ class ReducedBearing:
             buf["glob"][rows], buf["diag"][rows], buf["cage_load"][rows], buf["xb"][rows], buf["vb"][rows],
             buf["wb"][rows], buf["xc"][rows], buf["vc"][rows], buf["ring"][rows], eng.work, False, eng.jac_every,
             eng.jac_tol, eng.ring_every, self.prev, self.ring_prev, self.cage_free, self.cage_prev, eng.n_corr,
-            self.adapt, self.ys, self.h_log, self._paths[0], self._paths[1], self._paths[2])
+            self.adapt, self.ys, self.h_log, self.qd, self._paths[0], self._paths[1], self._paths[2])
         self._wall += time.perf_counter() - t0
         if status != 0:
             what = "non-finite state" if status == 1 else "runaway overlap (above 5 % of the ball radius)"

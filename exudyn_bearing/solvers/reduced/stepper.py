@@ -10,8 +10,11 @@ State (outer-ring frame = world frame, the bearing axis z):
   vector turns and the step's frozen Jacobian would resist its turning); ``wb`` its world-frame value for
   the kernel;
 * ``q`` (Z, 2): the centre's radius r and axial position z [m], solved from the normal force balance
-  ``R_j(q) = (f_j . e_r + m_b r om_j^2, f_j . e_z) = 0`` (f_j the contact kernel's force on ball j, the
-  centrifugal force m_b r om^2 the balance's inertia term); ``q_old`` its value one step earlier;
+  ``R_j(q) = (f_j . e_r + m_b r om_j^2, f_j . e_z) - m_b q_j'' = 0`` (f_j the contact kernel's force on ball j,
+  m_b r om^2 the centrifugal force, m_b q'' the centre's radial and axial inertia as the backward difference
+  ((q - q_old) / dt - qd) / dt, ``qd`` (Z, 2) the rate at the step's start: the implicit Euler step of the
+  centre's normal motion, which is the balance where the contacts hold the centre and a body of its mass where
+  they do not, docs/theory/reduced.md, "A lightly loaded ball"); ``q_old`` its value one step earlier;
 * ``ring`` (6,): inner-ring position and velocity (it translates; its spin follows the protocol, as in the
   reference engine, :func:`~exudyn_bearing.model.engine_steps.set_inner_ring`);
 * with the rigid cage, its centre, angle and their rates in the cage rows of ``xc``, ``vc``
@@ -40,10 +43,11 @@ __all__ = ["reduced_evaluate", "run_reduced", "N_WORK", "N_CAGE", "N_CORR", "N_A
 #: Slots of the run's work vector ``work`` (floats kept across calls): the step's Newton iterations in total,
 #: the Newton iterations of the worst step, the force evaluations in total, the steps whose force balance did
 #: not converge within ``max_iter``, the balance Jacobians taken, the steps that took the speeds' and the ring's
-#: Jacobians, 1 once the state of the step before is kept (``prev``, ``ring_prev``: the BDF2 step), and the
-#: Newton corrections of steps where a pocket contact closed or opened (the rigid cage).
-N_WORK = 8
-W_ITER, W_ITER_MAX, W_EVALS, W_UNCONVERGED, W_JAC, W_REFRESH, W_HAVE_PREV, W_CORR = 0, 1, 2, 3, 4, 5, 6, 7
+#: Jacobians, 1 once the state of the step before is kept (``prev``, ``ring_prev``: the BDF2 step), the
+#: Newton corrections of steps where a pocket contact closed or opened (the rigid cage), and 1 once a step has
+#: set the centres' rates ``qd`` (the inertia of their balance).
+N_WORK = 9
+W_ITER, W_ITER_MAX, W_EVALS, W_UNCONVERGED, W_JAC, W_REFRESH, W_HAVE_PREV, W_CORR, W_HAVE_RATE = range(9)
 #: Surface-speed perturbation [m/s] of the finite-difference Jacobian of the ball speeds (the traction's
 #: low-slip slope is resolved down to slips far below the regularising speeds, 1e-3 m/s and more).
 H_SPEED = 1e-6
@@ -524,28 +528,44 @@ def _step_residual(phi, om, wo, prev, prev2, acc, xc, vc, cage_prev, cage_prev2,
     return max(big, abs(resc[7]) * rp)
 
 
+@kernel(inline="always")
+def _add_inertia(q, q_old, qref, dt, m, res):
+    """Add the inertia of each ball centre's radial and axial motion to its force balance ``res`` (Z, 2) [N]:
+    -m ((q - q_old) / dt - qref) / dt, the backward difference of the centre's rate (q - q_old) / dt against its
+    rate ``qref`` (Z, 2) [m/s] at the step's start (m the ball's mass; docs/theory/reduced.md, "A lightly loaded
+    ball")."""
+    for j in range(q.shape[0]):
+        for c in range(2):
+            res[j, c] -= m * ((q[j, c] - q_old[j, c]) / dt - qref[j, c]) / dt
+
+
 @kernel(internal=True)
 def _balance(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb, tb, fc, fr, fring,
-             glob, diag, cage_load, res, acc, g, r0, done, tol, max_iter, work, fresh, defect_path, ellipse_path,
-             loss_path):
+             glob, diag, cage_load, res, acc, g, r0, done, tol, max_iter, work, fresh, qref, inertia, defect_path,
+             ellipse_path, loss_path):
     """The balls' normal force balance (:func:`_balance_sampled` without the sample's diagnostics)."""
     return _balance_sampled(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb, tb,
                             fc, fr, fring, glob, diag, cage_load, res, acc, g, r0, done, tol, max_iter, work, fresh,
-                            False, defect_path, ellipse_path, loss_path)
+                            False, qref, inertia, defect_path, ellipse_path, loss_path)
 
 
 @kernel(internal=True)
 def _balance_sampled(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb, tb, fc, fr,
-                     fring, glob, diag, cage_load, res, acc, g, r0, done, tol, max_iter, work, fresh, want,
-                     defect_path, ellipse_path, loss_path):
+                     fring, glob, diag, cage_load, res, acc, g, r0, done, tol, max_iter, work, fresh, want, qref,
+                     inertia, defect_path, ellipse_path, loss_path):
     """Solve the normal force balance of every ball for q (warm start: q on entry) by Newton's method with
     the per-ball 2 x 2 Jacobians ``g`` (Z, 2, 2) of dR/dq, taken by differences (one evaluation per
     component, every ball perturbed at once: balls couple only through the rings, held here) at the first
     iteration when ``fresh``, else kept from an earlier step, and retaken at an iteration where the residual
-    of a ball not yet converged grew (modified Newton). Where G is not negative definite (a ball without
-    contact, or whose contact is just closing) the iteration adds m_b / dt^2 to the stiffness it inverts, so
-    that a ball whose contacts are all open moves by its force from rest over one step, dq = R dt^2 / m_b,
-    and then stays put for the step (the rule of docs/theory/reduced.md); a loaded ball has converged where
+    of a ball not yet converged did not shrink by SHRINK (modified Newton). With ``inertia`` 1 the balance
+    carries the centres' radial and axial inertia against their rates ``qref`` (Z, 2) [m/s] at the step's start
+    (:func:`_add_inertia`; ``g`` keeps the contacts' stiffness alone and the iteration inverts G - m_b / dt^2):
+    a ball that its contacts hold less stiffly than m_b / dt^2 (a lightly loaded ball, one with a contact open)
+    moves as a body of its mass, and one whose contacts are all open flies on with its rate under its force (one
+    correction: its residual is linear) and then stays put for the step (the rule of docs/theory/reduced.md, "A
+    lightly loaded ball"); with ``inertia`` 0 (a run's start, the level's frozen balance) the balance alone, and
+    where G is not negative definite the iteration adds m_b / dt^2 to the stiffness it inverts (a ball without
+    contact moves by its force from rest over one step, dq = R dt^2 / m_b). A loaded ball has converged where
     the correction its residual asks for is below ``tol`` [m], and that correction is left out (its centre
     stays where it was evaluated): an iteration in which every ball converged and none moved (and which took
     no Jacobian) ends the balance on the evaluation just made, without evaluating the forces once more. Left
@@ -568,6 +588,8 @@ def _balance_sampled(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, x
                                  fb, tb, fc, fr, fring, glob, diag, cage_load, want, res, acc, defect_path,
                                  ellipse_path, loss_path)
         work[W_EVALS] += 1.0
+        if inertia > 0.0:
+            _add_inertia(q, q_old, qref, dt, inertia * p[P_MB], res)
         if converged or it >= max_iter or not math.isfinite(worst):
             break
         for j in range(z):
@@ -588,10 +610,14 @@ def _balance_sampled(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, x
                                  fb, tb, fc, fr, fring, glob, diag, cage_load, False, res, acc, defect_path,
                                  ellipse_path, loss_path)
                 work[W_EVALS] += 1.0
+                if inertia > 0.0:
+                    _add_inertia(q, q_old, qref, dt, inertia * p[P_MB], res)
                 for j in range(z):
                     q[j, c] -= H_POS
                     g[j, 0, c] = (res[j, 0] - r0[j, 0]) / H_POS
                     g[j, 1, c] = (res[j, 1] - r0[j, 1]) / H_POS
+                    # g keeps the contacts' stiffness alone (the ring's condensation adds the inertia itself)
+                    g[j, c, c] += inertia * k_min
         it += 1
         converged = True
         moved = False
@@ -600,10 +626,10 @@ def _balance_sampled(t, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, x
                 continue
             # dq = -G^-1 R, G = dR/dq, negative definite where the contacts hold the ball; where it is not
             # (no contact, or a contact just closing), -(G - k_min I)^-1 R
-            a11 = g[j, 0, 0]
+            a11 = g[j, 0, 0] - inertia * k_min
             a12 = g[j, 0, 1]
             a21 = g[j, 1, 0]
-            a22 = g[j, 1, 1]
+            a22 = g[j, 1, 1] - inertia * k_min
             det = a11 * a22 - a12 * a21
             if not (det > 1e-6 * k_min * k_min and a11 + a22 < 0.0):
                 a11 -= k_min
@@ -752,7 +778,8 @@ def _copy_step_state(phi, om, wo, q, q_old, prev, ring, ring_prev, xc, vc, cage_
 def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb, tb,
                 fc, fr, fring, glob, diag, cage_load, tol, max_iter, sample_every, step0, s_t, s_glob, s_diag,
                 s_cage, s_xb, s_vb, s_wb, s_xc, s_vc, s_ring, work, ring_free, jac_every, jac_tol, ring_every, prev, ring_prev,
-                cage_free, cage_prev, n_corr, adapt, ys, h_log, defect_path=True, ellipse_path=True, loss_path=True):
+                cage_free, cage_prev, n_corr, adapt, ys, h_log, qd, defect_path=True, ellipse_path=True,
+                loss_path=True):
     """``n_steps`` steps of the reduced engine from t0 (module docstring; docs/theory/reduced.md).
 
     Each step from t_n: (1) the forces at t_n (the balls on their balance of the last step); the Jacobians of
@@ -767,7 +794,9 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
     (phi, om, w_o) and of the ring's (x, v): one Newton step of y_{n+1} - 4/3 y_n + 1/3 y_{n-1} =
     2/3 dt f(y_{n+1}) from the extrapolation 2 y_n - y_{n-1}, with f there f_n + J (y_n - y_{n-1}) (no force
     evaluation beyond the step's), linearly implicit Euler where the state before is not yet kept (``prev``
-    (Z, 5), ``ring_prev`` (6), flag in ``work``); (5) the balls' force balance at t_{n+1} (:func:`_balance`),
+    (Z, 5), ``ring_prev`` (6), flag in ``work``); (5) the balls' force balance at t_{n+1} (:func:`_balance`)
+    with the centres' inertia against their rates at t_n (kept in ``qd`` (Z, 2) [m/s], which a later call's first
+    balance re-solving the last step's takes again; the run's first balance and first step start from rest),
     warm started by the extrapolation 2 q_n - q_{n-1}, its Jacobians retaken with those of (2) and else kept
     (:func:`_balance_sampled`; a step that ends on a sample takes the diagnostics in its evaluations). With
     ``cage_free`` (the rigid cage) the cage's state
@@ -897,9 +926,12 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
     # the first step's Jacobians of the force balance; from a start off the balance (the analytic start, a
     # quasi-static start under another hypothesis than the dynamics') the iteration converges linearly from afar
     # and may take more than max_iter: START_ITER times as many here
+    # the centres' inertia against their rates at the last balance's start (qd), once a step has taken them: a
+    # later call re-solves its last balance; a run's start solves the balance itself
+    inertia0 = 1.0 if work[W_HAVE_RATE] > 0.5 else 0.0
     it, ok, worst = _balance(t_now, hs, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist, hz, fb,
                              tb, fc, fr, fring, glob, diag, cage_load, res, acc, g, r0, done, tol,
-                             START_ITER * max_iter, work, want_yes, defect_path, ellipse_path, loss_path)
+                             START_ITER * max_iter, work, want_yes, qd, inertia0, defect_path, ellipse_path, loss_path)
     step = 0
     force_jac = False
     rejected = 0  # rejections at the present t_n
@@ -1124,9 +1156,11 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
             if not _implicit_step(j6, b6, ring, ring_prev, 6, gam, h, bdf2, a6, d6):
                 return step, n_samp, 1
         work[W_HAVE_PREV] = 1.0
-        # (5) the balls' force balance at t_{n+1}, warm started by extrapolation
+        # (5) the balls' force balance at t_{n+1} with the centres' inertia (their rate at t_n in qd; at the run's
+        # first step from rest), warm started by extrapolation
         for j in range(z):
             for c in range(2):
+                qd[j, c] = (q[j, c] - q_old[j, c]) / hs if work[W_HAVE_RATE] > 0.5 else 0.0
                 q_n[j, c] = q[j, c]
                 if ratio == 1.0:
                     q[j, c] = 2.0 * q[j, c] - q_old[j, c]
@@ -1141,9 +1175,11 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
         else:
             sample_due = (step0 + step + 1) % sample_every == 0 and n_samp < s_t.shape[0]
         sampled = sample_due
+        work[W_HAVE_RATE] = 1.0
         it, ok, worst = _balance_sampled(t1, h, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings, hist,
                                          hz, fb, tb, fc, fr, fring, glob, diag, cage_load, res, acc, g, r0, done, tol,
-                                         max_iter, work, refresh, sample_due, defect_path, ellipse_path, loss_path)
+                                         max_iter, work, refresh, sample_due, qd, 1.0, defect_path, ellipse_path,
+                                         loss_path)
         # the rigid cage: where a pocket contact closed or opened over the step, Newton corrections of the step's
         # equations at the state reached (the same matrix), each followed by the balls' balance
         if cage_free and n_corr > 0:
@@ -1172,8 +1208,8 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
                             _cage_add(xc, vc, i, keep_c[i] - _cage_get(xc, vc, i))
                         it, ok, worst = _balance(t1, h, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc,
                                                  rings, hist, hz, fb, tb, fc, fr, fring, glob, diag, cage_load, res,
-                                                 acc, g, r0, done, tol, max_iter, work, want_no, defect_path,
-                                                 ellipse_path, loss_path)
+                                                 acc, g, r0, done, tol, max_iter, work, want_no, qd, 1.0,
+                                                 defect_path, ellipse_path, loss_path)
                         break
                     if size < CORR_TOL or _c == n_corr:
                         break
@@ -1205,7 +1241,8 @@ def run_reduced(n_steps, t0, dt, p, table, phi, om, wo, wb, q, q_old, ring, xb, 
                     work[W_CORR] += 1.0
                     it, ok, worst = _balance(t1, h, p, table, phi, om, wo, wb, q, q_old, ring, xb, vb, xc, vc, rings,
                                              hist, hz, fb, tb, fc, fr, fring, glob, diag, cage_load, res, acc, g, r0,
-                                             done, tol, max_iter, work, want_no, defect_path, ellipse_path, loss_path)
+                                             done, tol, max_iter, work, want_no, qd, 1.0, defect_path, ellipse_path,
+                                             loss_path)
         if adaptive:
             # the local error of the step (docs/theory/reduced.md): gam h_n^2 (h_n + h_{n-1}) times the third
             # divided difference of the state over the last four states, filtered by the step's matrix
