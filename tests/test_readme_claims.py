@@ -302,28 +302,28 @@ CLAIMS = [
      "reference dt=2e-06 - quasi-static: q_max_inner -0.0768 %", "python validation/consistency/reduced_engine.py"),
     ("-0.0386 % at 1 us", "reference dt=1e-06 - quasi-static: q_max_inner -0.0386 %", "python validation/consistency/reduced_engine.py"),
     ("-0.0193 % at 0.5 us", "reference dt=5e-07 - quasi-static: q_max_inner -0.0193 %", "python validation/consistency/reduced_engine.py"),
-    ("the balance takes 2.15 Newton iterations per step at 100\nus (most 9, at the start) and 3.54 force evaluations",
-     "force evaluations/step 3.54 Newton iterations/step 2.15 (most 9, unconverged steps 0)", "python validation/consistency/reduced_engine.py"),
-    ("costs 3.86 s of wall time per simulated second\nat 100 us against 113 for the reference engine at 2 us in the same session\non a loaded host, 29.2 times cheaper",
-     "cost: 3.86 s per simulated second against 113 (reference/reduced 29.2)", "python validation/consistency/reduced_engine.py"),
-    ("the reference engine at 2 us 0.0126 % for 4.97 s", "reference 2 us: wall/simulated s 4.97 errors: "
+    ("balance takes 2.13 Newton iterations per step at 100\nus (most 9, at the start) and 3.53 force evaluations",
+     "force evaluations/step 3.53 Newton iterations/step 2.13 (most 9, unconverged steps 0)", "python validation/consistency/reduced_engine.py"),
+    ("costs 4.75 s of wall time per simulated second\nat 100 us against 65.3 for the reference engine at 2 us in the same session,\n13.7 times cheaper",
+     "cost: 4.75 s per simulated second against 65.3 (reference/reduced 13.7)", "python validation/consistency/reduced_engine.py"),
+    ("the reference engine at 2 us 0.0126 % for 6.31 s", "reference 2 us: wall/simulated s 6.31 errors: "
      "dissipation 0.0126 %", "python validation/performance/reduced_work_precision.py"),
-    ("at 4 us 158 %", "reference 4 us: wall/simulated s 2.67 errors: dissipation 158 %",
+    ("at 4 us 158 %", "reference 4 us: wall/simulated s 2.73 errors: dissipation 158 %",
      "python validation/performance/reduced_work_precision.py"),
-    ("the reduced engine 0.00755 % at\n20 us for 2.52 s",
-     "reduced 20 us: wall/simulated s 2.52 errors: dissipation 0.00755 %", "python validation/performance/reduced_work_precision.py"),
-    ("0.0687 % at 100 us for 1.04 s", "reduced 100 us: wall/simulated s 1.04 errors: dissipation 0.0687 %", "python validation/performance/reduced_work_precision.py"),
-    ("the 6208 radial has one\n  at 20 us and none at 100 us", "Newton iterations/step 2.77 (most 12, unconverged steps 1)", "python validation/consistency/reduced_engine.py"),
-    ("the 6208 radial has one\n  at 20 us and none at 100 us", "Newton iterations/step 2.91 (most 8, unconverged steps 0)", "python validation/consistency/reduced_engine.py"),
+    ("the reduced engine 0.00769 % at\n20 us for 2.8 s",
+     "reduced 20 us: wall/simulated s 2.8 errors: dissipation 0.00769 %", "python validation/performance/reduced_work_precision.py"),
+    ("0.0688 % at 100 us for 1.26 s", "reduced 100 us: wall/simulated s 1.26 errors: dissipation 0.0688 %", "python validation/performance/reduced_work_precision.py"),
+    ("the 6208 radial has one\n  at 20 us and none at 100 us", "Newton iterations/step 2.78 (most 12, unconverged steps 1)", "python validation/consistency/reduced_engine.py"),
+    ("the 6208 radial has one\n  at 20 us and none at 100 us", "Newton iterations/step 2.94 (most 8, unconverged steps 0)", "python validation/consistency/reduced_engine.py"),
     # the rigid cage in the reduced engine (docs/theory/reduced.md)
-    ("at 20 us Q_max inner -0.0167 %, outer -0.0202 %, the\ncage's speed +0.0029 %, the dissipation -0.0862 %",
-     "q_max_inner -0.0167 % (ok 0.5 %)  q_max_outer -0.0202 % (ok 0.5 %)  cage_speed +0.0029 % (ok 0.2 %)  "
-     "dissipation -0.0862 % (ok 1 %)", "python validation/consistency/reduced_engine.py"),
-    ("The\ncost: 9.57 s of wall time per simulated second at 20 us", "cost: 9.57 s per simulated second against 6.91",
+    ("at 20 us Q_max\ninner +0.0570 %, outer +0.0543 %, the\ncage's speed +0.0175 %, the dissipation -0.5483 %",
+     "q_max_inner +0.0570 % (ok 0.5 %)  q_max_outer +0.0543 % (ok 0.5 %)  cage_speed +0.0175 % (ok 0.2 %)  "
+     "dissipation -0.5483 % (ok 1 %)", "python validation/consistency/reduced_engine.py"),
+    ("The\ncost: 6.62 s of wall time per simulated second at 20 us", "cost: 6.62 s per simulated second against 5.34",
      "python validation/consistency/reduced_engine.py"),
-    ("from 0.00269 % (10 us) to 0.0361 % (100 us)", "reduced 10 us: wall/simulated s 4.39 errors: dissipation "
-     "0.00219 % q_max_inner 0.00269 %", "python validation/performance/reduced_work_precision.py"),
-    ("from 0.00269 % (10 us) to 0.0361 % (100 us)", "errors: dissipation 0.0687 % q_max_inner 0.0361 %", "python validation/performance/reduced_work_precision.py"),
+    ("from 0.00265 % (10 us) to 0.0358 % (100 us)", "reduced 10 us: wall/simulated s 4.43 errors: dissipation "
+     "0.00235 % q_max_inner 0.00265 %", "python validation/performance/reduced_work_precision.py"),
+    ("from 0.00265 % (10 us) to 0.0358 % (100 us)", "errors: dissipation 0.0688 % q_max_inner 0.0358 %", "python validation/performance/reduced_work_precision.py"),
     ("4.77e-05 % at 2 us", "errors: dissipation 0.0126 % q_max_inner 4.77e-05 %", "python validation/performance/reduced_work_precision.py"),
 ]
 
