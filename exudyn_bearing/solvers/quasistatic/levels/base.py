@@ -157,8 +157,6 @@ class LevelBearing:
         self._t_start = -math.inf
         self.restarts = 0
         self._samples = []
-        self._pending = None  # the sample row of the step the solver is at (_end), and its time
-        self._pending_t = self._pending_next = 0.0
         self._next_sample = 0.0
         self._evaluations = 0
         self._setup()
@@ -325,39 +323,30 @@ class LevelBearing:
             self._t_start = t
             check_solver(settings_solver(self._sys.get("simulationSettings")))
             self._restart(t)
+        elif t > self._t_last + 1e-12 and self._t_last >= self._next_sample - 1e-12:
+            self._step_done(self._t_last)
         self._t_last = t
         self._evaluations += 1
 
     def _end(self, t, rotJ0=None):
-        """After an evaluation at time t: a sample every sample interval, of the step's converged state. The
-        row of a sample time is taken again at every evaluation of that time (Newton's iterates, the last one
-        converged) and kept when the solver moves on to a later time; a step the solver takes again from an
-        earlier time (a smaller step) drops it. Before, the first evaluation of a sample time was kept: Newton's
-        predictor, up to 16 nm off the converged 24.6 um of the rotor of bench_qs_rotor.py."""
-        pending = self._pending
-        if pending is not None:
-            if t > self._pending_t + 1e-12:  # the pending sample's step converged: keep it
-                self._samples.append(pending)
-                self._pending = None
-            elif t < self._pending_t - 1e-12:  # the solver took the step again from an earlier time
-                self._pending = None
-                self._next_sample = self._pending_next
-        if self._pending is not None or t >= self._next_sample - 1e-12:
-            if rotJ0 is not None:
-                self._rot0 = asarray(rotJ0, float)
-            if self._pending is None:
-                self._pending_t, self._pending_next = t, self._next_sample
-                self._next_sample = t + self.sampleInterval
-            self._pending = self._sample_row(t)
+        """After an evaluation at time t: at a sample time, the joint frame's rotation the sensors turn the
+        forces by (the sample itself is taken when the solver moves on, :meth:`_step_done`)."""
+        if rotJ0 is not None and t >= self._next_sample - 1e-12:
+            self._rot0 = asarray(rotJ0, float)
 
-    def _sampling(self, t):
-        """Whether an evaluation at time t must go through :meth:`_end` (a sample is due or pending)."""
-        return self._pending is not None or t >= self._next_sample - 1e-12
+    def _step_done(self, t):
+        """The solver moved on from time t (a sample time): the last evaluation at t, still in the work arrays,
+        is the step's converged state (Newton's last iterate; an explicit solver's committed state), and it is
+        the sample. Called at the first evaluation of a later time, before it overwrites them, and by
+        :meth:`samples` for the run's last step. A step the solver takes again from an earlier time leaves its
+        attempt unsampled. (Before, the first evaluation of a sample time was kept: Newton's predictor, 0.4 um
+        off on a loaded rotor.)"""
+        self._samples.append(self._sample_row(t))
+        self._next_sample = t + self.sampleInterval
 
     def _restart(self, t):
         self.restarts += 1
         self._samples.clear()
-        self._pending = None
         self._next_sample = t
         self._evaluations = 0
 
@@ -386,10 +375,11 @@ class LevelBearing:
         frame), ``force`` (n, 5) (force and moment of the bearing on the inner ring, same frame), ``cage_angle``,
         ``cage_speed``, ``q_max_inner``, ``q_max_outer`` (NaN on a level without ball loads, ``ballLoads``) and the
         level's own fields."""
-        rows = self._samples + ([self._pending] if self._pending is not None else [])  # the last step's too
-        if not rows:
+        if self._evaluations and self._t_last >= self._next_sample - 1e-12:
+            self._step_done(self._t_last)  # the run's last step
+        if not self._samples:
             raise RuntimeError("samples: no samples yet; run mbs.SolveDynamic first")
-        a = np.array(rows)
+        a = np.array(self._samples)
         out = {"t": a[:, 0], "displacement": a[:, 1:6], "force": a[:, 6:11], "cage_angle": a[:, 11],
                "cage_speed": a[:, 12], "q_max_inner": a[:, 13], "q_max_outer": a[:, 14]}
         out.update(self._extra_fields(a[:, SAMPLE_HEADER:]))

@@ -297,7 +297,7 @@ class QuasiStaticBearing(LevelBearing):
         self._node_before(t, q, q_t)
         self._nws[N_QMAX] = self._node_kernel(q, q_t, *self._node_args, gen)
         self._node_after(q, q_t, gen)
-        if self._sampling(t):
+        if t >= self._next_sample - 1e-12:
             self._end(t)
         self._mats_ready = True
 

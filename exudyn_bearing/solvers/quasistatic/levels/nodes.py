@@ -349,6 +349,8 @@ class NodeGroup:
         q, q_t = qq[:n], qq[n:]
         if solver is self._run and t > self._t_last:
             for b in bs:
+                if b._t_last >= b._next_sample - 1e-12:  # its last step is a sample: the work arrays hold it
+                    b._step_done(b._t_last)
                 b._t_last = t
                 b._evaluations += 1
         else:
@@ -358,7 +360,7 @@ class NodeGroup:
             for b in bs:
                 b._node_after(q, q_t, gen)
         for b in bs:
-            if b._pending is not None or t >= b._next_sample - 1e-12:  # b._sampling(t), without the call
+            if t >= b._next_sample - 1e-12:
                 b._end(t)
         if not self._ready:
             for b in bs:

@@ -61,7 +61,6 @@ class _Member(QuasiStaticBearing):
         self._qmax = self._ws[WS_QMAX:WS_QMAX + 3]
         self._t_last = 0.0
         self.restarts, self._samples, self._next_sample, self._evaluations = 0, [], 0.0, 0
-        self._pending, self._pending_t, self._pending_next = None, 0.0, 0.0
         self._setup()
 
 
@@ -118,7 +117,6 @@ class PairBearing(LevelBearing):
         self._t_last = self._t_start = -math.inf
         self.restarts = 0
         self._samples = []
-        self._pending, self._pending_t, self._pending_next = None, 0.0, 0.0
         self._next_sample = 0.0
         self._evaluations = 0
         self._add_items(mbs, show)
