@@ -143,32 +143,32 @@ CLAIMS = [
     ("at the tolerance\n  1e-4 the motion moves by 0.022 % (test shaft) and 0.16 % (20 um\n  clearance)",
      "relative tolerance 0.0001: x 1 nm (0.15 % of the step halving's), y 4.2 nm (0.16 %), 2.16 evaluations per step",
      "python validation/performance/bench_levels.py --repeat 3"),
-    ("3.19 calls into Python per step instead\n  of 7.26, 0.306 instead of 0.551 s of wall time per simulated second,\n"
-     "  which is 1.33 instead of 2.40 times one 6208 in the reference engine at\n  8 us (0.229 s in the same process)",
-     "connector 0.551 2.40 7.26 3.63 2.62 1 55.1 7.60", "python validation/performance/bench_qs_rotor.py --repeat 7"),
-    ("3.19 calls into Python per step instead\n  of 7.26, 0.306 instead of 0.551 s of wall time per simulated second,\n"
-     "  which is 1.33 instead of 2.40 times one 6208 in the reference engine at\n  8 us (0.229 s in the same process)",
-     "node 0.306 1.33 3.19 2.19 1.19 2000 30.6 9.58", "python validation/performance/bench_qs_rotor.py --repeat 7"),
-    ("3.19 calls into Python per step instead\n  of 7.26, 0.306 instead of 0.551 s of wall time per simulated second,\n"
-     "  which is 1.33 instead of 2.40 times one 6208 in the reference engine at\n  8 us (0.229 s in the same process)",
-     "T = 0.2 s: 0.229 s wall per simulated s (median of 7", "python validation/performance/bench_qs_rotor.py --repeat 7"),
-    ("of the step's 33.9 us (a run with the calls timed from inside)\n  21.1 us are spent in the level's calls, mostly "
-     "the balls' equilibrium,\n  and 12.8 us in Exudyn (28.3 us with the connectors)",
-     "node 33.9 us per step: 21.1 us in the level's calls (compiled kernels and their Python), 12.8 us in Exudyn",
+    ("3.19 calls into Python per step instead\n  of 7.26, 0.301 instead of 0.777 s of wall time per simulated second,\n"
+     "  which is 1.19 instead of 3.07 times one 6208 in the reference engine at\n  8 us (0.253 s in the same process)",
+     "connector 0.777 3.07 7.26 3.63 2.62 1 77.7 10.71", "python validation/performance/bench_qs_rotor.py --repeat 7"),
+    ("3.19 calls into Python per step instead\n  of 7.26, 0.301 instead of 0.777 s of wall time per simulated second,\n"
+     "  which is 1.19 instead of 3.07 times one 6208 in the reference engine at\n  8 us (0.253 s in the same process)",
+     "node 0.301 1.19 3.19 2.19 1.19 2000 30.1 9.41", "python validation/performance/bench_qs_rotor.py --repeat 7"),
+    ("3.19 calls into Python per step instead\n  of 7.26, 0.301 instead of 0.777 s of wall time per simulated second,\n"
+     "  which is 1.19 instead of 3.07 times one 6208 in the reference engine at\n  8 us (0.253 s in the same process)",
+     "T = 0.2 s: 0.253 s wall per simulated s (median of 7", "python validation/performance/bench_qs_rotor.py --repeat 7"),
+    ("of the step's 30.5 us (a run with the calls timed from inside)\n  19.6 us are spent in the level's calls, mostly "
+     "the balls' equilibrium,\n  and 10.9 us in Exudyn (26.8 us with the connectors)",
+     "node 30.5 us per step: 19.6 us in the level's calls (compiled kernels and their Python), 10.9 us in Exudyn",
      "python validation/performance/bench_qs_rotor.py --repeat 7"),
-    ("of the step's 33.9 us (a run with the calls timed from inside)\n  21.1 us are spent in the level's calls, mostly "
-     "the balls' equilibrium,\n  and 12.8 us in Exudyn (28.3 us with the connectors)",
-     "connector 60.0 us per step: 31.7 us in the level's calls (compiled kernels and their Python), 28.3 us in Exudyn",
+    ("of the step's 30.5 us (a run with the calls timed from inside)\n  19.6 us are spent in the level's calls, mostly "
+     "the balls' equilibrium,\n  and 10.9 us in Exudyn (26.8 us with the connectors)",
+     "connector 61.9 us per step: 35.1 us in the level's calls (compiled kernels and their Python), 26.8 us in Exudyn",
      "python validation/performance/bench_qs_rotor.py --repeat 7"),
-    ("calls timed from inside splits the step:\n  21.1 of 33.9 us in the level's calls, 12.8 us in Exudyn",
-     "node 33.9 us per step: 21.1 us in the level's calls (compiled kernels and their Python), 12.8 us in Exudyn",
+    ("calls timed from inside splits the step:\n  19.6 of 30.5 us in the level's calls, 10.9 us in Exudyn",
+     "node 30.5 us per step: 19.6 us in the level's calls (compiled kernels and their Python), 10.9 us in Exudyn",
      "python validation/performance/bench_qs_rotor.py --repeat 7"),
-    ("against 31.7 and 28.3 us\n  with the connectors",
-     "connector 60.0 us per step: 31.7 us in the level's calls (compiled kernels and their Python), 28.3 us in Exudyn",
+    ("against 35.1 and 26.8 us\n  with the connectors",
+     "connector 61.9 us per step: 35.1 us in the level's calls (compiled kernels and their Python), 26.8 us in Exudyn",
      "python validation/performance/bench_qs_rotor.py --repeat 7"),
-    ("a call\n  for both bearings takes 9.58 us per call", "node 0.306 1.33 3.19 2.19 1.19 2000 30.6 9.58",
+    ("a call\n  for both bearings takes 9.41 us per call", "node 0.301 1.19 3.19 2.19 1.19 2000 30.1 9.41",
      "python validation/performance/bench_qs_rotor.py --repeat 7"),
-    ("a call for both\n  bearings takes 9.58 us with Exudyn's step shared out", "node 0.306 1.33 3.19 2.19 1.19 2000 30.6 9.58",
+    ("a call for both\n  bearings takes 9.41 us with Exudyn's step shared out", "node 0.301 1.19 3.19 2.19 1.19 2000 30.1 9.41",
      "python validation/performance/bench_qs_rotor.py --repeat 7"),
     ("Exudyn's call of a user function that only returns\n  zeros costs 2.4 us; the connector's user function takes 3.2 us (2.3 us\n  of it the compiled call)",
      "a user function returning zeros adds 2.4 us per call (Exudyn's Python boundary) the level's user function "
@@ -178,11 +178,11 @@ CLAIMS = [
      "node formulation: the object's force call 3.6 us (kernel included), its Jacobian call 0.5 us",
      "python validation/performance/bench_levels.py --repeat 3"),
     # the quasi-static level's cost (docs/theory/levels.md, "Cost")
-    ("| connector | 0.551 | 2.40 | 7.26 | 3.63 | 2.62 | 55.1 | 7.60 |", "connector 0.551 2.40 7.26 3.63 2.62 1 55.1 7.60",
+    ("| connector | 0.777 | 3.07 | 7.26 | 3.63 | 2.62 | 77.7 | 10.71 |", "connector 0.777 3.07 7.26 3.63 2.62 1 77.7 10.71",
      "python validation/performance/bench_qs_rotor.py --repeat 7"),
-    ("| node | 0.306 | 1.33 | 3.19 | 2.19 | 1.19 | 30.6 | 9.58 |", "node 0.306 1.33 3.19 2.19 1.19 2000 30.6 9.58",
+    ("| node | 0.301 | 1.19 | 3.19 | 2.19 | 1.19 | 30.1 | 9.41 |", "node 0.301 1.19 3.19 2.19 1.19 2000 30.1 9.41",
      "python validation/performance/bench_qs_rotor.py --repeat 7"),
-    ("The two runs end 0.023 nm apart in x (of 24.7 um)", "node 0.306 1.33 3.19 2.19 1.19 2000 30.6 9.58 24.70213 -0.023",
+    ("The two runs end 0.023 nm apart in x (of 24.7 um)", "node 0.301 1.19 3.19 2.19 1.19 2000 30.1 9.41 24.70213 -0.023",
      "python validation/performance/bench_qs_rotor.py --repeat 7"),
     ("3.2 us\n  for the connector's user function, 2.3 us of it the compiled call for\n  the nine balls (35.7 us",
      "(connector formulation) 3.2 us per call at its operating pose, of which _evaluate 2.7 us and the compiled kernel "
