@@ -95,7 +95,7 @@ class BalanceLog:
         return worst
 
     def balance(self, *args):
-        """The balance (``_balance_sampled``'s arguments; before issue 37's centres' inertia it took neither
+        """The balance (``_balance_sampled``'s arguments; before the balance carried the centres' inertia it took neither
         ``qref`` nor ``inertia``, so that the study runs on that code too), logged."""
         with_inertia = len(args) == 41
         qref, inertia = (args[-5], args[-4]) if with_inertia else (None, 0.0)
