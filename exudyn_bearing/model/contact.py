@@ -250,7 +250,8 @@ def _normal_law(p, delta, kappa, ell_f, ell_e, rr):
 def _hertz_energy(f_el, delta):
     """Elastic energy [J] stored in a Hertz contact of overlap ``delta`` [m] carrying the elastic force
     ``f_el`` = K delta^1.5 [N]: the integral of K d^1.5 over d from 0 to delta, K delta^2.5 / 2.5 =
-    0.4 f_el delta (Johnson, Contact Mechanics, 1985, sec. 4.2; docs/theory/dynamics.md, "Losses and the energy balance")."""
+    0.4 f_el delta (Johnson, Contact Mechanics, 1985, sec. 4.2; docs/theory/dynamics.md, "Losses and the
+    energy balance")."""
     return 0.4 * f_el * delta
 
 

@@ -95,8 +95,8 @@ class BalanceLog:
         return worst
 
     def balance(self, *args):
-        """The balance (``_balance_sampled``'s arguments; before the balance carried the centres' inertia it took neither
-        ``qref`` nor ``inertia``, so that the study runs on that code too), logged."""
+        """The balance (``_balance_sampled``'s arguments; before the balance carried the centres' inertia it took
+        neither ``qref`` nor ``inertia``, so that the study runs on that code too), logged."""
         with_inertia = len(args) == 41
         qref, inertia = (args[-5], args[-4]) if with_inertia else (None, 0.0)
         self._current = dict(t=args[0], qref=None if qref is None else qref.copy(), inertia=inertia, evaluations=[])
