@@ -147,13 +147,16 @@ def test_lightly_loaded_caged_balls_balance_converges():
     # Their centres' balance without the centres' inertia asked for tens of micrometres per step along the soft
     # direction (rolling along the grooves) under a pocket force: its Newton iteration stopped at the iteration
     # limit, and from this start the first step ran away (an overlap above 5 % of the ball radius). With the
-    # inertia (docs/theory/reduced.md, "A lightly loaded ball") every balance converges and the pockets are met
+    # inertia (docs/theory/reduced.md, "A lightly loaded ball") the run goes through and the pockets are met. A
+    # pocket's onset can still leave a balance in a 2-cycle a few nm wide, which round-off decides (the 0.1 s run
+    # of validation/consistency/reduced_engine.py has 23 of 5000 such steps, none in these 20 ms on the machine the
+    # test was written on): at most 1 % of the steps, not none, so that another CPU passes too
     sc = eb.Scenario(Fr=3000.0, Fa=3000.0, omega=500.0, cage="rigid", traction_level="ellipse", sample_dt=1e-3,
                      t_end=0.02, dt=2e-5)
     res = eb.simulate("7208", sc, engine="reduced")
     work = res.record.reduced_stats
     assert res.steps == 1000
-    assert work["unconverged_steps"] == 0
+    assert work["unconverged_steps"] <= 10
     assert work["pocket_corrections"] > 0  # pocket contacts closed and opened within steps
     assert np.all(np.isfinite(res.data["xb"]))
 
