@@ -445,18 +445,18 @@ class Results:
         t = self.t[w]
         dur = float(t[-1] - t[0])
 
-        def loss(work, power):
+        def loss(work, power=None):
             """The window's mean of a loss [W]: its engine work, end minus start over the window length, when
             recorded (every step counted); else the time mean of its sampled power (None: neither)."""
             if self.has_global(work) and dur > 0.0:
                 g = self.global_series(work)
                 return float(g[w.stop - 1] - g[w.start]) / dur
-            return float(np.mean(self.global_series(power)[w])) if self.has_global(power) else None
+            return float(np.mean(self.global_series(power)[w])) if power and self.has_global(power) else None
 
         diag = self.data["diag"][w]
         comp = {}
-        for race, tag in ((0, "inner"), (1, "outer")):
-            exact = loss(f"traction_work_{tag}", "")
+        for race, tag in ((0, "inner"), (1, "outer")):  # without the works: the samples' per-contact powers
+            exact = loss(f"traction_work_{tag}")
             comp[f"contact_traction_{tag}"] = (exact if exact is not None else
                                                float(np.mean(np.sum(diag[:, :, race, L.D_POWER], axis=1))))
         comp["contact_damping"] = loss("damping_work", "damping_power")
