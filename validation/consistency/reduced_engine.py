@@ -98,8 +98,8 @@ RUNUP_TOL = 0.02
 RUNUP_FROM = 0.005
 #: The first step of the runs under the step error control [s].
 ADAPTIVE_FIRST_DT = 2e-5
-KEYS = ("q_psi0_inner", "q_psi0_outer", "q_max_inner", "q_max_outer", "alpha_inner", "alpha_outer", "cage_speed", "dissipation", "drive_power",
-        "energy_residual")
+KEYS = ("q_psi0_inner", "q_psi0_outer", "q_max_inner", "q_max_outer", "alpha_inner", "alpha_outer", "cage_speed",
+        "dissipation", "drive_power", "energy_residual")
 
 
 def run(bearing, fields, t_end, engine, dt, tolerance=None):
@@ -114,7 +114,8 @@ def quasistatic_equilibrium(bearing, fields):
     """The quasi-static traction equilibrium of a case (control 'equilibrium', the inner ring's tilt held, the
     traction model, lubricant and ring growth of the dynamic engines:
     :func:`exudyn_bearing.simulate.quasistatic_start`),
-    as the summary's keys: Q_max (steady: q_psi0_* and q_max_* alike), contact angles [deg] and orbital speed of ball 0 (every ball alike under
+    as the summary's keys: Q_max (steady: q_psi0_* and q_max_* alike), contact angles [deg] and orbital speed of
+    ball 0 (every ball alike under
     thrust), the bearing's dissipation."""
     sc = eb.Scenario(**{**COMMON, **fields, "initial": "quasistatic", "control": "equilibrium"}, t_end=1e-3, dt=1e-5)
     sol = quasistatic_start(bearing, sc)["static"]
