@@ -110,10 +110,7 @@ class _Ball:
         out = self.out
         p = km._ball_contacts(wm, wr, wz, vt, geo, self.code, self.vec, self.ns, self.na, out)
         rb = geo[km.G_RB]
-        m_r = m_z = 0.0
-        for k, (nr, nz) in enumerate(((geo[km.G_NOR], geo[km.G_NOZ]), (geo[km.G_NIR], geo[km.G_NIZ]))):
-            m_r += -out[k, 6] * rb * nz - out[k, 8] * nr + out[k, 11] * nz
-            m_z += out[k, 6] * rb * nr - out[k, 8] * nz - out[k, 11] * nr
+        m_r, m_z = km.in_plane_moments(out, geo)
         m_r += self.j * wm * vt / rb
         m_psi = rb * (out[0, 7] + out[1, 7]) - self.j * wm * wr
         return np.array([out[0, 6] + out[1, 6], m_r / rb, m_z / rb, m_psi / rb]), p
@@ -177,8 +174,11 @@ def _newton(ball, y, y0, geo, dt, held, scale):
 
 
 def _march(sol, ball, omega_c, clearance, state, steps_per_pitch, revolutions, tables):
-    """March one ball at the cage speed ``omega_c`` for up to ``revolutions`` until periodic; returns the
-    last revolution's means and profiles and the state at its end."""
+    """March one ball at the cage speed ``omega_c`` from ``state`` (y, s) for up to ``revolutions`` until
+    periodic; returns the last revolution's profile (per step: y, s, Q_p, the contacts' dissipation, the
+    pocket friction's power, the drive power, the friction's moment about the axis, held), the state at its
+    end, the revolutions taken, the last change of the revolution's means, the unconverged steps and whether
+    it is periodic."""
     geo_tab, psi_tab = tables
     n = psi_tab.size
     direction = 1.0 if omega_c >= 0.0 else -1.0
@@ -189,7 +189,7 @@ def _march(sol, ball, omega_c, clearance, state, steps_per_pitch, revolutions, t
     wi, wo = sol.omega, sol.omega_outer
     change = math.nan
     for rev in range(revolutions):
-        prof = np.zeros((n, 12))
+        prof = np.zeros((n, 11))
         fails = 0
         s_start = s
         for i in range(n):
@@ -214,7 +214,7 @@ def _march(sol, ball, omega_c, clearance, state, steps_per_pitch, revolutions, t
             friction = float(_ls.cage_pocket_friction_power(q_p, w, 2.0 * geo[km.G_RB], ball.mu_c))
             wz_unit = yn[2] / w if w > 0.0 else 0.0
             prof[i] = (yn[0], yn[1], yn[2], yn[3], s_new, q_p, p, friction, t_i * wi + t_o * wo,
-                       ball.mu_c * abs(q_p) * geo[km.G_RB] * wz_unit, held, 0.0)
+                       ball.mu_c * abs(q_p) * geo[km.G_RB] * wz_unit, held)
             y, s = yn, s_new
         means = prof.mean(axis=0)
         drift = s - s_start
