@@ -91,10 +91,10 @@ def test_the_march_converges_with_its_step(light):
 
 
 @pytest.mark.parametrize("kw, name", [({"steps_per_pitch": 2}, "steps_per_pitch"),
-                                      ({"cage": None}, "sol")])
+                                      ({"cage": None}, "sol"), ({"pocket_film": True}, "sol: .*pocket oil film")])
 def test_bad_march_input(kw, name):
     s = solve_quasistatic("6208", 3000.0, omega=500.0, control="outer", cage=kw.pop("cage", "rigid"),
-                          inertia_check=False, **QUICK)
+                          pocket_film=kw.pop("pocket_film", False), inertia_check=False, **QUICK)
     with pytest.raises(InputError, match=name):
         march_orbit(s, **kw)
 

@@ -273,6 +273,9 @@ def march_orbit(sol, bearing=None, *, steps_per_pitch=ORBIT_STEPS_PER_PITCH, rev
 
     if sol.cage is None or sol.cage.get("rigid_cage") is None:
         raise InputError("sol: the orbit march needs a quasi-static solution with the rigid cage (cage='rigid')")
+    if sol.cage.get("pocket_film"):
+        raise InputError("sol: solved with the pocket oil film, which the orbit march does not model (its ball "
+                         "meets a dry pocket wall); march a solution without it (pocket_film=False)")
     if sol.omega == sol.omega_outer:
         raise InputError("sol: the orbit march needs relative speed of the rings (omega != omega_outer)")
     steps_per_pitch = int(steps_per_pitch)
