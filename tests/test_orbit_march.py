@@ -26,6 +26,12 @@ def light():
                                  inertia_check=False, **QUICK)
 
 
+@pytest.fixture(scope="module")
+def marched(light):
+    """The orbit march on ``light`` at 40 steps per ball pitch."""
+    return march_orbit(light, steps_per_pitch=40)
+
+
 def test_orbit_geometry_is_the_balls_equilibrium_under_the_ring_pose():
     """At the solution's own azimuths the rows are its rows; half a pitch on, the loads are those of the same
     ring pose solved with the balls there (phase) within 0.5 % where loaded (the centrifugal and transverse
@@ -62,13 +68,13 @@ def test_the_march_is_the_quasistatic_solution_where_every_ball_is_alike():
     assert abs(m["energy_residual"]) < 1e-5 and abs(m["torque_residual"]) < 1e-5
 
 
-def test_the_march_follows_the_transient_the_quasistatic_solution_leaves_out(light):
+def test_the_march_follows_the_transient_the_quasistatic_solution_leaves_out(light, marched):
     """The lightly loaded balls' spin lags along the unloaded half and enters the load zone sliding: the march's
     contacts dissipate more than twice the quasi-static solution's; its whole dissipation is within the cage
     issue's 5 % of the reference engine's (98.66 W, contacts 78.31 W: docs/theory/quasistatic.md, `python
     validation/consistency/quasistatic_cage.py`) and its cage speed within 0.5 % of the engine's 211.39 rad/s;
     the cage's torque balances and the energy closes."""
-    m = march_orbit(light, steps_per_pitch=40)
+    m = marched
     assert m["periodic"] and m["unconverged_steps"] == 0
     assert m["dissipation_contacts"] > 2.0 * light.dissipation_total
     assert m["dissipation"] == pytest.approx(98.66, rel=0.05)
@@ -82,10 +88,10 @@ def test_the_march_follows_the_transient_the_quasistatic_solution_leaves_out(lig
     assert 0.05 < m["pocket_contact_fraction"] < 0.95
 
 
-def test_the_march_converges_with_its_step(light):
+def test_the_march_converges_with_its_step(light, marched):
     """Halving the step halves the steps' loss (implicit Euler: first order) and moves the losses by less than
     2 % (from 20 to 40 steps per pitch; docs/theory/quasistatic.md#the-orbit-march gives the sequence)."""
-    coarse, fine = (march_orbit(light, steps_per_pitch=n) for n in (20, 40))
+    coarse, fine = march_orbit(light, steps_per_pitch=20), marched
     assert 1.5 < coarse["step_loss"] / fine["step_loss"] < 2.5
     assert fine["dissipation"] == pytest.approx(coarse["dissipation"], rel=0.02)
 
