@@ -6,6 +6,8 @@ import math
 import warnings
 from pathlib import Path
 
+import numpy as np
+
 
 from ..data import InputError
 from ..data.errors import check_unused
@@ -14,6 +16,7 @@ from ..outputs.plotting_quasistatic import plot_loads_angles, plot_slip
 from ..physics.hertz import METHODS
 from ..solvers.quasistatic import solve_quasistatic
 from ..solvers.quasistatic.kinematics import CONTROLS
+from ..solvers.quasistatic.orbit import ORBIT_STEPS_PER_PITCH, march_orbit, march_summary
 from .common import (CONTROL_HELP, add_strip_arguments, add_bearing_argument, add_hold_arguments, add_lubricant_argument, add_load_arguments,
                      add_ring_growth_argument, add_traction_argument, bearing_from_args, explained, finite_float,
                      fixed_from_args, format_value, lubricant_from_args, omega_from_args, solver_header,
@@ -46,6 +49,11 @@ def add_parser(sub):
                    help="the oil film between each ball and its rigid-cage pocket (its shear and hydrodynamic "
                         "pressure, as simulate --pocket-film; docs/theory/quasistatic.md#the-pocket-film); needs "
                         "--cage rigid")
+    p.add_argument("--orbit-march", nargs="?", type=int, const=ORBIT_STEPS_PER_PITCH, metavar="STEPS_PER_PITCH",
+                   help="follow one ball along its orbit with its inertia through the solution's contact loads "
+                        "(march_orbit: the balls' transient that the quasi-static hypothesis leaves out, with the "
+                        f"cage's torque balance; docs/theory/quasistatic.md#the-orbit-march); implicit steps per "
+                        f"ball pitch, default {ORBIT_STEPS_PER_PITCH}; needs --cage rigid")
     add_traction_argument(p)
     add_lubricant_argument(p, "lubricant for the films: ")
     add_ring_growth_argument(p)
@@ -86,7 +94,12 @@ def run(args):
                                              ("--oil-inlet-temperature", args.oil_inlet_temperature, None),
                                              ("--ambient-temperature", args.ambient_temperature, None)),
                  "add --thermal")
+    if args.orbit_march is not None and args.cage != "rigid":
+        raise InputError("--orbit-march: the march follows a ball in its rigid-cage pocket; add --cage rigid")
     if args.thermal:
+        if args.orbit_march is not None:
+            raise InputError("--orbit-march: not with --thermal (the march follows the quasi-static solution at "
+                             "given temperatures; give them with --temperature)")
         return run_thermal(args, b, omega, traction)
     lub = lubricant_from_args(args, b)
     with explained(b):
@@ -101,6 +114,11 @@ def run(args):
     d = s.to_dict(rating)
     d["ring_growth"] = args.ring_growth
     d["tilt"] = args.tilt
+    march = None
+    if args.orbit_march is not None:
+        march = march_orbit(s, b, steps_per_pitch=args.orbit_march, lubricant=lub)
+        d["orbit_march"] = {k: v for k, v in march.items() if k != "profile"}
+        d["orbit_march"]["profile"] = {k: np.asarray(v).tolist() for k, v in march["profile"].items()}
     if args.plot:
         png = plot_loads_angles({b.name: s}, args.plot)
         d["plot"] = str(png)
@@ -116,6 +134,8 @@ def run(args):
     if d["power_loss"] is not None:  # solvers/quasistatic/losses.py
         print(loss_line(d, s) + "; not modelled: seals and more (--json not_modelled)")
     print_ball_table(s.balls)
+    if march is not None:
+        print(march_summary(march))
     print("\n".join(rating.summary()))
     if args.plot:
         print(f"plot: {d['plot']}")

@@ -9,6 +9,9 @@ The 7208 under F_r = F_a = 3000 N at 500 rad/s, the estimated outer-land-guided 
   control="equilibrium", cage_damping="implicit")`` at each step of ``--dt`` for ``--t-end``, summaries
   over the default window (the last part of the run, named in the output).
 
+and the orbit march on the caged quasi-static solution (``march_orbit``: one ball followed along its orbit
+with its inertia, docs/theory/quasistatic.md#the-orbit-march).
+
 Printed side by side: the dissipation (the quasi-static traction + pocket + land; the DEM's ``dissipation``,
 which also holds the contacts' normal damping), the cage speed, the cage losses by kind, the pocket and land
 forces, Q_max. The target: the two dissipations within 5 %.
@@ -37,6 +40,7 @@ import numpy as np
 import exudyn_bearing as eb
 from exudyn_bearing.solvers.quasistatic import solve_quasistatic
 from exudyn_bearing.solvers.quasistatic.losses import power_losses
+from exudyn_bearing.solvers.quasistatic.orbit import march_orbit
 
 ROOT = Path(__file__).resolve().parents[2]
 CASE = {"Fr": 3000.0, "Fa": 3000.0, "omega": 500.0}
@@ -46,7 +50,23 @@ FILM_CASE = {"Fr": 3000.0, "Fa": 0.0, "omega": 500.0}
 BINS = np.linspace(-180.0, 180.0, 13)
 
 
-def quasistatic(cage, case=CASE, bearing="7208", pocket_film=False):
+def orbit_march(s):
+    """The orbit march on the caged solution ``s`` (docs/theory/quasistatic.md#the-orbit-march), in the keys of
+    :func:`quasistatic`."""
+    t0 = time.perf_counter()
+    m = march_orbit(s)
+    return {"wall_s": time.perf_counter() - t0, "dissipation": m["dissipation"],
+            "dissipation_contacts": m["dissipation_contacts"], "cage_power_pocket": m["power_pocket"],
+            "cage_power_land": m["power_land"], "cage_speed": m["cage_speed"], "land_force": m["land_force"],
+            "pocket_force_max": float(np.max(np.abs(m["profile"]["pocket_force"]))),
+            "pocket_force_mean": float(np.mean(np.abs(m["profile"]["pocket_force"]))),
+            "q_max_inner": float(np.max(m["profile"]["q_inner"])), "q_max_outer": float(np.max(m["profile"]["q_outer"])),
+            "energy_residual": m["energy_residual"], "drive_power": m["drive_power"],
+            "pocket_contact_fraction": m["pocket_contact_fraction"], "steps_per_revolution": m["steps_per_revolution"],
+            "revolutions": m["revolutions"]}
+
+
+def quasistatic(cage, case=CASE, bearing="7208", pocket_film=False, march=False):
     t0 = time.perf_counter()
     s = solve_quasistatic(bearing, case["Fr"], case["Fa"], omega=case["omega"], control="equilibrium", cage=cage,
                           fixed={"tilt_x": 0.0, "tilt_y": 0.0}, stiffness=False, pocket_film=pocket_film)
@@ -67,7 +87,8 @@ def quasistatic(cage, case=CASE, bearing="7208", pocket_film=False):
             "q_max_inner": s.q_max_inner, "q_max_outer": s.q_max_outer, "energy_residual": s.energy_residual,
             "torque_residual": c.get("torque_residual"),
             # the solver's own check of the balls' inertia along the orbit (solvers/quasistatic/inertia.py)
-            "inertia_power": (s.inertia_check or {}).get("power"), "inertia_share": (s.inertia_check or {}).get("share")}
+            "inertia_power": (s.inertia_check or {}).get("power"), "inertia_share": (s.inertia_check or {}).get("share"),
+            "orbit_march": orbit_march(s) if march else None}
 
 
 def dem(dt, t_end, case=CASE, bearing="7208", pocket_film=False):
@@ -149,24 +170,30 @@ def main(argv=None):
     if args.pocket_film:
         return film_comparison(args.dt[0], args.t_end, out)
     report = {"case": CASE, "t_end_s": args.t_end, "quasistatic_cageless": quasistatic(None),
-              "quasistatic_rigid": quasistatic("rigid")}
+              "quasistatic_rigid": quasistatic("rigid", march=True)}
+    report["orbit_march"] = report["quasistatic_rigid"]["orbit_march"]
     for dt in args.dt:
         report[f"dem_rigid_{dt:g}"] = dem(dt, args.t_end)
         print(f"DEM at dt = {dt:g} s done ({report[f'dem_rigid_{dt:g}']['wall_s']:.0f} s wall)", flush=True)
-    cols = ["quasistatic_cageless", "quasistatic_rigid"] + [f"dem_rigid_{dt:g}" for dt in args.dt]
+    cols = ["quasistatic_cageless", "quasistatic_rigid", "orbit_march"] + [f"dem_rigid_{dt:g}" for dt in args.dt]
     rows = ("dissipation", "dissipation_contacts", "cage_power_pocket", "cage_power_land", "cage_speed", "pocket_force_max",
             "pocket_force_mean", "q_max_inner", "q_max_outer", "energy_residual")
     print(f"7208, F_r = F_a = 3000 N, 500 rad/s, estimated outer-land brass cage; DEM {args.t_end} s, window "
-          + ", ".join(f"{report[c]['window.t0']:.3g}-{report[c]['window.t1']:.3g} s" for c in cols[2:]))
+          + ", ".join(f"{report[c]['window.t0']:.3g}-{report[c]['window.t1']:.3g} s" for c in cols[3:])
+          + f"; orbit march {report['orbit_march']['steps_per_revolution']} steps per revolution, last of "
+            f"{report['orbit_march']['revolutions']}")
     print(f"{'':20s}" + "".join(f"{c:>22s}" for c in cols))
     for r in rows:
         print(f"{r:20s}" + "".join(f"{report[c].get(r) if report[c].get(r) is not None else float('nan'):22.5g}"
                                    for c in cols))
     q = report["quasistatic_rigid"]["dissipation"]
-    for c in cols[2:]:
+    qm = report["orbit_march"]["dissipation"]
+    for c in cols[3:]:
         d = report[c]["dissipation"]
         report[c]["quasistatic_over_dem_minus_1"] = q / d - 1.0
-        print(f"quasistatic (rigid cage) / {c} - 1 in the dissipation: {100 * (q / d - 1.0):+.2f} % (target 5 %)")
+        report[c]["orbit_march_over_dem_minus_1"] = qm / d - 1.0
+        print(f"quasistatic (rigid cage) / {c} - 1 in the dissipation: {100 * (q / d - 1.0):+.2f} %, orbit march "
+              f"{100 * (qm / d - 1.0):+.2f} % (target 5 %)")
     last = cols[-1]
     print(f"per azimuth, {last} (mean per contact over the window) and the quasi-static rigid-cage balls:")
     for race in ("inner", "outer"):
@@ -182,14 +209,18 @@ def main(argv=None):
     report["cases"] = []
     for fr, fa in args.case or []:
         case = {"Fr": fr, "Fa": fa, "omega": CASE["omega"]}
-        q, d = quasistatic("rigid", case), dem(args.dt[0], args.t_end, case)
+        q, d = quasistatic("rigid", case, march=True), dem(args.dt[0], args.t_end, case)
         report["cases"].append({"case": case, "quasistatic_rigid": q, "dem": d})
+        m = q["orbit_march"]
         print(f"F_r {fr:g} N, F_a {fa:g} N: dissipation QS {q['dissipation']:.2f} / DEM {d['dissipation']:.2f} W "
               f"({100 * (q['dissipation'] / d['dissipation'] - 1):+.1f} %); contacts {q['dissipation_contacts']:.2f} / "
               f"{d['dissipation_contacts']:.2f}, pocket {q['cage_power_pocket']:.2f} / {d['cage_power_pocket']:.2f}, "
               f"land {q['cage_power_land']:.2f} / {d['cage_power_land']:.2f} W; cage {q['cage_speed']:.3f} / "
               f"{d['cage_speed']:.3f} rad/s; QS ball-inertia check {q['inertia_power']:.3g} W "
-              f"({100 * q['inertia_share']:.3g} % of its dissipation)", flush=True)
+              f"({100 * q['inertia_share']:.3g} % of its dissipation); orbit march: dissipation {m['dissipation']:.2f} W "
+              f"({100 * (m['dissipation'] / d['dissipation'] - 1):+.1f} %), contacts {m['dissipation_contacts']:.2f}, "
+              f"pocket {m['cage_power_pocket']:.2f}, land {m['cage_power_land']:.2f} W, cage {m['cage_speed']:.3f} "
+              f"rad/s, energy residual {m['energy_residual']:.2g}", flush=True)
     (out / "quasistatic_cage.json").write_text(json.dumps(report, indent=2, default=float))
     print(f"wrote {out / 'quasistatic_cage.json'}")
 

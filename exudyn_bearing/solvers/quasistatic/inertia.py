@@ -98,6 +98,7 @@ def check_ball_inertia(sol, bearing, tolerance=INERTIA_TOLERANCE, warn=True) -> 
             f"rolling losses of its power loss; the largest step from ball {ball} at "
             f"psi = {math.degrees(float(sol.balls['psi'][ball])):.1f} deg), more than {100 * tolerance:g} %: "
             "the balls' inertia matters (lightly loaded balls entering and leaving the load zone), which the "
-            "quasi-static solution leaves out; its losses may be low. Run the case dynamically "
-            "(exudyn_bearing.simulate, or the command line's simulate)"), stacklevel=3)
+            "quasi-static solution leaves out; its losses may be low. March the balls along the orbit with their "
+            "inertia (with the rigid cage: exudyn_bearing.solvers.quasistatic.orbit.march_orbit, or quasistatic "
+            "--orbit-march) or run the case dynamically (exudyn_bearing.simulate, or the command line's simulate)"), stacklevel=3)
     return out

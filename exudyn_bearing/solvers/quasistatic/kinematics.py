@@ -66,7 +66,7 @@ from ...physics.contact_slip import _contact_traction, pure_rolling_points, spin
 
 __all__ = ["CONTROLS", "GEO_FIELDS", "CONTACT_FIELDS", "race_control", "jones_outer_controls", "ball_contacts",
            "minimum_energy", "traction_equilibrium", "dissipation_at_beta", "spin_axis_angle", "rolling_points",
-           "axial_torque_on_ball", "cage_kinematics"]
+           "axial_torque_on_ball", "cage_kinematics", "in_plane_moments"]
 
 #: Kinematic hypotheses.
 CONTROLS = ("outer", "inner", "auto", "min-energy", "equilibrium")
@@ -247,6 +247,19 @@ def minimum_energy(geo, model, n_strips, n_across, start, omega_m=None):
     return kin(res.x), check
 
 
+def in_plane_moments(contacts, geo):
+    """Moment (M_r, M_z) [N m] about the ball's centre, in its (r, z) plane, of both contacts' tractions
+    (``contacts`` the rows of :func:`ball_contacts`, ``geo`` the ball's packed geometry): each contact's
+    rolling-direction force F_x at its lever R_b n_k, its spin moment M_z,k about the normal and its curvature
+    moment M_y,k about t_k = (n_z, -n_r) (the in-plane moments (ii) of :func:`traction_equilibrium`)."""
+    rb = geo[G_RB]
+    m_r = m_z = 0.0
+    for k, (nr, nz) in enumerate(((geo[G_NOR], geo[G_NOZ]), (geo[G_NIR], geo[G_NIZ]))):
+        m_r += -contacts[k, 6] * rb * nz - contacts[k, 8] * nr + contacts[k, 11] * nz
+        m_z += contacts[k, 6] * rb * nr - contacts[k, 8] * nz - contacts[k, 11] * nr
+    return m_r, m_z
+
+
 def traction_equilibrium(geo, model, n_strips, n_across, start, inertia, omega_m=None, pocket_friction=0.0,
                          pocket_film=None):
     """Kinematics at which the traction of both contacts holds the ball in a
@@ -290,7 +303,6 @@ def traction_equilibrium(geo, model, n_strips, n_across, start, inertia, omega_m
     out = np.zeros((2, NC))
     code, vec = model.code, model.vector
     qref = max(geo[G_QO], geo[G_QI], 1e-12)
-    normals = ((geo[G_NOR], geo[G_NOZ]), (geo[G_NIR], geo[G_NIZ]))
     held = [True]
 
     j_eff = [inertia]
@@ -327,11 +339,7 @@ def traction_equilibrium(geo, model, n_strips, n_across, start, inertia, omega_m
         v_t = pivot(wm, wr, wz)
         _ball_contacts(wm, wr, wz, v_t, geo, code, vec, n_strips, n_across, out)
         f_x = out[0, 6] + out[1, 6]
-        m_r = m_z = 0.0
-        for k in range(2):
-            nr, nz = normals[k]
-            m_r += -out[k, 6] * rb * nz - out[k, 8] * nr + out[k, 11] * nz
-            m_z += out[k, 6] * rb * nr - out[k, 8] * nz - out[k, 11] * nr
+        m_r, m_z = in_plane_moments(out, geo)
         m_r += j_eff[0] * wm * v_t / rb          # = -(-J omega_m w_psi), w_psi = v_t / R_b
         contact = abs(f_x)
         if pocket_film is not None:  # the film's moment; the friction on the contact force it leaves

@@ -117,6 +117,9 @@ class QuasiStaticSolution:
     resolution_check: dict | None = None  #: check of the traction integration (solve.check_traction_resolution)
     cage: dict | None = None  #: the rigid cage's speed, losses, land (solve._cage_result); None: no cage
     inertia_check: dict | None = None  #: can the balls follow the kinematics along the orbit (inertia.check_ball_inertia)
+    #: psi -> packed contact geometry rows (kinematics.GEO_FIELDS) of a ball at the azimuths psi [rad] under the
+    #: solution's ring pose (solve._geometry_at; the orbit march's, orbit.py); None where not solved
+    geometry_at: object = field(default=None, repr=False, compare=False)
 
     # convenient totals -------------------------------------------------------------
     @property
@@ -292,7 +295,8 @@ class QuasiStaticSolution:
                          f"cage losses ({c['dissipation']:.4g} W, the contacts' traction and the cage; the power "
                          f"loss adds the rolling losses; limit {100 * c['tolerance']:g} %): "
                          + ("holds" if c["valid"] else
-                            "OUTSIDE it (the balls' inertia matters; run the case dynamically)"))
+                            "OUTSIDE it (the balls' inertia matters; march the orbit, --orbit-march with the "
+                            "rigid cage, or run the case dynamically)"))
         for name, why in self.held.items():
             lines.append(f"{name} held ({why}); reaction {self.reactions.get(name, 0.0):.6g} "
                          f"{'N m' if name.startswith('tilt') else 'N'}")

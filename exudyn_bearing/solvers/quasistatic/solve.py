@@ -58,7 +58,7 @@ from ...physics.load_distribution import check_axial_load
 from ...physics.losses import LOSS_FLOOR_MU
 from ...physics.short_bearing import short_bearing_load_number, short_bearing_shear_torque
 from . import kinematics as km
-from .balls import B_CR, B_CZ, B_DI, B_DO, B_NIR, B_NIZ, B_NOR, B_NOZ, B_QI, B_QO
+from .balls import B_CR, B_CZ, B_DI, B_DO, B_NIR, B_NIZ, B_NOR, B_NOZ, B_QI, B_QO, ring_forces
 from ...model.load_range import MAX_CONTACT_PRESSURE, check_load_estimate, check_pressures, pressure_excess
 from ...model.operating_geometry import operating_geometry
 from ...model.scenario import cage_model as _cage_model
@@ -552,6 +552,9 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
         minimum_checks=[c for c in checks] if control in ("min-energy", "equilibrium") else [], iterations=it_total,
         n_strips=n_strips, n_across=n_across, wall_s=time.perf_counter() - t0,
         contact_geometry=geo, kinematics=kin, traction_model=model, cage=cage_out)
+    if moving and geo is not None:
+        sol.geometry_at = _geometry_at(psi, u, geom, mass, kin, prob.fto, prob.fti, e_prime, method, rd_o, rd_i,
+                                       lub, u_min, w_i, w_o)
     if resolution_check:
         sol.resolution_check = check_traction_resolution(sol)
     if inertia_check:
@@ -698,6 +701,31 @@ def _geo_vector(w_o, w_i, ball, geom, rd_o, rd_i, cs, j, kin, lub, e_prime, u_mi
 
 
 _DUMMY = get_traction_model("coulomb_0.1")
+
+
+def _geometry_at(psi_b, u, geom, mass, kin, fto, fti, e_prime, method, rd_o, rd_i, lub, u_min, w_i, w_o):
+    """The function psi -> contact geometry rows (len(psi), len(GEO_FIELDS)) of balls at the azimuths psi [rad]
+    under the ring pose ``u``: each ball's own equilibrium between the rings (:func:`.balls.ring_forces`) with
+    the centrifugal force and the tractions' transverse forces of the solution's balls (``kin``, ``fto``,
+    ``fti`` at their azimuths ``psi_b``, linear between them), the Hertz ellipses and films as the solution's
+    (:func:`_contact_state`, :func:`_geo_vector`). At ``psi_b`` it gives the solution's rows."""
+    z = psi_b.size
+    tab = np.column_stack([kin, fto, fti])
+    psi0 = float(psi_b[0])
+
+    def at(psi):
+        psi = np.atleast_1d(np.asarray(psi, float))
+        x = np.mod(psi - psi0, 2.0 * math.pi) * z / (2.0 * math.pi)
+        i = np.floor(x).astype(int) % z
+        f = (x - np.floor(x))[:, None]
+        row = (1.0 - f) * tab[i] + f * tab[(i + 1) % z]
+        k = row[:, :4]
+        _gen, balls = ring_forces(u, psi, geom, mass * k[:, 0] ** 2, row[:, 4].copy(), row[:, 5].copy(), e_prime,
+                                  method)
+        cs = _contact_state(geom, balls, e_prime, method)
+        return np.array([_geo_vector(w_o, w_i, balls[j], geom, rd_o, rd_i, cs, j, k[j], lub, e_prime, u_min)
+                         for j in range(psi.size)])
+    return at
 
 
 def _axial_play(geom):
