@@ -419,3 +419,20 @@ def test_a_rigid_cage_scene_starts_from_the_caged_quasistatic_solution():
     uneven = dataclasses.replace(estimated_cage(b), pocket_spacing_error=1e-5)
     fallback = quasistatic_start(b, eb.Scenario(cage="rigid", rigid_cage=uneven, **common))
     assert fallback["static"].cage is None and "unequally spaced" in fallback["cage_start"]
+
+
+@pytest.mark.parametrize("guidance, omega_outer", [("inner_land", 0.0), ("outer_land", -100.0)])
+def test_energy_closes_where_the_land_turns(guidance, omega_outer):
+    """A land on a turning ring (inner-land guidance, or the outer ring turning under an outer-land cage): the
+    ring's drive supplies the land torque T_land times its speed (the film puts -T_land on the ring), and in the
+    traction equilibrium drive power = contacts + pockets + land (the sign of that share: -3.6 of the drive power
+    off with the outer ring at -100 rad/s). The orbit march counts it the same way."""
+    from exudyn_bearing.solvers.quasistatic.orbit import march_orbit
+    cage = estimated_cage(B, guidance=guidance)
+    sol = solve_quasistatic(B, 2000.0, 500.0, omega=300.0, omega_outer=omega_outer, control="equilibrium",
+                            cage="rigid", rigid_cage=cage, inertia_check=False, **QUICK)
+    ring = sol.omega if guidance == "inner_land" else sol.omega_outer
+    assert sol.cage["ring_speed"] == ring and abs(sol.cage["land_torque"] * ring) > 0.1 * sol.cage_power
+    assert abs(sol.energy_residual) < 1e-8
+    m = march_orbit(sol, steps_per_pitch=20)
+    assert abs(m["energy_residual"]) < 0.01

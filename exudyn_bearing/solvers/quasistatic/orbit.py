@@ -351,7 +351,7 @@ def march_orbit(sol, bearing=None, *, steps_per_pitch=ORBIT_STEPS_PER_PITCH, rev
             f"{r['revs']} revolutions (change of the revolution's mean powers {r['change']:.2g} of the drive "
             f"power, limit {PERIODIC_TOLERANCE:g}) and {r['fails']} of its steps did not converge: its means are "
             "not a steady state's; raise revolutions or steps_per_pitch"), stacklevel=2)
-    drive = z * float(np.mean(prof[:, 8])) - r["t_land"] * w_ring
+    drive = z * float(np.mean(prof[:, 8])) + r["t_land"] * w_ring  # the land's share: QuasiStaticSolution.drive_power
     contacts = z * float(np.mean(prof[:, 6]))
     pocket = z * float(np.mean(prof[:, 7]))
     land = -r["t_land"] * (wc - w_ring)

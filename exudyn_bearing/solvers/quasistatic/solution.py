@@ -28,7 +28,8 @@ UNITS = {
     "traction_drive_torque": "N m (axial torque of the inner contacts' tractions on the balls; the traction "
                              "dissipation over omega only in the traction equilibrium: a kinematic hypothesis "
                              "leaves a net traction on the balls, energy_residual)",
-    "drive_power": "W (traction_drive_torque omega + outer-ring torque omega_outer)",
+    "drive_power": "W (traction_drive_torque omega + outer-ring torque omega_outer; with the rigid cage + the land "
+                   "film's torque on the cage times its guiding ring's speed)",
     "energy_residual": "- ((drive_power - dissipation_total) / drive_power; 0 in the traction equilibrium and "
                        "without relative speed of the rings)",
     "drive_torque_inner_ball": "N m (axial torque of the inner contact's traction on the ball)",
@@ -153,11 +154,14 @@ class QuasiStaticSolution:
     @property
     def drive_power(self) -> float:
         """Power the turning rings put into the bearing [W]: friction_torque omega + outer torque omega_outer,
-        and with the rigid cage the land film's torque on its guiding ring times that ring's speed."""
+        and with the rigid cage the power that holds the guiding ring's speed against the land film: the film
+        puts -T_land on the ring (T_land, ``cage["land_torque"]``, the film's torque on the cage), so the ring's
+        drive supplies T_land times the ring's speed (the film dissipates -T_land (omega_c - omega_ring), the
+        cage's share -T_land omega_c coming through the pockets)."""
         p = (self.friction_torque * self.omega
              + float(np.sum(self.balls["drive_torque_outer_ball"])) * self.omega_outer)
         if self.cage is not None:
-            p -= self.cage["land_torque"] * self.cage["ring_speed"]
+            p += self.cage["land_torque"] * self.cage["ring_speed"]
         return p
 
     @property
