@@ -111,14 +111,17 @@ def test_the_march_needs_relative_speed():
         march_orbit(s)
 
 
-def test_cli_orbit_march(capsys):
-    """``quasistatic --orbit-march`` prints the march's line and puts it in the JSON; without the rigid cage the
-    option is refused by name."""
+def test_cli_orbit_march(capsys, tmp_path):
+    """``quasistatic --orbit-march`` prints the march's line, plots its ball along the orbit with ``--plot``
+    (PNG and CSV) and puts it in the JSON; without the rigid cage the option is refused by name."""
     args = ["quasistatic", "7208", "--Fa", "3000", "--omega", "500", "--control", "equilibrium", "--cage", "rigid",
             "--orbit-march", "8"]
-    assert main(args) == 0
+    assert main(args + ["--plot", str(tmp_path / "q.png")]) == 0
     out = capsys.readouterr().out
     assert "orbit march" in out and "cage speed" in out
+    assert (tmp_path / "q_orbit.png").stat().st_size > 0
+    header = (tmp_path / "q_orbit.csv").read_text().splitlines()[0]
+    assert "march_pocket_force_N" in header
     main(args + ["--json"])
     d = json.loads(capsys.readouterr().out)
     assert d["orbit_march"]["steps_per_revolution"] == 8 * 13

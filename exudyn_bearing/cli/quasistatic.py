@@ -12,7 +12,7 @@ import numpy as np
 from ..data import InputError
 from ..data.errors import check_unused
 from ..outputs.jsonio import to_jsonable
-from ..outputs.plotting_quasistatic import plot_loads_angles, plot_slip
+from ..outputs.plotting_quasistatic import plot_loads_angles, plot_orbit_march, plot_slip
 from ..physics.hertz import METHODS
 from ..solvers.quasistatic import solve_quasistatic
 from ..solvers.quasistatic.kinematics import CONTROLS
@@ -124,6 +124,11 @@ def run(args):
         d["plot"] = str(png)
         if s.contact_geometry is not None:
             d["plot_slip"] = str(plot_slip({b.name: s}, Path(args.plot).with_name(Path(args.plot).stem + "_slip.png")))
+        if march is not None:
+            d["plot_orbit_march"] = str(plot_orbit_march(
+                march, Path(args.plot).with_name(Path(args.plot).stem + "_orbit.png"),
+                {"quasi-static solution": (np.degrees(s.balls["psi"]),
+                                           s.balls["dissipation_inner_ball"] + s.balls["dissipation_outer_ball"])}))
     if args.json:
         for k in ("slip_inner", "slip_outer"):
             d[k] = d[k].tolist()
@@ -138,7 +143,7 @@ def run(args):
         print(march_summary(march))
     print("\n".join(rating.summary()))
     if args.plot:
-        print(f"plot: {d['plot']}")
+        print(f"plot: {d['plot']}" + (f", {d['plot_orbit_march']}" if "plot_orbit_march" in d else ""))
 
 
 def rating_of(args, b, s, lubricant, temperature, temps=None):

@@ -7,7 +7,7 @@ import numpy as np
 
 from .plotting import _pyplot, label_azimuth_axes, save_figure
 
-__all__ = ["plot_loads_angles", "plot_slip", "plot_dissipation_beta"]
+__all__ = ["plot_loads_angles", "plot_slip", "plot_dissipation_beta", "plot_orbit_march"]
 
 
 def _azimuth_deg(psi):
@@ -88,3 +88,31 @@ def plot_dissipation_beta(beta_deg, dissipation, points: dict, png, title="") ->
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7)
     return save_figure(fig, png, {"beta_deg": beta_deg, "dissipation_W": dissipation})
+
+
+def plot_orbit_march(march: dict, png, points: dict | None = None) -> Path:
+    """The orbit march's ball along its last revolution (:func:`~exudyn_bearing.solvers.quasistatic.orbit.
+    march_orbit`): left its contacts' dissipation per ball [W] against azimuth, with ``points`` (label ->
+    (azimuths [deg], dissipation per ball [W]): the quasi-static solution's balls, another engine's azimuth
+    bins); right its pocket force [N] and its place in the pocket's play."""
+    fig, ax, png = _two_panels(png)
+    p = march["profile"]
+    az, order = _azimuth_deg(p["psi"])
+    ax[0].plot(az[order], np.asarray(p["dissipation"])[order], "-", color="C0", label="orbit march")
+    cols = {"psi_deg": az[order], "march_dissipation_W": np.asarray(p["dissipation"])[order],
+            "march_pocket_force_N": np.asarray(p["pocket_force"])[order],
+            "march_pocket_offset_um": 1e6 * np.asarray(p["pocket_offset"])[order],
+            "march_orbital_speed_rad_s": np.asarray(p["omega_m"])[order]}
+    for i, (label, (deg, values)) in enumerate((points or {}).items()):
+        d = (np.asarray(deg, float) + 180.0) % 360.0 - 180.0
+        o = np.argsort(d)
+        ax[0].plot(d[o], np.asarray(values, float)[o], "os"[i % 2] + "--", color=f"C{i + 1}", ms=4, label=label)
+    ax[1].plot(az[order], np.asarray(p["pocket_force"])[order], "-", color="C0",
+               label="pocket force [N] (+: pushes the ball forward)")
+    ax[1].plot(az[order], 1e4 * np.asarray(p["pocket_offset"])[order], "--", color="C3",
+               label="place in the play [100 um] (+: ahead of the pocket's centre)")
+    label_azimuth_axes(ax, ("contacts' dissipation per ball [W]", "pocket force [N], place in the play [100 um]"),
+                       legend_fontsize=7)
+    ax[0].set_title(f"cage speed {march['cage_speed']:.5g} rad/s, dissipation {march['dissipation']:.4g} W "
+                    "(the march's last revolution)", fontsize=8)
+    return save_figure(fig, png, cols, trim=True)

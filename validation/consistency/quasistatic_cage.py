@@ -40,6 +40,7 @@ import numpy as np
 import exudyn_bearing as eb
 from exudyn_bearing.solvers.quasistatic import solve_quasistatic
 from exudyn_bearing.solvers.quasistatic.losses import power_losses
+from exudyn_bearing.outputs.plotting_quasistatic import plot_orbit_march
 from exudyn_bearing.solvers.quasistatic.orbit import march_orbit
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -55,7 +56,7 @@ def orbit_march(s):
     :func:`quasistatic`."""
     t0 = time.perf_counter()
     m = march_orbit(s)
-    return {"wall_s": time.perf_counter() - t0, "dissipation": m["dissipation"],
+    return {"march": m, "wall_s": time.perf_counter() - t0, "dissipation": m["dissipation"],
             "dissipation_contacts": m["dissipation_contacts"], "cage_power_pocket": m["power_pocket"],
             "cage_power_land": m["power_land"], "cage_speed": m["cage_speed"], "land_force": m["land_force"],
             "pocket_force_max": float(np.max(np.abs(m["profile"]["pocket_force"]))),
@@ -221,6 +222,17 @@ def main(argv=None):
               f"({100 * (m['dissipation'] / d['dissipation'] - 1):+.1f} %), contacts {m['dissipation_contacts']:.2f}, "
               f"pocket {m['cage_power_pocket']:.2f}, land {m['cage_power_land']:.2f} W, cage {m['cage_speed']:.3f} "
               f"rad/s, energy residual {m['energy_residual']:.2g}", flush=True)
+    # the marched ball's dissipation along its orbit against the DEM's per azimuth (inner + outer contact: per ball)
+    a = report[last]["by_azimuth"]
+    march = report["orbit_march"].pop("march")
+    qs = report["quasistatic_rigid"]["by_ball"]
+    png = plot_orbit_march(march, out / "quasistatic_cage_orbit.png", {
+        "quasi-static solution": (qs["inner"]["psi"], np.add(qs["inner"]["dissipation"], qs["outer"]["dissipation"])),
+        f"DEM ({last}, window mean per 30 deg)": (0.5 * (BINS[:-1] + BINS[1:]),
+                                                  np.add(a["inner"]["dissipation"], a["outer"]["dissipation"]))})
+    print(f"wrote {png} (and its CSV)")
+    for c in report["cases"]:
+        c["quasistatic_rigid"]["orbit_march"].pop("march")
     (out / "quasistatic_cage.json").write_text(json.dumps(report, indent=2, default=float))
     print(f"wrote {out / 'quasistatic_cage.json'}")
 
