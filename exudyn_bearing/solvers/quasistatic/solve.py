@@ -56,7 +56,7 @@ from ...physics.contact_slip import (DEFAULT_N_ACROSS, DEFAULT_N_STRIPS, MAX_N_A
 from ...physics.geometry import _raceway_radii_cos
 from ...physics.load_distribution import check_axial_load
 from ...physics.losses import LOSS_FLOOR_MU
-from ...physics.short_bearing import short_bearing_load_number, short_bearing_shear_torque
+from ...physics.short_bearing import short_bearing_force_xy, short_bearing_load_number, short_bearing_shear_torque
 from . import kinematics as km
 from .balls import B_CR, B_CZ, B_DI, B_DO, B_NIR, B_NIZ, B_NOR, B_NOZ, B_QI, B_QO
 from ...model.load_range import MAX_CONTACT_PRESSURE, check_load_estimate, check_pressures, pressure_excess
@@ -837,7 +837,8 @@ CAGE_SPEED_TOLERANCE = 1e-13
 
 class CageLandWarning(UserWarning):
     """The rigid cage's land film cannot carry the net pocket force within the crush eccentricity: the land
-    touches (the reference engine's rigid cage models that contact; the quasi-static solution does not)."""
+    touches (the reference engine's rigid cage models that contact; the quasi-static solution does not); or the
+    cage's displacement on the land and the pocket play it shifts did not converge (:func:`_land_feedback`)."""
 
 
 def _check_cage(cage, rigid_cage, control, b):
@@ -893,13 +894,141 @@ def _land_state(rc, lub, omega_c, omega_ring, force):
     return eps, torque, crushed
 
 
+def _land_displacement(rc, lub, omega_c, omega_ring, fx, fy):
+    """The cage centre's steady displacement (e_x, e_y) [m] from its guiding land's centre at which the land
+    film carries the net in-plane pocket force (``fx``, ``fy``) [N] on the cage, with :func:`_land_state`'s
+    (eps, torque, crushed): eps = |e| / c from Ocvirk's load number (:func:`_land_state`), and the direction
+    from the film's force at that eps and zero rates,
+    :func:`~exudyn_bearing.physics.short_bearing.short_bearing_force_xy` (the reference engine's land force,
+    surfaces at ``omega_c`` + ``omega_ring``): e is turned so that this force is -(fx, fy), i.e. e lies at the
+    short bearing's attitude angle phi, tan phi = pi sqrt(1 - eps^2) / (4 eps) (Ocvirk; Hamrock et al., ch.
+    10), from the pocket force, ahead in the sense of omega_c + omega_ring. Crushed (eps at the crush
+    eccentricity): the film's direction there. With no film force (no speed) e is along (fx, fy)."""
+    eps, torque, crushed = _land_state(rc, lub, omega_c, omega_ring, math.hypot(fx, fy))
+    if eps == 0.0:
+        return 0.0, 0.0, eps, torque, crushed
+    c = rc.land_clearance
+    lx, ly = (float(v) for v in short_bearing_force_xy(eps * c, 0.0, 0.0, 0.0, omega_c + omega_ring,
+                                                        lub.viscosity, rc.guide_radius, rc.land_width, c))
+    turn = math.atan2(fy, fx) if lx == 0.0 and ly == 0.0 else math.atan2(-fy, -fx) - math.atan2(ly, lx)
+    return eps * c * math.cos(turn), eps * c * math.sin(turn), eps, torque, crushed
+
+
+#: Tolerance of the cage's displacement on its land (:func:`_land_feedback`): the residual |G(F(e)) - e| of
+#: its balance below this share of the land clearance.
+LAND_FEEDBACK_TOLERANCE = 1e-10
+#: Pseudo-transient steps of :func:`_land_feedback` before its fallback.
+LAND_FEEDBACK_STEPS = 60
+#: Iterations of the damped fixed point that is :func:`_land_feedback`'s fallback.
+LAND_FEEDBACK_ITERATIONS = 400
+
+
+def _relax(land, v, r, limit, c, best, tol):
+    """Pseudo-transient continuation of v' = R(v) for :func:`_land_feedback` (its ``land``: G of e [m]; v = e /
+    c, r = R(v) / c), LAND_FEEDBACK_STEPS steps at most, until ``best`` (the best residual, kept by ``land``)
+    meets ``tol``."""
+    dt = 1.0
+    for _ in range(LAND_FEEDBACK_STEPS):
+        h = 1e-7
+        jac = np.empty((2, 2))
+        for k in range(2):
+            w = v.copy()
+            w[k] += h
+            gk = land(w[0] * c, w[1] * c)
+            jac[:, k] = ((np.array(gk[:2]) / c - w) - r) / h
+        try:
+            w = v + np.linalg.solve(np.eye(2) / dt - jac, r)
+        except np.linalg.LinAlgError:
+            return
+        size = float(np.hypot(*w))
+        if size > limit:
+            w *= limit / size
+        gw = land(w[0] * c, w[1] * c)
+        if best[0] <= tol:
+            return
+        rw = np.array(gw[:2]) / c - w
+        norm, new = float(np.hypot(*r)), float(np.hypot(*rw))
+        if new > 2.0 * norm:
+            dt *= 0.25
+            continue
+        dt = min(dt * norm / max(new, 1e-300), 1e12)
+        v, r = w, rw
+
+
+def _land_feedback(rc, lub, omega_c, omega_ring, net_force, start=(0.0, 0.0)):
+    """The cage's displacement e on its land balanced with the net pocket force it causes
+    (docs/theory/quasistatic.md#the-cages-displacement): the root of R(e) = G(F(e)) - e, F = ``net_force(e)``
+    the net in-plane pocket force [N] (the pocket play with the pockets displaced by e . e_psi), G the land's
+    displacement that carries it (:func:`_land_displacement`). R is continuous and G stays inside the crush
+    circle, so a root exists there (Brouwer), but the fixed point e <- G(F(e)) is no contraction (its Jacobian's
+    eigenvalues reach -100 or more: a few um of displacement change the fractions by tens of %), and Newton's
+    method stalls in local minima of |R| (the fractions' kinks): pseudo-transient continuation of the cage's
+    overdamped relaxation de/dt = R(e) (implicit Euler steps whose step grows as |R| falls, ending in Newton's;
+    Kelley & Keyes 1998) from ``start`` [m] (the root at a nearby cage speed), then from e = 0, the state
+    without the feedback, each for LAND_FEEDBACK_STEPS; failing both, the
+    damped fixed point e <- e + a R(e), a halved from 1 whenever |R| grows (to at least 2^-12), for
+    LAND_FEEDBACK_ITERATIONS. Converged: |R| below LAND_FEEDBACK_TOLERANCE
+    times the land clearance c. A zero net force at e = 0 (a pure axial load) gives e = 0 at once. Returns
+    (ex, ey, eps, torque, crushed, dict with converged, evaluations, residual [m]); eps, torque and crushed are
+    the land's carrying F(e) (:func:`_land_displacement`)."""
+    c = rc.land_clearance
+    tol = LAND_FEEDBACK_TOLERANCE * c
+    count = [0]
+    best = [math.inf, 0.0, 0.0, None]
+
+    def land(x, y):
+        count[0] += 1
+        g = _land_displacement(rc, lub, omega_c, omega_ring, *net_force(x, y))
+        res = math.hypot(g[0] - x, g[1] - y)
+        if res < best[0]:
+            best[:] = [res, x, y, g]
+        return g
+
+    def done():
+        res, x, y, g = best
+        return x, y, *g[2:], {"converged": res <= tol, "evaluations": count[0], "residual": res}
+
+    g0 = land(0.0, 0.0)
+    if best[0] <= tol:
+        return done()
+    # pseudo-transient continuation of the relaxation v' = R(v) / c, v = e / c (Kelley & Keyes, SIAM J. Numer.
+    # Anal. 35 (1998) 508-523): implicit Euler steps (I / dt - J) dv = R / c, J by forward differences (step
+    # 1e-7), dt from 1 grown by |R| falling (switched evolution relaxation) up to Newton's steps; a step that
+    # more than doubles |R| is retaken at dt / 4; kept inside the crush circle
+    limit = max(0.5, 1.0 - lub.composite_roughness / c)
+    for first in dict.fromkeys(((start[0] / c, start[1] / c), (0.0, 0.0))):
+        if first == (0.0, 0.0):
+            v, r = np.zeros(2), np.array([g0[0], g0[1]]) / c
+        else:
+            v = np.array(first)
+            gv = land(v[0] * c, v[1] * c)
+            if best[0] <= tol:
+                return done()
+            r = np.array(gv[:2]) / c - v
+        _relax(land, v, r, limit, c, best, tol)
+        if best[0] <= tol:
+            return done()
+    ex = ey = 0.0
+    g, a, last = g0, 1.0, math.inf
+    for _ in range(LAND_FEEDBACK_ITERATIONS):
+        res = math.hypot(g[0] - ex, g[1] - ey)
+        if res <= tol:
+            break
+        if res > last:
+            a = max(0.5 * a, 2.0 ** -12)
+        last = res
+        ex, ey = ex + a * (g[0] - ex), ey + a * (g[1] - ey)
+        g = land(ex, ey)
+    return done()
+
+
 def _alike(geo, j):
     """The first ball before ``j`` whose contact geometry equals ball j's (rtol 1e-12: balls alike by symmetry,
     solved once), else None."""
     return next((i for i in range(j) if np.allclose(geo[i], geo[j], rtol=1e-12, atol=0.0)), None)
 
 
-def pocket_contact_fraction(u, psi, omega_c, radius, clearance, substeps=64):
+def pocket_contact_fraction(u, psi, omega_c, radius, clearance, substeps=64, offset=None):
     """Share of the time each ball rests on a pocket wall, the balls moving freely inside their pockets' play
     (docs/theory/quasistatic.md#pocket-play).
 
@@ -913,7 +1042,12 @@ def pocket_contact_fraction(u, psi, omega_c, radius, clearance, substeps=64):
     revolution of the free path S(t), the ball rests on the front wall (D > 0; the back wall for D < 0) where S
     reaches its largest (smallest) value of the revolution, so one revolution from there is periodic; with no
     net drift it floats when S spans less than the play 2 ``clearance``. Returns the fraction in [0, 1] per
-    ball: the time on a wall within half a spacing either side of its azimuth."""
+    ball: the time on a wall within half a spacing either side of its azimuth.
+
+    ``offset`` [m] (None: none): the pocket centre's displacement along e_psi (the +psi tangent) at each
+    ball's azimuth, a displaced cage's e . e_psi(psi) (docs/theory/quasistatic.md#the-cages-displacement). The
+    ball's position relative to its pocket is then S(t) minus that offset at its azimuth at time t (sampled
+    as ``u``, linear between the azimuths); the offset is periodic, so the net drift D is unchanged."""
     u = np.asarray(u, float)
     z = u.size
     direction = 1.0 if omega_c >= 0.0 else -1.0
@@ -926,14 +1060,18 @@ def pocket_contact_fraction(u, psi, omega_c, radius, clearance, substeps=64):
     r = ((1.0 - x)[None, :] * rate[:, None] + x[None, :] * np.roll(rate, -1)[:, None]).ravel()
     dt = np.repeat(gaps / max(abs(omega_c), 1e-300) / substeps, substeps)
     owner = np.where(x[None, :] < 0.5, np.arange(z)[:, None], (np.arange(z)[:, None] + 1) % z).ravel()
-    path = np.cumsum(r * dt)                              # the free path S over one revolution
+    step = r * dt
+    if offset is not None:                                # the pocket's own motion along the travel, subtracted
+        o = direction * np.asarray(offset, float)[order]
+        step = step - np.repeat((np.roll(o, -1) - o) / substeps, substeps)
+    path = np.cumsum(step)                                # the free path S over one revolution
     on = np.zeros(r.size)
     if abs(path[-1]) > 1e-12 * clearance or np.ptp(np.append(path, 0.0)) > 2.0 * clearance:
         side = 1.0 if path[-1] >= 0.0 else -1.0
         start = int(np.argmax(path) if side > 0.0 else np.argmin(path)) + 1
         s = side * clearance
         for m in np.roll(np.arange(r.size), -start):
-            ds = r[m] * dt[m]
+            ds = step[m]
             wall = clearance if ds > 0.0 else -clearance
             if ds != 0.0 and abs(s + ds) >= clearance:      # on the wall from where it reaches it
                 on[m] = dt[m] * (1.0 - (wall - s) / ds)
@@ -980,7 +1118,7 @@ def _free_balls(geo, loaded, races, stage, kin, model, n_strips, n_across, inert
 
 
 def _caged_balls(omega_c, geo, loaded, races, stage, kin, rc, model, n_strips, n_across, inertia, lub, w_i, w_o,
-                 psi, free=None, film=None):
+                 psi, free=None, film=None, land_hint=None):
     """Every ball at the cage speed ``omega_c`` (docs/theory/quasistatic.md#the-rigid-cage): its kinematics
     (race control at the cage speed by ``races[j]``, the traction equilibrium of its moments with the pocket
     force and its friction, or, without an inner load, rolling on the outer race), its pocket force
@@ -1023,38 +1161,50 @@ def _caged_balls(omega_c, geo, loaded, races, stage, kin, rc, model, n_strips, n
     # pocket play: a ball with an orbit of its own (free[j]) rests on a pocket wall only the fraction f of the
     # time (pocket_contact_fraction); the cage feels the time mean f Q_p of its force
     q_held = q_p.copy()
-    f = np.ones(z)
-    if free is not None:
-        has = np.isfinite(free[:, 0])
-        if has.any():
-            u = np.where(has, free[:, 0] - omega_c, 0.0)
-            f = np.where(has, pocket_contact_fraction(u, psi, omega_c, float(np.mean(geo[:, km.G_CR])),
-                                                      rc.pocket_clearance), 1.0)
-        q_p = f * q_held
     cr = geo[:, km.G_CR]
     rb = geo[:, km.G_RB]
     w = np.hypot(new[:, 1], new[:, 2])
     wz_unit = np.divide(new[:, 2], w, out=np.zeros(z), where=w > 0.0)
     wr_unit = np.divide(new[:, 1], w, out=np.zeros(z), where=w > 0.0)
-    t_normal = -q_p * cr
-    q_contact = q_p                                    # the part of the pocket force the wall's contact carries
-    film_out = None
-    if film is not None:
-        q_contact, film_out = _pocket_film_state(film, new, q_held, f, omega_c, free)
-    t_friction = mu_c * np.abs(q_contact) * rb * wz_unit
-    # the net in-plane force of the pockets on the cage: -Q_p e_psi and the friction's radial part
-    s = -np.sign(q_p)                                  # side of the ball the wall touches, along e_psi
-    f_r = -mu_c * np.abs(q_contact) * s * wz_unit      # radial friction on the cage
-    t_film = 0.0
-    if film_out is not None:  # the film's shear: its moment about the axis and its radial force, reversed
-        f_r = f_r - film_out["f_r"]
-        t_film = -film_out["m_z"]
-    fx = float(np.sum(q_p * np.sin(psi) + f_r * np.cos(psi)))
-    fy = float(np.sum(-q_p * np.cos(psi) + f_r * np.sin(psi)))
-    eps, t_land, crushed, w_ring = 0.0, 0.0, False, 0.0
+    has = np.zeros(z, bool) if free is None else np.isfinite(free[:, 0])
+    u = np.where(has, free[:, 0] - omega_c, 0.0) if has.any() else None
+
+    def pockets(ex, ey):
+        """The pockets' state with the cage displaced by (ex, ey) [m] on its land: the fractions, the weighted
+        pocket forces, the contact's part, the film's state, the radial force on the cage and the net force."""
+        f = np.ones(z)
+        if u is not None:
+            offset = None if ex == 0.0 and ey == 0.0 else -ex * np.sin(psi) + ey * np.cos(psi)  # e . e_psi
+            f = np.where(has, pocket_contact_fraction(u, psi, omega_c, float(np.mean(cr)), rc.pocket_clearance,
+                                                      offset=offset), 1.0)
+        q_p = f * q_held
+        q_contact = q_p                                    # the part of the pocket force the wall's contact carries
+        film_out = None
+        if film is not None:
+            q_contact, film_out = _pocket_film_state(film, new, q_held, f, omega_c, free)
+        # the net in-plane force of the pockets on the cage: -Q_p e_psi and the friction's radial part
+        s = -np.sign(q_p)                                  # side of the ball the wall touches, along e_psi
+        f_r = -mu_c * np.abs(q_contact) * s * wz_unit      # radial friction on the cage
+        if film_out is not None:  # the film's shear: its radial force, reversed
+            f_r = f_r - film_out["f_r"]
+        fx = float(np.sum(q_p * np.sin(psi) + f_r * np.cos(psi)))
+        fy = float(np.sum(-q_p * np.cos(psi) + f_r * np.sin(psi)))
+        return f, q_p, q_contact, film_out, fx, fy
+
+    eps, t_land, crushed, w_ring, ex, ey, feedback = 0.0, 0.0, False, 0.0, 0.0, 0.0, None
     if rc.guidance != "ball":
+        # the land carries the net pocket force at the cage's displacement e, which moves the pockets (the play)
         w_ring = w_o if rc.guidance == "outer_land" else w_i
-        eps, t_land, crushed = _land_state(rc, lub, omega_c, w_ring, math.hypot(fx, fy))
+        hint = {} if land_hint is None else land_hint   # the last cage speed's displacement: the start
+        ex, ey, eps, t_land, crushed, feedback = _land_feedback(rc, lub, omega_c, w_ring,
+                                                                lambda x, y: pockets(x, y)[4:],
+                                                                hint.get("e", (0.0, 0.0)))
+        if feedback["converged"]:
+            hint["e"] = (ex, ey)
+    f, q_p, q_contact, film_out, fx, fy = pockets(ex, ey)
+    t_normal = -q_p * cr
+    t_friction = mu_c * np.abs(q_contact) * rb * wz_unit
+    t_film = 0.0 if film_out is None else -film_out["m_z"]  # the film's moment about the axis, reversed
     torque = float(np.sum(t_normal) + np.sum(t_friction) + t_land)
     scale = float(np.sum(np.abs(t_normal)) + np.sum(np.abs(t_friction)) + abs(t_land))
     friction_power = np.atleast_1d(_ls.cage_pocket_friction_power(q_contact, w, 2.0 * rb, mu_c))
@@ -1070,7 +1220,8 @@ def _caged_balls(omega_c, geo, loaded, races, stage, kin, rc, model, n_strips, n
                  "pocket_film_gap": None if film_out is None else film_out["gap"],
                  "land_torque": t_land,
                  "land_power": -t_land * (omega_c - w_ring), "land_eccentricity": eps, "land_crushed": crushed,
-                 "land_force": math.hypot(fx, fy), "ring_speed": w_ring, "torque": torque,
+                 "land_force": math.hypot(fx, fy), "land_displacement": (ex, ey), "land_feedback": feedback,
+                 "ring_speed": w_ring, "torque": torque,
                  "torque_scale": scale, "checks": checks, "controls": used,
                  "wr_unit": wr_unit, "pocket_contact_fraction": f, "pocket_force_held": q_held,
                  "free_kinematics": None if free is None else np.where(np.isfinite(free), free, new)}
@@ -1102,12 +1253,12 @@ def _solve_cage(geo, loaded, races, stage, kin, rc, model, n_strips, n_across, i
     """The cage speed that balances the cage's torque (:func:`_caged_balls`; brentq on a bracket widened from
     the balls' present orbital speeds: the torque falls with the cage speed) and the balls at it; ``film``
     the pocket film (a PocketFilm) or None."""
-    last = {}
+    last, hint = {}, {}
     free = _free_balls(geo, loaded, races, stage, kin, model, n_strips, n_across, inertia, film)
 
     def torque(wc):
         k, info = _caged_balls(wc, geo, loaded, races, stage, last.get("kin", kin), rc, model, n_strips, n_across,
-                               inertia, lub, w_i, w_o, psi, free, film)
+                               inertia, lub, w_i, w_o, psi, free, film, hint)
         last["kin"], last["info"], last["wc"] = k, info, wc
         return info["torque"]
 
@@ -1169,6 +1320,13 @@ def _cage_result(rc, info, out, moving, w_i, film=None):
     if film is not None:
         gap = info.get("pocket_film_gap")
         out["pocket_film_gap"] = np.full(z, film.clearance) if gap is None else np.asarray(gap, float).copy()
+    feedback = info.get("land_feedback")
+    if feedback is not None and not feedback["converged"]:
+        warnings.warn(CageLandWarning(
+            f"rigid_cage: the cage's displacement on its land and the pocket play it shifts did not converge in "
+            f"{feedback['evaluations']} evaluations (residual {feedback['residual']:.3e} m, tolerance "
+            f"{LAND_FEEDBACK_TOLERANCE:g} of the land clearance {rc.land_clearance:.3e} m): the land force and "
+            "eccentricity are the last iterate's"), stacklevel=3)
     if info["land_crushed"]:
         warnings.warn(CageLandWarning(
             f"rigid_cage: the land film cannot carry the net pocket force {info['land_force']:.4g} N within the "
@@ -1182,4 +1340,7 @@ def _cage_result(rc, info, out, moving, w_i, film=None):
             "power_land": float(info["land_power"]), "land_torque": float(info["land_torque"]),
             "land_force": float(info["land_force"]), "land_eccentricity": float(info["land_eccentricity"]),
             "land_crushed": bool(info["land_crushed"]), "torque_residual": float(info["torque_residual"]),
+            "land_displacement": tuple(float(v) for v in info.get("land_displacement", (0.0, 0.0))),
+            "land_feedback_converged": bool(feedback is None or feedback["converged"]),
+            "land_feedback_evaluations": 0 if feedback is None else int(feedback["evaluations"]),
             "ring_speed": float(info.get("ring_speed", w_i)), "rigid_cage": rc}
