@@ -44,6 +44,7 @@ from scipy import optimize as _opt
 
 from ...data import (MAX_FREE_CONTACT_ANGLE, BallBearing, InputError, Lubricant, get_traction_model, load_bearing,
                      load_lubricant)
+from ..._jit import kernel
 from ...data.cages import RigidCage, estimated_cage
 from ...data.errors import check_bool, check_finite, check_nonnegative, check_temperatures
 from ...physics import ehl
@@ -961,7 +962,8 @@ def _land_feedback(rc, lub, omega_c, omega_ring, net_force, start=(0.0, 0.0)):
     the net in-plane pocket force [N] (the pocket play with the pockets displaced by e . e_psi), G the land's
     displacement that carries it (:func:`_land_displacement`). R is continuous and G stays inside the crush
     circle, so a root exists there (Brouwer), but the fixed point e <- G(F(e)) is no contraction (its Jacobian's
-    eigenvalues reach -100 or more: a few um of displacement change the fractions by tens of %), and Newton's
+    eigenvalues lie far outside the unit circle: a few um of displacement change the fractions by tens of %),
+    and Newton's
     method stalls in local minima of |R| (the fractions' kinks): pseudo-transient continuation of the cage's
     overdamped relaxation de/dt = R(e) (implicit Euler steps whose step grows as |R| falls, ending in Newton's;
     Kelley & Keyes 1998) from ``start`` [m] (the root at a nearby cage speed), then from e = 0, the state
@@ -1028,6 +1030,24 @@ def _alike(geo, j):
     return next((i for i in range(j) if np.allclose(geo[i], geo[j], rtol=1e-12, atol=0.0)), None)
 
 
+@kernel
+def _play_walls(step, dt, start, s, clearance, on):
+    """The play operator of :func:`pocket_contact_fraction` over one revolution (compiled): the ball at ``s``
+    [m] from its pocket's centre moves by ``step`` [m] in each sub-step of ``dt`` [s], starting at sub-step
+    ``start`` (cyclically), the walls at +-``clearance``; writes to ``on`` the time of each sub-step on a wall,
+    from the instant it is reached."""
+    n = step.size
+    for i in range(n):
+        m = (start + i) % n
+        ds = step[m]
+        wall = clearance if ds > 0.0 else -clearance
+        if ds != 0.0 and abs(s + ds) >= clearance:      # on the wall from where it reaches it
+            on[m] = dt[m] * (1.0 - (wall - s) / ds)
+            s = wall
+        else:
+            s += ds
+
+
 def pocket_contact_fraction(u, psi, omega_c, radius, clearance, substeps=64, offset=None):
     """Share of the time each ball rests on a pocket wall, the balls moving freely inside their pockets' play
     (docs/theory/quasistatic.md#pocket-play).
@@ -1069,15 +1089,7 @@ def pocket_contact_fraction(u, psi, omega_c, radius, clearance, substeps=64, off
     if abs(path[-1]) > 1e-12 * clearance or np.ptp(np.append(path, 0.0)) > 2.0 * clearance:
         side = 1.0 if path[-1] >= 0.0 else -1.0
         start = int(np.argmax(path) if side > 0.0 else np.argmin(path)) + 1
-        s = side * clearance
-        for m in np.roll(np.arange(r.size), -start):
-            ds = step[m]
-            wall = clearance if ds > 0.0 else -clearance
-            if ds != 0.0 and abs(s + ds) >= clearance:      # on the wall from where it reaches it
-                on[m] = dt[m] * (1.0 - (wall - s) / ds)
-                s = wall
-            else:
-                s += ds
+        _play_walls(step, dt, start, side * clearance, clearance, on)
     time = np.bincount(owner, weights=dt, minlength=z)
     held = np.bincount(owner, weights=on, minlength=z)
     out = np.empty(z)
