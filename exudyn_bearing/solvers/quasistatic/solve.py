@@ -966,7 +966,8 @@ def _land_feedback(rc, lub, omega_c, omega_ring, net_force, start=(0.0, 0.0)):
     and Newton's
     method stalls in local minima of |R| (the fractions' kinks): pseudo-transient continuation of the cage's
     overdamped relaxation de/dt = R(e) (implicit Euler steps whose step grows as |R| falls, ending in Newton's;
-    Kelley & Keyes 1998) from ``start`` [m] (the root at a nearby cage speed), then from e = 0, the state
+    Kelley & Keyes 1998) from ``start`` [m] (the root at the balls' mean speed, :func:`_solve_cage`), then from
+    e = 0, the state
     without the feedback, each for LAND_FEEDBACK_STEPS; failing both, the
     damped fixed point e <- e + a R(e), a halved from 1 whenever |R| grows (to at least 2^-12), for
     LAND_FEEDBACK_ITERATIONS. Converged: |R| below LAND_FEEDBACK_TOLERANCE
@@ -1207,11 +1208,13 @@ def _caged_balls(omega_c, geo, loaded, races, stage, kin, rc, model, n_strips, n
     if rc.guidance != "ball":
         # the land carries the net pocket force at the cage's displacement e, which moves the pockets (the play)
         w_ring = w_o if rc.guidance == "outer_land" else w_i
-        hint = {} if land_hint is None else land_hint   # the last cage speed's displacement: the start
+        # the start: the first root found in this cage balance (``land_hint``), kept for every later cage speed so
+        # that the torque is a function of the cage speed alone (R may have several roots)
+        hint = {} if land_hint is None else land_hint
         ex, ey, eps, t_land, crushed, feedback = _land_feedback(rc, lub, omega_c, w_ring,
                                                                 lambda x, y: pockets(x, y)[4:],
                                                                 hint.get("e", (0.0, 0.0)))
-        if feedback["converged"]:
+        if feedback["converged"] and "e" not in hint:
             hint["e"] = (ex, ey)
     f, q_p, q_contact, film_out, fx, fy = pockets(ex, ey)
     t_normal = -q_p * cr
@@ -1276,6 +1279,9 @@ def _solve_cage(geo, loaded, races, stage, kin, rc, model, n_strips, n_across, i
 
     ref = max(abs(w_i - w_o), 1e-300)
     lo, hi = float(np.min(kin[:, 0])), float(np.max(kin[:, 0]))
+    if rc.guidance != "ball":  # the land's displacement at the balls' mean speed: the start of every later one
+        torque(float(np.mean(kin[:, 0])))
+        last.clear()
     pad = 1e-3 * ref + 0.5 * (hi - lo)
     lo, hi = lo - pad, hi + pad
     t_lo, t_hi = torque(lo), torque(hi)
