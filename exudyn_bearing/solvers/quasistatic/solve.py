@@ -971,7 +971,8 @@ def _land_feedback(rc, lub, omega_c, omega_ring, net_force, start=(0.0, 0.0)):
     without the feedback, each for LAND_FEEDBACK_STEPS; failing both, the
     damped fixed point e <- e + a R(e), a halved from 1 whenever |R| grows (to at least 2^-12), for
     LAND_FEEDBACK_ITERATIONS. Converged: |R| below LAND_FEEDBACK_TOLERANCE
-    times the land clearance c. A zero net force at e = 0 (a pure axial load) gives e = 0 at once. Returns
+    times the land clearance c; else the state without the feedback (e = 0, the land carrying F(0)), which
+    the solution's CageLandWarning reports. A zero net force at e = 0 (a pure axial load) gives e = 0 at once. Returns
     (ex, ey, eps, torque, crushed, dict with converged, evaluations, residual [m]); eps, torque and crushed are
     the land's carrying F(e) (:func:`_land_displacement`)."""
     c = rc.land_clearance
@@ -989,6 +990,8 @@ def _land_feedback(rc, lub, omega_c, omega_ring, net_force, start=(0.0, 0.0)):
 
     def done():
         res, x, y, g = best
+        if res > tol:  # not converged: the state without the feedback (the pockets at e = 0), and it says so
+            x, y, g = 0.0, 0.0, g0
         return x, y, *g[2:], {"converged": res <= tol, "evaluations": count[0], "residual": res}
 
     g0 = land(0.0, 0.0)
@@ -1343,8 +1346,9 @@ def _cage_result(rc, info, out, moving, w_i, film=None):
         warnings.warn(CageLandWarning(
             f"rigid_cage: the cage's displacement on its land and the pocket play it shifts did not converge in "
             f"{feedback['evaluations']} evaluations (residual {feedback['residual']:.3e} m, tolerance "
-            f"{LAND_FEEDBACK_TOLERANCE:g} of the land clearance {rc.land_clearance:.3e} m): the land force and "
-            "eccentricity are the last iterate's"), stacklevel=3)
+            f"{LAND_FEEDBACK_TOLERANCE:g} of the land clearance {rc.land_clearance:.3e} m): the solution is the one "
+            "without the feedback (the pockets of the centred cage, the land carrying their net force)"),
+            stacklevel=3)
     if info["land_crushed"]:
         warnings.warn(CageLandWarning(
             f"rigid_cage: the land film cannot carry the net pocket force {info['land_force']:.4g} N within the "
