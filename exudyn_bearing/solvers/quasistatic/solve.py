@@ -1217,8 +1217,8 @@ def _caged_balls(omega_c, geo, loaded, races, stage, kin, rc, model, n_strips, n
         ex, ey, eps, t_land, crushed, feedback = _land_feedback(rc, lub, omega_c, w_ring,
                                                                 lambda x, y: pockets(x, y)[4:],
                                                                 hint.get("e", (0.0, 0.0)))
-        if feedback["converged"] and "e" not in hint:
-            hint["e"] = (ex, ey)
+        if "e" not in hint:  # the first call's root (or e = 0 without one) starts every later one
+            hint["e"] = (ex, ey) if feedback["converged"] else (0.0, 0.0)
     f, q_p, q_contact, film_out, fx, fy = pockets(ex, ey)
     t_normal = -q_p * cr
     t_friction = mu_c * np.abs(q_contact) * rb * wz_unit
