@@ -13,7 +13,7 @@ from exudyn_bearing.model.layout import DIAG_FIELDS, GLOBAL_FIELDS
 from exudyn_bearing.model.record import RunRecord
 from exudyn_bearing.outputs import results as results_module
 from exudyn_bearing.outputs.window_checks import (DRIFT_DEG, DRIFT_REL, PSI0_TOLERANCE, SteadyStateWarning,
-                                                  q_max_at_psi0)
+                                                  load_at_psi0, q_max_at_psi0)
 
 # synthetic records and short runs: their energy does not close, which these tests do not judge
 pytestmark = pytest.mark.filterwarnings("ignore::exudyn_bearing.EnergyBalanceWarning")
@@ -167,6 +167,21 @@ def test_q_max_takes_the_ball_at_psi0_when_one_passes():
     assert q_max_at_psi0(psi, q)[:2] == (q.max(), "ball at psi=0")
 
 
+def test_load_at_psi0_is_the_passes_mean_where_q_max_takes_the_peak():
+    # balls passing psi = 0 in every sample, their loads the steady Q0 cos(psi)^1.5 with a vibration of
+    # +-2 % alternating from sample to sample: q_max takes the peak (2 % above Q0), load_at_psi0 the mean
+    rng = np.random.default_rng(1)
+    psi = np.radians(np.repeat(rng.uniform(-0.9, 0.9, 100), 2))  # each azimuth twice: once up, once down
+    steady = Q0 * np.cos(psi) ** 1.5
+    q = steady * (1.0 + 0.02 * np.where(np.arange(200) % 2 == 0, 1.0, -1.0))
+    assert q_max_at_psi0(psi, q)[0] > 1.015 * Q0
+    assert load_at_psi0(psi, q) == pytest.approx(np.mean(steady), rel=1e-12)
+    # the balls outside the tolerance and the unloaded ones do not count; none inside: None
+    far = np.radians([-40.0, 30.0, 0.2])
+    assert load_at_psi0(far, np.array([900.0, 800.0, 0.0])) is None
+    assert load_at_psi0(far, np.array([900.0, 800.0, 1000.0])) == 1000.0
+
+
 def test_summary_q_max_says_how_it_was_obtained():
     # balls frozen 20 deg off psi = 0 (cage speed 0, the quasi-static 1 rad/s case): interpolated to Q0;
     # passing balls: the largest load, a ball at psi = 0
@@ -180,6 +195,8 @@ def test_summary_q_max_says_how_it_was_obtained():
     s = _summary_no_warning(_record())
     # a sample within PSI0_TOLERANCE (1 deg) of psi = 0: at most 1 - cos(1 deg)^1.5 = 2.3e-4 below Q0
     assert s["q_max_method"]["inner"] == "ball at psi=0" and Q0 * (1 - 2.3e-4) < s["q_max_inner"] <= Q0
+    # the summary's passes' mean: the same bound (no vibration), never above the peak
+    assert Q0 * (1 - 2.3e-4) < s["q_psi0_inner"] <= s["q_max_inner"]
 
 
 # -- energy -------------------------------------------------------------------------------

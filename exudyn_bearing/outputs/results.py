@@ -41,7 +41,7 @@ from .jsonio import to_jsonable
 from .whole_loss import WHOLE_LOSS_DESCRIPTIONS, WHOLE_LOSS_KEYS, WHOLE_LOSS_UNITS, whole_loss
 from .tables import NOT_CONVERGED_MARK, Summary
 from .window_checks import (LOSS_FLOOR_MU, EnergyBalanceWarning, sample_window, SPEED_FLOOR, SteadyStateWarning,
-                            energy_balance, energy_check, energy_floor, q_max_at_psi0, steadiness)
+                            energy_balance, energy_check, energy_floor, q_max_at_psi0, load_at_psi0, steadiness)
 
 __all__ = ["Results", "EnergyBalanceWarning", "SUMMARY_KEYS", "SUMMARY_UNITS", "SUMMARY_DESCRIPTIONS", "PHASE_NAMES", "LOSSES_MODELLED",
            "LOSSES_NOT_MODELLED", "DYNAMIC_LOSS_COMPONENTS", "DYNAMIC_NOT_MODELLED", "DYNAMIC_SWITCHED_LOSSES",
@@ -49,7 +49,8 @@ __all__ = ["Results", "EnergyBalanceWarning", "SUMMARY_KEYS", "SUMMARY_UNITS", "
            "protocol_phases"]
 
 #: Keys every engine's summary has.
-SUMMARY_KEYS = ("q_max_inner", "q_max_outer", "q_max_method", "q_max_inner_mean", "q_max_outer_mean", "cage_speed",
+SUMMARY_KEYS = ("q_max_inner", "q_max_outer", "q_max_method", "q_psi0_inner", "q_psi0_outer", "q_max_inner_mean",
+                "q_max_outer_mean", "cage_speed",
                 "ball_spin", "lambda_outer_psi0", "lambda_inner_psi0", "regime_fraction", "window", "steady",
                 "friction_torque", "friction_power", "friction_outputs_converged", "not_converged",
                 "drive_power", "load_power", "dissipation",
@@ -138,7 +139,7 @@ POINT_STEP_DEPENDENT = ("friction_torque", "friction_power", "dissipation", "dis
 #: Unit of every scalar summary entry (speeds are angular speeds in rad/s).
 SUMMARY_UNITS = {
     "Fr": "N", "Fa": "N", "Pd": "m", "omega": "rad/s", "omega_outer": "rad/s", "q_max_inner": "N", "q_max_outer": "N",
-    "q_max_inner_mean": "N", "q_max_outer_mean": "N", "cage_speed": "rad/s", "ball_spin": "rad/s",
+    "q_psi0_inner": "N", "q_psi0_outer": "N", "q_max_inner_mean": "N", "q_max_outer_mean": "N", "cage_speed": "rad/s", "ball_spin": "rad/s",
     "lambda_outer_psi0": "-", "lambda_inner_psi0": "-", "regime_fraction": "-", "srr_mean": "-",
     "ring_displacement": "m", "friction_torque": GLOBAL_UNITS["ring_torque"] + " (inner ring)",
     "friction_power": GLOBAL_UNITS["friction_power"], **CONTACT_SUMMARY_UNITS, "steps": "-", "dt": "s", "t_end": "s", "wall_s": "s", "stable_dt": "s",
@@ -155,6 +156,11 @@ SUMMARY_DESCRIPTIONS = {
                 "regularizing_speed) over the window; None (n/a) when none rolls, as at rest",
     "q_max_inner": "load of the ball at psi = 0 over the window, inner race (q_max_method: how it was obtained)",
     "q_max_outer": "load of the ball at psi = 0 over the window, outer race (q_max_method: how it was obtained)",
+    "q_psi0_inner": "mean load of the loaded balls within 1 deg of psi = 0 over the window, inner race: the steady "
+                    "Q_max, without the contact vibration that the sampled peak q_max_inner includes; None when no "
+                    "sampled ball comes within 1 deg",
+    "q_psi0_outer": "mean load of the loaded balls within 1 deg of psi = 0 over the window, outer race (balls whose "
+                    "inner contact is loaded, as q_max_outer); None when no sampled ball comes within 1 deg",
     "friction_torque": "torque that drives the inner ring about its axis, time mean: minus the torque of the balls "
                        "on the ring; positive when the ring must be driven, negative when it must be held back (the "
                        "inner ring when only the outer ring is driven); the modelled losses only (the driven "
@@ -661,7 +667,11 @@ class Results:
         ``q_max_method`` says which); q_max_inner/outer_mean: the time mean
         of the largest ball load of each sample [N] (below q_max as the balls
         pass psi = 0); cage_speed, ball_spin: mean angular speeds [rad/s];
-        lambda_{outer,inner}_psi0: mean Lambda of the contact nearest psi =
+        q_psi0_inner/outer: the mean load of the balls within 1 deg of
+        psi = 0 over the window (:func:`~.window_checks.load_at_psi0`: the
+        steady Q_max, without the vibration peaks that q_max takes in the
+        engines that resolve the contacts' vibration; None when no sampled
+        ball comes within 1 deg); lambda_{outer,inner}_psi0: mean Lambda of the contact nearest psi =
         0; regime_fraction: share of loaded contacts (both races) in
         boundary / mixed / full film; steady: is the window steady
         (:meth:`steadiness`; a :class:`SteadyStateWarning` names the
@@ -682,7 +692,8 @@ class Results:
         q_i, method_i, _ = q_max_at_psi0(psi, load_i)
         # the outer race's balls outside the loaded zone press on it by their centrifugal force alone: the
         # outer distribution is taken where the inner contact of the ball is loaded
-        q_o, method_o, _ = q_max_at_psi0(psi, np.where(load_i > 0.0, load_o, 0.0) if np.any(load_i > 0.0) else load_o)
+        load_o_zone = np.where(load_i > 0.0, load_o, 0.0) if np.any(load_i > 0.0) else load_o
+        q_o, method_o, _ = q_max_at_psi0(psi, load_o_zone)
         idx = self.nearest_psi0()[w]
         rows = np.arange(len(idx))
         lam_i = self.contact("lambda", "inner")[w][rows, idx]
@@ -721,6 +732,8 @@ class Results:
             "q_max_inner": q_i,
             "q_max_outer": q_o,
             "q_max_method": {"inner": method_i, "outer": method_o},
+            "q_psi0_inner": load_at_psi0(psi, load_i),
+            "q_psi0_outer": load_at_psi0(psi, load_o_zone),
             "q_max_inner_mean": float(np.mean(load_i.max(axis=1))),
             "q_max_outer_mean": float(np.mean(load_o.max(axis=1))),
             "cage_speed": float(np.mean(self.cage_speed_series()[w])),

@@ -15,7 +15,7 @@ from ..data import InputError
 from ..physics.losses import LOSS_FLOOR_MU  # noqa: F401 (the summaries' loss floor; one definition)
 
 __all__ = ["sample_window", "STEADY_BLOCKS", "MIN_STEADY_SAMPLES", "DRIFT_REL", "OSCILLATION_REL", "DRIFT_DEG", "OSCILLATION_DEG",
-           "LOSS_DRIFT_REL", "LOSS_OSCILLATION_REL", "LOSS_FLOOR_MU", "SPEED_FLOOR", "PSI0_TOLERANCE",
+           "LOSS_DRIFT_REL", "LOSS_OSCILLATION_REL", "LOSS_FLOOR_MU", "SPEED_FLOOR", "PSI0_TOLERANCE", "load_at_psi0",
            "STEADY_THRESHOLDS", "SteadyStateWarning", "drift_and_oscillation", "passage_average", "steadiness", "q_max_at_psi0",
            "energy_balance", "EnergyBalanceWarning", "ENERGY_TOLERANCE", "ENERGY_FLOOR_OMEGA", "energy_check", "energy_floor"]
 
@@ -234,6 +234,27 @@ def q_max_at_psi0(psi, q, tolerance: float = PSI0_TOLERANCE) -> tuple[float | No
     (a, c, s), *_ = np.linalg.lstsq(m, q ** (2.0 / 3.0), rcond=None)
     peak = a + math.hypot(c, s)
     return float(max(peak, 0.0) ** 1.5), "interpolated", float(math.atan2(s, c))
+
+
+def load_at_psi0(psi, q, tolerance: float = PSI0_TOLERANCE) -> float | None:
+    """The mean load of the loaded balls that pass psi = 0: the steady Q_max of a window.
+
+    ``psi`` (any shape) [rad] ball azimuths from the load direction, ``q``
+    (same shape) [N] their loads. The mean of the loads of the loaded balls
+    within ``tolerance`` of psi = 0 over the window's samples (each pass of a
+    ball through psi = 0 counts once per sample it spends there): the load of
+    the ball at psi = 0 of the steady distribution (Harris & Kotzalas, Rolling
+    Bearing Analysis, 5th ed., 2006, vol. 1 ch. 7; docs/theory/load_distribution.md)
+    where :func:`q_max_at_psi0` takes the largest sampled load, which in an
+    engine that resolves the contacts' vibration (the reference engine, the
+    element) includes its peaks. None when no loaded ball comes within
+    ``tolerance`` (a coarsely sampled window: :func:`q_max_at_psi0` then
+    interpolates).
+    """
+    psi = np.angle(np.exp(1j * np.asarray(psi, float).ravel()))
+    q = np.asarray(q, float).ravel()
+    near = (q > 0.0) & (np.abs(psi) <= tolerance)
+    return float(np.mean(q[near])) if near.any() else None
 
 
 def energy_balance(duration: float, drive: float, loads: float | None, dissipation: float, ke0: float,

@@ -188,7 +188,7 @@ def rolling_points(contacts, geo):
 
 
 def _check_minimum(f, x, h):
-    """Finite-difference Hessian eigenvalues (relative to f(x)) and whether all six axis neighbours are higher."""
+    """Finite-difference Hessian eigenvalues (relative to f(x)) and whether all axis neighbours (2 n) are higher."""
     f0 = f(x)
     n = x.size
     hess = np.zeros((n, n))
@@ -208,24 +208,35 @@ def _check_minimum(f, x, h):
     return eig, higher
 
 
-def minimum_energy(geo, model, n_strips, n_across, start):
+def minimum_energy(geo, model, n_strips, n_across, start, omega_m=None):
     """Kinematics that minimise P_o + P_i (Gupta's hypothesis) from ``start`` = (omega_m, w_r, w_z).
+
+    With ``omega_m`` given (a ball its cage pocket holds at the cage speed: docs/theory/quasistatic.md, "The
+    rigid cage") the orbital speed is that one and the minimum is over the ball's spin (w_r, w_z) alone; else
+    over all three (Gupta 2020).
 
     Returns (kinematics (3,), check dict with ``hessian_eigenvalues`` (relative, in the scaled
     variables), ``neighbours_higher``, ``is_minimum``, ``evaluations``)."""
-    start = np.asarray(start, float)[:3]
+    start = np.asarray(start, float)[:3].copy()
+    if omega_m is not None:
+        start[0] = float(omega_m)
     scale = max(abs(start[0]), math.hypot(start[1], start[2]), 1e-12)
     code, vec = model.code, model.vector
     out = np.zeros((2, NC))
-    x0 = np.asarray(start, float) / scale
+    held = omega_m is not None
+    x0 = (start[1:] if held else start) / scale
     f0 = _ball_contacts(start[0], start[1], start[2], 0.0, geo, code, vec, n_strips, n_across, out)
     norm = f0 if f0 > 0 else 1.0
 
-    def f(x):
-        return _ball_contacts(x[0] * scale, x[1] * scale, x[2] * scale, 0.0, geo, code, vec, n_strips, n_across,
-                              out) / norm
+    def kin(x):
+        return np.concatenate([[start[0]], x * scale]) if held else x * scale
 
-    simplex = np.vstack([x0] + [x0 + 2e-3 * np.eye(3)[i] for i in range(3)])
+    def f(x):
+        k = kin(x)
+        return _ball_contacts(k[0], k[1], k[2], 0.0, geo, code, vec, n_strips, n_across, out) / norm
+
+    n = x0.size
+    simplex = np.vstack([x0] + [x0 + 2e-3 * np.eye(n)[i] for i in range(n)])
     res = optimize.minimize(f, x0, method="Nelder-Mead",
                             options={"initial_simplex": simplex, "xatol": 1e-11, "fatol": 1e-13, "maxiter": 6000,
                                      "maxfev": 12000})
@@ -233,7 +244,7 @@ def minimum_energy(geo, model, n_strips, n_across, start):
     check = {"hessian_eigenvalues": eig.tolist(), "neighbours_higher": higher,
              "is_minimum": bool(higher and eig.min() > 0.0), "evaluations": int(res.nfev),
              "converged": bool(res.success)}
-    return res.x * scale, check
+    return kin(res.x), check
 
 
 def traction_equilibrium(geo, model, n_strips, n_across, start, inertia, omega_m=None, pocket_friction=0.0,

@@ -276,8 +276,9 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
         (docs/theory/quasistatic.md#the-rigid-cage): every ball at the cage's
         orbital speed, a pocket force per ball balancing its tractions along the
         orbit, the cage speed from the cage's torque balance (pocket forces, pocket
-        friction, land shear). With race control and ``"equilibrium"``; refused
-        with ``"min-energy"``.
+        friction, land shear). With race control, ``"equilibrium"`` and
+        ``"min-energy"`` (each held ball's spin minimises its contacts' dissipation
+        at the cage speed).
     rigid_cage : RigidCage, optional
         Geometry, material and pocket friction of the rigid cage (default:
         :func:`~exudyn_bearing.data.cages.estimated_cage` of the bearing, as the
@@ -473,7 +474,7 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
                     new, cage_info = _solve_cage(geo, loaded_all, controls.copy(), stage, kin, rc, model, n_strips,
                                                  n_across, inertia, lub, w_i, w_o, psi, film)
                     controls[:] = cage_info["controls"]
-                    if stage == "equilibrium":
+                    if stage in ("equilibrium", "min-energy"):
                         checks = list(cage_info["checks"])
                 elif stage == "equilibrium":
                     _carry_by_cage(new, controls, geo)
@@ -856,10 +857,6 @@ def _check_cage(cage, rigid_cage, control, b):
     if cage != "rigid":
         raise InputError(f"cage: the quasi-static solver has no {cage!r} cage (the torus cage's cage balls are a "
                          f"dynamic model); use 'rigid' or None (no cage)")
-    if control == "min-energy":
-        raise InputError("control: 'min-energy' does not take cage='rigid': Gupta's minimum-energy hypothesis "
-                         "chooses each ball's orbital speed, which the cage imposes; use control='equilibrium' "
-                         "(the traction equilibrium) or race control with the cage")
     if rigid_cage is None:
         return estimated_cage(b)
     if not isinstance(rigid_cage, RigidCage):
@@ -1103,8 +1100,8 @@ def pocket_contact_fraction(u, psi, omega_c, radius, clearance, substeps=64, off
 
 def _free_balls(geo, loaded, races, stage, kin, model, n_strips, n_across, inertia, film=None):
     """Each ball's own kinematics without the cage (z x 4; NaN rows for a ball without them: no inner load, or
-    a traction equilibrium that does not converge): the traction equilibrium of a cageless ball, or race
-    control by ``races[j]``. With the pocket ``film`` (a PocketFilm) the traction equilibrium has the moment of
+    a traction equilibrium that does not converge): the traction equilibrium of a cageless ball, its minimum
+    energy (stage "min-energy"), or race control by ``races[j]``. With the pocket ``film`` (a PocketFilm) the traction equilibrium has the moment of
     the film of a ball floating centred in its pocket, its rotation taken relative to the cage at the balls'
     present mean orbital speed (the cage's, once the iteration has converged)."""
     z = geo.shape[0]
@@ -1127,6 +1124,9 @@ def _free_balls(geo, loaded, races, stage, kin, model, n_strips, n_across, inert
                                              pocket_film=moment)
             if chk["converged"]:
                 free[j] = k
+        elif stage == "min-energy":
+            free[j, :3] = km.minimum_energy(geo[j], model, n_strips, n_across, kin[j])[0]
+            free[j, 3] = 0.0
         else:
             free[j, :3] = km.race_control(geo[j], races[j])
             free[j, 3] = 0.0
@@ -1137,7 +1137,8 @@ def _caged_balls(omega_c, geo, loaded, races, stage, kin, rc, model, n_strips, n
                  psi, free=None, film=None, land_hint=None):
     """Every ball at the cage speed ``omega_c`` (docs/theory/quasistatic.md#the-rigid-cage): its kinematics
     (race control at the cage speed by ``races[j]``, the traction equilibrium of its moments with the pocket
-    force and its friction, or, without an inner load, rolling on the outer race), its pocket force
+    force and its friction, the minimum of its contacts' dissipation over its spin (stage "min-energy"), or,
+    without an inner load, rolling on the outer race), its pocket force
     Q_p = -(F_x,o + F_x,i) and the cage's torque: sum_j (-Q_p,j c_r,j + mu_c |Q_p,j| R_b w_z,j / |w_j|) + the
     land's shear torque. With the pocket ``film`` (a PocketFilm; docs/theory/quasistatic.md#the-pocket-film)
     the friction acts on the contact force the film's pressure leaves, and the film's shear adds its moment to
@@ -1168,8 +1169,17 @@ def _caged_balls(omega_c, geo, loaded, races, stage, kin, rc, model, n_strips, n
                 continue
             checks[j] = chk
             used[j] = "cage"
-        race = races[j] if loaded[j] and stage != "equilibrium" else "outer"
-        if stage != "equilibrium":
+        if stage == "min-energy" and loaded[j]:
+            # Gupta's minimum over the ball's spin at the orbital speed its pocket imposes; the pocket carries the
+            # tractions' net force along the orbit, as with race control
+            new[j, :3], checks[j] = km.minimum_energy(geo[j], model, n_strips, n_across, kin[j], omega_m=omega_c)
+            new[j, 3] = 0.0
+            used[j] = "min-energy"
+            c = km.ball_contacts(new[j], geo[j], model, n_strips, n_across)
+            q_p[j] = -(c[0, 6] + c[1, 6])
+            continue
+        race = races[j] if loaded[j] and stage not in ("equilibrium", "min-energy") else "outer"
+        if stage not in ("equilibrium", "min-energy"):
             used[j] = race
         new[j] = km.cage_kinematics(geo[j], omega_c, race)
         c = km.ball_contacts(new[j], geo[j], model, n_strips, n_across)

@@ -133,7 +133,7 @@ class ReducedEngine:
         self.table = hertz.exact_table()
         self.work = np.zeros(N_WORK)
         self.jac_every, self.jac_tol, self.ring_every = JAC_EVERY, JAC_TOL, RING_EVERY
-        #: Newton corrections of a step in which a rigid cage's pocket contact closed or opened (stepper.N_CORR)
+        #: Newton corrections of a step with the rigid cage at most (stepper.N_CORR)
         self.n_corr = N_CORR
         self._adapt = np.zeros(_st.N_ADAPT)  # the step control's vector of the last run (step_control)
 
