@@ -60,7 +60,32 @@ def test_balls_share_the_cage_speed_and_the_cage_torque_balances(caged):
     assert abs(caged.energy_residual) < 1e-8
 
 
-def test_the_land_carries_the_net_pocket_force_at_the_cages_displacement(caged):
+@pytest.fixture(scope="module")
+def caged_feedback():
+    """The same with the cage's displacement fed back into the pocket play (``land_feedback=True``)."""
+    return solve_quasistatic(B, 3000.0, omega=500.0, control="equilibrium", cage="rigid", land_feedback=True,
+                             **QUICK)
+
+
+def test_the_land_feedback_is_an_option(caged, caged_feedback):
+    """Off by default: the centred cage's pockets (no displacement, as before the option); on, the cage sits
+    displaced and its torque and energy balances close as without it; refused without a guiding land."""
+    assert caged.cage["land_displacement"] == (0.0, 0.0) and caged.cage["land_feedback_evaluations"] == 0
+    c = caged_feedback.cage
+    assert c["land_feedback_converged"] and np.hypot(*c["land_displacement"]) > 0.0
+    assert abs(c["torque_residual"]) < 1e-9 and abs(caged_feedback.energy_residual) < 1e-8
+    # no net pocket force (a pure axial load): the cage stays centred, at once
+    axial = solve_quasistatic(B, 0.0, 3000.0, omega=500.0, control="equilibrium", cage="rigid", land_feedback=True,
+                              **QUICK)
+    assert axial.cage["land_displacement"] == (0.0, 0.0) and axial.cage["land_feedback_converged"]
+    with pytest.raises(InputError, match="^land_feedback:"):
+        solve_quasistatic(B, 3000.0, omega=500.0, control="equilibrium", cage="rigid", rigid_cage=IDEAL,
+                          land_feedback=True, **QUICK)
+    with pytest.raises(InputError, match="^land_feedback:"):
+        solve_quasistatic(B, 3000.0, omega=500.0, control="equilibrium", land_feedback=True, **QUICK)
+
+
+def test_the_land_carries_the_net_pocket_force_at_the_cages_displacement(caged_feedback):
     """The cage's displacement e on its land (docs/theory/quasistatic.md#the-cages-displacement): the land
     film's force there (the reference engine's short bearing, no squeeze or whirl) balances the net pocket force
     of the pockets displaced by e . e_psi, recomputed from the outputs (the weighted pocket forces along -e_psi
@@ -398,9 +423,7 @@ def test_pocket_play_lowers_the_cage_losses_of_unequal_balls():
     assert free.size and np.all(np.abs(free / play.cage["speed"] - 1.0) < 0.01)
     axial = solve_quasistatic(b, 0.0, 3000.0, **common)
     assert np.all(axial.balls["pocket_contact_fraction"] == 1.0)
-    # no net pocket force: the cage stays centred on its land (no feedback into the play)
-    assert axial.cage["land_displacement"] == (0.0, 0.0) and axial.cage["land_eccentricity"] == 0.0
-    assert play.cage["land_feedback_converged"] and play.cage["land_eccentricity"] > 0.0
+    assert axial.cage["land_eccentricity"] == 0.0 and play.cage["land_eccentricity"] > 0.0
 
 
 def test_acbb120_rigid_cage_dem_equals_the_quasistatic_equilibrium():

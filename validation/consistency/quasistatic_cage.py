@@ -11,7 +11,8 @@ The 7208 under F_r = F_a = 3000 N at 500 rad/s, the estimated outer-land-guided 
 
 Printed side by side: the dissipation (the quasi-static traction + pocket + land; the DEM's ``dissipation``,
 which also holds the contacts' normal damping), the cage speed, the cage losses by kind, the pocket and land
-forces, Q_max. The target: the two dissipations within 5 %.
+forces, Q_max. The target: the two dissipations within 5 %. ``--land-feedback``: the quasi-static cage's
+displacement on its land fed back into the pocket play (docs/theory/quasistatic.md#the-cages-displacement).
 
 With ``--pocket-film`` instead the ball / pocket oil film (docs/theory/quasistatic.md#the-pocket-film): the
 6208 radial case (F_r = 3000 N, 500 rad/s, its estimated rigid cage, the scenario's oil), quasi-static
@@ -21,7 +22,7 @@ first ``--dt``: the cage speed, the pocket loss (and the film's part), the land 
 side, and the differences of the quasi-static solution with the film from the engine's.
 
     python validation/consistency/quasistatic_cage.py [--t-end 0.5] [--dt 1.5e-6 0.75e-6] [--case FR FA ...]
-        [--out validation/out/quasistatic_cage]
+        [--land-feedback] [--out validation/out/quasistatic_cage]
     python validation/consistency/quasistatic_cage.py --pocket-film [--t-end 0.2] [--dt 1.5e-6]
 """
 from __future__ import annotations
@@ -46,10 +47,11 @@ FILM_CASE = {"Fr": 3000.0, "Fa": 0.0, "omega": 500.0}
 BINS = np.linspace(-180.0, 180.0, 13)
 
 
-def quasistatic(cage, case=CASE, bearing="7208", pocket_film=False):
+def quasistatic(cage, case=CASE, bearing="7208", pocket_film=False, land_feedback=False):
     t0 = time.perf_counter()
     s = solve_quasistatic(bearing, case["Fr"], case["Fa"], omega=case["omega"], control="equilibrium", cage=cage,
-                          fixed={"tilt_x": 0.0, "tilt_y": 0.0}, stiffness=False, pocket_film=pocket_film)
+                          fixed={"tilt_x": 0.0, "tilt_y": 0.0}, stiffness=False, pocket_film=pocket_film,
+                          land_feedback=land_feedback)
     wall = time.perf_counter() - t0
     pl = power_losses(s)["power_loss"]
     c = s.cage or {}
@@ -66,6 +68,7 @@ def quasistatic(cage, case=CASE, bearing="7208", pocket_film=False):
             "land_force": c.get("land_force"), "land_eccentricity": c.get("land_eccentricity"),
             "q_max_inner": s.q_max_inner, "q_max_outer": s.q_max_outer, "energy_residual": s.energy_residual,
             "torque_residual": c.get("torque_residual"),
+            "land_feedback_converged": c.get("land_feedback_converged"),
             # the solver's own check of the balls' inertia along the orbit (solvers/quasistatic/inertia.py)
             "inertia_power": (s.inertia_check or {}).get("power"), "inertia_share": (s.inertia_check or {}).get("share")}
 
@@ -142,6 +145,9 @@ def main(argv=None):
     ap.add_argument("--pocket-film", action="store_true",
                     help="instead: the 6208 radial case dry and with the pocket oil film, quasi-static and DEM at the "
                          "first --dt")
+    ap.add_argument("--land-feedback", action="store_true",
+                    help="the quasi-static cage's displacement on its land fed back into the pocket play "
+                         "(solve_quasistatic(..., land_feedback=True)); the DEM is the same")
     ap.add_argument("--out", default=str(ROOT / "validation" / "out" / "quasistatic_cage"))
     args = ap.parse_args(argv)
     out = Path(args.out)
@@ -149,14 +155,17 @@ def main(argv=None):
     if args.pocket_film:
         return film_comparison(args.dt[0], args.t_end, out)
     report = {"case": CASE, "t_end_s": args.t_end, "quasistatic_cageless": quasistatic(None),
-              "quasistatic_rigid": quasistatic("rigid")}
+              "quasistatic_rigid": quasistatic("rigid", land_feedback=args.land_feedback),
+              "land_feedback": args.land_feedback}
     for dt in args.dt:
         report[f"dem_rigid_{dt:g}"] = dem(dt, args.t_end)
         print(f"DEM at dt = {dt:g} s done ({report[f'dem_rigid_{dt:g}']['wall_s']:.0f} s wall)", flush=True)
     cols = ["quasistatic_cageless", "quasistatic_rigid"] + [f"dem_rigid_{dt:g}" for dt in args.dt]
     rows = ("dissipation", "dissipation_contacts", "cage_power_pocket", "cage_power_land", "cage_speed", "pocket_force_max",
             "pocket_force_mean", "q_max_inner", "q_max_outer", "energy_residual")
-    print(f"7208, F_r = F_a = 3000 N, 500 rad/s, estimated outer-land brass cage; DEM {args.t_end} s, window "
+    print(f"7208, F_r = F_a = 3000 N, 500 rad/s, estimated outer-land brass cage"
+          + (" (quasi-static: the cage's displacement fed back into the pocket play)" if args.land_feedback else "")
+          + f"; DEM {args.t_end} s, window "
           + ", ".join(f"{report[c]['window.t0']:.3g}-{report[c]['window.t1']:.3g} s" for c in cols[2:]))
     print(f"{'':20s}" + "".join(f"{c:>22s}" for c in cols))
     for r in rows:
@@ -182,14 +191,17 @@ def main(argv=None):
     report["cases"] = []
     for fr, fa in args.case or []:
         case = {"Fr": fr, "Fa": fa, "omega": CASE["omega"]}
-        q, d = quasistatic("rigid", case), dem(args.dt[0], args.t_end, case)
+        q, d = quasistatic("rigid", case, land_feedback=args.land_feedback), dem(args.dt[0], args.t_end, case)
         report["cases"].append({"case": case, "quasistatic_rigid": q, "dem": d})
         print(f"F_r {fr:g} N, F_a {fa:g} N: dissipation QS {q['dissipation']:.2f} / DEM {d['dissipation']:.2f} W "
               f"({100 * (q['dissipation'] / d['dissipation'] - 1):+.1f} %); contacts {q['dissipation_contacts']:.2f} / "
               f"{d['dissipation_contacts']:.2f}, pocket {q['cage_power_pocket']:.2f} / {d['cage_power_pocket']:.2f}, "
               f"land {q['cage_power_land']:.2f} / {d['cage_power_land']:.2f} W; cage {q['cage_speed']:.3f} / "
               f"{d['cage_speed']:.3f} rad/s; QS ball-inertia check {q['inertia_power']:.3g} W "
-              f"({100 * q['inertia_share']:.3g} % of its dissipation)", flush=True)
+              f"({100 * q['inertia_share']:.3g} % of its dissipation)"
+              + ("" if q["land_feedback_converged"] in (None, True) else
+                 "; the cage's displacement did NOT converge: the quasi-static row is the solution without it"),
+              flush=True)
     (out / "quasistatic_cage.json").write_text(json.dumps(report, indent=2, default=float))
     print(f"wrote {out / 'quasistatic_cage.json'}")
 

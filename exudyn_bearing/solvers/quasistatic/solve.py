@@ -196,7 +196,7 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
                       traction_regularizing_srr=DEFAULT_REGULARIZING_SRR, rolling_speed_floor=None,
                       shoulder_angle=MAX_FREE_CONTACT_ANGLE, stiffness=True, start=None,
                       resolution_check=True, cage=None, rigid_cage=None, inertia_check=True,
-                      pocket_film=False) -> QuasiStaticSolution:
+                      pocket_film=False, land_feedback=False) -> QuasiStaticSolution:
     """Quasi-static equilibrium of a ball bearing with free inner-ring DOFs, speed effects and kinematics.
 
     Parameters
@@ -295,6 +295,13 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
         rotation relative to the cage enters the balls' and the cage's balances and the pocket loss, its
         hydrodynamic pressure carries the pocket force where it can (the friction acts on the rest). Needs
         ``cage="rigid"``; the film's oil is ``lubricant``.
+    land_feedback : bool
+        Feed the land-guided cage's steady displacement on its land back into the pocket play
+        (docs/theory/quasistatic.md#the-cages-displacement): the pockets move with the cage, so the balls meet
+        their walls elsewhere and the net pocket force the land carries changes; solved by pseudo-transient
+        continuation, a ``CageLandWarning`` and the solution without it when that does not converge (the
+        cage's ``land_feedback_converged``). Off by default (the solution with the centred cage's pockets);
+        needs a land-guided ``cage="rigid"``.
 
     Returns
     -------
@@ -317,6 +324,10 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
         raise InputError(f"control: must be one of {', '.join(km.CONTROLS)}, got {control!r}")
     rc = _check_cage(cage, rigid_cage, control, b)
     pocket_film = check_bool("pocket_film", pocket_film)
+    land_feedback = check_bool("land_feedback", land_feedback)
+    if land_feedback and (rc is None or rc.guidance == "ball"):
+        raise InputError("land_feedback: the cage's displacement on its guiding land is a land-guided rigid cage's "
+                         "(cage='rigid' with guidance 'outer_land' or 'inner_land')")
     if pocket_film and rc is None:
         raise InputError("pocket_film: the film between ball and pocket is the rigid cage's (cage='rigid'), "
                          "not for a cageless solution")
@@ -472,7 +483,7 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
                             new[j, :3], checks[j] = km.minimum_energy(geo[j], model, n_strips, n_across, kin[j])
                 if rc is not None:
                     new, cage_info = _solve_cage(geo, loaded_all, controls.copy(), stage, kin, rc, model, n_strips,
-                                                 n_across, inertia, lub, w_i, w_o, psi, film)
+                                                 n_across, inertia, lub, w_i, w_o, psi, film, land_feedback)
                     controls[:] = cage_info["controls"]
                     if stage in ("equilibrium", "min-energy"):
                         checks = list(cage_info["checks"])
@@ -1223,12 +1234,14 @@ def _caged_balls(omega_c, geo, loaded, races, stage, kin, rc, model, n_strips, n
         w_ring = w_o if rc.guidance == "outer_land" else w_i
         # the start: the first root found in this cage balance (``land_hint``), kept for every later cage speed so
         # that the torque is a function of the cage speed alone (R may have several roots)
-        hint = {} if land_hint is None else land_hint
-        ex, ey, eps, t_land, crushed, feedback = _land_feedback(rc, lub, omega_c, w_ring,
-                                                                lambda x, y: pockets(x, y)[4:],
-                                                                hint.get("e", (0.0, 0.0)))
-        if "e" not in hint:  # the first call's root (or e = 0 without one) starts every later one
-            hint["e"] = (ex, ey) if feedback["converged"] else (0.0, 0.0)
+        if land_hint is None:  # no feedback: the centred cage's pockets, the land carrying their net force
+            eps, t_land, crushed = _land_state(rc, lub, omega_c, w_ring, math.hypot(*pockets(0.0, 0.0)[4:]))
+        else:
+            ex, ey, eps, t_land, crushed, feedback = _land_feedback(rc, lub, omega_c, w_ring,
+                                                                    lambda x, y: pockets(x, y)[4:],
+                                                                    land_hint.get("e", (0.0, 0.0)))
+            if "e" not in land_hint:  # the first call's root (or e = 0 without one) starts every later one
+                land_hint["e"] = (ex, ey) if feedback["converged"] else (0.0, 0.0)
     f, q_p, q_contact, film_out, fx, fy = pockets(ex, ey)
     t_normal = -q_p * cr
     t_friction = mu_c * np.abs(q_contact) * rb * wz_unit
@@ -1277,12 +1290,35 @@ def _pocket_film_state(film, kin, q_held, f, omega_c, free):
 
 
 def _solve_cage(geo, loaded, races, stage, kin, rc, model, n_strips, n_across, inertia, lub, w_i, w_o, psi,
-                film=None):
+                film=None, land_feedback=False):
     """The cage speed that balances the cage's torque (:func:`_caged_balls`; brentq on a bracket widened from
     the balls' present orbital speeds: the torque falls with the cage speed) and the balls at it; ``film``
-    the pocket film (a PocketFilm) or None."""
-    last, hint = {}, {}
+    the pocket film (a PocketFilm) or None; ``land_feedback``: the cage's displacement on its land fed back into
+    the pocket play (:func:`_land_feedback`)."""
     free = _free_balls(geo, loaded, races, stage, kin, model, n_strips, n_across, inertia, film)
+    if not land_feedback:
+        return _cage_balance(None, free, geo, loaded, races, stage, kin, rc, model, n_strips, n_across, inertia, lub,
+                             w_i, w_o, psi, film)
+    try:
+        return _cage_balance({}, free, geo, loaded, races, stage, kin, rc, model, n_strips, n_across, inertia, lub,
+                             w_i, w_o, psi, film)
+    except (ValueError, InputError):
+        # with the feedback the cage's torque need not be one function of the cage speed (the displacement's
+        # balance can have several roots, or converge at some cage speeds and not at others): no bracketed root;
+        # the balance without the feedback, and the solution says so (CageLandWarning)
+        k, info = _cage_balance(None, free, geo, loaded, races, stage, kin, rc, model, n_strips, n_across, inertia,
+                                lub, w_i, w_o, psi, film)
+        info["land_feedback"] = {"converged": False, "evaluations": 0, "residual": math.nan,
+                                 "why": "the cage's torque with the displacement fed back has no bracketed root "
+                                        "in the cage speed"}
+        return k, info
+
+
+def _cage_balance(hint, free, geo, loaded, races, stage, kin, rc, model, n_strips, n_across, inertia, lub, w_i, w_o,
+                  psi, film):
+    """The cage speed and balls of :func:`_solve_cage` for the land's displacement ``hint`` (None: the centred
+    cage's pockets; a dict: fed back, its start kept there)."""
+    last = {}
 
     def torque(wc):
         k, info = _caged_balls(wc, geo, loaded, races, stage, last.get("kin", kin), rc, model, n_strips, n_across,
@@ -1292,7 +1328,7 @@ def _solve_cage(geo, loaded, races, stage, kin, rc, model, n_strips, n_across, i
 
     ref = max(abs(w_i - w_o), 1e-300)
     lo, hi = float(np.min(kin[:, 0])), float(np.max(kin[:, 0]))
-    if rc.guidance != "ball":  # the land's displacement at the balls' mean speed: the start of every later one
+    if hint is not None:  # the land's displacement at the balls' mean speed: the start of every later one
         torque(float(np.mean(kin[:, 0])))
         last.clear()
     pad = 1e-3 * ref + 0.5 * (hi - lo)
@@ -1354,10 +1390,12 @@ def _cage_result(rc, info, out, moving, w_i, film=None):
     feedback = info.get("land_feedback")
     if feedback is not None and not feedback["converged"]:
         warnings.warn(CageLandWarning(
-            f"rigid_cage: the cage's displacement on its land and the pocket play it shifts did not converge in "
-            f"{feedback['evaluations']} evaluations (residual {feedback['residual']:.3e} m, tolerance "
-            f"{LAND_FEEDBACK_TOLERANCE:g} of the land clearance {rc.land_clearance:.3e} m): the solution is the one "
-            "without the feedback (the pockets of the centred cage, the land carrying their net force)"),
+            "rigid_cage: the cage's displacement on its land and the pocket play it shifts did not converge ("
+            + (feedback["why"] if "why" in feedback else
+               f"{feedback['evaluations']} evaluations, residual {feedback['residual']:.3e} m, tolerance "
+               f"{LAND_FEEDBACK_TOLERANCE:g} of the land clearance {rc.land_clearance:.3e} m")
+            + "): the solution is the one without the feedback (the pockets of the centred cage, the land carrying "
+            "their net force)"),
             stacklevel=3)
     if info["land_crushed"]:
         warnings.warn(CageLandWarning(
