@@ -94,8 +94,8 @@ def test_the_land_carries_the_net_pocket_force_at_the_cages_displacement(caged_f
     from exudyn_bearing.data.catalog import load_lubricant
     from exudyn_bearing.physics.short_bearing import short_bearing_attitude_angle, short_bearing_force_xy
 
-    c, rc = caged.cage, caged.cage["rigid_cage"]
-    psi, q, kin = caged.balls["psi"], caged.balls["pocket_force"], caged.kinematics
+    c, rc = caged_feedback.cage, caged_feedback.cage["rigid_cage"]
+    psi, q, kin = caged_feedback.balls["psi"], caged_feedback.balls["pocket_force"], caged_feedback.kinematics
     f_r = c["pocket_friction"] * q * kin[:, 2] / np.hypot(kin[:, 1], kin[:, 2])
     pocket = np.array([np.sum(q * np.sin(psi) + f_r * np.cos(psi)), np.sum(-q * np.cos(psi) + f_r * np.sin(psi))])
     ex, ey = c["land_displacement"]
@@ -109,6 +109,35 @@ def test_the_land_carries_the_net_pocket_force_at_the_cages_displacement(caged_f
     assert norm > 0.0 and np.hypot(*(land + pocket)) < 1e-7 * norm
     turn = np.angle(np.exp(1j * (np.arctan2(ey, ex) - np.arctan2(pocket[1], pocket[0]))))
     assert abs(turn - float(short_bearing_attitude_angle(c["land_eccentricity"]))) < 1e-6
+
+
+def test_the_cages_displacement_does_not_depend_on_the_start(caged, caged_feedback):
+    """The displacement's balance at the solution has one root among those reached from the survey's 17 starts
+    spread over the land clearance (``land_feedback_roots``), and the whole solve started from the solution
+    without the feedback (other ring displacements, kinematics and cage speed) ends at the same displacement
+    and cage speed, within 1e-6 of the land clearance and 1e-9 relative."""
+    c = caged_feedback.cage
+    assert c["land_feedback_converged"] and c["land_feedback_roots"] == 1
+    other = solve_quasistatic(B, 3000.0, omega=500.0, control="equilibrium", cage="rigid", land_feedback=True,
+                              start=caged, **QUICK)
+    assert other.cage["land_feedback_converged"] and other.cage["land_feedback_roots"] == 1
+    assert np.hypot(*np.subtract(other.cage["land_displacement"], c["land_displacement"])) \
+        < 1e-6 * c["rigid_cage"].land_clearance
+    assert abs(other.cage["speed"] / c["speed"] - 1.0) < 1e-9
+
+
+def test_a_land_feedback_that_does_not_converge_says_so():
+    """The 20 um land (crushed film, below): the displacement's balance has no root the solver reaches; the
+    solution warns, flags it (``land_feedback_converged``) and is the one without the feedback."""
+    narrow = dataclasses.replace(estimated_cage(B), land_width=2e-5)
+    args = (B, 3000.0)
+    kw = {"omega": 500.0, "control": "equilibrium", "cage": "rigid", "rigid_cage": narrow, **QUICK}
+    with pytest.warns(CageLandWarning, match="did not converge"):
+        fed = solve_quasistatic(*args, land_feedback=True, **kw)
+    with pytest.warns(CageLandWarning):
+        plain = solve_quasistatic(*args, **kw)
+    assert not fed.cage["land_feedback_converged"] and fed.cage["land_displacement"] == (0.0, 0.0)
+    assert fed.cage["speed"] == plain.cage["speed"] and fed.cage["power_land"] == plain.cage["power_land"]
 
 
 def test_losses_come_from_the_cage_balance(caged):
@@ -359,6 +388,22 @@ def test_pocket_contact_fraction_limits():
     assert np.abs(g[1] - g[0]).max() < 1e-5
 
 
+def test_pocket_contact_fraction_is_continuous_where_a_ball_leaves_its_wall():
+    """The time on a wall ends where the drift rate turns inward, inside a sub-step (the rate linear in time
+    over it): the fraction moves smoothly with the drift, no jump of a sub-step's time (1/64 of a spacing per
+    ball, 1.6 %) when the turn crosses a sub-step's end. A scan of a common drift over 4000 values: every step
+    changes each fraction by less than 1e-3 (the rate constant over each sub-step, as before, jumped by 1/64
+    at 6 steps of this scan), while the scan moves the largest by more than 0.5."""
+    from exudyn_bearing.solvers.quasistatic.solve import pocket_contact_fraction
+
+    z, r, c, wc = 9, 0.03, 50e-6, 200.0
+    psi = 2 * np.pi * np.arange(z) / z
+    shifts = np.linspace(0.0, 0.02, 4000)
+    f = np.array([pocket_contact_fraction(0.01 + s + 0.3 * np.cos(psi), psi, wc, r, c) for s in shifts])
+    assert np.ptp(f, axis=0).max() > 0.5
+    assert np.abs(np.diff(f, axis=0)).max() < 1e-3
+
+
 def test_pocket_contact_fraction_with_a_displaced_cage_by_hand():
     """No drift of its own (u = 0): the ball's position relative to its pocket is minus the pocket's offset,
     here a cage displaced by e: o(psi) = e . e_psi, sampled at 4 azimuths (A, 0, -A, 0) and linear between.
@@ -423,7 +468,8 @@ def test_pocket_play_lowers_the_cage_losses_of_unequal_balls():
     assert free.size and np.all(np.abs(free / play.cage["speed"] - 1.0) < 0.01)
     axial = solve_quasistatic(b, 0.0, 3000.0, **common)
     assert np.all(axial.balls["pocket_contact_fraction"] == 1.0)
-    assert axial.cage["land_eccentricity"] == 0.0 and play.cage["land_eccentricity"] > 0.0
+    # every ball alike: the net pocket force is round-off (1e-11 N), its eccentricity too
+    assert axial.cage["land_eccentricity"] < 1e-9 and play.cage["land_eccentricity"] > 1e-3
 
 
 def test_acbb120_rigid_cage_dem_equals_the_quasistatic_equilibrium():

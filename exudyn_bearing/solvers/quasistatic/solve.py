@@ -57,7 +57,8 @@ from ...physics.contact_slip import (DEFAULT_N_ACROSS, DEFAULT_N_STRIPS, MAX_N_A
 from ...physics.geometry import _raceway_radii_cos
 from ...physics.load_distribution import check_axial_load
 from ...physics.losses import LOSS_FLOOR_MU
-from ...physics.short_bearing import short_bearing_force_xy, short_bearing_load_number, short_bearing_shear_torque
+from ...physics import short_bearing as _sb
+from ...physics.short_bearing import short_bearing_load_number, short_bearing_shear_torque
 from . import kinematics as km
 from .balls import B_CR, B_CZ, B_DI, B_DO, B_NIR, B_NIZ, B_NOR, B_NOZ, B_QI, B_QO
 from ...model.load_range import MAX_CONTACT_PRESSURE, check_load_estimate, check_pressures, pressure_excess
@@ -299,9 +300,11 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
         Feed the land-guided cage's steady displacement on its land back into the pocket play
         (docs/theory/quasistatic.md#the-cages-displacement): the pockets move with the cage, so the balls meet
         their walls elsewhere and the net pocket force the land carries changes; solved by pseudo-transient
-        continuation, a ``CageLandWarning`` and the solution without it when that does not converge (the
-        cage's ``land_feedback_converged``). Off by default (the solution with the centred cage's pockets);
-        needs a land-guided ``cage="rigid"``.
+        continuation, a ``CageLandWarning`` and the solution without it when that does not converge or the
+        cage's torque does not balance with it (the cage's ``land_feedback_converged``); the displacement's
+        roots at the solution surveyed from 17 starts, a ``CageLandWarning`` when more than one (the cage's
+        ``land_feedback_roots``). Off by default (the solution with the centred cage's pockets); needs a
+        land-guided ``cage="rigid"``.
 
     Returns
     -------
@@ -425,7 +428,10 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
     loaded_all = np.zeros(z, dtype=bool)
     try:  # a singular ring or kinematics system: loads far beyond what the contacts carry
         for stage in phases:
-            tol = 1e-10 if stage == "race" else 1e-7
+            # the rigid cage: 1e-9, as its energy balance, the held and free balls mixed by the fractions of the
+            # last cage balance, amplifies the last change (the traction's creep stiffness): at 1e-7 the 6208
+            # radial case closed it to 1.9e-8, with the land feedback to 2.3e-8 at 1e-8; at 1e-9 to 4e-11, 6e-12
+            tol = 1e-10 if stage == "race" else (1e-7 if rc is None else 1e-9)
             for _it in range(40 if stage == "race" else 12):
                 it_total += 1
                 g_mom = inertia * kin[:, 0] * kin[:, 1]        # J omega_m w_r: moment about e_psi [N m]
@@ -482,8 +488,10 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
                         else:
                             new[j, :3], checks[j] = km.minimum_energy(geo[j], model, n_strips, n_across, kin[j])
                 if rc is not None:
+                    # the land feedback in the last stage only (the earlier one is the start of its iterations)
                     new, cage_info = _solve_cage(geo, loaded_all, controls.copy(), stage, kin, rc, model, n_strips,
-                                                 n_across, inertia, lub, w_i, w_o, psi, film, land_feedback)
+                                                 n_across, inertia, lub, w_i, w_o, psi, film,
+                                                 land_feedback and stage == phases[-1])
                     controls[:] = cage_info["controls"]
                     if stage in ("equilibrium", "min-energy"):
                         checks = list(cage_info["checks"])
@@ -898,7 +906,7 @@ def _land_state(rc, lub, omega_c, omega_ring, force):
     elif scale * float(short_bearing_load_number(eps_c)) <= force:
         eps, crushed = eps_c, True
     else:
-        eps = _opt.brentq(lambda e: scale * float(short_bearing_load_number(e)) - force, tiny, eps_c, xtol=1e-14)
+        eps = _opt.brentq(lambda e: scale * float(_sb._load_number(e)) - force, tiny, eps_c, xtol=1e-14)
     torque = float(short_bearing_shear_torque(eps, omega_c - omega_ring, mu, r, length, c))
     return eps, torque, crushed
 
@@ -906,26 +914,26 @@ def _land_state(rc, lub, omega_c, omega_ring, force):
 def _land_displacement(rc, lub, omega_c, omega_ring, fx, fy):
     """The cage centre's steady displacement (e_x, e_y) [m] from its guiding land's centre at which the land
     film carries the net in-plane pocket force (``fx``, ``fy``) [N] on the cage, with :func:`_land_state`'s
-    (eps, torque, crushed): eps = |e| / c from Ocvirk's load number (:func:`_land_state`), and the direction
-    from the film's force at that eps and zero rates,
-    :func:`~exudyn_bearing.physics.short_bearing.short_bearing_force_xy` (the reference engine's land force,
-    surfaces at ``omega_c`` + ``omega_ring``): e is turned so that this force is -(fx, fy), i.e. e lies at the
-    short bearing's attitude angle phi, tan phi = pi sqrt(1 - eps^2) / (4 eps) (Ocvirk; Hamrock et al., ch.
-    10), from the pocket force, ahead in the sense of omega_c + omega_ring. Crushed (eps at the crush
-    eccentricity): the film's direction there. With no film force (no speed) e is along (fx, fy)."""
+    (eps, torque, crushed): eps = |e| / c from Ocvirk's load number (:func:`_land_state`), and e at the short
+    bearing's attitude angle phi, tan phi = pi sqrt(1 - eps^2) / (4 eps) (Ocvirk; Hamrock et al., ch. 10),
+    from the pocket force, ahead in the sense of ``omega_c`` + ``omega_ring``: there the reference engine's
+    land force at zero rates (:func:`~exudyn_bearing.physics.short_bearing.short_bearing_force_xy`) is
+    -(fx, fy). Crushed (eps at the crush eccentricity): the direction at that eps. With no film force (no
+    speed) e is along (fx, fy)."""
     eps, torque, crushed = _land_state(rc, lub, omega_c, omega_ring, math.hypot(fx, fy))
     if eps == 0.0:
         return 0.0, 0.0, eps, torque, crushed
-    c = rc.land_clearance
-    lx, ly = (float(v) for v in short_bearing_force_xy(eps * c, 0.0, 0.0, 0.0, omega_c + omega_ring,
-                                                        lub.viscosity, rc.guide_radius, rc.land_width, c))
-    turn = math.atan2(fy, fx) if lx == 0.0 and ly == 0.0 else math.atan2(-fy, -fx) - math.atan2(ly, lx)
+    c, spin = rc.land_clearance, omega_c + omega_ring
+    turn = math.atan2(fy, fx) + (0.0 if spin == 0.0 else math.copysign(float(_sb._attitude(eps)), spin))
     return eps * c * math.cos(turn), eps * c * math.sin(turn), eps, torque, crushed
 
 
 #: Tolerance of the cage's displacement on its land (:func:`_land_feedback`): the residual |G(F(e)) - e| of
 #: its balance below this share of the land clearance.
 LAND_FEEDBACK_TOLERANCE = 1e-10
+#: Relative residual of the cage's torque (:func:`_cage_balance`) above which the balance with the land
+#: feedback is not taken (the torque jumped between roots of the displacement at the cage speed found).
+LAND_FEEDBACK_TORQUE_TOLERANCE = 1e-9
 #: Pseudo-transient steps of :func:`_land_feedback` before its fallback.
 LAND_FEEDBACK_STEPS = 60
 #: Iterations of the damped fixed point that is :func:`_land_feedback`'s fallback.
@@ -964,7 +972,7 @@ def _relax(land, v, r, limit, c, best, tol):
         v, r = w, rw
 
 
-def _land_feedback(rc, lub, omega_c, omega_ring, net_force, start=(0.0, 0.0)):
+def _land_feedback(rc, lub, omega_c, omega_ring, net_force, start=(0.0, 0.0), alone=False):
     """The cage's displacement e on its land balanced with the net pocket force it causes
     (docs/theory/quasistatic.md#the-cages-displacement): the root of R(e) = G(F(e)) - e, F = ``net_force(e)``
     the net in-plane pocket force [N] (the pocket play with the pockets displaced by e . e_psi), G the land's
@@ -982,7 +990,8 @@ def _land_feedback(rc, lub, omega_c, omega_ring, net_force, start=(0.0, 0.0)):
     times the land clearance c; else the state without the feedback (e = 0, the land carrying F(0)), which
     the solution's CageLandWarning reports. A zero net force at e = 0 (a pure axial load) gives e = 0 at once. Returns
     (ex, ey, eps, torque, crushed, dict with converged, evaluations, residual [m]); eps, torque and crushed are
-    the land's carrying F(e) (:func:`_land_displacement`)."""
+    the land's carrying F(e) (:func:`_land_displacement`). ``alone``: the continuation from ``start`` only (no
+    second start, no fixed point; :func:`_land_roots`)."""
     c = rc.land_clearance
     tol = LAND_FEEDBACK_TOLERANCE * c
     count = [0]
@@ -1010,7 +1019,7 @@ def _land_feedback(rc, lub, omega_c, omega_ring, net_force, start=(0.0, 0.0)):
     # 1e-7), dt from 1 grown by |R| falling (switched evolution relaxation) up to Newton's steps; a step that
     # more than doubles |R| is retaken at dt / 4; kept inside the crush circle
     limit = max(0.5, 1.0 - lub.composite_roughness / c)
-    for first in dict.fromkeys(((start[0] / c, start[1] / c), (0.0, 0.0))):
+    for first in dict.fromkeys(((start[0] / c, start[1] / c),) + (() if alone else ((0.0, 0.0),))):
         if first == (0.0, 0.0):
             v, r = np.zeros(2), np.array([g0[0], g0[1]]) / c
         else:
@@ -1022,6 +1031,8 @@ def _land_feedback(rc, lub, omega_c, omega_ring, net_force, start=(0.0, 0.0)):
         _relax(land, v, r, limit, c, best, tol)
         if best[0] <= tol:
             return done()
+    if alone:
+        return done()
     ex = ey = 0.0
     g, a, last = g0, 1.0, math.inf
     for _ in range(LAND_FEEDBACK_ITERATIONS):
@@ -1036,6 +1047,29 @@ def _land_feedback(rc, lub, omega_c, omega_ring, net_force, start=(0.0, 0.0)):
     return done()
 
 
+#: The starts of :func:`_land_roots`: the centre and 8 azimuths at these eccentricities.
+LAND_SURVEY_ECCENTRICITIES = (0.4, 0.8)
+#: Two roots of :func:`_land_roots` are one where they lie closer than this share of the land clearance.
+LAND_ROOT_SEPARATION = 1e-6
+
+
+def _land_roots(rc, lub, omega_c, omega_ring, net_force, root):
+    """The roots of the cage's displacement balance (:func:`_land_feedback`) at one cage speed reached from a
+    survey of starts spread over the land clearance c (the centre and 8 azimuths at each of
+    LAND_SURVEY_ECCENTRICITIES times c), each by the continuation from it alone; with the solution's ``root``
+    [m] the distinct ones (apart by more than LAND_ROOT_SEPARATION c), as an (n, 2) array [m], ``root``
+    first. More than one: the balance is not unique there, the solution's root the one its starts reach."""
+    c = rc.land_clearance
+    roots = [np.asarray(root, float)]
+    starts = [(0.0, 0.0)] + [(eps * c * math.cos(a), eps * c * math.sin(a)) for eps in LAND_SURVEY_ECCENTRICITIES
+                             for a in np.arange(8) * np.pi / 4.0]
+    for st in starts:
+        ex, ey, *_, info = _land_feedback(rc, lub, omega_c, omega_ring, net_force, st, alone=True)
+        if info["converged"] and all(math.hypot(ex - r[0], ey - r[1]) > LAND_ROOT_SEPARATION * c for r in roots):
+            roots.append(np.array([ex, ey]))
+    return np.array(roots)
+
+
 def _alike(geo, j):
     """The first ball before ``j`` whose contact geometry equals ball j's (rtol 1e-12: balls alike by symmetry,
     solved once), else None."""
@@ -1043,21 +1077,72 @@ def _alike(geo, j):
 
 
 @kernel
-def _play_walls(step, dt, start, s, clearance, on):
-    """The play operator of :func:`pocket_contact_fraction` over one revolution (compiled): the ball at ``s``
-    [m] from its pocket's centre moves by ``step`` [m] in each sub-step of ``dt`` [s], starting at sub-step
-    ``start`` (cyclically), the walls at +-``clearance``; writes to ``on`` the time of each sub-step on a wall,
-    from the instant it is reached."""
-    n = step.size
-    for i in range(n):
-        m = (start + i) % n
-        ds = step[m]
-        wall = clearance if ds > 0.0 else -clearance
-        if ds != 0.0 and abs(s + ds) >= clearance:      # on the wall from where it reaches it
-            on[m] = dt[m] * (1.0 - (wall - s) / ds)
-            s = wall
+def _first_wall(s, r, k, span, clearance):
+    """The first time tau in (0, ``span``] at which the ball at ``s`` [m], moving at the rate r + k tau [m/s],
+    reaches a wall at +-``clearance`` moving outward; -1 if none (:func:`_play_walls`)."""
+    best = -1.0
+    for wall in (clearance, -clearance):
+        d = s - wall                                   # s(tau) - wall = d + r tau + k tau^2 / 2
+        roots = (-1.0, -1.0)
+        if k == 0.0:
+            if r != 0.0:
+                roots = (-d / r, -1.0)
         else:
-            s += ds
+            disc = r * r - 2.0 * k * d
+            if disc >= 0.0:
+                q = -0.5 * (r + math.copysign(math.sqrt(disc), r))    # the stable pair of roots
+                roots = (q / (0.5 * k), d / q if q != 0.0 else -1.0)
+        for tau in roots:
+            rate = r + k * tau
+            if 0.0 < tau <= span and rate * wall > 0.0 and (best < 0.0 or tau < best):
+                best = tau
+    return best
+
+
+@kernel
+def _play_walls(a, b, dt, start, s, clearance, on):
+    """The play operator of :func:`pocket_contact_fraction` (compiled): the ball at ``s`` [m] from its pocket's
+    centre moves at a rate linear in time over each sub-step of ``dt`` [s], from ``a`` to ``b`` [m/s], the walls
+    at +-``clearance``; from sub-step ``start`` (cyclically) two revolutions, of which the second's time on a
+    wall per sub-step goes to ``on``. Exact for that rate: the ball reaches a wall where its quadratic path does,
+    and rests on it while the rate pushes it outward, leaving where the rate turns (so the time on a wall is
+    continuous in the rates, which a rate constant over each sub-step would not make it at the instant it
+    leaves)."""
+    n = a.size
+    for i in range(2 * n):
+        m = (start + i) % n
+        h = dt[m]
+        k = (b[m] - a[m]) / h if h > 0.0 else 0.0
+        t, held = 0.0, 0.0
+        for _ in range(8):                             # at most a few segments per sub-step (the rate is linear)
+            if t >= h:
+                break
+            r = a[m] + k * t
+            side = 1.0 if s >= clearance else (-1.0 if s <= -clearance else 0.0)
+            if side != 0.0 and (r * side > 0.0 or (r == 0.0 and k * side > 0.0)):
+                turn = -a[m] / k if k != 0.0 else h    # on the wall until the rate turns inward
+                end = turn if t < turn < h else h
+                held += end - t
+                s, t = side * clearance, end
+                if end < h:                            # leaving: one free segment from the turn
+                    r = 0.0
+                    hit = _first_wall(s, r, k, h - t, clearance)
+                    if hit < 0.0:
+                        s += 0.5 * k * (h - t) ** 2
+                        t = h
+                    else:
+                        s, t = math.copysign(clearance, k), t + hit
+                continue
+            hit = _first_wall(s, r, k, h - t, clearance)
+            if hit < 0.0:                              # free to the sub-step's end
+                s += r * (h - t) + 0.5 * k * (h - t) ** 2
+                t = h
+            else:
+                s = clearance if r + k * hit > 0.0 else -clearance
+                t += hit
+        s = min(max(s, -clearance), clearance)
+        if i >= n:
+            on[m] = held
 
 
 def pocket_contact_fraction(u, psi, omega_c, radius, clearance, substeps=64, offset=None):
@@ -1069,11 +1154,12 @@ def pocket_contact_fraction(u, psi, omega_c, radius, clearance, substeps=64, off
     at s = +-``clearance`` [m] (a play operator: while it rests on a wall and u pushes it outward it moves with
     the cage, the pocket holding it at the cage's speed). ``u`` is sampled at the balls' azimuths ``psi`` [rad]
     (one ball seen at every azimuth: the quasi-static solution is steady in the cage's frame), linear between
-    them, integrated over ``substeps`` steps per spacing (the wall reached within a step counted to the
-    instant, so that the fraction is continuous in ``u``). The periodic solution: with a net drift D per
+    them, integrated over ``substeps`` steps per spacing, exactly for that rate linear in time
+    (:func:`_play_walls`: the wall reached and left where the path and the rate say, so that the fraction is
+    continuous in ``u``). The periodic solution: with a net drift D per
     revolution of the free path S(t), the ball rests on the front wall (D > 0; the back wall for D < 0) where S
-    reaches its largest (smallest) value of the revolution, so one revolution from there is periodic; with no
-    net drift it floats when S spans less than the play 2 ``clearance``. Returns the fraction in [0, 1] per
+    reaches its largest (smallest) value of the revolution, so the second revolution from there is periodic;
+    with no net drift it floats when S spans less than the play 2 ``clearance``. Returns the fraction in [0, 1] per
     ball: the time on a wall within half a spacing either side of its azimuth.
 
     ``offset`` [m] (None: none): the pocket centre's displacement along e_psi (the +psi tangent) at each
@@ -1089,19 +1175,23 @@ def pocket_contact_fraction(u, psi, omega_c, radius, clearance, substeps=64, off
     gaps = np.diff(np.append(ang, ang[0] + 2.0 * np.pi))
     rate = radius * u[order] * direction                  # ds/dt [m/s] at each azimuth, in travel order
     x = (np.arange(substeps) + 0.5) / substeps
-    r = ((1.0 - x)[None, :] * rate[:, None] + x[None, :] * np.roll(rate, -1)[:, None]).ravel()
+    x0, x1 = np.arange(substeps) / substeps, np.arange(1, substeps + 1) / substeps
+    a = ((1.0 - x0)[None, :] * rate[:, None] + x0[None, :] * np.roll(rate, -1)[:, None])   # the rate at each
+    b = ((1.0 - x1)[None, :] * rate[:, None] + x1[None, :] * np.roll(rate, -1)[:, None])   # sub-step's ends
     dt = np.repeat(gaps / max(abs(omega_c), 1e-300) / substeps, substeps)
     owner = np.where(x[None, :] < 0.5, np.arange(z)[:, None], (np.arange(z)[:, None] + 1) % z).ravel()
-    step = r * dt
     if offset is not None:                                # the pocket's own motion along the travel, subtracted
         o = direction * np.asarray(offset, float)[order]
-        step = step - np.repeat((np.roll(o, -1) - o) / substeps, substeps)
+        moving = ((np.roll(o, -1) - o) * max(abs(omega_c), 1e-300) / gaps)[:, None]
+        a, b = a - moving, b - moving
+    a, b = a.ravel(), b.ravel()
+    step = 0.5 * (a + b) * dt
     path = np.cumsum(step)                                # the free path S over one revolution
-    on = np.zeros(r.size)
+    on = np.zeros(a.size)
     if abs(path[-1]) > 1e-12 * clearance or np.ptp(np.append(path, 0.0)) > 2.0 * clearance:
         side = 1.0 if path[-1] >= 0.0 else -1.0
         start = int(np.argmax(path) if side > 0.0 else np.argmin(path)) + 1
-        _play_walls(step, dt, start, side * clearance, clearance, on)
+        _play_walls(a, b, dt, start % a.size, side * clearance, clearance, on)
     time = np.bincount(owner, weights=dt, minlength=z)
     held = np.bincount(owner, weights=on, minlength=z)
     out = np.empty(z)
@@ -1242,6 +1332,9 @@ def _caged_balls(omega_c, geo, loaded, races, stage, kin, rc, model, n_strips, n
                                                                     land_hint.get("e", (0.0, 0.0)))
             if "e" not in land_hint:  # the first call's root (or e = 0 without one) starts every later one
                 land_hint["e"] = (ex, ey) if feedback["converged"] else (0.0, 0.0)
+            if feedback["converged"]:  # is it unique? asked of the solution's balance only (_cage_result)
+                feedback["survey"] = lambda: _land_roots(rc, lub, omega_c, w_ring, lambda x, y: pockets(x, y)[4:],
+                                                         (ex, ey))
     f, q_p, q_contact, film_out, fx, fy = pockets(ex, ey)
     t_normal = -q_p * cr
     t_friction = mu_c * np.abs(q_contact) * rb * wz_unit
@@ -1300,18 +1393,25 @@ def _solve_cage(geo, loaded, races, stage, kin, rc, model, n_strips, n_across, i
         return _cage_balance(None, free, geo, loaded, races, stage, kin, rc, model, n_strips, n_across, inertia, lub,
                              w_i, w_o, psi, film)
     try:
-        return _cage_balance({}, free, geo, loaded, races, stage, kin, rc, model, n_strips, n_across, inertia, lub,
-                             w_i, w_o, psi, film)
+        k, info = _cage_balance({}, free, geo, loaded, races, stage, kin, rc, model, n_strips, n_across, inertia, lub,
+                                w_i, w_o, psi, film)
+        feedback = info["land_feedback"]
+        if feedback["converged"] and abs(info["torque_residual"]) <= LAND_FEEDBACK_TORQUE_TOLERANCE:
+            return k, info
+        why = (f"the cage's torque with the displacement fed back does not balance at the cage speed found "
+               f"(relative residual {info['torque_residual']:.2g}: a jump between roots of the displacement)"
+               if feedback["converged"] else
+               f"{feedback['evaluations']} evaluations, residual {feedback['residual']:.3e} m, tolerance "
+               f"{LAND_FEEDBACK_TOLERANCE:g} of the land clearance {rc.land_clearance:.3e} m")
     except (ValueError, InputError):
         # with the feedback the cage's torque need not be one function of the cage speed (the displacement's
-        # balance can have several roots, or converge at some cage speeds and not at others): no bracketed root;
-        # the balance without the feedback, and the solution says so (CageLandWarning)
-        k, info = _cage_balance(None, free, geo, loaded, races, stage, kin, rc, model, n_strips, n_across, inertia,
-                                lub, w_i, w_o, psi, film)
-        info["land_feedback"] = {"converged": False, "evaluations": 0, "residual": math.nan,
-                                 "why": "the cage's torque with the displacement fed back has no bracketed root "
-                                        "in the cage speed"}
-        return k, info
+        # balance can have several roots, or converge at some cage speeds and not at others): no bracketed root
+        why = "the cage's torque with the displacement fed back has no bracketed root in the cage speed"
+    # the balance without the feedback, and the solution says so (CageLandWarning)
+    k, info = _cage_balance(None, free, geo, loaded, races, stage, kin, rc, model, n_strips, n_across, inertia,
+                            lub, w_i, w_o, psi, film)
+    info["land_feedback"] = {"converged": False, "evaluations": 0, "residual": math.nan, "why": why}
+    return k, info
 
 
 def _cage_balance(hint, free, geo, loaded, races, stage, kin, rc, model, n_strips, n_across, inertia, lub, w_i, w_o,
@@ -1388,14 +1488,21 @@ def _cage_result(rc, info, out, moving, w_i, film=None):
         gap = info.get("pocket_film_gap")
         out["pocket_film_gap"] = np.full(z, film.clearance) if gap is None else np.asarray(gap, float).copy()
     feedback = info.get("land_feedback")
+    found = None if feedback is None or not feedback["converged"] else feedback["survey"]()
+    roots = 1 if found is None else len(found)
     if feedback is not None and not feedback["converged"]:
         warnings.warn(CageLandWarning(
             "rigid_cage: the cage's displacement on its land and the pocket play it shifts did not converge ("
-            + (feedback["why"] if "why" in feedback else
-               f"{feedback['evaluations']} evaluations, residual {feedback['residual']:.3e} m, tolerance "
-               f"{LAND_FEEDBACK_TOLERANCE:g} of the land clearance {rc.land_clearance:.3e} m")
-            + "): the solution is the one without the feedback (the pockets of the centred cage, the land carrying "
-            "their net force)"),
+            + feedback["why"] + "): the solution is the one without the feedback (the pockets of the centred cage, "
+            "the land carrying their net force)"), stacklevel=3)
+    elif roots > 1:
+        others = "; ".join(f"({x / rc.land_clearance:+.3f}, {y / rc.land_clearance:+.3f})"
+                           for x, y in found[1:])
+        warnings.warn(CageLandWarning(
+            f"rigid_cage: the cage's displacement on its land is not unique at the cage speed found: {roots} roots "
+            f"from {1 + 8 * len(LAND_SURVEY_ECCENTRICITIES)} starts over the land clearance (e / c: the solution's "
+            f"({found[0][0] / rc.land_clearance:+.3f}, {found[0][1] / rc.land_clearance:+.3f}),"
+            f" others {others}); the solution's is the one its relaxation from the balls' mean speed reaches"),
             stacklevel=3)
     if info["land_crushed"]:
         warnings.warn(CageLandWarning(
@@ -1413,4 +1520,5 @@ def _cage_result(rc, info, out, moving, w_i, film=None):
             "land_displacement": tuple(float(v) for v in info.get("land_displacement", (0.0, 0.0))),
             "land_feedback_converged": bool(feedback is None or feedback["converged"]),
             "land_feedback_evaluations": 0 if feedback is None else int(feedback["evaluations"]),
+            "land_feedback_roots": int(roots),
             "ring_speed": float(info.get("ring_speed", w_i)), "rigid_cage": rc}
