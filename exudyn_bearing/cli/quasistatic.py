@@ -162,7 +162,7 @@ def run_thermal(args, b, omega, traction):
                           fit=args.fit, fixed=fixed_from_args(args), hertz_method=args.hertz,
                           n_strips=args.strips, n_across=args.points_across,
                           cage=None if args.cage == "none" else args.cage, pocket_film=args.pocket_film,
-                              land_feedback=args.land_feedback)
+                          land_feedback=args.land_feedback)
     s = r.quasistatic
     warn_speed(b, omega, args.omega_outer)
     rating = rating_of(args, b, s, r.lubricant, r.contact_temperature)

@@ -69,6 +69,7 @@ def quasistatic(cage, case=CASE, bearing="7208", pocket_film=False, land_feedbac
             "q_max_inner": s.q_max_inner, "q_max_outer": s.q_max_outer, "energy_residual": s.energy_residual,
             "torque_residual": c.get("torque_residual"),
             "land_feedback_converged": c.get("land_feedback_converged"),
+            "land_feedback_roots": c.get("land_feedback_roots"),
             # the solver's own check of the balls' inertia along the orbit (solvers/quasistatic/inertia.py)
             "inertia_power": (s.inertia_check or {}).get("power"), "inertia_share": (s.inertia_check or {}).get("share")}
 
@@ -136,6 +137,16 @@ def film_comparison(dt, t_end, out):
     print(f"wrote {out / 'quasistatic_cage_film.json'}")
 
 
+def land_line(q, d):
+    """The cage on its land, quasi-static (steady) against the DEM (over its window): the land force [N] (the
+    DEM's mean), the eccentricity (the DEM's largest), the quasi-static solve's wall time and, with the
+    feedback, its displacement's roots at the solution."""
+    return (f"land force QS {q['land_force']:.3g} / DEM mean {d['land_force_mean']:.3g} N, eccentricity QS "
+            f"{q['land_eccentricity']:.3g} / DEM max {d['land_eccentricity_max']:.3g}; QS solve {q['wall_s']:.1f} s"
+            + ("" if q.get("land_feedback_roots") in (None, 1) else
+               f"; the displacement has {q['land_feedback_roots']} roots at the QS solution"))
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--t-end", type=float, default=0.5, help="simulated time of each DEM run [s]")
@@ -168,6 +179,7 @@ def main(argv=None):
           + f"; DEM {args.t_end} s, window "
           + ", ".join(f"{report[c]['window.t0']:.3g}-{report[c]['window.t1']:.3g} s" for c in cols[2:]))
     print(f"{'':20s}" + "".join(f"{c:>22s}" for c in cols))
+    print(land_line(report["quasistatic_rigid"], report[cols[-1]]))
     for r in rows:
         print(f"{r:20s}" + "".join(f"{report[c].get(r) if report[c].get(r) is not None else float('nan'):22.5g}"
                                    for c in cols))
@@ -198,7 +210,7 @@ def main(argv=None):
               f"{d['dissipation_contacts']:.2f}, pocket {q['cage_power_pocket']:.2f} / {d['cage_power_pocket']:.2f}, "
               f"land {q['cage_power_land']:.2f} / {d['cage_power_land']:.2f} W; cage {q['cage_speed']:.3f} / "
               f"{d['cage_speed']:.3f} rad/s; QS ball-inertia check {q['inertia_power']:.3g} W "
-              f"({100 * q['inertia_share']:.3g} % of its dissipation)"
+              f"({100 * q['inertia_share']:.3g} % of its dissipation); " + land_line(q, d)
               + ("" if q["land_feedback_converged"] in (None, True) else
                  "; the cage's displacement did NOT converge: the quasi-static row is the solution without it"),
               flush=True)
