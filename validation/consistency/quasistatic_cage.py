@@ -24,6 +24,10 @@ side, and the differences of the quasi-static solution with the film from the en
     python validation/consistency/quasistatic_cage.py [--t-end 0.5] [--dt 1.5e-6 0.75e-6] [--case FR FA ...]
         [--land-feedback] [--out validation/out/quasistatic_cage]
     python validation/consistency/quasistatic_cage.py --pocket-film [--t-end 0.2] [--dt 1.5e-6]
+    python validation/consistency/quasistatic_cage.py --cost REPEATS [--case FR FA ...]
+
+``--cost``: the quasi-static solve's wall time without and with ``--land-feedback`` (medians of REPEATS runs),
+on the 6208 radial case, the 7208 case above and each ``--case``; no DEM.
 """
 from __future__ import annotations
 
@@ -137,6 +141,30 @@ def film_comparison(dt, t_end, out):
     print(f"wrote {out / 'quasistatic_cage_film.json'}")
 
 
+def cost(repeats, cases, out):
+    """--cost: the quasi-static solve's wall time without and with the land feedback (medians of ``repeats``
+    runs, alternating, after one solve that loads the compiled kernels) and the feedback's state."""
+    quasistatic("rigid", FILM_CASE, "6208")
+    report = []
+    for bearing, case in cases:
+        runs = {False: [], True: []}
+        for _ in range(repeats):
+            for fb in (False, True):
+                with warnings.catch_warnings():
+                    warnings.simplefilter("ignore")
+                    q = quasistatic("rigid", case, bearing, land_feedback=fb)
+                runs[fb].append(q["wall_s"])
+        off, on = float(np.median(runs[False])), float(np.median(runs[True]))
+        report.append({"bearing": bearing, "case": case, "wall_s_without": runs[False], "wall_s_with": runs[True],
+                       "land_feedback_converged": q["land_feedback_converged"],
+                       "land_feedback_roots": q["land_feedback_roots"]})
+        print(f"{bearing} F_r {case['Fr']:g} N, F_a {case['Fa']:g} N: QS solve without the land feedback {off:.2f} s, "
+              f"with {on:.2f} s (x{on / off:.1f}; medians of {repeats}); with: converged "
+              f"{q['land_feedback_converged']}, roots {q['land_feedback_roots']}", flush=True)
+    (out / "quasistatic_cage_cost.json").write_text(json.dumps(report, indent=2, default=float))
+    print(f"wrote {out / 'quasistatic_cage_cost.json'}")
+
+
 def land_line(q, d):
     """The cage on its land, quasi-static (steady) against the DEM (over its window): the land force [N] (the
     DEM's mean), the eccentricity (the DEM's largest), the quasi-static solve's wall time and, with the
@@ -159,12 +187,19 @@ def main(argv=None):
     ap.add_argument("--land-feedback", action="store_true",
                     help="the quasi-static cage's displacement on its land fed back into the pocket play "
                          "(solve_quasistatic(..., land_feedback=True)); the DEM is the same")
+    ap.add_argument("--cost", type=int, metavar="REPEATS",
+                    help="instead: the quasi-static solve's wall time without and with --land-feedback, medians of "
+                         "REPEATS runs each (alternating), on the 6208 radial case (F_r = 3000 N, its estimated "
+                         "cage), the 7208 case above and each --case; no DEM")
     ap.add_argument("--out", default=str(ROOT / "validation" / "out" / "quasistatic_cage"))
     args = ap.parse_args(argv)
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     if args.pocket_film:
         return film_comparison(args.dt[0], args.t_end, out)
+    if args.cost:
+        return cost(args.cost, [("6208", FILM_CASE), ("7208", CASE)]
+                    + [("7208", {"Fr": fr, "Fa": fa, "omega": CASE["omega"]}) for fr, fa in args.case or []], out)
     report = {"case": CASE, "t_end_s": args.t_end, "quasistatic_cageless": quasistatic(None),
               "quasistatic_rigid": quasistatic("rigid", land_feedback=args.land_feedback),
               "land_feedback": args.land_feedback}
