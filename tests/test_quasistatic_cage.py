@@ -89,7 +89,7 @@ def test_the_land_carries_the_net_pocket_force_at_the_cages_displacement(caged_f
     """The cage's displacement e on its land (docs/theory/quasistatic.md#the-cages-displacement): the land
     film's force there (the reference engine's short bearing, no squeeze or whirl) balances the net pocket force
     of the pockets displaced by e . e_psi, recomputed from the outputs (the weighted pocket forces along -e_psi
-    and their friction's radial part), to 1e-7 of it (the solver's tolerance: |G(F(e)) - e| below 1e-10 of the
+    and their friction's radial part), to 1e-7 of it (the solver's tolerance: |G(F(e)) - e| below 1e-8 of the
     land clearance); e lies at the short bearing's attitude angle ahead of the pocket force."""
     from exudyn_bearing.data.catalog import load_lubricant
     from exudyn_bearing.physics.short_bearing import short_bearing_attitude_angle, short_bearing_force_xy
