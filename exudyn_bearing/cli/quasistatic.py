@@ -54,6 +54,10 @@ def add_parser(sub):
                         "(march_orbit: the balls' transient that the quasi-static hypothesis leaves out, with the "
                         f"cage's torque balance; docs/theory/quasistatic.md#the-orbit-march); implicit steps per "
                         f"ball pitch, default {ORBIT_STEPS_PER_PITCH}; needs --cage rigid")
+    p.add_argument("--land-feedback", action="store_true",
+                   help="feed the land-guided rigid cage's displacement on its land back into the pocket play "
+                        "(docs/theory/quasistatic.md#the-cages-displacement; a warning and the solution without it "
+                        "when it does not converge); needs --cage rigid")
     add_traction_argument(p)
     add_lubricant_argument(p, "lubricant for the films: ")
     add_ring_growth_argument(p)
@@ -107,7 +111,8 @@ def run(args):
                               omega_outer=args.omega_outer, control=args.control, traction=traction,
                               lubricant=lub, ring_growth=args.ring_growth, fit=args.fit, temperatures=temps,
                               fixed=fixed_from_args(args), hertz_method=args.hertz, n_strips=args.strips, n_across=args.points_across,
-                              cage=None if args.cage == "none" else args.cage, pocket_film=args.pocket_film)
+                              cage=None if args.cage == "none" else args.cage, pocket_film=args.pocket_film,
+                              land_feedback=args.land_feedback)
     warn_speed(b, omega, args.omega_outer)  # after the solve: a refusal stays the one line on stderr
     t_lub = None if temps is None else (temps["inner"] + temps["outer"] + 2.0 * temps["ball"]) / 4.0
     rating = rating_of(args, b, s, lub, t_lub, temps)
@@ -181,7 +186,8 @@ def run_thermal(args, b, omega, traction):
                           omega_outer=args.omega_outer, control=args.control, ring_growth=args.ring_growth,
                           fit=args.fit, fixed=fixed_from_args(args), hertz_method=args.hertz,
                           n_strips=args.strips, n_across=args.points_across,
-                          cage=None if args.cage == "none" else args.cage, pocket_film=args.pocket_film)
+                          cage=None if args.cage == "none" else args.cage, pocket_film=args.pocket_film,
+                          land_feedback=args.land_feedback)
     s = r.quasistatic
     warn_speed(b, omega, args.omega_outer)
     rating = rating_of(args, b, s, r.lubricant, r.contact_temperature)

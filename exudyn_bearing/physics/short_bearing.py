@@ -127,7 +127,11 @@ def short_bearing_attitude_angle(eccentricity):
     >>> round(float(np.degrees(short_bearing_attitude_angle(0.5))), 2)
     53.68
     """
-    e = _eps(eccentricity)
+    return _attitude(_eps(eccentricity))
+
+
+def _attitude(e):
+    """:func:`short_bearing_attitude_angle` of a checked eps (float or array; callers that solve for eps)."""
     return np.arctan2(np.pi * np.sqrt(1.0 - e * e), 4.0 * e)
 
 
@@ -140,7 +144,11 @@ def short_bearing_load_number(eccentricity):
     >>> round(float(short_bearing_load_number(0.5)), 4)
     3.0015
     """
-    e = _eps(eccentricity)
+    return _load_number(_eps(eccentricity))
+
+
+def _load_number(e):
+    """:func:`short_bearing_load_number` of a checked eps (float or array; callers that solve for eps)."""
     s = 1.0 - e * e
     return e * np.sqrt(16.0 * e * e + np.pi ** 2 * s) / (s * s)
 

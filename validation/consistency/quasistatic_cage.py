@@ -14,7 +14,8 @@ with its inertia, docs/theory/quasistatic.md#the-orbit-march).
 
 Printed side by side: the dissipation (the quasi-static traction + pocket + land; the DEM's ``dissipation``,
 which also holds the contacts' normal damping), the cage speed, the cage losses by kind, the pocket and land
-forces, Q_max. The target: the two dissipations within 5 %.
+forces, Q_max. The target: the two dissipations within 5 %. ``--land-feedback``: the quasi-static cage's
+displacement on its land fed back into the pocket play (docs/theory/quasistatic.md#the-cages-displacement).
 
 With ``--pocket-film`` instead the ball / pocket oil film (docs/theory/quasistatic.md#the-pocket-film): the
 6208 radial case (F_r = 3000 N, 500 rad/s, its estimated rigid cage, the scenario's oil), quasi-static
@@ -24,8 +25,12 @@ first ``--dt``: the cage speed, the pocket loss (and the film's part), the land 
 side, and the differences of the quasi-static solution with the film from the engine's.
 
     python validation/consistency/quasistatic_cage.py [--t-end 0.5] [--dt 1.5e-6 0.75e-6] [--case FR FA ...]
-        [--out validation/out/quasistatic_cage]
+        [--land-feedback] [--out validation/out/quasistatic_cage]
     python validation/consistency/quasistatic_cage.py --pocket-film [--t-end 0.2] [--dt 1.5e-6]
+    python validation/consistency/quasistatic_cage.py --cost REPEATS [--case FR FA ...]
+
+``--cost``: the quasi-static solve's wall time without and with ``--land-feedback`` (medians of REPEATS runs),
+on the 6208 radial case, the 7208 case above and each ``--case``; no DEM.
 """
 from __future__ import annotations
 
@@ -67,10 +72,11 @@ def orbit_march(s):
             "revolutions": m["revolutions"]}
 
 
-def quasistatic(cage, case=CASE, bearing="7208", pocket_film=False, march=False):
+def quasistatic(cage, case=CASE, bearing="7208", pocket_film=False, land_feedback=False, march=False):
     t0 = time.perf_counter()
     s = solve_quasistatic(bearing, case["Fr"], case["Fa"], omega=case["omega"], control="equilibrium", cage=cage,
-                          fixed={"tilt_x": 0.0, "tilt_y": 0.0}, stiffness=False, pocket_film=pocket_film)
+                          fixed={"tilt_x": 0.0, "tilt_y": 0.0}, stiffness=False, pocket_film=pocket_film,
+                          land_feedback=land_feedback)
     wall = time.perf_counter() - t0
     pl = power_losses(s)["power_loss"]
     c = s.cage or {}
@@ -87,6 +93,8 @@ def quasistatic(cage, case=CASE, bearing="7208", pocket_film=False, march=False)
             "land_force": c.get("land_force"), "land_eccentricity": c.get("land_eccentricity"),
             "q_max_inner": s.q_max_inner, "q_max_outer": s.q_max_outer, "energy_residual": s.energy_residual,
             "torque_residual": c.get("torque_residual"),
+            "land_feedback_converged": c.get("land_feedback_converged"),
+            "land_feedback_roots": c.get("land_feedback_roots"),
             # the solver's own check of the balls' inertia along the orbit (solvers/quasistatic/inertia.py)
             "inertia_power": (s.inertia_check or {}).get("power"), "inertia_share": (s.inertia_check or {}).get("share"),
             "orbit_march": orbit_march(s) if march else None}
@@ -155,6 +163,40 @@ def film_comparison(dt, t_end, out):
     print(f"wrote {out / 'quasistatic_cage_film.json'}")
 
 
+def cost(repeats, cases, out):
+    """--cost: the quasi-static solve's wall time without and with the land feedback (medians of ``repeats``
+    runs, alternating, after one solve that loads the compiled kernels) and the feedback's state."""
+    quasistatic("rigid", FILM_CASE, "6208")
+    report = []
+    for bearing, case in cases:
+        runs = {False: [], True: []}
+        for _ in range(repeats):
+            for fb in (False, True):
+                with warnings.catch_warnings():
+                    warnings.simplefilter("ignore")
+                    q = quasistatic("rigid", case, bearing, land_feedback=fb)
+                runs[fb].append(q["wall_s"])
+        off, on = float(np.median(runs[False])), float(np.median(runs[True]))
+        report.append({"bearing": bearing, "case": case, "wall_s_without": runs[False], "wall_s_with": runs[True],
+                       "land_feedback_converged": q["land_feedback_converged"],
+                       "land_feedback_roots": q["land_feedback_roots"]})
+        print(f"{bearing} F_r {case['Fr']:g} N, F_a {case['Fa']:g} N: QS solve without the land feedback {off:.2f} s, "
+              f"with {on:.2f} s (x{on / off:.1f}; medians of {repeats}); with: converged "
+              f"{q['land_feedback_converged']}, roots {q['land_feedback_roots']}", flush=True)
+    (out / "quasistatic_cage_cost.json").write_text(json.dumps(report, indent=2, default=float))
+    print(f"wrote {out / 'quasistatic_cage_cost.json'}")
+
+
+def land_line(q, d):
+    """The cage on its land, quasi-static (steady) against the DEM (over its window): the land force [N] (the
+    DEM's mean), the eccentricity (the DEM's largest), the quasi-static solve's wall time and, with the
+    feedback, its displacement's roots at the solution."""
+    return (f"land force QS {q['land_force']:.3g} / DEM mean {d['land_force_mean']:.3g} N, eccentricity QS "
+            f"{q['land_eccentricity']:.3g} / DEM max {d['land_eccentricity_max']:.3g}; QS solve {q['wall_s']:.1f} s"
+            + ("" if q.get("land_feedback_roots") in (None, 1) else
+               f"; the displacement has {q['land_feedback_roots']} roots at the QS solution"))
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--t-end", type=float, default=0.5, help="simulated time of each DEM run [s]")
@@ -164,14 +206,25 @@ def main(argv=None):
     ap.add_argument("--pocket-film", action="store_true",
                     help="instead: the 6208 radial case dry and with the pocket oil film, quasi-static and DEM at the "
                          "first --dt")
+    ap.add_argument("--land-feedback", action="store_true",
+                    help="the quasi-static cage's displacement on its land fed back into the pocket play "
+                         "(solve_quasistatic(..., land_feedback=True)); the DEM is the same")
+    ap.add_argument("--cost", type=int, metavar="REPEATS",
+                    help="instead: the quasi-static solve's wall time without and with --land-feedback, medians of "
+                         "REPEATS runs each (alternating), on the 6208 radial case (F_r = 3000 N, its estimated "
+                         "cage), the 7208 case above and each --case; no DEM")
     ap.add_argument("--out", default=str(ROOT / "validation" / "out" / "quasistatic_cage"))
     args = ap.parse_args(argv)
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     if args.pocket_film:
         return film_comparison(args.dt[0], args.t_end, out)
+    if args.cost:
+        return cost(args.cost, [("6208", FILM_CASE), ("7208", CASE)]
+                    + [("7208", {"Fr": fr, "Fa": fa, "omega": CASE["omega"]}) for fr, fa in args.case or []], out)
     report = {"case": CASE, "t_end_s": args.t_end, "quasistatic_cageless": quasistatic(None),
-              "quasistatic_rigid": quasistatic("rigid", march=True)}
+              "quasistatic_rigid": quasistatic("rigid", land_feedback=args.land_feedback, march=True),
+              "land_feedback": args.land_feedback}
     report["orbit_march"] = report["quasistatic_rigid"]["orbit_march"]
     for dt in args.dt:
         report[f"dem_rigid_{dt:g}"] = dem(dt, args.t_end)
@@ -179,11 +232,14 @@ def main(argv=None):
     cols = ["quasistatic_cageless", "quasistatic_rigid", "orbit_march"] + [f"dem_rigid_{dt:g}" for dt in args.dt]
     rows = ("dissipation", "dissipation_contacts", "cage_power_pocket", "cage_power_land", "cage_speed", "pocket_force_max",
             "pocket_force_mean", "q_max_inner", "q_max_outer", "energy_residual")
-    print(f"7208, F_r = F_a = 3000 N, 500 rad/s, estimated outer-land brass cage; DEM {args.t_end} s, window "
+    print(f"7208, F_r = F_a = 3000 N, 500 rad/s, estimated outer-land brass cage"
+          + (" (quasi-static: the cage's displacement fed back into the pocket play)" if args.land_feedback else "")
+          + f"; DEM {args.t_end} s, window "
           + ", ".join(f"{report[c]['window.t0']:.3g}-{report[c]['window.t1']:.3g} s" for c in cols[3:])
           + f"; orbit march {report['orbit_march']['steps_per_revolution']} steps per revolution, last of "
             f"{report['orbit_march']['revolutions']}")
     print(f"{'':20s}" + "".join(f"{c:>22s}" for c in cols))
+    print(land_line(report["quasistatic_rigid"], report[cols[-1]]))
     for r in rows:
         print(f"{r:20s}" + "".join(f"{report[c].get(r) if report[c].get(r) is not None else float('nan'):22.5g}"
                                    for c in cols))
@@ -210,7 +266,8 @@ def main(argv=None):
     report["cases"] = []
     for fr, fa in args.case or []:
         case = {"Fr": fr, "Fa": fa, "omega": CASE["omega"]}
-        q, d = quasistatic("rigid", case, march=True), dem(args.dt[0], args.t_end, case)
+        q = quasistatic("rigid", case, land_feedback=args.land_feedback, march=True)
+        d = dem(args.dt[0], args.t_end, case)
         report["cases"].append({"case": case, "quasistatic_rigid": q, "dem": d})
         m = q["orbit_march"]
         print(f"F_r {fr:g} N, F_a {fa:g} N: dissipation QS {q['dissipation']:.2f} / DEM {d['dissipation']:.2f} W "
@@ -221,7 +278,10 @@ def main(argv=None):
               f"({100 * q['inertia_share']:.3g} % of its dissipation); orbit march: dissipation {m['dissipation']:.2f} W "
               f"({100 * (m['dissipation'] / d['dissipation'] - 1):+.1f} %), contacts {m['dissipation_contacts']:.2f}, "
               f"pocket {m['cage_power_pocket']:.2f}, land {m['cage_power_land']:.2f} W, cage {m['cage_speed']:.3f} "
-              f"rad/s, energy residual {m['energy_residual']:.2g}", flush=True)
+              f"rad/s, energy residual {m['energy_residual']:.2g}; " + land_line(q, d)
+              + ("" if q["land_feedback_converged"] in (None, True) else
+                 "; the cage's displacement did NOT converge: the quasi-static row is the solution without it"),
+              flush=True)
     # the marched ball's dissipation along its orbit against the DEM's per azimuth (inner + outer contact: per ball)
     a = report[last]["by_azimuth"]
     march = report["orbit_march"].pop("march")

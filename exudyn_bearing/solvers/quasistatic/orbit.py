@@ -276,6 +276,10 @@ def march_orbit(sol, bearing=None, *, steps_per_pitch=ORBIT_STEPS_PER_PITCH, rev
     if sol.cage.get("pocket_film"):
         raise InputError("sol: solved with the pocket oil film, which the orbit march does not model (its ball "
                          "meets a dry pocket wall); march a solution without it (pocket_film=False)")
+    if any(v != 0.0 for v in sol.cage.get("land_displacement", (0.0, 0.0))):
+        raise InputError("sol: solved with the land feedback (the cage displaced on its land, its pockets shifted), "
+                         "which the orbit march does not take (its cage stays centred); march a solution without it "
+                         "(land_feedback=False)")
     if sol.omega == sol.omega_outer:
         raise InputError("sol: the orbit march needs relative speed of the rings (omega != omega_outer)")
     steps_per_pitch = int(steps_per_pitch)

@@ -44,6 +44,7 @@ from scipy import optimize as _opt
 
 from ...data import (MAX_FREE_CONTACT_ANGLE, BallBearing, InputError, Lubricant, get_traction_model, load_bearing,
                      load_lubricant)
+from ..._jit import kernel
 from ...data.cages import RigidCage, estimated_cage
 from ...data.errors import check_bool, check_finite, check_nonnegative, check_temperatures
 from ...physics import ehl
@@ -56,6 +57,7 @@ from ...physics.contact_slip import (DEFAULT_N_ACROSS, DEFAULT_N_STRIPS, MAX_N_A
 from ...physics.geometry import _raceway_radii_cos
 from ...physics.load_distribution import check_axial_load
 from ...physics.losses import LOSS_FLOOR_MU
+from ...physics import short_bearing as _sb
 from ...physics.short_bearing import short_bearing_load_number, short_bearing_shear_torque
 from . import kinematics as km
 from .balls import B_CR, B_CZ, B_DI, B_DO, B_NIR, B_NIZ, B_NOR, B_NOZ, B_QI, B_QO, ring_forces
@@ -195,7 +197,7 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
                       traction_regularizing_srr=DEFAULT_REGULARIZING_SRR, rolling_speed_floor=None,
                       shoulder_angle=MAX_FREE_CONTACT_ANGLE, stiffness=True, start=None,
                       resolution_check=True, cage=None, rigid_cage=None, inertia_check=True,
-                      pocket_film=False) -> QuasiStaticSolution:
+                      pocket_film=False, land_feedback=False) -> QuasiStaticSolution:
     """Quasi-static equilibrium of a ball bearing with free inner-ring DOFs, speed effects and kinematics.
 
     Parameters
@@ -294,6 +296,15 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
         rotation relative to the cage enters the balls' and the cage's balances and the pocket loss, its
         hydrodynamic pressure carries the pocket force where it can (the friction acts on the rest). Needs
         ``cage="rigid"``; the film's oil is ``lubricant``.
+    land_feedback : bool
+        Feed the land-guided cage's steady displacement on its land back into the pocket play
+        (docs/theory/quasistatic.md#the-cages-displacement): the pockets move with the cage, so the balls meet
+        their walls elsewhere and the net pocket force the land carries changes; solved by pseudo-transient
+        continuation, a ``CageLandWarning`` and the solution without it when that does not converge or the
+        cage's torque does not balance with it (the cage's ``land_feedback_converged``); the displacement's
+        roots at the solution surveyed from 17 starts, a ``CageLandWarning`` when more than one (the cage's
+        ``land_feedback_roots``). Off by default (the solution with the centred cage's pockets); needs a
+        land-guided ``cage="rigid"``.
 
     Returns
     -------
@@ -306,6 +317,7 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
     >>> round(s.q_max_inner, 1)
     1461.7
     """
+    call = dict(locals())  # the arguments, for the solve without the land feedback where it does not converge
     t0 = time.perf_counter()
     b: BallBearing = load_bearing(bearing)
     # argument checks: one path for API and CLI (data.errors: no booleans or strings as numbers)
@@ -316,6 +328,10 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
         raise InputError(f"control: must be one of {', '.join(km.CONTROLS)}, got {control!r}")
     rc = _check_cage(cage, rigid_cage, control, b)
     pocket_film = check_bool("pocket_film", pocket_film)
+    land_feedback = check_bool("land_feedback", land_feedback)
+    if land_feedback and (rc is None or rc.guidance == "ball"):
+        raise InputError("land_feedback: the cage's displacement on its guiding land is a land-guided rigid cage's "
+                         "(cage='rigid' with guidance 'outer_land' or 'inner_land')")
     if pocket_film and rc is None:
         raise InputError("pocket_film: the film between ball and pocket is the rigid cage's (cage='rigid'), "
                          "not for a cageless solution")
@@ -411,9 +427,14 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
     phases = ["race"] + ([control] if control in ("min-energy", "equilibrium") and moving else [])
     prob = balls = geo = cs = cage_info = None
     loaded_all = np.zeros(z, dtype=bool)
+    settled, refused = False, None  # the last stage's loop converged; why the land feedback was not taken
     try:  # a singular ring or kinematics system: loads far beyond what the contacts carry
         for stage in phases:
-            tol = 1e-10 if stage == "race" else 1e-7
+            settled = False
+            # the rigid cage: 1e-9, as its energy balance, the held and free balls mixed by the fractions of the
+            # last cage balance, amplifies the last change (the traction's creep stiffness): at 1e-7 the 6208
+            # radial case closed it to 1.9e-8, with the land feedback to 2.3e-8 at 1e-8; at 1e-9 to 4e-11, 6e-12
+            tol = 1e-10 if stage == "race" else (1e-7 if rc is None else 1e-9)
             for _it in range(40 if stage == "race" else 12):
                 it_total += 1
                 g_mom = inertia * kin[:, 0] * kin[:, 1]        # J omega_m w_r: moment about e_psi [N m]
@@ -470,9 +491,13 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
                         else:
                             new[j, :3], checks[j] = km.minimum_energy(geo[j], model, n_strips, n_across, kin[j])
                 if rc is not None:
+                    # the land feedback in the last stage only (the earlier one is the start of its iterations)
                     new, cage_info = _solve_cage(geo, loaded_all, controls.copy(), stage, kin, rc, model, n_strips,
-                                                 n_across, inertia, lub, w_i, w_o, psi, film)
+                                                 n_across, inertia, lub, w_i, w_o, psi, film,
+                                                 land_feedback and stage == phases[-1])
                     controls[:] = cage_info["controls"]
+                    feedback = cage_info.get("land_feedback")
+                    refused = None if feedback is None or feedback["converged"] else feedback["why"]
                     if stage in ("equilibrium", "min-energy"):
                         checks = list(cage_info["checks"])
                 elif stage == "equilibrium":
@@ -480,6 +505,7 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
                 change = np.abs(new - kin).max() / wref
                 kin = new
                 if change < tol:
+                    settled = True
                     break
     except np.linalg.LinAlgError:
         speed = _speed_cause(b, loads, w_i, w_o, rest)
@@ -494,6 +520,18 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
             raise
         raise InputError(f"{speed or _load_name(loads, fixed)}: {str(exc).partition(': ')[2]} at {what}"
                          + (f"; {_SPEED_CAUSE}" if speed else "")) from None
+    if land_feedback and moving and (refused is not None or not settled):
+        # the land feedback not taken at the end, or the iterations not settled with it (the cage speed jumping
+        # between the balance with it and without): the whole solution without it, and it says so
+        why = refused or (f"the iterations with it did not settle: the speeds still changed by {change:.2g} "
+                          f"(relative) after {_it + 1} iterations of the last stage")
+        sol = solve_quasistatic(**{**call, "land_feedback": False})
+        sol.cage["land_feedback_converged"] = False
+        warnings.warn(CageLandWarning(
+            f"rigid_cage: the cage's displacement on its land and the pocket play it shifts did not converge ({why}): "
+            "the solution is the one without the feedback (the pockets of the centred cage, the land carrying their "
+            "net force)"), stacklevel=2)
+        return sol
     # final contact results
     out = _ball_results(b, geom, psi, balls, cs, kin, geo, model, n_strips, n_across, w_i, w_o, rd_o, rd_i,
                         lub, e_prime, mass, inertia, controls, moving, prob.fto, prob.fti)
@@ -866,7 +904,8 @@ CAGE_SPEED_TOLERANCE = 1e-13
 
 class CageLandWarning(UserWarning):
     """The rigid cage's land film cannot carry the net pocket force within the crush eccentricity: the land
-    touches (the reference engine's rigid cage models that contact; the quasi-static solution does not)."""
+    touches (the reference engine's rigid cage models that contact; the quasi-static solution does not); or the
+    cage's displacement on the land and the pocket play it shifts did not converge (:func:`_land_feedback`)."""
 
 
 def _check_cage(cage, rigid_cage, control, b):
@@ -913,9 +952,169 @@ def _land_state(rc, lub, omega_c, omega_ring, force):
     elif scale * float(short_bearing_load_number(eps_c)) <= force:
         eps, crushed = eps_c, True
     else:
-        eps = _opt.brentq(lambda e: scale * float(short_bearing_load_number(e)) - force, tiny, eps_c, xtol=1e-14)
+        eps = _opt.brentq(lambda e: scale * float(_sb._load_number(e)) - force, tiny, eps_c, xtol=1e-14)
     torque = float(short_bearing_shear_torque(eps, omega_c - omega_ring, mu, r, length, c))
     return eps, torque, crushed
+
+
+def _land_displacement(rc, lub, omega_c, omega_ring, fx, fy):
+    """The cage centre's steady displacement (e_x, e_y) [m] from its guiding land's centre at which the land
+    film carries the net in-plane pocket force (``fx``, ``fy``) [N] on the cage, with :func:`_land_state`'s
+    (eps, torque, crushed): eps = |e| / c from Ocvirk's load number (:func:`_land_state`), and e at the short
+    bearing's attitude angle phi, tan phi = pi sqrt(1 - eps^2) / (4 eps) (Ocvirk; Hamrock et al., ch. 10),
+    from the pocket force, ahead in the sense of ``omega_c`` + ``omega_ring``: there the reference engine's
+    land force at zero rates (:func:`~exudyn_bearing.physics.short_bearing.short_bearing_force_xy`) is
+    -(fx, fy). Crushed (eps at the crush eccentricity): the direction at that eps. With no film force (no
+    speed) e is along (fx, fy)."""
+    eps, torque, crushed = _land_state(rc, lub, omega_c, omega_ring, math.hypot(fx, fy))
+    if eps == 0.0:
+        return 0.0, 0.0, eps, torque, crushed
+    c, spin = rc.land_clearance, omega_c + omega_ring
+    turn = math.atan2(fy, fx) + (0.0 if spin == 0.0 else math.copysign(float(_sb._attitude(eps)), spin))
+    return eps * c * math.cos(turn), eps * c * math.sin(turn), eps, torque, crushed
+
+
+#: Tolerance of the cage's displacement on its land (:func:`_land_feedback`): the residual |G(F(e)) - e| of
+#: its balance below this share of the land clearance (the steep F(e) leaves the last Newton steps at a few 1e-9:
+#: the 6208 at 3000 N radial, race control, stalled at 3e-9 against 1e-10).
+LAND_FEEDBACK_TOLERANCE = 1e-8
+#: Relative residual of the cage's torque (:func:`_cage_balance`) above which the balance with the land
+#: feedback is not taken (the torque jumped between roots of the displacement at the cage speed found).
+LAND_FEEDBACK_TORQUE_TOLERANCE = 1e-9
+#: Pseudo-transient steps of :func:`_land_feedback` before its fallback.
+LAND_FEEDBACK_STEPS = 60
+#: Iterations of the damped fixed point that is :func:`_land_feedback`'s fallback.
+LAND_FEEDBACK_ITERATIONS = 400
+
+
+def _relax(land, v, r, limit, c, best, tol):
+    """Pseudo-transient continuation of v' = R(v) for :func:`_land_feedback` (its ``land``: G of e [m]; v = e /
+    c, r = R(v) / c), LAND_FEEDBACK_STEPS steps at most, until ``best`` (the best residual, kept by ``land``)
+    meets ``tol``."""
+    dt = 1.0
+    for _ in range(LAND_FEEDBACK_STEPS):
+        h = 1e-7
+        jac = np.empty((2, 2))
+        for k in range(2):
+            w = v.copy()
+            w[k] += h
+            gk = land(w[0] * c, w[1] * c)
+            jac[:, k] = ((np.array(gk[:2]) / c - w) - r) / h
+        try:
+            w = v + np.linalg.solve(np.eye(2) / dt - jac, r)
+        except np.linalg.LinAlgError:
+            return
+        size = float(np.hypot(*w))
+        if size > limit:
+            w *= limit / size
+        gw = land(w[0] * c, w[1] * c)
+        if best[0] <= tol:
+            return
+        rw = np.array(gw[:2]) / c - w
+        norm, new = float(np.hypot(*r)), float(np.hypot(*rw))
+        if new > 2.0 * norm:
+            dt *= 0.25
+            continue
+        dt = min(dt * norm / max(new, 1e-300), 1e12)
+        v, r = w, rw
+
+
+def _land_feedback(rc, lub, omega_c, omega_ring, net_force, start=(0.0, 0.0), alone=False):
+    """The cage's displacement e on its land balanced with the net pocket force it causes
+    (docs/theory/quasistatic.md#the-cages-displacement): the root of R(e) = G(F(e)) - e, F = ``net_force(e)``
+    the net in-plane pocket force [N] (the pocket play with the pockets displaced by e . e_psi), G the land's
+    displacement that carries it (:func:`_land_displacement`). R is continuous and G stays inside the crush
+    circle, so a root exists there (Brouwer), but the fixed point e <- G(F(e)) is no contraction (its Jacobian's
+    eigenvalues lie far outside the unit circle: a few um of displacement change the fractions by tens of %),
+    and Newton's
+    method stalls in local minima of |R| (the fractions' kinks): pseudo-transient continuation of the cage's
+    overdamped relaxation de/dt = R(e) (implicit Euler steps whose step grows as |R| falls, ending in Newton's;
+    Kelley & Keyes 1998) from ``start`` [m] (the root at the balls' mean speed, :func:`_solve_cage`), then from
+    e = 0, the state
+    without the feedback, each for LAND_FEEDBACK_STEPS; failing both, the
+    damped fixed point e <- e + a R(e), a halved from 1 whenever |R| grows (to at least 2^-12), for
+    LAND_FEEDBACK_ITERATIONS. Converged: |R| below LAND_FEEDBACK_TOLERANCE
+    times the land clearance c; else the state without the feedback (e = 0, the land carrying F(0)), which
+    the solution's CageLandWarning reports. A zero net force at e = 0 (a pure axial load) gives e = 0 at once. Returns
+    (ex, ey, eps, torque, crushed, dict with converged, evaluations, residual [m]); eps, torque and crushed are
+    the land's carrying F(e) (:func:`_land_displacement`). ``alone``: the continuation from ``start`` only (no
+    second start, no fixed point; :func:`_land_roots`)."""
+    c = rc.land_clearance
+    tol = LAND_FEEDBACK_TOLERANCE * c
+    count = [0]
+    best = [math.inf, 0.0, 0.0, None]
+
+    def land(x, y):
+        count[0] += 1
+        g = _land_displacement(rc, lub, omega_c, omega_ring, *net_force(x, y))
+        res = math.hypot(g[0] - x, g[1] - y)
+        if res < best[0]:
+            best[:] = [res, x, y, g]
+        return g
+
+    def done():
+        res, x, y, g = best
+        if res > tol:  # not converged: the state without the feedback (the pockets at e = 0), and it says so
+            x, y, g = 0.0, 0.0, g0
+        return x, y, *g[2:], {"converged": res <= tol, "evaluations": count[0], "residual": res}
+
+    g0 = land(0.0, 0.0)
+    if best[0] <= tol:
+        return done()
+    # pseudo-transient continuation of the relaxation v' = R(v) / c, v = e / c (Kelley & Keyes, SIAM J. Numer.
+    # Anal. 35 (1998) 508-523): implicit Euler steps (I / dt - J) dv = R / c, J by forward differences (step
+    # 1e-7), dt from 1 grown by |R| falling (switched evolution relaxation) up to Newton's steps; a step that
+    # more than doubles |R| is retaken at dt / 4; kept inside the crush circle
+    limit = max(0.5, 1.0 - lub.composite_roughness / c)
+    for first in dict.fromkeys(((start[0] / c, start[1] / c),) + (() if alone else ((0.0, 0.0),))):
+        if first == (0.0, 0.0):
+            v, r = np.zeros(2), np.array([g0[0], g0[1]]) / c
+        else:
+            v = np.array(first)
+            gv = land(v[0] * c, v[1] * c)
+            if best[0] <= tol:
+                return done()
+            r = np.array(gv[:2]) / c - v
+        _relax(land, v, r, limit, c, best, tol)
+        if best[0] <= tol:
+            return done()
+    if alone:
+        return done()
+    ex = ey = 0.0
+    g, a, last = g0, 1.0, math.inf
+    for _ in range(LAND_FEEDBACK_ITERATIONS):
+        res = math.hypot(g[0] - ex, g[1] - ey)
+        if res <= tol:
+            break
+        if res > last:
+            a = max(0.5 * a, 2.0 ** -12)
+        last = res
+        ex, ey = ex + a * (g[0] - ex), ey + a * (g[1] - ey)
+        g = land(ex, ey)
+    return done()
+
+
+#: The starts of :func:`_land_roots`: the centre and 8 azimuths at these eccentricities.
+LAND_SURVEY_ECCENTRICITIES = (0.4, 0.8)
+#: Two roots of :func:`_land_roots` are one where they lie closer than this share of the land clearance.
+LAND_ROOT_SEPARATION = 1e-6
+
+
+def _land_roots(rc, lub, omega_c, omega_ring, net_force, root):
+    """The roots of the cage's displacement balance (:func:`_land_feedback`) at one cage speed reached from a
+    survey of starts spread over the land clearance c (the centre and 8 azimuths at each of
+    LAND_SURVEY_ECCENTRICITIES times c), each by the continuation from it alone; with the solution's ``root``
+    [m] the distinct ones (apart by more than LAND_ROOT_SEPARATION c), as an (n, 2) array [m], ``root``
+    first. More than one: the balance is not unique there, the solution's root the one its starts reach."""
+    c = rc.land_clearance
+    roots = [np.asarray(root, float)]
+    starts = [(0.0, 0.0)] + [(eps * c * math.cos(a), eps * c * math.sin(a)) for eps in LAND_SURVEY_ECCENTRICITIES
+                             for a in np.arange(8) * np.pi / 4.0]
+    for st in starts:
+        ex, ey, *_, info = _land_feedback(rc, lub, omega_c, omega_ring, net_force, st, alone=True)
+        if info["converged"] and all(math.hypot(ex - r[0], ey - r[1]) > LAND_ROOT_SEPARATION * c for r in roots):
+            roots.append(np.array([ex, ey]))
+    return np.array(roots)
 
 
 def _alike(geo, j):
@@ -924,7 +1123,76 @@ def _alike(geo, j):
     return next((i for i in range(j) if np.allclose(geo[i], geo[j], rtol=1e-12, atol=0.0)), None)
 
 
-def pocket_contact_fraction(u, psi, omega_c, radius, clearance, substeps=64):
+@kernel
+def _first_wall(s, r, k, span, clearance):
+    """The first time tau in (0, ``span``] at which the ball at ``s`` [m], moving at the rate r + k tau [m/s],
+    reaches a wall at +-``clearance`` moving outward; -1 if none (:func:`_play_walls`)."""
+    best = -1.0
+    for wall in (clearance, -clearance):
+        d = s - wall                                   # s(tau) - wall = d + r tau + k tau^2 / 2
+        roots = (-1.0, -1.0)
+        if k == 0.0:
+            if r != 0.0:
+                roots = (-d / r, -1.0)
+        else:
+            disc = r * r - 2.0 * k * d
+            if disc >= 0.0:
+                q = -0.5 * (r + math.copysign(math.sqrt(disc), r))    # the stable pair of roots
+                roots = (q / (0.5 * k), d / q if q != 0.0 else -1.0)
+        for tau in roots:
+            rate = r + k * tau
+            if 0.0 < tau <= span and rate * wall > 0.0 and (best < 0.0 or tau < best):
+                best = tau
+    return best
+
+
+@kernel
+def _play_walls(a, b, dt, start, s, clearance, on):
+    """The play operator of :func:`pocket_contact_fraction` (compiled): the ball at ``s`` [m] from its pocket's
+    centre moves at a rate linear in time over each sub-step of ``dt`` [s], from ``a`` to ``b`` [m/s], the walls
+    at +-``clearance``; from sub-step ``start`` (cyclically) two revolutions, of which the second's time on a
+    wall per sub-step goes to ``on``. Exact for that rate: the ball reaches a wall where its quadratic path does,
+    and rests on it while the rate pushes it outward, leaving where the rate turns (so the time on a wall is
+    continuous in the rates, which a rate constant over each sub-step would not make it at the instant it
+    leaves)."""
+    n = a.size
+    for i in range(2 * n):
+        m = (start + i) % n
+        h = dt[m]
+        k = (b[m] - a[m]) / h if h > 0.0 else 0.0
+        t, held = 0.0, 0.0
+        for _ in range(8):                             # at most a few segments per sub-step (the rate is linear)
+            if t >= h:
+                break
+            r = a[m] + k * t
+            side = 1.0 if s >= clearance else (-1.0 if s <= -clearance else 0.0)
+            if side != 0.0 and (r * side > 0.0 or (r == 0.0 and k * side > 0.0)):
+                turn = -a[m] / k if k != 0.0 else h    # on the wall until the rate turns inward
+                end = turn if t < turn < h else h
+                held += end - t
+                s, t = side * clearance, end
+                if end < h:                            # leaving: one free segment from the turn
+                    r = 0.0
+                    hit = _first_wall(s, r, k, h - t, clearance)
+                    if hit < 0.0:
+                        s += 0.5 * k * (h - t) ** 2
+                        t = h
+                    else:
+                        s, t = math.copysign(clearance, k), t + hit
+                continue
+            hit = _first_wall(s, r, k, h - t, clearance)
+            if hit < 0.0:                              # free to the sub-step's end
+                s += r * (h - t) + 0.5 * k * (h - t) ** 2
+                t = h
+            else:
+                s = clearance if r + k * hit > 0.0 else -clearance
+                t += hit
+        s = min(max(s, -clearance), clearance)
+        if i >= n:
+            on[m] = held
+
+
+def pocket_contact_fraction(u, psi, omega_c, radius, clearance, substeps=64, offset=None):
     """Share of the time each ball rests on a pocket wall, the balls moving freely inside their pockets' play
     (docs/theory/quasistatic.md#pocket-play).
 
@@ -933,12 +1201,18 @@ def pocket_contact_fraction(u, psi, omega_c, radius, clearance, substeps=64):
     at s = +-``clearance`` [m] (a play operator: while it rests on a wall and u pushes it outward it moves with
     the cage, the pocket holding it at the cage's speed). ``u`` is sampled at the balls' azimuths ``psi`` [rad]
     (one ball seen at every azimuth: the quasi-static solution is steady in the cage's frame), linear between
-    them, integrated over ``substeps`` steps per spacing (the wall reached within a step counted to the
-    instant, so that the fraction is continuous in ``u``). The periodic solution: with a net drift D per
+    them, integrated over ``substeps`` steps per spacing, exactly for that rate linear in time
+    (:func:`_play_walls`: the wall reached and left where the path and the rate say, so that the fraction is
+    continuous in ``u``). The periodic solution: with a net drift D per
     revolution of the free path S(t), the ball rests on the front wall (D > 0; the back wall for D < 0) where S
-    reaches its largest (smallest) value of the revolution, so one revolution from there is periodic; with no
-    net drift it floats when S spans less than the play 2 ``clearance``. Returns the fraction in [0, 1] per
-    ball: the time on a wall within half a spacing either side of its azimuth."""
+    reaches its largest (smallest) value of the revolution, so the second revolution from there is periodic;
+    with no net drift it floats when S spans less than the play 2 ``clearance``. Returns the fraction in [0, 1] per
+    ball: the time on a wall within half a spacing either side of its azimuth.
+
+    ``offset`` [m] (None: none): the pocket centre's displacement along e_psi (the +psi tangent) at each
+    ball's azimuth, a displaced cage's e . e_psi(psi) (docs/theory/quasistatic.md#the-cages-displacement). The
+    ball's position relative to its pocket is then S(t) minus that offset at its azimuth at time t (sampled
+    as ``u``, linear between the azimuths); the offset is periodic, so the net drift D is unchanged."""
     u = np.asarray(u, float)
     z = u.size
     direction = 1.0 if omega_c >= 0.0 else -1.0
@@ -948,23 +1222,23 @@ def pocket_contact_fraction(u, psi, omega_c, radius, clearance, substeps=64):
     gaps = np.diff(np.append(ang, ang[0] + 2.0 * np.pi))
     rate = radius * u[order] * direction                  # ds/dt [m/s] at each azimuth, in travel order
     x = (np.arange(substeps) + 0.5) / substeps
-    r = ((1.0 - x)[None, :] * rate[:, None] + x[None, :] * np.roll(rate, -1)[:, None]).ravel()
+    x0, x1 = np.arange(substeps) / substeps, np.arange(1, substeps + 1) / substeps
+    a = ((1.0 - x0)[None, :] * rate[:, None] + x0[None, :] * np.roll(rate, -1)[:, None])   # the rate at each
+    b = ((1.0 - x1)[None, :] * rate[:, None] + x1[None, :] * np.roll(rate, -1)[:, None])   # sub-step's ends
     dt = np.repeat(gaps / max(abs(omega_c), 1e-300) / substeps, substeps)
     owner = np.where(x[None, :] < 0.5, np.arange(z)[:, None], (np.arange(z)[:, None] + 1) % z).ravel()
-    path = np.cumsum(r * dt)                              # the free path S over one revolution
-    on = np.zeros(r.size)
+    if offset is not None:                                # the pocket's own motion along the travel, subtracted
+        o = direction * np.asarray(offset, float)[order]
+        moving = ((np.roll(o, -1) - o) * max(abs(omega_c), 1e-300) / gaps)[:, None]
+        a, b = a - moving, b - moving
+    a, b = a.ravel(), b.ravel()
+    step = 0.5 * (a + b) * dt
+    path = np.cumsum(step)                                # the free path S over one revolution
+    on = np.zeros(a.size)
     if abs(path[-1]) > 1e-12 * clearance or np.ptp(np.append(path, 0.0)) > 2.0 * clearance:
         side = 1.0 if path[-1] >= 0.0 else -1.0
         start = int(np.argmax(path) if side > 0.0 else np.argmin(path)) + 1
-        s = side * clearance
-        for m in np.roll(np.arange(r.size), -start):
-            ds = r[m] * dt[m]
-            wall = clearance if ds > 0.0 else -clearance
-            if ds != 0.0 and abs(s + ds) >= clearance:      # on the wall from where it reaches it
-                on[m] = dt[m] * (1.0 - (wall - s) / ds)
-                s = wall
-            else:
-                s += ds
+        _play_walls(a, b, dt, start % a.size, side * clearance, clearance, on)
     time = np.bincount(owner, weights=dt, minlength=z)
     held = np.bincount(owner, weights=on, minlength=z)
     out = np.empty(z)
@@ -1008,7 +1282,7 @@ def _free_balls(geo, loaded, races, stage, kin, model, n_strips, n_across, inert
 
 
 def _caged_balls(omega_c, geo, loaded, races, stage, kin, rc, model, n_strips, n_across, inertia, lub, w_i, w_o,
-                 psi, free=None, film=None):
+                 psi, free=None, film=None, land_hint=None):
     """Every ball at the cage speed ``omega_c`` (docs/theory/quasistatic.md#the-rigid-cage): its kinematics
     (race control at the cage speed by ``races[j]``, the traction equilibrium of its moments with the pocket
     force and its friction, the minimum of its contacts' dissipation over its spin (stage "min-energy"), or,
@@ -1061,38 +1335,57 @@ def _caged_balls(omega_c, geo, loaded, races, stage, kin, rc, model, n_strips, n
     # pocket play: a ball with an orbit of its own (free[j]) rests on a pocket wall only the fraction f of the
     # time (pocket_contact_fraction); the cage feels the time mean f Q_p of its force
     q_held = q_p.copy()
-    f = np.ones(z)
-    if free is not None:
-        has = np.isfinite(free[:, 0])
-        if has.any():
-            u = np.where(has, free[:, 0] - omega_c, 0.0)
-            f = np.where(has, pocket_contact_fraction(u, psi, omega_c, float(np.mean(geo[:, km.G_CR])),
-                                                      rc.pocket_clearance), 1.0)
-        q_p = f * q_held
     cr = geo[:, km.G_CR]
     rb = geo[:, km.G_RB]
     w = np.hypot(new[:, 1], new[:, 2])
     wz_unit = np.divide(new[:, 2], w, out=np.zeros(z), where=w > 0.0)
     wr_unit = np.divide(new[:, 1], w, out=np.zeros(z), where=w > 0.0)
-    t_normal = -q_p * cr
-    q_contact = q_p                                    # the part of the pocket force the wall's contact carries
-    film_out = None
-    if film is not None:
-        q_contact, film_out = _pocket_film_state(film, new, q_held, f, omega_c, free)
-    t_friction = mu_c * np.abs(q_contact) * rb * wz_unit
-    # the net in-plane force of the pockets on the cage: -Q_p e_psi and the friction's radial part
-    s = -np.sign(q_p)                                  # side of the ball the wall touches, along e_psi
-    f_r = -mu_c * np.abs(q_contact) * s * wz_unit      # radial friction on the cage
-    t_film = 0.0
-    if film_out is not None:  # the film's shear: its moment about the axis and its radial force, reversed
-        f_r = f_r - film_out["f_r"]
-        t_film = -film_out["m_z"]
-    fx = float(np.sum(q_p * np.sin(psi) + f_r * np.cos(psi)))
-    fy = float(np.sum(-q_p * np.cos(psi) + f_r * np.sin(psi)))
-    eps, t_land, crushed, w_ring = 0.0, 0.0, False, 0.0
+    has = np.zeros(z, bool) if free is None else np.isfinite(free[:, 0])
+    u = np.where(has, free[:, 0] - omega_c, 0.0) if has.any() else None
+
+    def pockets(ex, ey):
+        """The pockets' state with the cage displaced by (ex, ey) [m] on its land: the fractions, the weighted
+        pocket forces, the contact's part, the film's state, the radial force on the cage and the net force."""
+        f = np.ones(z)
+        if u is not None:
+            offset = None if ex == 0.0 and ey == 0.0 else -ex * np.sin(psi) + ey * np.cos(psi)  # e . e_psi
+            f = np.where(has, pocket_contact_fraction(u, psi, omega_c, float(np.mean(cr)), rc.pocket_clearance,
+                                                      offset=offset), 1.0)
+        q_p = f * q_held
+        q_contact = q_p                                    # the part of the pocket force the wall's contact carries
+        film_out = None
+        if film is not None:
+            q_contact, film_out = _pocket_film_state(film, new, q_held, f, omega_c, free)
+        # the net in-plane force of the pockets on the cage: -Q_p e_psi and the friction's radial part
+        s = -np.sign(q_p)                                  # side of the ball the wall touches, along e_psi
+        f_r = -mu_c * np.abs(q_contact) * s * wz_unit      # radial friction on the cage
+        if film_out is not None:  # the film's shear: its radial force, reversed
+            f_r = f_r - film_out["f_r"]
+        fx = float(np.sum(q_p * np.sin(psi) + f_r * np.cos(psi)))
+        fy = float(np.sum(-q_p * np.cos(psi) + f_r * np.sin(psi)))
+        return f, q_p, q_contact, film_out, fx, fy
+
+    eps, t_land, crushed, w_ring, ex, ey, feedback = 0.0, 0.0, False, 0.0, 0.0, 0.0, None
     if rc.guidance != "ball":
+        # the land carries the net pocket force at the cage's displacement e, which moves the pockets (the play)
         w_ring = w_o if rc.guidance == "outer_land" else w_i
-        eps, t_land, crushed = _land_state(rc, lub, omega_c, w_ring, math.hypot(fx, fy))
+        # the start: the first root found in this cage balance (``land_hint``), kept for every later cage speed so
+        # that the torque is a function of the cage speed alone (R may have several roots)
+        if land_hint is None:  # no feedback: the centred cage's pockets, the land carrying their net force
+            eps, t_land, crushed = _land_state(rc, lub, omega_c, w_ring, math.hypot(*pockets(0.0, 0.0)[4:]))
+        else:
+            ex, ey, eps, t_land, crushed, feedback = _land_feedback(rc, lub, omega_c, w_ring,
+                                                                    lambda x, y: pockets(x, y)[4:],
+                                                                    land_hint.get("e", (0.0, 0.0)))
+            if "e" not in land_hint:  # the first call's root (or e = 0 without one) starts every later one
+                land_hint["e"] = (ex, ey) if feedback["converged"] else (0.0, 0.0)
+            if feedback["converged"]:  # is it unique? asked of the solution's balance only (_cage_result)
+                feedback["survey"] = lambda: _land_roots(rc, lub, omega_c, w_ring, lambda x, y: pockets(x, y)[4:],
+                                                         (ex, ey))
+    f, q_p, q_contact, film_out, fx, fy = pockets(ex, ey)
+    t_normal = -q_p * cr
+    t_friction = mu_c * np.abs(q_contact) * rb * wz_unit
+    t_film = 0.0 if film_out is None else -film_out["m_z"]  # the film's moment about the axis, reversed
     torque = float(np.sum(t_normal) + np.sum(t_friction) + t_land)
     scale = float(np.sum(np.abs(t_normal)) + np.sum(np.abs(t_friction)) + abs(t_land))
     friction_power = np.atleast_1d(_ls.cage_pocket_friction_power(q_contact, w, 2.0 * rb, mu_c))
@@ -1108,7 +1401,8 @@ def _caged_balls(omega_c, geo, loaded, races, stage, kin, rc, model, n_strips, n
                  "pocket_film_gap": None if film_out is None else film_out["gap"],
                  "land_torque": t_land,
                  "land_power": -t_land * (omega_c - w_ring), "land_eccentricity": eps, "land_crushed": crushed,
-                 "land_force": math.hypot(fx, fy), "ring_speed": w_ring, "torque": torque,
+                 "land_force": math.hypot(fx, fy), "land_displacement": (ex, ey), "land_feedback": feedback,
+                 "ring_speed": w_ring, "torque": torque,
                  "torque_scale": scale, "checks": checks, "controls": used,
                  "wr_unit": wr_unit, "pocket_contact_fraction": f, "pocket_force_held": q_held,
                  "free_kinematics": None if free is None else np.where(np.isfinite(free), free, new)}
@@ -1136,21 +1430,54 @@ def _pocket_film_state(film, kin, q_held, f, omega_c, free):
 
 
 def _solve_cage(geo, loaded, races, stage, kin, rc, model, n_strips, n_across, inertia, lub, w_i, w_o, psi,
-                film=None):
+                film=None, land_feedback=False):
     """The cage speed that balances the cage's torque (:func:`_caged_balls`; brentq on a bracket widened from
     the balls' present orbital speeds: the torque falls with the cage speed) and the balls at it; ``film``
-    the pocket film (a PocketFilm) or None."""
-    last = {}
+    the pocket film (a PocketFilm) or None; ``land_feedback``: the cage's displacement on its land fed back into
+    the pocket play (:func:`_land_feedback`)."""
     free = _free_balls(geo, loaded, races, stage, kin, model, n_strips, n_across, inertia, film)
+    if not land_feedback:
+        return _cage_balance(None, free, geo, loaded, races, stage, kin, rc, model, n_strips, n_across, inertia, lub,
+                             w_i, w_o, psi, film)
+    try:
+        k, info = _cage_balance({}, free, geo, loaded, races, stage, kin, rc, model, n_strips, n_across, inertia, lub,
+                                w_i, w_o, psi, film)
+        feedback = info["land_feedback"]
+        if feedback["converged"] and abs(info["torque_residual"]) <= LAND_FEEDBACK_TORQUE_TOLERANCE:
+            return k, info
+        why = (f"the cage's torque with the displacement fed back does not balance at the cage speed found "
+               f"(relative residual {info['torque_residual']:.2g}: a jump between roots of the displacement)"
+               if feedback["converged"] else
+               f"{feedback['evaluations']} evaluations, residual {feedback['residual']:.3e} m, tolerance "
+               f"{LAND_FEEDBACK_TOLERANCE:g} of the land clearance {rc.land_clearance:.3e} m")
+    except (ValueError, InputError):
+        # with the feedback the cage's torque need not be one function of the cage speed (the displacement's
+        # balance can have several roots, or converge at some cage speeds and not at others): no bracketed root
+        why = "the cage's torque with the displacement fed back has no bracketed root in the cage speed"
+    # the balance without the feedback, and the solution says so (CageLandWarning)
+    k, info = _cage_balance(None, free, geo, loaded, races, stage, kin, rc, model, n_strips, n_across, inertia,
+                            lub, w_i, w_o, psi, film)
+    info["land_feedback"] = {"converged": False, "evaluations": 0, "residual": math.nan, "why": why}
+    return k, info
+
+
+def _cage_balance(hint, free, geo, loaded, races, stage, kin, rc, model, n_strips, n_across, inertia, lub, w_i, w_o,
+                  psi, film):
+    """The cage speed and balls of :func:`_solve_cage` for the land's displacement ``hint`` (None: the centred
+    cage's pockets; a dict: fed back, its start kept there)."""
+    last = {}
 
     def torque(wc):
         k, info = _caged_balls(wc, geo, loaded, races, stage, last.get("kin", kin), rc, model, n_strips, n_across,
-                               inertia, lub, w_i, w_o, psi, free, film)
+                               inertia, lub, w_i, w_o, psi, free, film, hint)
         last["kin"], last["info"], last["wc"] = k, info, wc
         return info["torque"]
 
     ref = max(abs(w_i - w_o), 1e-300)
     lo, hi = float(np.min(kin[:, 0])), float(np.max(kin[:, 0]))
+    if hint is not None:  # the land's displacement at the balls' mean speed: the start of every later one
+        torque(float(np.mean(kin[:, 0])))
+        last.clear()
     pad = 1e-3 * ref + 0.5 * (hi - lo)
     lo, hi = lo - pad, hi + pad
     t_lo, t_hi = torque(lo), torque(hi)
@@ -1207,6 +1534,18 @@ def _cage_result(rc, info, out, moving, w_i, film=None):
     if film is not None:
         gap = info.get("pocket_film_gap")
         out["pocket_film_gap"] = np.full(z, film.clearance) if gap is None else np.asarray(gap, float).copy()
+    feedback = info.get("land_feedback")
+    found = None if feedback is None or not feedback["converged"] else feedback["survey"]()
+    roots = 1 if found is None else len(found)
+    if roots > 1:  # (a feedback that did not converge: solve_quasistatic's solution without it, warned there)
+        others = "; ".join(f"({x / rc.land_clearance:+.3f}, {y / rc.land_clearance:+.3f})"
+                           for x, y in found[1:])
+        warnings.warn(CageLandWarning(
+            f"rigid_cage: the cage's displacement on its land is not unique at the cage speed found: {roots} roots "
+            f"from {1 + 8 * len(LAND_SURVEY_ECCENTRICITIES)} starts over the land clearance (e / c: the solution's "
+            f"({found[0][0] / rc.land_clearance:+.3f}, {found[0][1] / rc.land_clearance:+.3f}),"
+            f" others {others}); the solution's is the one its relaxation from the balls' mean speed reaches"),
+            stacklevel=3)
     if info["land_crushed"]:
         warnings.warn(CageLandWarning(
             f"rigid_cage: the land film cannot carry the net pocket force {info['land_force']:.4g} N within the "
@@ -1220,4 +1559,8 @@ def _cage_result(rc, info, out, moving, w_i, film=None):
             "power_land": float(info["land_power"]), "land_torque": float(info["land_torque"]),
             "land_force": float(info["land_force"]), "land_eccentricity": float(info["land_eccentricity"]),
             "land_crushed": bool(info["land_crushed"]), "torque_residual": float(info["torque_residual"]),
+            "land_displacement": tuple(float(v) for v in info.get("land_displacement", (0.0, 0.0))),
+            "land_feedback_converged": bool(feedback is None or feedback["converged"]),
+            "land_feedback_evaluations": 0 if feedback is None else int(feedback["evaluations"]),
+            "land_feedback_roots": int(roots),
             "ring_speed": float(info.get("ring_speed", w_i)), "rigid_cage": rc}
