@@ -97,6 +97,8 @@ def test_the_march_converges_with_its_step(light, marched):
 
 
 @pytest.mark.parametrize("kw, name", [({"steps_per_pitch": 2}, "steps_per_pitch"),
+                                      ({"steps_per_pitch": 2.5}, "steps_per_pitch"), ({"revolutions": 1}, "revolutions"),
+                                      ({"cage_speed": float("nan")}, "cage_speed"),
                                       ({"cage": None}, "sol"), ({"pocket_film": True}, "sol: .*pocket oil film")])
 def test_bad_march_input(kw, name):
     s = solve_quasistatic("6208", 3000.0, omega=500.0, control="outer", cage=kw.pop("cage", "rigid"),

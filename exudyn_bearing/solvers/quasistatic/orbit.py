@@ -61,6 +61,7 @@ import numpy as np
 from scipy import optimize as _opt
 
 from ...data import InputError, load_bearing, load_lubricant
+from ...data.errors import check_finite, check_integer
 from ...physics import losses as _ls
 from . import kinematics as km
 from .inertia import ball_mass_inertia
@@ -251,9 +252,11 @@ def march_orbit(sol, bearing=None, *, steps_per_pitch=ORBIT_STEPS_PER_PITCH, rev
     revolutions : int
         Largest number of revolutions of a march (it stops once periodic, :data:`PERIODIC_TOLERANCE`).
     lubricant : Lubricant or str, optional
-        The land film's oil (default: the solution's).
+        The land film's oil (default: the solution's, by its name: pass the Lubricant the solution was solved
+        with when it is not one of the catalogue's).
     cage_speed : float, optional
-        Hold the cage at this speed [rad/s] instead of its torque balance (a study of one speed).
+        Hold the cage at this speed [rad/s] instead of its torque balance (a study of one speed: the torque
+        that holds it, ``torque_residual``, then works on the cage, and the energy balance shows it).
 
     Returns
     -------
@@ -282,9 +285,14 @@ def march_orbit(sol, bearing=None, *, steps_per_pitch=ORBIT_STEPS_PER_PITCH, rev
                          "(land_feedback=False)")
     if sol.omega == sol.omega_outer:
         raise InputError("sol: the orbit march needs relative speed of the rings (omega != omega_outer)")
-    steps_per_pitch = int(steps_per_pitch)
+    steps_per_pitch = check_integer("steps_per_pitch", steps_per_pitch)
     if steps_per_pitch < 4:
         raise InputError(f"steps_per_pitch: at least 4, got {steps_per_pitch}")
+    revolutions = check_integer("revolutions", revolutions)
+    if revolutions < 2:
+        raise InputError(f"revolutions: at least 2 (periodicity is judged between two), got {revolutions}")
+    if cage_speed is not None:
+        cage_speed = check_finite("cage_speed", cage_speed)
     b = load_bearing(bearing if bearing is not None else sol.bearing_name)
     rc = sol.cage["rigid_cage"]
     lub = load_lubricant(lubricant if lubricant is not None else sol.lubricant, bearing=b)
