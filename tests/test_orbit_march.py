@@ -139,3 +139,17 @@ def test_the_march_refuses_a_displaced_cage():
     s.cage["land_displacement"] = (1e-6, 0.0)  # what a converged land feedback leaves
     with pytest.raises(InputError, match="sol: .*land feedback"):
         march_orbit(s)
+
+
+def test_a_ball_guided_cage_balances_against_the_tractions_torques():
+    """A ball-guided cage has no land torque: its pocket forces alone balance, tiny against the tractions whose
+    difference they carry; the residual is measured against those (as the solver's), and the march's cage runs
+    within 0.1 % of the solution's."""
+    from exudyn_bearing.data.cages import estimated_cage
+    from exudyn_bearing import catalog
+    b = catalog["6208"]
+    s = solve_quasistatic(b, 3000.0, omega=500.0, control="equilibrium", cage="rigid", inertia_check=False,
+                          rigid_cage=estimated_cage(b, guidance="ball"), **QUICK)
+    m = march_orbit(s, steps_per_pitch=20)
+    assert abs(m["torque_residual"]) < 1e-3 and m["power_land"] == 0.0
+    assert m["cage_speed"] == pytest.approx(s.cage["speed"], rel=1e-3)

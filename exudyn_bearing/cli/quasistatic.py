@@ -44,7 +44,7 @@ def add_parser(sub):
     p.add_argument("--cage", choices=("none", "rigid"), default="none",
                    help="none: each ball its own orbital speed; rigid: the bearing's estimated rigid cage "
                         "(estimated_cage): balls at the cage speed within their pocket play, pocket forces, land "
-                        "film (race control or --control equilibrium)")
+                        "film (race control, --control equilibrium or min-energy)")
     p.add_argument("--pocket-film", action="store_true",
                    help="the oil film between each ball and its rigid-cage pocket (its shear and hydrodynamic "
                         "pressure, as simulate --pocket-film; docs/theory/quasistatic.md#the-pocket-film); needs "
@@ -53,7 +53,8 @@ def add_parser(sub):
                    help="follow one ball along its orbit with its inertia through the solution's contact loads "
                         "(march_orbit: the balls' transient that the quasi-static hypothesis leaves out, with the "
                         f"cage's torque balance; docs/theory/quasistatic.md#the-orbit-march); implicit steps per "
-                        f"ball pitch, default {ORBIT_STEPS_PER_PITCH}; needs --cage rigid")
+                        f"ball pitch, default {ORBIT_STEPS_PER_PITCH}; needs --cage rigid, not with --pocket-film "
+                        "or --land-feedback; with --plot also FILE_orbit.png and its CSV")
     p.add_argument("--land-feedback", action="store_true",
                    help="feed the land-guided rigid cage's displacement on its land back into the pocket play "
                         "(docs/theory/quasistatic.md#the-cages-displacement; a warning and the solution without it "
@@ -98,8 +99,15 @@ def run(args):
                                              ("--oil-inlet-temperature", args.oil_inlet_temperature, None),
                                              ("--ambient-temperature", args.ambient_temperature, None)),
                  "add --thermal")
-    if args.orbit_march is not None and args.cage != "rigid":
-        raise InputError("--orbit-march: the march follows a ball in its rigid-cage pocket; add --cage rigid")
+    if args.orbit_march is not None:
+        if args.cage != "rigid":
+            raise InputError("--orbit-march: the march follows a ball in its rigid-cage pocket; add --cage rigid")
+        if args.orbit_march < 4:
+            raise InputError(f"--orbit-march: at least 4 steps per ball pitch, got {args.orbit_march}")
+        for flag, on in (("--pocket-film", args.pocket_film), ("--land-feedback", args.land_feedback)):
+            if on:
+                raise InputError(f"--orbit-march: not with {flag} (the march's ball meets a dry pocket wall of a "
+                                 "centred cage)")
     if args.thermal:
         if args.orbit_march is not None:
             raise InputError("--orbit-march: not with --thermal (the march follows the quasi-static solution at "

@@ -91,8 +91,9 @@ def plot_dissipation_beta(beta_deg, dissipation, points: dict, png, title="") ->
 
 
 def plot_orbit_march(march: dict, png, points: dict | None = None) -> Path:
-    """The orbit march's ball along its last revolution (:func:`~exudyn_bearing.solvers.quasistatic.orbit.
-    march_orbit`): left its contacts' dissipation per ball [W] against azimuth, with ``points`` (label ->
+    """The orbit march's ball along its last revolution (``march``, a result of
+    :func:`~exudyn_bearing.solvers.quasistatic.orbit.march_orbit`): left its contacts' dissipation per ball [W]
+    against azimuth, with ``points`` (label ->
     (azimuths [deg], dissipation per ball [W]): the quasi-static solution's balls, another engine's azimuth
     bins); right its pocket force [N] and its place in the pocket's play."""
     fig, ax, png = _two_panels(png)
@@ -108,7 +109,7 @@ def plot_orbit_march(march: dict, png, points: dict | None = None) -> Path:
         o = np.argsort(d)
         ax[0].plot(d[o], np.asarray(values, float)[o], "os"[i % 2] + "--", color=f"C{i + 1}", ms=4, label=label)
     ax[1].plot(az[order], np.asarray(p["pocket_force"])[order], "-", color="C0",
-               label="pocket force [N] (+: pushes the ball forward)")
+               label="pocket force [N] (+: pushes the ball forward; spikes: an impact's impulse over one step)")
     ax[1].plot(az[order], 1e4 * np.asarray(p["pocket_offset"])[order], "--", color="C3",
                label="place in the play [100 um] (+: ahead of the pocket's centre)")
     label_azimuth_axes(ax, ("contacts' dissipation per ball [W]", "pocket force [N], place in the play [100 um]"),

@@ -75,6 +75,9 @@ ORBIT_STEPS_PER_PITCH = 80
 PERIODIC_TOLERANCE = 1e-3
 #: Largest number of revolutions of one march.
 MAX_REVOLUTIONS = 12
+#: Largest relative residual of the cage's torque balance (against its terms and the tractions' torques) before
+#: :func:`march_orbit` warns.
+TORQUE_TOLERANCE = 1e-3
 #: Newton's tolerance on a step's scaled residual [-] and its largest number of iterations.
 STEP_TOLERANCE = 1e-10
 STEP_ITERATIONS = 30
@@ -177,7 +180,8 @@ def _newton(ball, y, y0, geo, dt, held, scale):
 def _march(sol, ball, omega_c, clearance, state, steps_per_pitch, revolutions, tables):
     """March one ball at the cage speed ``omega_c`` from ``state`` (y, s) for up to ``revolutions`` until
     periodic; returns the last revolution's profile (per step: y, s, Q_p, the contacts' dissipation, the
-    pocket friction's power, the drive power, the friction's moment about the axis, held), the state at its
+    pocket friction's power, the drive power, the friction's moment about the axis, held, the tractions' torques
+    about the axis |F_x,o| + |F_x,i| times c_r), the state at its
     end, the revolutions taken, the last change of the revolution's means, the unconverged steps and whether
     it is periodic."""
     geo_tab, psi_tab = tables
@@ -190,7 +194,7 @@ def _march(sol, ball, omega_c, clearance, state, steps_per_pitch, revolutions, t
     wi, wo = sol.omega, sol.omega_outer
     change = math.nan
     for rev in range(revolutions):
-        prof = np.zeros((n, 11))
+        prof = np.zeros((n, 12))
         fails = 0
         s_start = s
         for i in range(n):
@@ -215,7 +219,8 @@ def _march(sol, ball, omega_c, clearance, state, steps_per_pitch, revolutions, t
             friction = float(_ls.cage_pocket_friction_power(q_p, w, 2.0 * geo[km.G_RB], ball.mu_c))
             wz_unit = yn[2] / w if w > 0.0 else 0.0
             prof[i] = (yn[0], yn[1], yn[2], yn[3], s_new, q_p, p, friction, t_i * wi + t_o * wo,
-                       ball.mu_c * abs(q_p) * geo[km.G_RB] * wz_unit, held)
+                       ball.mu_c * abs(q_p) * geo[km.G_RB] * wz_unit, held,
+                       (abs(c[0, 6]) + abs(c[1, 6])) * geo[km.G_CR])
             y, s = yn, s_new
         means = prof.mean(axis=0)
         drift = s - s_start
@@ -266,11 +271,15 @@ def march_orbit(sol, bearing=None, *, steps_per_pitch=ORBIT_STEPS_PER_PITCH, rev
         friction), ``power_land`` (the land's shear), ``dissipation`` (their sum), ``step_loss`` (the implicit
         steps' loss, impacts on the walls included: drive minus the rest), ``energy_residual`` (step_loss over
         the drive power); ``pocket_contact_fraction`` (share of the time on a wall), ``land_force`` [N],
-        ``land_eccentricity``, ``torque_residual`` (the cage torque relative to its terms), ``revolutions``,
-        ``periodic_change``, ``unconverged_steps``, ``steps_per_revolution``, ``step`` [s]; and ``profile``: per
+        ``land_eccentricity``, ``land_crushed``, ``torque_residual`` (the cage torque relative to its terms and
+        the tractions' torques), ``revolutions``, ``periodic`` (bool), ``periodic_change``,
+        ``unconverged_steps``, ``steps_per_revolution``, ``step`` [s]; ``solution_dissipation`` [W] (the
+        solution's traction and cage losses, the same parts as ``dissipation``: neither holds the rolling losses
+        of ``power_losses``); and ``profile``: per
         step of the last revolution the ball's azimuth ``psi`` [rad] (cage frame, from the solution's ball 0),
-        ``omega_m``, ``w_r``, ``w_z`` [rad/s], ``v_t`` [m/s], ``pocket_offset`` s [m], ``pocket_force`` [N],
-        ``dissipation`` [W], ``q_inner``, ``q_outer`` [N].
+        ``omega_m``, ``w_r``, ``w_z`` [rad/s], ``v_t`` [m/s], ``pocket_offset`` s [m], ``pocket_force`` [N]
+        (where the ball arrives at a wall the impact's impulse over that one step: it grows as the step
+        shrinks), ``dissipation`` [W], ``q_inner``, ``q_outer`` [N].
     """
     from .solve import _land_state  # solve imports this module's users: imported at the call
 
@@ -294,6 +303,9 @@ def march_orbit(sol, bearing=None, *, steps_per_pitch=ORBIT_STEPS_PER_PITCH, rev
     if cage_speed is not None:
         cage_speed = check_finite("cage_speed", cage_speed)
     b = load_bearing(bearing if bearing is not None else sol.bearing_name)
+    if b.n_balls != np.asarray(sol.balls["psi"]).size or b.name != sol.bearing_name:
+        raise InputError(f"bearing: {b.name} is not the solution's bearing ({sol.bearing_name}); leave it out to take "
+                         "the solution's")
     rc = sol.cage["rigid_cage"]
     lub = load_lubricant(lubricant if lubricant is not None else sol.lubricant, bearing=b)
     geo_b = np.asarray(sol.contact_geometry, float)
@@ -331,7 +343,9 @@ def march_orbit(sol, bearing=None, *, steps_per_pitch=ORBIT_STEPS_PER_PITCH, rev
         runs[wc] = dict(prof=prof, revs=revs, change=change, fails=fails, periodic=periodic, t_land=t_land, eps=eps,
                         crushed=crushed, land_force=math.hypot(fx, fy),
                         torque=t_pockets + t_land,
-                        scale=z * float(np.mean(np.abs(qp * cr) + np.abs(prof[:, 9]))) + abs(t_land))
+                        # the torque's scale: its terms and the tractions' own torques along the orbit, whose
+                        # difference the pockets carry (as the solver's cage balance)
+                        scale=z * float(np.mean(np.abs(qp * cr) + np.abs(prof[:, 9]) + prof[:, 11])) + abs(t_land))
         return runs[wc]["torque"]
 
     if cage_speed is not None:
@@ -357,6 +371,13 @@ def march_orbit(sol, bearing=None, *, steps_per_pitch=ORBIT_STEPS_PER_PITCH, rev
             run(wc)
     r = runs[wc]
     prof = r["prof"]
+    residual = r["torque"] / r["scale"] if r["scale"] > 0.0 else 0.0
+    if cage_speed is None and abs(residual) > TORQUE_TOLERANCE:
+        warnings.warn(OrbitMarchWarning(
+            f"march_orbit: the cage's torque does not balance at the cage speed found, {wc:.8g} rad/s (relative "
+            f"residual {residual:.2g} of its terms and the tractions' torques, limit {TORQUE_TOLERANCE:g}): it jumps "
+            "there between neighbouring speeds (a ball that meets one pocket wall at one speed and the other at the "
+            "next); the march's cage speed and cage losses are not a balance's"), stacklevel=2)
     if not r["periodic"] or r["fails"]:
         warnings.warn(OrbitMarchWarning(
             f"march_orbit: the marched ball is {'not periodic' if not r['periodic'] else 'periodic'} after "
@@ -368,12 +389,12 @@ def march_orbit(sol, bearing=None, *, steps_per_pitch=ORBIT_STEPS_PER_PITCH, rev
     pocket = z * float(np.mean(prof[:, 7]))
     land = -r["t_land"] * (wc - w_ring)
     lost = contacts + pocket + land
-    return {"cage_speed": wc, "drive_power": drive, "dissipation_contacts": contacts, "power_pocket": pocket,
+    return {"cage_speed": wc, "solution_dissipation": float(sol.dissipation_total + sol.cage_power), "drive_power": drive, "dissipation_contacts": contacts, "power_pocket": pocket,
             "power_land": land, "dissipation": lost, "step_loss": drive - lost,
             "energy_residual": (drive - lost) / drive if drive != 0.0 else math.nan,
             "pocket_contact_fraction": float(np.mean(prof[:, 10])), "land_force": r["land_force"],
             "land_eccentricity": r["eps"], "land_crushed": r["crushed"],
-            "torque_residual": r["torque"] / r["scale"] if r["scale"] > 0.0 else 0.0,
+            "torque_residual": residual,
             "revolutions": r["revs"], "periodic": r["periodic"], "periodic_change": r["change"], "unconverged_steps": r["fails"],
             "steps_per_revolution": n, "step": 2.0 * math.pi / (n * abs(wc)),
             "profile": {"psi": psi_tab, "omega_m": prof[:, 0], "w_r": prof[:, 1], "w_z": prof[:, 2],
@@ -387,8 +408,9 @@ def march_summary(march) -> str:
     return (f"orbit march (one ball followed along its orbit with its inertia through the solution's contact "
             f"loads; means over its last revolution of {march['revolutions']}, {march['steps_per_revolution']} "
             f"implicit steps of {1e6 * march['step']:.3g} us): cage speed {march['cage_speed']:.6g} rad/s; "
-            f"dissipation {march['dissipation']:.4g} W (contacts {march['dissipation_contacts']:.4g}, pocket "
-            f"{march['power_pocket']:.4g}, land {march['power_land']:.4g}); drive power "
+            f"traction and cage losses {march['dissipation']:.4g} W (contacts {march['dissipation_contacts']:.4g}, "
+            f"pocket {march['power_pocket']:.4g}, land {march['power_land'] + 0.0:.4g}; the steady solution's "
+            f"{march['solution_dissipation']:.4g} W; without the rolling losses of the power loss); drive power "
             f"{march['drive_power']:.4g} W, the steps' loss {march['step_loss']:.3g} W (energy residual "
             f"{march['energy_residual']:.2g}, impacts on the walls included); on a pocket wall "
             f"{100 * march['pocket_contact_fraction']:.3g} % of the time; land force {march['land_force']:.3g} N "
@@ -396,4 +418,6 @@ def march_summary(march) -> str:
             + ("" if march["unconverged_steps"] == 0 else
                f"; {march['unconverged_steps']} steps did not converge")
             + ("" if march["periodic"] else
-               f"; NOT periodic after {march['revolutions']} revolutions (change {march['periodic_change']:.2g})"))
+               f"; NOT periodic after {march['revolutions']} revolutions (change {march['periodic_change']:.2g})")
+            + ("" if abs(march["torque_residual"]) <= TORQUE_TOLERANCE else
+               f"; the cage's torque NOT balanced (relative residual {march['torque_residual']:.2g})"))
