@@ -31,7 +31,7 @@ if TYPE_CHECKING:  # the public names, imported on first use by __getattr__ belo
     from .solvers.quasistatic.levels.linear import LinearValidityWarning
     from .solvers.quasistatic.pair import PairSolution, solve_pair
     from .solvers.quasistatic.inertia import BallInertiaWarning
-    from .solvers.quasistatic.solve import TractionResolutionWarning
+    from .solvers.quasistatic.solve import KinematicsIterationWarning, TractionResolutionWarning
     from .solvers.quasistatic.thermal import ThermalSolution, solve_thermal
 
 #: Module of each public name. ``import exudyn_bearing`` loads none of them (numba, scipy, the
@@ -52,7 +52,7 @@ _PUBLIC = {
     ".solvers.quasistatic.levels.linear": ("LinearValidityWarning",),
     ".solvers.quasistatic.pair": ("PairSolution", "solve_pair"),
     ".solvers.quasistatic.inertia": ("BallInertiaWarning",),
-    ".solvers.quasistatic.solve": ("TractionResolutionWarning",),
+    ".solvers.quasistatic.solve": ("KinematicsIterationWarning", "TractionResolutionWarning"),
     ".solvers.quasistatic.thermal": ("ThermalSolution", "solve_thermal"),
 }
 _MODULE_OF = {name: module for module, names in _PUBLIC.items() for name in names}
@@ -65,7 +65,7 @@ __all__ = ["CreateBallBearing", "filter_exudyn_notes", "BallBearing", "Defect", 
            "EnergyBalanceWarning", "Results", "Scenario", "SimulationError", "SteadyStateWarning", "StepSizeWarning", "catalog", "get_bearing", "load_bearing",
            "load_lubricant", "lubricants", "materials", "simulate", "solve_quasistatic", "QuasiStaticSolution",
            "bearing_coefficients", "BearingCoefficients", "solve_thermal", "ThermalSolution", "LinearValidityWarning",
-           "TractionResolutionWarning", "BallInertiaWarning", "RatingLife", "rating_life", "solve_pair", "PairSolution",
+           "TractionResolutionWarning", "KinematicsIterationWarning", "BallInertiaWarning", "RatingLife", "rating_life", "solve_pair", "PairSolution",
            "CageMaterial", "CageTemperatureWarning", "RigidCage", "estimated_cage"]
 
 

@@ -128,6 +128,8 @@ def test_cli_orbit_march(capsys, tmp_path):
     d = json.loads(capsys.readouterr().out)
     assert d["orbit_march"]["steps_per_revolution"] == 8 * 13
     assert len(d["orbit_march"]["profile"]["pocket_force"]) == 8 * 13
+    units = d["units"]["orbit_march"]   # every key of the march and of its profile has its unit
+    assert set(units) == set(d["orbit_march"]) and set(units["profile"]) == set(d["orbit_march"]["profile"])
     assert main(["quasistatic", "6208", "--Fr", "3000", "--omega", "500", "--orbit-march"]) != 0
     assert "--orbit-march" in capsys.readouterr().err
 

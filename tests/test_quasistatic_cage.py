@@ -583,3 +583,23 @@ def test_energy_closes_where_the_land_turns(guidance, omega_outer):
     assert abs(sol.energy_residual) < 1e-8
     m = march_orbit(sol, steps_per_pitch=20)
     assert abs(m["energy_residual"]) < 0.01
+
+
+def test_a_cycling_kinematics_iteration_settles_with_half_steps(monkeypatch):
+    """The caged ACBB-120 under race control at 25,000 rpm: the plain iteration between the ring equilibrium and
+    the kinematics cycles between two cage speeds 10 % apart (1028.7 and 1131.7 rad/s, after its 40 iterations);
+    half steps past them settle it (the fixed point kept), without a warning; with no half steps allowed, the
+    unsettled iterate warns."""
+    import warnings
+
+    from exudyn_bearing.solvers.quasistatic import solve as qs
+    kw = dict(omega=2618.0, control="outer", cage="rigid", inertia_check=False, **QUICK)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", qs.KinematicsIterationWarning)
+        s = solve_quasistatic("ACBB-120", 0.0, 22240.0, **kw)
+    assert 40 < s.iterations < 40 + qs.RELAXED_ITERATIONS      # it needed the half steps, and settled
+    again = solve_quasistatic("ACBB-120", 0.0, 22240.0, start=s, **kw)
+    assert again.cage["speed"] == pytest.approx(s.cage["speed"], rel=1e-6)
+    monkeypatch.setattr(qs, "RELAXED_ITERATIONS", 0)
+    with pytest.warns(qs.KinematicsIterationWarning, match="^control: the ball kinematics did not settle"):
+        solve_quasistatic("ACBB-120", 0.0, 22240.0, **kw)

@@ -16,7 +16,7 @@ from ..outputs.plotting_quasistatic import plot_loads_angles, plot_orbit_march, 
 from ..physics.hertz import METHODS
 from ..solvers.quasistatic import solve_quasistatic
 from ..solvers.quasistatic.kinematics import CONTROLS
-from ..solvers.quasistatic.orbit import ORBIT_STEPS_PER_PITCH, march_orbit, march_summary
+from ..solvers.quasistatic.orbit import MARCH_UNITS, ORBIT_STEPS_PER_PITCH, march_orbit, march_summary
 from .common import (CONTROL_HELP, add_strip_arguments, add_bearing_argument, add_hold_arguments, add_lubricant_argument, add_load_arguments,
                      add_ring_growth_argument, add_traction_argument, bearing_from_args, explained, finite_float,
                      fixed_from_args, format_value, lubricant_from_args, omega_from_args, solver_header,
@@ -132,6 +132,7 @@ def run(args):
         march = march_orbit(s, b, steps_per_pitch=args.orbit_march, lubricant=lub)
         d["orbit_march"] = {k: v for k, v in march.items() if k != "profile"}
         d["orbit_march"]["profile"] = {k: np.asarray(v).tolist() for k, v in march["profile"].items()}
+        d["units"]["orbit_march"] = MARCH_UNITS
     if args.plot:
         png = plot_loads_angles({b.name: s}, args.plot)
         d["plot"] = str(png)

@@ -66,7 +66,7 @@ from ...physics import losses as _ls
 from . import kinematics as km
 from .inertia import ball_mass_inertia
 
-__all__ = ["OrbitMarchWarning", "ORBIT_STEPS_PER_PITCH", "orbit_geometry", "march_orbit", "march_summary"]
+__all__ = ["OrbitMarchWarning", "MARCH_UNITS", "ORBIT_STEPS_PER_PITCH", "orbit_geometry", "march_orbit", "march_summary"]
 
 #: Implicit Euler steps per ball pitch (2 pi / Z of the orbit) of :func:`march_orbit`.
 ORBIT_STEPS_PER_PITCH = 80
@@ -81,6 +81,21 @@ TORQUE_TOLERANCE = 1e-3
 #: Newton's tolerance on a step's scaled residual [-] and its largest number of iterations.
 STEP_TOLERANCE = 1e-10
 STEP_ITERATIONS = 30
+
+
+#: Units of a :func:`march_orbit` result's keys and of its ``profile``'s (the JSON's ``units["orbit_march"]``).
+MARCH_UNITS = {
+    "cage_speed": "rad/s", "solution_dissipation": "W", "drive_power": "W", "dissipation_contacts": "W",
+    "power_pocket": "W", "power_land": "W", "dissipation": "W (contacts + pocket + land: traction and cage losses, "
+    "without the rolling losses)", "step_loss": "W (drive power - dissipation: the implicit steps' loss, impacts "
+    "included)", "energy_residual": "- (step_loss / drive_power)", "pocket_contact_fraction": "-",
+    "land_force": "N", "land_eccentricity": "-", "land_crushed": "bool", "torque_residual": "-",
+    "revolutions": "-", "periodic": "bool", "periodic_change": "- (of the drive power)",
+    "unconverged_steps": "-", "steps_per_revolution": "-", "step": "s",
+    "profile": {"psi": "rad (the pocket's azimuth)", "omega_m": "rad/s", "w_r": "rad/s", "w_z": "rad/s",
+                "v_t": "m/s", "pocket_offset": "m (+: ahead of the pocket's centre)",
+                "pocket_force": "N (+: pushes the ball forward; at an arrival the impulse over one step)",
+                "dissipation": "W (one ball's contacts)", "q_inner": "N", "q_outer": "N"}}
 
 
 class OrbitMarchWarning(UserWarning):
