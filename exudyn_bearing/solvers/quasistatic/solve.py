@@ -80,11 +80,12 @@ __all__ = ["solve_quasistatic", "beta_scan", "check_operating_fit", "check_tract
 RESOLUTION_TOLERANCE = 0.01
 
 
-#: Iterations of a stage's kinematics with half steps after its plain ones where they left a change above
-#: UNSETTLED_WARNING times the tolerance (a cycling fixed point).
+#: Iterations of race control's kinematics with half steps after its plain ones where they left a change above
+#: UNSETTLED_WARNING times the tolerance (a cycling fixed point). The equilibrium and minimum-energy stages
+#: keep their plain iterations (half steps there made the pocket film's case diverge).
 RELAXED_ITERATIONS = 40
-#: A stage that has not settled warns when its last change exceeds this many times its tolerance (below it: the
-#: minimisation's own precision, e.g. min-energy's Nelder-Mead near 3e-9 of the ring speed).
+#: Race control that has not settled after its half steps warns when its last change exceeds this many times
+#: its tolerance.
 UNSETTLED_WARNING = 100.0
 
 
@@ -449,7 +450,7 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
             # radial case closed it to 1.9e-8, with the land feedback to 2.3e-8 at 1e-8; at 1e-9 to 4e-11, 6e-12
             tol = 1e-10 if stage == "race" else (1e-7 if rc is None else 1e-9)
             plain = 40 if stage == "race" else 12
-            for _it in range(plain + RELAXED_ITERATIONS):
+            for _it in range(plain + (RELAXED_ITERATIONS if stage == "race" else 0)):
                 it_total += 1
                 g_mom = inertia * kin[:, 0] * kin[:, 1]        # J omega_m w_r: moment about e_psi [N m]
                 fto = np.zeros(z)
@@ -538,7 +539,7 @@ def solve_quasistatic(bearing, Fr=0.0, Fa=0.0, Mx=0.0, My=0.0, *, Fy=0.0, omega=
             raise
         raise InputError(f"{speed or _load_name(loads, fixed)}: {str(exc).partition(': ')[2]} at {what}"
                          + (f"; {_SPEED_CAUSE}" if speed else "")) from None
-    if moving and not settled and change > UNSETTLED_WARNING * max(tol, 1e-300):
+    if moving and not settled and stage == "race" and change > UNSETTLED_WARNING * max(tol, 1e-300):
         warnings.warn(KinematicsIterationWarning(
             f"control: the ball kinematics did not settle at {what} ({control}"
             + (", rigid cage" if rc is not None else "") + f"): after {_it + 1} iterations of its last stage "
