@@ -65,6 +65,7 @@ from ...data.errors import check_finite, check_integer
 from ...physics import losses as _ls
 from . import kinematics as km
 from .inertia import ball_mass_inertia
+from .solve import _land_state, pocket_net_force
 
 __all__ = ["OrbitMarchWarning", "MARCH_UNITS", "ORBIT_STEPS_PER_PITCH", "orbit_geometry", "march_orbit", "march_summary"]
 
@@ -158,13 +159,14 @@ class _Ball:
 
 def _newton(ball, y, y0, geo, dt, held, scale):
     """One implicit Euler step by Newton's method with a difference Jacobian (the held step keeps omega_m);
-    returns (y, Q_p, contacts' dissipation, converged)."""
+    returns (y, Q_p, contacts' dissipation, converged), ``ball.out`` holding the contacts at that y (each
+    residual is evaluated once: the accepted line-search point's serves the next iteration)."""
     idx = [1, 2, 3] if held else [0, 1, 2, 3]
     y = y.copy()
     fscale = max(abs(geo[km.G_QO]), abs(geo[km.G_QI]), 1.0)
     ok = False
+    r, q_p, p = ball.residual(y, y0, geo, dt, held)
     for _ in range(STEP_ITERATIONS):
-        r, q_p, p = ball.residual(y, y0, geo, dt, held)
         rr = r[idx]
         if np.max(np.abs(rr)) < STEP_TOLERANCE * fscale:
             ok = True
@@ -178,17 +180,18 @@ def _newton(ball, y, y0, geo, dt, held, scale):
         try:
             dy = np.linalg.solve(jac, -rr)
         except np.linalg.LinAlgError:
+            r, q_p, p = ball.residual(y, y0, geo, dt, held)  # ball.out back at y (the Jacobian's moved it)
             break
         lam = 1.0
         base = np.max(np.abs(rr))
         for _ls_it in range(20):  # backtracking on the largest residual
             yt = y.copy()
             yt[idx] += lam * dy
-            if np.max(np.abs(ball.residual(yt, y0, geo, dt, held)[0][idx])) < base or lam < 1e-4:
+            r, q_p, p = ball.residual(yt, y0, geo, dt, held)
+            if np.max(np.abs(r[idx])) < base or lam < 1e-4:
                 break
             lam *= 0.5
         y = yt
-    r, q_p, p = ball.residual(y, y0, geo, dt, held)
     return y, q_p, p, ok
 
 
@@ -226,8 +229,7 @@ def _march(sol, ball, omega_c, clearance, state, steps_per_pitch, revolutions, t
                 s_new, held = wall, 1.0
             fails += 0 if ok else 1
             # drive power of the rings: the contacts' torques about the axis on the ball, reversed on the races
-            c = ball.out
-            ball.forces(yn, geo)
+            c = ball.out  # the contacts at yn (_newton's last evaluation)
             t_o = km.axial_torque_on_ball(c[0], geo[km.G_CR], geo[km.G_RB], geo[km.G_NOR], geo[km.G_NOZ])
             t_i = km.axial_torque_on_ball(c[1], geo[km.G_CR], geo[km.G_RB], geo[km.G_NIR], geo[km.G_NIZ])
             w = math.hypot(yn[1], yn[2])
@@ -296,8 +298,6 @@ def march_orbit(sol, bearing=None, *, steps_per_pitch=ORBIT_STEPS_PER_PITCH, rev
         (where the ball arrives at a wall the impact's impulse over that one step: it grows as the step
         shrinks), ``dissipation`` [W], ``q_inner``, ``q_outer`` [N].
     """
-    from .solve import _land_state  # solve imports this module's users: imported at the call
-
     if sol.cage is None or sol.cage.get("rigid_cage") is None:
         raise InputError("sol: the orbit march needs a quasi-static solution with the rigid cage (cage='rigid')")
     if sol.cage.get("pocket_film"):
@@ -350,8 +350,7 @@ def march_orbit(sol, bearing=None, *, steps_per_pitch=ORBIT_STEPS_PER_PITCH, rev
         fr = np.sign(qp) * prof[:, 9] / geo_tab[:, km.G_RB]  # the friction's radial force on the cage
         # the cage's torque: the pockets' reactions at the ball centres and the friction's moment, every ball
         t_pockets = z * float(np.mean(-qp * cr + prof[:, 9]))
-        fx = z * float(np.mean(qp * np.sin(psi_tab) + fr * np.cos(psi_tab)))
-        fy = z * float(np.mean(-qp * np.cos(psi_tab) + fr * np.sin(psi_tab)))
+        fx, fy = (z / n * f for f in pocket_net_force(qp, fr, psi_tab))  # the revolution's mean, every ball
         eps, t_land, crushed = 0.0, 0.0, False
         if rc.guidance != "ball":
             eps, t_land, crushed = _land_state(rc, lub, wc, w_ring, math.hypot(fx, fy))

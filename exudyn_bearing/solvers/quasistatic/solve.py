@@ -1142,6 +1142,14 @@ def _land_roots(rc, lub, omega_c, omega_ring, net_force, root):
     return np.array(roots)
 
 
+def pocket_net_force(q_p, f_r, psi):
+    """(F_x, F_y) [N] of pocket forces on the cage: ``q_p`` along the orbit (+: the pocket pushes its ball
+    forward, the cage takes -q_p e_psi) and ``f_r`` radial (on the cage) at the azimuths ``psi`` [rad], summed;
+    the force its land carries (the solver's balls, the orbit march's steps)."""
+    return (float(np.sum(q_p * np.sin(psi) + f_r * np.cos(psi))),
+            float(np.sum(-q_p * np.cos(psi) + f_r * np.sin(psi))))
+
+
 def _alike(geo, j):
     """The first ball before ``j`` whose contact geometry equals ball j's (rtol 1e-12: balls alike by symmetry,
     solved once), else None."""
@@ -1386,8 +1394,7 @@ def _caged_balls(omega_c, geo, loaded, races, stage, kin, rc, model, n_strips, n
         f_r = -mu_c * np.abs(q_contact) * s * wz_unit      # radial friction on the cage
         if film_out is not None:  # the film's shear: its radial force, reversed
             f_r = f_r - film_out["f_r"]
-        fx = float(np.sum(q_p * np.sin(psi) + f_r * np.cos(psi)))
-        fy = float(np.sum(-q_p * np.cos(psi) + f_r * np.sin(psi)))
+        fx, fy = pocket_net_force(q_p, f_r, psi)
         return f, q_p, q_contact, film_out, fx, fy
 
     eps, t_land, crushed, w_ring, ex, ey, feedback = 0.0, 0.0, False, 0.0, 0.0, 0.0, None
